@@ -1,0 +1,41 @@
+#pragma once
+/// @file
+/// OBJ and OFF reading and writing. Readers keep vertex order, face order and each face's
+/// corner order exactly, keep polygons as polygons, and record each element's source line.
+/// Writers print 17 significant digits, enough for a double to read back bit-identical.
+
+#include <iosfwd>
+#include <string>
+
+#include "crossdiv/mesh/poly_mesh.h"
+
+namespace crossdiv {
+
+/// Reads a Wavefront OBJ: `v x y z [r g b]` and `f` lines (`i`, `i/t`, `i//n`, `i/t/n`;
+/// negative indices count back from the last vertex read). Texture coordinates, normals,
+/// groups, objects, smoothing groups, materials, lines and tags are skipped.
+/// @param name the file name used in messages.
+/// @throws ParseError with `name:line` on a malformed line, a missing or non-numeric
+///         coordinate, NaN or infinity, an index that is 0 or out of range, or an unknown
+///         statement.
+PolyMesh read_obj(std::istream& in, const std::string& name);
+
+/// Reads an OFF file (`OFF` or `COFF` header, counts, vertices, faces `n i0 .. in-1`).
+/// Extra values after a face's indices (colors) are ignored; after a COFF vertex, the first
+/// three are taken as its color.
+/// @throws ParseError with `name:line`, as read_obj.
+PolyMesh read_off(std::istream& in, const std::string& name);
+
+/// Reads a mesh file, choosing the format by extension (.obj, .off).
+/// @throws InputError if the file cannot be opened or the extension is unknown, ParseError
+///         on malformed content.
+PolyMesh read_mesh(const std::string& path);
+
+/// Writes OBJ (`v x y z [r g b]`, 1-based `f` lines) with 17 significant digits.
+void write_obj(std::ostream& out, const PolyMesh& mesh);
+/// Writes OFF with 17 significant digits.
+void write_off(std::ostream& out, const PolyMesh& mesh);
+/// Writes by extension (.obj, .off). @throws InputError if the file cannot be written.
+void write_mesh(const std::string& path, const PolyMesh& mesh);
+
+}  // namespace crossdiv

@@ -1,0 +1,39 @@
+#pragma once
+/// @file
+/// A polygon mesh exactly as read: vertex order and face order and each face's corner
+/// order are those of the file. Schemes that need triangles convert it with to_tri_mesh(),
+/// which refuses (does not triangulate) a polygon that is not a triangle.
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "crossdiv/mesh/source.h"
+
+namespace crossdiv {
+
+using Vec3 = Eigen::Vector3d;
+
+/// Indexed polygon mesh in compressed-row form: face f has the corners
+/// face_vertices[face_start[f] .. face_start[f+1]).
+struct PolyMesh {
+    std::vector<Vec3> positions;
+    std::vector<Vec3> colors;           ///< empty, or one RGB per vertex
+    std::vector<int> face_start{0};     ///< size num_faces()+1, face_start[0] == 0
+    std::vector<int> face_vertices;
+    MeshSource source;
+
+    int num_vertices() const { return static_cast<int>(positions.size()); }
+    int num_faces() const { return static_cast<int>(face_start.size()) - 1; }
+    int face_size(int f) const { return face_start[f + 1] - face_start[f]; }
+    const int* face(int f) const { return face_vertices.data() + face_start[f]; }
+
+    /// Appends a face given by its corner vertex indices.
+    template <class Range>
+    void add_face(const Range& corners) {
+        for (int v : corners) face_vertices.push_back(v);
+        face_start.push_back(static_cast<int>(face_vertices.size()));
+    }
+    void add_face(std::initializer_list<int> corners) { add_face<std::initializer_list<int>>(corners); }
+};
+
+}  // namespace crossdiv

@@ -1,0 +1,41 @@
+#include "crossdiv/io/mesh_io.h"
+
+#include <fstream>
+#include <string>
+
+#include "crossdiv/error.h"
+
+namespace crossdiv {
+namespace {
+
+std::string extension(const std::string& path) {
+    const auto dot = path.find_last_of('.');
+    if (dot == std::string::npos || path.find_first_of('/', dot) != std::string::npos) return "";
+    std::string ext = path.substr(dot + 1);
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext;
+}
+
+}  // namespace
+
+PolyMesh read_mesh(const std::string& path) {
+    const std::string ext = extension(path);
+    if (ext != "obj" && ext != "off")
+        throw InputError(path + ": unknown mesh format '." + ext + "' (expected .obj or .off)");
+    std::ifstream in(path);
+    if (!in) throw InputError(path + ": cannot open file");
+    return ext == "obj" ? read_obj(in, path) : read_off(in, path);
+}
+
+void write_mesh(const std::string& path, const PolyMesh& mesh) {
+    const std::string ext = extension(path);
+    if (ext != "obj" && ext != "off")
+        throw InputError(path + ": unknown mesh format '." + ext + "' (expected .obj or .off)");
+    std::ofstream out(path);
+    if (!out) throw InputError(path + ": cannot write file");
+    if (ext == "obj") write_obj(out, mesh);
+    else write_off(out, mesh);
+    if (!out) throw InputError(path + ": write failed");
+}
+
+}  // namespace crossdiv

@@ -1,0 +1,102 @@
+#include "crossdiv/mesh/tri_connectivity.h"
+
+#include <string>
+
+#include "crossdiv/error.h"
+
+namespace crossdiv {
+namespace {
+
+std::string edge_name(int a, int b) { return "edge (" + std::to_string(a) + ", " + std::to_string(b) + ")"; }
+
+}  // namespace
+
+TriConnectivity build_tri_connectivity(const TriMesh& mesh) {
+    const int nv = mesh.num_vertices();
+    const int nf = mesh.num_faces();
+    const auto& T = mesh.triangles;
+    const MeshSource& src = mesh.source;
+
+    for (int i = 0; i < nf; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            if (T[i][j] < 0 || T[i][j] >= nv)
+                throw InputError(src.describe_face(i) + ": vertex index " + std::to_string(T[i][j]) +
+                                 " out of range [0, " + std::to_string(nv) + ")");
+        }
+        if (T[i][0] == T[i][1] || T[i][1] == T[i][2] || T[i][2] == T[i][0])
+            throw InputError(src.describe_face(i) + ": repeated vertex in triangle (" + std::to_string(T[i][0]) +
+                             ", " + std::to_string(T[i][1]) + ", " + std::to_string(T[i][2]) + ")");
+    }
+
+    // Outgoing corners of each vertex in compressed-row form: the twin of a -> b is found
+    // among b's outgoing corners, so no edge map is needed.
+    std::vector<int> out_start(static_cast<size_t>(nv) + 1, 0);
+    for (const Triangle& t : T)
+        for (int v : t) ++out_start[static_cast<size_t>(v) + 1];
+    for (int v = 0; v < nv; ++v) out_start[v + 1] += out_start[v];
+    std::vector<int> out_corners(static_cast<size_t>(3) * nf);
+    {
+        std::vector<int> fill(out_start.begin(), out_start.end() - 1);
+        for (int c = 0; c < 3 * nf; ++c) out_corners[fill[T[c / 3][c % 3]]++] = c;
+    }
+    auto head = [&](int c) { return T[c / 3][(c % 3 + 1) % 3]; };
+
+    TriConnectivity conn;
+    conn.neighbor_tris.assign(nf, {-1, -1, -1});
+    conn.neighbor_edges.assign(nf, {-1, -1, -1});
+    conn.tri_edges.assign(nf, {-1, -1, -1});
+    conn.vertex_corner.assign(nv, -1);
+
+    for (int c = 0; c < 3 * nf; ++c) {
+        const int a = T[c / 3][c % 3], b = head(c);
+        int same = 0, twin = -1, opposite = 0;
+        for (int k = out_start[a]; k < out_start[a + 1]; ++k) same += head(out_corners[k]) == b;
+        for (int k = out_start[b]; k < out_start[b + 1]; ++k)
+            if (head(out_corners[k]) == a) { twin = out_corners[k]; ++opposite; }
+        if (same + opposite > 2)
+            throw InputError(edge_name(a, b) + " is shared by " + std::to_string(same + opposite) +
+                             " triangles (non-manifold edge; first seen in " + src.describe_face(c / 3) + ")");
+        if (same == 2)
+            throw InputError(edge_name(a, b) + ": two triangles traverse it in the same direction "
+                             "(inconsistent orientation; one of them is " + src.describe_face(c / 3) + ")");
+        if (twin >= 0) {
+            conn.neighbor_tris[c / 3][c % 3] = twin / 3;
+            conn.neighbor_edges[c / 3][c % 3] = twin % 3;
+        }
+        // Number the edge at its first corner in scan order.
+        if (twin < 0 || twin > c) {
+            conn.tri_edges[c / 3][c % 3] = conn.num_edges();
+            conn.edge_corner.push_back(c);
+            conn.edge_vertices.push_back({a, b});
+        } else {
+            conn.tri_edges[c / 3][c % 3] = conn.tri_edges[twin / 3][twin % 3];
+        }
+    }
+
+    // One-ring entry corners; a vertex whose corners do not form one fan is a bowtie.
+    for (int v = 0; v < nv; ++v) {
+        const int begin = out_start[v], end = out_start[v + 1];
+        if (begin == end) continue;  // isolated
+        int start = -1, boundary_fans = 0;
+        for (int k = begin; k < end; ++k) {
+            const int c = out_corners[k];
+            if (conn.neighbor_tris[c / 3][(c % 3 + 2) % 3] < 0) {
+                ++boundary_fans;
+                if (start < 0) start = c;
+            }
+        }
+        if (start < 0) start = out_corners[begin];
+        int visited = 0;
+        for (int c = start; c >= 0; c = conn.next_around_vertex(c)) {
+            ++visited;
+            if (conn.next_around_vertex(c) == start) break;
+        }
+        if (boundary_fans > 1 || visited != end - begin)
+            throw InputError(src.describe_vertex(v) + " is non-manifold: its " + std::to_string(end - begin) +
+                             " triangles form more than one fan (bowtie vertex)");
+        conn.vertex_corner[v] = start;
+    }
+    return conn;
+}
+
+}  // namespace crossdiv

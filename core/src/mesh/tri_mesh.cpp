@@ -1,0 +1,46 @@
+#include "crossdiv/mesh/tri_mesh.h"
+
+#include <string>
+
+#include "crossdiv/error.h"
+
+namespace crossdiv {
+
+TriMesh to_tri_mesh(const PolyMesh& mesh, const char* scheme) {
+    TriMesh tri;
+    tri.positions = mesh.positions;
+    tri.colors = mesh.colors;
+    tri.source = mesh.source;
+    tri.triangles.reserve(static_cast<size_t>(mesh.num_faces()));
+    for (int f = 0; f < mesh.num_faces(); ++f) {
+        if (mesh.face_size(f) != 3)
+            throw InputError(mesh.source.describe_face(f) + ": has " + std::to_string(mesh.face_size(f)) +
+                             " corners; " + scheme + " needs triangles (the mesh is not triangulated for you)");
+        const int* v = mesh.face(f);
+        tri.triangles.push_back({v[0], v[1], v[2]});
+    }
+    return tri;
+}
+
+PolyMesh to_poly_mesh(const TriMesh& mesh) {
+    PolyMesh poly;
+    poly.positions = mesh.positions;
+    poly.colors = mesh.colors;
+    poly.source = mesh.source;
+    poly.face_vertices.reserve(3 * mesh.triangles.size());
+    poly.face_start.reserve(mesh.triangles.size() + 1);
+    for (const Triangle& t : mesh.triangles) poly.add_face(t);
+    return poly;
+}
+
+double bounding_box_diagonal(const std::vector<Vec3>& positions) {
+    if (positions.empty()) return 0.0;
+    Vec3 lo = positions.front(), hi = positions.front();
+    for (const Vec3& p : positions) {
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+    }
+    return (hi - lo).norm();
+}
+
+}  // namespace crossdiv

@@ -1,0 +1,112 @@
+// OBJ/OFF: order kept, polygons kept, bit-exact round trip, errors with file and line.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "crossdiv/error.h"
+#include "crossdiv/io/mesh_io.h"
+#include "crossdiv/mesh/tri_mesh.h"
+
+namespace crossdiv {
+namespace {
+
+PolyMesh obj(const std::string& text) {
+    std::istringstream in(text);
+    return read_obj(in, "t.obj");
+}
+
+std::string obj_error(const std::string& text) {
+    try {
+        obj(text);
+    } catch (const ParseError& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+TEST(MeshIo, ObjKeepsOrderPolygonsAndLines) {
+    const PolyMesh m = obj("# comment\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1 4//1\nf 3 -2 -1\n");
+    ASSERT_EQ(m.num_vertices(), 4);
+    ASSERT_EQ(m.num_faces(), 2);
+    EXPECT_EQ(m.face_size(0), 4);
+    EXPECT_EQ(std::vector<int>(m.face(0), m.face(0) + 4), (std::vector<int>{0, 1, 2, 3}));
+    EXPECT_EQ(std::vector<int>(m.face(1), m.face(1) + 3), (std::vector<int>{2, 2, 3}));  // -2 is vertex 3
+    EXPECT_EQ(m.source.face_line, (std::vector<int>{7, 8}));
+    EXPECT_EQ(m.source.vertex_line[0], 2);
+    EXPECT_TRUE(m.colors.empty());
+}
+
+TEST(MeshIo, ObjRoundTripIsBitExact) {
+    PolyMesh m;
+    m.positions = {Vec3(0.1, 1.0 / 3.0, -2.718281828459045), Vec3(1e-300, 123456789.123456789, M_PI),
+                   Vec3(-0.0, 5e-324, 1.7976931348623157e308)};
+    m.colors = {Vec3(1, 0, 0), Vec3(0, 0.5, 0), Vec3(0, 0, 0.1)};
+    m.add_face({0, 1, 2});
+    std::ostringstream out;
+    write_obj(out, m);
+    const PolyMesh back = obj(out.str());
+    EXPECT_EQ(back.positions, m.positions);
+    EXPECT_EQ(back.colors, m.colors);
+    EXPECT_EQ(back.face_vertices, m.face_vertices);
+    EXPECT_NE(out.str().find("v 0.10000000000000001 "), std::string::npos) << "17 significant digits";
+}
+
+TEST(MeshIo, OffRoundTripAndColors) {
+    PolyMesh m;
+    m.positions = {Vec3(0.1, 0.2, 0.3), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 1)};
+    m.add_face({0, 1, 2});
+    m.add_face({1, 3, 2, 0});
+    std::ostringstream out;
+    write_off(out, m);
+    std::istringstream in(out.str());
+    const PolyMesh back = read_off(in, "t.off");
+    EXPECT_EQ(back.positions, m.positions);
+    EXPECT_EQ(back.face_start, m.face_start);
+    EXPECT_EQ(back.face_vertices, m.face_vertices);
+    std::istringstream coff("COFF\n# c\n3 1 0\n0 0 0 1 0 0 1\n1 0 0 0 1 0 1\n0 1 0 0 0 1 1\n3 0 1 2 255 0 0\n");
+    const PolyMesh c = read_off(coff, "c.off");
+    EXPECT_EQ(c.colors[1], Vec3(0, 1, 0));
+    EXPECT_EQ(c.source.face_line, std::vector<int>{7});
+}
+
+TEST(MeshIo, ObjErrorsNameFileAndLine) {
+    EXPECT_EQ(obj_error("v 0 0 0\nv 1 0\nf 1 2 1\n"), "t.obj:2: missing z coordinate");
+    EXPECT_EQ(obj_error("v 0 0 0\nv 1 0 nan\n"), "t.obj:2: z coordinate is nan; coordinates must be finite");
+    EXPECT_EQ(obj_error("v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 4\n"),
+              "t.obj:4: vertex index 4 out of range: the file has 3 vertices");
+    EXPECT_EQ(obj_error("v 0 0 0\nf 0 1 1\n"), "t.obj:2: vertex index 0: OBJ indices start at 1");
+    EXPECT_EQ(obj_error("v 0 0 zero\n"), "t.obj:1: 'zero' is not a number (z coordinate)");
+    EXPECT_EQ(obj_error("v 0 0 0\nfoo 1\n"), "t.obj:2: unknown OBJ statement 'foo'");
+    EXPECT_EQ(obj_error("v 0 0 0\nf 1 x 1\n"), "t.obj:2: 'x' is not an integer (vertex index)");
+}
+
+TEST(MeshIo, OffErrorsNameFileAndLine) {
+    auto off_error = [](const std::string& text) {
+        std::istringstream in(text);
+        try {
+            read_off(in, "t.off");
+        } catch (const ParseError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_EQ(off_error("PLY\n"), "t.off:1: expected 'OFF' or 'COFF' header, got 'PLY'");
+    EXPECT_EQ(off_error("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"), "t.off:6: vertex index 7 out of range [0, 3)");
+    EXPECT_EQ(off_error("OFF\n3 1 0\n0 0 0\n1 0 0\n"), "t.off:4: unexpected end of file, expecting a vertex");
+}
+
+TEST(MeshIo, QuadGivenToATriangleSchemeNamesTheLine) {
+    const PolyMesh m = obj("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4 2\n");
+    try {
+        to_tri_mesh(m, "Loop subdivision");
+        FAIL() << "quad accepted";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "face 1 (t.obj:6): has 4 corners; Loop subdivision needs triangles (the mesh is not triangulated "
+                  "for you)");
+    }
+}
+
+}  // namespace
+}  // namespace crossdiv
