@@ -1,0 +1,68 @@
+#include <OpenMesh/Core/Mesh/DefaultTriMesh.hh>
+#include <OpenMesh/Core/System/config.h>
+#include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>
+
+#include <algorithm>
+#include <string>
+
+#include "crossdiv/adapters/openmesh.h"
+
+namespace crossdiv::adapters::openmesh {
+namespace {
+
+using Mesh = OpenMesh::TriMesh;  // DefaultTraitsDouble
+
+PolyMesh snapshot(const Mesh& m) {
+    PolyMesh out;
+    out.positions.reserve(m.n_vertices());
+    for (auto v : m.vertices()) {
+        const auto& p = m.point(v);
+        out.positions.emplace_back(p[0], p[1], p[2]);
+    }
+    out.face_vertices.reserve(3 * m.n_faces());
+    for (auto f : m.faces()) {
+        for (auto v : m.fv_range(f)) out.face_vertices.push_back(v.idx());
+        out.face_start.push_back(static_cast<int>(out.face_vertices.size()));
+    }
+    return out;
+}
+
+}  // namespace
+
+bool supports(const LoopOptions& options) {
+    return options.weights == LoopWeights::Loop && options.boundary == LoopBoundary::EdgeOnly;
+}
+
+std::string version() {
+    // OM_GET_MAJ masks the wrong bits for 0x90000; decode OM_VERSION (0xMMmmpp) directly.
+    return "OpenMesh " + std::to_string(OM_VERSION >> 16) + "." + std::to_string((OM_VERSION >> 8) & 0xff);
+}
+
+LevelTrace loop(const TriMesh& mesh, const LoopOptions& options, int levels) {
+    if (!supports(options))
+        throw Rejected("OpenMesh's LoopT has Loop weights and the edge-only boundary rule only");
+    Mesh m;
+    std::vector<Mesh::VertexHandle> vh;
+    vh.reserve(static_cast<size_t>(mesh.num_vertices()));
+    for (const Vec3& p : mesh.positions) vh.push_back(m.add_vertex(Mesh::Point(p.x(), p.y(), p.z())));
+    for (int f = 0; f < mesh.num_faces(); ++f) {
+        const Triangle& t = mesh.triangles[f];
+        if (!m.add_face(vh[t[0]], vh[t[1]], vh[t[2]]).is_valid())
+            throw Rejected("OpenMesh could not add face " + std::to_string(f) + " (" + std::to_string(t[0]) + ", " +
+                           std::to_string(t[1]) + ", " + std::to_string(t[2]) + "): complex edge or vertex");
+    }
+    LevelTrace trace{snapshot(m)};
+    OpenMesh::Subdivider::Uniform::LoopT<Mesh> loop;
+    for (int l = 1; l <= levels; ++l) {
+        size_t max_valence = 0;
+        for (auto v : m.vertices()) max_valence = std::max<size_t>(max_valence, m.valence(v));
+        loop.init_weights(std::max<size_t>(50, max_valence + 1));
+        loop.attach(m);
+        loop(1);
+        loop.detach();
+        trace.push_back(snapshot(m));
+    }
+    return trace;
+}
+
+}  // namespace crossdiv::adapters::openmesh

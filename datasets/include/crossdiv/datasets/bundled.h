@@ -1,0 +1,34 @@
+#pragma once
+/// @file
+/// Small meshes generated in code, each a named topology case for the conformance tests and
+/// for `crossdiv compare bundled:NAME`. Deterministic: the same vertices and faces, in the
+/// same order, on every machine.
+
+#include <string>
+#include <vector>
+
+#include "crossdiv/mesh/poly_mesh.h"
+
+namespace crossdiv::datasets {
+
+struct BundledMesh {
+    std::string name;
+    std::string description;  ///< one line: what topology case it is
+    PolyMesh mesh;
+};
+
+/// Every bundled mesh: tetrahedron, octahedron, icosahedron, cube-symmetric,
+/// cube-asymmetric, open-patch, torus, fan-3 .. fan-12, pole-64.
+std::vector<BundledMesh> bundled_meshes();
+
+/// One bundled mesh by name. @throws InputError naming the unknown name and listing the known ones.
+PolyMesh bundled_mesh(const std::string& name);
+
+/// The CGAL demo meshes unpacked by datasets/install_cgal_meshes.sh (paths to .off files,
+/// sorted), or empty when they are not installed.
+std::vector<std::string> cgal_mesh_files();
+
+/// The course meshes in ../shared/data/c3100/objs when that folder exists, else empty.
+std::vector<std::string> course_mesh_files();
+
+}  // namespace crossdiv::datasets
