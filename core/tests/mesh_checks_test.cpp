@@ -67,7 +67,7 @@ TEST(MeshChecks, SeverityErrorsVersusWarnings) {
 
 TEST(MeshChecks, MessagesCarryFileLinesWhenKnown) {
     PolyMesh m = mesh_of(square(), {{0, 1, 1}});
-    m.source = {"a.obj", {1, 2, 3, 4, 5}, {7}};
+    m.source = {"a.obj", {1, 2, 3, 4, 5}, {7}, {}};
     const auto issues = check_mesh(m);
     EXPECT_EQ(only(issues, MeshIssueKind::RepeatedVertex), "face 0 (a.obj:7): repeated vertex 1");
 }

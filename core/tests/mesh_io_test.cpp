@@ -77,8 +77,15 @@ TEST(MeshIo, ObjErrorsNameFileAndLine) {
               "t.obj:4: vertex index 4 out of range: the file has 3 vertices");
     EXPECT_EQ(obj_error("v 0 0 0\nf 0 1 1\n"), "t.obj:2: vertex index 0: OBJ indices start at 1");
     EXPECT_EQ(obj_error("v 0 0 zero\n"), "t.obj:1: 'zero' is not a number (z coordinate)");
-    EXPECT_EQ(obj_error("v 0 0 0\nfoo 1\n"), "t.obj:2: unknown OBJ statement 'foo'");
     EXPECT_EQ(obj_error("v 0 0 0\nf 1 x 1\n"), "t.obj:2: 'x' is not an integer (vertex index)");
+}
+
+TEST(MeshIo, ObjSkipsUnknownStatementsWithANote) {
+    // The course files are OBJ saved from a browser, wrapped in HTML.
+    const PolyMesh m = obj("<html><pre># OBJ\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n</pre></html>\n");
+    EXPECT_EQ(m.num_faces(), 1);
+    ASSERT_EQ(m.source.notes.size(), 1u);
+    EXPECT_EQ(m.source.notes[0], "skipped 2 line(s) with an unknown statement, the first at t.obj:1 ('<html><pre>')");
 }
 
 TEST(MeshIo, OffErrorsNameFileAndLine) {

@@ -13,6 +13,8 @@ PolyMesh read_obj(std::istream& in, const std::string& name) {
     mesh.source.file = name;
     bool any_color = false;
     std::vector<int> corners;
+    int unknown_lines = 0, first_unknown = 0;
+    std::string first_unknown_word;
     while (r.next()) {
         const std::string_view kw = r.token();
         if (kw.empty()) continue;
@@ -48,10 +50,15 @@ PolyMesh read_obj(std::istream& in, const std::string& name) {
         } else if (kw == "vt" || kw == "vn" || kw == "vp" || kw == "g" || kw == "o" || kw == "s" ||
                    kw == "usemtl" || kw == "mtllib" || kw == "l" || kw == "p" || kw == "t") {
             continue;  // not geometry the schemes use
-        } else {
-            r.fail("unknown OBJ statement '" + std::string(kw) + "'");
+        } else if (unknown_lines++ == 0) {
+            first_unknown = r.line_number();
+            first_unknown_word = std::string(kw.substr(0, 40));
         }
     }
+    if (unknown_lines > 0)
+        mesh.source.notes.push_back("skipped " + std::to_string(unknown_lines) +
+                                    " line(s) with an unknown statement, the first at " + name + ":" +
+                                    std::to_string(first_unknown) + " ('" + first_unknown_word + "')");
     // Positive indices may name vertices defined later in the file, so range is checked here.
     const int nv = mesh.num_vertices();
     for (int f = 0; f < mesh.num_faces(); ++f)

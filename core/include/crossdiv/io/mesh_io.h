@@ -13,11 +13,13 @@ namespace crossdiv {
 
 /// Reads a Wavefront OBJ: `v x y z [r g b]` and `f` lines (`i`, `i/t`, `i//n`, `i/t/n`;
 /// negative indices count back from the last vertex read). Texture coordinates, normals,
-/// groups, objects, smoothing groups, materials, lines and tags are skipped.
+/// groups, objects, smoothing groups, materials, lines and tags are skipped. Lines with an
+/// unknown statement are skipped too (real course files carry browser HTML around the OBJ)
+/// and summarized in source.notes with the first such line; geometry lost that way shows up
+/// as an out-of-range index, which is an error.
 /// @param name the file name used in messages.
-/// @throws ParseError with `name:line` on a malformed line, a missing or non-numeric
-///         coordinate, NaN or infinity, an index that is 0 or out of range, or an unknown
-///         statement.
+/// @throws ParseError with `name:line` on a malformed `v` or `f` line, a missing or
+///         non-numeric coordinate, NaN or infinity, or an index that is 0 or out of range.
 PolyMesh read_obj(std::istream& in, const std::string& name);
 
 /// Reads an OFF file (`OFF` or `COFF` header, counts, vertices, faces `n i0 .. in-1`).

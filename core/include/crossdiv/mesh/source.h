@@ -13,6 +13,9 @@ struct MeshSource {
     std::string file;              ///< path as given by the user; empty when generated
     std::vector<int> vertex_line;  ///< 1-based line of each vertex, or empty
     std::vector<int> face_line;    ///< 1-based line of each face, or empty
+    /// What the reader skipped or assumed, one sentence each with the line (e.g. lines of
+    /// HTML around an OBJ saved from a browser, as in the course files).
+    std::vector<std::string> notes;
 
     /// "vertex 12 (bunny.obj:17)" or "vertex 12" when the line is unknown.
     std::string describe_vertex(int v) const { return describe("vertex", v, vertex_line); }

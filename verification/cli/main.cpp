@@ -1,0 +1,206 @@
+// crossdiv: the command-line front of the testbed. Exit codes: 0 success (compare: every
+// reference agrees), 1 compare found a disagreement, 2 bad input or usage (with a message).
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "crossdiv/datasets/bundled.h"
+#include "crossdiv/error.h"
+#include "crossdiv/io/mesh_io.h"
+#include "crossdiv/mesh/mesh_checks.h"
+#include "crossdiv/subdiv/loop.h"
+#include "crossdiv/verification/inputs.h"
+#include "crossdiv/verification/loop_comparison.h"
+#include "crossdiv/verification/references.h"
+
+namespace {
+
+using namespace crossdiv;
+using namespace crossdiv::verification;
+
+struct SchemeArgs {
+    std::string scheme = "loop";
+    std::string weights = "loop";
+    std::string boundary = "edge-only";
+    int levels = 1;
+
+    void add_to(CLI::App& app) {
+        app.add_option("--scheme", scheme, "Subdivision scheme")->check(CLI::IsMember({"loop"}))->capture_default_str();
+        app.add_option("--weights", weights, "Even-vertex weight family: loop (Loop 1987) or warren (3/(8n))")
+            ->check(CLI::IsMember({"loop", "warren"}))
+            ->capture_default_str();
+        app.add_option("--boundary", boundary, "Boundary rule: edge-only or edge-and-corner")
+            ->check(CLI::IsMember({"edge-only", "edge-and-corner"}))
+            ->capture_default_str();
+        app.add_option("--levels", levels, "Number of subdivision levels")->check(CLI::Range(0, 12))->capture_default_str();
+    }
+    LoopOptions options() const {
+        return {weights == "loop" ? LoopWeights::Loop : LoopWeights::Warren,
+                boundary == "edge-only" ? LoopBoundary::EdgeOnly : LoopBoundary::EdgeAndCorner};
+    }
+};
+
+int run_subdivide(const std::string& in, const SchemeArgs& s, const std::string& impl, const std::string& out) {
+    const TriMesh mesh = to_tri_mesh(load_input(in), "Loop subdivision");
+    PolyMesh result;
+    if (impl == "core") {
+        result = to_poly_mesh(loop_subdivide(mesh, s.options(), s.levels));
+    } else {
+        const LoopReference& ref = find_loop_reference(impl);
+        if (!ref.supports(s.options()))
+            throw InputError(impl + " has no Loop with weights=" + s.weights + " boundary=" + s.boundary);
+        result = ref.loop(mesh, s.options(), s.levels).back();
+    }
+    write_mesh(out, result);
+    fmt::print("{}: {} vertices, {} faces -> {} ({} vertices, {} faces, {} level(s), {})\n", in, mesh.num_vertices(),
+               mesh.num_faces(), out, result.num_vertices(), result.num_faces(), s.levels, impl);
+    return 0;
+}
+
+void print_table(const LoopComparison& c) {
+    fmt::print("\n{} ({} vertices, {} faces) loop weights={} boundary={} levels={} (core {:.3f} s)\n", c.input,
+               c.input_vertices, c.input_faces, to_string(c.options.weights), to_string(c.options.boundary), c.levels,
+               c.core_seconds);
+    fmt::print("  {:<11} {:<13} {:<9} {:<8} {:>10} {:>10}  {}\n", "reference", "verdict", "match", "topology",
+               "max rel", "rms rel", "class / explanation");
+    for (const ReferenceRun& r : c.runs) {
+        const bool ok = r.outcome.status == RunStatus::Ok;
+        fmt::print("  {:<11} {:<13} {:<9} {:<8} {:>10} {:>10}  {}{}\n", r.reference, r.verdict,
+                   ok ? to_string(r.correspondence.method) : "-",
+                   ok ? (r.comparison.topology_equal() ? "equal" : "differs") : "-",
+                   ok ? fmt::format("{:.3g}", r.comparison.max_rel) : "-",
+                   ok ? fmt::format("{:.3g}", r.comparison.rms_rel) : "-",
+                   r.divergence_class.empty() ? "" : r.divergence_class + ": ", r.explanation);
+        if (ok && r.verdict == "diverge")
+            for (const WorstVertex& w : r.comparison.worst)
+                fmt::print("      vertex {:>6} valence {:>2} {:<8} dist {:.3g}  core ({:.6g}, {:.6g}, {:.6g})  "
+                           "{} ({:.6g}, {:.6g}, {:.6g})\n",
+                           w.ours_index, w.valence, w.boundary ? "boundary" : "interior", w.distance, w.ours.x(),
+                           w.ours.y(), w.ours.z(), r.reference, w.ref.x(), w.ref.y(), w.ref.z());
+    }
+}
+
+int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, const std::string& against,
+                const std::string& json_path, double timeout, bool no_isolate) {
+    LoopComparisonRequest req;
+    req.options = s.options();
+    req.levels = s.levels;
+    req.timeout_seconds = timeout;
+    req.isolate = !no_isolate;
+    for (size_t b = 0, e; b < against.size(); b = e + 1) {
+        e = against.find(',', b);
+        if (e == std::string::npos) e = against.size();
+        if (e > b) req.references.push_back(against.substr(b, e - b));
+    }
+    for (const std::string& r : req.references) find_loop_reference(r);  // fail early on a typo
+
+    const std::vector<std::string> inputs = expand_inputs(specs);
+    if (inputs.empty()) throw InputError("no inputs (a collection folder may be absent)");
+    // Load and validate every input before running anything: bad input is exit 2.
+    std::vector<TriMesh> meshes;
+    for (const std::string& in : inputs) {
+        meshes.push_back(to_tri_mesh(load_input(in), "Loop subdivision"));
+        loop_input_connectivity(meshes.back());
+    }
+    nlohmann::json results = nlohmann::json::array();
+    bool all_agree = true;
+    for (size_t i = 0; i < inputs.size(); ++i) {
+        const LoopComparison c = compare_loop(meshes[i], inputs[i], req);
+        print_table(c);
+        all_agree &= c.all_agree();
+        results.push_back(to_json(c));
+    }
+    if (!json_path.empty()) {
+        const std::filesystem::path p(json_path);
+        if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
+        std::ofstream out(json_path);
+        if (!out) throw InputError(json_path + ": cannot write");
+        out << nlohmann::json{{"tool", "crossdiv compare"}, {"comparisons", results}}.dump(2) << "\n";
+        fmt::print("\nresults written to {}\n", json_path);
+    }
+    fmt::print("\n{}\n", all_agree ? "every reference agrees" : "some references disagree (see above)");
+    return all_agree ? 0 : 1;
+}
+
+int run_check(const std::string& in) {
+    const PolyMesh mesh = load_input(in);
+    const auto issues = check_mesh(mesh);
+    int errors = 0;
+    for (const std::string& note : mesh.source.notes) fmt::print("note: {}\n", note);
+    for (const MeshIssue& i : issues) {
+        errors += i.severity == Severity::Error;
+        fmt::print("{} [{}] {}\n", i.severity == Severity::Error ? "error" : "warning", to_string(i.kind), i.message);
+    }
+    fmt::print("{}: {} vertices, {} faces, {} error(s), {} warning(s)\n", in, mesh.num_vertices(), mesh.num_faces(),
+               errors, issues.size() - errors);
+    return errors ? 2 : 0;
+}
+
+int run_datasets(const std::string& dir) {
+    std::filesystem::create_directories(dir);
+    for (const auto& b : datasets::bundled_meshes()) {
+        const std::string path = (std::filesystem::path(dir) / (b.name + ".obj")).string();
+        write_mesh(path, b.mesh);
+        fmt::print("{:<48} {}\n", path, b.description);
+    }
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"crossdiv: spline and subdivision algorithms verified against OpenSubdiv, OpenMesh and CGAL"};
+    app.require_subcommand(1);
+
+    SchemeArgs sub_args, cmp_args;
+    std::string sub_in, sub_impl = "core", sub_out;
+    auto* sub = app.add_subcommand("subdivide", "Subdivide a mesh with core or a reference");
+    sub->add_option("input", sub_in, "Mesh file (.obj, .off) or bundled:NAME")->required();
+    sub_args.add_to(*sub);
+    sub->add_option("--impl", sub_impl, "Implementation")
+        ->check(CLI::IsMember({"core", "opensubdiv", "openmesh", "cgal"}))
+        ->capture_default_str();
+    sub->add_option("-o,--output", sub_out, "Output mesh (.obj, .off)")->required();
+
+    std::vector<std::string> cmp_in;
+    std::string against = "opensubdiv,openmesh,cgal", json_path;
+    double timeout = 120;
+    bool no_isolate = false;
+    auto* cmp = app.add_subcommand("compare", "Compare core with reference libraries");
+    cmp->add_option("inputs", cmp_in, "Mesh files, bundled:NAME, bundled:all, course:all, cgal:all")->required();
+    cmp_args.add_to(*cmp);
+    cmp->add_option("--against", against, "Comma-separated references")->capture_default_str();
+    cmp->add_option("--json", json_path, "Write the results as JSON to this file");
+    cmp->add_option("--timeout", timeout, "Seconds a reference may run before it counts as hung")->capture_default_str();
+    cmp->add_flag("--no-isolate", no_isolate, "Run references in this process (debugging; a crash ends the run)");
+
+    std::string check_in;
+    auto* chk = app.add_subcommand("check", "Report every problem of a mesh, by element");
+    chk->add_option("input", check_in, "Mesh file or bundled:NAME")->required();
+
+    std::string ds_out;
+    auto* ds = app.add_subcommand("datasets", "Write the bundled meshes as OBJ files");
+    ds->add_option("--out", ds_out, "Output folder")->required();
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e) == 0 ? 0 : 2;
+    }
+    try {
+        if (*sub) return run_subdivide(sub_in, sub_args, sub_impl, sub_out);
+        if (*cmp) return run_compare(cmp_in, cmp_args, against, json_path, timeout, no_isolate);
+        if (*chk) return run_check(check_in);
+        if (*ds) return run_datasets(ds_out);
+    } catch (const InputError& e) {
+        std::cerr << "crossdiv: error: " << e.what() << "\n";
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "crossdiv: internal error: " << e.what() << "\n";
+        return 3;
+    }
+    return 0;
+}

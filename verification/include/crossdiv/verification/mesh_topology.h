@@ -1,0 +1,26 @@
+#pragma once
+/// @file
+/// Topology facts of any polygon mesh that the comparisons report: edges, Euler
+/// characteristic, boundary loops, and each vertex's valence and boundary flag.
+
+#include <array>
+#include <vector>
+
+#include "crossdiv/mesh/poly_mesh.h"
+
+namespace crossdiv::verification {
+
+struct MeshTopology {
+    int vertices = 0, edges = 0, faces = 0;
+    int euler = 0;           ///< V - E + F
+    int boundary_edges = 0;  ///< edges with exactly one face
+    int boundary_loops = 0;  ///< connected components of the boundary edges
+    std::vector<int> valence;           ///< distinct edge neighbours per vertex
+    std::vector<char> boundary_vertex;  ///< 1 when the vertex touches a boundary edge
+    std::vector<std::array<int, 2>> edge_list;  ///< sorted endpoint pairs, sorted
+};
+
+/// Computes the topology by sorting edge keys (no maps).
+MeshTopology mesh_topology(const PolyMesh& mesh);
+
+}  // namespace crossdiv::verification

@@ -1,0 +1,99 @@
+#include "crossdiv/verification/compare.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "crossdiv/mesh/tri_mesh.h"
+#include "crossdiv/verification/tolerances.h"
+
+namespace crossdiv::verification {
+namespace {
+
+TopologyCounts counts(const MeshTopology& t) { return {t.vertices, t.edges, t.faces, t.euler, t.boundary_loops}; }
+
+/// Faces as vertex lists rotated to start at their smallest index (orientation kept), with a
+/// length prefix so faces of different sizes never compare equal; sorted.
+std::vector<int> canonical_faces(const PolyMesh& m, const std::vector<int>* map) {
+    std::vector<std::vector<int>> faces(static_cast<size_t>(m.num_faces()));
+    for (int f = 0; f < m.num_faces(); ++f) {
+        auto& out = faces[f];
+        out.assign(m.face(f), m.face(f) + m.face_size(f));
+        if (map)
+            for (int& v : out) v = (*map)[v];
+        std::rotate(out.begin(), std::min_element(out.begin(), out.end()), out.end());
+        out.insert(out.begin(), m.face_size(f));
+    }
+    std::sort(faces.begin(), faces.end());
+    std::vector<int> flat;
+    for (auto& f : faces) flat.insert(flat.end(), f.begin(), f.end());
+    return flat;
+}
+
+/// Splits a flat canonical list back into faces for set differences.
+std::vector<std::vector<int>> unflatten(const std::vector<int>& flat) {
+    std::vector<std::vector<int>> faces;
+    for (size_t i = 0; i < flat.size(); i += static_cast<size_t>(flat[i]) + 1)
+        faces.emplace_back(flat.begin() + static_cast<long>(i), flat.begin() + static_cast<long>(i + flat[i] + 1));
+    return faces;
+}
+
+}  // namespace
+
+bool MeshComparison::agree() const { return topology_equal() && max_rel <= tolerances::kAgreementRelative; }
+
+MeshComparison compare_meshes(const PolyMesh& ours, const PolyMesh& ref, const std::vector<int>& ref_to_ours,
+                              int worst_count) {
+    MeshComparison c;
+    const MeshTopology to = mesh_topology(ours), tr = mesh_topology(ref);
+    c.ours = counts(to);
+    c.ref = counts(tr);
+    c.diagonal = bounding_box_diagonal(ours.positions);
+
+    const bool mapped = ref_to_ours.size() == static_cast<size_t>(ref.num_vertices()) &&
+                        ref.num_vertices() == ours.num_vertices();
+    if (mapped) {
+        const std::vector<int> a = canonical_faces(ours, nullptr), b = canonical_faces(ref, &ref_to_ours);
+        c.face_sets_equal = a == b;
+        if (!c.face_sets_equal) {
+            const auto fa = unflatten(a), fb = unflatten(b);
+            std::vector<std::vector<int>> diff;
+            std::set_difference(fa.begin(), fa.end(), fb.begin(), fb.end(), std::back_inserter(diff));
+            c.faces_only_in_ours = static_cast<int>(diff.size());
+            diff.clear();
+            std::set_difference(fb.begin(), fb.end(), fa.begin(), fa.end(), std::back_inserter(diff));
+            c.faces_only_in_ref = static_cast<int>(diff.size());
+        }
+    } else {
+        c.faces_only_in_ours = ours.num_faces();
+        c.faces_only_in_ref = ref.num_faces();
+        c.max_abs = c.rms_abs = c.max_rel = c.rms_rel = INFINITY;
+        return c;
+    }
+
+    std::vector<double> dist(static_cast<size_t>(ref.num_vertices()));
+    double sum2 = 0;
+    for (int i = 0; i < ref.num_vertices(); ++i) {
+        dist[i] = (ref.positions[i] - ours.positions[ref_to_ours[i]]).norm();
+        if (std::isnan(dist[i])) dist[i] = INFINITY;
+        sum2 += dist[i] * dist[i];
+        c.max_abs = std::max(c.max_abs, dist[i]);
+    }
+    c.rms_abs = ref.num_vertices() ? std::sqrt(sum2 / ref.num_vertices()) : 0.0;
+    const double scale = c.diagonal > 0 ? c.diagonal : 1.0;
+    c.max_rel = c.max_abs / scale;
+    c.rms_rel = c.rms_abs / scale;
+
+    std::vector<int> order(dist.size());
+    std::iota(order.begin(), order.end(), 0);
+    const size_t k = std::min(order.size(), static_cast<size_t>(std::max(worst_count, 0)));
+    std::partial_sort(order.begin(), order.begin() + static_cast<long>(k), order.end(),
+                      [&](int a, int b) { return dist[a] > dist[b]; });
+    for (size_t i = 0; i < k; ++i) {
+        const int r = order[i], o = ref_to_ours[r];
+        c.worst.push_back({o, r, to.valence[o], to.boundary_vertex[o] != 0, ours.positions[o], ref.positions[r], dist[r]});
+    }
+    return c;
+}
+
+}  // namespace crossdiv::verification

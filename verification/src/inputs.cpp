@@ -1,0 +1,32 @@
+#include "crossdiv/verification/inputs.h"
+
+#include "crossdiv/datasets/bundled.h"
+#include "crossdiv/error.h"
+#include "crossdiv/io/mesh_io.h"
+
+namespace crossdiv::verification {
+
+std::vector<std::string> expand_inputs(const std::vector<std::string>& specs) {
+    std::vector<std::string> out;
+    for (const std::string& s : specs) {
+        if (s == "bundled:all") {
+            for (const auto& b : datasets::bundled_meshes()) out.push_back("bundled:" + b.name);
+        } else if (s == "course:all") {
+            for (const auto& f : datasets::course_mesh_files()) out.push_back(f);
+        } else if (s == "cgal:all") {
+            for (const auto& f : datasets::cgal_mesh_files()) out.push_back(f);
+        } else if (s.ends_with(":all")) {
+            throw InputError("unknown collection '" + s + "' (known: bundled:all, course:all, cgal:all)");
+        } else {
+            out.push_back(s);
+        }
+    }
+    return out;
+}
+
+PolyMesh load_input(const std::string& spec) {
+    if (spec.starts_with("bundled:")) return datasets::bundled_mesh(spec.substr(8));
+    return read_mesh(spec);
+}
+
+}  // namespace crossdiv::verification
