@@ -36,16 +36,20 @@ PolyMesh icosahedron() {
                  {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}});
 }
 
-// The unit cube's 8 corners and its 6 faces as outward quads.
-const std::vector<Vec3> kCubeCorners = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0),
-                                        Vec3(0, 0, 1), Vec3(1, 0, 1), Vec3(1, 1, 1), Vec3(0, 1, 1)};
-const std::vector<std::vector<int>> kCubeQuads = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                                                  {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+// The unit cube's 8 corners and its 6 faces as outward quads (functions, not globals, so
+// that test registration during static initialisation can already build the catalog).
+std::vector<Vec3> cube_corners() {
+    return {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0),
+            Vec3(0, 0, 1), Vec3(1, 0, 1), Vec3(1, 1, 1), Vec3(0, 1, 1)};
+}
+std::vector<std::vector<int>> cube_quads() {
+    return {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+}
 
 PolyMesh cube_symmetric() {  // each face split into 4 triangles around its centre
-    std::vector<Vec3> p = kCubeCorners;
+    std::vector<Vec3> p = cube_corners();
     std::vector<std::vector<int>> f;
-    for (const auto& q : kCubeQuads) {
+    for (const auto& q : cube_quads()) {
         const int c = static_cast<int>(p.size());
         p.push_back((p[q[0]] + p[q[1]] + p[q[2]] + p[q[3]]) / 4.0);
         for (int k = 0; k < 4; ++k) f.push_back({q[k], q[(k + 1) % 4], c});
@@ -55,11 +59,11 @@ PolyMesh cube_symmetric() {  // each face split into 4 triangles around its cent
 
 PolyMesh cube_asymmetric() {  // each face split by one diagonal: valences 3 to 6
     std::vector<std::vector<int>> f;
-    for (const auto& q : kCubeQuads) {
+    for (const auto& q : cube_quads()) {
         f.push_back({q[0], q[1], q[2]});
         f.push_back({q[0], q[2], q[3]});
     }
-    return make(kCubeCorners, f);
+    return make(cube_corners(), f);
 }
 
 // A (n+1) x (n+1) grid over [0,1]^2 with a height field, quads split along one diagonal:
@@ -136,9 +140,9 @@ PolyMesh pole(int n, int rings) {
 std::vector<std::string> files_in(const std::filesystem::path& dir, const std::string& ext) {
     std::vector<std::string> out;
     std::error_code ec;
-    if (!std::filesystem::is_directory(dir, ec)) return out;
+    if (!std::filesystem::is_directory(dir, ec)) return out;  // optional data: absent is fine
     for (const auto& e : std::filesystem::directory_iterator(dir, ec))
-        if (e.path().extension() == ext) out.push_back(e.path().string());
+        if (e.path().extension() == ext) out.push_back(e.path().lexically_normal().string());
     std::sort(out.begin(), out.end());
     return out;
 }

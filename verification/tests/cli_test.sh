@@ -1,2 +1,44 @@
 #!/usr/bin/env bash
-exit 0
+# The crossdiv CLI as a user runs it: exit codes (0 agree, 1 disagree, 2 bad input) and
+# messages that name the file and line. Usage: cli_test.sh path/to/crossdiv
+set -u
+crossdiv="$1"
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+passed=0 failed=0
+
+expect() {  # expect NAME EXIT_CODE PATTERN -- command...
+  local name="$1" code="$2" pattern="$3"; shift 4
+  local out rc
+  out="$("$@" 2>&1)"; rc=$?
+  if [ "$rc" -eq "$code" ] && grep -qE -- "$pattern" <<<"$out"; then
+    passed=$((passed + 1))
+  else
+    failed=$((failed + 1))
+    echo "FAIL $name: exit $rc (want $code), output lacks /$pattern/:"; echo "$out" | tail -5
+  fi
+}
+
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n' > "$tmp/bad_index.obj"
+printf 'v 0 0 0\nv 1 0\nv 0 1 0\nf 1 2 3\n' > "$tmp/missing.obj"
+printf 'v 0 0 0\nv 1 0 0\nv 0 nan 0\nf 1 2 3\n' > "$tmp/nan.obj"
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n' > "$tmp/quad.obj"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 1 1 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n' > "$tmp/nonmanifold.obj"
+
+expect bad-index 2 'bad_index.obj:4: vertex index 4 out of range' -- "$crossdiv" compare "$tmp/bad_index.obj" --levels 1
+expect missing-coordinate 2 'missing.obj:2: missing z coordinate' -- "$crossdiv" compare "$tmp/missing.obj" --levels 1
+expect nan 2 'nan.obj:3: y coordinate is nan' -- "$crossdiv" subdivide "$tmp/nan.obj" --levels 1 -o "$tmp/o.obj"
+expect quad 2 'face 0 \(.*quad.obj:5\): has 4 corners; Loop subdivision needs triangles' -- "$crossdiv" compare "$tmp/quad.obj" --levels 1
+expect non-manifold 2 'edge \(0, 1\) is shared by 3 triangles' -- "$crossdiv" compare "$tmp/nonmanifold.obj" --levels 1
+expect check-lists-issues 2 'error \[non-manifold-edge\]' -- "$crossdiv" check "$tmp/nonmanifold.obj"
+expect missing-file 2 'cannot open file' -- "$crossdiv" compare "$tmp/none.obj"
+expect unknown-option 2 'weights' -- "$crossdiv" compare bundled:tetrahedron --weights cubic
+expect agree 0 'every reference agrees' -- "$crossdiv" compare bundled:icosahedron --levels 3 --json "$tmp/r.json"
+expect json 0 '"all_agree": true' -- cat "$tmp/r.json"
+expect warren 1 'weight-family' -- "$crossdiv" compare bundled:icosahedron --levels 3 --weights warren
+expect corner 1 'boundary-rule' -- "$crossdiv" compare bundled:open-patch --levels 2 --boundary edge-and-corner --against cgal
+expect subdivide 0 '162 vertices, 320 faces' -- "$crossdiv" subdivide bundled:icosahedron --levels 2 --impl opensubdiv -o "$tmp/s.obj"
+expect subdivide-out 0 '^f ' -- cat "$tmp/s.obj"
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

@@ -1,0 +1,67 @@
+// The comparison's figures on meshes where they are known by hand.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "crossdiv/verification/compare.h"
+
+namespace crossdiv::verification {
+namespace {
+
+PolyMesh square_pair() {  // unit square as two triangles: 4 vertices, 5 edges, 1 boundary loop
+    PolyMesh m;
+    m.positions = {Vec3(0, 0, 0), Vec3(3, 0, 0), Vec3(3, 4, 0), Vec3(0, 4, 0)};
+    m.add_face({0, 1, 2});
+    m.add_face({0, 2, 3});
+    return m;
+}
+
+TEST(Compare, IdenticalMeshesUnderAPermutationAgree) {
+    const PolyMesh ours = square_pair();
+    PolyMesh ref;  // reference numbers vertices 3,2,1,0 and stores faces rotated
+    ref.positions = {ours.positions[3], ours.positions[2], ours.positions[1], ours.positions[0]};
+    ref.add_face({1, 3, 2});  // (2, 0, 1) in our numbering: a rotation of (0, 1, 2)
+    ref.add_face({0, 3, 1});  // (3, 0, 2)
+    const MeshComparison c = compare_meshes(ours, ref, {3, 2, 1, 0});
+    EXPECT_TRUE(c.face_sets_equal);
+    EXPECT_EQ(c.ours, (TopologyCounts{4, 5, 2, 1, 1}));
+    EXPECT_EQ(c.max_abs, 0.0);
+    EXPECT_TRUE(c.agree());
+}
+
+TEST(Compare, DistancesAreAbsoluteAndRelativeToTheDiagonal) {
+    const PolyMesh ours = square_pair();
+    PolyMesh ref = ours;
+    ref.positions[2].z() += 0.5;  // diagonal of our box: 5
+    const MeshComparison c = compare_meshes(ours, ref, {0, 1, 2, 3}, 2);
+    EXPECT_EQ(c.diagonal, 5.0);
+    EXPECT_EQ(c.max_abs, 0.5);
+    EXPECT_EQ(c.max_rel, 0.1);
+    EXPECT_EQ(c.rms_abs, 0.25);  // sqrt(0.25 / 4)
+    ASSERT_EQ(c.worst.size(), 2u);
+    EXPECT_EQ(c.worst[0].ours_index, 2);
+    EXPECT_EQ(c.worst[0].valence, 3);  // neighbours 0, 1, 3
+    EXPECT_TRUE(c.worst[0].boundary);
+    EXPECT_FALSE(c.agree());
+}
+
+TEST(Compare, FlippedDiagonalIsATopologyDifference) {
+    const PolyMesh ours = square_pair();
+    PolyMesh ref = ours;
+    ref.face_vertices = {0, 1, 3, 1, 2, 3};
+    const MeshComparison c = compare_meshes(ours, ref, {0, 1, 2, 3});
+    EXPECT_FALSE(c.face_sets_equal);
+    EXPECT_EQ(c.faces_only_in_ours, 2);
+    EXPECT_EQ(c.faces_only_in_ref, 2);
+    EXPECT_FALSE(c.agree());
+}
+
+TEST(Compare, NanPositionNeverAgrees) {
+    const PolyMesh ours = square_pair();
+    PolyMesh ref = ours;
+    ref.positions[1].x() = std::nan("");
+    EXPECT_FALSE(compare_meshes(ours, ref, {0, 1, 2, 3}).agree());
+}
+
+}  // namespace
+}  // namespace crossdiv::verification

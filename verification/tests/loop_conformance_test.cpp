@@ -1,0 +1,137 @@
+// Conformance: core Loop against every built reference, levels 1..3 (each level compared),
+// both boundary rules, both weight families, over the bundled meshes, the course meshes and
+// the CGAL demo meshes when present. Every agreement is asserted; where a reference lacks the
+// requested rule, the divergence is asserted to exist exactly where the input's topology
+// says the rule matters, with that rule as its measured class.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "crossdiv/datasets/bundled.h"
+#include "crossdiv/verification/inputs.h"
+#include "crossdiv/verification/loop_comparison.h"
+#include "crossdiv/verification/mesh_topology.h"
+#include "crossdiv/verification/references.h"
+#include "crossdiv/verification/tolerances.h"
+
+namespace crossdiv::verification {
+namespace {
+
+struct Case {
+    std::string input;
+    LoopOptions options;
+    int levels;
+};
+
+void PrintTo(const Case& c, std::ostream* os) {
+    *os << c.input << " weights=" << to_string(c.options.weights) << " boundary=" << to_string(c.options.boundary)
+        << " levels=" << c.levels;
+}
+
+std::string case_name(const Case& c) {
+    // Collection first: the course folder and the bundled catalog both have an icosahedron.
+    const std::filesystem::path p(c.input);
+    std::string n = c.input.starts_with("bundled:") ? "bundled_" + c.input.substr(8)
+                                                    : p.parent_path().filename().string() + "_" + p.stem().string();
+    n += "_" + std::string(to_string(c.options.weights)) + "_" + std::string(to_string(c.options.boundary));
+    for (char& ch : n)
+        if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+    return n;
+}
+
+std::vector<Case> all_cases() {
+    std::vector<Case> cases;
+    const std::vector<std::string> inputs = expand_inputs({"bundled:all", "course:all", "cgal:all"});
+    for (const std::string& in : inputs) {
+        cases.push_back({in, {LoopWeights::Loop, LoopBoundary::EdgeOnly}, 3});
+        cases.push_back({in, {LoopWeights::Loop, LoopBoundary::EdgeAndCorner}, 3});
+        if (in.starts_with("bundled:")) cases.push_back({in, {LoopWeights::Warren, LoopBoundary::EdgeOnly}, 2});
+    }
+    return cases;
+}
+
+/// Where the rules must part on this input, from its geometry and topology alone (not from our
+/// Loop code). Two even rules differ at a vertex by (weight difference) x (its Laplacian,
+/// sum of the neighbours the rule uses minus their count times the vertex), so a rule can only
+/// show where that Laplacian is not zero: a valence-4 face centre sitting at its ring's
+/// centroid (cube-symmetric) gets the same position from both weight families.
+struct RuleFootprint {
+    bool curved_irregular_interior = false;  ///< interior valence not 3 or 6, Laplacian != 0
+    bool curved_one_face_corner = false;     ///< boundary vertex with one face, Laplacian != 0
+};
+
+RuleFootprint footprint(const PolyMesh& m) {
+    const MeshTopology t = mesh_topology(m);
+    const size_t n = static_cast<size_t>(m.num_vertices());
+    std::vector<int> faces_at(n, 0);
+    for (int v : m.face_vertices) ++faces_at[v];
+    std::vector<Vec3> lap(n, Vec3::Zero()), boundary_lap(n, Vec3::Zero());
+    for (auto [a, b] : t.edge_list) {
+        lap[a] += m.positions[b] - m.positions[a];
+        lap[b] += m.positions[a] - m.positions[b];
+    }
+    for (int f = 0; f < m.num_faces(); ++f)  // boundary neighbours of a one-face corner: its face's other two
+        for (int k = 0; k < 3; ++k) {
+            const int v = m.face(f)[k];
+            boundary_lap[v] += m.positions[m.face(f)[(k + 1) % 3]] + m.positions[m.face(f)[(k + 2) % 3]] - 2 * m.positions[v];
+        }
+    // Far above rounding (1e-16 of the diagonal), far below any real curvature of the catalog.
+    const double visible = 1e-9 * bounding_box_diagonal(m.positions);
+    RuleFootprint f;
+    for (size_t v = 0; v < n; ++v) {
+        const bool interior = !t.boundary_vertex[v] && t.valence[v] > 0;
+        f.curved_irregular_interior |=
+            interior && t.valence[v] != 3 && t.valence[v] != 6 && lap[v].norm() > visible;
+        f.curved_one_face_corner |= t.boundary_vertex[v] && faces_at[v] == 1 && boundary_lap[v].norm() > visible;
+    }
+    return f;
+}
+
+class LoopConformance : public ::testing::TestWithParam<Case> {};
+
+TEST_P(LoopConformance, CoreAgreesWithEachReferenceOrDivergesByTheMissingRule) {
+    const Case& c = GetParam();
+    const PolyMesh input = load_input(c.input);
+    const RuleFootprint fp = footprint(input);
+    LoopComparisonRequest req;
+    req.options = c.options;
+    req.levels = c.levels;
+    const LoopComparison result = compare_loop(to_tri_mesh(input, "Loop"), c.input, req);
+    ASSERT_EQ(result.runs.size(), loop_references().size());
+
+    for (const ReferenceRun& r : result.runs) {
+        SCOPED_TRACE(r.reference + ": " + r.explanation);
+        ASSERT_EQ(r.outcome.status, RunStatus::Ok) << r.outcome.summary();
+        ASSERT_NE(r.correspondence.method, MatchMethod::None) << r.correspondence.note;
+        EXPECT_TRUE(r.comparison.topology_equal());
+        ASSERT_EQ(r.level_max_rel.size(), static_cast<size_t>(c.levels));
+
+        const bool weights_missing = r.ran_with.weights != c.options.weights;
+        const bool boundary_missing = r.ran_with.boundary != c.options.boundary;
+        const bool expect_diverge =
+            (weights_missing && fp.curved_irregular_interior) || (boundary_missing && fp.curved_one_face_corner);
+        if (!expect_diverge) {
+            EXPECT_EQ(r.verdict, "agree");
+            for (int l = 0; l < c.levels; ++l)
+                EXPECT_LE(r.level_max_rel[l], tolerances::kAgreementRelative) << "level " << l + 1;
+            continue;
+        }
+        EXPECT_EQ(r.verdict, "diverge");
+        EXPECT_EQ(r.divergence_class, weights_missing ? "weight-family" : "boundary-rule");
+        // A real rule difference, far above rounding: vertices move by a visible fraction.
+        EXPECT_GT(r.comparison.max_rel, 1e-6);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(AllInputs, LoopConformance, ::testing::ValuesIn(all_cases()),
+                         [](const ::testing::TestParamInfo<Case>& info) { return case_name(info.param); });
+
+TEST(LoopConformanceData, TheCatalogIsComplete) {
+    // The bundled catalog is always there; the course and CGAL folders are optional inputs.
+    EXPECT_EQ(datasets::bundled_meshes().size(), 7u + 10u + 1u);
+    if (std::filesystem::is_directory(CROSSDIV_SHARED_DATA "/c3100/objs"))
+        EXPECT_EQ(datasets::course_mesh_files().size(), 3u);
+}
+
+}  // namespace
+}  // namespace crossdiv::verification

@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# crossdiv's two entry points for a Debian 12 machine (run as root on a fresh machine):
+#   ./run.sh main   install what is missing, build, run the default comparison and write out/results.json
+#   ./run.sh test   install what is missing, build, run every test with CTest
+set -euo pipefail
+cd "$(dirname "$0")"
+
+# Debian packages the build, the references and the tests need.
+PACKAGES="g++ make cmake libeigen3-dev libosd-dev libopenmesh-dev libcgal-dev libgtest-dev \
+libcli11-dev nlohmann-json3-dev libfmt-dev libnanoflann-dev"
+
+install_missing() {
+  local missing=""
+  for p in $PACKAGES; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
+  done
+  if [ -n "$missing" ]; then
+    if [ "$(id -u)" -ne 0 ]; then
+      echo "missing Debian packages:$missing (run as root, or: sudo apt-get install$missing)" >&2
+      exit 2
+    fi
+    echo "installing:$missing"
+    apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $missing
+  fi
+  # Real meshes from Debian's libcgal-demo, unpacked into datasets/cgal (optional data).
+  [ -d datasets/cgal ] || datasets/install_cgal_meshes.sh || echo "CGAL demo meshes unavailable; continuing without them"
+}
+
+build() {
+  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+  cmake --build build -j2   # 2 jobs: CGAL translation units need ~1 GB each
+}
+
+case "${1:-}" in
+  main)
+    install_missing
+    build
+    ./build/verification/crossdiv compare bundled:all course:all cgal:all --scheme loop --levels 3 \
+      --against opensubdiv,openmesh,cgal --json out/results.json
+    ;;
+  test)
+    install_missing
+    build
+    ctest --test-dir build --output-on-failure -j2
+    ;;
+  *)
+    echo "usage: $0 main|test" >&2
+    exit 2
+    ;;
+esac
