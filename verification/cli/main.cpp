@@ -64,11 +64,12 @@ void print_table(const LoopComparison& c) {
     fmt::print("\n{} ({} vertices, {} faces) loop weights={} boundary={} levels={} (core {:.3f} s)\n", c.input,
                c.input_vertices, c.input_faces, to_string(c.options.weights), to_string(c.options.boundary), c.levels,
                c.core_seconds);
-    fmt::print("  {:<11} {:<13} {:<9} {:<8} {:>10} {:>10}  {}\n", "reference", "verdict", "match", "topology",
-               "max rel", "rms rel", "class / explanation");
+    fmt::print("  {:<11} {:<9} {:<13} {:<9} {:<8} {:>10} {:>10}  {}\n", "reference", "status", "verdict", "match",
+               "topology", "max rel", "rms rel", "class / explanation");
     for (const ReferenceRun& r : c.runs) {
         const bool ok = r.outcome.status == RunStatus::Ok;
-        fmt::print("  {:<11} {:<13} {:<9} {:<8} {:>10} {:>10}  {}{}\n", r.reference, r.verdict,
+        fmt::print("  {:<11} {:<9} {:<13} {:<9} {:<8} {:>10} {:>10}  {}{}\n", r.reference,
+                   to_string(r.outcome.status), r.verdict,
                    ok ? to_string(r.correspondence.method) : "-",
                    ok ? (r.comparison.topology_equal() ? "equal" : "differs") : "-",
                    ok ? fmt::format("{:.3g}", r.comparison.max_rel) : "-",

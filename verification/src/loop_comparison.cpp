@@ -1,6 +1,7 @@
 #include "crossdiv/verification/loop_comparison.h"
 
 #include <chrono>
+#include <deque>
 #include <memory>
 #include <string>
 
@@ -79,7 +80,9 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
     out.levels = req.levels;
 
     const auto t0 = std::chrono::steady_clock::now();
-    std::vector<CoreRun> core;  // [0] = requested options; others added for classification
+    // [0] = requested options; others are added for classification. A deque, so references to
+    // earlier runs stay valid while later ones are added.
+    std::deque<CoreRun> core;
     core.push_back(run_core(input, req.options, req.levels));
     out.core_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     auto core_with = [&](const LoopOptions& o) -> const CoreRun& {
