@@ -43,8 +43,22 @@ struct SchemeArgs {
     }
 };
 
+/// Loop output larger than this is refused before any work: core holds ~100 bytes per face
+/// over all levels and a reference several times that, so 64M faces is the most a 24 GB
+/// machine refines with the three references side by side.
+constexpr long long kMaxOutputFaces = 64LL << 20;
+
+void check_output_size(const TriMesh& mesh, int levels, const std::string& name) {
+    long long faces = mesh.num_faces();
+    for (int l = 0; l < levels; ++l) faces *= 4;
+    if (faces > kMaxOutputFaces)
+        throw InputError(name + ": " + std::to_string(levels) + " levels would produce " + std::to_string(faces) +
+                         " faces, over the limit of " + std::to_string(kMaxOutputFaces) + "; use fewer levels");
+}
+
 int run_subdivide(const std::string& in, const SchemeArgs& s, const std::string& impl, const std::string& out) {
     const TriMesh mesh = to_tri_mesh(load_input(in), "Loop subdivision");
+    check_output_size(mesh, s.levels, in);
     PolyMesh result;
     if (impl == "core") {
         result = to_poly_mesh(loop_subdivide(mesh, s.options(), s.levels));
@@ -105,6 +119,7 @@ int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, cons
     for (const std::string& in : inputs) {
         meshes.push_back(to_tri_mesh(load_input(in), "Loop subdivision"));
         loop_input_connectivity(meshes.back());
+        check_output_size(meshes.back(), s.levels, in);
     }
     nlohmann::json results = nlohmann::json::array();
     bool all_agree = true;

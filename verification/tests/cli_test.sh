@@ -33,6 +33,7 @@ expect nan 2 'nan.obj:3: y coordinate is nan' -- "$crossdiv" subdivide "$tmp/nan
 expect quad 2 'face 0 \(.*quad.obj:5\): has 4 corners; Loop subdivision needs triangles' -- "$crossdiv" compare "$tmp/quad.obj" --levels 1
 expect non-manifold 2 'edge \(0, 1\) is shared by 3 triangles' -- "$crossdiv" compare "$tmp/nonmanifold.obj" --levels 1
 expect check-lists-issues 2 'error \[non-manifold-edge\]' -- "$crossdiv" check "$tmp/nonmanifold.obj"
+expect too-many-levels 2 'would produce 335544320 faces, over the limit' -- "$crossdiv" subdivide bundled:icosahedron --levels 12 -o "$tmp/x.obj"
 expect missing-file 2 'cannot open file' -- "$crossdiv" compare "$tmp/none.obj"
 expect unknown-option 2 'weights' -- "$crossdiv" compare bundled:tetrahedron --weights cubic
 expect agree 0 'every reference agrees' -- "$crossdiv" compare bundled:icosahedron --levels 3 --json "$tmp/r.json"

@@ -1,5 +1,6 @@
 #include "crossdiv/subdiv/loop.h"
 
+#include <climits>
 #include <string>
 #include <utility>
 
@@ -164,6 +165,10 @@ TriConnectivity refine_tri_connectivity(const TriMesh& coarse, const TriConnecti
 
 TriMesh loop_refine_once(const TriMesh& mesh, const TriConnectivity& conn, const LoopOptions& options) {
     const int nv = mesh.num_vertices(), nf = mesh.num_faces();
+    // Indices are int (as in the seed and in OpenSubdiv); refuse a level they cannot address.
+    if (4LL * nf > INT_MAX || 3LL * (4LL * nf) > INT_MAX || static_cast<long long>(nv) + conn.num_edges() > INT_MAX)
+        throw InputError("the next Loop level would have " + std::to_string(4LL * nf) +
+                         " faces, more than 32-bit indices address; use fewer levels");
     TriMesh out;
     out.positions.resize(static_cast<size_t>(nv) + conn.num_edges());
     const bool colors = !mesh.colors.empty();
