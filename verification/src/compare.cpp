@@ -12,9 +12,9 @@ namespace {
 
 TopologyCounts counts(const MeshTopology& t) { return {t.vertices, t.edges, t.faces, t.euler, t.boundary_loops}; }
 
-/// Faces as vertex lists rotated to start at their smallest index (orientation kept), with a
-/// length prefix so faces of different sizes never compare equal; sorted.
-std::vector<int> canonical_faces(const PolyMesh& m, const std::vector<int>* map) {
+/// Faces as vertex lists rotated to start at their smallest index (orientation kept), mapped
+/// through `map` when given, sorted: equal lists mean equal oriented face sets.
+std::vector<std::vector<int>> canonical_faces(const PolyMesh& m, const std::vector<int>* map) {
     std::vector<std::vector<int>> faces(static_cast<size_t>(m.num_faces()));
     for (int f = 0; f < m.num_faces(); ++f) {
         auto& out = faces[f];
@@ -22,23 +22,35 @@ std::vector<int> canonical_faces(const PolyMesh& m, const std::vector<int>* map)
         if (map)
             for (int& v : out) v = (*map)[v];
         std::rotate(out.begin(), std::min_element(out.begin(), out.end()), out.end());
-        out.insert(out.begin(), m.face_size(f));
     }
     std::sort(faces.begin(), faces.end());
-    std::vector<int> flat;
-    for (auto& f : faces) flat.insert(flat.end(), f.begin(), f.end());
-    return flat;
-}
-
-/// Splits a flat canonical list back into faces for set differences.
-std::vector<std::vector<int>> unflatten(const std::vector<int>& flat) {
-    std::vector<std::vector<int>> faces;
-    for (size_t i = 0; i < flat.size(); i += static_cast<size_t>(flat[i]) + 1)
-        faces.emplace_back(flat.begin() + static_cast<long>(i), flat.begin() + static_cast<long>(i + flat[i] + 1));
     return faces;
 }
 
+/// Number of faces of sorted `a` not in sorted `b` (a merge, as std::set_difference, counted).
+int count_only_in(const std::vector<std::vector<int>>& a, const std::vector<std::vector<int>>& b) {
+    int n = 0;
+    for (size_t i = 0, j = 0; i < a.size();) {
+        if (j == b.size() || a[i] < b[j]) { ++n; ++i; }
+        else if (b[j] < a[i]) ++j;
+        else { ++i; ++j; }
+    }
+    return n;
+}
+
 }  // namespace
+
+double max_relative_distance(const PolyMesh& ours, const PolyMesh& ref, const std::vector<int>& ref_to_ours) {
+    if (ref_to_ours.size() != static_cast<size_t>(ref.num_vertices()) || ref.num_vertices() != ours.num_vertices())
+        return INFINITY;
+    double max_abs = 0;
+    for (int i = 0; i < ref.num_vertices(); ++i) {
+        const double d = (ref.positions[i] - ours.positions[ref_to_ours[i]]).norm();
+        max_abs = std::isnan(d) ? INFINITY : std::max(max_abs, d);
+    }
+    const double diagonal = bounding_box_diagonal(ours.positions);
+    return max_abs / (diagonal > 0 ? diagonal : 1.0);
+}
 
 bool MeshComparison::agree() const { return topology_equal() && max_rel <= tolerances::kAgreementRelative; }
 
@@ -53,16 +65,11 @@ MeshComparison compare_meshes(const PolyMesh& ours, const PolyMesh& ref, const s
     const bool mapped = ref_to_ours.size() == static_cast<size_t>(ref.num_vertices()) &&
                         ref.num_vertices() == ours.num_vertices();
     if (mapped) {
-        const std::vector<int> a = canonical_faces(ours, nullptr), b = canonical_faces(ref, &ref_to_ours);
+        const auto a = canonical_faces(ours, nullptr), b = canonical_faces(ref, &ref_to_ours);
         c.face_sets_equal = a == b;
         if (!c.face_sets_equal) {
-            const auto fa = unflatten(a), fb = unflatten(b);
-            std::vector<std::vector<int>> diff;
-            std::set_difference(fa.begin(), fa.end(), fb.begin(), fb.end(), std::back_inserter(diff));
-            c.faces_only_in_ours = static_cast<int>(diff.size());
-            diff.clear();
-            std::set_difference(fb.begin(), fb.end(), fa.begin(), fa.end(), std::back_inserter(diff));
-            c.faces_only_in_ref = static_cast<int>(diff.size());
+            c.faces_only_in_ours = count_only_in(a, b);
+            c.faces_only_in_ref = count_only_in(b, a);
         }
     } else {
         c.faces_only_in_ours = ours.num_faces();

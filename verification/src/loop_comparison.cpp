@@ -40,14 +40,15 @@ CoreRun run_core(const TriMesh& input, const LoopOptions& options, int levels) {
     return run;
 }
 
-/// Max relative error at each level 1..N under the level maps (or the last level only).
+/// Max relative error at each level 1..N under the level maps (or the last level only, when
+/// the match was by nearest neighbour). Positions only: topology is compared once, at the end.
 std::vector<double> level_errors(const CoreRun& core, const adapters::LevelTrace& ref, const Correspondence& c) {
     std::vector<double> e;
     for (size_t l = 1; l < ref.size(); ++l) {
         if (l < c.level_maps.size())
-            e.push_back(compare_meshes(core.levels[l - 1], ref[l], c.level_maps[l], 0).max_rel);
+            e.push_back(max_relative_distance(core.levels[l - 1], ref[l], c.level_maps[l]));
         else if (l + 1 == ref.size())
-            e.push_back(compare_meshes(core.levels[l - 1], ref[l], c.ref_to_ours, 0).max_rel);
+            e.push_back(max_relative_distance(core.levels[l - 1], ref[l], c.ref_to_ours));
     }
     return e;
 }

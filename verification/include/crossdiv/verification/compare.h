@@ -39,6 +39,10 @@ struct MeshComparison {
     bool agree() const;
 };
 
+/// Largest vertex distance over our bounding-box diagonal, positions only (no topology):
+/// the per-level figure. INFINITY when the map does not fit or a position is NaN.
+double max_relative_distance(const PolyMesh& ours, const PolyMesh& ref, const std::vector<int>& ref_to_ours);
+
 /// Compares `ref` with `ours`; `ref_to_ours[i]` is our vertex for reference vertex i.
 MeshComparison compare_meshes(const PolyMesh& ours, const PolyMesh& ref, const std::vector<int>& ref_to_ours,
                               int worst_count = 5);
