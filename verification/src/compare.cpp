@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "crossdiv/mesh/tri_mesh.h"
+#include "point_cloud.h"
 #include "crossdiv/verification/tolerances.h"
 
 namespace crossdiv::verification {
@@ -50,6 +51,37 @@ double max_relative_distance(const PolyMesh& ours, const PolyMesh& ref, const st
     }
     const double diagonal = bounding_box_diagonal(ours.positions);
     return max_abs / (diagonal > 0 ? diagonal : 1.0);
+}
+
+std::vector<double> vertex_distances(const PolyMesh& ours, const PolyMesh& ref, const std::vector<int>& ref_to_ours) {
+    std::vector<double> d(static_cast<size_t>(ours.num_vertices()), NAN);
+    for (int i = 0; i < ref.num_vertices() && i < static_cast<int>(ref_to_ours.size()); ++i) {
+        const int o = ref_to_ours[i];
+        if (o >= 0 && o < ours.num_vertices()) d[o] = (ref.positions[i] - ours.positions[o]).norm();
+    }
+    return d;
+}
+
+namespace {
+/// Largest distance from a point of `from` to its nearest point of `to`.
+double directed_hausdorff(const std::vector<Vec3>& from, const std::vector<Vec3>& to) {
+    if (to.empty()) return from.empty() ? 0.0 : INFINITY;
+    PointCloud cloud{to};
+    PointTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+    tree.buildIndex();
+    double worst = 0;
+    for (const Vec3& p : from) {
+        unsigned idx = 0;
+        double d2 = 0;
+        tree.knnSearch(p.data(), 1, &idx, &d2);
+        worst = std::max(worst, std::sqrt(d2));
+    }
+    return worst;
+}
+}  // namespace
+
+double hausdorff_vertex_sets(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+    return std::max(directed_hausdorff(a, b), directed_hausdorff(b, a));
 }
 
 bool MeshComparison::agree() const { return topology_equal() && max_rel <= tolerances::kAgreementRelative; }

@@ -1,6 +1,6 @@
 #include "crossdiv/verification/correspondence.h"
 
-#include <nanoflann.hpp>
+#include "point_cloud.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -57,15 +57,6 @@ std::string match_next_level(const std::vector<int>& prev, const std::vector<Ver
     return "";
 }
 
-/// nanoflann's dataset interface over a vector of points.
-struct PointCloud {
-    const std::vector<Vec3>& pts;
-    size_t kdtree_get_point_count() const { return pts.size(); }
-    double kdtree_get_pt(size_t i, size_t dim) const { return pts[i][static_cast<int>(dim)]; }
-    template <class BBox>
-    bool kdtree_get_bbox(BBox&) const { return false; }
-};
-
 }  // namespace
 
 const char* to_string(MatchMethod method) {
@@ -86,8 +77,7 @@ Correspondence match_nearest(const std::vector<Vec3>& ours, const std::vector<Ve
         return c;
     }
     PointCloud cloud{ours};
-    using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PointCloud>, PointCloud, 3>;
-    Tree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+    PointTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
     tree.buildIndex();
     c.ref_to_ours.resize(ref.size());
     std::vector<char> used(ours.size(), 0);

@@ -1,6 +1,7 @@
 #include "crossdiv/verification/inputs.h"
 
 #include "crossdiv/datasets/bundled.h"
+#include "crossdiv/datasets/edge_cases.h"
 #include "crossdiv/error.h"
 #include "crossdiv/io/mesh_io.h"
 
@@ -11,12 +12,14 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& specs) {
     for (const std::string& s : specs) {
         if (s == "bundled:all") {
             for (const auto& b : datasets::bundled_meshes()) out.push_back("bundled:" + b.name);
+        } else if (s == "edgecases:all") {
+            for (const auto& c : datasets::edge_cases()) out.push_back("edgecase:" + c.name);
         } else if (s == "course:all") {
             for (const auto& f : datasets::course_mesh_files()) out.push_back(f);
         } else if (s == "cgal:all") {
             for (const auto& f : datasets::cgal_mesh_files()) out.push_back(f);
         } else if (s.ends_with(":all")) {
-            throw InputError("unknown collection '" + s + "' (known: bundled:all, course:all, cgal:all)");
+            throw InputError("unknown collection '" + s + "' (known: bundled:all, edgecases:all, course:all, cgal:all)");
         } else {
             out.push_back(s);
         }
@@ -26,6 +29,7 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& specs) {
 
 PolyMesh load_input(const std::string& spec) {
     if (spec.starts_with("bundled:")) return datasets::bundled_mesh(spec.substr(8));
+    if (spec.starts_with("edgecase:")) return datasets::edge_case(spec.substr(9)).mesh;
     return read_mesh(spec);
 }
 

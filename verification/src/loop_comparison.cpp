@@ -5,6 +5,8 @@
 #include <memory>
 #include <string>
 
+#include "crossdiv/error.h"
+#include "crossdiv/mesh/mesh_checks.h"
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/verification/references.h"
 #include "crossdiv/verification/tolerances.h"
@@ -53,13 +55,95 @@ std::vector<double> level_errors(const CoreRun& core, const adapters::LevelTrace
     return e;
 }
 
-bool all_within(const std::vector<double>& errors) {
-    for (double e : errors)
-        if (!(e <= tolerances::kAgreementRelative)) return false;
-    return true;
+/// The tier's verdict on one comparison (and its per-level errors).
+bool within(const LoopComparisonRequest& req, const MeshComparison& c, const std::vector<double>& level_errors,
+            double hausdorff_rel) {
+    switch (req.tier) {
+        case Tier::Strict: return c.topology_equal() && c.max_abs == 0.0;
+        case Tier::Geometric: return hausdorff_rel <= req.tolerance;
+        case Tier::Weak:
+            if (!c.topology_equal() || !(c.max_rel <= req.tolerance)) return false;
+            for (double e : level_errors)
+                if (!(e <= req.tolerance)) return false;
+            return true;
+    }
+    return false;
+}
+
+double ulp_of_largest_coordinate(const PolyMesh& m) {
+    double largest = 0;
+    for (const Vec3& p : m.positions) largest = std::max(largest, p.cwiseAbs().maxCoeff());
+    return std::nextafter(largest, INFINITY) - largest;
+}
+
+/// Our mesh at the first level that diverges, with per-vertex distances (the last level's
+/// map when matched by nearest neighbour); empty when larger than the request allows.
+std::optional<ErrorField> error_field(const CoreRun& ours, const adapters::LevelTrace& ref, const Correspondence& c,
+                                      const LoopComparisonRequest& req) {
+    const int levels = static_cast<int>(ref.size()) - 1;
+    for (int l = 1; l <= levels; ++l) {
+        const std::vector<int>* map = l < static_cast<int>(c.level_maps.size()) ? &c.level_maps[l]
+                                      : l == levels                             ? &c.ref_to_ours
+                                                                                : nullptr;
+        if (!map) continue;
+        const PolyMesh& mesh = ours.levels[l - 1];
+        const double e = max_relative_distance(mesh, ref[l], *map);
+        if (e <= req.tolerance && l < levels) continue;
+        if (mesh.num_faces() > req.error_field_max_faces) return std::nullopt;
+        return ErrorField{l, mesh, vertex_distances(mesh, ref[l], *map)};
+    }
+    return std::nullopt;
+}
+
+/// Runs one reference, isolated, with the closest rules it has; fills the run's identity.
+IsolatedTrace run_reference(const LoopReference& ref, const TriMesh& input, const LoopComparisonRequest& req,
+                            ReferenceRun& run) {
+    run.reference = ref.name;
+    run.version = ref.version;
+    run.ran_with = closest_supported(ref, req.options);
+    const int levels = req.levels;
+    const LoopOptions ran_with = run.ran_with;
+    IsolatedTrace iso = run_isolated([&] { return ref.loop(input, ran_with, levels); }, req.timeout_seconds, req.isolate);
+    run.outcome = iso.outcome;
+    return iso;
+}
+
+LoopComparison empty_comparison(const TriMesh& input, const std::string& name, const LoopComparisonRequest& req) {
+    LoopComparison out;
+    out.input = name;
+    out.input_vertices = input.num_vertices();
+    out.input_faces = input.num_faces();
+    out.options = req.options;
+    out.levels = req.levels;
+    out.tier = req.tier;
+    out.tolerance = req.tolerance;
+    return out;
+}
+
+std::vector<const LoopReference*> selected_references(const LoopComparisonRequest& req) {
+    std::vector<const LoopReference*> refs;
+    if (req.references.empty())
+        for (const LoopReference& r : loop_references()) refs.push_back(&r);
+    for (const std::string& n : req.references) refs.push_back(&find_loop_reference(n));
+    return refs;
 }
 
 }  // namespace
+
+const char* to_string(Tier tier) {
+    switch (tier) {
+        case Tier::Strict: return "strict";
+        case Tier::Weak: return "weak";
+        case Tier::Geometric: return "geometric";
+    }
+    return "unknown";
+}
+
+Tier tier_from_string(const std::string& name) {
+    for (Tier t : {Tier::Strict, Tier::Weak, Tier::Geometric})
+        if (name == to_string(t)) return t;
+    throw InputError("unknown tier '" + name + "' (known: strict, weak, geometric)");
+}
 
 bool LoopComparison::all_agree() const {
     for (const ReferenceRun& r : runs)
@@ -68,17 +152,8 @@ bool LoopComparison::all_agree() const {
 }
 
 LoopComparison compare_loop(const TriMesh& input, const std::string& name, const LoopComparisonRequest& req) {
-    std::vector<const LoopReference*> refs;
-    if (req.references.empty())
-        for (const LoopReference& r : loop_references()) refs.push_back(&r);
-    for (const std::string& n : req.references) refs.push_back(&find_loop_reference(n));
-
-    LoopComparison out;
-    out.input = name;
-    out.input_vertices = input.num_vertices();
-    out.input_faces = input.num_faces();
-    out.options = req.options;
-    out.levels = req.levels;
+    const std::vector<const LoopReference*> refs = selected_references(req);
+    LoopComparison out = empty_comparison(input, name, req);
 
     const auto t0 = std::chrono::steady_clock::now();
     // [0] = requested options; others are added for classification. A deque, so references to
@@ -95,13 +170,7 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
 
     for (const LoopReference* ref : refs) {
         ReferenceRun run;
-        run.reference = ref->name;
-        run.version = ref->version;
-        run.ran_with = closest_supported(*ref, req.options);
-        const int levels = req.levels;
-        const LoopOptions ran_with = run.ran_with;
-        IsolatedTrace iso = run_isolated([&] { return ref->loop(input, ran_with, levels); }, req.timeout_seconds, req.isolate);
-        run.outcome = iso.outcome;
+        IsolatedTrace iso = run_reference(*ref, input, req, run);
         if (run.outcome.status != RunStatus::Ok) {
             run.verdict = run.outcome.status == RunStatus::Rejected ? "ref-rejected" : "ref-crashed";
             run.explanation = ref->name + " " + run.outcome.summary();
@@ -111,19 +180,34 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
         const adapters::LevelTrace& trace = *iso.trace;
         const CoreRun& ours = core.front();
         run.correspondence = match_loop_refinement(ours.origins, input.positions, trace, ours.levels.back().positions);
+        if (req.tier == Tier::Geometric) {
+            const double d = bounding_box_diagonal(ours.levels.back().positions);
+            run.hausdorff_rel = hausdorff_vertex_sets(ours.levels.back().positions, trace.back().positions) / (d > 0 ? d : 1);
+        }
         if (run.correspondence.method == MatchMethod::None) {
-            run.verdict = "diverge";
-            run.divergence_class = "topology";
-            run.explanation = "no vertex correspondence: " + run.correspondence.note;
+            const bool same_counts = trace.back().num_vertices() == ours.levels.back().num_vertices() &&
+                                     trace.back().num_faces() == ours.levels.back().num_faces();
+            if (req.tier == Tier::Geometric && run.hausdorff_rel <= req.tolerance) {
+                run.verdict = "agree";
+                run.explanation = "vertex-set Hausdorff distance " + sci(run.hausdorff_rel) + " <= " + sci(req.tolerance) +
+                                  " (no vertex correspondence: " + run.correspondence.note + ")";
+            } else {
+                run.verdict = "diverge";
+                run.divergence_class = same_counts ? "ambiguous-correspondence" : "topology";
+                run.explanation = "no vertex correspondence: " + run.correspondence.note;
+            }
             out.runs.push_back(std::move(run));
             continue;
         }
         run.comparison = compare_meshes(ours.levels.back(), trace.back(), run.correspondence.ref_to_ours);
         run.level_max_rel = level_errors(ours, trace, run.correspondence);
-        if (run.comparison.agree() && all_within(run.level_max_rel)) {
+        if (within(req, run.comparison, run.level_max_rel, run.hausdorff_rel)) {
             run.verdict = "agree";
-            run.explanation = "max relative error " + sci(run.comparison.max_rel) + " <= " +
-                              sci(tolerances::kAgreementRelative);
+            run.explanation = req.tier == Tier::Geometric
+                                  ? "vertex-set Hausdorff distance " + sci(run.hausdorff_rel) + " <= " + sci(req.tolerance)
+                              : req.tier == Tier::Strict ? "bitwise identical"
+                                                         : "max relative error " + sci(run.comparison.max_rel) +
+                                                               " <= " + sci(req.tolerance);
             out.runs.push_back(std::move(run));
             continue;
         }
@@ -133,11 +217,16 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
                                       : " (worst: our vertex " + std::to_string(run.comparison.worst[0].ours_index) +
                                             ", valence " + std::to_string(run.comparison.worst[0].valence) +
                                             (run.comparison.worst[0].boundary ? ", boundary" : ", interior") + ")";
+        const double ulps = run.comparison.max_abs / ulp_of_largest_coordinate(ours.levels.back());
         if (!run.comparison.topology_equal()) {
             run.divergence_class = "topology";
             run.explanation = "refined topology differs: " + std::to_string(run.comparison.faces_only_in_ref) +
                               " faces only in " + ref->name + ", " + std::to_string(run.comparison.faces_only_in_ours) +
                               " only in core";
+        } else if (ulps <= tolerances::kRoundingUlps) {
+            run.divergence_class = "rounding";
+            run.explanation = "differs by " + sci(run.comparison.max_rel) + " of the diagonal, which is " + sci(ulps) +
+                              " ulps of the largest coordinate" + worst;
         } else if (!(run.ran_with == req.options)) {
             // Measured, not assumed: rerun core with the reference's rule; if that agrees, the
             // rule difference explains the whole divergence.
@@ -145,10 +234,10 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
             const MeshComparison c2 =
                 compare_meshes(same_rule.levels.back(), trace.back(), run.correspondence.ref_to_ours);
             const std::vector<double> e2 = level_errors(same_rule, trace, run.correspondence);
-            if (c2.agree() && all_within(e2)) {
+            if (within(req, c2, e2, run.hausdorff_rel)) {
                 const bool w = run.ran_with.weights != req.options.weights;
                 const bool b = run.ran_with.boundary != req.options.boundary;
-                run.divergence_class = w && b ? "weight-family+boundary-rule" : w ? "weight-family" : "boundary-rule";
+                run.divergence_class = w && b ? "weight-family+corner-rule" : w ? "weight-family" : "corner-rule";
                 run.explanation = ref->name + " has no " + describe(req.options) + "; run with " + describe(run.ran_with) +
                                   " it agrees with core's " + describe(run.ran_with) + " to " + sci(c2.max_rel) +
                                   ", and differs from the requested rule by " + sci(run.comparison.max_rel) + worst;
@@ -160,6 +249,42 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
         } else {
             run.divergence_class = "unexplained";
             run.explanation = "same rules, differs by " + sci(run.comparison.max_rel) + worst;
+        }
+        if (req.error_field_max_faces > 0) run.error_field = error_field(ours, trace, run.correspondence, req);
+        out.runs.push_back(std::move(run));
+    }
+    return out;
+}
+
+LoopComparison compare_loop_refused(const TriMesh& input, const std::string& name, const LoopComparisonRequest& req,
+                                    const std::string& core_error) {
+    LoopComparison out = empty_comparison(input, name, req);
+    out.core_error = core_error;
+    // The class names what the input breaks, from the checker's first error.
+    std::string handling = "invalid-input-handling";
+    for (const MeshIssue& issue : check_mesh(to_poly_mesh(input))) {
+        if (issue.severity != Severity::Error) continue;
+        if (issue.kind == MeshIssueKind::NonManifoldEdge || issue.kind == MeshIssueKind::NonManifoldVertex)
+            handling = "non-manifold-handling";
+        else if (issue.kind == MeshIssueKind::InconsistentOrientation)
+            handling = "orientation-handling";
+        else if (issue.kind == MeshIssueKind::RepeatedVertex || issue.kind == MeshIssueKind::TooFewCorners)
+            handling = "degenerate-face-handling";
+        break;
+    }
+    for (const LoopReference* ref : selected_references(req)) {
+        ReferenceRun run;
+        IsolatedTrace iso = run_reference(*ref, input, req, run);
+        run.verdict = "ours-rejected";
+        if (run.outcome.status == RunStatus::Ok) {
+            run.divergence_class = handling;
+            const PolyMesh& last = iso.trace->back();
+            run.explanation = "core refuses the input (" + core_error + "); " + ref->name + " refines it to " +
+                              std::to_string(last.num_vertices()) + " vertices, " + std::to_string(last.num_faces()) +
+                              " faces";
+        } else {
+            run.explanation = "core refuses the input (" + core_error + "); so does " + ref->name + " (" +
+                              run.outcome.summary() + ")";
         }
         out.runs.push_back(std::move(run));
     }
@@ -192,6 +317,7 @@ nlohmann::json to_json(const LoopComparison& c) {
                     {"verdict", r.verdict},
                     {"divergence_class", r.divergence_class},
                     {"explanation", r.explanation}};
+        if (!std::isnan(r.hausdorff_rel)) run["hausdorff_rel"] = finite(r.hausdorff_rel);
         if (r.outcome.status == RunStatus::Ok) {
             run["match"] = {{"method", to_string(r.correspondence.method)}, {"note", r.correspondence.note}};
             run["topology"] = {{"core", topo(r.comparison.ours)},
@@ -210,8 +336,8 @@ nlohmann::json to_json(const LoopComparison& c) {
     }
     return {{"input", c.input},      {"input_vertices", c.input_vertices}, {"input_faces", c.input_faces},
             {"scheme", "loop"},      {"options", options(c.options)},      {"levels", c.levels},
-            {"core_seconds", c.core_seconds}, {"agreement_tolerance_rel", tolerances::kAgreementRelative},
-            {"all_agree", c.all_agree()},     {"runs", runs}};
+            {"core_seconds", c.core_seconds}, {"tier", to_string(c.tier)}, {"tolerance_rel", c.tolerance},
+            {"core_error", c.core_error},     {"all_agree", c.all_agree()}, {"runs", runs}};
 }
 
 }  // namespace crossdiv::verification

@@ -17,13 +17,16 @@ const std::vector<LoopReference>& loop_references() {
     static const std::vector<LoopReference> refs = [] {
         std::vector<LoopReference> r;
 #ifdef CROSSDIV_HAS_OPENSUBDIV
-        r.push_back({"opensubdiv", adapters::opensubdiv::version(), adapters::opensubdiv::supports, adapters::opensubdiv::loop});
+        r.push_back({"opensubdiv", adapters::opensubdiv::version(), adapters::opensubdiv::supports, adapters::opensubdiv::loop,
+                     adapters::opensubdiv::loop_native});
 #endif
 #ifdef CROSSDIV_HAS_OPENMESH
-        r.push_back({"openmesh", adapters::openmesh::version(), adapters::openmesh::supports, adapters::openmesh::loop});
+        r.push_back({"openmesh", adapters::openmesh::version(), adapters::openmesh::supports, adapters::openmesh::loop,
+                     adapters::openmesh::loop_native});
 #endif
 #ifdef CROSSDIV_HAS_CGAL
-        r.push_back({"cgal", adapters::cgal::version(), adapters::cgal::supports, adapters::cgal::loop});
+        r.push_back({"cgal", adapters::cgal::version(), adapters::cgal::supports, adapters::cgal::loop,
+                     adapters::cgal::loop_native});
 #endif
         return r;
     }();

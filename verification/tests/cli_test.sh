@@ -39,7 +39,7 @@ expect unknown-option 2 'weights' -- "$crossdiv" compare bundled:tetrahedron --w
 expect agree 0 'every reference agrees' -- "$crossdiv" compare bundled:icosahedron --levels 3 --json "$tmp/r.json"
 expect json 0 '"all_agree": true' -- cat "$tmp/r.json"
 expect warren 1 'weight-family' -- "$crossdiv" compare bundled:icosahedron --levels 3 --weights warren
-expect corner 1 'boundary-rule' -- "$crossdiv" compare bundled:open-patch --levels 2 --boundary edge-and-corner --against cgal
+expect corner 1 'corner-rule' -- "$crossdiv" compare bundled:open-patch --levels 2 --boundary edge-and-corner --against cgal
 expect subdivide 0 '162 vertices, 320 faces' -- "$crossdiv" subdivide bundled:icosahedron --levels 2 --impl opensubdiv -o "$tmp/s.obj"
 expect subdivide-out 0 '^f ' -- cat "$tmp/s.obj"
 

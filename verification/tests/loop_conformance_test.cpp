@@ -117,7 +117,7 @@ TEST_P(LoopConformance, CoreAgreesWithEachReferenceOrDivergesByTheMissingRule) {
             continue;
         }
         EXPECT_EQ(r.verdict, "diverge");
-        EXPECT_EQ(r.divergence_class, weights_missing ? "weight-family" : "boundary-rule");
+        EXPECT_EQ(r.divergence_class, weights_missing ? "weight-family" : "corner-rule");
         // A real rule difference, far above rounding: vertices move by a visible fraction.
         EXPECT_GT(r.comparison.max_rel, 1e-6);
     }

@@ -37,7 +37,9 @@ bool supports(const LoopOptions& options) {
 
 std::string version() { return std::string("CGAL ") + CGAL_VERSION_STR; }
 
-LevelTrace loop(const TriMesh& mesh, const LoopOptions& options, int levels) {
+namespace {
+
+Mesh build(const TriMesh& mesh, const LoopOptions& options) {
     if (!supports(options))
         throw Rejected("CGAL's Loop_subdivision has Loop weights and the edge-only boundary rule only");
     Mesh m;
@@ -51,12 +53,25 @@ LevelTrace loop(const TriMesh& mesh, const LoopOptions& options, int levels) {
                            ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) +
                            "): non-manifold or inconsistently oriented");
     }
+    return m;
+}
+
+}  // namespace
+
+LevelTrace loop(const TriMesh& mesh, const LoopOptions& options, int levels) {
+    Mesh m = build(mesh, options);
     LevelTrace trace{snapshot(m)};
     for (int l = 1; l <= levels; ++l) {
         CGAL::Subdivision_method_3::Loop_subdivision(m, CGAL::parameters::number_of_iterations(1));
         trace.push_back(snapshot(m));
     }
     return trace;
+}
+
+size_t loop_native(const TriMesh& mesh, const LoopOptions& options, int levels) {
+    Mesh m = build(mesh, options);
+    CGAL::Subdivision_method_3::Loop_subdivision(m, CGAL::parameters::number_of_iterations(levels));
+    return m.number_of_faces();
 }
 
 }  // namespace crossdiv::adapters::cgal

@@ -38,7 +38,9 @@ std::string version() {
     return "OpenMesh " + std::to_string(OM_VERSION >> 16) + "." + std::to_string((OM_VERSION >> 8) & 0xff);
 }
 
-LevelTrace loop(const TriMesh& mesh, const LoopOptions& options, int levels) {
+namespace {
+
+Mesh build(const TriMesh& mesh, const LoopOptions& options) {
     if (!supports(options))
         throw Rejected("OpenMesh's LoopT has Loop weights and the edge-only boundary rule only");
     Mesh m;
@@ -51,18 +53,40 @@ LevelTrace loop(const TriMesh& mesh, const LoopOptions& options, int levels) {
             throw Rejected("OpenMesh could not add face " + std::to_string(f) + " (" + std::to_string(t[0]) + ", " +
                            std::to_string(t[1]) + ", " + std::to_string(t[2]) + "): complex edge or vertex");
     }
+    return m;
+}
+
+/// LoopT's weight table covers valences below 50 by default and is read unchecked beyond.
+void size_weights(OpenMesh::Subdivider::Uniform::LoopT<Mesh>& loop, const Mesh& m) {
+    size_t max_valence = 0;
+    for (auto v : m.vertices()) max_valence = std::max<size_t>(max_valence, m.valence(v));
+    loop.init_weights(std::max<size_t>(50, max_valence + 1));
+}
+
+}  // namespace
+
+LevelTrace loop(const TriMesh& mesh, const LoopOptions& options, int levels) {
+    Mesh m = build(mesh, options);
     LevelTrace trace{snapshot(m)};
     OpenMesh::Subdivider::Uniform::LoopT<Mesh> loop;
     for (int l = 1; l <= levels; ++l) {
-        size_t max_valence = 0;
-        for (auto v : m.vertices()) max_valence = std::max<size_t>(max_valence, m.valence(v));
-        loop.init_weights(std::max<size_t>(50, max_valence + 1));
+        size_weights(loop, m);
         loop.attach(m);
         loop(1);
         loop.detach();
         trace.push_back(snapshot(m));
     }
     return trace;
+}
+
+size_t loop_native(const TriMesh& mesh, const LoopOptions& options, int levels) {
+    Mesh m = build(mesh, options);
+    OpenMesh::Subdivider::Uniform::LoopT<Mesh> loop;
+    size_weights(loop, m);  // refinement adds only valence-6 and existing valences
+    loop.attach(m);
+    loop(levels);
+    loop.detach();
+    return m.n_faces();
 }
 
 }  // namespace crossdiv::adapters::openmesh

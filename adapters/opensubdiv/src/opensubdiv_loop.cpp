@@ -53,7 +53,13 @@ std::string version() {
            "." + std::to_string(OPENSUBDIV_VERSION_PATCH);
 }
 
-LevelTrace loop(const TriMesh& mesh, const LoopOptions& options, int levels) {
+namespace {
+
+/// Far's refiner for `mesh` under `options`, uniformly refined `levels` times. Full topology
+/// in the last level (edges, for Limit() and the trace) is optional: the benchmark does not
+/// need it, and OpenSubdiv is fastest without it.
+std::unique_ptr<Far::TopologyRefiner> refine_topology(const TriMesh& mesh, const LoopOptions& options, int levels,
+                                                      bool full_topology_in_last_level) {
     if (!supports(options)) throw Rejected("OpenSubdiv's Loop scheme has Loop's 1987 weights only (no Warren)");
 
     Sdc::Options sdc;
@@ -79,13 +85,23 @@ LevelTrace loop(const TriMesh& mesh, const LoopOptions& options, int levels) {
     if (!refiner) throw Rejected("Far::TopologyRefinerFactory failed: " + g_far_errors);
 
     Far::TopologyRefiner::UniformOptions uniform(levels);
-    uniform.fullTopologyInLastLevel = true;
+    uniform.fullTopologyInLastLevel = full_topology_in_last_level;
     refiner->RefineUniform(uniform);
     if (!g_far_errors.empty()) throw Rejected("Far reported: " + g_far_errors);
+    return refiner;
+}
 
-    std::vector<Point3> points(static_cast<size_t>(refiner->GetNumVerticesTotal()));
+std::vector<Point3> base_points(const Far::TopologyRefiner& refiner, const TriMesh& mesh) {
+    std::vector<Point3> points(static_cast<size_t>(refiner.GetNumVerticesTotal()));
     for (int v = 0; v < mesh.num_vertices(); ++v) points[v] = {{mesh.positions[v].x(), mesh.positions[v].y(), mesh.positions[v].z()}};
+    return points;
+}
 
+}  // namespace
+
+LevelTrace loop(const TriMesh& mesh, const LoopOptions& options, int levels) {
+    const std::unique_ptr<Far::TopologyRefiner> refiner = refine_topology(mesh, options, levels, true);
+    std::vector<Point3> points = base_points(*refiner, mesh);
     LevelTrace trace;
     trace.push_back(level_mesh(refiner->GetLevel(0), points.data()));
     Far::PrimvarRefinerReal<double> primvar(*refiner);
@@ -97,6 +113,19 @@ LevelTrace loop(const TriMesh& mesh, const LoopOptions& options, int levels) {
         src = dst;
     }
     return trace;
+}
+
+size_t loop_native(const TriMesh& mesh, const LoopOptions& options, int levels) {
+    const std::unique_ptr<Far::TopologyRefiner> refiner = refine_topology(mesh, options, levels, false);
+    std::vector<Point3> points = base_points(*refiner, mesh);
+    Far::PrimvarRefinerReal<double> primvar(*refiner);
+    Point3* src = points.data();
+    for (int level = 1; level <= levels; ++level) {
+        Point3* dst = src + refiner->GetLevel(level - 1).GetNumVertices();
+        primvar.Interpolate(level, src, dst);
+        src = dst;
+    }
+    return static_cast<size_t>(refiner->GetLevel(levels).GetNumFaces());
 }
 
 }  // namespace crossdiv::adapters::opensubdiv

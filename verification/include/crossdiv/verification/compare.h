@@ -43,6 +43,13 @@ struct MeshComparison {
 /// the per-level figure. INFINITY when the map does not fit or a position is NaN.
 double max_relative_distance(const PolyMesh& ours, const PolyMesh& ref, const std::vector<int>& ref_to_ours);
 
+/// Distance of each of our vertices to its reference vertex under the map (NaN: unmatched).
+std::vector<double> vertex_distances(const PolyMesh& ours, const PolyMesh& ref, const std::vector<int>& ref_to_ours);
+
+/// Symmetric Hausdorff distance between two vertex sets (no correspondence needed): the
+/// geometric tier's measure of how far two refinements of the same surface lie apart.
+double hausdorff_vertex_sets(const std::vector<Vec3>& a, const std::vector<Vec3>& b);
+
 /// Compares `ref` with `ours`; `ref_to_ours[i]` is our vertex for reference vertex i.
 MeshComparison compare_meshes(const PolyMesh& ours, const PolyMesh& ref, const std::vector<int>& ref_to_ours,
                               int worst_count = 5);

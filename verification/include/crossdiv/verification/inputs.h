@@ -1,7 +1,7 @@
 #pragma once
 /// @file
-/// Input names the CLI accepts: a mesh file (.obj, .off), `bundled:NAME`, or a collection:
-/// `bundled:all`, `course:all` (../shared/data/c3100/objs), `cgal:all` (datasets/cgal).
+/// Input names the CLI accepts: a mesh file (.obj, .off), `bundled:NAME`, `edgecase:NAME`, or a
+/// collection: `bundled:all`, `edgecases:all`, `course:all` (../shared/data/c3100/objs), `cgal:all` (datasets/cgal).
 
 #include <string>
 #include <vector>

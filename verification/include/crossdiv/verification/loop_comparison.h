@@ -4,6 +4,8 @@
 /// vertices, compare every level, and classify each divergence by measurement.
 
 #include <nlohmann/json.hpp>
+#include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,8 +14,19 @@
 #include "crossdiv/verification/compare.h"
 #include "crossdiv/verification/correspondence.h"
 #include "crossdiv/verification/isolate.h"
+#include "crossdiv/verification/tolerances.h"
 
 namespace crossdiv::verification {
+
+/// How close is close enough (the tiers of OpenSubdiv's hbr/far regressions, plus one).
+enum class Tier {
+    Strict,     ///< bitwise: identical topology and every coordinate equal
+    Weak,       ///< identical topology, max distance <= tolerance * diagonal at every level
+    Geometric,  ///< vertex-set Hausdorff distance <= tolerance * diagonal; topology may differ
+};
+const char* to_string(Tier tier);
+/// @throws InputError for a name other than strict, weak, geometric.
+Tier tier_from_string(const std::string& name);
 
 struct LoopComparisonRequest {
     LoopOptions options;
@@ -21,6 +34,18 @@ struct LoopComparisonRequest {
     std::vector<std::string> references;  ///< names; all built ones when empty
     double timeout_seconds = 120;
     bool isolate = true;
+    Tier tier = Tier::Weak;
+    double tolerance = tolerances::kAgreementRelative;  ///< relative to the diagonal (Weak, Geometric)
+    /// Keep, for each divergence, our mesh at the first level that diverges with each
+    /// vertex's distance to the reference (for pictures), if it has at most this many faces.
+    int error_field_max_faces = 0;
+};
+
+/// Our mesh at one level with the per-vertex distance to a reference (NaN: unmatched).
+struct ErrorField {
+    int level = 0;
+    PolyMesh mesh;
+    std::vector<double> distance;
 };
 
 /// The outcome of one reference on one input.
@@ -33,10 +58,16 @@ struct ReferenceRun {
     std::vector<double> level_max_rel;     ///< max relative error at levels 1..N
     /// "agree", "diverge", "ref-rejected", "ref-crashed" (also threw and timeout).
     std::string verdict;
-    /// For "diverge": "weight-family", "boundary-rule", "weight-family+boundary-rule",
-    /// "topology" or "unexplained". Empty otherwise.
+    /// For "diverge", from measurement: "weight-family", "corner-rule",
+    /// "weight-family+corner-rule" (core rerun with the reference's rule agrees), "rounding"
+    /// (within tolerances::kRoundingUlps of the coordinates), "topology" (refined
+    /// connectivity differs), "ambiguous-correspondence" (same counts, but vertices cannot be
+    /// matched one to one), or "unexplained". For "ours-rejected": the input-handling class
+    /// ("non-manifold-handling", "orientation-handling", "degenerate-face-handling").
     std::string divergence_class;
     std::string explanation;  ///< one sentence with the measured figures
+    double hausdorff_rel = NAN;  ///< vertex-set Hausdorff distance / diagonal (Geometric tier)
+    std::optional<ErrorField> error_field;
 };
 
 struct LoopComparison {
@@ -45,6 +76,9 @@ struct LoopComparison {
     LoopOptions options;
     int levels = 0;
     double core_seconds = 0;
+    Tier tier = Tier::Weak;
+    double tolerance = tolerances::kAgreementRelative;
+    std::string core_error;  ///< non-empty: core refused the input (the message)
     std::vector<ReferenceRun> runs;
     bool all_agree() const;
 };
@@ -52,6 +86,12 @@ struct LoopComparison {
 /// Runs the comparison. @throws InputError if core cannot refine the input (bad mesh) or a
 /// reference name is unknown; reference failures are recorded, never thrown.
 LoopComparison compare_loop(const TriMesh& input, const std::string& name, const LoopComparisonRequest& request);
+
+/// For an input core refuses (`core_error`, its message): runs each reference anyway and
+/// records what it does (verdict "ours-rejected", with the class of input handling when the
+/// reference made a mesh of it, or its own failure).
+LoopComparison compare_loop_refused(const TriMesh& input, const std::string& name, const LoopComparisonRequest& request,
+                                    const std::string& core_error);
 
 /// The comparison as JSON (schema in reports/results-schema.md).
 nlohmann::json to_json(const LoopComparison& c);

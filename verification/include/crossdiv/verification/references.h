@@ -17,6 +17,8 @@ struct LoopReference {
     std::string version;  ///< as the library reports it
     bool (*supports)(const LoopOptions&);
     adapters::LevelTrace (*loop)(const TriMesh&, const LoopOptions&, int levels);
+    /// The same refinement kept in the library's structures; returns the output face count.
+    size_t (*loop_native)(const TriMesh&, const LoopOptions&, int levels);
 };
 
 /// The references built in (CROSSDIV_WITH_* options), in a fixed order.

@@ -20,6 +20,10 @@ bool supports(const LoopOptions& options);
 ///         or inconsistently oriented), naming the face.
 LevelTrace loop(const TriMesh& mesh, const LoopOptions& options, int levels);
 
+/// The same refinement in the library's own structures, with nothing converted back: what
+/// `crossdiv bench` times. Returns the number of output faces. @throws as loop().
+size_t loop_native(const TriMesh& mesh, const LoopOptions& options, int levels);
+
 /// "CGAL 5.5.1".
 std::string version();
 

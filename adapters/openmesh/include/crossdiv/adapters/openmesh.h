@@ -22,6 +22,10 @@ bool supports(const LoopOptions& options);
 ///         vertex), naming the face.
 LevelTrace loop(const TriMesh& mesh, const LoopOptions& options, int levels);
 
+/// The same refinement in the library's own structures, with nothing converted back: what
+/// `crossdiv bench` times. Returns the number of output faces. @throws as loop().
+size_t loop_native(const TriMesh& mesh, const LoopOptions& options, int levels);
+
 /// "OpenMesh 9.0".
 std::string version();
 

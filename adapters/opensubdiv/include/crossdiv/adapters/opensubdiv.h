@@ -23,6 +23,10 @@ bool supports(const LoopOptions& options);
 /// @throws Rejected for Warren weights or when Far's factory reports a topology error.
 LevelTrace loop(const TriMesh& mesh, const LoopOptions& options, int levels);
 
+/// The same refinement in the library's own structures, with nothing converted back: what
+/// `crossdiv bench` times. Returns the number of output faces. @throws as loop().
+size_t loop_native(const TriMesh& mesh, const LoopOptions& options, int levels);
+
 /// "OpenSubdiv 3.5.0" (from opensubdiv/version.h).
 std::string version();
 

@@ -1,0 +1,157 @@
+#include "crossdiv/datasets/edge_cases.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "crossdiv/error.h"
+#include "shapes.h"
+
+namespace crossdiv::datasets {
+using namespace shapes;
+namespace {
+
+/// The union of several meshes as separate components.
+PolyMesh disjoint_union(const std::vector<std::pair<PolyMesh, Vec3>>& parts) {
+    PolyMesh out;
+    for (const auto& [m, offset] : parts) {
+        const int base = out.num_vertices();
+        for (const Vec3& p : m.positions) out.positions.push_back(p + offset);
+        for (int f = 0; f < m.num_faces(); ++f) {
+            std::vector<int> face;
+            for (int i = m.face_start[f]; i < m.face_start[f + 1]; ++i) face.push_back(base + m.face_vertices[i]);
+            out.add_face(face);
+        }
+    }
+    return out;
+}
+
+std::vector<std::vector<int>> faces_of(const PolyMesh& m) {
+    std::vector<std::vector<int>> f;
+    for (int i = 0; i < m.num_faces(); ++i)
+        f.emplace_back(m.face_vertices.begin() + m.face_start[i], m.face_vertices.begin() + m.face_start[i + 1]);
+    return f;
+}
+
+PolyMesh transformed(PolyMesh m, double scale, const Vec3& offset) {
+    for (Vec3& p : m.positions) p = p * scale + offset;
+    return m;
+}
+
+/// `pages` triangles sharing the edge (0, 1): an open book, non-manifold for pages > 2.
+PolyMesh book(int pages) {
+    std::vector<Vec3> p = {Vec3(0, 0, 0), Vec3(0, 0, 1)};
+    std::vector<std::vector<int>> f;
+    for (int k = 0; k < pages; ++k) {
+        const double a = 2 * M_PI * k / pages;
+        p.emplace_back(std::cos(a), std::sin(a), 0.5);
+        f.push_back(k % 2 ? std::vector<int>{0, 1, k + 2} : std::vector<int>{1, 0, k + 2});
+    }
+    return make(p, f);
+}
+
+PolyMesh with_faces_removed(const PolyMesh& m, const std::vector<int>& remove) {
+    std::vector<std::vector<int>> f = faces_of(m);
+    std::vector<std::vector<int>> kept;
+    for (int i = 0; i < static_cast<int>(f.size()); ++i)
+        if (std::find(remove.begin(), remove.end(), i) == remove.end()) kept.push_back(f[i]);
+    return make(m.positions, kept);
+}
+
+}  // namespace
+
+std::vector<EdgeCase> edge_cases() {
+    std::vector<EdgeCase> all;
+    auto add = [&all](std::string name, std::string description, bool valid, PolyMesh mesh) {
+        mesh.source.file = "edgecase:" + name;
+        all.push_back({std::move(name), std::move(description), valid, std::move(mesh)});
+    };
+    for (int n = 3; n <= 16; ++n)
+        add("interior-fan-" + std::to_string(n), "one interior vertex of valence " + std::to_string(n), true, fan(n));
+    for (int n : {8, 64, 360})
+        add("pole-" + std::to_string(n), "closed, two poles of valence " + std::to_string(n), true, pole(n, 4));
+    for (int k = 1; k <= 8; ++k)
+        add("boundary-fan-" + std::to_string(k),
+            "one boundary vertex with " + std::to_string(k) + " incident face(s)" + (k == 1 ? " (a corner)" : ""), true,
+            boundary_fan(k));
+    add("corners-alternating", "3x3 quads, diagonals alternating: corners with one and with two faces", true,
+        grid_patch(3, 3, [](double x, double y) { return 0.2 * x * y; }, true));
+    add("single-triangle", "one triangle: three corners of one face each, no interior vertex", true,
+        make({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.2, 1, 0.1)}, {{0, 1, 2}}));
+    add("open-saddle", "8x8 quads on z = x^2 - y^2 (centred): an open saddle", true,
+        grid_patch(8, 8, [](double x, double y) { return (x - 0.5) * (x - 0.5) - (y - 0.5) * (y - 0.5); }, false));
+    add("monkey-saddle", "6x6 quads (interior valence 6) on the monkey saddle z = u^3 - 3uv^2", true,
+        grid_patch(6, 6, [](double x, double y) {
+            const double u = 2 * x - 1, v = 2 * y - 1;
+            return u * u * u - 3 * u * v * v;
+        }, false));
+    add("valence-2", "two triangles back to back: closed, every vertex of valence 2", true, pillow());
+    add("isolated-vertex", "tetrahedron plus one vertex no face uses", true, [] {
+        PolyMesh m = tetrahedron();
+        m.positions.emplace_back(3, 3, 3);
+        return m;
+    }());
+    add("zero-area-triangle", "disc of three faces, one with three collinear vertices", true,
+        make({Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0.2)}, {{0, 2, 3}, {2, 1, 3}, {2, 0, 1}}));
+    add("several-components", "two tetrahedra and an octahedron, apart", true,
+        disjoint_union({{tetrahedron(), Vec3(0, 0, 0)}, {tetrahedron(), Vec3(4, 0, 0)}, {octahedron(), Vec3(0, 4, 0)}}));
+    add("holes", "pole-8 sphere with three separate faces removed: three boundary loops", true,
+        with_faces_removed(pole(8, 4), {0, 20, 45}));
+    add("genus-3", "closed slab with three holes through it: Euler characteristic -4", true, slab_with_holes(3));
+    add("slivers", "8x8 quads squeezed to 1e-6 in y: triangles of aspect ratio about 1e6", true, [] {
+        PolyMesh m = grid_patch(8, 8, [](double x, double) { return 0.1 * x * x; }, false);
+        for (Vec3& p : m.positions) p.y() *= 1e-6;
+        return m;
+    }());
+    add("tiny-coordinates", "icosahedron scaled to 1e-8", true, transformed(icosahedron(), 1e-8, Vec3::Zero()));
+    add("huge-coordinates", "icosahedron of size 1e8", true, transformed(icosahedron(), 1e8, Vec3::Zero()));
+    add("far-from-origin", "unit icosahedron translated to (1e8, 1e8, 1e8): ulp(1e8) = 1.5e-8", true,
+        transformed(icosahedron(), 1.0, Vec3(1e8, 1e8, 1e8)));
+    add("near-coincident", "two tetrahedra whose nearest vertices are 1e-12 apart, not shared", true, [] {
+        PolyMesh a = tetrahedron(), b = tetrahedron();
+        const Vec3 offset = a.positions[0] - b.positions[3] + Vec3(1e-12, 0, 0);  // b's vertex 3 next to a's vertex 0
+        return disjoint_union({{a, Vec3::Zero()}, {b, offset}});
+    }());
+    // Invalid Loop inputs: core must refuse them, naming the element.
+    add("nonmanifold-edge-3", "three triangles on one edge", false, book(3));
+    add("nonmanifold-edge-100", "a hundred triangles on one edge", false, book(100));
+    add("bowtie", "two fans joined at one vertex: a non-manifold vertex", false, [] {
+        PolyMesh m = make({Vec3(0, 0, 0), Vec3(1, 0.5, 0), Vec3(1, -0.5, 0), Vec3(-1, 0.5, 0), Vec3(-1, -0.5, 0)},
+                          {{0, 2, 1}, {0, 3, 4}});
+        return m;
+    }());
+    add("duplicate-face", "tetrahedron with one face listed twice", false, [] {
+        PolyMesh m = tetrahedron();
+        m.add_face({0, 2, 1});
+        return m;
+    }());
+    add("inconsistent-orientation", "4x4 grid with one interior triangle reversed", false, [] {
+        std::vector<std::vector<int>> f = faces_of(open_patch(4));
+        std::swap(f[10][1], f[10][2]);
+        return make(open_patch(4).positions, f);
+    }());
+    add("repeated-vertex-triangle", "tetrahedron plus a triangle naming one vertex twice", false, [] {
+        PolyMesh m = tetrahedron();
+        m.add_face({0, 0, 1});
+        return m;
+    }());
+    return all;
+}
+
+EdgeCase edge_case(const std::string& name) {
+    std::string known;
+    for (EdgeCase& c : edge_cases()) {
+        if (c.name == name) return std::move(c);
+        known += (known.empty() ? "" : ", ") + c.name;
+    }
+    throw InputError("unknown edge case '" + name + "' (known: " + known + ")");
+}
+
+PolyMesh benchmark_mesh(int faces) {
+    const int n = std::max(3, static_cast<int>(std::lround(std::sqrt(faces / 2.0))));
+    PolyMesh m = irregular_torus(n, n);
+    m.source.file = "benchmark:torus-" + std::to_string(2 * n * n);
+    return m;
+}
+
+}  // namespace crossdiv::datasets
