@@ -3,11 +3,14 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <unistd.h>
 
 #include "crossdiv/datasets/bundled.h"
+#include "crossdiv/datasets/edge_cases.h"
 #include "crossdiv/error.h"
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/mesh/mesh_checks.h"
@@ -15,6 +18,7 @@
 #include "crossdiv/verification/inputs.h"
 #include "crossdiv/verification/loop_comparison.h"
 #include "crossdiv/verification/references.h"
+#include "crossdiv/verification/suite.h"
 
 namespace {
 
@@ -165,6 +169,93 @@ int run_datasets(const std::string& dir) {
     return 0;
 }
 
+int run_edgecases(const std::string& dir) {
+    std::filesystem::create_directories(dir);
+    for (const auto& c : datasets::edge_cases()) {
+        const std::string path = (std::filesystem::path(dir) / (c.name + ".obj")).string();
+        write_mesh(path, c.mesh);
+        fmt::print("{:<48} {}{}\n", path, c.description, c.valid_loop_input ? "" : " [invalid Loop input]");
+    }
+    return 0;
+}
+
+/// Parses "I/N". @throws InputError.
+std::pair<int, int> parse_shard(const std::string& s) {
+    const size_t slash = s.find('/');
+    try {
+        if (slash != std::string::npos) return {std::stoi(s.substr(0, slash)), std::stoi(s.substr(slash + 1))};
+    } catch (const std::exception&) {
+    }
+    throw InputError("--shard " + s + ": expected I/N, e.g. 2/4");
+}
+
+void print_outcome_summary(const std::string& dir) {
+    std::ifstream in(std::filesystem::path(dir) / "results.json");
+    const nlohmann::json r = nlohmann::json::parse(in);
+    fmt::print("\n{} cases, {} reference runs, {} failure(s)\n", r["summary"]["cases"].get<int>(),
+               r["summary"]["runs"].get<int>(), r["summary"]["failures"].get<int>());
+    for (const auto& [outcome, n] : r["summary"]["outcomes"].items()) fmt::print("  {:>5}  {}\n", n.get<int>(), outcome);
+}
+
+int finish_outputs(const std::string& dir, bool report) {
+    if (report) {
+        if (render_report(dir) != 0) {
+            std::cerr << "crossdiv: the report could not be rendered (reports/make_report.py needs /usr/bin/python3 "
+                         "with matplotlib: apt-get install python3-matplotlib)\n";
+            return 1;
+        }
+        fmt::print("report: {}/report.md and {}/index.html\n", dir, dir);
+    }
+    return 0;
+}
+
+int run_suite(const std::string& manifest_path, const std::string& out, int jobs, const std::string& shard,
+              bool report) {
+    const Manifest manifest = read_manifest(manifest_path.empty() ? default_manifest_path() : manifest_path);
+    const std::vector<SuiteJob> all = expand_jobs(manifest);
+    const auto [shard_i, shard_n] = parse_shard(shard);
+    const std::vector<SuiteJob> mine = shard_jobs(all, shard_i, shard_n);
+    fmt::print("suite {} ({}): {} jobs, shard {}/{} runs {} with {} worker(s)\n", manifest.name, manifest.file, all.size(),
+               shard_i, shard_n, mine.size(), jobs);
+    const bool tty = isatty(STDOUT_FILENO);
+    const auto t0 = std::chrono::steady_clock::now();
+    const std::vector<nlohmann::json> records = run_jobs(mine, jobs, out, [&](int done, int total, const nlohmann::json& rec) {
+        std::string line;
+        for (const auto& run : rec["runs"]) line += (line.empty() ? "" : ", ") + run["reference"].get<std::string>() + " " + run_outcome(rec, run);
+        if (rec["runs"].empty()) line = (rec.value("ours_failed", false) ? "ours-failed: " : "ours-rejected: ") + rec.value("core_error", std::string());
+        if (tty) {
+            const int width = 30, filled = total ? width * done / total : width;
+            fmt::print("\r\033[K[{}{}] {}/{} {}", std::string(filled, '#'), std::string(width - filled, '.'), done, total,
+                       rec["id"].get<std::string>().substr(0, 60));
+            if (done == total) fmt::print("\n");
+        } else {
+            fmt::print("[{}/{}] {}: {}\n", done, total, rec["id"].get<std::string>(), line);
+        }
+        std::fflush(stdout);
+    });
+    nlohmann::json refs = nlohmann::json::array();
+    for (const LoopReference& r : loop_references()) refs.push_back({{"name", r.name}, {"version", r.version}});
+    const nlohmann::json header = {
+        {"tool", "crossdiv suite"}, {"schema_version", 2}, {"suite", manifest.name}, {"manifest", manifest.file},
+        {"shard", fmt::format("{}/{}", shard_i, shard_n)}, {"jobs_total", all.size()}, {"jobs_run", mine.size()},
+        {"workers", jobs}, {"references", refs},
+        {"seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()}};
+    write_suite_outputs(out, header, records);
+    fmt::print("results: {0}/results.json, {0}/results.csv, {0}/junit.xml\n", out);
+    print_outcome_summary(out);
+    const int report_status = finish_outputs(out, report);
+    std::ifstream in(std::filesystem::path(out) / "results.json");
+    const int failures = nlohmann::json::parse(in)["summary"]["failures"].get<int>();
+    return failures ? 1 : report_status;
+}
+
+int run_merge(const std::vector<std::string>& dirs, const std::string& out, bool report) {
+    merge_suite_outputs(dirs, out);
+    fmt::print("merged {} folder(s) into {}\n", dirs.size(), out);
+    print_outcome_summary(out);
+    return finish_outputs(out, report);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -201,6 +292,32 @@ int main(int argc, char** argv) {
     auto* ds = app.add_subcommand("datasets", "Write the bundled meshes as OBJ files");
     ds->add_option("--out", ds_out, "Output folder")->required();
 
+    std::string ec_out;
+    auto* ec = app.add_subcommand("edgecases", "Write the edge-case catalog as OBJ files (one line each: what it tests)");
+    ec->add_option("--out", ec_out, "Output folder")->required();
+
+    std::string suite_manifest, suite_out = "out", suite_shard = "1/1";
+    int suite_jobs = 2;
+    bool suite_no_report = false;
+    auto* suite = app.add_subcommand("suite", "Run a conformance suite; write results.json/.csv, junit.xml and the report");
+    suite->add_option("manifest", suite_manifest, "Suite manifest (default: verification/suites/default.suite)");
+    suite->add_option("--out", suite_out, "Output folder")->capture_default_str();
+    suite->add_option("--jobs", suite_jobs, "Worker processes")->check(CLI::Range(1, 64))->capture_default_str();
+    suite->add_option("--shard", suite_shard, "Run slice I of N (job index mod N = I - 1)")->capture_default_str();
+    suite->add_flag("--no-report", suite_no_report, "Skip report.md/index.html (e.g. for shards merged later)");
+
+    std::vector<std::string> merge_in;
+    std::string merge_out = "out";
+    bool merge_no_report = false;
+    auto* merge = app.add_subcommand("merge", "Join the results of suite shards into one report");
+    merge->add_option("dirs", merge_in, "Shard output folders")->required();
+    merge->add_option("--out", merge_out, "Output folder")->capture_default_str();
+    merge->add_flag("--no-report", merge_no_report, "Skip report.md/index.html");
+
+    std::string report_dir;
+    auto* rep = app.add_subcommand("report", "Render report.md and index.html from a suite output folder");
+    rep->add_option("dir", report_dir, "Folder with results.json (and bench.json)")->required();
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -211,6 +328,10 @@ int main(int argc, char** argv) {
         if (*cmp) return run_compare(cmp_in, cmp_args, against, json_path, timeout, no_isolate);
         if (*chk) return run_check(check_in);
         if (*ds) return run_datasets(ds_out);
+        if (*ec) return run_edgecases(ec_out);
+        if (*suite) return run_suite(suite_manifest, suite_out, suite_jobs, suite_shard, !suite_no_report);
+        if (*merge) return run_merge(merge_in, merge_out, !merge_no_report);
+        if (*rep) return finish_outputs(report_dir, true);
     } catch (const InputError& e) {
         std::cerr << "crossdiv: error: " << e.what() << "\n";
         return 2;

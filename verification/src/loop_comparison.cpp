@@ -70,6 +70,22 @@ bool within(const LoopComparisonRequest& req, const MeshComparison& c, const std
     return false;
 }
 
+/// Whether every vertex farther than `tolerance` x diagonal from its match has no face.
+bool only_isolated_vertices_differ(const PolyMesh& ours, const PolyMesh& ref, const std::vector<int>& ref_to_ours,
+                                   double tolerance) {
+    const std::vector<double> d = vertex_distances(ours, ref, ref_to_ours);
+    const double limit = tolerance * bounding_box_diagonal(ours.positions);
+    std::vector<char> used(d.size(), 0);
+    for (int v : ours.face_vertices) used[v] = 1;
+    bool any = false;
+    for (size_t v = 0; v < d.size(); ++v)
+        if (!(d[v] <= limit)) {
+            if (used[v]) return false;
+            any = true;
+        }
+    return any;
+}
+
 double ulp_of_largest_coordinate(const PolyMesh& m) {
     double largest = 0;
     for (const Vec3& p : m.positions) largest = std::max(largest, p.cwiseAbs().maxCoeff());
@@ -223,6 +239,10 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
             run.explanation = "refined topology differs: " + std::to_string(run.comparison.faces_only_in_ref) +
                               " faces only in " + ref->name + ", " + std::to_string(run.comparison.faces_only_in_ours) +
                               " only in core";
+        } else if (only_isolated_vertices_differ(ours.levels.back(), trace.back(), run.correspondence.ref_to_ours,
+                                                 req.tolerance)) {
+            run.divergence_class = "isolated-vertex-handling";
+            run.explanation = "only vertices no face uses differ, by up to " + sci(run.comparison.max_rel) + worst;
         } else if (ulps <= tolerances::kRoundingUlps) {
             run.divergence_class = "rounding";
             run.explanation = "differs by " + sci(run.comparison.max_rel) + " of the diagonal, which is " + sci(ulps) +

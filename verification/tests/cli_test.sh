@@ -7,11 +7,11 @@ tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
 passed=0 failed=0
 
-expect() {  # expect NAME EXIT_CODE PATTERN -- command...
+expect() {  # expect NAME EXIT_CODE PATTERN -- command...   (EXIT_CODE '' accepts any)
   local name="$1" code="$2" pattern="$3"; shift 4
   local out rc
   out="$("$@" 2>&1)"; rc=$?
-  if [ "$rc" -eq "$code" ] && grep -qE -- "$pattern" <<<"$out"; then
+  if { [ -z "$code" ] || [ "$rc" -eq "$code" ]; } && grep -qE -- "$pattern" <<<"$out"; then
     passed=$((passed + 1))
   else
     failed=$((failed + 1))
@@ -46,7 +46,12 @@ expect subdivide-out 0 '^f ' -- cat "$tmp/s.obj"
 # Known divergence, measured: CGAL 5.5's Loop_subdivision dereferences the missing halfedge of
 # an isolated vertex (signal 11); the run records it and goes on, the others agree with core.
 expect isolated-vertex-cgal-crash 1 'cgal +crashed +ref-crashed +- .*signal 11' -- "$crossdiv" compare "$tmp/isolated.obj" --levels 2
-expect isolated-vertex-others-agree 0 'every reference agrees' -- "$crossdiv" compare "$tmp/isolated.obj" --levels 2 --against opensubdiv,openmesh
+expect isolated-vertex-opensubdiv-agrees 0 'every reference agrees' -- "$crossdiv" compare "$tmp/isolated.obj" --levels 2 --against opensubdiv
+# OpenMesh's LoopT::smooth returns early for a vertex without a half-edge and never writes
+# its new position (LoopT.hh, smooth()): the isolated vertex gets whatever was in memory.
+# Whether that happens to equal the old position varies, so either outcome is accepted,
+# but an unexplained one is not: the difference must be pinned on the isolated vertex.
+expect isolated-vertex-openmesh-classified '' 'openmesh +ok +(agree|diverge .*isolated-vertex-handling)' -- "$crossdiv" compare "$tmp/isolated.obj" --levels 2 --against openmesh
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -61,7 +61,8 @@ struct ReferenceRun {
     /// For "diverge", from measurement: "weight-family", "corner-rule",
     /// "weight-family+corner-rule" (core rerun with the reference's rule agrees), "rounding"
     /// (within tolerances::kRoundingUlps of the coordinates), "topology" (refined
-    /// connectivity differs), "ambiguous-correspondence" (same counts, but vertices cannot be
+    /// connectivity differs), "isolated-vertex-handling" (only vertices without faces
+    /// differ), "ambiguous-correspondence" (same counts, but vertices cannot be
     /// matched one to one), or "unexplained". For "ours-rejected": the input-handling class
     /// ("non-manifold-handling", "orientation-handling", "degenerate-face-handling").
     std::string divergence_class;
