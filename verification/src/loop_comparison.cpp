@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <deque>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -184,6 +185,9 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
         return core.back();
     };
 
+    // Each matched reference's last level in our vertex order, to report every
+    // implementation's value at the case's worst vertex.
+    std::map<std::string, std::vector<Vec3>> in_our_order;
     for (const LoopReference* ref : refs) {
         ReferenceRun run;
         IsolatedTrace iso = run_reference(*ref, input, req, run);
@@ -217,6 +221,10 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
         }
         run.comparison = compare_meshes(ours.levels.back(), trace.back(), run.correspondence.ref_to_ours);
         run.level_max_rel = level_errors(ours, trace, run.correspondence);
+        std::vector<Vec3>& mapped = in_our_order[ref->name];
+        mapped.assign(ours.levels.back().positions.size(), Vec3::Constant(NAN));
+        for (size_t i = 0; i < run.correspondence.ref_to_ours.size(); ++i)
+            mapped[run.correspondence.ref_to_ours[i]] = trace.back().positions[i];
         if (within(req, run.comparison, run.level_max_rel, run.hausdorff_rel)) {
             run.verdict = "agree";
             run.explanation = req.tier == Tier::Geometric
@@ -273,6 +281,16 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
         if (req.error_field_max_faces > 0) run.error_field = error_field(ours, trace, run.correspondence, req);
         out.runs.push_back(std::move(run));
     }
+    const ReferenceRun* worst_run = nullptr;
+    for (const ReferenceRun& r : out.runs)
+        if (r.verdict == "diverge" && !r.comparison.worst.empty() &&
+            (!worst_run || r.comparison.worst[0].distance > worst_run->comparison.worst[0].distance))
+            worst_run = &r;
+    if (worst_run) {
+        const WorstVertex& w = worst_run->comparison.worst[0];
+        out.worst_vertex = CaseWorstVertex{w.ours_index, w.valence, w.boundary, w.ours, {}};
+        for (const auto& [name, positions] : in_our_order) out.worst_vertex->reference_positions[name] = positions[w.ours_index];
+    }
     return out;
 }
 
@@ -322,6 +340,14 @@ nlohmann::json to_json(const LoopComparison& c) {
     };
     auto vec = [](const Vec3& v) { return json::array({v.x(), v.y(), v.z()}); };
     auto finite = [](double x) { return std::isfinite(x) ? json(x) : json(nullptr); };
+    json worst = nullptr;
+    if (c.worst_vertex) {
+        json at = json::object();
+        for (const auto& [name, p] : c.worst_vertex->reference_positions)
+            at[name] = p.allFinite() ? vec(p) : json(nullptr);
+        worst = {{"ours_index", c.worst_vertex->ours_index}, {"valence", c.worst_vertex->valence},
+                 {"boundary", c.worst_vertex->boundary}, {"core", vec(c.worst_vertex->core)}, {"references", at}};
+    }
     json runs = json::array();
     for (const ReferenceRun& r : c.runs) {
         json worst = json::array();
@@ -357,7 +383,8 @@ nlohmann::json to_json(const LoopComparison& c) {
     return {{"input", c.input},      {"input_vertices", c.input_vertices}, {"input_faces", c.input_faces},
             {"scheme", "loop"},      {"options", options(c.options)},      {"levels", c.levels},
             {"core_seconds", c.core_seconds}, {"tier", to_string(c.tier)}, {"tolerance_rel", c.tolerance},
-            {"core_error", c.core_error},     {"all_agree", c.all_agree()}, {"runs", runs}};
+            {"core_error", c.core_error},     {"all_agree", c.all_agree()}, {"runs", runs},
+            {"worst_vertex", worst}};
 }
 
 }  // namespace crossdiv::verification

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 #include <cmath>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -71,6 +72,16 @@ struct ReferenceRun {
     std::optional<ErrorField> error_field;
 };
 
+/// The vertex where some reference parts most from core, with every implementation's value
+/// there (a reference without a vertex correspondence has none).
+struct CaseWorstVertex {
+    int ours_index = -1;
+    int valence = 0;
+    bool boundary = false;
+    Vec3 core;
+    std::map<std::string, Vec3> reference_positions;
+};
+
 struct LoopComparison {
     std::string input;
     int input_vertices = 0, input_faces = 0;
@@ -81,6 +92,7 @@ struct LoopComparison {
     double tolerance = tolerances::kAgreementRelative;
     std::string core_error;  ///< non-empty: core refused the input (the message)
     std::vector<ReferenceRun> runs;
+    std::optional<CaseWorstVertex> worst_vertex;  ///< when some reference diverges
     bool all_agree() const;
 };
 

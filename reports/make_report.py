@@ -1,0 +1,352 @@
+#!/usr/bin/python3
+"""Render a crossdiv suite folder into report.md, index.html and figures/*.png.
+
+Usage: make_report.py DIR
+Reads DIR/results.json (crossdiv suite / merge; schema in reports/results-schema.md) and,
+when present, DIR/bench.json (crossdiv bench). Figures are drawn with matplotlib (Debian's
+python3-matplotlib) and saved as PNG; nothing is hand-drawn.
+"""
+import html
+import json
+import math
+import os
+import sys
+from collections import Counter, defaultdict
+
+import matplotlib
+
+matplotlib.use("Agg")  # no display on a build machine
+import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.colors import ListedColormap  # noqa: E402
+from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
+
+# Outcome categories of the summary matrix, in legend order, with their colours.
+CATEGORIES = [
+    ("agree", "#4caf50"),
+    ("diverge (classified)", "#ffb300"),
+    ("diverge (unexplained)", "#e53935"),
+    ("ref-crashed", "#212121"),
+    ("ref-rejected", "#9e9e9e"),
+    ("ours-rejected", "#42a5f5"),
+    ("ours-failed", "#8e24aa"),
+    ("not run", "#ffffff"),
+]
+MAX_ERROR_PICTURES = 12
+
+
+def outcome(case, run):
+    """The outcome string of one run, as crossdiv's run_outcome()."""
+    if case.get("ours_failed"):
+        return "ours-failed"
+    verdict, cls = run.get("verdict", ""), run.get("divergence_class", "")
+    if verdict in ("diverge", "ours-rejected") and cls:
+        return f"{verdict} ({cls})"
+    return verdict
+
+
+def category(case, run):
+    o = outcome(case, run)
+    if o == "diverge (unexplained)":
+        return "diverge (unexplained)"
+    if o.startswith("diverge"):
+        return "diverge (classified)"
+    if o.startswith("ours-rejected"):
+        return "ours-rejected"
+    return o if o in dict(CATEGORIES) else "ref-crashed"
+
+
+def entry_label(case):
+    o = case["options"]
+    label = f"{case.get('scheme', 'loop')} {o['weights']}/{o['boundary']} L{case['levels']} {case.get('tier', '')}"
+    return label
+
+
+def short_input(name):
+    return os.path.splitext(os.path.basename(name))[0] if "/" in name else name
+
+
+def fmt(x, spec=".3g"):
+    return "-" if x is None or (isinstance(x, float) and math.isnan(x)) else format(x, spec)
+
+
+def vec(v):
+    return "-" if v is None else "(" + ", ".join(f"{c:.9g}" for c in v) + ")"
+
+
+def summary_matrix(results, figdir):
+    cases = results["cases"]
+    refs = [r["name"] for r in results.get("references", [])] or sorted(
+        {r["reference"] for c in cases for r in c["runs"]})
+    inputs = list(dict.fromkeys(c["input"] for c in cases))
+    entries = list(dict.fromkeys(entry_label(c) for c in cases))
+    columns = [(e, r) for e in entries for r in refs]
+    index = {name: i for i, (name, _) in enumerate(CATEGORIES)}
+    grid = [[index["not run"]] * len(columns) for _ in inputs]
+    for c in cases:
+        row = inputs.index(c["input"])
+        for r in c["runs"]:
+            grid[row][columns.index((entry_label(c), r["reference"]))] = index[category(c, r)]
+        if not c["runs"]:
+            cat = "ours-failed" if c.get("ours_failed") else "ours-rejected"
+            for ref in refs:
+                grid[row][columns.index((entry_label(c), ref))] = index[cat]
+    fig, ax = plt.subplots(figsize=(2.5 + 0.32 * len(columns), 1.5 + 0.19 * len(inputs)))
+    cmap = ListedColormap([colour for _, colour in CATEGORIES])
+    ax.imshow(grid, cmap=cmap, vmin=-0.5, vmax=len(CATEGORIES) - 0.5, aspect="auto", interpolation="nearest")
+    ax.set_yticks(range(len(inputs)), [short_input(i) for i in inputs], fontsize=6)
+    ax.set_xticks(range(len(columns)), [f"{r}  |  {e}" for e, r in columns], rotation=90, fontsize=6)
+    for k in range(1, len(entries)):
+        ax.axvline(k * len(refs) - 0.5, color="black", linewidth=0.8)
+    handles = [plt.Rectangle((0, 0), 1, 1, facecolor=colour, edgecolor="black") for _, colour in CATEGORIES]
+    ax.legend(handles, [n for n, _ in CATEGORIES], loc="upper left", bbox_to_anchor=(1.01, 1), fontsize=7)
+    ax.set_title("Outcome per input (rows) and case x reference (columns)", fontsize=9)
+    fig.tight_layout()
+    path = os.path.join(figdir, "summary_matrix.png")
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def error_histogram(results, figdir):
+    groups = defaultdict(list)
+    for c in results["cases"]:
+        for r in c["runs"]:
+            m = r.get("positions", {}).get("max_rel")
+            if m is not None:
+                groups["agree" if r["verdict"] == "agree" else r.get("divergence_class") or r["verdict"]].append(
+                    math.log10(max(m, 1e-20)))
+    fig, ax = plt.subplots(figsize=(8, 4))
+    bins = [x / 2 for x in range(-40, 2)]
+    ax.hist(list(groups.values()), bins=bins, stacked=True, label=list(groups.keys()))
+    ax.axvline(math.log10(1e-12), color="red", linestyle="--", label="weak tolerance 1e-12")
+    ax.set_xlabel("log10(max distance / bounding-box diagonal); exact agreement drawn at -20")
+    ax.set_ylabel("reference runs")
+    ax.legend(fontsize=7)
+    ax.set_title("Distribution of the largest vertex error per run", fontsize=9)
+    fig.tight_layout()
+    path = os.path.join(figdir, "error_histogram.png")
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def convergence(results, figdir):
+    """Per-level error of every run with two or more levels, coloured by class."""
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    colours = {}
+    palette = plt.get_cmap("tab10")
+    for c in results["cases"]:
+        for r in c["runs"]:
+            levels = r.get("positions", {}).get("level_max_rel") or []
+            if len(levels) < 2 or any(v is None for v in levels):
+                continue
+            key = r.get("divergence_class") or "agree"
+            if key not in colours:
+                colours[key] = palette(len(colours) % 10)
+            ax.plot(range(1, len(levels) + 1), [max(v, 1e-20) for v in levels], color=colours[key], alpha=0.35,
+                    linewidth=0.8, marker=".")
+    for key, colour in colours.items():
+        ax.plot([], [], color=colour, label=key)
+    ax.set_yscale("log")
+    ax.set_xlabel("subdivision level")
+    ax.set_ylabel("max distance / diagonal (1e-20 = exact)")
+    ax.set_title("Error by level: rounding stays flat near 1e-16, rule differences persist", fontsize=9)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    path = os.path.join(figdir, "convergence.png")
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def error_pictures(results, folder, figdir):
+    """Meshes coloured by per-vertex distance to the reference, one per divergence class and
+    reference (the first few), so a reader sees where two surfaces part."""
+    pictures, seen = [], set()
+    for c in results["cases"]:
+        for r in c["runs"]:
+            if "error_field" not in r or len(pictures) >= MAX_ERROR_PICTURES:
+                continue
+            key = (r.get("divergence_class"), r["reference"], c["options"]["boundary"])
+            if key in seen:
+                continue
+            seen.add(key)
+            with open(os.path.join(folder, r["error_field"])) as f:
+                field = json.load(f)
+            pts, faces = field["positions"], field["faces"]
+            dist = [d if d is not None else float("nan") for d in field["distance"]]
+            face_err = [max(dist[v] for v in face) for face in faces]
+            fig = plt.figure(figsize=(5, 4.4))
+            ax = fig.add_subplot(projection="3d")
+            polys = [[pts[v] for v in face] for face in faces]
+            top = max([e for e in face_err if not math.isnan(e)] + [1e-300])
+            coll = Poly3DCollection(polys, cmap="inferno", edgecolor=(0, 0, 0, 0.15), linewidths=0.1)
+            coll.set_array([0 if math.isnan(e) else e for e in face_err])
+            coll.set_clim(0, top)
+            ax.add_collection3d(coll)
+            xs, ys, zs = zip(*pts)
+            for setter, values in ((ax.set_xlim, xs), (ax.set_ylim, ys), (ax.set_zlim, zs)):
+                mid, half = (max(values) + min(values)) / 2, (max(max(xs) - min(xs), max(ys) - min(ys),
+                                                                  max(zs) - min(zs)) / 2 or 1)
+                setter(mid - half, mid + half)
+            ax.set_axis_off()
+            fig.colorbar(coll, ax=ax, shrink=0.6, label="distance to reference")
+            ax.set_title(f"{short_input(c['input'])} vs {r['reference']}, level {field['level']}\n"
+                         f"{r.get('divergence_class')}, {entry_label(c)}", fontsize=8)
+            name = f"error_job{c['job']}_{r['reference']}.png"
+            fig.savefig(os.path.join(figdir, name), dpi=100)
+            plt.close(fig)
+            pictures.append((name, c, r))
+    return pictures
+
+
+def timing(bench, figdir):
+    """Log-log time against output size for every implementation, and the ratio table."""
+    records = bench.get("records", [])
+    if not records:
+        return None, []
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    for impl in dict.fromkeys(r["impl"] for r in records):
+        rows = sorted((r for r in records if r["impl"] == impl), key=lambda r: r["output_faces"])
+        ax.plot([r["output_faces"] for r in rows], [r["median_ms"] for r in rows], marker="o", label=impl)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("output faces")
+    ax.set_ylabel("median time (ms)")
+    ax.set_title("Loop subdivision time against output size (single thread)", fontsize=9)
+    ax.legend()
+    ax.grid(True, which="both", alpha=0.3)
+    fig.tight_layout()
+    path = os.path.join(figdir, "timing.png")
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    core = {(r["input"], r["levels"]): r["median_ms"] for r in records if r["impl"] == "core"}
+    rows = []
+    for r in records:
+        base = core.get((r["input"], r["levels"]))
+        rows.append(dict(r, ratio=(r["median_ms"] / base) if base else None))
+    return path, rows
+
+
+def main(folder):
+    with open(os.path.join(folder, "results.json")) as f:
+        results = json.load(f)
+    bench = None
+    if os.path.exists(os.path.join(folder, "bench.json")):
+        with open(os.path.join(folder, "bench.json")) as f:
+            bench = json.load(f)
+    figdir = os.path.join(folder, "figures")
+    os.makedirs(figdir, exist_ok=True)
+
+    figures = {"summary": summary_matrix(results, figdir), "histogram": error_histogram(results, figdir),
+               "convergence": convergence(results, figdir)}
+    pictures = error_pictures(results, folder, figdir)
+    timing_fig, timing_rows = timing(bench, figdir) if bench else (None, [])
+
+    # --- The divergence catalogue: every run that is not plain agreement. ---
+    catalogue = []
+    for c in results["cases"]:
+        w = c.get("worst_vertex")
+        for r in c["runs"]:
+            if r["verdict"] == "agree":
+                continue
+            values = "-"
+            if w and r["verdict"] == "diverge":
+                values = f"core {vec(w['core'])}; " + "; ".join(
+                    f"{name} {vec(p)}" for name, p in sorted(w["references"].items()))
+            pos = r.get("positions", {})
+            catalogue.append({
+                "case": c["id"], "reference": r["reference"], "outcome": outcome(c, r),
+                "class": r.get("divergence_class") or r["verdict"], "max_rel": pos.get("max_rel"),
+                "worst": (f"v{w['ours_index']} valence {w['valence']} {'boundary' if w['boundary'] else 'interior'}"
+                          if w and r["verdict"] == "diverge" else "-"),
+                "values": values, "explanation": r.get("explanation", "")})
+        if not c["runs"]:
+            catalogue.append({"case": c["id"], "reference": "core", "outcome": outcome(c, {}),
+                              "class": "ours-failed" if c.get("ours_failed") else "ours-rejected", "max_rel": None,
+                              "worst": "-", "values": "-", "explanation": c.get("core_error", "")})
+    class_counts = Counter((row["class"], row["reference"]) for row in catalogue)
+
+    s = results["summary"]
+    refs = ", ".join(f"{r['name']} ({r['version']})" for r in results.get("references", []))
+    md = [f"# crossdiv conformance report: suite `{results.get('suite')}`", "",
+          f"- manifest: `{results.get('manifest')}`, shard {results.get('shard')}, "
+          f"{s['cases']} cases, {s['runs']} reference runs, {s['failures']} failure(s), "
+          f"{fmt(results.get('seconds'), '.1f')} s with {results.get('workers', 1)} worker(s)",
+          f"- references: {refs}", "",
+          "## Outcomes", "", "| outcome | runs |", "|---|---|"]
+    md += [f"| {k} | {v} |" for k, v in sorted(s["outcomes"].items())]
+    md += ["", "Failures (JUnit) are `ours-failed` and `diverge (unexplained)`; every other outcome is a measured, "
+           "classified difference.", "", "## Summary matrix", "", "![summary](figures/summary_matrix.png)", "",
+           "## Divergence catalogue", "", "Classes by reference:", "", "| class | reference | runs |", "|---|---|---|"]
+    md += [f"| {cls} | {ref} | {n} |" for (cls, ref), n in sorted(class_counts.items())]
+    md += ["", "Every run that is not agreement, with the case's worst vertex (the vertex where some reference "
+           "parts most from core) and each implementation's value there:", "",
+           "| case | reference | outcome | max rel | worst vertex | values at the worst vertex | explanation |",
+           "|---|---|---|---|---|---|---|"]
+    md += [f"| {r['case']} | {r['reference']} | {r['outcome']} | {fmt(r['max_rel'])} | {r['worst']} | "
+           f"{r['values']} | {r['explanation'].replace('|', '/')} |" for r in catalogue]
+    md += ["", "## Error by level and its distribution", "", "![convergence](figures/convergence.png)", "",
+           "![histogram](figures/error_histogram.png)", "", "## Where surfaces part", ""]
+    md += [f"![{n}](figures/{n})" for n, _, _ in pictures] or ["No divergence small enough to draw."]
+    md += ["", "## Timing", ""]
+    if timing_fig:
+        md += [f"`crossdiv bench`: median of {bench.get('repeats', '?')} runs, single thread, ratio = time / core "
+               f"time on the same input (above 1: slower than core). {bench.get('note', '')}", "",
+               "![timing](figures/timing.png)", "",
+               "| input | levels | impl | input faces | output faces | median ms | ratio to core | peak RSS MB |",
+               "|---|---|---|---|---|---|---|---|"]
+        md += [f"| {r['input']} | {r['levels']} | {r['impl']} | {r['input_faces']} | {r['output_faces']} | "
+               f"{fmt(r['median_ms'], '.2f')} | {fmt(r['ratio'], '.2f')} | {fmt(r.get('peak_rss_mb'), '.0f')} |"
+               for r in timing_rows]
+        if bench.get("goal"):
+            g = bench["goal"]
+            md += ["", f"Goal: core at least {g['target_ratio']}x faster than the fastest reference on "
+                   f"{g['input']} at {g['levels']} levels: measured {fmt(g['ratio'], '.2f')}x "
+                   f"(fastest reference {g['fastest_reference']}) - {'met' if g['met'] else 'NOT met'}."]
+    else:
+        md += ["No bench.json in this folder: run `crossdiv bench --out DIR` to add the timing section."]
+    with open(os.path.join(folder, "report.md"), "w") as f:
+        f.write("\n".join(md) + "\n")
+
+    # --- index.html: the same content for a browser. ---
+    def table(header, rows):
+        out = ["<table><tr>" + "".join(f"<th>{html.escape(h)}</th>" for h in header) + "</tr>"]
+        out += ["<tr>" + "".join(f"<td>{html.escape(str(v))}</td>" for v in row) + "</tr>" for row in rows]
+        return "\n".join(out + ["</table>"])
+
+    body = [f"<h1>crossdiv conformance report: suite {html.escape(str(results.get('suite')))}</h1>",
+            f"<p>{s['cases']} cases, {s['runs']} reference runs, {s['failures']} failure(s). References: "
+            f"{html.escape(refs)}.</p>",
+            "<h2>Outcomes</h2>", table(["outcome", "runs"], sorted(s["outcomes"].items())),
+            "<h2>Summary matrix</h2><img src='figures/summary_matrix.png'>",
+            "<h2>Divergence catalogue</h2>",
+            table(["class", "reference", "runs"], [(c, r, n) for (c, r), n in sorted(class_counts.items())]),
+            "<p></p>",
+            table(["case", "reference", "outcome", "max rel", "worst vertex", "values at the worst vertex", "explanation"],
+                  [(r["case"], r["reference"], r["outcome"], fmt(r["max_rel"]), r["worst"], r["values"],
+                    r["explanation"]) for r in catalogue]),
+            "<h2>Error by level and its distribution</h2><img src='figures/convergence.png'>"
+            "<img src='figures/error_histogram.png'>", "<h2>Where surfaces part</h2>"]
+    body += [f"<img src='figures/{n}'>" for n, _, _ in pictures]
+    body += ["<h2>Timing</h2>"]
+    if timing_fig:
+        body += ["<img src='figures/timing.png'>",
+                 table(["input", "levels", "impl", "input faces", "output faces", "median ms", "ratio to core",
+                        "peak RSS MB"],
+                       [(r["input"], r["levels"], r["impl"], r["input_faces"], r["output_faces"],
+                         fmt(r["median_ms"], ".2f"), fmt(r["ratio"], ".2f"), fmt(r.get("peak_rss_mb"), ".0f"))
+                        for r in timing_rows])]
+    else:
+        body += ["<p>No bench.json in this folder.</p>"]
+    style = ("body{font-family:sans-serif;max-width:1400px;margin:auto}table{border-collapse:collapse;font-size:12px}"
+             "td,th{border:1px solid #ccc;padding:2px 6px;text-align:left}img{max-width:100%}")
+    with open(os.path.join(folder, "index.html"), "w") as f:
+        f.write(f"<!DOCTYPE html><html><head><meta charset='utf-8'><title>crossdiv report</title>"
+                f"<style>{style}</style></head><body>\n" + "\n".join(body) + "\n</body></html>\n")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 2:
+        sys.exit("usage: make_report.py DIR")
+    main(sys.argv[1])
