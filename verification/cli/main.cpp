@@ -15,6 +15,7 @@
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/mesh/mesh_checks.h"
 #include "crossdiv/subdiv/loop.h"
+#include "crossdiv/verification/bench.h"
 #include "crossdiv/verification/inputs.h"
 #include "crossdiv/verification/loop_comparison.h"
 #include "crossdiv/verification/references.h"
@@ -256,6 +257,70 @@ int run_merge(const std::vector<std::string>& dirs, const std::string& out, bool
     return finish_outputs(out, report);
 }
 
+/// The performance goal of the suite issue: core Loop at least this many times faster than
+/// the fastest reference on the 20k-face closed mesh refined 2 levels.
+constexpr double kBenchGoalRatio = 4.0;
+
+int run_bench_command(const std::string& json_path, const std::string& out_dir, int repeats, bool quick, bool cold) {
+    const LoopOptions options{LoopWeights::Loop, LoopBoundary::EdgeOnly};
+    const std::vector<BenchInput> inputs = default_bench_inputs(quick);
+    fmt::print("Loop (weights=loop boundary=edge-only), single thread, median of {} runs after one warm-up{}\n", repeats,
+               cold ? ", freed memory returned to the kernel (cold)" : ", freed memory kept (warm)");
+    fmt::print("{:<12} {:>6} {:<11} {:>11} {:>12} {:>10} {:>9} {:>8}\n", "input", "levels", "impl", "input faces",
+               "output faces", "median ms", "x core", "RSS MB");
+    std::vector<BenchRecord> records;
+    for (const BenchInput& in : inputs) {
+        std::vector<BenchRecord> r = run_bench({in}, options, repeats, cold);
+        const double core_ms = r.front().median_ms;
+        for (const BenchRecord& b : r) {
+            if (b.status != "ok")
+                fmt::print("{:<12} {:>6} {:<11} {}\n", b.input, b.levels, b.impl, b.status);
+            else
+                fmt::print("{:<12} {:>6} {:<11} {:>11} {:>12} {:>10.2f} {:>9.2f} {:>8.0f}\n", b.input, b.levels, b.impl,
+                           b.input_faces, b.output_faces, b.median_ms, b.median_ms / core_ms, b.peak_rss_mb);
+        }
+        std::fflush(stdout);
+        records.insert(records.end(), r.begin(), r.end());
+    }
+    nlohmann::json goal = nullptr;
+    for (const BenchRecord& core : records) {
+        if (core.impl != "core" || core.levels != 2 || core.input_faces < 19000 || core.status != "ok") continue;
+        const BenchRecord* fastest = nullptr;
+        for (const BenchRecord& r : records)
+            if (r.impl != "core" && r.input == core.input && r.levels == core.levels && r.status == "ok" &&
+                (!fastest || r.median_ms < fastest->median_ms))
+                fastest = &r;
+        if (!fastest) continue;
+        const double ratio = fastest->median_ms / core.median_ms;
+        goal = {{"input", core.input}, {"levels", core.levels}, {"output_faces", core.output_faces},
+                {"core_ms", core.median_ms}, {"fastest_reference", fastest->impl}, {"fastest_reference_ms", fastest->median_ms},
+                {"ratio", ratio}, {"target_ratio", kBenchGoalRatio}, {"met", ratio >= kBenchGoalRatio},
+                {"core_peak_rss_mb", core.peak_rss_mb}};
+        fmt::print("\ngoal: core {:.2f}x faster than the fastest reference ({}) on {} at 2 levels ({} output faces, "
+                   "core peak RSS {:.0f} MB): {} (target {}x)\n",
+                   ratio, fastest->impl, core.input, core.output_faces, core.peak_rss_mb,
+                   ratio >= kBenchGoalRatio ? "met" : "NOT met", kBenchGoalRatio);
+    }
+    nlohmann::json recs = nlohmann::json::array();
+    for (const BenchRecord& r : records) recs.push_back(to_json(r));
+    const nlohmann::json doc = {{"tool", "crossdiv bench"}, {"repeats", repeats}, {"memory", cold ? "cold" : "warm"},
+                                {"goal", goal}, {"records", recs},
+                                {"note", "references timed through their native refinement (loop_native), output kept "
+                                         "in the library's own structures"}};
+    std::vector<std::string> paths;
+    if (!json_path.empty()) paths.push_back(json_path);
+    if (!out_dir.empty()) paths.push_back((std::filesystem::path(out_dir) / "bench.json").string());
+    for (const std::string& path : paths) {
+        const std::filesystem::path p(path);
+        if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
+        std::ofstream(path) << doc.dump(1) << "\n";
+        fmt::print("bench results: {}\n", path);
+    }
+    if (!out_dir.empty() && std::filesystem::exists(std::filesystem::path(out_dir) / "results.json"))
+        return finish_outputs(out_dir, true);
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -318,6 +383,16 @@ int main(int argc, char** argv) {
     auto* rep = app.add_subcommand("report", "Render report.md and index.html from a suite output folder");
     rep->add_option("dir", report_dir, "Folder with results.json (and bench.json)")->required();
 
+    std::string bench_json, bench_out;
+    int bench_repeats = 5;
+    bool bench_quick = false, bench_cold = false;
+    auto* bench = app.add_subcommand("bench", "Time core Loop against the references side by side (ratios, memory)");
+    bench->add_option("--json", bench_json, "Write the records to this JSON file");
+    bench->add_option("--out", bench_out, "Suite output folder: write bench.json there and re-render its report");
+    bench->add_option("--repeats", bench_repeats, "Timed runs per measurement")->check(CLI::Range(1, 64))->capture_default_str();
+    bench->add_flag("--quick", bench_quick, "Two mesh sizes only (320 and 20000 faces)");
+    bench->add_flag("--cold", bench_cold, "Return freed memory to the kernel between repeats (page faults counted)");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -332,6 +407,7 @@ int main(int argc, char** argv) {
         if (*suite) return run_suite(suite_manifest, suite_out, suite_jobs, suite_shard, !suite_no_report);
         if (*merge) return run_merge(merge_in, merge_out, !merge_no_report);
         if (*rep) return finish_outputs(report_dir, true);
+        if (*bench) return run_bench_command(bench_json, bench_out, bench_repeats, bench_quick, bench_cold);
     } catch (const InputError& e) {
         std::cerr << "crossdiv: error: " << e.what() << "\n";
         return 2;

@@ -39,13 +39,23 @@ TriConnectivity build_tri_connectivity(const TriMesh& mesh) {
         std::vector<int> fill(out_start.begin(), out_start.end() - 1);
         for (int c = 0; c < 3 * nf; ++c) out_corners[fill[T[c / 3][c % 3]]++] = c;
     }
-    auto head = [&](int c) { return T[c / 3][(c % 3 + 1) % 3]; };
+    // The head of every corner's outgoing edge, once: the twin search below reads it ~12
+    // times per corner.
+    std::vector<int> heads(static_cast<size_t>(3) * nf);
+    for (int i = 0; i < nf; ++i) {
+        heads[3 * i] = T[i][1];
+        heads[3 * i + 1] = T[i][2];
+        heads[3 * i + 2] = T[i][0];
+    }
+    auto head = [&](int c) { return heads[c]; };
 
     TriConnectivity conn;
     conn.neighbor_tris.assign(nf, {-1, -1, -1});
     conn.neighbor_edges.assign(nf, {-1, -1, -1});
     conn.tri_edges.assign(nf, {-1, -1, -1});
     conn.vertex_corner.assign(nv, -1);
+    conn.edge_corner.reserve(static_cast<size_t>(3) * nf / 2 + 16);  // closed: exactly 3F/2
+    conn.edge_vertices.reserve(static_cast<size_t>(3) * nf / 2 + 16);
 
     for (int c = 0; c < 3 * nf; ++c) {
         const int a = T[c / 3][c % 3], b = head(c);
