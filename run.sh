@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # crossdiv's two entry points for a Debian 12 machine (run as root on a fresh machine):
-#   ./run.sh main   install what is missing, build, run the default comparison and write out/results.json
+#   ./run.sh main   install what is missing, build, run the benchmark and the default conformance
+#                   suite, and write out/{results.json,results.csv,junit.xml,bench.json,report.md,index.html}
 #   ./run.sh test   install what is missing, build, run every test with CTest
 set -euo pipefail
 cd "$(dirname "$0")"
 
 # Debian packages the build, the references and the tests need.
 PACKAGES="g++ make cmake libeigen3-dev libosd-dev libopenmesh-dev libcgal-dev libgtest-dev \
-libcli11-dev nlohmann-json3-dev libfmt-dev libnanoflann-dev"
+libcli11-dev nlohmann-json3-dev libfmt-dev libnanoflann-dev python3-matplotlib python3-numpy"
 
 install_missing() {
   local missing=""
@@ -36,8 +37,9 @@ case "${1:-}" in
   main)
     install_missing
     build
-    ./build/verification/crossdiv compare bundled:all course:all cgal:all --scheme loop --levels 3 \
-      --against opensubdiv,openmesh,cgal --json out/results.json
+    # The benchmark first, so that the suite's report includes its timing section.
+    ./build/verification/crossdiv bench --out out
+    ./build/verification/crossdiv suite --out out
     ;;
   test)
     install_missing

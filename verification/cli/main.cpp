@@ -19,6 +19,7 @@
 #include "crossdiv/verification/inputs.h"
 #include "crossdiv/verification/loop_comparison.h"
 #include "crossdiv/verification/references.h"
+#include "crossdiv/verification/shrink.h"
 #include "crossdiv/verification/suite.h"
 
 namespace {
@@ -257,6 +258,34 @@ int run_merge(const std::vector<std::string>& dirs, const std::string& out, bool
     return finish_outputs(out, report);
 }
 
+int run_diff(const std::string& in, const SchemeArgs& s, const std::string& against, const std::string& out_dir) {
+    const TriMesh mesh = to_tri_mesh(load_input(in), "Loop subdivision");
+    loop_input_connectivity(mesh);
+    check_output_size(mesh, s.levels, in);
+    LoopComparisonRequest req;
+    req.options = s.options();
+    req.levels = s.levels;
+    req.references = {against};
+    find_loop_reference(against);
+    const ShrinkResult r = shrink_divergence(mesh, in, req);
+    const ReferenceRun& orig = r.original.runs[0];
+    fmt::print("{} ({} faces): {} diverges from core, class {}: {}\n", in, mesh.num_faces(), against,
+               r.divergence_class, orig.explanation);
+    std::filesystem::create_directories(out_dir);
+    const std::string ring = (std::filesystem::path(out_dir) / "neighbourhood.obj").string();
+    const std::string minimal = (std::filesystem::path(out_dir) / "minimal.obj").string();
+    write_mesh(ring, to_poly_mesh(r.neighbourhood));
+    write_mesh(minimal, to_poly_mesh(r.minimal));
+    const ReferenceRun& m = r.minimal_comparison.runs[0];
+    fmt::print("neighbourhood: {} ({} faces, {})\n", ring, r.neighbourhood.num_faces(),
+               r.k ? fmt::format("{}-ring of the worst vertex's coarse ancestors", r.k) : std::string("the whole mesh"));
+    fmt::print("minimal:       {} ({} faces, {} vertices) after {} comparisons: {} ({})\n", minimal, r.minimal.num_faces(),
+               r.minimal.num_vertices(), r.tests, m.divergence_class, m.explanation);
+    fmt::print("reproduce:     crossdiv compare {} --weights {} --boundary {} --levels {} --against {}\n", minimal,
+               s.weights, s.boundary, s.levels, against);
+    return 0;
+}
+
 /// The performance goal of the suite issue: core Loop at least this many times faster than
 /// the fastest reference on the 20k-face closed mesh refined 2 levels.
 constexpr double kBenchGoalRatio = 4.0;
@@ -383,6 +412,16 @@ int main(int argc, char** argv) {
     auto* rep = app.add_subcommand("report", "Render report.md and index.html from a suite output folder");
     rep->add_option("dir", report_dir, "Folder with results.json (and bench.json)")->required();
 
+    SchemeArgs diff_args;
+    std::string diff_in, diff_against, diff_out = "diff-out";
+    auto* diff = app.add_subcommand("diff", "Shrink a divergence to the worst vertex's neighbourhood and a minimal mesh");
+    diff->add_option("input", diff_in, "Mesh file, bundled:NAME or edgecase:NAME")->required();
+    diff_args.add_to(*diff);
+    diff->add_option("--against", diff_against, "The reference that diverges")
+        ->required()
+        ->check(CLI::IsMember({"opensubdiv", "openmesh", "cgal"}));
+    diff->add_option("--out", diff_out, "Output folder")->capture_default_str();
+
     std::string bench_json, bench_out;
     int bench_repeats = 5;
     bool bench_quick = false, bench_cold = false;
@@ -407,6 +446,7 @@ int main(int argc, char** argv) {
         if (*suite) return run_suite(suite_manifest, suite_out, suite_jobs, suite_shard, !suite_no_report);
         if (*merge) return run_merge(merge_in, merge_out, !merge_no_report);
         if (*rep) return finish_outputs(report_dir, true);
+        if (*diff) return run_diff(diff_in, diff_args, diff_against, diff_out);
         if (*bench) return run_bench_command(bench_json, bench_out, bench_repeats, bench_quick, bench_cold);
     } catch (const InputError& e) {
         std::cerr << "crossdiv: error: " << e.what() << "\n";

@@ -53,5 +53,25 @@ expect isolated-vertex-opensubdiv-agrees 0 'every reference agrees' -- "$crossdi
 # but an unexplained one is not: the difference must be pinned on the isolated vertex.
 expect isolated-vertex-openmesh-classified '' 'openmesh +ok +(agree|diverge .*isolated-vertex-handling)' -- "$crossdiv" compare "$tmp/isolated.obj" --levels 2 --against openmesh
 
+# The main job's pieces: a small suite writes every output and the report with its figures.
+printf 'suite cli\ncase bundled:tetrahedron,bundled:open-patch loop boundary=edge-and-corner levels=2\n' > "$tmp/cli.suite"
+expect suite-runs 0 'report: .*/index.html' -- "$crossdiv" suite "$tmp/cli.suite" --out "$tmp/suite" --jobs 2
+for f in results.json results.csv junit.xml report.md index.html figures/summary_matrix.png figures/convergence.png; do
+  expect "suite-wrote-$f" 0 "$f" -- ls "$tmp/suite/$f"
+done
+expect suite-report-catalogue 0 'diverge \(corner-rule\)' -- cat "$tmp/suite/report.md"
+printf 'suite cli\ncase bundled:all loop levels=many\n' > "$tmp/bad.suite"
+expect suite-bad-manifest 2 'bad.suite:2: levels=many is not a finite number' -- "$crossdiv" suite "$tmp/bad.suite" --out "$tmp/bad"
+expect suite-bad-shard 2 'expected I/N' -- "$crossdiv" suite "$tmp/cli.suite" --shard 2 --out "$tmp/s"
+expect suite-shard-1 0 'shard 1/2 runs 1' -- "$crossdiv" suite "$tmp/cli.suite" --shard 1/2 --out "$tmp/sh1" --no-report
+expect suite-shard-2 0 'shard 2/2 runs 1' -- "$crossdiv" suite "$tmp/cli.suite" --shard 2/2 --out "$tmp/sh2" --no-report
+expect merge 0 'merged 2 folder' -- "$crossdiv" merge "$tmp/sh1" "$tmp/sh2" --out "$tmp/merged"
+expect edgecases 0 'genus-3.obj +closed slab with three holes' -- "$crossdiv" edgecases --out "$tmp/edge"
+expect diff-corner 0 'minimal: .* \(1 faces, 3 vertices\)' -- "$crossdiv" diff bundled:open-patch --boundary edge-and-corner --levels 2 --against openmesh --out "$tmp/diff"
+expect diff-reproduces 1 'corner-rule' -- "$crossdiv" compare "$tmp/diff/minimal.obj" --boundary edge-and-corner --levels 2 --against openmesh
+expect diff-nothing 2 'does not diverge' -- "$crossdiv" diff bundled:torus --against cgal --out "$tmp/diff2"
+expect bench 0 'goal: core .* faster than the fastest reference' -- "$crossdiv" bench --quick --repeats 1 --out "$tmp/suite"
+expect bench-in-report 0 'figures/timing.png' -- grep 'figures/timing.png' "$tmp/suite/report.md"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

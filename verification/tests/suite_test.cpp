@@ -1,0 +1,233 @@
+// Suites: manifest parsing (and its errors by line), sharding and merging, the outputs, the
+// shrinking of a divergence, and the benchmark's records (never its times).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <unistd.h>
+#include <set>
+
+#include "crossdiv/datasets/bundled.h"
+#include "crossdiv/error.h"
+#include "crossdiv/subdiv/loop.h"
+#include "crossdiv/verification/bench.h"
+#include "crossdiv/verification/references.h"
+#include "crossdiv/verification/shrink.h"
+#include "crossdiv/verification/suite.h"
+
+namespace crossdiv::verification {
+namespace {
+namespace fs = std::filesystem;
+
+fs::path temp_dir(const std::string& name) {
+    const fs::path d = fs::temp_directory_path() / ("crossdiv_suite_test_" + name + "_" + std::to_string(getpid()));
+    fs::remove_all(d);
+    fs::create_directories(d);
+    return d;
+}
+
+std::string write(const fs::path& p, const std::string& text) {
+    std::ofstream(p) << text;
+    return p.string();
+}
+
+std::string read(const fs::path& p) {
+    std::ifstream in(p);
+    return {std::istreambuf_iterator<char>(in), {}};
+}
+
+TEST(Manifest, ReadsEveryKey) {
+    const fs::path d = temp_dir("manifest");
+    const Manifest m = read_manifest(write(d / "a.suite",
+                                           "# comment\nsuite small\ntimeout 5\n"
+                                           "case bundled:tetrahedron,bundled:fan-5 loop weights=warren boundary=edge-and-corner "
+                                           "levels=2 against=opensubdiv tier=geometric tolerance=0.01  # trailing\n"));
+    EXPECT_EQ(m.name, "small");
+    ASSERT_EQ(m.entries.size(), 1u);
+    const ManifestEntry& e = m.entries[0];
+    EXPECT_EQ(e.line, 4);
+    EXPECT_EQ(e.inputs, (std::vector<std::string>{"bundled:tetrahedron", "bundled:fan-5"}));
+    EXPECT_EQ(e.request.options.weights, LoopWeights::Warren);
+    EXPECT_EQ(e.request.options.boundary, LoopBoundary::EdgeAndCorner);
+    EXPECT_EQ(e.request.levels, 2);
+    EXPECT_EQ(e.request.references, std::vector<std::string>{"opensubdiv"});
+    EXPECT_EQ(e.request.tier, Tier::Geometric);
+    EXPECT_EQ(e.request.tolerance, 0.01);
+    EXPECT_EQ(e.request.timeout_seconds, 5);
+    EXPECT_EQ(expand_jobs(m).size(), 2u);
+}
+
+TEST(Manifest, ErrorsNameTheFileAndLine) {
+    const fs::path d = temp_dir("bad");
+    const std::vector<std::pair<std::string, std::string>> bad = {
+        {"suite s\ncase bundled:all sqrt3\n", ":2: unknown operation 'sqrt3'"},
+        {"suite s\n\ncase bundled:all loop levels=zero\n", ":3: levels=zero is not a finite number"},
+        {"suite s\ncase bundled:all loop tier=loose\n", ":2: unknown tier 'loose'"},
+        {"suite s\ncase bundled:all loop against=blender\n", ":2: unknown or not built reference 'blender'"},
+        {"suite s\ncase bundled:all loop colour=red\n", ":2: unknown key 'colour'"},
+        {"suite s\nrun everything\n", ":2: unknown statement 'run'"},
+        {"case bundled:all loop\n", ":1: the manifest has no 'suite NAME' line"},
+        {"suite s\ncase nope:all loop\n", "unknown collection 'nope:all'"},
+    };
+    for (const auto& [text, message] : bad) {
+        const std::string path = write(d / "bad.suite", text);
+        try {
+            expand_jobs(read_manifest(path));
+            ADD_FAILURE() << "accepted: " << text;
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+        }
+    }
+}
+
+TEST(Manifest, TheDefaultSuiteReadsAndCoversEveryBundledMeshAndTheCatalog) {
+    const Manifest m = read_manifest(default_manifest_path());
+    std::set<std::string> inputs;
+    for (const SuiteJob& j : expand_jobs(m)) inputs.insert(j.input);
+    for (const auto& b : datasets::bundled_meshes()) EXPECT_TRUE(inputs.count("bundled:" + b.name)) << b.name;
+    EXPECT_TRUE(inputs.count("edgecase:nonmanifold-edge-100"));
+}
+
+TEST(Shards, PartitionTheJobs) {
+    const fs::path d = temp_dir("shards");
+    const Manifest m = read_manifest(write(d / "s.suite", "suite s\ncase bundled:all loop\ncase bundled:all loop levels=2\n"));
+    const std::vector<SuiteJob> all = expand_jobs(m);
+    std::multiset<int> seen;
+    for (int i = 1; i <= 3; ++i)
+        for (const SuiteJob& j : shard_jobs(all, i, 3)) seen.insert(j.index);
+    EXPECT_EQ(seen.size(), all.size());
+    for (const SuiteJob& j : all) EXPECT_EQ(seen.count(j.index), 1u);
+    EXPECT_THROW(shard_jobs(all, 4, 3), InputError);
+    EXPECT_THROW(shard_jobs(all, 0, 3), InputError);
+}
+
+/// A small suite with an agreement, a corner-rule divergence, a crash and an input core refuses.
+Manifest small_suite(const fs::path& d) {
+    return read_manifest(write(d / "small.suite",
+                               "suite small\ntimeout 30\n"
+                               "case bundled:tetrahedron,bundled:open-patch loop boundary=edge-and-corner levels=2\n"
+                               "case edgecase:isolated-vertex,edgecase:nonmanifold-edge-3 loop levels=1 against=cgal\n"));
+}
+
+TEST(Suite, RunsInWorkersAndRecordsEachOutcome) {
+    const fs::path d = temp_dir("run");
+    const Manifest m = small_suite(d);
+    const std::vector<SuiteJob> jobs = expand_jobs(m);
+    int calls = 0;
+    const std::vector<nlohmann::json> recs = run_jobs(jobs, 2, d.string(), [&](int done, int total, const nlohmann::json&) {
+        ++calls;
+        EXPECT_LE(done, total);
+    });
+    EXPECT_EQ(calls, 4);
+    ASSERT_EQ(recs.size(), 4u);
+    for (size_t i = 0; i < recs.size(); ++i) EXPECT_EQ(recs[i]["job"], i);  // ordered by job
+    // tetrahedron: closed, every reference agrees.
+    for (const auto& r : recs[0]["runs"]) EXPECT_EQ(run_outcome(recs[0], r), "agree");
+    // open-patch with the corner rule: OpenSubdiv agrees, the two without it diverge by it.
+    for (const auto& r : recs[1]["runs"])
+        EXPECT_EQ(run_outcome(recs[1], r), r["reference"] == "opensubdiv" ? "agree" : "diverge (corner-rule)");
+    ASSERT_EQ(recs[2]["runs"].size(), 1u);
+    EXPECT_EQ(run_outcome(recs[2], recs[2]["runs"][0]), "ref-crashed");  // CGAL 5.5, signal 11
+    ASSERT_EQ(recs[3]["runs"].size(), 1u);
+    EXPECT_EQ(run_outcome(recs[3], recs[3]["runs"][0]), "ours-rejected");  // CGAL refuses it too
+    EXPECT_NE(recs[3]["core_error"].get<std::string>().find("shared by 3 triangles"), std::string::npos);
+    // The corner-rule divergence kept its error field for the report.
+    const auto& om = recs[1]["runs"][1];
+    ASSERT_TRUE(om.contains("error_field"));
+    EXPECT_TRUE(fs::exists(d / om["error_field"].get<std::string>()));
+    EXPECT_EQ(recs[1]["worst_vertex"]["valence"], 2);
+}
+
+TEST(Suite, ShardsMergeIntoTheSameResultsAsOneRun) {
+    const fs::path d = temp_dir("merge");
+    const Manifest m = small_suite(d);
+    const std::vector<SuiteJob> jobs = expand_jobs(m);
+    const nlohmann::json header = {{"tool", "crossdiv suite"}, {"suite", m.name}, {"jobs_total", jobs.size()}};
+    auto noop = [](int, int, const nlohmann::json&) {};
+    write_suite_outputs((d / "whole").string(), header, run_jobs(jobs, 1, (d / "whole").string(), noop));
+    for (int i = 1; i <= 2; ++i) {
+        nlohmann::json h = header;
+        h["shard"] = std::to_string(i) + "/2";
+        const fs::path dir = d / ("shard" + std::to_string(i));
+        write_suite_outputs(dir.string(), h, run_jobs(shard_jobs(jobs, i, 2), 1, dir.string(), noop));
+    }
+    merge_suite_outputs({(d / "shard1").string(), (d / "shard2").string()}, (d / "merged").string());
+    const auto whole = nlohmann::json::parse(read(d / "whole" / "results.json"));
+    const auto merged = nlohmann::json::parse(read(d / "merged" / "results.json"));
+    EXPECT_EQ(merged["summary"]["outcomes"], whole["summary"]["outcomes"]);
+    ASSERT_EQ(merged["cases"].size(), whole["cases"].size());
+    for (size_t i = 0; i < whole["cases"].size(); ++i) EXPECT_EQ(merged["cases"][i]["id"], whole["cases"][i]["id"]);
+    // The same shard twice is refused.
+    EXPECT_THROW(merge_suite_outputs({(d / "shard1").string(), (d / "shard1").string()}, (d / "again").string()),
+                 InputError);
+
+    // CSV: a header and one row per reference run (or per refused case without runs).
+    int runs = 0;
+    for (const auto& c : whole["cases"]) runs += std::max<int>(1, static_cast<int>(c["runs"].size()));
+    const std::string csv = read(d / "whole" / "results.csv");
+    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), runs + 1);
+    // JUnit: one testcase per run; no failure (every divergence here is classified).
+    const std::string xml = read(d / "whole" / "junit.xml");
+    const std::regex testcase("<testcase ");
+    EXPECT_EQ(std::distance(std::sregex_iterator(xml.begin(), xml.end(), testcase), std::sregex_iterator()), runs);
+    EXPECT_NE(xml.find("failures=\"0\""), std::string::npos);
+}
+
+TEST(Shrink, CornerRuleOnTheOpenPatchShrinksToOneTriangle) {
+    const TriMesh patch = to_tri_mesh(datasets::bundled_mesh("open-patch"), "test");
+    LoopComparisonRequest req;
+    req.options = {LoopWeights::Loop, LoopBoundary::EdgeAndCorner};
+    req.levels = 2;
+    req.references = {"openmesh"};
+    const ShrinkResult r = shrink_divergence(patch, "open-patch", req);
+    EXPECT_EQ(r.divergence_class, "corner-rule");
+    EXPECT_LE(r.neighbourhood.num_faces(), 4);
+    // A one-face corner is what the corner rule moves: a single triangle is all corners.
+    EXPECT_EQ(r.minimal.num_faces(), 1);
+    EXPECT_EQ(r.minimal_comparison.runs[0].divergence_class, "corner-rule");
+}
+
+TEST(Shrink, WarrenWeightsShrinkToOneIrregularFanAndTheResultIsOneMinimal) {
+    const TriMesh ico = to_tri_mesh(datasets::bundled_mesh("icosahedron"), "test");
+    LoopComparisonRequest req;
+    req.options = {LoopWeights::Warren, LoopBoundary::EdgeOnly};
+    req.levels = 1;
+    req.references = {"opensubdiv"};
+    const ShrinkResult r = shrink_divergence(ico, "icosahedron", req);
+    EXPECT_EQ(r.divergence_class, "weight-family");
+    EXPECT_LE(r.minimal.num_faces(), 5);
+    // 1-minimal: dropping any single face loses the divergence.
+    for (int f = 0; f < r.minimal.num_faces(); ++f) {
+        std::vector<int> keep;
+        for (int g = 0; g < r.minimal.num_faces(); ++g)
+            if (g != f) keep.push_back(g);
+        const TriMesh smaller = submesh(r.minimal, keep);
+        const LoopComparison c = compare_loop(smaller, "smaller", req);
+        EXPECT_FALSE(c.runs[0].verdict == "diverge" && c.runs[0].divergence_class == "weight-family") << f;
+    }
+}
+
+TEST(Shrink, RefusesWhenThereIsNothingToShrink) {
+    LoopComparisonRequest req;
+    req.options = {LoopWeights::Loop, LoopBoundary::EdgeOnly};
+    req.references = {"opensubdiv"};
+    EXPECT_THROW(shrink_divergence(to_tri_mesh(datasets::bundled_mesh("torus"), "t"), "torus", req), InputError);
+}
+
+TEST(Bench, EveryImplementationMakesTheSameOutputSize) {
+    const std::vector<BenchInput> in = {{"octahedron", to_tri_mesh(datasets::bundled_mesh("octahedron"), "t"), 2}};
+    const auto records = run_bench(in, {LoopWeights::Loop, LoopBoundary::EdgeOnly}, 1, false);
+    ASSERT_EQ(records.size(), 1 + loop_references().size());
+    EXPECT_EQ(records[0].impl, "core");
+    for (const BenchRecord& r : records) {
+        EXPECT_EQ(r.status, "ok") << r.impl;
+        EXPECT_EQ(r.output_faces, 8 * 16) << r.impl;
+        EXPECT_EQ(r.repeats, 1);
+        EXPECT_GT(r.peak_rss_mb, 0);
+        EXPECT_LE(r.min_ms, r.median_ms);
+    }
+}
+
+}  // namespace
+}  // namespace crossdiv::verification
