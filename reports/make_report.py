@@ -238,6 +238,8 @@ def main(folder):
     figdir = os.path.join(folder, "figures")
     os.makedirs(figdir, exist_ok=True)
 
+    if not results["cases"]:
+        sys.exit(f"{folder}/results.json holds no cases: nothing to report")
     figures = {"summary": summary_matrix(results, figdir), "histogram": error_histogram(results, figdir),
                "convergence": convergence(results, figdir)}
     pictures = error_pictures(results, folder, figdir)

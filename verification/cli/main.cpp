@@ -202,7 +202,7 @@ void print_outcome_summary(const std::string& dir) {
 int finish_outputs(const std::string& dir, bool report) {
     if (report) {
         if (render_report(dir) != 0) {
-            std::cerr << "crossdiv: the report could not be rendered (reports/make_report.py needs /usr/bin/python3 "
+            std::cerr << "crossdiv: reports/make_report.py failed (its message is above; it needs /usr/bin/python3 "
                          "with matplotlib: apt-get install python3-matplotlib)\n";
             return 1;
         }
@@ -215,6 +215,8 @@ int run_suite(const std::string& manifest_path, const std::string& out, int jobs
               bool report) {
     const Manifest manifest = read_manifest(manifest_path.empty() ? default_manifest_path() : manifest_path);
     const std::vector<SuiteJob> all = expand_jobs(manifest);
+    if (all.empty())
+        throw InputError(manifest.file + ": the suite expands to no jobs (are the collections' folders absent?)");
     const auto [shard_i, shard_n] = parse_shard(shard);
     const std::vector<SuiteJob> mine = shard_jobs(all, shard_i, shard_n);
     fmt::print("suite {} ({}): {} jobs, shard {}/{} runs {} with {} worker(s)\n", manifest.name, manifest.file, all.size(),

@@ -62,6 +62,8 @@ done
 expect suite-report-catalogue 0 'diverge \(corner-rule\)' -- cat "$tmp/suite/report.md"
 printf 'suite cli\ncase bundled:all loop levels=many\n' > "$tmp/bad.suite"
 expect suite-bad-manifest 2 'bad.suite:2: levels=many is not a finite number' -- "$crossdiv" suite "$tmp/bad.suite" --out "$tmp/bad"
+printf 'suite none\n' > "$tmp/none.suite"
+expect suite-no-jobs 2 "none.suite: the suite expands to no jobs" -- "$crossdiv" suite "$tmp/none.suite" --shard 1/1 --out "$tmp/none" --no-report
 expect suite-bad-shard 2 'expected I/N' -- "$crossdiv" suite "$tmp/cli.suite" --shard 2 --out "$tmp/s"
 expect suite-shard-1 0 'shard 1/2 runs 1' -- "$crossdiv" suite "$tmp/cli.suite" --shard 1/2 --out "$tmp/sh1" --no-report
 expect suite-shard-2 0 'shard 2/2 runs 1' -- "$crossdiv" suite "$tmp/cli.suite" --shard 2/2 --out "$tmp/sh2" --no-report
