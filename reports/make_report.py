@@ -73,6 +73,15 @@ def vec(v):
     return "-" if v is None else "(" + ", ".join(f"{c:.9g}" for c in v) + ")"
 
 
+def save(fig, figdir, name):
+    """Lays out, writes figures/NAME and frees the figure; returns the path."""
+    fig.tight_layout()
+    path = os.path.join(figdir, name)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
 def summary_matrix(results, figdir):
     cases = results["cases"]
     refs = [r["name"] for r in results.get("references", [])] or sorted(
@@ -100,11 +109,7 @@ def summary_matrix(results, figdir):
     handles = [plt.Rectangle((0, 0), 1, 1, facecolor=colour, edgecolor="black") for _, colour in CATEGORIES]
     ax.legend(handles, [n for n, _ in CATEGORIES], loc="upper left", bbox_to_anchor=(1.01, 1), fontsize=7)
     ax.set_title("Outcome per input (rows) and case x reference (columns)", fontsize=9)
-    fig.tight_layout()
-    path = os.path.join(figdir, "summary_matrix.png")
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save(fig, figdir, "summary_matrix.png")
 
 
 def error_histogram(results, figdir):
@@ -123,11 +128,7 @@ def error_histogram(results, figdir):
     ax.set_ylabel("reference runs")
     ax.legend(fontsize=7)
     ax.set_title("Distribution of the largest vertex error per run", fontsize=9)
-    fig.tight_layout()
-    path = os.path.join(figdir, "error_histogram.png")
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save(fig, figdir, "error_histogram.png")
 
 
 def convergence(results, figdir):
@@ -152,11 +153,7 @@ def convergence(results, figdir):
     ax.set_ylabel("max distance / diagonal (1e-20 = exact)")
     ax.set_title("Error by level: rounding stays flat near 1e-16, rule differences persist", fontsize=9)
     ax.legend(fontsize=7)
-    fig.tight_layout()
-    path = os.path.join(figdir, "convergence.png")
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save(fig, figdir, "convergence.png")
 
 
 def error_pictures(results, folder, figdir):
@@ -216,10 +213,7 @@ def timing(bench, figdir):
     ax.set_title("Loop subdivision time against output size (single thread)", fontsize=9)
     ax.legend()
     ax.grid(True, which="both", alpha=0.3)
-    fig.tight_layout()
-    path = os.path.join(figdir, "timing.png")
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    path = save(fig, figdir, "timing.png")
     core = {(r["input"], r["levels"]): r["median_ms"] for r in records if r["impl"] == "core"}
     rows = []
     for r in records:

@@ -191,12 +191,10 @@ std::pair<int, int> parse_shard(const std::string& s) {
     throw InputError("--shard " + s + ": expected I/N, e.g. 2/4");
 }
 
-void print_outcome_summary(const std::string& dir) {
-    std::ifstream in(std::filesystem::path(dir) / "results.json");
-    const nlohmann::json r = nlohmann::json::parse(in);
-    fmt::print("\n{} cases, {} reference runs, {} failure(s)\n", r["summary"]["cases"].get<int>(),
-               r["summary"]["runs"].get<int>(), r["summary"]["failures"].get<int>());
-    for (const auto& [outcome, n] : r["summary"]["outcomes"].items()) fmt::print("  {:>5}  {}\n", n.get<int>(), outcome);
+void print_outcome_summary(const nlohmann::json& summary) {
+    fmt::print("\n{} cases, {} reference runs, {} failure(s)\n", summary["cases"].get<int>(), summary["runs"].get<int>(),
+               summary["failures"].get<int>());
+    for (const auto& [outcome, n] : summary["outcomes"].items()) fmt::print("  {:>5}  {}\n", n.get<int>(), outcome);
 }
 
 int finish_outputs(const std::string& dir, bool report) {
@@ -224,16 +222,13 @@ int run_suite(const std::string& manifest_path, const std::string& out, int jobs
     const bool tty = isatty(STDOUT_FILENO);
     const auto t0 = std::chrono::steady_clock::now();
     const std::vector<nlohmann::json> records = run_jobs(mine, jobs, out, [&](int done, int total, const nlohmann::json& rec) {
-        std::string line;
-        for (const auto& run : rec["runs"]) line += (line.empty() ? "" : ", ") + run["reference"].get<std::string>() + " " + run_outcome(rec, run);
-        if (rec["runs"].empty()) line = (rec.value("ours_failed", false) ? "ours-failed: " : "ours-rejected: ") + rec.value("core_error", std::string());
         if (tty) {
             const int width = 30, filled = total ? width * done / total : width;
             fmt::print("\r\033[K[{}{}] {}/{} {}", std::string(filled, '#'), std::string(width - filled, '.'), done, total,
                        rec["id"].get<std::string>().substr(0, 60));
             if (done == total) fmt::print("\n");
         } else {
-            fmt::print("[{}/{}] {}: {}\n", done, total, rec["id"].get<std::string>(), line);
+            fmt::print("[{}/{}] {}: {}\n", done, total, rec["id"].get<std::string>(), describe_record(rec));
         }
         std::fflush(stdout);
     });
@@ -244,20 +239,19 @@ int run_suite(const std::string& manifest_path, const std::string& out, int jobs
         {"shard", fmt::format("{}/{}", shard_i, shard_n)}, {"jobs_total", all.size()}, {"jobs_run", mine.size()},
         {"workers", jobs}, {"references", refs},
         {"seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()}};
-    write_suite_outputs(out, header, records);
+    const nlohmann::json summary = write_suite_outputs(out, header, records);
     fmt::print("results: {0}/results.json, {0}/results.csv, {0}/junit.xml\n", out);
-    print_outcome_summary(out);
+    print_outcome_summary(summary);
     const int report_status = finish_outputs(out, report);
-    std::ifstream in(std::filesystem::path(out) / "results.json");
-    const int failures = nlohmann::json::parse(in)["summary"]["failures"].get<int>();
-    return failures ? 1 : report_status;
+    return summary["failures"].get<int>() ? 1 : report_status;
 }
 
 int run_merge(const std::vector<std::string>& dirs, const std::string& out, bool report) {
-    merge_suite_outputs(dirs, out);
+    const nlohmann::json summary = merge_suite_outputs(dirs, out);
     fmt::print("merged {} folder(s) into {}\n", dirs.size(), out);
-    print_outcome_summary(out);
-    return finish_outputs(out, report);
+    print_outcome_summary(summary);
+    const int report_status = finish_outputs(out, report);
+    return summary["failures"].get<int>() ? 1 : report_status;
 }
 
 int run_diff(const std::string& in, const SchemeArgs& s, const std::string& against, const std::string& out_dir) {

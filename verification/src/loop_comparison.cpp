@@ -96,16 +96,17 @@ double ulp_of_largest_coordinate(const PolyMesh& m) {
 /// Our mesh at the first level that diverges, with per-vertex distances (the last level's
 /// map when matched by nearest neighbour); empty when larger than the request allows.
 std::optional<ErrorField> error_field(const CoreRun& ours, const adapters::LevelTrace& ref, const Correspondence& c,
-                                      const LoopComparisonRequest& req) {
+                                      const std::vector<double>& level_max_rel, const LoopComparisonRequest& req) {
     const int levels = static_cast<int>(ref.size()) - 1;
+    // level_errors() has one entry per level with a map, in order, ending at the last level.
+    size_t k = 0;
     for (int l = 1; l <= levels; ++l) {
         const std::vector<int>* map = l < static_cast<int>(c.level_maps.size()) ? &c.level_maps[l]
                                       : l == levels                             ? &c.ref_to_ours
                                                                                 : nullptr;
         if (!map) continue;
         const PolyMesh& mesh = ours.levels[l - 1];
-        const double e = max_relative_distance(mesh, ref[l], *map);
-        if (e <= req.tolerance && l < levels) continue;
+        if (level_max_rel.at(k++) <= req.tolerance && l < levels) continue;
         if (mesh.num_faces() > req.error_field_max_faces) return std::nullopt;
         return ErrorField{l, mesh, vertex_distances(mesh, ref[l], *map)};
     }
@@ -258,11 +259,17 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
         } else if (!(run.ran_with == req.options)) {
             // Measured, not assumed: rerun core with the reference's rule; if that agrees, the
             // rule difference explains the whole divergence.
+            // Whatever the tier, the rule explains the divergence only if core with that rule
+            // equals the reference up to rounding (the weak tier at its tolerance; strict would
+            // demand bits, geometric would accept what the rule itself moves).
             const CoreRun& same_rule = core_with(run.ran_with);
             const MeshComparison c2 =
                 compare_meshes(same_rule.levels.back(), trace.back(), run.correspondence.ref_to_ours);
             const std::vector<double> e2 = level_errors(same_rule, trace, run.correspondence);
-            if (within(req, c2, e2, run.hausdorff_rel)) {
+            LoopComparisonRequest up_to_rounding = req;
+            up_to_rounding.tier = Tier::Weak;
+            if (req.tier != Tier::Weak) up_to_rounding.tolerance = tolerances::kAgreementRelative;
+            if (within(up_to_rounding, c2, e2, NAN)) {
                 const bool w = run.ran_with.weights != req.options.weights;
                 const bool b = run.ran_with.boundary != req.options.boundary;
                 run.divergence_class = w && b ? "weight-family+corner-rule" : w ? "weight-family" : "corner-rule";
@@ -278,7 +285,7 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
             run.divergence_class = "unexplained";
             run.explanation = "same rules, differs by " + sci(run.comparison.max_rel) + worst;
         }
-        if (req.error_field_max_faces > 0) run.error_field = error_field(ours, trace, run.correspondence, req);
+        if (req.error_field_max_faces > 0) run.error_field = error_field(ours, trace, run.correspondence, run.level_max_rel, req);
         out.runs.push_back(std::move(run));
     }
     const ReferenceRun* worst_run = nullptr;
@@ -350,9 +357,9 @@ nlohmann::json to_json(const LoopComparison& c) {
     }
     json runs = json::array();
     for (const ReferenceRun& r : c.runs) {
-        json worst = json::array();
+        json worst_list = json::array();
         for (const WorstVertex& w : r.comparison.worst)
-            worst.push_back({{"ours_index", w.ours_index}, {"ref_index", w.ref_index}, {"valence", w.valence},
+            worst_list.push_back({{"ours_index", w.ours_index}, {"ref_index", w.ref_index}, {"valence", w.valence},
                              {"boundary", w.boundary}, {"ours", vec(w.ours)}, {"ref", vec(w.ref)}, {"distance", w.distance}});
         json run = {{"reference", r.reference},
                     {"version", r.version},
@@ -376,7 +383,7 @@ nlohmann::json to_json(const LoopComparison& c) {
             run["positions"] = {{"diagonal", r.comparison.diagonal}, {"max_abs", finite(r.comparison.max_abs)},
                                 {"rms_abs", finite(r.comparison.rms_abs)}, {"max_rel", finite(r.comparison.max_rel)},
                                 {"rms_rel", finite(r.comparison.rms_rel)}, {"level_max_rel", levels},
-                                {"worst", worst}};
+                                {"worst", worst_list}};
         }
         runs.push_back(run);
     }

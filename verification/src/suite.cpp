@@ -102,16 +102,6 @@ std::string describe_entry(const ManifestEntry& e) {
     return s;
 }
 
-/// A one-line summary of a record for the progress output.
-std::string summarize(const json& rec) {
-    std::string s;
-    for (const json& run : rec.value("runs", json::array()))
-        s += (s.empty() ? "" : ", ") + run.value("reference", std::string("?")) + " " + run_outcome(rec, run);
-    if (rec.contains("core_error") && !rec["core_error"].get<std::string>().empty() && rec["runs"].empty())
-        s = "core: " + rec["core_error"].get<std::string>();
-    return s.empty() ? "no references" : s;
-}
-
 json failed_record(const SuiteJob& job, const std::string& why) {
     return {{"input", job.input}, {"scheme", job.entry->operation}, {"levels", job.entry->request.levels},
             {"tier", to_string(job.entry->request.tier)}, {"tolerance_rel", job.entry->request.tolerance},
@@ -366,12 +356,21 @@ std::string run_outcome(const json& rec, const json& run) {
     return verdict;
 }
 
+std::string describe_record(const json& rec) {
+    if (rec["runs"].empty())
+        return (rec.value("ours_failed", false) ? "ours-failed: " : "ours-rejected: ") + rec.value("core_error", std::string());
+    std::string s;
+    for (const json& run : rec["runs"])
+        s += (s.empty() ? "" : ", ") + run.value("reference", std::string("?")) + " " + run_outcome(rec, run);
+    return s;
+}
+
 bool run_is_failure(const json& rec, const json& run) {
     if (rec.value("ours_failed", false)) return true;
     return run.value("verdict", std::string()) == "diverge" && run.value("divergence_class", std::string()) == "unexplained";
 }
 
-void write_suite_outputs(const std::string& dir, const json& header, const std::vector<json>& cases) {
+json write_suite_outputs(const std::string& dir, const json& header, const std::vector<json>& cases) {
     fs::create_directories(dir);
     std::map<std::string, int> counts;
     int failures = 0, testcases = 0;
@@ -438,9 +437,10 @@ void write_suite_outputs(const std::string& dir, const json& header, const std::
     }
     xml << "  </testsuite>\n</testsuites>\n";
     write_file(fs::path(dir) / "junit.xml", xml.str());
+    return results["summary"];
 }
 
-void merge_suite_outputs(const std::vector<std::string>& dirs, const std::string& out_dir) {
+json merge_suite_outputs(const std::vector<std::string>& dirs, const std::string& out_dir) {
     json header;
     std::map<int, json> cases;
     std::vector<std::string> shards;
@@ -480,7 +480,7 @@ void merge_suite_outputs(const std::vector<std::string>& dirs, const std::string
     header["jobs_run"] = cases.size();
     std::vector<json> ordered;
     for (auto& [job, c] : cases) ordered.push_back(std::move(c));
-    write_suite_outputs(out_dir, header, ordered);
+    return write_suite_outputs(out_dir, header, ordered);
 }
 
 int render_report(const std::string& dir) {

@@ -174,12 +174,39 @@ TEST(Suite, ShardsMergeIntoTheSameResultsAsOneRun) {
     EXPECT_NE(xml.find("failures=\"0\""), std::string::npos);
 }
 
+/// A request against one reference.
+LoopComparisonRequest against(const std::string& reference, LoopOptions options, int levels, Tier tier = Tier::Weak,
+                              double tolerance = tolerances::kAgreementRelative) {
+    LoopComparisonRequest req;
+    req.options = options;
+    req.levels = levels;
+    req.references = {reference};
+    req.tier = tier;
+    req.tolerance = tolerance;
+    return req;
+}
+
+TEST(Tiers, ARuleDifferenceIsClassifiedTheSameInEveryTier) {
+    // Warren against OpenSubdiv (Loop weights only) on the icosahedron moves vertices by 7e-3
+    // of the diagonal. Whatever the tier, the rerun with Loop's weights explains it.
+    const TriMesh ico = to_tri_mesh(datasets::bundled_mesh("icosahedron"), "test");
+    const LoopOptions warren{LoopWeights::Warren, LoopBoundary::EdgeOnly};
+    for (const auto& [tier, tol] : std::vector<std::pair<Tier, double>>{
+             {Tier::Strict, 0.0}, {Tier::Weak, 1e-12}, {Tier::Geometric, 1e-6}}) {
+        const LoopComparison c = compare_loop(ico, "icosahedron", against("opensubdiv", warren, 2, tier, tol));
+        EXPECT_EQ(c.runs[0].verdict, "diverge") << to_string(tier);
+        EXPECT_EQ(c.runs[0].divergence_class, "weight-family") << to_string(tier) << ": " << c.runs[0].explanation;
+    }
+    // The geometric tier at a tolerance above what the rule moves calls it agreement.
+    const LoopComparison loose = compare_loop(ico, "icosahedron", against("opensubdiv", warren, 2, Tier::Geometric, 0.05));
+    EXPECT_EQ(loose.runs[0].verdict, "agree");
+    EXPECT_GT(loose.runs[0].hausdorff_rel, 1e-4);
+    EXPECT_LT(loose.runs[0].hausdorff_rel, 0.05);
+}
+
 TEST(Shrink, CornerRuleOnTheOpenPatchShrinksToOneTriangle) {
     const TriMesh patch = to_tri_mesh(datasets::bundled_mesh("open-patch"), "test");
-    LoopComparisonRequest req;
-    req.options = {LoopWeights::Loop, LoopBoundary::EdgeAndCorner};
-    req.levels = 2;
-    req.references = {"openmesh"};
+    const LoopComparisonRequest req = against("openmesh", {LoopWeights::Loop, LoopBoundary::EdgeAndCorner}, 2);
     const ShrinkResult r = shrink_divergence(patch, "open-patch", req);
     EXPECT_EQ(r.divergence_class, "corner-rule");
     EXPECT_LE(r.neighbourhood.num_faces(), 4);
@@ -190,10 +217,7 @@ TEST(Shrink, CornerRuleOnTheOpenPatchShrinksToOneTriangle) {
 
 TEST(Shrink, WarrenWeightsShrinkToOneIrregularFanAndTheResultIsOneMinimal) {
     const TriMesh ico = to_tri_mesh(datasets::bundled_mesh("icosahedron"), "test");
-    LoopComparisonRequest req;
-    req.options = {LoopWeights::Warren, LoopBoundary::EdgeOnly};
-    req.levels = 1;
-    req.references = {"opensubdiv"};
+    const LoopComparisonRequest req = against("opensubdiv", {LoopWeights::Warren, LoopBoundary::EdgeOnly}, 1);
     const ShrinkResult r = shrink_divergence(ico, "icosahedron", req);
     EXPECT_EQ(r.divergence_class, "weight-family");
     EXPECT_LE(r.minimal.num_faces(), 5);
@@ -209,9 +233,7 @@ TEST(Shrink, WarrenWeightsShrinkToOneIrregularFanAndTheResultIsOneMinimal) {
 }
 
 TEST(Shrink, RefusesWhenThereIsNothingToShrink) {
-    LoopComparisonRequest req;
-    req.options = {LoopWeights::Loop, LoopBoundary::EdgeOnly};
-    req.references = {"opensubdiv"};
+    const LoopComparisonRequest req = against("opensubdiv", {LoopWeights::Loop, LoopBoundary::EdgeOnly}, 1);
     EXPECT_THROW(shrink_divergence(to_tri_mesh(datasets::bundled_mesh("torus"), "t"), "torus", req), InputError);
 }
 

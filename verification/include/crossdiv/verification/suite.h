@@ -65,17 +65,21 @@ std::vector<nlohmann::json> run_jobs(const std::vector<SuiteJob>& jobs, int work
 /// "ref-crashed", "ref-rejected", "ours-rejected (<class>)", "ours-failed".
 std::string run_outcome(const nlohmann::json& case_record, const nlohmann::json& run);
 
+/// One line for progress output: each reference's outcome, or core's refusal or failure.
+std::string describe_record(const nlohmann::json& case_record);
+
 /// Whether a run counts as a failure in JUnit: an unexplained divergence, or ours-failed.
 bool run_is_failure(const nlohmann::json& case_record, const nlohmann::json& run);
 
 /// Writes results.json, results.csv and junit.xml into `dir` from the suite's header
-/// (name, manifest, shard, references) and its case records.
-void write_suite_outputs(const std::string& dir, const nlohmann::json& header, const std::vector<nlohmann::json>& cases);
+/// (name, manifest, shard, references) and its case records. Returns the summary written
+/// into results.json ({"cases", "runs", "failures", "outcomes"}).
+nlohmann::json write_suite_outputs(const std::string& dir, const nlohmann::json& header, const std::vector<nlohmann::json>& cases);
 
 /// Joins the results.json of several shard folders into `out_dir` (records ordered by job,
-/// error fields copied). @throws InputError if a folder lacks results.json, the suites
-/// differ, or two shards hold the same job.
-void merge_suite_outputs(const std::vector<std::string>& dirs, const std::string& out_dir);
+/// error fields copied) and returns the summary. @throws InputError if a folder lacks
+/// results.json, the suites differ, or two shards hold the same job.
+nlohmann::json merge_suite_outputs(const std::vector<std::string>& dirs, const std::string& out_dir);
 
 /// Renders report.md, index.html and the figures from results.json (and bench.json when
 /// present) in `dir` with reports/make_report.py. Returns the python exit status.
