@@ -1,0 +1,84 @@
+#pragma once
+/// @file
+/// A curve as a file defines it (an SWP record or a BZC file), and its tessellation with a
+/// named mode. The readers are in crossdiv/io/curve_io.h.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "crossdiv/curves/primitives.h"
+
+namespace crossdiv {
+
+/// What a record's control points mean.
+enum class CurveType {
+    BezierChain,       ///< SWP bez2/bez3: piecewise cubic, 3n + 1 points
+    BSpline,           ///< SWP bsp2/bsp3: uniform cubic, sliding window
+    CatmullRom,        ///< SWP crm2/crm3 (our extension): open Catmull-Rom
+    CatmullRomClosed,  ///< SWP crc2/crc3 (our extension): closed, wraps around
+    Bezier,            ///< BZC: one Bezier curve of any degree
+    Primitive,         ///< SWP circ, helx, trfl
+};
+std::string_view to_string(CurveType t);
+
+/// One curve record.
+struct CurveRecord {
+    std::string name;     ///< "" for SWP's anonymous '.'
+    std::string keyword;  ///< bez2, bsp3, circ, ... ("bzc" for a BZC file)
+    CurveType type = CurveType::BezierChain;
+    int dim = 2;          ///< 2 (points in the xy-plane, z = 0) or 3
+    int steps = 1;        ///< SWP STEPS: uniform intervals per segment (primitives: in all)
+    std::vector<Vec3> control;
+    Primitive primitive;  ///< when type == Primitive
+    int line = 0;         ///< where the record starts
+
+    /// "name" or "#index keyword" for anonymous records.
+    std::string label(int index) const;
+    /// The Bezier segments of a spline record. @throws InputError for a primitive.
+    BezierChain chain() const;
+    /// Whether the curve closes on itself: a closed Catmull-Rom or closed primitive, or a
+    /// spline whose first and last point coincide (the course files close B-splines by
+    /// repeating three control points).
+    bool closed() const;
+};
+
+/// An srev or gcyl record (built into surfaces by the surfaces module).
+struct SweepRecord {
+    enum class Kind { Revolution, Cylinder };
+    Kind kind = Kind::Revolution;
+    std::string name;
+    int steps = 0;            ///< srev: slices around the axis
+    std::string profile;      ///< curve name
+    std::string sweep;        ///< gcyl: curve name
+    int profile_index = -1;   ///< into CurveFile::curves
+    int sweep_index = -1;
+    int line = 0;
+};
+
+/// Everything one curve file defines.
+struct CurveFile {
+    std::string path;
+    std::vector<CurveRecord> curves;
+    std::vector<SweepRecord> sweeps;
+};
+
+/// How to tessellate.
+struct TessellationOptions {
+    TessellationMode mode = TessellationMode::Uniform;
+    std::optional<int> intervals;  ///< uniform: per segment; default the record's STEPS
+    double angle_tol = 0;          ///< radians, for Angle
+    double tol = 0;                ///< distance, for Distance
+};
+
+/// Tessellates one record. Splines use the chain's tessellation; primitives are sampled
+/// uniformly in their parameter: with the record's steps (or `intervals`) in uniform mode,
+/// and otherwise with the fewest steps, doubling from the record's, whose largest turn per
+/// edge (Angle) or measured deviation (Distance) is within the tolerance.
+Polyline tessellate_record(const CurveRecord& record, const TessellationOptions& options);
+
+/// Measured chordal deviation of a primitive's samples from the exact curve (dense sampling
+/// with golden-section refinement per edge, as chordal_deviation for splines).
+Deviation primitive_deviation(const Primitive& p, const Polyline& samples);
+
+}  // namespace crossdiv

@@ -1,0 +1,103 @@
+#pragma once
+/// @file
+/// Curve tessellation: uniform in the parameter, adaptive by angle (the CS4620 seed's
+/// recursive de Casteljau split), adaptive by distance (a guaranteed bound), and Wang's
+/// formula for the uniform step count that guarantees a distance.
+///
+/// Every mode emits only points exactly on the curve (de Casteljau points, never chord
+/// midpoints), each with its global parameter u (segment k + local t) and the unit tangent
+/// there, and always emits the ends of every segment, so no polyline edge straddles two
+/// segments.
+
+#include <functional>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "crossdiv/curves/cubic_spline.h"
+#include "crossdiv/curves/frames.h"
+
+namespace crossdiv {
+
+/// A tessellated curve: positions on the curve with their parameters and unit tangents, and
+/// normals as curve_normals gives them.
+struct Polyline {
+    std::vector<Vec3> positions;
+    std::vector<Vec3> tangents;
+    std::vector<Vec3> normals;
+    std::vector<double> params;  ///< global u in [0, num_segments]
+    int size() const { return static_cast<int>(positions.size()); }
+};
+
+/// The tessellation strategies, named as the CLI's --mode.
+enum class TessellationMode { Uniform, Angle, Distance };
+std::string_view to_string(TessellationMode m);
+
+/// `intervals` equal parameter steps per segment (the SWP file's STEPS): t = i / intervals,
+/// the end of each segment emitted once. @throws InputError if intervals < 1.
+Polyline tessellate_uniform(const BezierChain& chain, int intervals);
+
+/// Per-segment step counts (e.g. from wang_intervals). @throws InputError on a count < 1 or
+/// a size that is not the segment count.
+Polyline tessellate_uniform(const BezierChain& chain, std::span<const int> intervals);
+
+/// The maximum recursion depth of the angle mode (the CS4620 seed's advice: 10 levels, so a
+/// degenerate segment yields at most 1024 edges).
+inline constexpr int kAngleMaxLevels = 10;
+
+/// Adaptive by angle (CS4620 seed): a piece is emitted as one edge when every turning angle
+/// of its control polygon (between consecutive edges of nonzero length) is at most
+/// angle_tol / 2, since the tangent cannot swing more than the polygon's total turn; else
+/// it is split at t = 1/2 and both halves are treated the same way, at most `max_levels` deep.
+/// It bounds the turn of the tangent per edge, not the distance to the curve.
+/// @throws InputError if angle_tol is not in (0, pi].
+Polyline tessellate_angle(const BezierChain& chain, double angle_tol, int max_levels = kAngleMaxLevels);
+
+/// The smallest distance tolerance accepted, relative to the bounding-box diagonal of the
+/// control points: below about 1e4 ulps the flatness test itself is rounding noise, and the
+/// recursion would split to the bottom of the parameter's precision.
+inline constexpr double kMinDistanceTolRelative = 1e-12;
+
+/// Adaptive by distance, with a guarantee: a piece is one edge when every control point lies
+/// within `tol` of its chord (the segment between its end points). The piece lies in its
+/// control points' convex hull, so within tol of the chord; and since it runs continuously
+/// from one end of the chord to the other, every chord point has a curve point within tol
+/// (project the curve onto the chord). So the Hausdorff distance between curve and polyline
+/// is at most tol. Otherwise the piece is split at t = 1/2.
+/// @throws InputError if tol is not finite or below kMinDistanceTolRelative of the curve.
+Polyline tessellate_distance(const BezierChain& chain, double tol);
+
+/// Wang's formula (G. Wang, 1984; as in D. Filip, R. Magedson, R. Markot, "Surface
+/// algorithms using bounds on derivatives", CAGD 3, 1986): n equal parameter steps keep a
+/// degree-d Bezier segment within tol of its polyline when
+/// n >= sqrt( d (d - 1) M / (8 tol) ),  M = max_i | p_{i+2} - 2 p_{i+1} + p_i |.
+/// Returns that n (at least 1) for each segment. @throws InputError if tol <= 0.
+std::vector<int> wang_intervals(const BezierChain& chain, double tol);
+
+/// Normals for a tessellated curve: the planar left-side rule when every point has z = 0
+/// (CS-C3100), otherwise N of the rotation-minimizing frame started from initial_binormal.
+std::vector<Vec3> curve_normals(std::span<const Vec3> positions, std::span<const Vec3> tangents);
+
+/// Measured deviation of a polyline from its curve.
+struct Deviation {
+    double max = 0;        ///< largest distance from a curve point to its edge's chord
+    double at_param = 0;   ///< where (global u)
+};
+
+/// For each edge (consecutive samples u_a < u_b, on one segment), the largest distance from
+/// the curve on [u_a, u_b] to the edge: dense samples (kDeviationSamples per edge) and a
+/// golden-section refinement around the largest. By the projection argument above this is
+/// also the Hausdorff distance bound the distance mode guarantees; dense sampling can only
+/// under-estimate it, by far less than the refinement's 1e-9 relative bracket.
+Deviation chordal_deviation(const BezierChain& chain, const Polyline& polyline);
+inline constexpr int kDeviationSamples = 32;
+
+/// The largest value of f on [a, b] (open): kDeviationSamples equally spaced samples, then a
+/// golden-section search in the bracket around the largest (40 steps: the bracket shrinks
+/// to 1e-8 of its width). Exact for the unimodal distance profiles of one polyline edge.
+Deviation sampled_maximum(const std::function<double(double)>& f, double a, double b);
+
+/// Distance from p to the segment [a, b].
+double point_segment_distance(const Vec3& p, const Vec3& a, const Vec3& b);
+
+}  // namespace crossdiv

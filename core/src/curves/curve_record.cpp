@@ -1,0 +1,97 @@
+#include "crossdiv/curves/curve_record.h"
+
+#include <cmath>
+
+#include "crossdiv/curves/bezier.h"
+#include "crossdiv/error.h"
+
+namespace crossdiv {
+
+std::string_view to_string(CurveType t) {
+    switch (t) {
+        case CurveType::BezierChain: return "bezier-chain";
+        case CurveType::BSpline: return "bspline";
+        case CurveType::CatmullRom: return "catmull-rom";
+        case CurveType::CatmullRomClosed: return "catmull-rom-closed";
+        case CurveType::Bezier: return "bezier";
+        case CurveType::Primitive: return "primitive";
+    }
+    return "?";
+}
+
+std::string CurveRecord::label(int index) const {
+    return name.empty() ? "#" + std::to_string(index) + " " + keyword : name;
+}
+
+BezierChain CurveRecord::chain() const {
+    switch (type) {
+        case CurveType::BezierChain: return bezier_chain(control);
+        case CurveType::BSpline: return bspline_chain(control);
+        case CurveType::CatmullRom: return catmull_rom_chain(control, false);
+        case CurveType::CatmullRomClosed: return catmull_rom_chain(control, true);
+        case CurveType::Bezier: return single_bezier(control);
+        case CurveType::Primitive: break;
+    }
+    throw InputError(keyword + " is a primitive, not a spline: it has no control points");
+}
+
+bool CurveRecord::closed() const {
+    if (type == CurveType::Primitive) return primitive.closed();
+    if (type == CurveType::CatmullRomClosed) return true;
+    const BezierChain c = chain();
+    return c.points.front() == c.points.back();
+}
+
+namespace {
+
+/// Largest turn of the tangent between consecutive samples.
+double max_turn(const Polyline& p) {
+    double worst = 0;
+    for (int i = 0; i + 1 < p.size(); ++i)
+        worst = std::max(worst, std::atan2(p.tangents[i].cross(p.tangents[i + 1]).norm(), p.tangents[i].dot(p.tangents[i + 1])));
+    return worst;
+}
+
+Polyline sample_primitive_until(const CurveRecord& r, const TessellationOptions& o) {
+    // Doubling from the record's steps; 2^20 steps of any primitive here is far below any
+    // tolerance the readers accept, so the cap only guards against a bug.
+    constexpr int kMaxSteps = 1 << 20;
+    const bool by_angle = o.mode == TessellationMode::Angle;
+    const double tol = by_angle ? o.angle_tol : o.tol;
+    if (!std::isfinite(tol) || tol <= 0.0)
+        throw InputError(r.keyword + ": the " + (by_angle ? "angle" : "distance") + " tolerance must be positive");
+    for (int steps = std::max(1, r.steps);; steps *= 2) {
+        Polyline p = sample_primitive(r.primitive, steps);
+        const double measured = by_angle ? max_turn(p) : primitive_deviation(r.primitive, p).max;
+        if (measured <= tol || steps >= kMaxSteps) return p;
+    }
+}
+
+}  // namespace
+
+Polyline tessellate_record(const CurveRecord& r, const TessellationOptions& o) {
+    if (r.type == CurveType::Primitive) {
+        if (o.mode == TessellationMode::Uniform) return sample_primitive(r.primitive, o.intervals.value_or(r.steps));
+        return sample_primitive_until(r, o);
+    }
+    const BezierChain c = r.chain();
+    switch (o.mode) {
+        case TessellationMode::Uniform: return tessellate_uniform(c, o.intervals.value_or(r.steps));
+        case TessellationMode::Angle: return tessellate_angle(c, o.angle_tol);
+        case TessellationMode::Distance: return tessellate_distance(c, o.tol);
+    }
+    throw std::logic_error("unknown tessellation mode");
+}
+
+Deviation primitive_deviation(const Primitive& prim, const Polyline& p) {
+    Deviation dev;
+    for (int i = 0; i + 1 < p.size(); ++i) {
+        const Vec3 &a = p.positions[i], &b = p.positions[i + 1];
+        const Deviation d = sampled_maximum(
+            [&](double s) { return point_segment_distance(prim.jet(s).position, a, b); }, p.params[i], p.params[i + 1]);
+        if (d.max > dev.max) dev = d;
+    }
+    return dev;
+}
+
+}  // namespace crossdiv

@@ -1,0 +1,254 @@
+#include "crossdiv/curves/tessellation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "crossdiv/curves/bezier.h"
+#include "crossdiv/error.h"
+#include "crossdiv/mesh/tri_mesh.h"
+
+namespace crossdiv {
+
+std::string_view to_string(TessellationMode m) {
+    switch (m) {
+        case TessellationMode::Uniform: return "uniform";
+        case TessellationMode::Angle: return "angle";
+        case TessellationMode::Distance: return "distance";
+    }
+    return "?";
+}
+
+double point_segment_distance(const Vec3& p, const Vec3& a, const Vec3& b) {
+    const Vec3 ab = b - a;
+    const double len2 = ab.squaredNorm();
+    const double s = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+    return (p - (a + s * ab)).norm();
+}
+
+std::vector<Vec3> curve_normals(std::span<const Vec3> positions, std::span<const Vec3> tangents) {
+    const bool planar = std::all_of(positions.begin(), positions.end(), [](const Vec3& p) { return p.z() == 0.0; });
+    const std::vector<Frame> frames =
+        curve_frames(positions, tangents, planar ? FrameMethod::Planar : FrameMethod::DoubleReflection);
+    std::vector<Vec3> normals(frames.size());
+    for (size_t i = 0; i < frames.size(); ++i) normals[i] = frames[i].N;
+    return normals;
+}
+
+namespace {
+
+void require_segments(const BezierChain& chain) {
+    if (chain.num_segments() == 0) throw InputError("the curve has no segments to tessellate");
+}
+
+void emit(Polyline& out, const BezierPointTangent& pt, double u) {
+    out.positions.push_back(pt.position);
+    out.tangents.push_back(pt.tangent);
+    out.params.push_back(u);
+}
+
+/// Closes a polyline: the end of the last segment, then the normals.
+void finish(const BezierChain& chain, Polyline& out) {
+    const int last = chain.num_segments() - 1;
+    emit(out, bezier_point_tangent(chain.segment(last), 1.0), static_cast<double>(last + 1));
+    out.normals = curve_normals(out.positions, out.tangents);
+}
+
+/// Unit tangent at the start of a piece: the first control point that differs from c_0
+/// gives the direction of the first non-vanishing derivative there.
+Vec3 start_tangent(std::span<const Vec3> c) {
+    for (size_t j = 1; j < c.size(); ++j) {
+        const Vec3 v = c[j] - c[0];
+        if (v.squaredNorm() > 0.0) return v.normalized();
+    }
+    return Vec3::Zero();
+}
+
+/// Recursive halving at t = 1/2 with one preallocated buffer: depth k keeps its two halves
+/// and a scratch row in buf[3 n k .. 3 n (k+1)), so the recursion never allocates.
+class Halver {
+public:
+    Halver(int points_per_piece, int max_depth)
+        : n_(points_per_piece), buf_(static_cast<size_t>(3 * points_per_piece) * (max_depth + 1)) {}
+
+    /// Splits `c` (n points) into the depth's left and right halves.
+    void split(std::span<const Vec3> c, int depth) {
+        std::span<Vec3> l = left(depth), r = right(depth), w = row(depth, 2);
+        std::copy(c.begin(), c.end(), w.begin());
+        for (int k = 0; k < n_; ++k) {
+            l[k] = w[0];
+            r[n_ - 1 - k] = w[n_ - 1 - k];
+            for (int i = 0; i + 1 < n_ - k; ++i) w[i] = 0.5 * (w[i] + w[i + 1]);
+        }
+    }
+    std::span<Vec3> left(int depth) { return row(depth, 0); }
+    std::span<Vec3> right(int depth) { return row(depth, 1); }
+
+private:
+    std::span<Vec3> row(int depth, int which) {
+        return std::span<Vec3>(buf_).subspan(static_cast<size_t>(3 * depth + which) * n_, n_);
+    }
+    int n_;
+    std::vector<Vec3> buf_;
+};
+
+/// Emits the start of every accepted piece of `c` on [t0, t1] of segment k, in order.
+/// `at_cap` says what reaching max_depth means: accept the piece (the angle mode's cap), or a
+/// bug (the distance mode, whose guarantee would not hold).
+enum class AtCap { Accept, Fail };
+
+template <class Accept>
+void refine(Halver& h, std::span<const Vec3> c, int k, double t0, double t1, int depth, int max_depth, AtCap at_cap,
+            const Accept& accept, Polyline& out) {
+    const bool capped = depth >= max_depth;
+    if (capped && at_cap == AtCap::Fail && !accept(c))
+        throw std::logic_error("distance tessellation reached its depth cap without meeting the tolerance");
+    if (capped || accept(c)) {
+        emit(out, {c[0], start_tangent(c)}, k + t0);
+        return;
+    }
+    h.split(c, depth);
+    const double mid = 0.5 * (t0 + t1);
+    refine(h, h.left(depth), k, t0, mid, depth + 1, max_depth, at_cap, accept, out);
+    refine(h, h.right(depth), k, mid, t1, depth + 1, max_depth, at_cap, accept, out);
+}
+
+template <class Accept>
+Polyline adaptive(const BezierChain& chain, int max_depth, AtCap at_cap, const Accept& accept) {
+    require_segments(chain);
+    Polyline out;
+    Halver h(chain.degree + 1, max_depth);
+    for (int k = 0; k < chain.num_segments(); ++k) refine(h, chain.segment(k), k, 0.0, 1.0, 0, max_depth, at_cap, accept, out);
+    finish(chain, out);
+    return out;
+}
+
+/// Turning angle between consecutive control-polygon edges, skipping edges of zero length
+/// (a repeated control point has no direction; the turn is measured across it).
+double max_turning_angle(std::span<const Vec3> c) {
+    double worst = 0;
+    Vec3 prev = Vec3::Zero();
+    for (size_t i = 1; i < c.size(); ++i) {
+        const Vec3 e = c[i] - c[i - 1];
+        if (e.squaredNorm() == 0.0) continue;
+        if (prev.squaredNorm() > 0.0) worst = std::max(worst, std::atan2(prev.cross(e).norm(), prev.dot(e)));
+        prev = e;
+    }
+    return worst;
+}
+
+double flatness(std::span<const Vec3> c) {
+    double worst = 0;
+    for (size_t i = 1; i + 1 < c.size(); ++i) worst = std::max(worst, point_segment_distance(c[i], c.front(), c.back()));
+    return worst;
+}
+
+}  // namespace
+
+Polyline tessellate_uniform(const BezierChain& chain, int intervals) {
+    require_segments(chain);
+    if (intervals < 1) throw InputError("uniform tessellation needs at least 1 interval per segment, got " + std::to_string(intervals));
+    return tessellate_uniform(chain, std::vector<int>(chain.num_segments(), intervals));
+}
+
+Polyline tessellate_uniform(const BezierChain& chain, std::span<const int> intervals) {
+    require_segments(chain);
+    if (intervals.size() != static_cast<size_t>(chain.num_segments()))
+        throw InputError("uniform tessellation: " + std::to_string(intervals.size()) + " interval counts for " +
+                         std::to_string(chain.num_segments()) + " segments");
+    Polyline out;
+    size_t total = 1;
+    for (int n : intervals) total += std::max(n, 0);
+    out.positions.reserve(total);
+    out.tangents.reserve(total);
+    out.params.reserve(total);
+    for (int k = 0; k < chain.num_segments(); ++k) {
+        const int n = intervals[k];
+        if (n < 1) throw InputError("segment " + std::to_string(k) + ": at least 1 interval needed, got " + std::to_string(n));
+        for (int i = 0; i < n; ++i) {
+            const double t = static_cast<double>(i) / n;
+            emit(out, bezier_point_tangent(chain.segment(k), t), k + t);
+        }
+    }
+    finish(chain, out);
+    return out;
+}
+
+Polyline tessellate_angle(const BezierChain& chain, double angle_tol, int max_levels) {
+    if (!(angle_tol > 0.0 && angle_tol <= M_PI))
+        throw InputError("the angle tolerance must be in (0, 180] degrees, got " + std::to_string(angle_tol * 180.0 / M_PI));
+    if (max_levels < 0 || max_levels > 30) throw InputError("angle tessellation: max levels must be 0..30");
+    const double half = 0.5 * angle_tol;
+    return adaptive(chain, max_levels, AtCap::Accept, [half](std::span<const Vec3> c) { return max_turning_angle(c) <= half; });
+}
+
+Polyline tessellate_distance(const BezierChain& chain, double tol) {
+    require_segments(chain);
+    const double scale = bounding_box_diagonal(chain.points);
+    if (!std::isfinite(tol) || tol <= 0.0 || tol < kMinDistanceTolRelative * scale)
+        throw InputError("the distance tolerance must be finite and at least " + std::to_string(kMinDistanceTolRelative) +
+                         " x the curve's size (" + std::to_string(scale) + "), got " + std::to_string(tol));
+    // Each halving divides a smooth piece's flatness by about 4; 60 levels take any piece at
+    // or above the tolerance floor below it with a wide margin. Reaching the cap is a bug.
+    constexpr int kMaxDepth = 60;
+    return adaptive(chain, kMaxDepth, AtCap::Fail, [tol](std::span<const Vec3> c) { return flatness(c) <= tol; });
+}
+
+std::vector<int> wang_intervals(const BezierChain& chain, double tol) {
+    require_segments(chain);
+    if (!std::isfinite(tol) || tol <= 0.0) throw InputError("Wang's bound needs a positive tolerance, got " + std::to_string(tol));
+    const int d = chain.degree;
+    std::vector<int> n(chain.num_segments(), 1);
+    for (int k = 0; k < chain.num_segments(); ++k) {
+        const std::span<const Vec3> c = chain.segment(k);
+        double m = 0;
+        for (int i = 0; i + 2 <= d; ++i) m = std::max(m, (c[i + 2] - 2.0 * c[i + 1] + c[i]).norm());
+        const double bound = std::ceil(std::sqrt(d * (d - 1) * m / (8.0 * tol)));
+        n[k] = std::max(1, static_cast<int>(std::min(bound, 1e9)));
+    }
+    return n;
+}
+
+Deviation sampled_maximum(const std::function<double(double)>& f, double a, double b) {
+    const double step = (b - a) / (kDeviationSamples + 1);
+    Deviation best{-1.0, a};
+    int best_j = 1;
+    for (int j = 1; j <= kDeviationSamples; ++j) {
+        const double x = a + step * j, v = f(x);
+        if (v > best.max) best = {v, x}, best_j = j;
+    }
+    double lo = a + step * (best_j - 1), hi = a + step * (best_j + 1);
+    constexpr double kInvPhi = 0.6180339887498949;
+    double x1 = hi - kInvPhi * (hi - lo), x2 = lo + kInvPhi * (hi - lo);
+    double f1 = f(x1), f2 = f(x2);
+    for (int it = 0; it < 40; ++it) {
+        if (f1 > f2) {
+            hi = x2, x2 = x1, f2 = f1;
+            x1 = hi - kInvPhi * (hi - lo), f1 = f(x1);
+        } else {
+            lo = x1, x1 = x2, f1 = f2;
+            x2 = lo + kInvPhi * (hi - lo), f2 = f(x2);
+        }
+    }
+    if (f1 > best.max) best = {f1, x1};
+    if (f2 > best.max) best = {f2, x2};
+    return best;
+}
+
+Deviation chordal_deviation(const BezierChain& chain, const Polyline& poly) {
+    Deviation dev;
+    const int segments = chain.num_segments();
+    for (int i = 0; i + 1 < poly.size(); ++i) {
+        const int k = std::clamp(static_cast<int>(std::floor(poly.params[i])), 0, segments - 1);
+        const std::span<const Vec3> seg = chain.segment(k);
+        const Vec3 &a = poly.positions[i], &b = poly.positions[i + 1];
+        const Deviation d = sampled_maximum(
+            [&](double t) { return point_segment_distance(bezier_point(seg, t), a, b); }, poly.params[i] - k,
+            poly.params[i + 1] - k);
+        if (d.max > dev.max) dev = {d.max, k + d.at_param};
+    }
+    return dev;
+}
+
+}  // namespace crossdiv
