@@ -93,33 +93,27 @@ private:
     std::vector<Vec3> buf_;
 };
 
-/// Emits the start of every accepted piece of `c` on [t0, t1] of segment k, in order.
-/// `at_cap` says what reaching max_depth means: accept the piece (the angle mode's cap), or a
-/// bug (the distance mode, whose guarantee would not hold).
-enum class AtCap { Accept, Fail };
-
+/// The angle mode's recursion (the CS4620 seed's): emits the start of every accepted piece of
+/// `c` on [t0, t1] of segment k, in order; a piece at max_depth is accepted as it is.
 template <class Accept>
-void refine(Halver& h, std::span<const Vec3> c, int k, double t0, double t1, int depth, int max_depth, AtCap at_cap,
+void refine(Halver& h, std::span<const Vec3> c, int k, double t0, double t1, int depth, int max_depth,
             const Accept& accept, Polyline& out) {
-    const bool capped = depth >= max_depth;
-    if (capped && at_cap == AtCap::Fail && !accept(c))
-        throw std::logic_error("distance tessellation reached its depth cap without meeting the tolerance");
-    if (capped || accept(c)) {
+    if (depth >= max_depth || accept(c)) {
         emit(out, {c[0], start_tangent(c)}, k + t0);
         return;
     }
     h.split(c, depth);
     const double mid = 0.5 * (t0 + t1);
-    refine(h, h.left(depth), k, t0, mid, depth + 1, max_depth, at_cap, accept, out);
-    refine(h, h.right(depth), k, mid, t1, depth + 1, max_depth, at_cap, accept, out);
+    refine(h, h.left(depth), k, t0, mid, depth + 1, max_depth, accept, out);
+    refine(h, h.right(depth), k, mid, t1, depth + 1, max_depth, accept, out);
 }
 
 template <class Accept>
-Polyline adaptive(const BezierChain& chain, int max_depth, AtCap at_cap, const Accept& accept) {
+Polyline adaptive(const BezierChain& chain, int max_depth, const Accept& accept) {
     require_segments(chain);
     Polyline out;
     Halver h(chain.degree + 1, max_depth);
-    for (int k = 0; k < chain.num_segments(); ++k) refine(h, chain.segment(k), k, 0.0, 1.0, 0, max_depth, at_cap, accept, out);
+    for (int k = 0; k < chain.num_segments(); ++k) refine(h, chain.segment(k), k, 0.0, 1.0, 0, max_depth, accept, out);
     finish(chain, out);
     return out;
 }
@@ -138,10 +132,77 @@ double max_turning_angle(std::span<const Vec3> c) {
     return worst;
 }
 
+/// An upper bound of the Hausdorff distance between a piece and its chord: the smallest of
+/// three valid bounds. (a) The control points' largest distance from the chord segment (the
+/// piece lies in their convex hull). (b) (1 - 2^(1-d)) max_i |p_i - l_i|, l_i = p_0 +
+/// (i/d)(p_d - p_0): the piece minus the linearly parametrized chord is sum_i B_i(t) (p_i - l_i),
+/// and the interior Bernstein weights sum to at most 1 - 2^(1-d). (c) Wang's d (d - 1) / 8
+/// max_i |p_{i+2} - 2 p_{i+1} + p_i|, the one-step case of wang_intervals. (b) and (c) bound
+/// the distance to the parametrized chord, which bounds the Hausdorff distance by the
+/// projection argument in the header.
 double flatness(std::span<const Vec3> c) {
-    double worst = 0;
-    for (size_t i = 1; i + 1 < c.size(); ++i) worst = std::max(worst, point_segment_distance(c[i], c.front(), c.back()));
-    return worst;
+    const size_t d = c.size() - 1;
+    double hull = 0, parametric = 0, second = 0;
+    for (size_t i = 1; i < d; ++i) {
+        hull = std::max(hull, point_segment_distance(c[i], c.front(), c.back()));
+        const Vec3 l = c.front() + (static_cast<double>(i) / d) * (c.back() - c.front());
+        parametric = std::max(parametric, (c[i] - l).norm());
+        second = std::max(second, (c[i + 1] - 2.0 * c[i] + c[i - 1]).norm());
+    }
+    return std::min({hull, (1.0 - std::ldexp(1.0, 1 - static_cast<int>(d))) * parametric, d * (d - 1) / 8.0 * second});
+}
+
+/// Scratch rows for split_equal, reused across calls so splitting never allocates once they
+/// have grown to the curve's size.
+struct SplitScratch {
+    std::vector<Vec3> rest, work;
+};
+
+/// Splits `c` into k equal parameter pieces appended to `dest` (k (d + 1) points): peel
+/// [0, 1/k] off the rest, then 1/(k-1) of what remains, and so on (de Casteljau each time).
+void split_equal(std::span<const Vec3> c, int k, std::vector<Vec3>& dest, SplitScratch& s) {
+    const size_t n = c.size();
+    s.rest.assign(c.begin(), c.end());
+    s.work.resize(n);
+    for (int piece = 0; piece < k - 1; ++piece) {
+        const double t = 1.0 / (k - piece);
+        std::copy(s.rest.begin(), s.rest.end(), s.work.begin());
+        for (size_t lvl = 0; lvl < n; ++lvl) {
+            dest.push_back(s.work[0]);
+            s.rest[n - 1 - lvl] = s.work[n - 1 - lvl];
+            for (size_t i = 0; i + 1 < n - lvl; ++i) s.work[i] = (1.0 - t) * s.work[i] + t * s.work[i + 1];
+        }
+    }
+    dest.insert(dest.end(), s.rest.begin(), s.rest.end());
+}
+
+/// The distance mode on one piece: accept it when flat enough, else split it into
+/// k = ceil(sqrt(flatness / tol)) equal pieces (flatness falls as 1/k^2 under splitting, so
+/// one split usually suffices; halving would overshoot to the next power of two) and treat
+/// each the same way. `rows[depth]` holds the pieces of a depth, reused across calls.
+void refine_distance(std::span<const Vec3> c, int segment, double t0, double t1, double tol, int depth,
+                     std::vector<std::vector<Vec3>>& rows, SplitScratch& scratch, Polyline& out) {
+    const double f = flatness(c);
+    if (f <= tol) {
+        emit(out, {c[0], start_tangent(c)}, segment + t0);
+        return;
+    }
+    // 40 levels of at least halving take any piece at or above the tolerance floor below it
+    // with a wide margin; reaching the cap is a bug, not an input problem.
+    if (depth >= 40) throw std::logic_error("distance tessellation reached its depth cap without meeting the tolerance");
+    constexpr int kMaxPieces = 64;  // bounds one level's buffer; deeper levels continue
+    const int k = static_cast<int>(std::clamp(std::ceil(std::sqrt(f / tol)), 2.0, static_cast<double>(kMaxPieces)));
+    if (rows.size() <= static_cast<size_t>(depth)) rows.resize(depth + 1);
+    std::vector<Vec3>& row = rows[depth];
+    row.clear();
+    split_equal(c, k, row, scratch);
+    const size_t n = c.size();
+    for (int i = 0; i < k; ++i) {
+        // Each child reads its own points; deeper levels write only to rows[depth + 1 ...].
+        const std::span<const Vec3> child(rows[depth].data() + i * n, n);
+        refine_distance(child, segment, t0 + (t1 - t0) * i / k, i + 1 == k ? t1 : t0 + (t1 - t0) * (i + 1) / k, tol,
+                        depth + 1, rows, scratch, out);
+    }
 }
 
 }  // namespace
@@ -180,7 +241,7 @@ Polyline tessellate_angle(const BezierChain& chain, double angle_tol, int max_le
         throw InputError("the angle tolerance must be in (0, 180] degrees, got " + std::to_string(angle_tol * 180.0 / M_PI));
     if (max_levels < 0 || max_levels > 30) throw InputError("angle tessellation: max levels must be 0..30");
     const double half = 0.5 * angle_tol;
-    return adaptive(chain, max_levels, AtCap::Accept, [half](std::span<const Vec3> c) { return max_turning_angle(c) <= half; });
+    return adaptive(chain, max_levels, [half](std::span<const Vec3> c) { return max_turning_angle(c) <= half; });
 }
 
 Polyline tessellate_distance(const BezierChain& chain, double tol) {
@@ -189,10 +250,12 @@ Polyline tessellate_distance(const BezierChain& chain, double tol) {
     if (!std::isfinite(tol) || tol <= 0.0 || tol < kMinDistanceTolRelative * scale)
         throw InputError("the distance tolerance must be finite and at least " + std::to_string(kMinDistanceTolRelative) +
                          " x the curve's size (" + std::to_string(scale) + "), got " + std::to_string(tol));
-    // Each halving divides a smooth piece's flatness by about 4; 60 levels take any piece at
-    // or above the tolerance floor below it with a wide margin. Reaching the cap is a bug.
-    constexpr int kMaxDepth = 60;
-    return adaptive(chain, kMaxDepth, AtCap::Fail, [tol](std::span<const Vec3> c) { return flatness(c) <= tol; });
+    Polyline out;
+    std::vector<std::vector<Vec3>> rows;
+    SplitScratch scratch;
+    for (int k = 0; k < chain.num_segments(); ++k) refine_distance(chain.segment(k), k, 0.0, 1.0, tol, 0, rows, scratch, out);
+    finish(chain, out);
+    return out;
 }
 
 std::vector<int> wang_intervals(const BezierChain& chain, double tol) {

@@ -58,12 +58,14 @@ Polyline tessellate_angle(const BezierChain& chain, double angle_tol, int max_le
 /// recursion would split to the bottom of the parameter's precision.
 inline constexpr double kMinDistanceTolRelative = 1e-12;
 
-/// Adaptive by distance, with a guarantee: a piece is one edge when every control point lies
-/// within `tol` of its chord (the segment between its end points). The piece lies in its
-/// control points' convex hull, so within tol of the chord; and since it runs continuously
+/// Adaptive by distance, with a guarantee: a piece is one edge when an upper bound of its
+/// distance to its chord (the smaller of: the control points' largest distance from the
+/// chord, as the piece lies in their convex hull; and (1 - 2^(1-d)) max_i |p_i - l_i| against
+/// the uniformly parametrized chord) is at most `tol`. Since the piece also runs continuously
 /// from one end of the chord to the other, every chord point has a curve point within tol
-/// (project the curve onto the chord). So the Hausdorff distance between curve and polyline
-/// is at most tol. Otherwise the piece is split at t = 1/2.
+/// (project the curve onto the chord): the Hausdorff distance between curve and polyline is
+/// at most tol. Otherwise the piece is split into k = ceil(sqrt(bound / tol)) equal pieces
+/// (the bound falls as 1/k^2), and each is treated the same way.
 /// @throws InputError if tol is not finite or below kMinDistanceTolRelative of the curve.
 Polyline tessellate_distance(const BezierChain& chain, double tol);
 

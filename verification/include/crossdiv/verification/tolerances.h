@@ -20,3 +20,25 @@ inline constexpr double kAgreementRelative = 1e-12;
 inline constexpr double kRoundingUlps = 16;
 
 }  // namespace crossdiv::tolerances
+
+namespace crossdiv::tolerances {
+
+/// Two evaluations of the same polynomial curve (de Casteljau, the Bernstein sum, Eigen's
+/// Cox-de Boor, the seed's matrix form) agree when they differ by at most
+/// kCurveRoundingUlps * (d + 1) * eps * S, S the bounding-box diagonal of the control points,
+/// d the degree: each algorithm forms convex combinations of d + 1 points through up to d
+/// levels, so each rounds by a few ulps of S per level. Derivatives carry the factor d
+/// (first) and d (d - 1) (second) of their formulas. 64 leaves a wide margin over what is
+/// measured (reported in results.json) and is 1e8 times below a wrong weight or basis.
+inline constexpr double kCurveRoundingUlps = 64;
+
+/// Frames are orthonormal to this (absolute): each is built by a cross product and one
+/// normalization of unit vectors, a few ulps of 1.
+inline constexpr double kFrameOrthonormality = 1e-13;
+
+/// The order of convergence the double-reflection frame must show on the helix as the step
+/// halves: its global error is O(h^4) (Wang et al. 2008, sec. 4); 3.5 tolerates the
+/// pre-asymptotic steps of the coarsest sampling.
+inline constexpr double kDoubleReflectionMinOrder = 3.5;
+
+}  // namespace crossdiv::tolerances

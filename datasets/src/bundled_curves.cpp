@@ -1,0 +1,74 @@
+#include "crossdiv/datasets/bundled_curves.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <sstream>
+
+#include "crossdiv/error.h"
+#include "crossdiv/io/curve_io.h"
+
+namespace crossdiv::datasets {
+
+const std::vector<BundledCurve>& bundled_curves() {
+    static const std::vector<BundledCurve> all{
+        {"s-curve", "piecewise cubic Bezier, C1 joint and a C0 corner", "swp",
+         "bez2 s 24 10\n[0 0] [1 2] [3 2] [4 0]\n[5 -2] [7 -2] [8 0]\n[8 1] [9 2] [10 2]\n"},
+        {"cusp", "cubic Bezier with a cusp (derivative zero at t = 1/2)", "swp",
+         "bez2 cusp 32 4\n[0 0] [1 1] [0 1] [1 0]\n"},
+        {"flower", "closed uniform B-spline (last three points repeat the first three)", "swp",
+         "bsp2 flower 12 11\n[0 -0.25] [0.75 -0.75] [0.25 0] [0.75 0.75] [0 0.25] [-0.75 0.75]\n"
+         "[-0.25 0] [-0.75 -0.75] [0 -0.25] [0.75 -0.75] [0.25 0]\n"},
+        {"catmull-rom-open", "open Catmull-Rom through five points (our crm2 record)", "swp",
+         "crm2 path 16 7\n[-1 0] [0 0] [1 1] [2 -1] [3 0.5] [4 0] [5 0]\n"},
+        {"catmull-rom-star", "closed Catmull-Rom star (our crc2 record)", "swp",
+         "crc2 star 16 10\n[0 3] [0.7 1] [2.9 0.9] [1.1 -0.4] [1.8 -2.4] [0 -1.2] [-1.8 -2.4] [-1.1 -0.4] "
+         "[-2.9 0.9] [-0.7 1]\n"},
+        {"space-bspline", "closed cubic B-spline in space (the course's weird.swp sweep)", "swp",
+         "bsp3 knot 16 11\n[-1.427273 0.424545 0.929339] [-1.767273 -1.585455 0.371157] [0.912727 -1.585455 -0.278843]\n"
+         "[1.922727 -0.255455 -0.080661] [1.582727 1.374545 -1.050661] [0.912727 2.034545 -0.760661]\n"
+         "[0.242727 2.094545 -0.410661] [-1.097273 1.444545 0.259339] [-1.427273 0.424545 0.929339]\n"
+         "[-1.767273 -1.585455 0.371157] [0.912727 -1.585455 -0.278843]\n"},
+        {"helix", "three turns of a helix (our helx record)", "swp", "helx spring 96 1 0.5 3\n"},
+        {"trefoil", "trefoil knot (our trfl record)", "swp", "trfl knot 120 1\n"},
+        {"circles", "the course's circles.swp: two circles", "swp", "circ . 30 1\ncirc . 50 2\n"},
+        {"degree-9", "one Bezier curve of degree 9 (BZC)", "bzc",
+         "10\n0 0  1 2  2 -1  3 3  4 -2  5 4  6 -1  7 2  8 0  9 1\n"},
+    };
+    return all;
+}
+
+CurveFile bundled_curve_file(const std::string& name) {
+    std::string known;
+    for (const BundledCurve& c : bundled_curves()) {
+        if (c.name == name) {
+            std::istringstream in(c.text);
+            return c.format == "bzc" ? read_bzc(in, "curve:" + name) : read_swp(in, "curve:" + name);
+        }
+        known += (known.empty() ? "" : ", ") + c.name;
+    }
+    throw InputError("unknown bundled curve '" + name + "' (known: " + known + ")");
+}
+
+std::vector<std::string> course_curve_files() {
+    namespace fs = std::filesystem;
+    std::vector<std::string> out;
+    auto collect = [&](const fs::path& dir, const char* ext, bool recursive) {
+        if (!fs::is_directory(dir)) return;
+        std::vector<std::string> found;
+        auto take = [&](const fs::directory_entry& e) {
+            if (e.is_regular_file() && e.path().extension() == ext) found.push_back(e.path().string());
+        };
+        if (recursive)
+            for (const auto& e : fs::recursive_directory_iterator(dir)) take(e);
+        else
+            for (const auto& e : fs::directory_iterator(dir)) take(e);
+        std::sort(found.begin(), found.end());
+        out.insert(out.end(), found.begin(), found.end());
+    };
+    const fs::path data(CROSSDIV_SHARED_DATA);
+    collect(data / "c3100" / "swp", ".swp", true);
+    collect(data / "meshedit" / "bzc", ".bzc", false);
+    return out;
+}
+
+}  // namespace crossdiv::datasets

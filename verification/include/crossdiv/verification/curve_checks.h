@@ -1,0 +1,89 @@
+#pragma once
+/// @file
+/// The curve checks: each spline of a curve file against Eigen's Splines and against a second
+/// algorithm of our own, the analytic properties it must have, continuity at its joints, its
+/// frames, and the quality of each tessellation mode; plus the synthetic studies (degrees
+/// 1..20, the helix frame convergence). Everything measured lands in results.json through
+/// to_json; the suite runs these as its `curves` operation.
+
+#include <nlohmann/json.hpp>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "crossdiv/curves/curve_record.h"
+
+namespace crossdiv::verification {
+
+/// One measured check: `measured` must not exceed `tolerance` (both in the unit `unit`).
+struct CurveCheck {
+    std::string curve;      ///< the curve's label, or the study's name
+    std::string check;      ///< what property: "position", "d1", "continuity-c1", ...
+    std::string reference;  ///< what it is compared with: "eigen", "bernstein", "matrix-form", "exact", "analytic"
+    double measured = 0;
+    double tolerance = 0;
+    std::string unit;       ///< "rel" (of the control points' diagonal), "abs", "rad", "order", "points"
+    std::string note;       ///< one line: how it was measured
+    bool pass() const { return measured <= tolerance; }
+};
+
+/// One row of the tessellation study: for a distance tolerance, the edge count and measured
+/// deviation of each mode (uniform: the fewest equal steps per segment that meet tol, found
+/// by search; angle: the largest angle tolerance that meets it; distance: the adaptive mode;
+/// wang: the per-segment counts of Wang's formula).
+struct TessellationRow {
+    std::string curve;
+    double tol = 0;  ///< absolute
+    int uniform_edges = 0, angle_edges = 0, distance_edges = 0, wang_edges = 0;
+    double uniform_dev = 0, angle_dev = 0, distance_dev = 0, wang_dev = 0;
+    int uniform_steps = 0;       ///< per segment
+    double angle_tol_deg = 0;    ///< the angle tolerance found; 0 when the 10-level cap stops it first
+    bool angle_reached = false;
+};
+
+/// The study for one spline at each tolerance (absolute). Primitives are not studied.
+std::vector<TessellationRow> tessellation_study(const CurveRecord& record, const std::string& label,
+                                                std::span<const double> tols);
+
+/// Frame error against the exact rotation-minimizing frame of a helix.
+struct HelixFrameRow {
+    int steps = 0;
+    double h = 0;  ///< parameter step
+    double recursive_error = 0, rmf_error = 0;  ///< max angle (rad) between computed and exact N
+};
+struct HelixFrameStudy {
+    std::vector<HelixFrameRow> rows;
+    double recursive_order = 0, rmf_order = 0;  ///< least-squares slope of log error vs log h
+};
+/// Helix (cos s, sin s, b s), b = 1 / (2 pi), two turns, at 16 .. 1024 steps. The exact RMF
+/// normal is the Frenet normal rotated by -tau * arc length (tau = b / (1 + b^2)) toward B.
+HelixFrameStudy helix_frame_study();
+
+/// All checks of one input.
+struct CurveReport {
+    std::string input;
+    std::vector<std::string> curves;  ///< labels, in file order
+    std::vector<CurveCheck> checks;
+    nlohmann::json tables = nlohmann::json::object();  ///< "tessellation", "continuity", "degrees", "frames", "closure"
+};
+
+/// Checks every curve of a file.
+CurveReport check_curve_file(const CurveFile& file, const std::string& input);
+
+/// The synthetic studies: de Casteljau vs Bernstein for degrees 1..20, vs Eigen for degrees
+/// 1..10 (position, first and second derivative), endpoint interpolation and partition of
+/// unity, and the helix frame convergence.
+CurveReport check_synthetic();
+
+/// {"input", "scheme": "curves", "curves", "runs": [...], "tables"}: each check as a run with
+/// "verdict" agree/diverge (a failed check is divergence class "unexplained").
+nlohmann::json to_json(const CurveReport& report);
+
+/// Curve input names: a .swp or .bzc file, `curve:NAME` (bundled), or the collections
+/// `curves:bundled`, `curves:course` (../shared/data), `curves:synthetic`.
+bool is_curve_input(const std::string& spec);
+std::vector<std::string> expand_curve_inputs(const std::vector<std::string>& specs);
+/// @throws InputError / ParseError naming file and line. Not for curves:synthetic.
+CurveFile load_curve_input(const std::string& spec);
+
+}  // namespace crossdiv::verification

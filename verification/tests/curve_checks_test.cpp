@@ -1,0 +1,63 @@
+// The curve checks: every check passes on the bundled curves and the course files (where the
+// data is present), the synthetic studies reach their bounds, and a wrong curve is caught.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "crossdiv/datasets/bundled_curves.h"
+#include "crossdiv/error.h"
+#include "crossdiv/verification/curve_checks.h"
+#include "crossdiv/verification/tolerances.h"
+
+using namespace crossdiv;
+using namespace crossdiv::verification;
+
+namespace {
+void expect_all_pass(const CurveReport& r) {
+    ASSERT_FALSE(r.checks.empty()) << r.input;
+    for (const CurveCheck& c : r.checks)
+        EXPECT_TRUE(c.pass()) << r.input << " " << c.curve << " " << c.check << " vs " << c.reference << ": " << c.measured
+                              << " > " << c.tolerance << " (" << c.note << ")";
+}
+}  // namespace
+
+TEST(CurveChecks, BundledCurvesPassEveryCheck) {
+    for (const auto& b : datasets::bundled_curves()) expect_all_pass(check_curve_file(datasets::bundled_curve_file(b.name), b.name));
+}
+
+TEST(CurveChecks, CourseCurveFilesReadAndPass) {
+    const std::vector<std::string> files = datasets::course_curve_files();
+    if (files.empty()) GTEST_SKIP() << "../shared/data is not beside the checkout";
+    EXPECT_GE(files.size(), 13u);
+    for (const std::string& f : files) expect_all_pass(check_curve_file(load_curve_input(f), f));
+}
+
+TEST(CurveChecks, SyntheticStudiesMeetTheirBounds) {
+    const CurveReport r = check_synthetic();
+    expect_all_pass(r);
+    const auto& frames = r.tables["frames"];
+    EXPECT_GE(frames["rmf_order"].get<double>(), tolerances::kDoubleReflectionMinOrder);
+    // The seed's recursive update is a projection: far lower order than double reflection.
+    EXPECT_LT(frames["recursive_order"].get<double>(), 2.5);
+    EXPECT_EQ(r.tables["degrees"].size(), 20u);
+}
+
+TEST(CurveChecks, AWrongControlPointCountIsNamed) {
+    EXPECT_THROW(expand_curve_inputs({"curves:nothing"}), InputError);
+    EXPECT_THROW(load_curve_input("curve:no-such-curve"), InputError);
+}
+
+TEST(CurveChecks, TessellationStudyOrdersTheModes) {
+    // On the S curve every mode's measured deviation meets the tolerance; the counts are what
+    // the benchmark reports (Wang's per-segment counts are sufficient, not minimal).
+    const CurveFile f = datasets::bundled_curve_file("s-curve");
+    const double tols[] = {1e-2, 1e-3, 1e-4};
+    for (const TessellationRow& row : tessellation_study(f.curves[0], "s", tols)) {
+        EXPECT_LE(row.uniform_dev, row.tol);
+        EXPECT_LE(row.distance_dev, row.tol);
+        EXPECT_LE(row.wang_dev, row.tol);
+        EXPECT_GE(row.wang_edges, row.uniform_edges / 3);  // per segment vs one count for all three
+        if (row.angle_reached) EXPECT_LE(row.angle_dev, row.tol);
+    }
+}
