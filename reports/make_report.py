@@ -222,6 +222,103 @@ def timing(bench, figdir):
     return path, rows
 
 
+def curve_section(curve_cases, bench, figdir):
+    """The curve checks: (markdown lines, html parts). Empty when the suite ran no curves."""
+    if not curve_cases and not (bench and bench.get("curves")):
+        return [], []
+    md, body = ["", "## Curves", ""], ["<h2>Curves</h2>"]
+    rows = []
+    for c in curve_cases:
+        runs = c["runs"]
+        failed = [r for r in runs if r["verdict"] != "agree"]
+        worst = max(runs, key=lambda r: (r["measured"] / r["tolerance"]) if r["tolerance"] > 0 else
+                    (0 if r["measured"] == 0 else float("inf")), default=None)
+        eigen = max((r["measured"] for r in runs if r["reference"] == "eigen"), default=None)
+        rows.append((short_input(c["input"]), len(c.get("curves", [])), len(runs), len(failed), fmt(eigen),
+                     f"{worst['curve']} {worst['check']} ({fmt(worst['measured'])} of {fmt(worst['tolerance'])} "
+                     f"{worst['unit']})" if worst else c.get("core_error", "-")))
+    header = ["input", "curves", "checks", "failed", "Eigen max rel", "closest to its tolerance"]
+    if rows:
+        md += ["Each check is measured <= tolerance (tolerances.h names and justifies each); Eigen is "
+               "`unsupported/Eigen/Splines` (Cox-de Boor), compared in position, first and second derivative.", "",
+               "| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+        md += ["| " + " | ".join(str(v) for v in r) + " |" for r in rows]
+        body.append(table_html(header, rows))
+    for c in curve_cases:
+        t = c.get("tables", {})
+        if "frames" in t:
+            fr = t["frames"]
+            fig, ax = plt.subplots(figsize=(5, 3.6))
+            h = [r["h"] for r in fr["rows"]]
+            ax.loglog(h, [r["recursive_error_rad"] for r in fr["rows"]], marker="o",
+                      label=f"recursive (seed), order {fr['recursive_order']:.2f}")
+            ax.loglog(h, [r["rmf_error_rad"] for r in fr["rows"]], marker="s",
+                      label=f"double reflection, order {fr['rmf_order']:.2f}")
+            ax.set_xlabel("parameter step h")
+            ax.set_ylabel("max angle to exact RMF (rad)")
+            ax.set_title("Helix frames")
+            ax.legend(fontsize=8)
+            save(fig, figdir, "curve_frames.png")
+            md += ["", f"Frames on a helix ({fr['curve']}) against its exact rotation-minimizing frame:", "",
+                   "![frames](figures/curve_frames.png)", "", "| steps | h | recursive (rad) | double reflection (rad) |",
+                   "|---|---|---|---|"]
+            md += [f"| {r['steps']} | {fmt(r['h'])} | {fmt(r['recursive_error_rad'])} | {fmt(r['rmf_error_rad'])} |"
+                   for r in fr["rows"]]
+            body += ["<img src='figures/curve_frames.png'>",
+                     table_html(["steps", "h", "recursive (rad)", "double reflection (rad)"],
+                                [(r["steps"], fmt(r["h"]), fmt(r["recursive_error_rad"]), fmt(r["rmf_error_rad"]))
+                                 for r in fr["rows"]])]
+        if "degrees" in t:
+            d = t["degrees"]
+            fig, ax = plt.subplots(figsize=(5, 3.6))
+            deg = [r["degree"] for r in d]
+            ax.semilogy(deg, [max(r.get("bernstein-sum", 0), 1e-18) for r in d], marker="o", label="vs Bernstein sum")
+            ed = [r for r in d if "eigen_position" in r]
+            for key, name in (("eigen_position", "vs Eigen, position"), ("eigen_d1", "vs Eigen, d1"),
+                              ("eigen_d2", "vs Eigen, d2")):
+                ax.semilogy([r["degree"] for r in ed], [max(r[key], 1e-18) for r in ed], marker=".", label=name)
+            ax.semilogy(deg, [r["bound_position"] for r in d], "k--", label="position tolerance")
+            ax.set_xlabel("degree")
+            ax.set_ylabel("max error / control diagonal")
+            ax.set_title("de Casteljau against two other algorithms")
+            ax.legend(fontsize=7)
+            save(fig, figdir, "curve_degrees.png")
+            md += ["", "![degrees](figures/curve_degrees.png)"]
+            body.append("<img src='figures/curve_degrees.png'>")
+    tess = [row for c in curve_cases for row in c.get("tables", {}).get("tessellation", [])]
+    bench_rows = (bench or {}).get("curves", [])
+    if bench_rows:
+        tess = bench_rows
+    if tess:
+        header = ["curve", "tol", "uniform edges (dev)", "angle edges (dev, tol deg)", "distance edges (dev)",
+                  "Wang edges (dev)"]
+        rows = [(r["curve"], fmt(r["tol"]), f"{r['uniform_edges']} ({fmt(r['uniform_dev'])})",
+                 f"{r['angle_edges']} ({fmt(r['angle_dev'])}, {fmt(r['angle_tol_deg'])})" if r["angle_reached"]
+                 else f"{r['angle_edges']} (cap: {fmt(r['angle_dev'])})",
+                 f"{r['distance_edges']} ({fmt(r['distance_dev'])})", f"{r['wang_edges']} ({fmt(r['wang_dev'])})")
+                for r in tess]
+        md += ["", "Tessellation: edges each mode needs for a distance tolerance, with the measured maximum deviation "
+               "(uniform: fewest equal steps per segment found by measuring; angle: largest angle tolerance that "
+               "meets it; distance: the guaranteed adaptive mode; Wang: the guaranteed uniform count per segment)"
+               + (" from `crossdiv bench`" if bench_rows else "") + ":", "",
+               "| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+        md += ["| " + " | ".join(str(v) for v in r) + " |" for r in rows]
+        body.append(table_html(header, rows))
+    closure = [row for c in curve_cases for row in c.get("tables", {}).get("closure", [])]
+    if closure:
+        md += ["", "Frame mismatch after one lap of each closed curve (before and after distributing it):", "",
+               "| curve | method | mismatch (deg) | after (deg) |", "|---|---|---|---|"]
+        md += [f"| {r['curve']} | {r['method']} | {fmt(r['mismatch_deg'])} | {fmt(r['after_distribution_deg'])} |"
+               for r in closure]
+    return md, body
+
+
+def table_html(header, rows):
+    out = ["<table><tr>" + "".join(f"<th>{html.escape(h)}</th>" for h in header) + "</tr>"]
+    out += ["<tr>" + "".join(f"<td>{html.escape(str(v))}</td>" for v in row) + "</tr>" for row in rows]
+    return "\n".join(out + ["</table>"])
+
+
 def main(folder):
     with open(os.path.join(folder, "results.json")) as f:
         results = json.load(f)
@@ -234,9 +331,17 @@ def main(folder):
 
     if not results["cases"]:
         sys.exit(f"{folder}/results.json holds no cases: nothing to report")
-    figures = {"summary": summary_matrix(results, figdir), "histogram": error_histogram(results, figdir),
-               "convergence": convergence(results, figdir)}
-    pictures = error_pictures(results, folder, figdir)
+    # Curve records have their own section; every mesh figure and table below reads `results`
+    # with the mesh cases only.
+    curve_cases = [c for c in results["cases"] if c.get("scheme") == "curves"]
+    results = dict(results, cases=[c for c in results["cases"] if c.get("scheme") != "curves"])
+    curve_failures = [(c, r) for c in curve_cases for r in c["runs"] if r["verdict"] != "agree"]
+    has_mesh = bool(results["cases"])
+    if has_mesh:
+        summary_matrix(results, figdir)
+        error_histogram(results, figdir)
+        convergence(results, figdir)
+    pictures = error_pictures(results, folder, figdir) if has_mesh else []
     timing_fig, timing_rows = timing(bench, figdir) if bench else (None, [])
 
     # --- The divergence catalogue: every run that is not plain agreement. ---
@@ -261,7 +366,18 @@ def main(folder):
             catalogue.append({"case": c["id"], "reference": "core", "outcome": outcome(c, {}),
                               "class": "ours-failed" if c.get("ours_failed") else "ours-rejected", "max_rel": None,
                               "worst": "-", "values": "-", "explanation": c.get("core_error", "")})
+    for c, r in curve_failures:
+        catalogue.append({"case": c["id"], "reference": r["reference"], "outcome": outcome(c, r),
+                          "class": r.get("divergence_class", "unexplained"), "max_rel": r["measured"], "worst": r["curve"],
+                          "values": f"{r['check']}: {fmt(r['measured'])} > {fmt(r['tolerance'])} {r['unit']}",
+                          "explanation": r.get("explanation", "")})
+    for c in curve_cases:
+        if not c["runs"]:
+            catalogue.append({"case": c["id"], "reference": "core", "outcome": outcome(c, {}),
+                              "class": "ours-failed" if c.get("ours_failed") else "ours-rejected", "max_rel": None,
+                              "worst": "-", "values": "-", "explanation": c.get("core_error", "")})
     class_counts = Counter((row["class"], row["reference"]) for row in catalogue)
+    curve_md, curve_html = curve_section(curve_cases, bench, figdir)
 
     s = results["summary"]
     refs = ", ".join(f"{r['name']} ({r['version']})" for r in results.get("references", []))
@@ -273,8 +389,10 @@ def main(folder):
           "## Outcomes", "", "| outcome | runs |", "|---|---|"]
     md += [f"| {k} | {v} |" for k, v in sorted(s["outcomes"].items())]
     md += ["", "Failures (JUnit) are `ours-failed` and `diverge (unexplained)`; every other outcome is a measured, "
-           "classified difference.", "", "## Summary matrix", "", "![summary](figures/summary_matrix.png)", "",
-           "## Divergence catalogue", "", "Classes by reference:", "", "| class | reference | runs |", "|---|---|---|"]
+           "classified difference.", ""]
+    if has_mesh:
+        md += ["## Summary matrix", "", "![summary](figures/summary_matrix.png)", ""]
+    md += ["## Divergence catalogue", "", "Classes by reference:", "", "| class | reference | runs |", "|---|---|---|"]
     md += [f"| {cls} | {ref} | {n} |" for (cls, ref), n in sorted(class_counts.items())]
     md += ["", "Every run that is not agreement, with the case's worst vertex (the vertex where some reference "
            "parts most from core) and each implementation's value there:", "",
@@ -282,9 +400,11 @@ def main(folder):
            "|---|---|---|---|---|---|---|"]
     md += [f"| {r['case']} | {r['reference']} | {r['outcome']} | {fmt(r['max_rel'])} | {r['worst']} | "
            f"{r['values']} | {r['explanation'].replace('|', '/')} |" for r in catalogue]
-    md += ["", "## Error by level and its distribution", "", "![convergence](figures/convergence.png)", "",
-           "![histogram](figures/error_histogram.png)", "", "## Where surfaces part", ""]
-    md += [f"![{n}](figures/{n})" for n, _, _ in pictures] or ["No divergence small enough to draw."]
+    if has_mesh:
+        md += ["", "## Error by level and its distribution", "", "![convergence](figures/convergence.png)", "",
+               "![histogram](figures/error_histogram.png)", "", "## Where surfaces part", ""]
+        md += [f"![{n}](figures/{n})" for n, _, _ in pictures] or ["No divergence small enough to draw."]
+    md += curve_md
     md += ["", "## Timing", ""]
     if timing_fig:
         md += [f"`crossdiv bench`: median of {bench.get('repeats', '?')} runs, single thread, ratio = time / core "
@@ -315,7 +435,7 @@ def main(folder):
             f"<p>{s['cases']} cases, {s['runs']} reference runs, {s['failures']} failure(s). References: "
             f"{html.escape(refs)}.</p>",
             "<h2>Outcomes</h2>", table(["outcome", "runs"], sorted(s["outcomes"].items())),
-            "<h2>Summary matrix</h2><img src='figures/summary_matrix.png'>",
+            "<h2>Summary matrix</h2><img src='figures/summary_matrix.png'>" if has_mesh else "",
             "<h2>Divergence catalogue</h2>",
             table(["class", "reference", "runs"], [(c, r, n) for (c, r), n in sorted(class_counts.items())]),
             "<p></p>",
@@ -323,8 +443,9 @@ def main(folder):
                   [(r["case"], r["reference"], r["outcome"], fmt(r["max_rel"]), r["worst"], r["values"],
                     r["explanation"]) for r in catalogue]),
             "<h2>Error by level and its distribution</h2><img src='figures/convergence.png'>"
-            "<img src='figures/error_histogram.png'>", "<h2>Where surfaces part</h2>"]
+            "<img src='figures/error_histogram.png'><h2>Where surfaces part</h2>" if has_mesh else ""]
     body += [f"<img src='figures/{n}'>" for n, _, _ in pictures]
+    body += curve_html
     body += ["<h2>Timing</h2>"]
     if timing_fig:
         body += ["<img src='figures/timing.png'>",

@@ -21,6 +21,10 @@
 #include "crossdiv/verification/references.h"
 #include "crossdiv/verification/shrink.h"
 #include "crossdiv/verification/suite.h"
+#ifdef CROSSDIV_HAS_EIGEN_SPLINES
+#include "crossdiv/adapters/eigen_splines.h"
+#endif
+#include "curve_commands.h"
 
 namespace {
 
@@ -234,12 +238,17 @@ int run_suite(const std::string& manifest_path, const std::string& out, int jobs
     });
     nlohmann::json refs = nlohmann::json::array();
     for (const LoopReference& r : loop_references()) refs.push_back({{"name", r.name}, {"version", r.version}});
+    nlohmann::json curve_refs = nlohmann::json::array();
+#ifdef CROSSDIV_HAS_EIGEN_SPLINES
+    curve_refs.push_back({{"name", "eigen"}, {"version", adapters::eigen_splines::version()}});
+#endif
     const nlohmann::json header = {
         {"tool", "crossdiv suite"}, {"schema_version", 2}, {"suite", manifest.name}, {"manifest", manifest.file},
         {"shard", fmt::format("{}/{}", shard_i, shard_n)}, {"jobs_total", all.size()}, {"jobs_run", mine.size()},
-        {"workers", jobs}, {"references", refs},
+        {"workers", jobs}, {"references", refs}, {"curve_references", curve_refs},
         {"seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()}};
     const nlohmann::json summary = write_suite_outputs(out, header, records);
+    cli::print_curve_tables(records);
     fmt::print("results: {0}/results.json, {0}/results.csv, {0}/junit.xml\n", out);
     print_outcome_summary(summary);
     const int report_status = finish_outputs(out, report);
@@ -326,10 +335,12 @@ int run_bench_command(const std::string& json_path, const std::string& out_dir, 
                    ratio, fastest->impl, core.input, core.output_faces, core.peak_rss_mb,
                    ratio >= kBenchGoalRatio ? "met" : "NOT met", kBenchGoalRatio);
     }
+    const nlohmann::json curves = cli::run_curve_bench(repeats);
     nlohmann::json recs = nlohmann::json::array();
     for (const BenchRecord& r : records) recs.push_back(to_json(r));
     const nlohmann::json doc = {{"tool", "crossdiv bench"}, {"repeats", repeats}, {"memory", cold ? "cold" : "warm"},
-                                {"goal", goal}, {"records", recs},
+                                {"goal", goal}, {"records", recs}, {"curves", curves["tessellation"]},
+                                {"curve_timing", curves["timing"]},
                                 {"note", "references timed through their native refinement (loop_native), output kept "
                                          "in the library's own structures"}};
     std::vector<std::string> paths;
@@ -428,6 +439,13 @@ int main(int argc, char** argv) {
     bench->add_flag("--quick", bench_quick, "Two mesh sizes only (320 and 20000 faces)");
     bench->add_flag("--cold", bench_cold, "Return freed memory to the kernel between repeats (page faults counted)");
 
+    cli::TessellateArgs tess_args;
+    auto* tess = app.add_subcommand("tessellate", "Tessellate every curve of an SWP or BZC file (points, tangents, normals, frames)");
+    tess_args.add_to(*tess);
+    cli::CasteljauArgs cast_args;
+    auto* cast = app.add_subcommand("casteljau", "Every de Casteljau level of a Bezier curve at t");
+    cast_args.add_to(*cast);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -443,6 +461,8 @@ int main(int argc, char** argv) {
         if (*merge) return run_merge(merge_in, merge_out, !merge_no_report);
         if (*rep) return finish_outputs(report_dir, true);
         if (*diff) return run_diff(diff_in, diff_args, diff_against, diff_out);
+        if (*tess) return cli::run_tessellate(tess_args);
+        if (*cast) return cli::run_casteljau(cast_args);
         if (*bench) return run_bench_command(bench_json, bench_out, bench_repeats, bench_quick, bench_cold);
     } catch (const InputError& e) {
         std::cerr << "crossdiv: error: " << e.what() << "\n";

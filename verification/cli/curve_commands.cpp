@@ -1,0 +1,313 @@
+#include "curve_commands.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "crossdiv/curves/bezier.h"
+#include "crossdiv/datasets/bundled_curves.h"
+#include "crossdiv/io/curve_io.h"
+#include "crossdiv/mesh/tri_mesh.h"
+#ifdef CROSSDIV_HAS_EIGEN_SPLINES
+#include "crossdiv/adapters/eigen_splines.h"
+#endif
+#include "crossdiv/error.h"
+#include "crossdiv/verification/curve_checks.h"
+
+namespace crossdiv::cli {
+using nlohmann::json;
+using namespace crossdiv::verification;
+
+void TessellateArgs::add_to(CLI::App& app) {
+    app.add_option("input", input, "Curve file (.swp, .bzc) or curve:NAME")->required();
+    app.add_option("-o,--out", out, "Output: .obj (v and one l line per curve), .csv or .json")->required();
+    app.add_option("--mode", mode, "uniform, angle (--angle-tol) or distance (--tol)")
+        ->check(CLI::IsMember({"uniform", "angle", "distance"}))
+        ->capture_default_str();
+    app.add_option("--intervals", intervals, "Uniform: intervals per segment (default: the file's STEPS)")->check(CLI::Range(1, 1 << 20));
+    app.add_option("--angle-tol", angle_tol_deg, "Angle mode: tolerance in degrees, (0, 180]");
+    app.add_option("--tol", tol, "Distance mode: the largest distance between curve and polyline");
+    app.add_option("--frames", frames, "Frames to output: none, recursive (the seed's) or rmf (double reflection)")
+        ->check(CLI::IsMember({"none", "recursive", "rmf"}))
+        ->capture_default_str();
+    app.add_flag("--close-frames", close_frames, "On closed curves, distribute the frame mismatch along arc length");
+}
+
+namespace {
+
+std::string g(double x) { return fmt::format("{:.17g}", x); }
+
+json vec_json(const Vec3& v, int dim) { return dim == 2 ? json{v.x(), v.y()} : json{v.x(), v.y(), v.z()}; }
+
+struct Tessellated {
+    std::string name;
+    const CurveRecord* record;
+    Polyline poly;
+    std::vector<Frame> frames;
+    double closure_deg = 0;  ///< mismatch before distribution
+    double deviation = 0;
+};
+
+}  // namespace
+
+int run_tessellate(const TessellateArgs& a) {
+    const CurveFile file = load_curve_input(a.input);
+    if (file.curves.empty()) throw InputError(a.input + ": no curves");
+    TessellationOptions o;
+    if (a.mode == "uniform") {
+        o.mode = TessellationMode::Uniform;
+        if (a.intervals > 0) o.intervals = a.intervals;
+    } else if (a.mode == "angle") {
+        if (!(a.angle_tol_deg > 0 && a.angle_tol_deg <= 180)) throw InputError("--mode angle needs --angle-tol in (0, 180] degrees");
+        o.mode = TessellationMode::Angle;
+        o.angle_tol = a.angle_tol_deg * M_PI / 180;
+    } else {
+        if (!(a.tol > 0) || !std::isfinite(a.tol)) throw InputError("--mode distance needs a positive, finite --tol");
+        o.mode = TessellationMode::Distance;
+        o.tol = a.tol;
+    }
+    const std::string ext = std::filesystem::path(a.out).extension().string();
+    if (ext != ".obj" && ext != ".csv" && ext != ".json") throw InputError(a.out + ": the output must end in .obj, .csv or .json");
+
+    std::vector<Tessellated> curves;
+    for (size_t i = 0; i < file.curves.size(); ++i) {
+        const CurveRecord& r = file.curves[i];
+        Tessellated t{r.label(static_cast<int>(i)), &r, tessellate_record(r, o), {}, 0, 0};
+        t.deviation = r.type == CurveType::Primitive ? primitive_deviation(r.primitive, t.poly).max
+                                                     : chordal_deviation(r.chain(), t.poly).max;
+        if (a.frames != "none") {
+            t.frames = curve_frames(t.poly.positions, t.poly.tangents,
+                                    a.frames == "rmf" ? FrameMethod::DoubleReflection : FrameMethod::Recursive);
+            if (r.closed()) {
+                const double mismatch = closure_angle(t.frames);
+                t.closure_deg = mismatch * 180 / M_PI;
+                if (a.close_frames) distribute_closure(t.poly.positions, t.frames, mismatch);
+            }
+        }
+        fmt::print("{}: {} ({}), {} points, measured max deviation {:.3g}{}\n", t.name, r.keyword, to_string(r.type),
+                   t.poly.size(), t.deviation,
+                   t.frames.empty() || !r.closed() ? "" : fmt::format(", frame mismatch after one lap {:.4g} deg{}", t.closure_deg,
+                                                                       a.close_frames ? " (distributed)" : ""));
+        curves.push_back(std::move(t));
+    }
+
+    std::ofstream out(a.out);
+    if (!out) throw InputError(a.out + ": cannot write");
+    if (ext == ".obj") {
+        out << "# crossdiv tessellate " << a.input << " --mode " << a.mode << "\n";
+        int base = 1;
+        for (const Tessellated& t : curves) {
+            // OBJ names cannot hold '#' (a comment) or spaces: "#0 bez2" becomes "curve0_bez2".
+            std::string name = t.name;
+            if (name.starts_with("#")) name = "curve" + name.substr(1);
+            std::replace(name.begin(), name.end(), ' ', '_');
+            out << "o " << name << "\n";
+            for (const Vec3& p : t.poly.positions) out << "v " << g(p.x()) << " " << g(p.y()) << " " << g(p.z()) << "\n";
+            out << "l";
+            for (int i = 0; i < t.poly.size(); ++i) out << " " << base + i;
+            out << "\n";
+            base += t.poly.size();
+        }
+    } else if (ext == ".csv") {
+        out << "curve,index,param,x,y,z,tx,ty,tz,nx,ny,nz" << (a.frames != "none" ? ",fnx,fny,fnz,bx,by,bz" : "") << "\n";
+        for (const Tessellated& t : curves)
+            for (int i = 0; i < t.poly.size(); ++i) {
+                const Vec3 &p = t.poly.positions[i], &tg = t.poly.tangents[i], &n = t.poly.normals[i];
+                out << t.name << "," << i << "," << g(t.poly.params[i]) << "," << g(p.x()) << "," << g(p.y()) << "," << g(p.z())
+                    << "," << g(tg.x()) << "," << g(tg.y()) << "," << g(tg.z()) << "," << g(n.x()) << "," << g(n.y()) << ","
+                    << g(n.z());
+                if (!t.frames.empty()) {
+                    const Frame& f = t.frames[i];
+                    out << "," << g(f.N.x()) << "," << g(f.N.y()) << "," << g(f.N.z()) << "," << g(f.B.x()) << ","
+                        << g(f.B.y()) << "," << g(f.B.z());
+                }
+                out << "\n";
+            }
+    } else {
+        json doc = {{"input", a.input}, {"mode", a.mode}, {"curves", json::array()}};
+        for (const Tessellated& t : curves) {
+            const int dim = t.record->dim;
+            json c = {{"name", t.name},  {"keyword", t.record->keyword}, {"type", to_string(t.record->type)},
+                      {"closed", t.record->closed()}, {"measured_max_deviation", t.deviation}, {"params", t.poly.params}};
+            json pts = json::array(), tan = json::array(), nrm = json::array();
+            for (int i = 0; i < t.poly.size(); ++i) {
+                pts.push_back(vec_json(t.poly.positions[i], dim));
+                tan.push_back(vec_json(t.poly.tangents[i], dim));
+                nrm.push_back(vec_json(t.poly.normals[i], dim));
+            }
+            c["points"] = pts;
+            c["tangents"] = tan;
+            c["normals"] = nrm;
+            if (!t.frames.empty()) {
+                json T = json::array(), N = json::array(), B = json::array();
+                for (const Frame& f : t.frames) {
+                    T.push_back(vec_json(f.T, 3));
+                    N.push_back(vec_json(f.N, 3));
+                    B.push_back(vec_json(f.B, 3));
+                }
+                c["frames"] = {{"method", a.frames}, {"T", T}, {"N", N}, {"B", B}, {"closure_mismatch_deg", t.closure_deg},
+                               {"distributed", a.close_frames && t.record->closed()}};
+            }
+            doc["curves"].push_back(c);
+        }
+        out << doc.dump(1) << "\n";
+    }
+    fmt::print("wrote {}\n", a.out);
+    return 0;
+}
+
+void CasteljauArgs::add_to(CLI::App& app) {
+    app.add_option("input", input, "A single Bezier curve: .bzc file, curve:NAME, or an SWP file with one segment")->required();
+    app.add_option("--t", t, "Parameter in [0, 1]")->capture_default_str();
+    app.add_option("--json", json, "Write {\"t\": T, \"levels\": [[[x, y], ...], ...]} to this file");
+}
+
+int run_casteljau(const CasteljauArgs& a) {
+    if (!(a.t >= 0 && a.t <= 1)) throw InputError("--t must be in [0, 1], got " + fmt::format("{}", a.t));
+    const CurveFile file = load_curve_input(a.input);
+    if (file.curves.size() != 1 || file.curves[0].type == CurveType::Primitive)
+        throw InputError(a.input + ": casteljau needs exactly one Bezier curve, the file has " +
+                         std::to_string(file.curves.size()) + " curve(s)");
+    const CurveRecord& r = file.curves[0];
+    const BezierChain chain = r.chain();
+    if (chain.num_segments() != 1)
+        throw InputError(a.input + ": casteljau needs a single Bezier segment; " + r.label(0) + " has " +
+                         std::to_string(chain.num_segments()) + " (" + std::string(to_string(r.type)) + ")");
+    const auto levels = casteljau_levels(chain.segment(0), a.t);
+    json jl = json::array();
+    for (size_t k = 0; k < levels.size(); ++k) {
+        std::string line = fmt::format("level {}:", k);
+        json pts = json::array();
+        for (const Vec3& p : levels[k]) {
+            line += r.dim == 2 ? fmt::format(" ({:.17g}, {:.17g})", p.x(), p.y()) : fmt::format(" ({:.17g}, {:.17g}, {:.17g})", p.x(), p.y(), p.z());
+            pts.push_back(vec_json(p, r.dim));
+        }
+        fmt::print("{}\n", line);
+        jl.push_back(pts);
+    }
+    if (!a.json.empty()) {
+        std::ofstream out(a.json);
+        if (!out) throw InputError(a.json + ": cannot write");
+        out << nlohmann::json{{"t", a.t}, {"levels", jl}}.dump(1) << "\n";
+    }
+    return 0;
+}
+
+json run_curve_bench(int repeats) {
+    std::vector<std::pair<std::string, CurveFile>> files;
+    for (const auto& b : datasets::bundled_curves()) files.emplace_back("curve:" + b.name, datasets::bundled_curve_file(b.name));
+    for (const std::string& f : datasets::course_curve_files())
+        if (f.ends_with("wineglass.swp")) files.emplace_back(f, read_curve_file(f));
+    fmt::print("\nCurve tessellation: edges (measured max deviation) per mode at each distance tolerance\n");
+    fmt::print("{:<28} {:>9}  {:>18} {:>18} {:>18} {:>18}\n", "curve", "tol", "uniform", "angle", "distance", "Wang");
+    json rows = json::array(), timing = json::array();
+    for (const auto& [input, file] : files) {
+        for (size_t i = 0; i < file.curves.size(); ++i) {
+            const CurveRecord& r = file.curves[i];
+            if (r.type == CurveType::Primitive) continue;
+            const std::string label = std::filesystem::path(input).stem().string() + "/" + r.label(static_cast<int>(i));
+            const double size = bounding_box_diagonal(r.chain().points);
+            const double tols[] = {1e-2 * size, 1e-3 * size, 1e-4 * size};
+            for (const TessellationRow& row : tessellation_study(r, label, tols)) {
+                auto cell = [](int n, double d) { return fmt::format("{} ({:.2e})", n, d); };
+                fmt::print("{:<28} {:>9.2e}  {:>18} {:>18} {:>18} {:>18}\n", label, row.tol, cell(row.uniform_edges, row.uniform_dev),
+                           row.angle_reached ? cell(row.angle_edges, row.angle_dev) : "cap " + cell(row.angle_edges, row.angle_dev),
+                           cell(row.distance_edges, row.distance_dev), cell(row.wang_edges, row.wang_dev));
+                rows.push_back({{"curve", row.curve}, {"input", input}, {"tol", row.tol}, {"uniform_edges", row.uniform_edges},
+                                {"uniform_steps", row.uniform_steps}, {"uniform_dev", row.uniform_dev},
+                                {"angle_edges", row.angle_edges}, {"angle_dev", row.angle_dev},
+                                {"angle_tol_deg", row.angle_tol_deg}, {"angle_reached", row.angle_reached},
+                                {"distance_edges", row.distance_edges}, {"distance_dev", row.distance_dev},
+                                {"wang_edges", row.wang_edges}, {"wang_dev", row.wang_dev}});
+            }
+#ifdef CROSSDIV_HAS_EIGEN_SPLINES
+            // Evaluation time: position, d1 and d2 at 1000 parameters per segment, ours vs Eigen.
+            if (r.type != CurveType::BSpline && r.type != CurveType::Bezier) continue;
+            const BezierChain c = r.chain();
+            constexpr int kPerSegment = 1000;
+            std::vector<double> u;
+            for (int k = 0; k < c.num_segments(); ++k)
+                for (int j = 0; j < kPerSegment; ++j) u.push_back(k + (j + 0.5) / kPerSegment);
+            auto median_ms = [&](auto&& f) {
+                std::vector<double> ms;
+                for (int rep = 0; rep <= repeats; ++rep) {
+                    const auto t0 = std::chrono::steady_clock::now();
+                    f();
+                    if (rep > 0) ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+                }
+                std::nth_element(ms.begin(), ms.begin() + ms.size() / 2, ms.end());
+                return ms[ms.size() / 2];
+            };
+            double sink = 0;
+            const double ours = median_ms([&] {
+                for (double x : u) sink += chain_jet(c, x).d2.x();
+            });
+            const double eigen = median_ms([&] {
+                const auto s = r.type == CurveType::BSpline ? adapters::eigen_splines::uniform_cubic_bspline(r.control, u)
+                                                            : adapters::eigen_splines::clamped_bezier(r.control, u);
+                sink += s.d2.back().x();
+            });
+            timing.push_back({{"curve", label}, {"degree", c.degree}, {"evaluations", u.size()}, {"core_ms", ours},
+                              {"eigen_ms", eigen}, {"eigen_over_core", eigen / ours}, {"checksum", sink}});
+#endif
+        }
+    }
+    if (!timing.empty()) {
+        fmt::print("\nCurve evaluation (position, d1, d2), median of {} runs: ours (de Casteljau) vs Eigen (Cox-de Boor)\n", repeats);
+        fmt::print("{:<28} {:>6} {:>11} {:>10} {:>10} {:>9}\n", "curve", "degree", "evaluations", "core ms", "eigen ms", "x core");
+        for (const json& t : timing)
+            fmt::print("{:<28} {:>6} {:>11} {:>10.3f} {:>10.3f} {:>9.2f}\n", t["curve"].get<std::string>(), t["degree"].get<int>(),
+                       t["evaluations"].get<size_t>(), t["core_ms"].get<double>(), t["eigen_ms"].get<double>(),
+                       t["eigen_over_core"].get<double>());
+    }
+    return {{"tessellation", rows}, {"timing", timing}};
+}
+
+void print_curve_tables(const std::vector<json>& records) {
+    bool header = false;
+    for (const json& rec : records) {
+        if (rec.value("scheme", "") != "curves" || !rec.contains("tables")) continue;
+        if (!header) {
+            fmt::print("\nCurves (each check: measured <= tolerance; results.json holds every value)\n");
+            header = true;
+        }
+        int pass = 0, fail = 0;
+        double eigen = 0;
+        for (const json& r : rec["runs"]) {
+            (r["verdict"] == "agree" ? pass : fail) += 1;
+            if (r["reference"] == "eigen" && r["check"] == "position") eigen = std::max(eigen, r["measured"].get<double>());
+        }
+        fmt::print("  {:<48} {:>3} checks, {} failed{}\n", rec["input"].get<std::string>(), pass + fail, fail,
+                   eigen > 0 ? fmt::format(", Eigen position max {:.2g} rel", eigen) : "");
+        const json& t = rec["tables"];
+        if (t.contains("frames")) {
+            fmt::print("    helix frame error vs the exact rotation-minimizing frame (max angle, rad):\n");
+            fmt::print("    {:>6} {:>10} {:>12} {:>12}\n", "steps", "h", "recursive", "rmf");
+            for (const json& row : t["frames"]["rows"])
+                fmt::print("    {:>6} {:>10.4g} {:>12.3e} {:>12.3e}\n", row["steps"].get<int>(), row["h"].get<double>(),
+                           row["recursive_error_rad"].get<double>(), row["rmf_error_rad"].get<double>());
+            fmt::print("    fitted order: recursive {:.2f}, double reflection {:.2f}\n", t["frames"]["recursive_order"].get<double>(),
+                       t["frames"]["rmf_order"].get<double>());
+        }
+        if (t.contains("degrees")) {
+            double bern = 0, eig = 0;
+            for (const json& row : t["degrees"]) {
+                bern = std::max(bern, row.value("bernstein-sum", 0.0));
+                eig = std::max({eig, row.value("eigen_position", 0.0), row.value("eigen_d1", 0.0), row.value("eigen_d2", 0.0)});
+            }
+            fmt::print("    degrees 1..20: de Casteljau vs Bernstein max {:.2g} rel; degrees 1..10 vs Eigen (position, d1, d2) max {:.2g} rel\n",
+                       bern, eig);
+        }
+        if (t.contains("tessellation"))
+            for (const json& row : t["tessellation"])
+                fmt::print("    {:<12} tol {:<9.3g} edges: uniform {:>5}  angle {:>5}  distance {:>5}  Wang {:>5}\n",
+                           row["curve"].get<std::string>(), row["tol"].get<double>(), row["uniform_edges"].get<int>(),
+                           row["angle_edges"].get<int>(), row["distance_edges"].get<int>(), row["wang_edges"].get<int>());
+    }
+}
+
+}  // namespace crossdiv::cli
