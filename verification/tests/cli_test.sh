@@ -74,6 +74,34 @@ expect diff-reproduces 1 'corner-rule' -- "$crossdiv" compare "$tmp/diff/minimal
 expect diff-nothing 2 'does not diverge' -- "$crossdiv" diff bundled:torus --against cgal --out "$tmp/diff2"
 expect bench 0 'goal: core .* faster than the fastest reference' -- "$crossdiv" bench --quick --repeats 1 --out "$tmp/suite"
 expect bench-in-report 0 'figures/timing.png' -- grep 'figures/timing.png' "$tmp/suite/report.md"
+expect bench-curves 0 'wineglass/profile|curve:s-curve/s' -- "$crossdiv" bench --quick --repeats 1 --json "$tmp/b.json"
+
+# Curves: tessellate and casteljau on good input, and bad input named by file and line.
+printf 'bez2 . 4 4\n[3 0] [3 1]\n[1 1] [1 0]\nbsp3 spine 4 4 [-2 0 1] [0 2 1] [0 3 -1] [2 0 -1]\n' > "$tmp/core.swp"
+printf 'bez2 . 20 5\n[0 0] [1 0] [1 1] [0 1] [2 2]\n' > "$tmp/count.swp"
+printf 'bsp2 . 20 4\n[0 0] [1 0\n[1 1] [0 1]\n' > "$tmp/bracket.swp"
+printf 'circ a 10 1\nsrev s 10 b\n' > "$tmp/undefined.swp"
+printf 'bez2 . 20 4\n[0 0] [1 nan] [1 1] [0 1]\n' > "$tmp/nan.swp"
+printf 'spline . 4\n' > "$tmp/unknown.swp"
+printf '4\n0.2 0.35 0.3 0.6 0.8 0.75 0.9 0.45\n' > "$tmp/c.bzc"
+expect tessellate-obj 0 'spine: bsp3 \(bspline\), 5 points' -- "$crossdiv" tessellate "$tmp/core.swp" -o "$tmp/core.obj"
+expect tessellate-obj-lines 0 '^l 1 2 3 4 5$' -- cat "$tmp/core.obj"
+expect tessellate-distance 0 'measured max deviation 0\.000[0-9]' -- "$crossdiv" tessellate "$tmp/core.swp" --mode distance --tol 1e-3 -o "$tmp/core.csv"
+expect tessellate-frames 0 'frame mismatch after one lap' -- "$crossdiv" tessellate curve:trefoil --frames rmf --close-frames -o "$tmp/t.json"
+expect tessellate-json 0 '"closure_mismatch_deg"' -- cat "$tmp/t.json"
+expect tessellate-angle-needs-tol 2 'needs --angle-tol' -- "$crossdiv" tessellate "$tmp/core.swp" --mode angle -o "$tmp/x.obj"
+expect swp-count 2 'count.swp:1: bez2 .*3n \+ 1 control points .* got 5' -- "$crossdiv" tessellate "$tmp/count.swp" -o "$tmp/x.obj"
+expect swp-bracket 2 "bracket.swp:3: unbalanced bracket" -- "$crossdiv" tessellate "$tmp/bracket.swp" -o "$tmp/x.obj"
+expect swp-undefined 2 "undefined.swp:2: undefined curve 'b'" -- "$crossdiv" tessellate "$tmp/undefined.swp" -o "$tmp/x.obj"
+expect swp-nan 2 'nan.swp:2: a coordinate is nan' -- "$crossdiv" tessellate "$tmp/nan.swp" -o "$tmp/x.obj"
+expect swp-unknown 2 "unknown.swp:1: unknown record 'spline'" -- "$crossdiv" tessellate "$tmp/unknown.swp" -o "$tmp/x.obj"
+expect casteljau-levels 0 'level 3: \(0\.55000000000000004, 0\.60624999999999996\)' -- "$crossdiv" casteljau "$tmp/c.bzc" --t 0.5 --json "$tmp/c.json"
+expect casteljau-json 0 '"levels"' -- cat "$tmp/c.json"
+expect casteljau-bad-t 2 '--t must be in \[0, 1\]' -- "$crossdiv" casteljau "$tmp/c.bzc" --t 1.5
+expect casteljau-chain 2 'needs exactly one Bezier curve' -- "$crossdiv" casteljau "$tmp/core.swp"
+printf 'suite curves\ncase curves:bundled,curves:synthetic curves\n' > "$tmp/curves.suite"
+expect suite-curves 0 'fitted order: recursive 1\.[0-9]+, double reflection 4\.0' -- "$crossdiv" suite "$tmp/curves.suite" --out "$tmp/cs" --jobs 2
+expect suite-curves-report 0 'curve_frames.png' -- cat "$tmp/cs/report.md"
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
