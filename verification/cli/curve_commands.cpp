@@ -34,6 +34,10 @@ void TessellateArgs::add_to(CLI::App& app) {
     app.add_option("--frames", frames, "Frames to output: none, recursive (the seed's) or rmf (double reflection)")
         ->check(CLI::IsMember({"none", "recursive", "rmf"}))
         ->capture_default_str();
+    app.add_option("--normal-side", normal_side,
+                   "Planar curves: normals left of travel (CS-C3100, N = +z x T) or right (CS4620, N = T x +z)")
+        ->check(CLI::IsMember({"left", "right"}))
+        ->capture_default_str();
     app.add_flag("--close-frames", close_frames, "On closed curves, distribute the frame mismatch along arc length");
 }
 
@@ -77,6 +81,11 @@ int run_tessellate(const TessellateArgs& a) {
     for (size_t i = 0; i < file.curves.size(); ++i) {
         const CurveRecord& r = file.curves[i];
         Tessellated t{r.label(static_cast<int>(i)), &r, tessellate_record(r, o), {}, 0, 0};
+        if (a.normal_side == "right" && r.dim == 2) {
+            const std::vector<Frame> right =
+                curve_frames(t.poly.positions, t.poly.tangents, FrameMethod::Planar, NormalSide::Right);
+            for (size_t k = 0; k < right.size(); ++k) t.poly.normals[k] = right[k].N;
+        }
         t.deviation = r.type == CurveType::Primitive ? primitive_deviation(r.primitive, t.poly).max
                                                      : chordal_deviation(r.chain(), t.poly).max;
         if (a.frames != "none") {

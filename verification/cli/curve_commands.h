@@ -9,7 +9,7 @@
 namespace crossdiv::cli {
 
 struct TessellateArgs {
-    std::string input, out, mode = "uniform", frames = "none";
+    std::string input, out, mode = "uniform", frames = "none", normal_side = "left";
     int intervals = 0;  ///< 0: the record's STEPS
     double angle_tol_deg = 0, tol = 0;
     bool close_frames = false;
