@@ -282,23 +282,22 @@ TEST(CurveIo, ReadsCoreSwp) {
 }
 
 namespace {
-std::string swp_error(const std::string& text) {
+/// The ParseError message a reader gives for `text`, or "no error".
+template <class Reader>
+std::string parse_error(Reader read, const std::string& text, const std::string& name) {
     std::istringstream in(text);
     try {
-        read_swp(in, "bad.swp");
+        read(in, name);
     } catch (const ParseError& e) {
         return e.what();
     }
     return "no error";
 }
+std::string swp_error(const std::string& text) {
+    return parse_error([](std::istream& in, const std::string& n) { return read_swp(in, n); }, text, "bad.swp");
+}
 std::string bzc_error(const std::string& text) {
-    std::istringstream in(text);
-    try {
-        read_bzc(in, "bad.bzc");
-    } catch (const ParseError& e) {
-        return e.what();
-    }
-    return "no error";
+    return parse_error([](std::istream& in, const std::string& n) { return read_bzc(in, n); }, text, "bad.bzc");
 }
 }  // namespace
 

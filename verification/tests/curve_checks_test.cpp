@@ -27,9 +27,13 @@ TEST(CurveChecks, BundledCurvesPassEveryCheck) {
 }
 
 TEST(CurveChecks, CourseCurveFilesReadAndPass) {
+    // The course data is optional (../shared beside the checkout). Without it the collection
+    // must be empty, not an error; with it, all 13 files are found and every check passes.
     const std::vector<std::string> files = datasets::course_curve_files();
-    if (files.empty()) GTEST_SKIP() << "../shared/data is not beside the checkout";
-    EXPECT_GE(files.size(), 13u);
+    const bool present = std::filesystem::is_directory(CROSSDIV_SHARED_DATA "/c3100/swp");
+    EXPECT_EQ(files.empty(), !present);
+    EXPECT_EQ(expand_curve_inputs({"curves:course"}).size(), files.size());
+    if (present) EXPECT_GE(files.size(), 13u);
     for (const std::string& f : files) expect_all_pass(check_curve_file(load_curve_input(f), f));
 }
 
