@@ -1,4 +1,6 @@
 #include <ostream>
+#include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -71,12 +73,16 @@ PolyMesh read_obj(std::istream& in, const std::string& name) {
     return mesh;
 }
 
-void write_obj(std::ostream& out, const PolyMesh& mesh) {
+void write_obj(std::ostream& out, const PolyMesh& mesh, std::span<const Vec3> normals) {
     using io_detail::append_int;
     using io_detail::append_real;
     const bool colors = !mesh.colors.empty() && mesh.colors.size() == mesh.positions.size();
+    const bool with_normals = !normals.empty();
+    if (with_normals && normals.size() != mesh.positions.size())
+        throw std::logic_error("write_obj: " + std::to_string(normals.size()) + " normals for " +
+                               std::to_string(mesh.positions.size()) + " vertices");
     std::string buf;
-    buf.reserve(static_cast<size_t>(mesh.num_vertices()) * 64 + mesh.face_vertices.size() * 8);
+    buf.reserve(static_cast<size_t>(mesh.num_vertices()) * (with_normals ? 128 : 64) + mesh.face_vertices.size() * 16);
     for (int v = 0; v < mesh.num_vertices(); ++v) {
         buf += 'v';
         for (double x : mesh.positions[v]) { buf += ' '; append_real(buf, x); }
@@ -84,9 +90,21 @@ void write_obj(std::ostream& out, const PolyMesh& mesh) {
             for (double x : mesh.colors[v]) { buf += ' '; append_real(buf, x); }
         buf += '\n';
     }
+    for (const Vec3& n : normals) {
+        buf += "vn";
+        for (double x : n) { buf += ' '; append_real(buf, x); }
+        buf += '\n';
+    }
     for (int f = 0; f < mesh.num_faces(); ++f) {
         buf += 'f';
-        for (int k = 0; k < mesh.face_size(f); ++k) { buf += ' '; append_int(buf, mesh.face(f)[k] + 1); }
+        for (int k = 0; k < mesh.face_size(f); ++k) {
+            buf += ' ';
+            append_int(buf, mesh.face(f)[k] + 1);
+            if (with_normals) {  // vertex i has normal i: "v//v"
+                buf += "//";
+                append_int(buf, mesh.face(f)[k] + 1);
+            }
+        }
         buf += '\n';
     }
     out.write(buf.data(), static_cast<std::streamsize>(buf.size()));

@@ -109,6 +109,12 @@ CurveFile read_swp(std::istream& in, const std::string& name) {
                 s.profile_index = lookup(s.profile, s.line);
                 s.sweep = p.word("the sweep curve name");
                 s.sweep_index = lookup(s.sweep, s.line);
+                // Our extension: an optional scale curve on the same line (the course
+                // format has none, and records never share a line, so this is unambiguous).
+                if (!p.done() && p.peek().line == s.line) {
+                    s.scale = p.word("the scale curve name");
+                    s.scale_index = lookup(s.scale, s.line);
+                }
             }
             if (s.name == ".") s.name.clear();
             f.sweeps.push_back(std::move(s));

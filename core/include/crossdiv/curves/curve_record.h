@@ -51,8 +51,10 @@ struct SweepRecord {
     int steps = 0;            ///< srev: slices around the axis
     std::string profile;      ///< curve name
     std::string sweep;        ///< gcyl: curve name
+    std::string scale;        ///< gcyl, optional (our extension: `gcyl NAME PROFILE SWEEP SCALE`)
     int profile_index = -1;   ///< into CurveFile::curves
     int sweep_index = -1;
+    int scale_index = -1;     ///< -1 without a scale curve
     int line = 0;
 };
 

@@ -9,7 +9,7 @@
 ///     bez3 / bsp3 NAME STEPS N [x y z] ...
 ///     circ NAME STEPS RADIUS           circle in the xy-plane
 ///     srev NAME STEPS PROFILE          surface of revolution of curve PROFILE
-///     gcyl NAME PROFILE SWEEP          generalized cylinder
+///     gcyl NAME PROFILE SWEEP [SCALE]  generalized cylinder; SCALE (our extension) sizes the profile
 ///
 /// NAME '.' is anonymous. Our extensions, which standard files never contain so standard
 /// files read unchanged: `crm2|crm3 NAME STEPS N [..]...` open Catmull-Rom (N >= 4),

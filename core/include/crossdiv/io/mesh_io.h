@@ -5,6 +5,7 @@
 /// Writers print 17 significant digits, enough for a double to read back bit-identical.
 
 #include <iosfwd>
+#include <span>
 #include <string>
 
 #include "crossdiv/mesh/poly_mesh.h"
@@ -33,8 +34,10 @@ PolyMesh read_off(std::istream& in, const std::string& name);
 ///         on malformed content.
 PolyMesh read_mesh(const std::string& path);
 
-/// Writes OBJ (`v x y z [r g b]`, 1-based `f` lines) with 17 significant digits.
-void write_obj(std::ostream& out, const PolyMesh& mesh);
+/// Writes OBJ (`v x y z [r g b]`, 1-based `f` lines) with 17 significant digits. With
+/// `normals` (one per vertex), also `vn` lines and faces as `f a//a b//b c//c`.
+/// @throws std::logic_error if normals is neither empty nor one per vertex.
+void write_obj(std::ostream& out, const PolyMesh& mesh, std::span<const Vec3> normals = {});
 /// Writes OFF with 17 significant digits.
 void write_off(std::ostream& out, const PolyMesh& mesh);
 /// Writes by extension (.obj, .off). @throws InputError if the file cannot be written.

@@ -1,0 +1,54 @@
+#pragma once
+/// @file
+/// The triangle mesh every surface builder returns: positions and triangles (a TriMesh, so
+/// the mesh checks and the adapters take it as is) with one unit normal per vertex, and the
+/// welding that joins vertices which coincide (patch boundaries, poles, seams).
+
+#include <Eigen/Geometry>  // cross products
+#include <span>
+#include <vector>
+
+#include "crossdiv/mesh/tri_mesh.h"
+
+namespace crossdiv {
+
+/// A tessellated surface. Triangles are counterclockwise seen from the side the normals
+/// point to (the builders choose that side; see each builder).
+struct SurfaceMesh {
+    TriMesh mesh;
+    std::vector<Vec3> normals;  ///< unit, one per vertex of `mesh`
+    /// Triangles not emitted because two of their corners are one vertex (a collapsed patch
+    /// edge, a pole of a surface of revolution): counted so that a report can say so.
+    int collapsed_triangles = 0;
+};
+
+/// Welding joins points closer than this times the bounding-box diagonal of the input:
+/// far above the rounding of two evaluations of one boundary curve from either side (a few
+/// ulps of the coordinates), far below any intended feature of a course model (1e-3).
+inline constexpr double kWeldRelative = 1e-9;
+
+/// For each point, the index of the first point it is welded to (itself when none is
+/// within `tol`). Points join transitively (a chain of points each within tol of the next is
+/// one class). Sorting by grid cell and searching the 27 neighbouring cells: O(n log n), no
+/// hashing of doubles and no node-based map.
+std::vector<int> weld_classes(std::span<const Vec3> points, double tol);
+
+/// Welds the mesh's vertices with weld_classes (tol = kWeldRelative * diagonal unless given),
+/// keeps the first vertex of each class (order of first occurrence), averages the normals of
+/// a class (then normalizes), and drops the triangles welding collapses (counted in
+/// collapsed_triangles). Returns the largest angle (radians) between normals that were
+/// averaged: 0 where the pieces meet with a common tangent plane.
+double weld(SurfaceMesh& surface, double tol = -1);
+
+/// Unit normal of each triangle (zero for a zero-area triangle).
+std::vector<Vec3> face_normals(const TriMesh& mesh);
+
+/// Signed volume enclosed by the triangles, sum of det(a, b, c) / 6: positive when a closed
+/// mesh's triangles are counterclockwise seen from outside (normals outward).
+double signed_volume(const TriMesh& mesh);
+
+/// Number of edges used by exactly one triangle (0 for a watertight mesh), counting each
+/// undirected edge once.
+int boundary_edge_count(const TriMesh& mesh);
+
+}  // namespace crossdiv

@@ -1,0 +1,47 @@
+#pragma once
+/// @file
+/// The surfaces an SWP file's srev and gcyl records describe, built from its curve records.
+
+#include <string>
+
+#include "crossdiv/curves/curve_record.h"
+#include "crossdiv/surfaces/generalized_cylinder.h"
+#include "crossdiv/surfaces/revolution.h"
+
+namespace crossdiv {
+
+/// How to sample the curves of a sweep.
+struct SweepOptions {
+    FrameMethod frames = FrameMethod::Recursive;  ///< gcyl: recursive (the seed's) or DoubleReflection
+    bool close_frames = true;                     ///< gcyl: distribute the closure angle of closed sweeps
+    /// Uniform (false): every curve with its record's STEPS, srev with the record's slices.
+    /// Adaptive (true): the curves by the distance mode at tol / 2, and srev with the fewest
+    /// slices whose chord stays within tol / 2 of the widest circle, r (1 - cos(pi / n));
+    /// the two halves of the budget add up to at most about tol.
+    bool adaptive = false;
+    double tol = 0;  ///< absolute, for adaptive
+};
+
+/// One built surface.
+struct SweepSurface {
+    std::string name;        ///< the record's name, or "#k srev" for an anonymous one
+    SweepRecord record;
+    SweepGrid grid;
+    SurfaceMesh surface;
+    bool closed = false;     ///< whether the construction is closed (must then be watertight)
+    double closure_angle = 0;  ///< gcyl over a closed sweep: the frames' mismatch before distribution (rad)
+};
+
+/// Builds record `index` of file.sweeps.
+/// @throws ParseError naming the file and the record's line when its curves cannot make the
+///         surface (a profile that is not planar, crosses the axis, or a scale curve that is
+///         not positive), InputError for bad options.
+SweepSurface build_sweep(const CurveFile& file, int index, const SweepOptions& options);
+
+/// The exact point of a curve record at its global parameter (the Polyline params).
+Vec3 record_point(const CurveRecord& record, double param);
+
+/// The exact surface of revolution a C3100 srev grid samples, for grid_deviation.
+ExactSurface exact_revolution(const CurveRecord& profile);
+
+}  // namespace crossdiv

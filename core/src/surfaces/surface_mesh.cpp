@@ -1,0 +1,145 @@
+#include "crossdiv/surfaces/surface_mesh.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+
+namespace crossdiv {
+
+namespace {
+
+using Cell = std::array<std::int64_t, 3>;
+
+Cell cell_of(const Vec3& p, double h) {
+    return {static_cast<std::int64_t>(std::floor(p.x() / h)), static_cast<std::int64_t>(std::floor(p.y() / h)),
+            static_cast<std::int64_t>(std::floor(p.z() / h))};
+}
+
+int find(std::vector<int>& parent, int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+}
+
+}  // namespace
+
+std::vector<int> weld_classes(std::span<const Vec3> points, double tol) {
+    const int n = static_cast<int>(points.size());
+    std::vector<int> parent(n);
+    std::iota(parent.begin(), parent.end(), 0);
+    if (n == 0 || !(tol > 0)) return parent;
+    // Cells of side tol: two points within tol lie in the same or adjacent cells.
+    std::vector<Cell> cells(n);
+    for (int i = 0; i < n; ++i) cells[i] = cell_of(points[i], tol);
+    std::vector<int> order(n);
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return cells[a] < cells[b] || (cells[a] == cells[b] && a < b); });
+    std::vector<Cell> sorted(n);
+    for (int k = 0; k < n; ++k) sorted[k] = cells[order[k]];
+    const double tol2 = tol * tol;
+    for (int i = 0; i < n; ++i) {
+        for (std::int64_t dx = -1; dx <= 1; ++dx)
+            for (std::int64_t dy = -1; dy <= 1; ++dy)
+                for (std::int64_t dz = -1; dz <= 1; ++dz) {
+                    const Cell c{cells[i][0] + dx, cells[i][1] + dy, cells[i][2] + dz};
+                    auto [lo, hi] = std::equal_range(sorted.begin(), sorted.end(), c);
+                    for (auto it = lo; it != hi; ++it) {
+                        const int j = order[it - sorted.begin()];
+                        if (j <= i || (points[i] - points[j]).squaredNorm() > tol2) continue;
+                        const int a = find(parent, i), b = find(parent, j);
+                        if (a != b) parent[std::max(a, b)] = std::min(a, b);
+                    }
+                }
+    }
+    for (int i = 0; i < n; ++i) parent[i] = find(parent, i);
+    return parent;
+}
+
+double weld(SurfaceMesh& s, double tol) {
+    TriMesh& m = s.mesh;
+    if (tol < 0) tol = kWeldRelative * bounding_box_diagonal(m.positions);
+    const std::vector<int> cls = weld_classes(m.positions, tol);
+    const int n = m.num_vertices();
+    std::vector<int> new_index(n, -1);
+    std::vector<Vec3> positions, normals;
+    positions.reserve(n);
+    normals.reserve(n);
+    for (int v = 0; v < n; ++v) {
+        if (cls[v] != v) continue;
+        new_index[v] = static_cast<int>(positions.size());
+        positions.push_back(m.positions[v]);
+        normals.push_back(Vec3::Zero());
+    }
+    // The largest angle between normals averaged into one vertex, measured against the
+    // class's first normal (enough to tell "these pieces meet smoothly" from "they do not").
+    double max_angle = 0;
+    for (int v = 0; v < n; ++v) {
+        const int w = new_index[cls[v]];
+        normals[w] += s.normals[v];
+        if (cls[v] != v) {
+            const Vec3& a = s.normals[cls[v]];
+            const Vec3& b = s.normals[v];
+            max_angle = std::max(max_angle, std::atan2(a.cross(b).norm(), a.dot(b)));
+        }
+    }
+    for (Vec3& nv : normals) {
+        const double len = nv.norm();
+        if (len > 0) nv /= len;
+    }
+    std::vector<Triangle> triangles;
+    triangles.reserve(m.triangles.size());
+    for (const Triangle& t : m.triangles) {
+        const Triangle u{new_index[cls[t[0]]], new_index[cls[t[1]]], new_index[cls[t[2]]]};
+        if (u[0] == u[1] || u[1] == u[2] || u[2] == u[0]) {
+            ++s.collapsed_triangles;
+            continue;
+        }
+        triangles.push_back(u);
+    }
+    m.positions = std::move(positions);
+    m.triangles = std::move(triangles);
+    s.normals = std::move(normals);
+    return max_angle;
+}
+
+std::vector<Vec3> face_normals(const TriMesh& mesh) {
+    std::vector<Vec3> out(mesh.triangles.size(), Vec3::Zero());
+    for (size_t f = 0; f < mesh.triangles.size(); ++f) {
+        const Triangle& t = mesh.triangles[f];
+        const Vec3 n = (mesh.positions[t[1]] - mesh.positions[t[0]]).cross(mesh.positions[t[2]] - mesh.positions[t[0]]);
+        const double len = n.norm();
+        if (len > 0) out[f] = n / len;
+    }
+    return out;
+}
+
+double signed_volume(const TriMesh& mesh) {
+    double six_v = 0;
+    for (const Triangle& t : mesh.triangles)
+        six_v += mesh.positions[t[0]].dot(mesh.positions[t[1]].cross(mesh.positions[t[2]]));
+    return six_v / 6;
+}
+
+int boundary_edge_count(const TriMesh& mesh) {
+    // Each undirected edge as one 64-bit key; after sorting, a key seen once is a boundary.
+    std::vector<std::uint64_t> keys;
+    keys.reserve(mesh.triangles.size() * 3);
+    for (const Triangle& t : mesh.triangles)
+        for (int j = 0; j < 3; ++j) {
+            const auto a = static_cast<std::uint32_t>(std::min(t[j], t[(j + 1) % 3]));
+            const auto b = static_cast<std::uint32_t>(std::max(t[j], t[(j + 1) % 3]));
+            keys.push_back(std::uint64_t{a} << 32 | b);
+        }
+    std::sort(keys.begin(), keys.end());
+    int boundary = 0;
+    for (size_t i = 0; i < keys.size();) {
+        size_t j = i;
+        while (j < keys.size() && keys[j] == keys[i]) ++j;
+        boundary += j - i == 1;
+        i = j;
+    }
+    return boundary;
+}
+
+}  // namespace crossdiv

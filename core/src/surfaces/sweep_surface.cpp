@@ -1,0 +1,104 @@
+#include "crossdiv/surfaces/sweep_surface.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "crossdiv/curves/cubic_spline.h"
+#include "crossdiv/error.h"
+
+namespace crossdiv {
+
+namespace {
+
+double param_end(const CurveRecord& r) {
+    return r.type == CurveType::Primitive ? r.primitive.param_end() : static_cast<double>(r.chain().num_segments());
+}
+
+Polyline sample(const CurveRecord& r, const SweepOptions& o) {
+    TessellationOptions t;
+    if (o.adaptive) {
+        t.mode = TessellationMode::Distance;
+        t.tol = o.tol / 2;
+    }
+    return tessellate_record(r, t);
+}
+
+/// Fewest slices (>= 3) whose chord sags at most `tol` below a circle of radius r.
+int slices_for(double r, double tol) {
+    if (r <= 0) return 3;
+    if (tol >= r) return 3;
+    return std::max(3, static_cast<int>(std::ceil(std::numbers::pi / std::acos(1 - tol / r))));
+}
+
+}  // namespace
+
+Vec3 record_point(const CurveRecord& r, double param) {
+    if (r.type == CurveType::Primitive) return r.primitive.jet(param).position;
+    return chain_jet(r.chain(), param).position;
+}
+
+ExactSurface exact_revolution(const CurveRecord& profile) {
+    if (profile.type == CurveType::Primitive)
+        return [prim = profile.primitive](double t, double a) {
+            const Vec3 p = prim.jet(t).position;
+            return Vec3(p.x() * std::cos(a), p.y(), -p.x() * std::sin(a));
+        };
+    return [chain = profile.chain()](double t, double a) {
+        const Vec3 p = chain_jet(chain, t).position;
+        return Vec3(p.x() * std::cos(a), p.y(), -p.x() * std::sin(a));
+    };
+}
+
+SweepSurface build_sweep(const CurveFile& file, int index, const SweepOptions& o) {
+    if (o.adaptive && !(o.tol > 0)) throw InputError("adaptive sweeps need a positive --tol");
+    const SweepRecord& rec = file.sweeps.at(index);
+    SweepSurface out;
+    out.record = rec;
+    out.name = rec.name.empty() ? "#" + std::to_string(index) + (rec.kind == SweepRecord::Kind::Revolution ? " srev" : " gcyl") : rec.name;
+    const CurveRecord& profile = file.curves.at(rec.profile_index);
+    try {
+        const Polyline p = sample(profile, o);
+        const bool profile_closed = profile.closed();
+        if (rec.kind == SweepRecord::Kind::Revolution) {
+            RevolutionOptions ro;
+            ro.convention = RevolutionConvention::C3100;
+            ro.slices = rec.steps;
+            if (o.adaptive) {
+                double r = 0;
+                for (const Vec3& q : p.positions) r = std::max(r, std::abs(q.x()));
+                ro.slices = slices_for(r, o.tol / 2);
+            }
+            out.grid = revolution_grid(p, profile_closed, ro);
+            out.closed = profile_encloses(p.positions, kWeldRelative * bounding_box_diagonal(p.positions));
+        } else {
+            const CurveRecord& sweep = file.curves.at(rec.sweep_index);
+            const Polyline s = sample(sweep, o);
+            std::vector<double> scale;
+            if (rec.scale_index >= 0) {
+                // The scale curve is read by the sweep's normalized parameter: sweep sample
+                // at fraction f of the sweep's parameter range takes the scale curve's y at
+                // the same fraction of its own range. Neither curve's control point count
+                // matters, and a uniform and an adaptive sweep see the same scale function.
+                const CurveRecord& sc = file.curves.at(rec.scale_index);
+                const double s_end = param_end(sweep), c_end = param_end(sc);
+                for (double u : s.params) scale.push_back(record_point(sc, u / s_end * c_end).y());
+            }
+            CylinderOptions co;
+            co.frames = o.frames;
+            co.close_frames = o.close_frames;
+            const bool sweep_closed = sweep.closed();
+            out.closure_angle = sweep_closed ? sweep_frames(s, true, {o.frames, false}).closure_angle : 0;
+            out.grid = cylinder_grid(p, profile_closed, s, sweep_closed, co, scale);
+            out.closed = profile_closed && sweep_closed && o.close_frames;
+        }
+        out.surface = mesh_sweep(out.grid);
+    } catch (const ParseError&) {
+        throw;
+    } catch (const InputError& e) {
+        throw ParseError(file.path, rec.line, out.name + ": " + e.what());
+    }
+    return out;
+}
+
+}  // namespace crossdiv
