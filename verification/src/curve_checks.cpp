@@ -483,7 +483,7 @@ json to_json(const CurveReport& r) {
         if (!c.pass()) run["divergence_class"] = "unexplained";
         runs.push_back(run);
     }
-    return {{"input", r.input}, {"scheme", "curves"}, {"curves", r.curves}, {"runs", runs}, {"tables", r.tables}};
+    return {{"input", r.input}, {"scheme", r.scheme}, {r.scheme == "surfaces" ? "surfaces" : "curves", r.curves}, {"runs", runs}, {"tables", r.tables}};
 }
 
 bool is_curve_input(const std::string& spec) {

@@ -15,6 +15,7 @@
 #include "crossdiv/error.h"
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/verification/curve_checks.h"
+#include "crossdiv/verification/surface_checks.h"
 #include "crossdiv/verification/inputs.h"
 #include "crossdiv/verification/references.h"
 
@@ -43,17 +44,23 @@ double parse_number(const std::string& file, int line, const std::string& key, c
     throw ParseError(file, line, key + "=" + value + " is not a finite number");
 }
 
+/// Operations whose records are lists of measured checks (curve_checks.h, surface_checks.h)
+/// rather than Loop comparisons.
+bool is_check_operation(const std::string& op) { return op == "curves" || op == "surfaces"; }
+
 ManifestEntry parse_case(const std::string& file, int line, std::istringstream& words) {
     ManifestEntry e;
     e.line = line;
     std::string inputs, op;
     if (!(words >> inputs >> op)) throw ParseError(file, line, "expected: case INPUTS OPERATION [key=value ...]");
     e.inputs = split(inputs, ',');
-    if (op != "loop" && op != "curves") throw ParseError(file, line, "unknown operation '" + op + "' (known: loop, curves)");
+    if (op != "loop" && !is_check_operation(op))
+        throw ParseError(file, line, "unknown operation '" + op + "' (known: loop, curves, surfaces)");
     e.operation = op;
-    if (op == "curves") {
-        // The curve checks carry their own named tolerances (tolerances.h); nothing to set.
-        if (std::string extra; words >> extra) throw ParseError(file, line, "the curves operation takes no keys, got '" + extra + "'");
+    if (is_check_operation(op)) {
+        // The curve and surface checks carry their own named tolerances (tolerances.h).
+        if (std::string extra; words >> extra)
+            throw ParseError(file, line, "the " + op + " operation takes no keys, got '" + extra + "'");
         return e;
     }
     e.request.options = {LoopWeights::Loop, LoopBoundary::EdgeOnly};
@@ -96,7 +103,7 @@ ManifestEntry parse_case(const std::string& file, int line, std::istringstream& 
 }
 
 std::string describe_entry(const ManifestEntry& e) {
-    if (e.operation == "curves") return "curves";
+    if (is_check_operation(e.operation)) return e.operation;
     const LoopComparisonRequest& r = e.request;
     std::string s = e.operation + " weights=" + std::string(to_string(r.options.weights)) +
                     " boundary=" + std::string(to_string(r.options.boundary)) +
@@ -110,8 +117,8 @@ std::string describe_entry(const ManifestEntry& e) {
 }
 
 json failed_record(const SuiteJob& job, const std::string& why) {
-    if (job.entry->operation == "curves")
-        return {{"input", job.input}, {"scheme", "curves"}, {"core_error", why}, {"ours_failed", true}, {"runs", json::array()}};
+    if (is_check_operation(job.entry->operation))
+        return {{"input", job.input}, {"scheme", job.entry->operation}, {"core_error", why}, {"ours_failed", true}, {"runs", json::array()}};
     return {{"input", job.input}, {"scheme", job.entry->operation}, {"levels", job.entry->request.levels},
             {"tier", to_string(job.entry->request.tier)}, {"tolerance_rel", job.entry->request.tolerance},
             {"options", {{"weights", to_string(job.entry->request.options.weights)},
@@ -201,7 +208,9 @@ std::vector<SuiteJob> expand_jobs(const Manifest& manifest) {
     for (const ManifestEntry& e : manifest.entries) {
         std::vector<std::string> inputs;
         try {
-            inputs = e.operation == "curves" ? expand_curve_inputs(e.inputs) : expand_inputs(e.inputs);
+            inputs = e.operation == "curves"     ? expand_curve_inputs(e.inputs)
+                     : e.operation == "surfaces" ? expand_surface_inputs(e.inputs)
+                                                 : expand_inputs(e.inputs);
         } catch (const InputError& err) {
             throw ParseError(manifest.file, e.line, err.what());
         }
@@ -232,8 +241,9 @@ constexpr int kErrorFieldMaxFaces = 20000;
 
 namespace {
 
-json run_curves_job(const SuiteJob& job) {
+json run_check_job(const SuiteJob& job) {
     try {
+        if (job.entry->operation == "surfaces") return to_json(check_surface_input(job.input));
         return to_json(job.input == "curves:synthetic" ? check_synthetic() : check_curve_file(load_curve_input(job.input), job.input));
     } catch (const InputError& e) {
         json rec = failed_record(job, e.what());
@@ -247,8 +257,8 @@ json run_curves_job(const SuiteJob& job) {
 }  // namespace
 
 json run_job(const SuiteJob& job, const std::string& out_dir) {
-    if (job.entry->operation == "curves") {
-        json rec = run_curves_job(job);
+    if (is_check_operation(job.entry->operation)) {
+        json rec = run_check_job(job);
         rec["job"] = job.index;
         rec["id"] = job.id;
         rec["manifest_line"] = job.entry->line;
@@ -397,7 +407,7 @@ std::string run_outcome(const json& rec, const json& run) {
 }
 
 std::string describe_record(const json& rec) {
-    if (rec.value("scheme", "") == "curves" && !rec["runs"].empty()) {
+    if (is_check_operation(rec.value("scheme", "")) && !rec["runs"].empty()) {
         int failed = 0;
         std::string which;
         for (const json& run : rec["runs"])
@@ -405,7 +415,7 @@ std::string describe_record(const json& rec) {
                 ++failed;
                 if (which.size() < 200) which += " " + run.value("curve", "") + "/" + run.value("check", "");
             }
-        return std::to_string(rec["runs"].size()) + " curve checks" +
+        return std::to_string(rec["runs"].size()) + (rec.value("scheme", "") == "curves" ? " curve checks" : " surface checks") +
                (failed ? ", " + std::to_string(failed) + " FAILED:" + which : ", all within tolerance");
     }
     if (rec["runs"].empty())

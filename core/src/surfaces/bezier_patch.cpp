@@ -152,8 +152,16 @@ double max_boundary_gap(std::span<const BezierPatch> patches, int samples, int* 
             if (a / 4 == b / 4) continue;  // the same patch
             const auto& ea = edges[a].control;
             const auto& eb = edges[b].control;
-            const bool same = (ea.front() - eb.front()).norm() <= tol && (ea.back() - eb.back()).norm() <= tol;
-            const bool reversed = (ea.front() - eb.back()).norm() <= tol && (ea.back() - eb.front()).norm() <= tol;
+            // Shared: the same control polygon, in either direction. Two edges with common
+            // end points but other inner points are two different curves (the teapot
+            // handle's upper and lower halves), not a crack.
+            auto coincide = [&](bool reverse) {
+                if (ea.size() != eb.size()) return false;
+                for (size_t k = 0; k < ea.size(); ++k)
+                    if ((ea[k] - eb[reverse ? eb.size() - 1 - k : k]).norm() > tol) return false;
+                return true;
+            };
+            const bool same = coincide(false), reversed = !same && coincide(true);
             if (!same && !reversed) continue;
             if ((ea.front() - ea.back()).norm() <= tol) continue;  // a collapsed edge (a pole) matches everything
             ++pairs;

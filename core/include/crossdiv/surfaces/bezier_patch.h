@@ -64,8 +64,9 @@ Vec3 patch_normal(const BezierPatch& patch, double u, double v, NormalSource* so
 SurfaceMesh tessellate_patches(std::span<const BezierPatch> patches, int res);
 
 /// Largest gap between two patches along boundary curves they share: for each pair of
-/// patch edges whose end points coincide (within kWeldRelative of the model's size, either
-/// direction), the largest distance between the two edges' curves at `samples` parameters.
+/// patch edges with the same control polygon (within kWeldRelative of the model's size,
+/// either direction), the largest distance between the two edges' evaluated curves at
+/// `samples` + 1 parameters (each patch evaluates its own edge: rounding only, or a bug).
 /// Returns 0 when no edges are shared; `shared_edges` receives the number of edge pairs.
 double max_boundary_gap(std::span<const BezierPatch> patches, int samples, int* shared_edges = nullptr);
 

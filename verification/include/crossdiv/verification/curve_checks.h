@@ -62,6 +62,7 @@ HelixFrameStudy helix_frame_study();
 /// All checks of one input.
 struct CurveReport {
     std::string input;
+    std::string scheme = "curves";  ///< "curves", or "surfaces" for the surface checks (same shape)
     std::vector<std::string> curves;  ///< labels, in file order
     std::vector<CurveCheck> checks;
     nlohmann::json tables = nlohmann::json::object();  ///< "tessellation", "continuity", "degrees", "frames", "closure"

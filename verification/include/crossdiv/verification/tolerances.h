@@ -41,4 +41,30 @@ inline constexpr double kFrameOrthonormality = 1e-13;
 /// pre-asymptotic steps of the coarsest sampling.
 inline constexpr double kDoubleReflectionMinOrder = 3.5;
 
+/// Our signed volume and CGAL's PMP::volume sum the same determinants of the same triangles
+/// in different orders and groupings: they agree to this, relative to the volume.
+inline constexpr double kVolumeAgreementRelative = 1e-12;
+
+/// Bfr evaluates a regular Catmull-Clark face as the bicubic B-spline patch of its 16
+/// control points, as we do after converting to Bezier form; the two differ by rounding
+/// only. Relative to the control grid's bounding-box diagonal (derivatives: times 3).
+inline constexpr double kLimitSurfaceAgreement = 1e-12;
+
+/// A chord of length h sags h^2 / 8R below a circle, so the distance of a swept mesh from an
+/// exact sphere or torus falls as h^2: the slope fitted over five doublings of the
+/// resolution is 2 within a few hundredths once past the coarsest level; 1.8 still tells
+/// second order from first.
+inline constexpr double kSecondOrderMin = 1.8;
+
+/// Vertex normals of a surface swept from an exact profile are exact directions, rotated:
+/// they agree with the analytic normal to a few ulps of pi (radians).
+inline constexpr double kExactNormalRad = 1e-12;
+
+/// The cubic Bezier quarter circle (inner control points at 4/3 tan(pi/8) of the radius)
+/// bulges out by at most 2.7253e-4 of the radius (Dokken et al. 1990). A sphere swept from it
+/// stops converging at that value; the finest level's measured error lies within 10% of it
+/// (the rest is the chord sag of the finest level and where the samples fall).
+inline constexpr double kBezierCircleError = 2.7253e-4;
+inline constexpr double kBezierCirclePlateauRelative = 0.1;
+
 }  // namespace crossdiv::tolerances

@@ -3,7 +3,10 @@
 /// OpenSubdiv 3.5 (Far) adapter: uniform Loop refinement through Far::TopologyRefiner and
 /// Far::PrimvarRefinerReal<double>.
 
+#include <array>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "crossdiv/adapters/reference.h"
 #include "crossdiv/mesh/tri_mesh.h"
@@ -26,6 +29,20 @@ LevelTrace loop(const TriMesh& mesh, const LoopOptions& options, int levels);
 /// The same refinement in the library's own structures, with nothing converted back: what
 /// `crossdiv bench` times. Returns the number of output faces. @throws as loop().
 size_t loop_native(const TriMesh& mesh, const LoopOptions& options, int levels);
+
+/// A point of a limit surface with its first partial derivatives.
+struct LimitSample {
+    Vec3 position, du, dv;
+};
+struct LimitEvaluation {
+    bool regular = false;  ///< Bfr represents the face exactly by one regular bicubic patch
+    std::vector<LimitSample> samples;
+};
+/// The Catmull-Clark limit surface of one face of a polygon mesh, evaluated by Bfr
+/// (Bfr::RefinerSurfaceFactory, Surface<double>::Evaluate) at each (u, v). For a quad, u runs
+/// from its corner 0 to corner 1 and v from corner 0 to corner 3. Boundary rule EDGE_ONLY.
+/// @throws Rejected when Far refuses the mesh or the face has no limit surface.
+LimitEvaluation catmark_limit(const PolyMesh& mesh, int face, std::span<const std::array<double, 2>> uv);
 
 /// "OpenSubdiv 3.5.0" (from opensubdiv/version.h).
 std::string version();
