@@ -25,6 +25,7 @@
 #include "crossdiv/adapters/eigen_splines.h"
 #endif
 #include "curve_commands.h"
+#include "surface_commands.h"
 
 namespace {
 
@@ -249,6 +250,7 @@ int run_suite(const std::string& manifest_path, const std::string& out, int jobs
         {"seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()}};
     const nlohmann::json summary = write_suite_outputs(out, header, records);
     cli::print_curve_tables(records);
+    cli::print_surface_tables(records);
     fmt::print("results: {0}/results.json, {0}/results.csv, {0}/junit.xml\n", out);
     print_outcome_summary(summary);
     const int report_status = finish_outputs(out, report);
@@ -336,11 +338,12 @@ int run_bench_command(const std::string& json_path, const std::string& out_dir, 
                    ratio >= kBenchGoalRatio ? "met" : "NOT met", kBenchGoalRatio);
     }
     const nlohmann::json curves = cli::run_curve_bench(repeats);
+    const nlohmann::json surfaces = cli::run_surface_bench();
     nlohmann::json recs = nlohmann::json::array();
     for (const BenchRecord& r : records) recs.push_back(to_json(r));
     const nlohmann::json doc = {{"tool", "crossdiv bench"}, {"repeats", repeats}, {"memory", cold ? "cold" : "warm"},
                                 {"goal", goal}, {"records", recs}, {"curves", curves["tessellation"]},
-                                {"curve_timing", curves["timing"]},
+                                {"curve_timing", curves["timing"]}, {"adaptive_sweep", surfaces},
                                 {"note", "references timed through their native refinement (loop_native), output kept "
                                          "in the library's own structures"}};
     std::vector<std::string> paths;
@@ -442,6 +445,12 @@ int main(int argc, char** argv) {
     cli::TessellateArgs tess_args;
     auto* tess = app.add_subcommand("tessellate", "Tessellate every curve of an SWP or BZC file (points, tangents, normals, frames)");
     tess_args.add_to(*tess);
+    cli::SweepArgs sweep_args;
+    auto* sweep = app.add_subcommand("sweep", "Build every srev and gcyl record of an SWP file into an OBJ with normals");
+    sweep_args.add_to(*sweep);
+    cli::PatchArgs patch_args;
+    auto* patch = app.add_subcommand("patch", "Tessellate the Bezier patches of a BEZ file into one welded OBJ with normals");
+    patch_args.add_to(*patch);
     cli::CasteljauArgs cast_args;
     auto* cast = app.add_subcommand("casteljau", "Every de Casteljau level of a Bezier curve at t");
     cast_args.add_to(*cast);
@@ -463,6 +472,8 @@ int main(int argc, char** argv) {
         if (*diff) return run_diff(diff_in, diff_args, diff_against, diff_out);
         if (*tess) return cli::run_tessellate(tess_args);
         if (*cast) return cli::run_casteljau(cast_args);
+        if (*sweep) return cli::run_sweep(sweep_args);
+        if (*patch) return cli::run_patch(patch_args);
         if (*bench) return run_bench_command(bench_json, bench_out, bench_repeats, bench_quick, bench_cold);
     } catch (const InputError& e) {
         std::cerr << "crossdiv: error: " << e.what() << "\n";

@@ -104,5 +104,21 @@ printf 'suite curves\ncase curves:bundled,curves:synthetic curves\n' > "$tmp/cur
 expect suite-curves 0 'fitted order: recursive 1\.[0-9]+, double reflection 4\.0' -- "$crossdiv" suite "$tmp/curves.suite" --out "$tmp/cs" --jobs 2
 expect suite-curves-report 0 'curve_frames.png' -- cat "$tmp/cs/report.md"
 
+# Surfaces: sweep and patch on good input; bad input named by file and line.
+expect sweep-vase 0 'vase \(srev, line 3\): .* closed, watertight, signed volume' -- "$crossdiv" sweep surface:vase -o "$tmp/vase.obj"
+expect sweep-obj-normals 0 '^f [0-9]+//[0-9]+ [0-9]+//[0-9]+ [0-9]+//[0-9]+$' -- cat "$tmp/vase.obj"
+expect sweep-rmf 0 'knot-tube \(gcyl, line 3\): 2880 vertices, 5760 triangles, closed, watertight' -- "$crossdiv" sweep surface:knot-tube --frames rmf -o "$tmp/knot.obj"
+expect sweep-adaptive 0 'closed, watertight' -- "$crossdiv" sweep surface:vase --adaptive --tol 1e-3 -o "$tmp/vase_a.obj"
+expect sweep-no-tol 2 '--adaptive needs a positive, finite --tol' -- "$crossdiv" sweep surface:vase --adaptive -o "$tmp/x.obj"
+printf 'bez2 p 8 4 [-1 1] [1 0.5] [1 -0.5] [-1 -1]\nsrev cup 16 p\n' > "$tmp/cross.swp"
+expect sweep-cross-axis 2 'cross.swp:2: cup: the profile crosses the axis of revolution' -- "$crossdiv" sweep "$tmp/cross.swp" -o "$tmp/x.obj"
+printf 'circ c 8 1\n' > "$tmp/nosweep.swp"
+expect sweep-no-records 2 'nosweep.swp: no srev or gcyl record' -- "$crossdiv" sweep "$tmp/nosweep.swp" -o "$tmp/x.obj"
+expect patch-pillow 0 'surface:pillow: 6 patches, 1538 vertices, 3072 triangles \(0 collapsed at degenerate patch edges\), closed' -- "$crossdiv" patch surface:pillow --res 16 -o "$tmp/pillow.obj"
+printf '2\n0 0 0 1 0 0\n' > "$tmp/short.bez"
+expect patch-short 2 'short.bez:2: unexpected end of file: expected x of point 3 \(row 1\) of patch 1 of 2' -- "$crossdiv" patch "$tmp/short.bez" -o "$tmp/x.obj"
+printf 'suite surfaces\ncase surfaces:bundled,surfaces:synthetic surfaces\n' > "$tmp/surfaces.suite"
+expect suite-surfaces 0 'sphere \(exact circle profile\) +fitted order 1\.9' -- "$crossdiv" suite "$tmp/surfaces.suite" --out "$tmp/ss" --jobs 2 --no-report
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

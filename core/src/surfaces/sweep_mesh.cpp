@@ -72,14 +72,17 @@ double grid_deviation(const SweepGrid& g, const ExactSurface& exact, int k) {
         // Parameters of the cell's corners; a wrapped index takes the end parameter.
         const double s0 = sp(i), s1 = sp(i1 == 0 ? g.rings : i1), t0 = pp(j), t1 = pp(j1 == 0 ? g.ring_size : j1);
         const Vec3 &a = g.at(i, j), &b = g.at(i1, j), &c = g.at(i1, j1), &d = g.at(i, j1);
+        // Every parameter sample of the cell, measured against the nearer of the cell's two
+        // triangles: a cell's parameters do not split along its diagonal the way its points
+        // do (nor at all where a pole collapses one triangle).
+        auto cell_distance = [&](double t, double s) {
+            const Vec3 p = exact(t, s);
+            return std::min(point_triangle_distance(p, a, b, c), point_triangle_distance(p, a, c, d));
+        };
         for (int x = 0; x <= k; ++x)
-            for (int y = 0; x + y <= k; ++y) {
-                const double alpha = static_cast<double>(x) / k, beta = static_cast<double>(y) / k;
-                // Triangle (a, b, c): s moves with beta + gamma, t with gamma.
-                const double gamma = 1 - alpha - beta;
-                worst = std::max(worst, point_triangle_distance(exact(t0 + gamma * (t1 - t0), s0 + (beta + gamma) * (s1 - s0)), a, b, c));
-                // Triangle (a, c, d): s moves with beta, t with beta + gamma.
-                worst = std::max(worst, point_triangle_distance(exact(t0 + (beta + gamma) * (t1 - t0), s0 + beta * (s1 - s0)), a, c, d));
+            for (int y = 0; y <= k; ++y) {
+                const double ft = static_cast<double>(x) / k, fs = static_cast<double>(y) / k;
+                worst = std::max(worst, cell_distance(t0 + ft * (t1 - t0), s0 + fs * (s1 - s0)));
             }
     });
     return worst;

@@ -19,7 +19,7 @@ Polyline sample(const CurveRecord& r, const SweepOptions& o) {
     TessellationOptions t;
     if (o.adaptive) {
         t.mode = TessellationMode::Distance;
-        t.tol = o.tol / 2;
+        t.tol = o.tol * o.curve_share;
     }
     return tessellate_record(r, t);
 }
@@ -52,6 +52,7 @@ ExactSurface exact_revolution(const CurveRecord& profile) {
 
 SweepSurface build_sweep(const CurveFile& file, int index, const SweepOptions& o) {
     if (o.adaptive && !(o.tol > 0)) throw InputError("adaptive sweeps need a positive --tol");
+    if (o.adaptive && !(o.curve_share > 0 && o.curve_share < 1)) throw InputError("curve_share must be in (0, 1)");
     const SweepRecord& rec = file.sweeps.at(index);
     SweepSurface out;
     out.record = rec;
@@ -67,7 +68,7 @@ SweepSurface build_sweep(const CurveFile& file, int index, const SweepOptions& o
             if (o.adaptive) {
                 double r = 0;
                 for (const Vec3& q : p.positions) r = std::max(r, std::abs(q.x()));
-                ro.slices = slices_for(r, o.tol / 2);
+                ro.slices = slices_for(r, o.tol * (1 - o.curve_share));
             }
             out.grid = revolution_grid(p, profile_closed, ro);
             out.closed = profile_encloses(p.positions, kWeldRelative * bounding_box_diagonal(p.positions));

@@ -36,12 +36,11 @@ SurfaceMesh mesh_sweep(const SweepGrid& grid);
 /// Exact surface point at (profile parameter, sweep parameter).
 using ExactSurface = std::function<Vec3(double profile_param, double sweep_param)>;
 
-/// Measured deviation of the meshed grid from the exact surface it samples: every cell's
-/// two triangles are sampled at `k` x `k` parameter points each (barycentric in the
-/// parameter domain of the triangle), the exact point at each is computed, and its distance
-/// to the flat triangle is taken. The maximum over all samples: measured, and at least the
-/// one-sided Hausdorff distance from the surface to the mesh (each surface point is
-/// measured against the triangle that carries its parameters, never a farther one's).
+/// Measured deviation of the meshed grid from the exact surface it samples: every cell is
+/// sampled at (k + 1) x (k + 1) parameter points, the exact point at each is computed, and
+/// its distance to the nearer of the cell's two flat triangles is taken. The maximum over
+/// all samples: measured, and at least the one-sided Hausdorff distance from the surface to
+/// the mesh (a point is never measured against a farther triangle than its nearest one).
 double grid_deviation(const SweepGrid& grid, const ExactSurface& exact, int k = 6);
 
 /// Distance from p to the triangle abc (closest point by region, Ericson 2005, 5.1.5).

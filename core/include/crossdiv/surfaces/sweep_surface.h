@@ -15,11 +15,12 @@ struct SweepOptions {
     FrameMethod frames = FrameMethod::Recursive;  ///< gcyl: recursive (the seed's) or DoubleReflection
     bool close_frames = true;                     ///< gcyl: distribute the closure angle of closed sweeps
     /// Uniform (false): every curve with its record's STEPS, srev with the record's slices.
-    /// Adaptive (true): the curves by the distance mode at tol / 2, and srev with the fewest
-    /// slices whose chord stays within tol / 2 of the widest circle, r (1 - cos(pi / n));
-    /// the two halves of the budget add up to at most about tol.
+    /// Adaptive (true): the curves by the distance mode at curve_share * tol, and srev with
+    /// the fewest slices whose chord stays within (1 - curve_share) * tol of the widest
+    /// circle, r (1 - cos(pi / n)); the two parts add up to at most about tol.
     bool adaptive = false;
-    double tol = 0;  ///< absolute, for adaptive
+    double tol = 0;            ///< absolute, for adaptive
+    double curve_share = 0.5;  ///< adaptive srev: the part of tol given to the profile, in (0, 1)
 };
 
 /// One built surface.

@@ -1,0 +1,220 @@
+#include "surface_commands.h"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "crossdiv/datasets/bundled_surfaces.h"
+#include "crossdiv/error.h"
+#include "crossdiv/io/curve_io.h"
+#include "crossdiv/io/mesh_io.h"
+#include "crossdiv/io/patch_io.h"
+#include "crossdiv/surfaces/sweep_surface.h"
+
+namespace crossdiv::cli {
+using nlohmann::json;
+
+void SweepArgs::add_to(CLI::App& app) {
+    app.add_option("input", input, "SWP file with srev and gcyl records, or surface:NAME (bundled)")->required();
+    app.add_option("-o,--out", out, "Output OBJ (v, vn, f a//a)")->required();
+    app.add_option("--frames", frames, "gcyl frames: recursive (the seed's) or rmf (double reflection)")
+        ->check(CLI::IsMember({"recursive", "rmf"}))
+        ->capture_default_str();
+    app.add_flag("--adaptive", adaptive, "Distance-adaptive curves (and srev slices) instead of each record's STEPS");
+    app.add_option("--tol", tol, "Adaptive: the largest distance from the exact surface (absolute)");
+}
+
+void PatchArgs::add_to(CLI::App& app) {
+    app.add_option("input", input, "BEZ file, or surface:NAME (a bundled BEZ model)")->required();
+    app.add_option("-o,--out", out, "Output OBJ (v, vn, f a//a)")->required();
+    app.add_option("--res", res, "Quads per patch side")->check(CLI::Range(1, 1024))->capture_default_str();
+}
+
+namespace {
+
+void require_obj(const std::string& out) {
+    if (std::filesystem::path(out).extension() != ".obj") throw InputError(out + ": the output must be an .obj file");
+}
+
+void write(const std::string& path, const SurfaceMesh& s) {
+    std::ofstream f(path);
+    if (!f) throw InputError(path + ": cannot write");
+    write_obj(f, to_poly_mesh(s.mesh), s.normals);
+}
+
+/// Appends b to a, offsetting its indices.
+void append(SurfaceMesh& a, const SurfaceMesh& b) {
+    const int base = a.mesh.num_vertices();
+    a.mesh.positions.insert(a.mesh.positions.end(), b.mesh.positions.begin(), b.mesh.positions.end());
+    a.normals.insert(a.normals.end(), b.normals.begin(), b.normals.end());
+    for (Triangle t : b.mesh.triangles) a.mesh.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+    a.collapsed_triangles += b.collapsed_triangles;
+}
+
+std::string bundled_text(const std::string& spec, const char* format) {
+    const datasets::BundledCurve& b = datasets::bundled_surface(spec.substr(8));
+    if (b.format != format) throw InputError(spec + " is a " + b.format + " model, not " + format);
+    return b.text;
+}
+
+}  // namespace
+
+int run_sweep(const SweepArgs& a) {
+    require_obj(a.out);
+    CurveFile file;
+    if (a.input.starts_with("surface:")) {
+        std::istringstream in(bundled_text(a.input, "swp"));
+        file = read_swp(in, a.input);
+    } else {
+        file = read_swp(a.input);
+    }
+    if (file.sweeps.empty()) throw InputError(a.input + ": no srev or gcyl record");
+    if (a.adaptive && !(a.tol > 0 && std::isfinite(a.tol))) throw InputError("--adaptive needs a positive, finite --tol");
+    if (!a.adaptive && a.tol != 0) throw InputError("--tol is for --adaptive sweeps");
+    SweepOptions o;
+    o.frames = a.frames == "rmf" ? FrameMethod::DoubleReflection : FrameMethod::Recursive;
+    o.adaptive = a.adaptive;
+    o.tol = a.tol;
+    SurfaceMesh all;
+    for (int k = 0; k < static_cast<int>(file.sweeps.size()); ++k) {
+        const SweepSurface s = build_sweep(file, k, o);
+        const int boundary = boundary_edge_count(s.surface.mesh);
+        fmt::print("{} ({}, line {}): {} vertices, {} triangles, {}{}, signed volume {:.6g}\n", s.name,
+                   s.record.kind == SweepRecord::Kind::Revolution ? "srev" : "gcyl", s.record.line, s.surface.mesh.num_vertices(),
+                   s.surface.mesh.num_faces(), s.closed ? "closed" : "open",
+                   s.closed ? (boundary == 0 ? ", watertight" : fmt::format(", NOT watertight: {} boundary edges", boundary)) : "",
+                   signed_volume(s.surface.mesh));
+        append(all, s.surface);
+    }
+    write(a.out, all);
+    fmt::print("wrote {}\n", a.out);
+    return 0;
+}
+
+int run_patch(const PatchArgs& a) {
+    require_obj(a.out);
+    std::vector<BezierPatch> patches;
+    if (a.input.starts_with("surface:")) {
+        std::istringstream in(bundled_text(a.input, "bez"));
+        patches = read_bez(in, a.input);
+    } else {
+        patches = read_bez(a.input);
+    }
+    const SurfaceMesh s = tessellate_patches(patches, a.res);
+    const int boundary = boundary_edge_count(s.mesh);
+    fmt::print("{}: {} patches, {} vertices, {} triangles ({} collapsed at degenerate patch edges), {}\n", a.input, patches.size(),
+               s.mesh.num_vertices(), s.mesh.num_faces(), s.collapsed_triangles,
+               boundary == 0 ? "closed (no boundary edge)" : fmt::format("{} boundary edges", boundary));
+    write(a.out, s);
+    fmt::print("wrote {}\n", a.out);
+    return 0;
+}
+
+json run_surface_bench() {
+    // The seed's comparison: uniform steps (the record's) against adaptive steps, both
+    // meshes measured against the exact surface of revolution.
+    std::string course;
+    for (const std::string& f : datasets::course_surface_files())
+        if (std::filesystem::path(f).filename() == "wineglass.swp") course = f;
+    CurveFile file;
+    std::string input;
+    if (!course.empty()) {
+        file = read_swp(course);
+        input = course;
+    } else {
+        std::istringstream in(datasets::bundled_surface("vase").text);
+        file = read_swp(in, "surface:vase");
+        input = "surface:vase (the course wineglass is not present)";
+    }
+    const SweepRecord& rec = file.sweeps.at(0);
+    const ExactSurface exact = exact_revolution(file.curves.at(rec.profile_index));
+    const SweepSurface uniform = build_sweep(file, 0, {});
+    const double uniform_dev = grid_deviation(uniform.grid, exact);
+    // The adaptive sweep with the fewest faces whose measured deviation is within the
+    // uniform mesh's: for each split of the budget between profile and slices, the largest
+    // tolerance (from twice that deviation, shrinking by 5%) that measures within it.
+    SweepOptions o;
+    SweepSurface adaptive;
+    double adaptive_dev = 0;
+    for (double share : {0.3, 0.4, 0.5, 0.6, 0.7}) {
+        SweepOptions t;
+        t.adaptive = true;
+        t.curve_share = share;
+        t.tol = 2 * uniform_dev;
+        for (int round = 0; round < 60; ++round, t.tol *= 0.95) {
+            SweepSurface s = build_sweep(file, 0, t);
+            const double dev = grid_deviation(s.grid, exact);
+            if (dev > uniform_dev) continue;
+            if (adaptive.surface.mesh.num_faces() == 0 || s.surface.mesh.num_faces() < adaptive.surface.mesh.num_faces()) {
+                adaptive = std::move(s);
+                adaptive_dev = dev;
+                o = t;
+            }
+            break;
+        }
+    }
+    const int uf = uniform.surface.mesh.num_faces(), af = adaptive.surface.mesh.num_faces();
+    constexpr int kSeedUniform = 33120, kSeedAdaptive = 18540;
+    const double ratio = static_cast<double>(uf) / af, seed_ratio = static_cast<double>(kSeedUniform) / kSeedAdaptive;
+    fmt::print("\nadaptive sweep: {} ({})\n", input, uniform.name);
+    fmt::print("  {:<10} {:>8} {:>8} {:>10} {:>12}\n", "mode", "faces", "slices", "profile", "deviation");
+    fmt::print("  {:<10} {:>8} {:>8} {:>10} {:>12.4e}\n", "uniform", uf, uniform.grid.rings, uniform.grid.ring_size, uniform_dev);
+    fmt::print("  {:<10} {:>8} {:>8} {:>10} {:>12.4e}   (tol {:.4e}, profile share {:.1f})\n", "adaptive", af,
+               adaptive.grid.rings, adaptive.grid.ring_size, adaptive_dev, o.tol, o.curve_share);
+    fmt::print("  uniform / adaptive faces: {:.2f} (the seed's: {} / {} = {:.2f}); {}\n", ratio, kSeedUniform, kSeedAdaptive,
+               seed_ratio, ratio > seed_ratio && adaptive_dev <= uniform_dev ? "beats the seed's ratio at equal deviation" : "does NOT beat the seed's ratio");
+    return {{"input", input},
+            {"surface", uniform.name},
+            {"uniform", {{"faces", uf}, {"slices", uniform.grid.rings}, {"profile_samples", uniform.grid.ring_size}, {"deviation", uniform_dev}}},
+            {"adaptive", {{"faces", af}, {"slices", adaptive.grid.rings}, {"profile_samples", adaptive.grid.ring_size},
+                          {"deviation", adaptive_dev}, {"tol", o.tol}, {"curve_share", o.curve_share}}},
+            {"ratio", ratio},
+            {"seed", {{"uniform_faces", kSeedUniform}, {"adaptive_faces", kSeedAdaptive}, {"ratio", seed_ratio}}},
+            {"beats_seed", ratio > seed_ratio && adaptive_dev <= uniform_dev}};
+}
+
+void print_surface_tables(const std::vector<json>& records) {
+    for (const json& rec : records) {
+        if (rec.value("scheme", "") != "surfaces" || !rec.contains("tables")) continue;
+        const json& t = rec["tables"];
+        if (t.contains("sphere") || t.contains("torus")) {
+            fmt::print("\nsurfaces against exact surfaces (mesh-to-surface distance, normal errors in rad):\n");
+            fmt::print("  {:<32} {:>5} {:>8} {:>11} {:>11} {:>11}\n", "surface", "n", "faces", "distance", "vertex-n", "face-n");
+            for (const char* key : {"sphere", "torus"})
+                for (const json& r : t.value(key, json::array())) {
+                    if (r.contains("fitted_order")) {
+                        fmt::print("  {:<32} fitted order {:.3f}\n", r.value("surface", ""), r.value("fitted_order", 0.0));
+                        continue;
+                    }
+                    fmt::print("  {:<32} {:>5} {:>8} {:>11.3e} {:>11.3e} {:>11.3e}\n", r.value("surface", ""),
+                               r.contains("profile_intervals") ? r["profile_intervals"].get<int>() : r.value("profile_steps", 0),
+                               r.value("faces", 0), r.contains("radial_error") ? r["radial_error"].get<double>() : r.value("distance_error", 0.0),
+                               r.value("vertex_normal_error_rad", 0.0), r.value("face_normal_error_rad", 0.0));
+                }
+        }
+        if (t.contains("bfr")) {
+            fmt::print("\nCatmull-Clark limit of regular grids against OpenSubdiv Bfr:\n");
+            for (const json& r : t["bfr"])
+                fmt::print("  {:<12} {} faces ({} regular), {} samples: position {:.2e}, derivatives {:.2e} (relative)\n",
+                           r.value("grid", ""), r.value("faces", 0), r.value("regular", 0), r.value("samples", 0),
+                           r.value("max_position_rel", 0.0), r.value("max_derivative_rel", 0.0));
+        }
+    }
+    bool header = false;
+    for (const json& rec : records) {
+        if (rec.value("scheme", "") != "surfaces" || !rec.contains("tables") || !rec["tables"].contains("surfaces")) continue;
+        if (!header) {
+            fmt::print("\nsurfaces built (closed ones must be watertight and outward):\n");
+            fmt::print("  {:<34} {:>5} {:>8} {:>7} {:>9} {:>12} {:>6}\n", "surface", "kind", "faces", "closed", "boundary", "volume", "folds");
+            header = true;
+        }
+        for (const json& r : rec["tables"]["surfaces"])
+            fmt::print("  {:<34} {:>5} {:>8} {:>7} {:>9} {:>12.6g} {:>6}\n", r.value("surface", "").substr(0, 34), r.value("kind", ""),
+                       r.value("faces", 0), r.value("closed", false) ? "yes" : "no", r.value("boundary_edges", 0),
+                       r.value("signed_volume", 0.0), r.contains("fold") ? r["fold"].value("faces", 0) : 0);
+    }
+}
+
+}  // namespace crossdiv::cli

@@ -1,0 +1,78 @@
+// The surface checks: studies against exact surfaces and Bfr, bundled models, and proof
+// that the closed-surface checks fail on a broken mesh.
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "crossdiv/datasets/bundled_surfaces.h"
+#include "crossdiv/error.h"
+#include "crossdiv/io/patch_io.h"
+#include "crossdiv/verification/surface_checks.h"
+
+using namespace crossdiv;
+using namespace crossdiv::verification;
+
+namespace {
+
+const CurveCheck* find(const CurveReport& r, const std::string& surface, const std::string& check, const std::string& ref) {
+    for (const CurveCheck& c : r.checks)
+        if (c.curve == surface && c.check == check && c.reference == ref) return &c;
+    return nullptr;
+}
+
+}  // namespace
+
+TEST(SurfaceChecks, StudiesMatchTheExactSurfacesAndBfr) {
+    const CurveReport r = check_surface_studies();
+    for (const CurveCheck& c : r.checks) EXPECT_TRUE(c.pass()) << c.curve << " " << c.check << " " << c.measured << " > " << c.tolerance;
+    const CurveCheck* order = find(r, "sphere (exact circle profile)", "radial-order", "analytic");
+    ASSERT_NE(order, nullptr);
+    EXPECT_NEAR(r.tables["sphere"][5]["fitted_order"].get<double>(), 2.0, 0.05);
+#ifdef CROSSDIV_HAS_OPENSUBDIV
+    const CurveCheck* bfr = find(r, "bfr grid 1", "limit-position", "opensubdiv-bfr");
+    ASSERT_NE(bfr, nullptr);
+    EXPECT_LT(bfr->measured, 1e-14);
+#endif
+}
+
+TEST(SurfaceChecks, EveryBundledSurfacePasses) {
+    for (const std::string& spec : expand_surface_inputs({"surfaces:bundled"})) {
+        const CurveReport r = check_surface_input(spec);
+        EXPECT_FALSE(r.checks.empty()) << spec;
+        for (const CurveCheck& c : r.checks) EXPECT_TRUE(c.pass()) << spec << ": " << c.curve << " " << c.check << " " << c.note;
+    }
+}
+
+TEST(SurfaceChecks, ClosedChecksCatchAFlippedFaceAndAHole) {
+    std::istringstream in(datasets::bundled_surface("pillow").text);
+    const std::vector<BezierPatch> patches = read_bez(in, "pillow");
+    SurfaceMesh s = tessellate_patches(patches, 4);
+    std::vector<CurveCheck> good, flipped, holed;
+    check_surface_mesh("pillow", s, true, good);
+    for (const CurveCheck& c : good) EXPECT_TRUE(c.pass()) << c.check;
+    SurfaceMesh f = s;
+    std::swap(f.mesh.triangles[7][1], f.mesh.triangles[7][2]);
+    check_surface_mesh("pillow", f, true, flipped);
+    auto failed = [](const std::vector<CurveCheck>& cs, const std::string& check) {
+        for (const CurveCheck& c : cs)
+            if (c.check == check && !c.pass()) return true;
+        return false;
+    };
+    EXPECT_TRUE(failed(flipped, "mesh-errors"));
+    EXPECT_TRUE(failed(flipped, "normals-vs-faces"));
+    SurfaceMesh h = s;
+    h.mesh.triangles.pop_back();
+    check_surface_mesh("pillow", h, true, holed);
+    EXPECT_TRUE(failed(holed, "watertight"));
+#ifdef CROSSDIV_HAS_CGAL
+    EXPECT_TRUE(failed(holed, "valid-closed"));
+#endif
+}
+
+TEST(SurfaceChecks, InputNamesAreValidated) {
+    EXPECT_THROW(expand_surface_inputs({"surfaces:nothing"}), InputError);
+    EXPECT_THROW(expand_surface_inputs({"mesh.obj"}), InputError);
+    EXPECT_THROW(check_surface_input("surface:no-such"), InputError);
+    EXPECT_EQ(expand_surface_inputs({"surfaces:bundled"}).size(), datasets::bundled_surfaces().size());
+}
