@@ -222,6 +222,64 @@ def timing(bench, figdir):
     return path, rows
 
 
+def surface_section(surface_cases, bench, figdir):
+    """The surface checks: (markdown lines, html parts). Empty when the suite ran no surfaces."""
+    sweep = (bench or {}).get("adaptive_sweep")
+    if not surface_cases and not sweep:
+        return [], []
+    md, body = ["", "## Surfaces", ""], ["<h2>Surfaces</h2>"]
+    built = [r for c in surface_cases for r in c.get("tables", {}).get("surfaces", [])]
+    if built:
+        header = ["surface", "kind", "faces", "closed", "boundary edges", "signed volume", "CGAL outward", "fold faces"]
+        rows = [(r["surface"], r.get("kind", ""), r["faces"], "yes" if r["closed"] else "no", r["boundary_edges"],
+                 fmt(r["signed_volume"]), ("yes" if r["cgal"]["outward"] else "NO") if "cgal" in r else "-",
+                 r.get("fold", {}).get("faces", 0)) for r in built]
+        md += ["Every surface built; closed ones must be watertight, manifold and outward (our checks and CGAL's).", "",
+               "| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+        md += ["| " + " | ".join(str(v) for v in r) + " |" for r in rows]
+        body.append(table_html(header, rows))
+    for c in surface_cases:
+        t = c.get("tables", {})
+        if "sphere" in t or "torus" in t:
+            fig, ax = plt.subplots(figsize=(5, 3.6))
+            for key, err in (("sphere", "radial_error"), ("torus", "distance_error")):
+                series = {}
+                for r in t.get(key, []):
+                    if err in r:
+                        series.setdefault(r["surface"], []).append((r["faces"], r[err]))
+                for name, pts in series.items():
+                    ax.loglog([p[0] for p in pts], [p[1] for p in pts], marker="o", label=name)
+            ax.set_xlabel("faces")
+            ax.set_ylabel("max distance to the exact surface")
+            ax.set_title("Swept surfaces against exact ones")
+            ax.legend(fontsize=7)
+            save(fig, figdir, "surface_convergence.png")
+            md += ["", "![surfaces against exact surfaces](figures/surface_convergence.png)", ""]
+            body.append('<img src="figures/surface_convergence.png">')
+            orders = [(r["surface"], fmt(r["fitted_order"])) for key in ("sphere", "torus") for r in t.get(key, []) if "fitted_order" in r]
+            md += ["| surface | fitted order |", "|---|---|"] + [f"| {a} | {b} |" for a, b in orders]
+            body.append(table_html(["surface", "fitted order"], orders))
+        if "bfr" in t:
+            rows = [(r["grid"], r["faces"], r["regular"], r["samples"], fmt(r["max_position_rel"]), fmt(r["max_derivative_rel"]))
+                    for r in t["bfr"]]
+            header = ["grid", "faces", "regular (Bfr)", "samples", "position rel", "derivatives rel"]
+            md += ["", "Catmull-Clark limit of regular grids: our bicubic Bezier form against OpenSubdiv's Bfr.", "",
+                   "| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+            md += ["| " + " | ".join(str(v) for v in r) + " |" for r in rows]
+            body.append(table_html(header, rows))
+    if sweep:
+        u, a, seed = sweep["uniform"], sweep["adaptive"], sweep["seed"]
+        rows = [("uniform (the record's steps)", u["faces"], u["slices"], u["profile_samples"], fmt(u["deviation"])),
+                ("adaptive, equal measured deviation", a["faces"], a["slices"], a["profile_samples"], fmt(a["deviation"]))]
+        header = ["wineglass", "faces", "slices", "profile samples", "deviation"]
+        md += ["", f"Adaptive sweep ({sweep['input']}): uniform / adaptive faces {sweep['ratio']:.2f}, the seed's "
+               f"{seed['uniform_faces']} / {seed['adaptive_faces']} = {seed['ratio']:.2f}.", "",
+               "| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+        md += ["| " + " | ".join(str(v) for v in r) + " |" for r in rows]
+        body.append(table_html(header, rows))
+    return md, body
+
+
 def curve_section(curve_cases, bench, figdir):
     """The curve checks: (markdown lines, html parts). Empty when the suite ran no curves."""
     if not curve_cases and not (bench and bench.get("curves")):
@@ -334,8 +392,9 @@ def main(folder):
     # Curve records have their own section; every mesh figure and table below reads `results`
     # with the mesh cases only.
     curve_cases = [c for c in results["cases"] if c.get("scheme") == "curves"]
-    results = dict(results, cases=[c for c in results["cases"] if c.get("scheme") != "curves"])
-    curve_failures = [(c, r) for c in curve_cases for r in c["runs"] if r["verdict"] != "agree"]
+    surface_cases = [c for c in results["cases"] if c.get("scheme") == "surfaces"]
+    results = dict(results, cases=[c for c in results["cases"] if c.get("scheme") not in ("curves", "surfaces")])
+    curve_failures = [(c, r) for c in curve_cases + surface_cases for r in c["runs"] if r["verdict"] != "agree"]
     has_mesh = bool(results["cases"])
     if has_mesh:
         summary_matrix(results, figdir)
@@ -371,13 +430,15 @@ def main(folder):
                           "class": r.get("divergence_class", "unexplained"), "max_rel": r["measured"], "worst": r["curve"],
                           "values": f"{r['check']}: {fmt(r['measured'])} > {fmt(r['tolerance'])} {r['unit']}",
                           "explanation": r.get("explanation", "")})
-    for c in curve_cases:
+    for c in curve_cases + surface_cases:
         if not c["runs"]:
             catalogue.append({"case": c["id"], "reference": "core", "outcome": outcome(c, {}),
                               "class": "ours-failed" if c.get("ours_failed") else "ours-rejected", "max_rel": None,
                               "worst": "-", "values": "-", "explanation": c.get("core_error", "")})
     class_counts = Counter((row["class"], row["reference"]) for row in catalogue)
     curve_md, curve_html = curve_section(curve_cases, bench, figdir)
+    surface_md, surface_html = surface_section(surface_cases, bench, figdir)
+    curve_md, curve_html = curve_md + surface_md, curve_html + surface_html
 
     s = results["summary"]
     refs = ", ".join(f"{r['name']} ({r['version']})" for r in results.get("references", []))

@@ -118,7 +118,8 @@ expect patch-pillow 0 'surface:pillow: 6 patches, 1538 vertices, 3072 triangles 
 printf '2\n0 0 0 1 0 0\n' > "$tmp/short.bez"
 expect patch-short 2 'short.bez:2: unexpected end of file: expected x of point 3 \(row 1\) of patch 1 of 2' -- "$crossdiv" patch "$tmp/short.bez" -o "$tmp/x.obj"
 printf 'suite surfaces\ncase surfaces:bundled,surfaces:synthetic surfaces\n' > "$tmp/surfaces.suite"
-expect suite-surfaces 0 'sphere \(exact circle profile\) +fitted order 1\.9' -- "$crossdiv" suite "$tmp/surfaces.suite" --out "$tmp/ss" --jobs 2 --no-report
+expect suite-surfaces 0 'sphere \(exact circle profile\) +fitted order 1\.9' -- "$crossdiv" suite "$tmp/surfaces.suite" --out "$tmp/ss" --jobs 2
+expect suite-surfaces-report 0 'surface_convergence.png' -- cat "$tmp/ss/report.md"
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
