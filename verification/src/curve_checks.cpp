@@ -11,6 +11,7 @@
 #include "crossdiv/io/curve_io.h"
 #include "crossdiv/mesh/tri_mesh.h"
 #include "crossdiv/verification/tolerances.h"
+#include "check_inputs.h"
 #ifdef CROSSDIV_HAS_EIGEN_SPLINES
 #include "crossdiv/adapters/eigen_splines.h"
 #endif
@@ -486,26 +487,25 @@ json to_json(const CurveReport& r) {
     return {{"input", r.input}, {"scheme", r.scheme}, {r.scheme == "surfaces" ? "surfaces" : "curves", r.curves}, {"runs", runs}, {"tables", r.tables}};
 }
 
-bool is_curve_input(const std::string& spec) {
-    return spec.starts_with("curve:") || spec.starts_with("curves:") || spec.ends_with(".swp") || spec.ends_with(".bzc") ||
-           spec.ends_with(".SWP") || spec.ends_with(".BZC");
+namespace {
+
+std::vector<std::string> bundled_curve_names() {
+    std::vector<std::string> names;
+    for (const auto& b : datasets::bundled_curves()) names.push_back(b.name);
+    return names;
 }
 
+const detail::CheckInputFamily& curve_inputs() {
+    static const detail::CheckInputFamily f{"curves", "curve", {".swp", ".bzc"}, bundled_curve_names, datasets::course_curve_files};
+    return f;
+}
+
+}  // namespace
+
+bool is_curve_input(const std::string& spec) { return detail::is_check_input(curve_inputs(), spec); }
+
 std::vector<std::string> expand_curve_inputs(const std::vector<std::string>& specs) {
-    std::vector<std::string> out;
-    for (const std::string& s : specs) {
-        if (s == "curves:bundled") {
-            for (const auto& c : datasets::bundled_curves()) out.push_back("curve:" + c.name);
-        } else if (s == "curves:course") {
-            for (const auto& f : datasets::course_curve_files()) out.push_back(f);
-        } else if (s == "curves:synthetic" || !s.starts_with("curves:")) {
-            if (!is_curve_input(s)) throw InputError("'" + s + "' is not a curve input (a .swp or .bzc file, curve:NAME, curves:bundled, curves:course, curves:synthetic)");
-            out.push_back(s);
-        } else {
-            throw InputError("unknown curve collection '" + s + "' (known: curves:bundled, curves:course, curves:synthetic)");
-        }
-    }
-    return out;
+    return detail::expand_check_inputs(curve_inputs(), specs);
 }
 
 CurveFile load_curve_input(const std::string& spec) {

@@ -14,6 +14,7 @@
 #include "crossdiv/mesh/mesh_checks.h"
 #include "crossdiv/surfaces/sweep_surface.h"
 #include "crossdiv/verification/tolerances.h"
+#include "check_inputs.h"
 #ifdef CROSSDIV_HAS_CGAL
 #include "crossdiv/adapters/cgal.h"
 #endif
@@ -143,11 +144,10 @@ std::vector<char> folded_vertices(const CurveFile& file, const SweepSurface& s) 
     // Welding a tube joins nothing unless the surface touches itself at a grid point; the
     // mesh's vertices are then the grid's, in order, and the classification applies.
     if (s.surface.mesh.num_vertices() != static_cast<int>(g.positions.size())) return {};
-    const CurveRecord& sweep = file.curves.at(s.record.sweep_index);
-    const BezierChain chain = sweep.type == CurveType::Primitive ? BezierChain{} : sweep.chain();
+    const auto sweep = record_evaluator(file.curves.at(s.record.sweep_index));
     std::vector<char> folded(g.positions.size(), 0);
     for (int i = 0; i < g.rings; ++i) {
-        const ChainJet j = sweep.type == CurveType::Primitive ? sweep.primitive.jet(g.sweep_params[i]) : chain_jet(chain, g.sweep_params[i]);
+        const ChainJet j = sweep(g.sweep_params[i]);
         const double speed = j.d1.norm();
         if (!(speed > 0)) continue;
         // Curvature vector k = (d1 x d2) x d1 / |d1|^4: the tube map's Jacobian along the sweep
@@ -205,10 +205,10 @@ CurveReport check_patch_file(std::span<const BezierPatch> patches, const std::st
     r.curves.push_back(name);
     // Second algorithm: the Bernstein tensor sum, relative to each patch's control diagonal.
     double worst = 0, allowed = 0;
+    std::vector<Vec3> all;
     for (const BezierPatch& p : patches) {
-        Vec3 lo = p.control[0], hi = lo;
-        for (const Vec3& c : p.control) lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
-        const double diag = std::max((hi - lo).norm(), 1e-300);
+        all.insert(all.end(), p.control.begin(), p.control.end());
+        const double diag = std::max(bounding_box_diagonal(p.control), 1e-300);
         for (int i = 0; i <= 10; ++i)
             for (int j = 0; j <= 10; ++j)
                 worst = std::max(worst, (patch_point(p, i / 10.0, j / 10.0) - patch_bernstein_point(p, i / 10.0, j / 10.0)).norm() / diag);
@@ -218,10 +218,7 @@ CurveReport check_patch_file(std::span<const BezierPatch> patches, const std::st
                         "de Casteljau (rows at u, column at v) against the tensor Bernstein sum, 11 x 11 per patch"});
     int shared = 0;
     const double gap = max_boundary_gap(patches, 32, &shared);
-    Vec3 lo = patches.empty() ? Vec3::Zero() : patches[0].control[0], hi = lo;
-    for (const BezierPatch& p : patches)
-        for (const Vec3& c : p.control) lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
-    const double diag = (hi - lo).norm();
+    const double diag = bounding_box_diagonal(all);
     r.checks.push_back({name, "boundary-gap", "neighbour patch", diag > 0 ? gap / diag : gap, tolerances::kCurveRoundingUlps * kEps, "rel",
                         std::to_string(shared) + " shared patch edges, 33 samples each"});
     const SurfaceMesh s = tessellate_patches(patches, 8);
@@ -412,27 +409,25 @@ CurveReport check_surface_studies() {
     return r;
 }
 
-bool is_surface_input(const std::string& spec) {
-    return spec.starts_with("surface:") || spec.starts_with("surfaces:") || spec.ends_with(".bez") || spec.ends_with(".BEZ") ||
-           spec.ends_with(".swp") || spec.ends_with(".SWP");
+namespace {
+
+std::vector<std::string> bundled_surface_names() {
+    std::vector<std::string> names;
+    for (const auto& b : datasets::bundled_surfaces()) names.push_back(b.name);
+    return names;
 }
 
+const detail::CheckInputFamily& surface_inputs() {
+    static const detail::CheckInputFamily f{"surfaces", "surface", {".swp", ".bez"}, bundled_surface_names, datasets::course_surface_files};
+    return f;
+}
+
+}  // namespace
+
+bool is_surface_input(const std::string& spec) { return detail::is_check_input(surface_inputs(), spec); }
+
 std::vector<std::string> expand_surface_inputs(const std::vector<std::string>& specs) {
-    std::vector<std::string> out;
-    for (const std::string& s : specs) {
-        if (s == "surfaces:bundled") {
-            for (const auto& b : datasets::bundled_surfaces()) out.push_back("surface:" + b.name);
-        } else if (s == "surfaces:course") {
-            for (const auto& f : datasets::course_surface_files()) out.push_back(f);
-        } else if (s == "surfaces:synthetic" || !s.starts_with("surfaces:")) {
-            if (!is_surface_input(s))
-                throw InputError("'" + s + "' is not a surface input (a .swp or .bez file, surface:NAME, surfaces:bundled, surfaces:course, surfaces:synthetic)");
-            out.push_back(s);
-        } else {
-            throw InputError("unknown surface collection '" + s + "' (known: surfaces:bundled, surfaces:course, surfaces:synthetic)");
-        }
-    }
-    return out;
+    return detail::expand_check_inputs(surface_inputs(), specs);
 }
 
 CurveReport check_surface_input(const std::string& spec) {

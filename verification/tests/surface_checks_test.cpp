@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <sstream>
 
 #include "crossdiv/datasets/bundled_surfaces.h"
@@ -75,4 +76,17 @@ TEST(SurfaceChecks, InputNamesAreValidated) {
     EXPECT_THROW(expand_surface_inputs({"mesh.obj"}), InputError);
     EXPECT_THROW(check_surface_input("surface:no-such"), InputError);
     EXPECT_EQ(expand_surface_inputs({"surfaces:bundled"}).size(), datasets::bundled_surfaces().size());
+}
+
+TEST(SurfaceChecks, CourseSurfacesAreFoundExactlyWhenTheSharedDataIsThere) {
+    // ../shared/data is optional; when present its 8 srev/gcyl files and 2 BEZ files must
+    // all be found, build, and pass (closed ones watertight, manifold and outward).
+    const bool present = std::filesystem::exists(std::filesystem::path(CROSSDIV_SHARED_DATA) / "c3100/swp/srev");
+    const std::vector<std::string> files = expand_surface_inputs({"surfaces:course"});
+    EXPECT_EQ(files.size(), present ? 10u : 0u);
+    for (const std::string& f : files) {
+        const CurveReport r = check_surface_input(f);
+        EXPECT_FALSE(r.checks.empty()) << f;
+        for (const CurveCheck& c : r.checks) EXPECT_TRUE(c.pass()) << f << ": " << c.curve << " " << c.check << " " << c.note;
+    }
 }

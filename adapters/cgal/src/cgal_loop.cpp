@@ -1,18 +1,18 @@
-// The only translation unit that includes CGAL (it costs ~1 GB and tens of seconds to compile).
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/Surface_mesh.h>
+// One of the two translation units that include CGAL (each costs ~1 GB and tens of seconds to
+// compile): Loop subdivision.
 #include <CGAL/subdivision_method_3.h>
 #include <CGAL/version.h>
 
 #include <string>
 
+#include "cgal_surface_mesh.h"
 #include "crossdiv/adapters/cgal.h"
 
 namespace crossdiv::adapters::cgal {
 namespace {
 
-using Kernel = CGAL::Simple_cartesian<double>;
-using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+using detail::Kernel;
+using detail::Mesh;
 
 PolyMesh snapshot(const Mesh& m) {
     PolyMesh out;
@@ -42,17 +42,9 @@ namespace {
 Mesh build(const TriMesh& mesh, const LoopOptions& options) {
     if (!supports(options))
         throw Rejected("CGAL's Loop_subdivision has Loop weights and the edge-only boundary rule only");
-    Mesh m;
-    std::vector<Mesh::Vertex_index> vh;
-    vh.reserve(static_cast<size_t>(mesh.num_vertices()));
-    for (const Vec3& p : mesh.positions) vh.push_back(m.add_vertex(Kernel::Point_3(p.x(), p.y(), p.z())));
-    for (int f = 0; f < mesh.num_faces(); ++f) {
-        const Triangle& t = mesh.triangles[f];
-        if (m.add_face(vh[t[0]], vh[t[1]], vh[t[2]]) == Mesh::null_face())
-            throw Rejected("CGAL Surface_mesh could not add face " + std::to_string(f) + " (" + std::to_string(t[0]) +
-                           ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) +
-                           "): non-manifold or inconsistently oriented");
-    }
+    std::string refused;
+    Mesh m = detail::to_surface_mesh(mesh, refused);
+    if (!refused.empty()) throw Rejected(refused);
     return m;
 }
 

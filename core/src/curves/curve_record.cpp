@@ -83,6 +83,15 @@ Polyline tessellate_record(const CurveRecord& r, const TessellationOptions& o) {
     throw std::logic_error("unknown tessellation mode");
 }
 
+std::function<ChainJet(double)> record_evaluator(const CurveRecord& r) {
+    if (r.type == CurveType::Primitive) return [prim = r.primitive](double s) { return prim.jet(s); };
+    return [chain = r.chain()](double u) { return chain_jet(chain, u); };
+}
+
+double record_param_end(const CurveRecord& r) {
+    return r.type == CurveType::Primitive ? r.primitive.param_end() : static_cast<double>(r.chain().num_segments());
+}
+
 Deviation primitive_deviation(const Primitive& prim, const Polyline& p) {
     Deviation dev;
     for (int i = 0; i + 1 < p.size(); ++i) {

@@ -1,6 +1,7 @@
 #include "crossdiv/surfaces/bezier_patch.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "crossdiv/curves/bezier.h"
@@ -43,11 +44,25 @@ std::vector<double> bernstein(int d, double t) {
 
 }  // namespace
 
+/// Runs f on `rows` scratch points: on the stack for the common degrees (bicubic has 4
+/// rows), so evaluating a tessellation allocates nothing per vertex.
+template <class F>
+auto with_columns(int rows, F&& f) {
+    constexpr int kStack = 16;
+    if (rows <= kStack) {
+        std::array<Vec3, kStack> a, b;
+        return f(std::span<Vec3>(a.data(), rows), std::span<Vec3>(b.data(), rows));
+    }
+    std::vector<Vec3> a(rows), b(rows);
+    return f(std::span<Vec3>(a), std::span<Vec3>(b));
+}
+
 Vec3 patch_point(const BezierPatch& p, double u, double v) {
     require_valid(p);
-    std::vector<Vec3> column(p.rows);
-    for (int r = 0; r < p.rows; ++r) column[r] = bezier_point(row(p, r), u);
-    return bezier_point(column, v);
+    return with_columns(p.rows, [&](std::span<Vec3> column, std::span<Vec3>) {
+        for (int r = 0; r < p.rows; ++r) column[r] = bezier_point(row(p, r), u);
+        return bezier_point(column, v);
+    });
 }
 
 Vec3 patch_bernstein_point(const BezierPatch& p, double u, double v) {
@@ -63,25 +78,23 @@ PatchJet patch_jet(const BezierPatch& p, double u, double v) {
     require_valid(p);
     // The rows at u give the column of points (whose curve in v is the iso-curve through
     // the point) and the column of u-derivatives (whose curve in v is du along it).
-    std::vector<Vec3> points(p.rows), du(p.rows);
-    for (int r = 0; r < p.rows; ++r) {
-        const BezierJet j = bezier_jet(row(p, r), u);
-        points[r] = j.position;
-        du[r] = j.d1;
-    }
-    const BezierJet along = bezier_jet(points, v);
-    const BezierJet du_along = bezier_jet(du, v);
-    return {along.position, du_along.position, along.d1, du_along.d1};
+    return with_columns(p.rows, [&](std::span<Vec3> points, std::span<Vec3> du) {
+        for (int r = 0; r < p.rows; ++r) {
+            const BezierJet j = bezier_jet(row(p, r), u);
+            points[r] = j.position;
+            du[r] = j.d1;
+        }
+        const BezierJet along = bezier_jet(points, v);
+        const BezierJet du_along = bezier_jet(du, v);
+        return PatchJet{along.position, du_along.position, along.d1, du_along.d1};
+    });
 }
 
-Vec3 patch_normal(const BezierPatch& p, double u, double v, NormalSource* source) {
-    const PatchJet j = patch_jet(p, u, v);
-    Vec3 lo = p.control[0], hi = p.control[0];
-    for (const Vec3& c : p.control) {
-        lo = lo.cwiseMin(c);
-        hi = hi.cwiseMax(c);
-    }
-    const double vanish = kPatchDegenerateRelative * (hi - lo).norm();
+namespace {
+
+/// patch_normal from an evaluated jet; `vanish` = kPatchDegenerateRelative times the
+/// control net's diagonal, computed once per patch by the callers.
+Vec3 normal_from_jet(const BezierPatch& p, const PatchJet& j, double u, double v, double vanish, NormalSource* source) {
     auto set = [&](NormalSource s) { if (source) *source = s; };
     Vec3 n = j.du.cross(j.dv);
     if (n.norm() > kPatchDegenerateRelative * j.du.norm() * j.dv.norm() && j.du.norm() > vanish && j.dv.norm() > vanish) {
@@ -105,18 +118,30 @@ Vec3 patch_normal(const BezierPatch& p, double u, double v, NormalSource* source
     return n.norm() > 0 ? n.normalized() : Vec3(0, 0, 0);
 }
 
+}  // namespace
+
+Vec3 patch_normal(const BezierPatch& p, double u, double v, NormalSource* source) {
+    const PatchJet j = patch_jet(p, u, v);
+    return normal_from_jet(p, j, u, v, kPatchDegenerateRelative * bounding_box_diagonal(p.control), source);
+}
+
 SurfaceMesh tessellate_patches(std::span<const BezierPatch> patches, int res) {
     if (res < 1) throw InputError("patch resolution must be at least 1, got " + std::to_string(res));
     SurfaceMesh s;
     const int side = res + 1;
+    s.mesh.positions.reserve(patches.size() * side * side);
+    s.normals.reserve(patches.size() * side * side);
+    s.mesh.triangles.reserve(patches.size() * 2 * res * res);
     for (const BezierPatch& p : patches) {
         require_valid(p);
         const int base = s.mesh.num_vertices();
+        const double vanish = kPatchDegenerateRelative * bounding_box_diagonal(p.control);
         for (int i = 0; i < side; ++i)
             for (int k = 0; k < side; ++k) {
                 const double u = static_cast<double>(k) / res, v = static_cast<double>(i) / res;
-                s.mesh.positions.push_back(patch_jet(p, u, v).position);
-                s.normals.push_back(patch_normal(p, u, v));
+                const PatchJet j = patch_jet(p, u, v);
+                s.mesh.positions.push_back(j.position);
+                s.normals.push_back(normal_from_jet(p, j, u, v, vanish, nullptr));
             }
         for (int i = 0; i < res; ++i)
             for (int k = 0; k < res; ++k) {
@@ -135,16 +160,16 @@ double max_boundary_gap(std::span<const BezierPatch> patches, int samples, int* 
         std::vector<Vec3> control;
     };
     std::vector<Edge> edges;
-    Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
+    std::vector<Vec3> all;
     for (const BezierPatch& p : patches) {
         require_valid(p);
         Edge e0, e1, e2, e3;
         for (int c = 0; c < p.cols; ++c) e0.control.push_back(p.at(0, c)), e2.control.push_back(p.at(p.rows - 1, c));
         for (int r = 0; r < p.rows; ++r) e1.control.push_back(p.at(r, p.cols - 1)), e3.control.push_back(p.at(r, 0));
         for (Edge* e : {&e0, &e1, &e2, &e3}) edges.push_back(std::move(*e));
-        for (const Vec3& c : p.control) lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
+        all.insert(all.end(), p.control.begin(), p.control.end());
     }
-    const double tol = kWeldRelative * (hi - lo).norm();
+    const double tol = kWeldRelative * bounding_box_diagonal(all);
     double gap = 0;
     int pairs = 0;
     for (size_t a = 0; a < edges.size(); ++a)

@@ -8,6 +8,12 @@
 
 namespace crossdiv {
 
+namespace {
+/// The tilt divides by the step's component along T; a step that barely moves along T (the
+/// sweep stops, or turns back) says nothing about the tilt, and m is kept as it is.
+constexpr double kMinStepAlongT = 1e-3;
+}  // namespace
+
 SweepFrames sweep_frames(const Polyline& sweep, bool closed_sweep, const CylinderOptions& o) {
     if (o.frames == FrameMethod::Planar)
         throw InputError("a generalized cylinder needs space-curve frames (recursive or rmf), not planar ones");
@@ -26,7 +32,7 @@ SweepFrames sweep_frames(const Polyline& sweep, bool closed_sweep, const Cylinde
 }
 
 SweepGrid cylinder_grid(const Polyline& profile, bool closed_profile, const Polyline& sweep, bool closed_sweep,
-                        const CylinderOptions& o, std::span<const double> scale) {
+                        const CylinderOptions& o, std::span<const double> scale, double* closure_angle) {
     if (profile.size() < 2 || sweep.size() < 2)
         throw InputError("a generalized cylinder needs at least 2 profile and 2 sweep samples");
     if (!scale.empty() && scale.size() != static_cast<size_t>(sweep.size()))
@@ -41,6 +47,7 @@ SweepGrid cylinder_grid(const Polyline& profile, bool closed_profile, const Poly
             throw InputError("the scale at sweep sample " + std::to_string(i) + " is " + std::to_string(scale[i]) +
                              "; scales must be positive (zero pinches the tube, negative turns it inside out)");
     const SweepFrames sf = sweep_frames(sweep, closed_sweep, o);
+    if (closure_angle) *closure_angle = sf.closure_angle;
     // Without closing the frames, a closed sweep's last ring is kept as its own ring.
     const bool wrap = closed_sweep && o.close_frames;
     const std::vector<Vec3> normals2 = outward_profile_normals(profile, closed_profile);
@@ -74,7 +81,7 @@ SweepGrid cylinder_grid(const Polyline& profile, bool closed_profile, const Poly
             const Vec3 m = n2.x() * f.N + n2.y() * f.B;
             const Vec3 d = g.at(ring(i + 1), j) - g.at(ring(i - 1), j);
             const double along = f.T.dot(d);
-            const Vec3 n = std::abs(along) > 1e-3 * d.norm() ? Vec3(m - (m.dot(d) / along) * f.T) : m;
+            const Vec3 n = std::abs(along) > kMinStepAlongT * d.norm() ? Vec3(m - (m.dot(d) / along) * f.T) : m;
             g.normals.push_back(n.normalized());
         }
     }

@@ -11,10 +11,6 @@ namespace crossdiv {
 
 namespace {
 
-double param_end(const CurveRecord& r) {
-    return r.type == CurveType::Primitive ? r.primitive.param_end() : static_cast<double>(r.chain().num_segments());
-}
-
 Polyline sample(const CurveRecord& r, const SweepOptions& o) {
     TessellationOptions t;
     if (o.adaptive) {
@@ -33,19 +29,9 @@ int slices_for(double r, double tol) {
 
 }  // namespace
 
-Vec3 record_point(const CurveRecord& r, double param) {
-    if (r.type == CurveType::Primitive) return r.primitive.jet(param).position;
-    return chain_jet(r.chain(), param).position;
-}
-
 ExactSurface exact_revolution(const CurveRecord& profile) {
-    if (profile.type == CurveType::Primitive)
-        return [prim = profile.primitive](double t, double a) {
-            const Vec3 p = prim.jet(t).position;
-            return Vec3(p.x() * std::cos(a), p.y(), -p.x() * std::sin(a));
-        };
-    return [chain = profile.chain()](double t, double a) {
-        const Vec3 p = chain_jet(chain, t).position;
+    return [curve = record_evaluator(profile)](double t, double a) {
+        const Vec3 p = curve(t).position;
         return Vec3(p.x() * std::cos(a), p.y(), -p.x() * std::sin(a));
     };
 }
@@ -82,15 +68,15 @@ SweepSurface build_sweep(const CurveFile& file, int index, const SweepOptions& o
                 // the same fraction of its own range. Neither curve's control point count
                 // matters, and a uniform and an adaptive sweep see the same scale function.
                 const CurveRecord& sc = file.curves.at(rec.scale_index);
-                const double s_end = param_end(sweep), c_end = param_end(sc);
-                for (double u : s.params) scale.push_back(record_point(sc, u / s_end * c_end).y());
+                const auto size = record_evaluator(sc);
+                const double s_end = record_param_end(sweep), c_end = record_param_end(sc);
+                for (double u : s.params) scale.push_back(size(u / s_end * c_end).position.y());
             }
             CylinderOptions co;
             co.frames = o.frames;
             co.close_frames = o.close_frames;
             const bool sweep_closed = sweep.closed();
-            out.closure_angle = sweep_closed ? sweep_frames(s, true, {o.frames, false}).closure_angle : 0;
-            out.grid = cylinder_grid(p, profile_closed, s, sweep_closed, co, scale);
+            out.grid = cylinder_grid(p, profile_closed, s, sweep_closed, co, scale, &out.closure_angle);
             out.closed = profile_closed && sweep_closed && o.close_frames;
         }
         out.surface = mesh_sweep(out.grid);

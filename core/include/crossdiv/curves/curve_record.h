@@ -3,6 +3,7 @@
 /// A curve as a file defines it (an SWP record or a BZC file), and its tessellation with a
 /// named mode. The readers are in crossdiv/io/curve_io.h.
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -78,6 +79,15 @@ struct TessellationOptions {
 /// and otherwise with the fewest steps, doubling from the record's, whose largest turn per
 /// edge (Angle) or measured deviation (Distance) is within the tolerance.
 Polyline tessellate_record(const CurveRecord& record, const TessellationOptions& options);
+
+/// Exact evaluation of a record at its global parameter (the parameter Polyline::params
+/// holds): position, first and second derivative. The chain is built once, here, and owned
+/// by the returned function. @throws InputError as CurveRecord::chain().
+std::function<ChainJet(double)> record_evaluator(const CurveRecord& record);
+
+/// The end of a record's parameter range: its chain's segment count, or the primitive's
+/// param_end().
+double record_param_end(const CurveRecord& record);
 
 /// Measured chordal deviation of a primitive's samples from the exact curve (dense sampling
 /// with golden-section refinement per edge, as chordal_deviation for splines).

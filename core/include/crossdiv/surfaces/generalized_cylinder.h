@@ -32,11 +32,13 @@ struct SweepFrames {
 SweepFrames sweep_frames(const Polyline& sweep, bool closed_sweep, const CylinderOptions& options);
 
 /// The grid of a generalized cylinder. `closed_*` say the last sample repeats the first.
-/// `scale`, when not empty, holds one profile scale per sweep sample (> 0).
+/// `scale`, when not empty, holds one profile scale per sweep sample (> 0). When
+/// `closure_angle` is given it receives the frames' mismatch before distribution
+/// (SweepFrames::closure_angle).
 /// @throws InputError if the profile is not planar in xy, a scale is not positive, or the
 ///         sizes disagree, naming the sample.
 SweepGrid cylinder_grid(const Polyline& profile, bool closed_profile, const Polyline& sweep, bool closed_sweep,
-                        const CylinderOptions& options, std::span<const double> scale = {});
+                        const CylinderOptions& options, std::span<const double> scale = {}, double* closure_angle = nullptr);
 
 /// cylinder_grid meshed with mesh_sweep.
 SurfaceMesh sweep_cylinder(const Polyline& profile, bool closed_profile, const Polyline& sweep, bool closed_sweep,

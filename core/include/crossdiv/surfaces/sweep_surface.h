@@ -39,9 +39,6 @@ struct SweepSurface {
 ///         not positive), InputError for bad options.
 SweepSurface build_sweep(const CurveFile& file, int index, const SweepOptions& options);
 
-/// The exact point of a curve record at its global parameter (the Polyline params).
-Vec3 record_point(const CurveRecord& record, double param);
-
 /// The exact surface of revolution a C3100 srev grid samples, for grid_deviation.
 ExactSurface exact_revolution(const CurveRecord& profile);
 
