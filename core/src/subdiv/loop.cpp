@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "crossdiv/error.h"
+#include "stencil_sum.h"
 
 namespace crossdiv {
 namespace {
@@ -72,17 +73,9 @@ struct PointSink {
     const std::vector<Vec3>* in_colors;
     std::vector<Vec3>* out_colors;
 
-    static Vec3 combine(const std::vector<Vec3>& p, const int* a, int na, double wa, const int* b, int nb, double wb) {
-        Vec3 sa = p[a[0]];
-        for (int k = 1; k < na; ++k) sa += p[a[k]];
-        if (nb == 0) return wa * sa;
-        Vec3 sb = p[b[0]];
-        for (int k = 1; k < nb; ++k) sb += p[b[k]];
-        return wa * sa + wb * sb;
-    }
     void emit(int row, const int* a, int na, double wa, const int* b, int nb, double wb) {
-        out[row] = combine(in, a, na, wa, b, nb, wb);
-        if (out_colors) (*out_colors)[row] = combine(*in_colors, a, na, wa, b, nb, wb);
+        out[row] = detail::stencil_sum(in, a, na, wa, b, nb, wb);
+        if (out_colors) (*out_colors)[row] = detail::stencil_sum(*in_colors, a, na, wa, b, nb, wb);
     }
 };
 
