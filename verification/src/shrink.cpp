@@ -4,6 +4,7 @@
 
 #include "crossdiv/error.h"
 #include "crossdiv/subdiv/loop.h"
+#include "crossdiv/verification/ddmin.h"
 
 namespace crossdiv::verification {
 namespace {
@@ -106,25 +107,11 @@ ShrinkResult shrink_divergence(const TriMesh& mesh, const std::string& name, con
 
     // 2. ddmin over the neighbourhood's faces: try keeping only the complement of one of n
     //    chunks; on success shrink n, else refine the split, until chunks are single faces.
-    std::vector<int> faces(static_cast<size_t>(r.neighbourhood.num_faces()));
-    for (size_t i = 0; i < faces.size(); ++i) faces[i] = static_cast<int>(i);
-    for (size_t n = 2; faces.size() >= 2;) {
-        bool reduced = false;
-        const size_t chunk = (faces.size() + n - 1) / n;
-        for (size_t start = 0; start < faces.size(); start += chunk) {
-            std::vector<int> complement(faces.begin(), faces.begin() + static_cast<long>(start));
-            complement.insert(complement.end(), faces.begin() + static_cast<long>(std::min(start + chunk, faces.size())), faces.end());
-            if (still_diverges(submesh(r.neighbourhood, complement), req, r.divergence_class, r.tests)) {
-                faces = std::move(complement);
-                n = std::max<size_t>(n - 1, 2);
-                reduced = true;
-                break;
-            }
-        }
-        if (reduced) continue;
-        if (n >= faces.size()) break;
-        n = std::min(faces.size(), 2 * n);
-    }
+    std::vector<int> all(static_cast<size_t>(r.neighbourhood.num_faces()));
+    for (size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+    const std::vector<int> faces = ddmin(std::move(all), [&](const std::vector<int>& keep) {
+        return still_diverges(submesh(r.neighbourhood, keep), req, r.divergence_class, r.tests);
+    });
     r.minimal = submesh(r.neighbourhood, faces);
     r.minimal_comparison = compare_loop(r.minimal, "minimal", req);
     return r;

@@ -1,4 +1,4 @@
-#include <OpenMesh/Core/Mesh/DefaultTriMesh.hh>
+#include <OpenMesh/Core/Mesh/DefaultTriMesh.hh>  // first: the Subdivider headers rely on what it brings in
 #include <OpenMesh/Core/System/config.h>
 #include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>
 
@@ -6,11 +6,12 @@
 #include <string>
 
 #include "crossdiv/adapters/openmesh.h"
+#include "openmesh_mesh.h"
 
 namespace crossdiv::adapters::openmesh {
 namespace {
 
-using Mesh = OpenMesh::TriMesh;  // DefaultTraitsDouble
+using detail::Mesh;
 
 PolyMesh snapshot(const Mesh& m) {
     PolyMesh out;
@@ -43,17 +44,7 @@ namespace {
 Mesh build(const TriMesh& mesh, const LoopOptions& options) {
     if (!supports(options))
         throw Rejected("OpenMesh's LoopT has Loop weights and the edge-only boundary rule only");
-    Mesh m;
-    std::vector<Mesh::VertexHandle> vh;
-    vh.reserve(static_cast<size_t>(mesh.num_vertices()));
-    for (const Vec3& p : mesh.positions) vh.push_back(m.add_vertex(Mesh::Point(p.x(), p.y(), p.z())));
-    for (int f = 0; f < mesh.num_faces(); ++f) {
-        const Triangle& t = mesh.triangles[f];
-        if (!m.add_face(vh[t[0]], vh[t[1]], vh[t[2]]).is_valid())
-            throw Rejected("OpenMesh could not add face " + std::to_string(f) + " (" + std::to_string(t[0]) + ", " +
-                           std::to_string(t[1]) + ", " + std::to_string(t[2]) + "): complex edge or vertex");
-    }
-    return m;
+    return detail::to_openmesh(mesh);
 }
 
 /// LoopT's weight table covers valences below 50 by default and is read unchecked beyond.

@@ -1,9 +1,13 @@
 #pragma once
 /// @file
 /// CGAL 5.5 adapter: Subdivision_method_3::Loop_subdivision on
-/// Surface_mesh<Simple_cartesian<double>::Point_3>. CGAL is included by two translation units (Loop, mesh checks).
+/// Surface_mesh<Simple_cartesian<double>::Point_3>; closed-mesh checks, vertex normals and the
+/// Euler operations flip_edge, split_edge and split_face. CGAL is included by two translation
+/// units (Loop; everything else).
 
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "crossdiv/adapters/reference.h"
 #include "crossdiv/mesh/tri_mesh.h"
@@ -37,6 +41,41 @@ struct ClosedMeshReport {
 /// PMP::is_outward_oriented and PMP::volume. Never throws for a bad mesh: a face Surface_mesh
 /// refuses is reported in `error`.
 ClosedMeshReport closed_mesh_report(const TriMesh& mesh);
+
+/// PMP::compute_vertex_normals, one per input vertex in input order. Its weighting is none of
+/// the sums: it takes the "most visible" direction, the centre of the smallest cap of the unit
+/// sphere holding every incident unit face normal (it maximizes the smallest dot product with
+/// them), and only when that fails the sine-weighted sum of face normals.
+/// @throws Rejected naming the face Surface_mesh refuses.
+std::vector<Vec3> vertex_normals(const TriMesh& mesh);
+
+/// A triangle mesh held and edited by CGAL itself: Euler::flip_edge, and Euler::split_edge
+/// followed by Euler::split_face on each side with a face. Edges are named by endpoints;
+/// Surface_mesh appends each new vertex, so indices match ours. flip_edge has no refusal: its
+/// conditions (two faces, the new edge absent) are preconditions the caller must check.
+class EditableMesh {
+public:
+    /// @throws Rejected naming the face Surface_mesh refuses.
+    explicit EditableMesh(const TriMesh& mesh);
+    ~EditableMesh();
+    EditableMesh(EditableMesh&&) noexcept;
+    EditableMesh& operator=(EditableMesh&&) noexcept;
+
+    /// @throws Rejected if CGAL has no edge a-b, or it is a border edge.
+    void flip(int a, int b);
+    /// Returns the new vertex's index, at the midpoint. @throws Rejected if CGAL has no edge a-b.
+    int split(int a, int b);
+    /// What Surface_mesh::is_valid, is_valid_polygon_mesh and is_triangle_mesh say, one line
+    /// per failed check (empty when all hold).
+    std::vector<std::string> check() const;
+    /// Faces as vertex triples, in Surface_mesh's face order.
+    std::vector<Triangle> faces() const;
+    std::vector<Vec3> positions() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
 
 /// "CGAL 5.5.1".
 std::string version();

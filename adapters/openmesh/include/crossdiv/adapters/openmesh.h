@@ -1,8 +1,11 @@
 #pragma once
 /// @file
-/// OpenMesh 9 adapter: Subdivider::Uniform::LoopT on the double-precision OpenMesh::TriMesh.
+/// OpenMesh 9 adapter: Subdivider::Uniform::LoopT on the double-precision OpenMesh::TriMesh;
+/// vertex normals and the local operations flip and split, as references for our half-edge mesh.
 
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "crossdiv/adapters/reference.h"
 #include "crossdiv/mesh/tri_mesh.h"
@@ -28,5 +31,49 @@ size_t loop_native(const TriMesh& mesh, const LoopOptions& options, int levels);
 
 /// "OpenMesh 9.0".
 std::string version();
+
+
+/// OpenMesh's two vertex normals. Both are unit vectors (zero for an isolated vertex).
+enum class NormalMethod {
+    /// PolyMeshT::calc_vertex_normal_correct: the sum of the cross products of consecutive
+    /// edge vectors around the vertex (each twice a face's area times its normal).
+    Correct,
+    /// PolyMeshT::update_vertex_normals after update_face_normals: calc_vertex_normal_fast,
+    /// the sum of the unit face normals.
+    Fast,
+};
+
+/// One normal per input vertex, in input order (OpenMesh keeps vertex handles in add order).
+/// @throws Rejected naming the face OpenMesh refuses.
+std::vector<Vec3> vertex_normals(const TriMesh& mesh, NormalMethod method);
+
+/// A triangle mesh held and edited by OpenMesh itself (TriConnectivity::flip and ::split),
+/// for differential tests of our half-edge operations. Edges are named by their endpoints,
+/// vertices by index; OpenMesh appends each new vertex, so indices match ours.
+class EditableMesh {
+public:
+    /// @throws Rejected naming the face OpenMesh refuses.
+    explicit EditableMesh(const TriMesh& mesh);
+    ~EditableMesh();
+    EditableMesh(EditableMesh&&) noexcept;
+    EditableMesh& operator=(EditableMesh&&) noexcept;
+
+    /// TriConnectivity::is_flip_ok for the edge a-b. @throws Rejected if OpenMesh has no such edge.
+    bool flip_ok(int a, int b) const;
+    /// TriConnectivity::flip. @throws Rejected if OpenMesh has no such edge.
+    void flip(int a, int b);
+    /// add_vertex(midpoint), then TriConnectivity::split; returns the new vertex's index.
+    /// @throws Rejected if OpenMesh has no such edge.
+    int split(int a, int b);
+    /// What OpenMesh::Utils::MeshCheckerT reports, one line each (empty when it is satisfied).
+    std::vector<std::string> check() const;
+    /// Faces as vertex triples, in OpenMesh's face order.
+    std::vector<Triangle> faces() const;
+    std::vector<Vec3> positions() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
 
 }  // namespace crossdiv::adapters::openmesh
