@@ -15,6 +15,7 @@
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/mesh/mesh_checks.h"
 #include "crossdiv/subdiv/loop.h"
+#include "crossdiv/subdiv/loop_split_flip.h"
 #include "crossdiv/verification/bench.h"
 #include "crossdiv/verification/inputs.h"
 #include "crossdiv/verification/loop_comparison.h"
@@ -25,6 +26,7 @@
 #include "crossdiv/adapters/eigen_splines.h"
 #endif
 #include "curve_commands.h"
+#include "edit_commands.h"
 #include "surface_commands.h"
 
 namespace {
@@ -73,6 +75,10 @@ int run_subdivide(const std::string& in, const SchemeArgs& s, const std::string&
     PolyMesh result;
     if (impl == "core") {
         result = to_poly_mesh(loop_subdivide(mesh, s.options(), s.levels));
+    } else if (impl == "split-flip") {
+        TriMesh level = mesh;
+        for (int l = 0; l < s.levels; ++l) level = loop_by_split_and_flip(level, s.options());
+        result = to_poly_mesh(level);
     } else {
         const LoopReference& ref = find_loop_reference(impl);
         if (!ref.supports(s.options()))
@@ -161,6 +167,7 @@ int run_check(const std::string& in) {
         errors += i.severity == Severity::Error;
         fmt::print("{} [{}] {}\n", i.severity == Severity::Error ? "error" : "warning", to_string(i.kind), i.message);
     }
+    if (errors == 0) errors += cli::print_halfedge_report(mesh);
     fmt::print("{}: {} vertices, {} faces, {} error(s), {} warning(s)\n", in, mesh.num_vertices(), mesh.num_faces(),
                errors, issues.size() - errors);
     return errors ? 2 : 0;
@@ -371,8 +378,8 @@ int main(int argc, char** argv) {
     auto* sub = app.add_subcommand("subdivide", "Subdivide a mesh with core or a reference");
     sub->add_option("input", sub_in, "Mesh file (.obj, .off) or bundled:NAME")->required();
     sub_args.add_to(*sub);
-    sub->add_option("--impl", sub_impl, "Implementation")
-        ->check(CLI::IsMember({"core", "opensubdiv", "openmesh", "cgal"}))
+    sub->add_option("--impl", sub_impl, "Implementation (split-flip: our Loop by edge splits and flips)")
+        ->check(CLI::IsMember({"core", "split-flip", "opensubdiv", "openmesh", "cgal"}))
         ->capture_default_str();
     sub->add_option("-o,--output", sub_out, "Output mesh (.obj, .off)")->required();
 
@@ -451,6 +458,12 @@ int main(int argc, char** argv) {
     cli::PatchArgs patch_args;
     auto* patch = app.add_subcommand("patch", "Tessellate the Bezier patches of a BEZ file into one welded OBJ with normals");
     patch_args.add_to(*patch);
+    cli::EditArgs edit_args;
+    auto* edit = app.add_subcommand("edit", "Flip and split edges in order on a half-edge mesh (edges as A-B, 0-based)");
+    edit_args.add_to(*edit);
+    cli::NormalsArgs normals_args;
+    auto* normals = app.add_subcommand("normals", "Vertex normals (area, angle, uniform) against OpenMesh and CGAL");
+    normals_args.add_to(*normals);
     cli::CasteljauArgs cast_args;
     auto* cast = app.add_subcommand("casteljau", "Every de Casteljau level of a Bezier curve at t");
     cast_args.add_to(*cast);
@@ -474,6 +487,8 @@ int main(int argc, char** argv) {
         if (*cast) return cli::run_casteljau(cast_args);
         if (*sweep) return cli::run_sweep(sweep_args);
         if (*patch) return cli::run_patch(patch_args);
+        if (*edit) return cli::run_edit(edit_args);
+        if (*normals) return cli::run_normals(normals_args);
         if (*bench) return run_bench_command(bench_json, bench_out, bench_repeats, bench_quick, bench_cold);
     } catch (const InputError& e) {
         std::cerr << "crossdiv: error: " << e.what() << "\n";

@@ -1,0 +1,31 @@
+#pragma once
+/// @file
+/// Assimp adapter: mesh input in the formats our own readers do not parse (COLLADA .dae, the
+/// meshedit course files; PLY; STL). Not a subdivision reference: it only reads.
+
+#include <string>
+#include <vector>
+
+#include "crossdiv/mesh/poly_mesh.h"
+
+namespace crossdiv::adapters::assimp {
+
+/// The extensions read through Assimp: ".dae", ".ply", ".stl".
+const std::vector<std::string>& extensions();
+
+/// Reads every mesh of the scene into one polygon mesh, in world coordinates (node transforms
+/// applied: aiProcess_PreTransformVertices), polygons kept as polygons (no triangulation).
+/// Assimp stores one vertex per face corner for COLLADA (each corner has its own normal and
+/// texture coordinate), so the shared vertices are recovered here by welding corners with
+/// bit-identical positions (Assimp's JoinIdenticalVertices would also compare normals and
+/// uses a tolerance). Vertices are numbered in order of first use by the faces, which is the
+/// vertex order `crossdiv edit` indices refer to for these formats. Point and line
+/// primitives are skipped and counted in source.notes.
+/// @throws InputError naming the file with Assimp's message when it cannot read it, when the
+///         scene has no polygon, or naming the vertex when a coordinate is NaN or infinite.
+PolyMesh read_mesh(const std::string& path);
+
+/// "Assimp 5.2.5".
+std::string version();
+
+}  // namespace crossdiv::adapters::assimp

@@ -1,0 +1,92 @@
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <assimp/version.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numeric>
+
+#include "crossdiv/adapters/assimp.h"
+#include "crossdiv/error.h"
+
+namespace crossdiv::adapters::assimp {
+
+const std::vector<std::string>& extensions() {
+    static const std::vector<std::string> ext = {".dae", ".ply", ".stl"};
+    return ext;
+}
+
+std::string version() {
+    return "Assimp " + std::to_string(aiGetVersionMajor()) + "." + std::to_string(aiGetVersionMinor()) + "." +
+           std::to_string(aiGetVersionPatch());
+}
+
+PolyMesh read_mesh(const std::string& path) {
+    Assimp::Importer importer;
+    const aiScene* scene = importer.ReadFile(path, aiProcess_PreTransformVertices);
+    if (!scene) throw InputError(path + ": Assimp could not read it: " + importer.GetErrorString());
+
+    // Every face corner with its position, in file order.
+    std::vector<std::array<double, 3>> corner_pos;
+    std::vector<int> face_start{0};
+    long skipped = 0;
+    for (unsigned mi = 0; mi < scene->mNumMeshes; ++mi) {
+        const aiMesh* mesh = scene->mMeshes[mi];
+        for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+            const aiFace& face = mesh->mFaces[f];
+            if (face.mNumIndices < 3) {
+                ++skipped;
+                continue;
+            }
+            for (unsigned k = 0; k < face.mNumIndices; ++k) {
+                const aiVector3D& p = mesh->mVertices[face.mIndices[k]];
+                corner_pos.push_back({p.x, p.y, p.z});
+            }
+            face_start.push_back(static_cast<int>(corner_pos.size()));
+        }
+    }
+    if (face_start.size() == 1)
+        throw InputError(path + ": no polygon in the scene (" + std::to_string(scene->mNumMeshes) + " meshes, " +
+                         std::to_string(skipped) + " point or line primitives)");
+
+    // Weld corners with identical positions: sort corner indices by position (ties by corner
+    // index), so each run is one vertex; number vertices by their first corner.
+    const size_t nc = corner_pos.size();
+    std::vector<int> order(nc);
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](int a, int b) {
+        return corner_pos[static_cast<size_t>(a)] != corner_pos[static_cast<size_t>(b)] ? corner_pos[static_cast<size_t>(a)] < corner_pos[static_cast<size_t>(b)] : a < b;
+    });
+    std::vector<int> run_of(nc), run_first;  // run index per corner; first corner per run
+    for (size_t i = 0; i < nc; ++i) {
+        const int c = order[i];
+        if (i == 0 || corner_pos[static_cast<size_t>(c)] != corner_pos[static_cast<size_t>(order[i - 1])]) run_first.push_back(c);
+        run_of[static_cast<size_t>(c)] = static_cast<int>(run_first.size()) - 1;
+    }
+    std::vector<int> runs_by_first(run_first.size());
+    std::iota(runs_by_first.begin(), runs_by_first.end(), 0);
+    std::sort(runs_by_first.begin(), runs_by_first.end(), [&](int a, int b) { return run_first[static_cast<size_t>(a)] < run_first[static_cast<size_t>(b)]; });
+    std::vector<int> vertex_of_run(run_first.size());
+    PolyMesh out;
+    out.positions.reserve(run_first.size());
+    for (size_t v = 0; v < runs_by_first.size(); ++v) {
+        const int run = runs_by_first[v];
+        vertex_of_run[static_cast<size_t>(run)] = static_cast<int>(v);
+        const auto& p = corner_pos[static_cast<size_t>(run_first[static_cast<size_t>(run)])];
+        if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+            throw InputError(path + ": vertex " + std::to_string(v) + " has a NaN or infinite coordinate");
+        out.positions.emplace_back(p[0], p[1], p[2]);
+    }
+    out.face_start = std::move(face_start);
+    out.face_vertices.resize(nc);
+    for (size_t c = 0; c < nc; ++c) out.face_vertices[c] = vertex_of_run[static_cast<size_t>(run_of[c])];
+    out.source.file = path;
+    out.source.notes.push_back("read with " + version() + ": " + std::to_string(nc) + " face corners welded into " +
+                               std::to_string(out.positions.size()) + " vertices by identical position");
+    if (skipped) out.source.notes.push_back(std::to_string(skipped) + " point or line primitives skipped");
+    return out;
+}
+
+}  // namespace crossdiv::adapters::assimp

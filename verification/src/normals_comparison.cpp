@@ -1,0 +1,155 @@
+#include "crossdiv/verification/normals_comparison.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+
+#include "crossdiv/error.h"
+#include "crossdiv/mesh/tri_connectivity.h"
+#if CROSSDIV_HAS_OPENMESH
+#include "crossdiv/adapters/openmesh.h"
+#endif
+#if CROSSDIV_HAS_CGAL
+#include "crossdiv/adapters/cgal.h"
+#endif
+
+namespace crossdiv::verification {
+namespace {
+
+constexpr NormalWeighting kWeightings[3] = {NormalWeighting::Area, NormalWeighting::Angle, NormalWeighting::Uniform};
+
+double angle(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
+
+/// Per vertex, the largest angle between `n` and the unit normals of its faces (0 without faces).
+std::vector<double> largest_face_angle(const TriMesh& mesh, const std::vector<Vec3>& n) {
+    std::vector<double> out(static_cast<size_t>(mesh.num_vertices()), 0.0);
+    const auto& P = mesh.positions;
+    for (const Triangle& t : mesh.triangles) {
+        const Vec3 c = (P[t[1]] - P[t[0]]).cross(P[t[2]] - P[t[0]]);
+        if (c.norm() == 0.0) continue;
+        for (int v : t)
+            if (n[v].norm() > 0) out[v] = std::max(out[v], angle(n[v], c.normalized()));
+    }
+    return out;
+}
+
+/// CGAL's fallback weighting: (v2 - v) x (v1 - v) / (|v1 - v| |v2 - v|) per face, i.e. the
+/// unit face normal times the sine of the angle at the vertex; normalized.
+std::vector<Vec3> sine_weighted_normals(const TriMesh& mesh) {
+    std::vector<Vec3> n(static_cast<size_t>(mesh.num_vertices()), Vec3::Zero());
+    const auto& P = mesh.positions;
+    for (const Triangle& t : mesh.triangles)
+        for (int j = 0; j < 3; ++j) {
+            const Vec3 e1 = P[t[(j + 1) % 3]] - P[t[j]], e2 = P[t[(j + 2) % 3]] - P[t[j]];
+            const double den = e1.norm() * e2.norm();
+            if (den > 0) n[t[j]] += e1.cross(e2) / den;
+        }
+    for (Vec3& v : n)
+        if (v.norm() > 0) v.normalize();
+    return n;
+}
+
+void measure(const TriMesh& mesh, const std::vector<std::vector<Vec3>>& ours, const std::vector<char>& boundary,
+             const std::vector<std::vector<double>>& ours_visibility, ReferenceNormals& r) {
+    const int nv = mesh.num_vertices();
+    for (int w = 0; w < 3; ++w)
+        for (int v = 0; v < nv; ++v) {
+            if (ours[w][v].norm() == 0 || r.normals[v].norm() == 0) continue;
+            const double a = angle(ours[w][v], r.normals[v]);
+            if (a > r.max_angle[w] || r.worst_vertex[w] < 0) r.max_angle[w] = a, r.worst_vertex[w] = v;
+        }
+    int best = 0;
+    for (int w = 1; w < 3; ++w)
+        if (r.max_angle[w] < r.max_angle[best]) best = w;
+    r.closest = std::string(to_string(kWeightings[best]));
+    if (r.max_angle[best] <= kNormalMatchRad) r.matches = r.closest;
+    for (int v = 0; v < nv; ++v) {
+        if (ours[best][v].norm() == 0 || r.normals[v].norm() == 0) continue;
+        if (angle(ours[best][v], r.normals[v]) > kNormalMatchRad) {
+            ++r.mismatched;
+            r.mismatched_boundary += boundary[v];
+        }
+    }
+    const std::vector<double> vis = largest_face_angle(mesh, r.normals);
+    const std::vector<Vec3> sine = sine_weighted_normals(mesh);
+    for (int v = 0; v < nv; ++v) {
+        bool best_visible = true;
+        for (int w = 0; w < 3; ++w) best_visible = best_visible && vis[v] <= ours_visibility[w][v] + kNormalMatchRad;
+        const bool is_sine = sine[v].norm() > 0 && r.normals[v].norm() > 0 && angle(sine[v], r.normals[v]) <= kNormalMatchRad;
+        r.most_visible += best_visible;
+        r.sine_weighted += is_sine;
+        r.unexplained += !best_visible && !is_sine;
+        if (!best_visible && !is_sine)
+            r.visibility_excess = std::max(r.visibility_excess,
+                                           vis[v] - std::min({ours_visibility[0][v], ours_visibility[1][v], ours_visibility[2][v]}));
+    }
+    char buf[512];
+    if (!r.matches.empty())
+        std::snprintf(buf, sizeof buf, "%s weighting (largest angle %.2e rad)", r.matches.c_str(), r.max_angle[best]);
+    else if (r.mismatched == r.mismatched_boundary && r.mismatched > 0)
+        std::snprintf(buf, sizeof buf, "%s weighting inside; differs at %d boundary vertices only (largest %.3e rad at vertex %d)",
+                      r.closest.c_str(), r.mismatched, r.max_angle[best], r.worst_vertex[best]);
+    else if (r.unexplained == 0)
+        std::snprintf(buf, sizeof buf, "none of area/angle/uniform (closest %s, %.3e rad at vertex %d): at every vertex either "
+                      "the most visible normal (%d: no larger angle to a face normal than any of ours) or the sine-weighted sum (%d)",
+                      r.closest.c_str(), r.max_angle[best], r.worst_vertex[best], r.most_visible, r.sine_weighted);
+    else
+        std::snprintf(buf, sizeof buf, "none of area/angle/uniform (closest %s, %.3e rad at vertex %d; %d of %d vertices differ, "
+                      "%d on the boundary; most visible at %d, sine-weighted at %d, neither at %d, there up to %.2e rad less visible than ours)",
+                      r.closest.c_str(), r.max_angle[best], r.worst_vertex[best], r.mismatched, nv, r.mismatched_boundary,
+                      r.most_visible, r.sine_weighted, r.unexplained, r.visibility_excess);
+    r.classification = buf;
+}
+
+}  // namespace
+
+NormalsComparison compare_normals(const TriMesh& mesh, NormalWeighting weighting, const std::vector<std::string>& references) {
+    NormalsComparison c{weighting, vertex_normals(mesh, weighting), mesh.num_vertices(), 0, {}};
+    std::vector<std::vector<Vec3>> ours;
+    std::vector<std::vector<double>> visibility;
+    for (NormalWeighting w : kWeightings) {
+        ours.push_back(vertex_normals(mesh, w));
+        visibility.push_back(largest_face_angle(mesh, ours.back()));
+    }
+    std::vector<char> boundary(static_cast<size_t>(mesh.num_vertices()), 0);
+    try {
+        const TriConnectivity conn = build_tri_connectivity(mesh);
+        for (int v = 0; v < mesh.num_vertices(); ++v) c.boundary_vertices += boundary[v] = conn.is_boundary_vertex(v);
+    } catch (const InputError&) {
+        // Not a manifold: the boundary split of the counts is left at zero.
+    }
+    auto add = [&](std::string name, std::string method, auto&& compute) {
+        ReferenceNormals r;
+        r.name = std::move(name);
+        r.method = std::move(method);
+        try {
+            r.normals = compute();
+        } catch (const std::exception& e) {
+            r.error = e.what();
+            c.references.push_back(std::move(r));
+            return;
+        }
+        measure(mesh, ours, boundary, visibility, r);
+        c.references.push_back(std::move(r));
+    };
+    for (const std::string& ref : references) {
+#if CROSSDIV_HAS_OPENMESH
+        if (ref == "openmesh") {
+            namespace om = adapters::openmesh;
+            add("openmesh-correct", "PolyMeshT::calc_vertex_normal_correct", [&] { return om::vertex_normals(mesh, om::NormalMethod::Correct); });
+            add("openmesh-fast", "PolyMeshT::update_vertex_normals", [&] { return om::vertex_normals(mesh, om::NormalMethod::Fast); });
+            continue;
+        }
+#endif
+#if CROSSDIV_HAS_CGAL
+        if (ref == "cgal") {
+            add("cgal", "PMP::compute_vertex_normals", [&] { return adapters::cgal::vertex_normals(mesh); });
+            continue;
+        }
+#endif
+        throw InputError("unknown or unavailable normals reference '" + ref + "' (known: openmesh, cgal)");
+    }
+    return c;
+}
+
+}  // namespace crossdiv::verification
