@@ -57,4 +57,8 @@ std::vector<std::string> course_mesh_files() {
     return files_in(std::filesystem::path(CROSSDIV_SHARED_DATA) / "c3100" / "objs", ".obj");
 }
 
+std::vector<std::string> meshedit_mesh_files() {
+    return files_in(std::filesystem::path(CROSSDIV_SHARED_DATA) / "meshedit" / "dae", ".dae");
+}
+
 }  // namespace crossdiv::datasets

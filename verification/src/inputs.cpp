@@ -22,10 +22,12 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& specs) {
             for (const auto& c : datasets::edge_cases()) out.push_back("edgecase:" + c.name);
         } else if (s == "course:all") {
             for (const auto& f : datasets::course_mesh_files()) out.push_back(f);
+        } else if (s == "meshedit:all") {
+            for (const auto& f : datasets::meshedit_mesh_files()) out.push_back(f);
         } else if (s == "cgal:all") {
             for (const auto& f : datasets::cgal_mesh_files()) out.push_back(f);
         } else if (s.ends_with(":all")) {
-            throw InputError("unknown collection '" + s + "' (known: bundled:all, edgecases:all, course:all, cgal:all)");
+            throw InputError("unknown collection '" + s + "' (known: bundled:all, edgecases:all, course:all, meshedit:all, cgal:all)");
         } else {
             out.push_back(s);
         }

@@ -23,6 +23,7 @@ printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n' > "$tmp/bad_index.obj"
 printf 'v 0 0 0\nv 1 0\nv 0 1 0\nf 1 2 3\n' > "$tmp/missing.obj"
 printf 'v 0 0 0\nv 1 0 0\nv 0 nan 0\nf 1 2 3\n' > "$tmp/nan.obj"
 printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n' > "$tmp/quad.obj"
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n' > "$tmp/square.obj"
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 1 1 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n' > "$tmp/nonmanifold.obj"
 # A tetrahedron plus one vertex no face uses.
 printf 'v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\nv 5 5 5\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n' > "$tmp/isolated.obj"
@@ -120,6 +121,31 @@ expect patch-short 2 'short.bez:2: unexpected end of file: expected x of point 3
 printf 'suite surfaces\ncase surfaces:bundled,surfaces:synthetic surfaces\n' > "$tmp/surfaces.suite"
 expect suite-surfaces 0 'sphere \(exact circle profile\) +fitted order 1\.9' -- "$crossdiv" suite "$tmp/surfaces.suite" --out "$tmp/ss" --jobs 2
 expect suite-surfaces-report 0 'surface_convergence.png' -- cat "$tmp/ss/report.md"
+
+# Half-edge: edit (order kept, refusals, checks), normals, check, COLLADA input.
+expect edit-square 0 'split 0-2: new vertex 4 at \(0.5, 0.5, 0\)' -- "$crossdiv" edit "$tmp/square.obj" --flip 0-2 --flip 1-3 --split 0-2 --check -o "$tmp/sq.obj"
+expect edit-order 0 'flip 0-2: now 3-1' -- "$crossdiv" edit "$tmp/square.obj" --flip 0-2 -o "$tmp/sq.obj"
+expect edit-written 0 '^f 4 2 3' -- cat "$tmp/sq.obj"
+expect edit-refused 1 'flip 0-1: refused: boundary edge \(one face\)' -- "$crossdiv" edit "$tmp/square.obj" --flip 0-1 -o "$tmp/sq.obj"
+expect edit-exists 1 'refused: the flipped edge already exists' -- "$crossdiv" edit bundled:tetrahedron --flip 0-1 -o "$tmp/t.obj"
+expect edit-no-edge 2 '--flip 1-3: no edge joins vertices 1 and 3' -- "$crossdiv" edit "$tmp/square.obj" --flip 1-3 -o "$tmp/sq.obj"
+expect edit-bad-syntax 2 "edge '1to3': expected A-B" -- "$crossdiv" edit "$tmp/square.obj" --split 1to3 -o "$tmp/sq.obj"
+expect edit-range 2 "vertex 9 out of range \[0, 4\)" -- "$crossdiv" edit "$tmp/square.obj" --split 0-9 -o "$tmp/sq.obj"
+expect edit-quad 2 'has 4 corners; edit needs triangles' -- "$crossdiv" edit "$tmp/quad.obj" --flip 0-2 -o "$tmp/sq.obj"
+expect normals-refs 0 'openmesh-correct .*area weighting' -- "$crossdiv" normals bundled:open-patch --against openmesh,cgal --json "$tmp/n.json"
+expect normals-json 0 '"normals"' -- cat "$tmp/n.json"
+expect normals-cgal 0 'cgal .*none of area/angle/uniform' -- "$crossdiv" normals bundled:open-patch --against cgal
+expect normals-unknown 2 "unknown or unavailable normals reference 'meshlab'" -- "$crossdiv" normals bundled:torus --against meshlab
+expect check-halfedge 0 'half-edge mesh: 25 vertices, 56 edges, 32 faces, 1 boundary loop\(s\), V - E \+ F = 1, every invariant holds' -- "$crossdiv" check bundled:open-patch
+expect split-flip 0 '768 faces, 1 level\(s\), split-flip\)' -- "$crossdiv" subdivide bundled:torus --levels 1 --impl split-flip -o "$tmp/sf.obj"
+printf '<COLLADA><library_geometries><geometry>' > "$tmp/broken.dae"
+expect dae-broken 2 'broken.dae: Assimp could not read it' -- "$crossdiv" check "$tmp/broken.dae"
+dae="$(dirname "$0")/../../../shared/data/meshedit/dae"
+if [ -d "$dae" ]; then
+  for m in teapot cube beetle cow; do
+    expect "subdivide-$m" 0 "$m.dae: .* faces -> .* 1 level" -- "$crossdiv" subdivide "$dae/$m.dae" --levels 1 -o "$tmp/$m.obj"
+  done
+fi
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -31,4 +31,9 @@ std::vector<std::string> cgal_mesh_files();
 /// The course meshes in ../shared/data/c3100/objs when that folder exists, else empty.
 std::vector<std::string> course_mesh_files();
 
+/// The meshedit COLLADA meshes in ../shared/data/meshedit/dae (the top level: bean, beetle,
+/// cow, cube, peter, quadball, teapot, weird) when that folder exists, else empty. They are read
+/// through the Assimp adapter.
+std::vector<std::string> meshedit_mesh_files();
+
 }  // namespace crossdiv::datasets

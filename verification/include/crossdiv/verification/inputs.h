@@ -1,7 +1,8 @@
 #pragma once
 /// @file
 /// Input names the CLI accepts: a mesh file (.obj, .off; .dae, .ply, .stl through Assimp), `bundled:NAME`, `edgecase:NAME`, or a
-/// collection: `bundled:all`, `edgecases:all`, `course:all` (../shared/data/c3100/objs), `cgal:all` (datasets/cgal).
+/// collection: `bundled:all`, `edgecases:all`, `course:all` (../shared/data/c3100/objs),
+/// `meshedit:all` (../shared/data/meshedit/dae), `cgal:all` (datasets/cgal).
 
 #include <string>
 #include <vector>
