@@ -31,6 +31,12 @@ std::vector<EditOp> random_edit_ops(uint64_t seed, int count, double flip_share)
     return ops;
 }
 
+std::vector<Triangle> canonical_faces(std::vector<Triangle> faces) {
+    for (Triangle& t : faces) std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    std::sort(faces.begin(), faces.end());
+    return faces;
+}
+
 FlipFunction our_flip() {
     return [](HalfedgeMesh& m, EdgeId e) { return m.flip(e); };
 }
@@ -57,13 +63,6 @@ private:
     std::string name_;
     Editable mesh_;
 };
-
-/// Faces rotated to start at their smallest vertex (orientation kept), sorted.
-std::vector<Triangle> canonical(std::vector<Triangle> faces) {
-    for (Triangle& t : faces) std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
-    std::sort(faces.begin(), faces.end());
-    return faces;
-}
 
 std::string face_name(const Triangle& t) {
     return "(" + std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) + ")";
@@ -141,14 +140,14 @@ EditRunResult run(const TriMesh& base, const std::vector<EditOp>& ops, const std
             stop(i, res, "ours", "euler", "V - E + F changed from " + std::to_string(chi));
             break;
         }
-        const std::vector<Triangle> ours = canonical(he.triangles());
+        const std::vector<Triangle> ours = canonical_faces(he.triangles());
         for (auto& ref : refs) {
             const std::vector<std::string> msgs = ref->check();
             if (!msgs.empty()) {
                 stop(i, res, ref->name(), "invalid", msgs[0]);
                 break;
             }
-            const std::vector<Triangle> theirs = canonical(ref->faces());
+            const std::vector<Triangle> theirs = canonical_faces(ref->faces());
             if (theirs != ours) {
                 stop(i, res, ref->name(), "faces", face_difference(ours, theirs, ref->name()));
                 break;

@@ -11,17 +11,12 @@
 #include "crossdiv/mesh/halfedge_validity.h"
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/subdiv/loop_split_flip.h"
+#include "crossdiv/verification/edit_differential.h"
 #include "crossdiv/verification/inputs.h"
 #include "crossdiv/verification/normals_comparison.h"
 
 namespace crossdiv::verification {
 namespace {
-
-std::vector<Triangle> canonical(std::vector<Triangle> faces) {
-    for (Triangle& t : faces) std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
-    std::sort(faces.begin(), faces.end());
-    return faces;
-}
 
 const bool kMeshedit = std::filesystem::is_directory(CROSSDIV_SHARED_DATA "/meshedit/dae");
 
@@ -63,7 +58,7 @@ TEST(HalfedgeCatalog, LoopBySplitAndFlipEqualsIndexBasedLoopEverywhere) {
                 }
                 ASSERT_EQ(local_error, "") << spec;
                 EXPECT_EQ(local.positions, index.positions) << spec;
-                EXPECT_EQ(canonical(local.triangles), canonical(index.triangles)) << spec;
+                EXPECT_EQ(canonical_faces(local.triangles), canonical_faces(index.triangles)) << spec;
                 ++compared;
             }
     }
@@ -132,7 +127,7 @@ TEST(HalfedgeCatalog, MeshEditFlipAndSplitResultsAreReproduced) {
                 std::vector<Triangle> mapped = theirs.triangles;
                 for (Triangle& t : mapped)
                     for (int& v : t) v = map[static_cast<size_t>(v)];
-                if (canonical(mapped) == canonical(he.triangles())) ++reproduced;
+                if (canonical_faces(mapped) == canonical_faces(he.triangles())) ++reproduced;
             }
             EXPECT_GE(reproduced, 1) << name << "/" << op;
             std::cout << name << "/" << op << ": reproduced by " << reproduced << " edge(s)\n";

@@ -38,6 +38,10 @@ struct ResolvedEdit {
 /// "flip 3-7", "split 2-5": the syntax of `crossdiv edit --flip 3-7 --split 2-5`.
 std::string to_string(const ResolvedEdit& op);
 
+/// Faces rotated to start at their smallest vertex (orientation kept), then sorted: two meshes
+/// on the same vertex numbers have the same connectivity exactly when these are equal.
+std::vector<Triangle> canonical_faces(std::vector<Triangle> faces);
+
 /// `count` operations from a seeded std::mt19937_64; a share `flip_share` of them are flips.
 std::vector<EditOp> random_edit_ops(uint64_t seed, int count, double flip_share);
 
