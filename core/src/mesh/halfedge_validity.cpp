@@ -79,7 +79,10 @@ std::vector<HalfedgeIssue> check_halfedge_mesh(const HalfedgeMesh& m) {
 
     // 3. Faces and boundary loops: closed cycles over exactly the half-edges that name them.
     std::vector<int> named(static_cast<size_t>(nf + nl), 0);
-    for (int i = 0; i < nh; ++i) ++named[static_cast<size_t>(code(HalfedgeId(i)) >= 0 ? code(HalfedgeId(i)) : nf - 1 - code(HalfedgeId(i)))];
+    for (int i = 0; i < nh; ++i) {  // faces first, then loops: slot nf + L for code -1 - L
+        const int c = code(HalfedgeId(i));
+        ++named[static_cast<size_t>(c >= 0 ? c : nf - 1 - c)];
+    }
     auto cycle_length = [&](HalfedgeId start, int c) {
         int len = 0;
         HalfedgeId h = start;
