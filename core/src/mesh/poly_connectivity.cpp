@@ -1,0 +1,111 @@
+#include "crossdiv/mesh/poly_connectivity.h"
+
+#include <string>
+
+#include "crossdiv/error.h"
+
+namespace crossdiv {
+namespace {
+
+std::string edge_name(int a, int b) { return "edge (" + std::to_string(a) + ", " + std::to_string(b) + ")"; }
+
+}  // namespace
+
+PolyConnectivity build_poly_connectivity(const PolyMesh& mesh) {
+    const int nv = mesh.num_vertices(), nf = mesh.num_faces();
+    const MeshSource& src = mesh.source;
+    for (int v = 0; v < nv; ++v)
+        if (!mesh.positions[v].allFinite())
+            throw InputError(src.describe_vertex(v) + ": coordinate is NaN or infinite");
+
+    PolyConnectivity conn;
+    const int nc = static_cast<int>(mesh.face_vertices.size());
+    conn.corner_vertex = mesh.face_vertices;
+    conn.corner_face.resize(nc);
+    conn.next.resize(nc);
+    conn.prev.resize(nc);
+    for (int f = 0; f < nf; ++f) {
+        const int b = mesh.face_start[f], e = mesh.face_start[f + 1], n = e - b;
+        if (n < 3) throw InputError(src.describe_face(f) + ": has " + std::to_string(n) + " corners, needs at least 3");
+        for (int k = 0; k < n; ++k) {
+            const int c = b + k, v = conn.corner_vertex[c];
+            if (v < 0 || v >= nv)
+                throw InputError(src.describe_face(f) + ": vertex index " + std::to_string(v) + " out of range [0, " +
+                                 std::to_string(nv) + ")");
+            for (int j = b; j < c; ++j)
+                if (conn.corner_vertex[j] == v)
+                    throw InputError(src.describe_face(f) + ": repeated vertex " + std::to_string(v));
+            conn.corner_face[c] = f;
+            conn.next[c] = k + 1 < n ? c + 1 : b;
+            conn.prev[c] = k > 0 ? c - 1 : e - 1;
+        }
+    }
+
+    // Outgoing corners of each vertex in compressed-row form: the twin of a -> b is found
+    // among b's outgoing corners, so no edge map is needed.
+    std::vector<int> out_start(static_cast<size_t>(nv) + 1, 0);
+    for (int v : conn.corner_vertex) ++out_start[static_cast<size_t>(v) + 1];
+    for (int v = 0; v < nv; ++v) out_start[v + 1] += out_start[v];
+    std::vector<int> out_corners(static_cast<size_t>(nc));
+    {
+        std::vector<int> fill(out_start.begin(), out_start.end() - 1);
+        for (int c = 0; c < nc; ++c) out_corners[fill[conn.corner_vertex[c]]++] = c;
+    }
+
+    conn.twin.assign(nc, -1);
+    conn.corner_edge.assign(nc, -1);
+    conn.vertex_corner.assign(nv, -1);
+    conn.edge_corner.reserve(static_cast<size_t>(nc) / 2 + 16);
+    conn.edge_vertices.reserve(static_cast<size_t>(nc) / 2 + 16);
+    for (int c = 0; c < nc; ++c) {
+        const int a = conn.corner_vertex[c], b = conn.head(c);
+        int same = 0, twin = -1, opposite = 0;
+        for (int k = out_start[a]; k < out_start[a + 1]; ++k) same += conn.head(out_corners[k]) == b;
+        for (int k = out_start[b]; k < out_start[b + 1]; ++k)
+            if (conn.head(out_corners[k]) == a) {
+                twin = out_corners[k];
+                ++opposite;
+            }
+        if (same + opposite > 2)
+            throw InputError(edge_name(a, b) + " is shared by " + std::to_string(same + opposite) +
+                             " faces (non-manifold edge; first seen in " + src.describe_face(conn.corner_face[c]) + ")");
+        if (same == 2)
+            throw InputError(edge_name(a, b) + ": two faces traverse it in the same direction "
+                             "(inconsistent orientation; one of them is " + src.describe_face(conn.corner_face[c]) + ")");
+        conn.twin[c] = twin;
+        if (twin < 0 || twin > c) {
+            conn.corner_edge[c] = conn.num_edges();
+            conn.edge_corner.push_back(c);
+            conn.edge_vertices.push_back({a, b});
+        } else {
+            conn.corner_edge[c] = conn.corner_edge[twin];
+        }
+    }
+
+    // One-ring entry corners; a vertex whose corners do not form one fan is a bowtie.
+    for (int v = 0; v < nv; ++v) {
+        const int begin = out_start[v], end = out_start[v + 1];
+        if (begin == end) continue;  // isolated
+        int start = -1, boundary_fans = 0;
+        for (int k = begin; k < end; ++k) {
+            const int c = out_corners[k];
+            if (conn.twin[conn.prev[c]] < 0) {
+                ++boundary_fans;
+                if (start < 0) start = c;
+            }
+        }
+        if (start < 0) start = out_corners[begin];
+        int visited = 0;
+        for (int c = start; c >= 0; c = conn.next_around_vertex(c)) {
+            ++visited;
+            if (conn.next_around_vertex(c) == start) break;
+        }
+        if (boundary_fans > 1 || visited != end - begin)
+            throw InputError(src.describe_vertex(v) + " is non-manifold: its " + std::to_string(end - begin) +
+                             " faces form more than one fan (bowtie vertex)");
+        conn.vertex_corner[v] = start;
+    }
+    return conn;
+}
+
+}  // namespace crossdiv

@@ -1,0 +1,100 @@
+#include "crossdiv/subdiv/catmull_clark.h"
+
+#include <climits>
+#include <string>
+
+#include "crossdiv/error.h"
+#include "level_loop.h"
+
+namespace crossdiv {
+
+RefinementStep catmull_clark_step(const PolyMesh& mesh, const PolyConnectivity& conn, const CatmullClarkOptions& options) {
+    const int nv = mesh.num_vertices(), nf = mesh.num_faces(), ne = conn.num_edges(), nc = conn.num_corners();
+    if (static_cast<long long>(nv) + nf + ne > INT_MAX || 4LL * nc > INT_MAX)
+        throw InputError("the next Catmull-Clark level would have " + std::to_string(nc) +
+                         " faces, more than 32-bit indices address; use fewer levels");
+    const int face_point = nv, edge_point = nv + nf;
+    RefinementStep step(nv);
+    StencilTable& st = step.stencils;
+    st.reserve(static_cast<size_t>(nv) + nf + ne, 8 * static_cast<size_t>(nc) + nv);
+
+    // Vertex points. The terms are added in OpenSubdiv's order (PrimvarRefiner::interpFromVerts:
+    // face points, then ring vertices, then the vertex) so that rounding can match.
+    for (int v = 0; v < nv; ++v) {
+        const int start = conn.vertex_corner[v];
+        if (start < 0) {  // isolated: nothing to average with, it stays
+            st.add(v, 1.0);
+            st.end_row();
+            continue;
+        }
+        int faces = 0, last = start;
+        for (int c = start; c >= 0;) {
+            ++faces;
+            last = c;
+            c = conn.next_around_vertex(c);
+            if (c == start) break;
+        }
+        if (conn.is_boundary_vertex(v)) {
+            const CatmullClarkBoundaryMask m = catmull_clark_boundary_vertex_mask(options.boundary, faces);
+            if (m.neighbor != 0.0) {
+                st.add(conn.corner_vertex[conn.prev[start]], m.neighbor);
+                st.add(conn.head(last), m.neighbor);
+            }
+            st.add(v, m.self);
+        } else {
+            const CatmullClarkVertexMask m = catmull_clark_interior_vertex_mask(faces);
+            for (int c = start;;) {
+                st.add_refined(face_point + conn.corner_face[c], m.face);
+                c = conn.next_around_vertex(c);
+                if (c == start) break;
+            }
+            for (int c = start;;) {
+                st.add(conn.head(c), m.ring);
+                c = conn.next_around_vertex(c);
+                if (c == start) break;
+            }
+            st.add(v, m.self);
+        }
+        st.end_row();
+    }
+    // Face points: the centroid.
+    for (int f = 0; f < nf; ++f) {
+        const double w = 1.0 / mesh.face_size(f);
+        for (int c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) st.add(conn.corner_vertex[c], w);
+        st.end_row();
+    }
+    // Edge points: the endpoints, then the face points of the two faces.
+    for (int e = 0; e < ne; ++e) {
+        const int c = conn.edge_corner[e], t = conn.twin[c];
+        const auto& ends = conn.edge_vertices[e];
+        if (t < 0) {
+            st.add(ends[0], 0.5);
+            st.add(ends[1], 0.5);
+        } else {
+            st.add(ends[0], kCatmullClarkEdgeEnd);
+            st.add(ends[1], kCatmullClarkEdgeEnd);
+            st.add_refined(face_point + conn.corner_face[c], kCatmullClarkEdgeFace);
+            st.add_refined(face_point + conn.corner_face[t], kCatmullClarkEdgeFace);
+        }
+        st.end_row();
+    }
+
+    step.face_vertices.reserve(4 * static_cast<size_t>(nc));
+    step.face_start.reserve(static_cast<size_t>(nc) + 1);
+    for (int c = 0; c < nc; ++c)
+        step.add_face({conn.corner_vertex[c], edge_point + conn.corner_edge[c], face_point + conn.corner_face[c],
+                       edge_point + conn.corner_edge[conn.prev[c]]});
+    return step;
+}
+
+PolyMesh catmull_clark_subdivide(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels) {
+    return detail::refine_levels(mesh, levels, [&](const PolyMesh& m, const PolyConnectivity& conn) {
+        return catmull_clark_step(m, conn, options);
+    });
+}
+
+Eigen::SparseMatrix<double> catmull_clark_subdivision_matrix(const PolyMesh& mesh, const CatmullClarkOptions& options) {
+    return catmull_clark_step(mesh, build_poly_connectivity(mesh), options).stencils.matrix();
+}
+
+}  // namespace crossdiv

@@ -1,0 +1,28 @@
+#pragma once
+// N levels of a polygon scheme given its one-level step: the loop every RefinementStep
+// scheme shares (connectivity rebuilt per level, positions and colors through the stencils).
+
+#include <string>
+
+#include "crossdiv/error.h"
+#include "crossdiv/mesh/poly_connectivity.h"
+#include "crossdiv/subdiv/refinement.h"
+
+namespace crossdiv::detail {
+
+/// `step(mesh, conn)` returns the RefinementStep of one level; build_poly_connectivity checks
+/// the input (and throws InputError naming the element) before the first step.
+template <class Step>
+PolyMesh refine_levels(const PolyMesh& mesh, int levels, const Step& step) {
+    if (levels < 0) throw InputError("number of levels must be >= 0, got " + std::to_string(levels));
+    PolyMesh current = mesh;
+    for (int l = 0; l < levels; ++l) {
+        const PolyConnectivity conn = build_poly_connectivity(current);
+        current = apply_step(step(current, conn), current);
+    }
+    if (levels == 0) build_poly_connectivity(current);  // the same checks as a refinement
+    current.source = {};
+    return current;
+}
+
+}  // namespace crossdiv::detail
