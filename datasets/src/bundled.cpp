@@ -42,12 +42,27 @@ std::vector<BundledMesh> bundled_meshes() {
     return all;
 }
 
+std::vector<BundledMesh> polygon_meshes() {
+    std::vector<BundledMesh> all = {
+        {"quad-cube", "closed, six quads, every vertex of valence 3", quad_cube()},
+        {"quad-grid", "4x4 quads, open, saddle-bent: boundary and four one-face corners", quad_grid(4, 0.6)},
+        {"quad-torus", "closed genus-1, 12x8 quads, every vertex of valence 4", quad_torus(12, 8)},
+        {"prism-5", "closed: two pentagons and five quads", prism(5)},
+    };
+    for (int n : {3, 5, 7})
+        all.push_back({"quad-fan-" + std::to_string(n),
+                       "n quads around one interior vertex of valence " + std::to_string(n) + ", open", quad_fan(n)});
+    for (BundledMesh& b : all) b.mesh.source.file = "bundled:" + b.name;
+    return all;
+}
+
 PolyMesh bundled_mesh(const std::string& name) {
     std::string known;
-    for (BundledMesh& b : bundled_meshes()) {
-        if (b.name == name) return std::move(b.mesh);
-        known += (known.empty() ? "" : ", ") + b.name;
-    }
+    for (auto&& list : {bundled_meshes(), polygon_meshes()})
+        for (const BundledMesh& b : list) {
+            if (b.name == name) return b.mesh;
+            known += (known.empty() ? "" : ", ") + b.name;
+        }
     throw InputError("unknown bundled mesh '" + name + "' (known: " + known + ")");
 }
 

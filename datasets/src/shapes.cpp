@@ -228,4 +228,72 @@ PolyMesh irregular_torus(int nu, int nv) {
     return make(p, f);
 }
 
+PolyMesh quad_cube() {
+    std::vector<Vec3> p;
+    for (int i = 0; i < 8; ++i) p.emplace_back(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1);
+    return make(p, {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}});
+}
+
+PolyMesh quad_grid(int n, double bend) {
+    std::vector<Vec3> p;
+    std::vector<std::vector<int>> f;
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) {
+            const double x = double(i) / n - 0.5, y = double(j) / n - 0.5;
+            p.emplace_back(x, y, bend * (x * x - y * y));
+        }
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const int a = j * (n + 1) + i;
+            f.push_back({a, a + 1, a + n + 2, a + n + 1});
+        }
+    return make(p, f);
+}
+
+PolyMesh quad_torus(int nu, int nv) {
+    std::vector<Vec3> p;
+    std::vector<std::vector<int>> f;
+    for (int i = 0; i < nu; ++i)
+        for (int j = 0; j < nv; ++j) {
+            const double u = 2 * M_PI * i / nu, v = 2 * M_PI * j / nv;
+            const double r = 0.4 + 0.05 * std::sin(3 * u);  // not a surface of revolution: no symmetric ties
+            p.emplace_back((1 + r * std::cos(v)) * std::cos(u), (1 + r * std::cos(v)) * std::sin(u), r * std::sin(v));
+        }
+    for (int i = 0; i < nu; ++i)
+        for (int j = 0; j < nv; ++j) {
+            const int i1 = (i + 1) % nu, j1 = (j + 1) % nv;
+            f.push_back({i * nv + j, i1 * nv + j, i1 * nv + j1, i * nv + j1});
+        }
+    return make(p, f);
+}
+
+PolyMesh prism(int n) {
+    std::vector<Vec3> p;
+    for (int z = 0; z < 2; ++z)
+        for (int k = 0; k < n; ++k)
+            p.emplace_back(std::cos(2 * M_PI * k / n), std::sin(2 * M_PI * k / n), z ? 1.3 : -0.7);
+    std::vector<std::vector<int>> f;
+    std::vector<int> bottom, top;
+    for (int k = 0; k < n; ++k) {
+        bottom.push_back(n - 1 - k);
+        top.push_back(n + k);
+        f.push_back({k, (k + 1) % n, n + (k + 1) % n, n + k});
+    }
+    f.push_back(bottom);
+    f.push_back(top);
+    return make(p, f);
+}
+
+PolyMesh quad_fan(int n) {
+    std::vector<Vec3> p{Vec3(0, 0, 0.3)};
+    std::vector<std::vector<int>> f;
+    for (int k = 0; k < n; ++k) {
+        const double a = 2 * M_PI * k / n, b = a + M_PI / n;
+        p.emplace_back(std::cos(a), std::sin(a), 0);                     // spoke end 1 + 2k
+        p.emplace_back(1.2 * std::cos(b), 1.2 * std::sin(b), 0.1);      // rim between spokes 2 + 2k
+    }
+    for (int k = 0; k < n; ++k) f.push_back({0, 1 + 2 * k, 2 + 2 * k, 1 + 2 * ((k + 1) % n)});
+    return make(p, f);
+}
+
 }  // namespace crossdiv::datasets::shapes

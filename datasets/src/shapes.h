@@ -34,6 +34,12 @@ PolyMesh boundary_fan(int k);
 PolyMesh pole(int n, int rings);
 /// Two triangles back to back: closed, every vertex and edge of valence 2.
 PolyMesh pillow();
+/// Polygon meshes for the schemes that take any polygon.
+PolyMesh quad_cube();                      ///< six quads, valence 3 corners
+PolyMesh quad_grid(int n, double bend);    ///< n x n quads, open, z = bend (x^2 - y^2): four one-face corners
+PolyMesh quad_torus(int nu, int nv);       ///< nu x nv quads, every vertex of valence 4, slightly irregular radii
+PolyMesh prism(int n);                     ///< two n-gons and n quads, closed
+PolyMesh quad_fan(int n);                  ///< n quads around one interior vertex of valence n, open
 /// A slab with `holes` square holes through it: closed, genus = holes.
 PolyMesh slab_with_holes(int holes);
 

@@ -27,6 +27,7 @@
 #endif
 #include "curve_commands.h"
 #include "edit_commands.h"
+#include "scheme_commands.h"
 #include "surface_commands.h"
 
 namespace {
@@ -41,16 +42,21 @@ struct SchemeArgs {
     int levels = 1;
 
     void add_to(CLI::App& app) {
-        app.add_option("--scheme", scheme, "Subdivision scheme")->check(CLI::IsMember({"loop"}))->capture_default_str();
+        app.add_option("--scheme", scheme, "Subdivision scheme")
+            ->check(CLI::IsMember({"loop", "catmull-clark"}))
+            ->capture_default_str();
         app.add_option("--weights", weights, "Even-vertex weight family: loop (Loop 1987) or warren (3/(8n))")
             ->check(CLI::IsMember({"loop", "warren"}))
             ->capture_default_str();
-        app.add_option("--boundary", boundary, "Boundary rule: edge-only or edge-and-corner")
-            ->check(CLI::IsMember({"edge-only", "edge-and-corner"}))
+        app.add_option("--boundary", boundary,
+                       "Boundary rule: edge-only or edge-and-corner; catmull-clark also midpoint-average (OpenMesh's)")
+            ->check(CLI::IsMember({"edge-only", "edge-and-corner", "midpoint-average"}))
             ->capture_default_str();
         app.add_option("--levels", levels, "Number of subdivision levels")->check(CLI::Range(0, 12))->capture_default_str();
     }
+    cli::PolySchemeArgs poly() const { return {scheme, boundary, levels}; }
     LoopOptions options() const {
+        if (boundary == "midpoint-average") throw InputError("loop has no midpoint-average boundary rule");
         return {weights == "loop" ? LoopWeights::Loop : LoopWeights::Warren,
                 boundary == "edge-only" ? LoopBoundary::EdgeOnly : LoopBoundary::EdgeAndCorner};
     }
@@ -70,6 +76,10 @@ void check_output_size(const TriMesh& mesh, int levels, const std::string& name)
 }
 
 int run_subdivide(const std::string& in, const SchemeArgs& s, const std::string& impl, const std::string& out) {
+    if (s.scheme != "loop") {
+        if (impl == "split-flip") throw InputError("split-flip is Loop's method; " + s.scheme + " has none");
+        return cli::run_scheme_subdivide(in, s.poly(), impl, out);
+    }
     const TriMesh mesh = to_tri_mesh(load_input(in), "Loop subdivision");
     check_output_size(mesh, s.levels, in);
     PolyMesh result;
@@ -117,6 +127,7 @@ void print_table(const LoopComparison& c) {
 
 int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, const std::string& against,
                 const std::string& json_path, double timeout, bool no_isolate) {
+    if (s.scheme != "loop") return cli::run_scheme_compare(specs, s.poly(), against, json_path, timeout, no_isolate);
     LoopComparisonRequest req;
     req.options = s.options();
     req.levels = s.levels;

@@ -18,6 +18,8 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& specs) {
     for (const std::string& s : specs) {
         if (s == "bundled:all") {
             for (const auto& b : datasets::bundled_meshes()) out.push_back("bundled:" + b.name);
+        } else if (s == "polygons:all") {
+            for (const auto& b : datasets::polygon_meshes()) out.push_back("bundled:" + b.name);
         } else if (s == "edgecases:all") {
             for (const auto& c : datasets::edge_cases()) out.push_back("edgecase:" + c.name);
         } else if (s == "course:all") {
@@ -27,7 +29,7 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& specs) {
         } else if (s == "cgal:all") {
             for (const auto& f : datasets::cgal_mesh_files()) out.push_back(f);
         } else if (s.ends_with(":all")) {
-            throw InputError("unknown collection '" + s + "' (known: bundled:all, edgecases:all, course:all, meshedit:all, cgal:all)");
+            throw InputError("unknown collection '" + s + "' (known: bundled:all, polygons:all, edgecases:all, course:all, meshedit:all, cgal:all)");
         } else {
             out.push_back(s);
         }

@@ -33,4 +33,23 @@ inline Mesh to_surface_mesh(const TriMesh& mesh, std::string& refused) {
     return m;
 }
 
+/// The polygon mesh as a Surface_mesh, same numbering, or why add_face refused a face.
+inline Mesh to_surface_mesh(const PolyMesh& mesh, std::string& refused) {
+    Mesh m;
+    std::vector<Mesh::Vertex_index> vh;
+    vh.reserve(static_cast<size_t>(mesh.num_vertices()));
+    for (const Vec3& p : mesh.positions) vh.push_back(m.add_vertex(Kernel::Point_3(p.x(), p.y(), p.z())));
+    std::vector<Mesh::Vertex_index> corners;
+    for (int f = 0; f < mesh.num_faces(); ++f) {
+        corners.clear();
+        for (int k = 0; k < mesh.face_size(f); ++k) corners.push_back(vh[mesh.face(f)[k]]);
+        if (m.add_face(corners) == Mesh::null_face()) {
+            refused = "CGAL Surface_mesh could not add face " + std::to_string(f) +
+                      ": non-manifold or inconsistently oriented";
+            break;
+        }
+    }
+    return m;
+}
+
 }  // namespace crossdiv::adapters::cgal::detail

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "crossdiv/adapters/opensubdiv.h"
+#include "opensubdiv_far.h"
 
 namespace crossdiv::adapters::opensubdiv {
 
@@ -18,19 +19,9 @@ namespace {
 /// A Catmull-Clark topology refiner of the polygon mesh, with the boundary rule OpenSubdiv
 /// calls EDGE_ONLY (the library default, NONE, would make boundary faces holes).
 std::unique_ptr<Far::TopologyRefiner> catmark_refiner(const PolyMesh& mesh) {
-    std::vector<int> sizes(static_cast<size_t>(mesh.num_faces()));
-    for (int f = 0; f < mesh.num_faces(); ++f) sizes[f] = mesh.face_size(f);
-    Far::TopologyDescriptor desc;
-    desc.numVertices = mesh.num_vertices();
-    desc.numFaces = mesh.num_faces();
-    desc.numVertsPerFace = sizes.data();
-    desc.vertIndicesPerFace = mesh.face_vertices.data();
     Sdc::Options sdc;
     sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
-    using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-    std::unique_ptr<Far::TopologyRefiner> refiner(Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, sdc)));
-    if (!refiner) throw Rejected("Far::TopologyRefinerFactory refused the mesh");
-    return refiner;
+    return detail::make_refiner(mesh, Sdc::SCHEME_CATMARK, sdc);
 }
 
 }  // namespace

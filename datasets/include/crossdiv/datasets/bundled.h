@@ -21,7 +21,12 @@ struct BundledMesh {
 /// cube-asymmetric, open-patch, torus, fan-3 .. fan-12, pole-64.
 std::vector<BundledMesh> bundled_meshes();
 
-/// One bundled mesh by name. @throws InputError naming the unknown name and listing the known ones.
+/// The polygon meshes for the schemes that take any polygon (Catmull-Clark): quad-cube,
+/// quad-grid, quad-torus, prism-5, quad-fan-3, quad-fan-5, quad-fan-7. Collection
+/// "polygons:all". Not in bundled_meshes(), whose every member is a Loop input.
+std::vector<BundledMesh> polygon_meshes();
+
+/// One bundled or polygon mesh by name. @throws InputError naming the unknown name and listing the known ones.
 PolyMesh bundled_mesh(const std::string& name);
 
 /// The CGAL demo meshes unpacked by datasets/install_cgal_meshes.sh (paths to .off files,

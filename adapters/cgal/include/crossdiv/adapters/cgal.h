@@ -1,9 +1,9 @@
 #pragma once
 /// @file
-/// CGAL 5.5 adapter: Subdivision_method_3::Loop_subdivision on
+/// CGAL 5.5 adapter: Subdivision_method_3 (Loop, Catmull-Clark, Doo-Sabin, sqrt3) on
 /// Surface_mesh<Simple_cartesian<double>::Point_3>; closed-mesh checks, vertex normals and the
 /// Euler operations flip_edge, split_edge and split_face. CGAL is included by two translation
-/// units (Loop; everything else).
+/// units (subdivision; everything else).
 
 #include <memory>
 #include <string>
@@ -27,6 +27,22 @@ LevelTrace loop(const TriMesh& mesh, const LoopOptions& options, int levels);
 /// The same refinement in the library's own structures, with nothing converted back: what
 /// `crossdiv bench` times. Returns the number of output faces. @throws as loop().
 size_t loop_native(const TriMesh& mesh, const LoopOptions& options, int levels);
+
+/// CatmullClark_subdivision, one call of one iteration per level. CatmullClark_mask_3's border
+/// rule is the midpoint edge and the 1-6-1 vertex (our EdgeOnly); it has no corner rule.
+/// @throws Rejected when Surface_mesh refuses a face, naming it.
+LevelTrace catmull_clark(const PolyMesh& mesh, int levels);
+
+/// DooSabin_subdivision, one call of one iteration per level (DooSabin_mask_3). CGAL's DQQ
+/// refinement makes faces for the interior only: at a border it drops the faces of border
+/// edges and vertices, which the harness classifies. @throws as catmull_clark().
+LevelTrace doo_sabin(const PolyMesh& mesh, int levels);
+
+/// Sqrt3_subdivision. CGAL refines the border only on every second step *of one call*
+/// (Sqrt3_mask_3::border_node), so the trace is made of fresh calls of k = 1 .. levels
+/// iterations when `one_call` is true, and of `levels` calls of one iteration (the border
+/// never refined) when false. @throws as catmull_clark(), and for a non-triangle face.
+LevelTrace sqrt3(const TriMesh& mesh, int levels, bool one_call);
 
 /// What CGAL says about a triangle mesh as a closed surface.
 struct ClosedMeshReport {

@@ -29,6 +29,22 @@ LevelTrace loop(const TriMesh& mesh, const LoopOptions& options, int levels);
 /// `crossdiv bench` times. Returns the number of output faces. @throws as loop().
 size_t loop_native(const TriMesh& mesh, const LoopOptions& options, int levels);
 
+/// CatmullClarkT on the double-precision OpenMesh::PolyMesh, one call per level. Its interior
+/// rule is OpenSubdiv's; its boundary vertex is the average of the vertex and its two boundary
+/// edge midpoints (our CatmullClarkBoundary::MidpointAverage).
+/// @throws Rejected naming the face OpenMesh refuses.
+LevelTrace catmull_clark(const PolyMesh& mesh, int levels);
+
+/// Sqrt3T. Its generation counter (boundary refined on odd generations) is a mesh property
+/// that lives for one call, so the trace is made of fresh calls of k = 1 .. levels steps when
+/// `one_call` is true, and of `levels` calls of one step (boundary never refined) when false.
+/// @throws Rejected naming the face OpenMesh refuses.
+LevelTrace sqrt3(const TriMesh& mesh, int levels, bool one_call);
+
+/// ModifiedButterflyT (Zorin, Schroeder, Sweldens 1996), one call per level; boundary edges by
+/// the four-point rule, missing stencil points reflected. @throws Rejected as sqrt3().
+LevelTrace modified_butterfly(const TriMesh& mesh, int levels);
+
 /// "OpenMesh 9.0".
 std::string version();
 

@@ -10,6 +10,7 @@
 
 #include "crossdiv/adapters/reference.h"
 #include "crossdiv/mesh/tri_mesh.h"
+#include "crossdiv/subdiv/catmull_clark_mask.h"
 #include "crossdiv/subdiv/loop_mask.h"
 
 namespace crossdiv::adapters::opensubdiv {
@@ -43,6 +44,28 @@ struct LimitEvaluation {
 /// from its corner 0 to corner 1 and v from corner 0 to corner 3. Boundary rule EDGE_ONLY.
 /// @throws Rejected when Far refuses the mesh or the face has no limit surface.
 LimitEvaluation catmark_limit(const PolyMesh& mesh, int face, std::span<const std::array<double, 2>> uv);
+
+/// OpenSubdiv's Catmull-Clark (SCHEME_CATMARK) has our EdgeOnly and EdgeAndCorner boundary
+/// rules (VTX_BOUNDARY_EDGE_ONLY, VTX_BOUNDARY_EDGE_AND_CORNER), not OpenMesh's midpoint-average.
+bool supports(const CatmullClarkOptions& options);
+
+/// `levels` uniform Catmull-Clark levels of a polygon mesh (any face sizes), every level kept
+/// in Far's order (old vertices first, then one per face, then one per edge).
+/// @throws Rejected for the midpoint-average rule or when Far's factory reports an error.
+LevelTrace catmull_clark(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels);
+
+/// Limit positions and limit normals of every vertex of a refined level, by
+/// PrimvarRefinerReal<double>::Limit (with its two tangents; the normal is their normalized
+/// cross product, zero where they are parallel). `level` is that level's mesh in Far's order.
+struct LimitPoints {
+    PolyMesh level;
+    std::vector<Vec3> position, normal;
+};
+/// Loop: `levels` uniform levels (0: the input itself), then Limit() on the last one.
+/// @throws Rejected for Warren weights or a topology Far refuses.
+LimitPoints loop_limit(const TriMesh& mesh, const LoopOptions& options, int levels);
+/// Catmull-Clark, as loop_limit. @throws Rejected for the midpoint-average rule.
+LimitPoints catmull_clark_limit(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels);
 
 /// "OpenSubdiv 3.5.0" (from opensubdiv/version.h).
 std::string version();

@@ -1,5 +1,5 @@
 // One of the two translation units that include CGAL (each costs ~1 GB and tens of seconds to
-// compile): Loop subdivision.
+// compile): the subdivision methods.
 #include <CGAL/subdivision_method_3.h>
 #include <CGAL/version.h>
 
@@ -64,6 +64,57 @@ size_t loop_native(const TriMesh& mesh, const LoopOptions& options, int levels) 
     Mesh m = build(mesh, options);
     CGAL::Subdivision_method_3::Loop_subdivision(m, CGAL::parameters::number_of_iterations(levels));
     return m.number_of_faces();
+}
+
+namespace {
+
+Mesh build_polygons(const PolyMesh& mesh) {
+    std::string refused;
+    Mesh m = detail::to_surface_mesh(mesh, refused);
+    if (!refused.empty()) throw Rejected(refused);
+    return m;
+}
+
+/// Every level of `levels` calls of one iteration each of `method`.
+template <class Method>
+LevelTrace per_level(Mesh m, int levels, Method method) {
+    LevelTrace trace{snapshot(m)};
+    for (int l = 1; l <= levels; ++l) {
+        method(m, 1);
+        trace.push_back(snapshot(m));
+    }
+    return trace;
+}
+
+}  // namespace
+
+LevelTrace catmull_clark(const PolyMesh& mesh, int levels) {
+    return per_level(build_polygons(mesh), levels, [](Mesh& m, int n) {
+        CGAL::Subdivision_method_3::CatmullClark_subdivision(m, CGAL::parameters::number_of_iterations(n));
+    });
+}
+
+LevelTrace doo_sabin(const PolyMesh& mesh, int levels) {
+    return per_level(build_polygons(mesh), levels, [](Mesh& m, int n) {
+        CGAL::Subdivision_method_3::DooSabin_subdivision(m, CGAL::parameters::number_of_iterations(n));
+    });
+}
+
+LevelTrace sqrt3(const TriMesh& mesh, int levels, bool one_call) {
+    auto method = [](Mesh& m, int n) {
+        CGAL::Subdivision_method_3::Sqrt3_subdivision(m, CGAL::parameters::number_of_iterations(n));
+    };
+    std::string refused;
+    const Mesh base = detail::to_surface_mesh(mesh, refused);
+    if (!refused.empty()) throw Rejected(refused);
+    if (!one_call) return per_level(base, levels, method);
+    LevelTrace trace{snapshot(base)};
+    for (int l = 1; l <= levels; ++l) {
+        Mesh m = base;
+        method(m, l);
+        trace.push_back(snapshot(m));
+    }
+    return trace;
 }
 
 }  // namespace crossdiv::adapters::cgal

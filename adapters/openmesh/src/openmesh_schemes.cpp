@@ -1,0 +1,87 @@
+// Catmull-Clark, sqrt3 and modified Butterfly through OpenMesh's uniform subdividers.
+#include <OpenMesh/Core/Mesh/DefaultPolyMesh.hh>
+#include <OpenMesh/Core/Mesh/DefaultTriMesh.hh>  // first: the Subdivider headers rely on what it brings in
+#include <OpenMesh/Tools/Subdivider/Uniform/CatmullClarkT.hh>
+#include <OpenMesh/Tools/Subdivider/Uniform/ModifiedButterFlyT.hh>
+#include <OpenMesh/Tools/Subdivider/Uniform/Sqrt3T.hh>
+
+#include <string>
+
+#include "crossdiv/adapters/openmesh.h"
+#include "openmesh_mesh.h"
+
+namespace crossdiv::adapters::openmesh {
+namespace {
+
+using Poly = OpenMesh::PolyMesh;  // DefaultTraitsDouble
+
+template <class M>
+PolyMesh snapshot(const M& m) {
+    PolyMesh out;
+    out.positions.reserve(m.n_vertices());
+    for (auto v : m.vertices()) {
+        const auto& p = m.point(v);
+        out.positions.emplace_back(p[0], p[1], p[2]);
+    }
+    for (auto f : m.faces()) {
+        for (auto v : m.fv_range(f)) out.face_vertices.push_back(v.idx());
+        out.face_start.push_back(static_cast<int>(out.face_vertices.size()));
+    }
+    return out;
+}
+
+Poly to_poly(const PolyMesh& mesh) {
+    Poly m;
+    std::vector<Poly::VertexHandle> vh;
+    for (const Vec3& p : mesh.positions) vh.push_back(m.add_vertex(Poly::Point(p.x(), p.y(), p.z())));
+    std::vector<Poly::VertexHandle> corners;
+    for (int f = 0; f < mesh.num_faces(); ++f) {
+        corners.clear();
+        for (int k = 0; k < mesh.face_size(f); ++k) corners.push_back(vh[mesh.face(f)[k]]);
+        if (!m.add_face(corners).is_valid())
+            throw Rejected("OpenMesh could not add face " + std::to_string(f) + ": complex edge or vertex");
+    }
+    return m;
+}
+
+/// Every level of `levels` calls of one step of `Subdivider`.
+template <class Subdivider, class M>
+LevelTrace per_level(M m, int levels) {
+    LevelTrace trace{snapshot(m)};
+    Subdivider sub;
+    for (int l = 1; l <= levels; ++l) {
+        sub.attach(m);
+        sub(1);
+        sub.detach();
+        trace.push_back(snapshot(m));
+    }
+    return trace;
+}
+
+}  // namespace
+
+LevelTrace catmull_clark(const PolyMesh& mesh, int levels) {
+    return per_level<OpenMesh::Subdivider::Uniform::CatmullClarkT<Poly>>(to_poly(mesh), levels);
+}
+
+LevelTrace sqrt3(const TriMesh& mesh, int levels, bool one_call) {
+    using Sqrt3 = OpenMesh::Subdivider::Uniform::Sqrt3T<detail::Mesh>;
+    detail::Mesh base = detail::to_openmesh(mesh);
+    if (!one_call) return per_level<Sqrt3>(base, levels);
+    LevelTrace trace{snapshot(base)};
+    for (int l = 1; l <= levels; ++l) {
+        detail::Mesh m = base;
+        Sqrt3 sub;
+        sub.attach(m);
+        sub(static_cast<size_t>(l));
+        sub.detach();
+        trace.push_back(snapshot(m));
+    }
+    return trace;
+}
+
+LevelTrace modified_butterfly(const TriMesh& mesh, int levels) {
+    return per_level<OpenMesh::Subdivider::Uniform::ModifiedButterflyT<detail::Mesh>>(detail::to_openmesh(mesh), levels);
+}
+
+}  // namespace crossdiv::adapters::openmesh

@@ -1,0 +1,111 @@
+#pragma once
+// What every OpenSubdiv translation unit of the adapter shares (internal header): the primvar
+// type, Far's error callback, the refiner factory call, and reading a level back.
+#include <opensubdiv/far/error.h>
+#include <opensubdiv/far/primvarRefiner.h>
+#include <opensubdiv/far/topologyDescriptor.h>
+#include <opensubdiv/far/topologyRefinerFactory.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "crossdiv/adapters/reference.h"
+#include "crossdiv/mesh/poly_mesh.h"
+
+namespace crossdiv::adapters::opensubdiv::detail {
+
+using namespace OpenSubdiv;
+
+/// Primvar with the Clear/AddWithWeight interface PrimvarRefiner expects.
+struct Point3 {
+    double p[3];
+    void Clear() { p[0] = p[1] = p[2] = 0.0; }
+    void AddWithWeight(const Point3& src, double w) {
+        p[0] += w * src.p[0];
+        p[1] += w * src.p[1];
+        p[2] += w * src.p[2];
+    }
+    Vec3 vec() const { return {p[0], p[1], p[2]}; }
+};
+
+// Far reports topology errors through a global C callback; collect them for Rejected.
+inline std::string g_far_errors;
+inline void collect_far_error(Far::ErrorType, const char* message) {
+    g_far_errors += message;
+    g_far_errors += "; ";
+}
+
+/// Far's refiner for a polygon mesh given as face sizes and corner indices (not refined yet).
+/// @throws Rejected with Far's own words when the factory refuses the mesh.
+inline std::unique_ptr<Far::TopologyRefiner> make_refiner(int num_vertices, const std::vector<int>& face_sizes,
+                                                          const std::vector<int>& corners, Sdc::SchemeType scheme,
+                                                          const Sdc::Options& sdc) {
+    Far::TopologyDescriptor desc;
+    desc.numVertices = num_vertices;
+    desc.numFaces = static_cast<int>(face_sizes.size());
+    desc.numVertsPerFace = face_sizes.data();
+    desc.vertIndicesPerFace = corners.data();
+    g_far_errors.clear();
+    Far::SetErrorCallback(collect_far_error);
+    using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
+    std::unique_ptr<Far::TopologyRefiner> refiner(Factory::Create(desc, Factory::Options(scheme, sdc)));
+    if (!refiner) throw Rejected("Far::TopologyRefinerFactory failed: " + g_far_errors);
+    return refiner;
+}
+
+inline std::unique_ptr<Far::TopologyRefiner> make_refiner(const PolyMesh& mesh, Sdc::SchemeType scheme,
+                                                          const Sdc::Options& sdc) {
+    std::vector<int> sizes(static_cast<size_t>(mesh.num_faces()));
+    for (int f = 0; f < mesh.num_faces(); ++f) sizes[f] = mesh.face_size(f);
+    return make_refiner(mesh.num_vertices(), sizes, mesh.face_vertices, scheme, sdc);
+}
+
+/// Uniform refinement; full topology in the last level when asked (edges, for Limit()).
+/// @throws Rejected when Far reports an error while refining.
+inline void refine_uniform(Far::TopologyRefiner& refiner, int levels, bool full_topology_in_last_level) {
+    Far::TopologyRefiner::UniformOptions uniform(levels);
+    uniform.fullTopologyInLastLevel = full_topology_in_last_level;
+    refiner.RefineUniform(uniform);
+    if (!g_far_errors.empty()) throw Rejected("Far reported: " + g_far_errors);
+}
+
+/// The positions of the input, with room for every refined level after them.
+inline std::vector<Point3> base_points(const Far::TopologyRefiner& refiner, const std::vector<Vec3>& positions) {
+    std::vector<Point3> points(static_cast<size_t>(refiner.GetNumVerticesTotal()));
+    for (size_t v = 0; v < positions.size(); ++v) points[v] = {{positions[v].x(), positions[v].y(), positions[v].z()}};
+    return points;
+}
+
+/// One level as a PolyMesh (Far's vertex and face order).
+inline PolyMesh level_mesh(const Far::TopologyLevel& level, const Point3* points) {
+    PolyMesh m;
+    m.positions.reserve(static_cast<size_t>(level.GetNumVertices()));
+    for (int v = 0; v < level.GetNumVertices(); ++v) m.positions.push_back(points[v].vec());
+    for (int f = 0; f < level.GetNumFaces(); ++f) {
+        Far::ConstIndexArray fv = level.GetFaceVertices(f);
+        for (int k = 0; k < fv.size(); ++k) m.face_vertices.push_back(fv[k]);
+        m.face_start.push_back(static_cast<int>(m.face_vertices.size()));
+    }
+    return m;
+}
+
+/// Every level of a refined refiner, positions interpolated level by level in double.
+inline LevelTrace interpolate_trace(const Far::TopologyRefiner& refiner, const std::vector<Vec3>& positions,
+                                    std::vector<Point3>* all_points = nullptr) {
+    std::vector<Point3> points = base_points(refiner, positions);
+    LevelTrace trace;
+    trace.push_back(level_mesh(refiner.GetLevel(0), points.data()));
+    Far::PrimvarRefinerReal<double> primvar(refiner);
+    Point3* src = points.data();
+    for (int level = 1; level <= refiner.GetMaxLevel(); ++level) {
+        Point3* dst = src + refiner.GetLevel(level - 1).GetNumVertices();
+        primvar.Interpolate(level, src, dst);
+        trace.push_back(level_mesh(refiner.GetLevel(level), dst));
+        src = dst;
+    }
+    if (all_points) *all_points = std::move(points);
+    return trace;
+}
+
+}  // namespace crossdiv::adapters::opensubdiv::detail
