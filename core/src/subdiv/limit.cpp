@@ -1,0 +1,129 @@
+#include "crossdiv/subdiv/limit.h"
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <string>
+
+#include "crossdiv/error.h"
+#include "crossdiv/mesh/poly_connectivity.h"
+#include "crossdiv/subdiv/loop.h"
+
+namespace crossdiv {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+Vec3 unit_or_zero(const Vec3& n) { return n.norm() > 0 ? Vec3(n.normalized()) : Vec3::Zero(); }
+
+/// The cubic B-spline limit of a boundary vertex, or the vertex itself at a fixed corner.
+Vec3 boundary_limit(const Vec3& v, const Vec3& a, const Vec3& b, bool corner) {
+    return corner ? v : Vec3((2.0 / 3.0) * v + (1.0 / 6.0) * (a + b));
+}
+
+}  // namespace
+
+LimitResult loop_limit(const TriMesh& mesh, const LoopOptions& options) {
+    // The polygon connectivity walks rings in the same order as TriConnectivity and needs no
+    // second implementation of the one-ring walk.
+    const PolyMesh poly = to_poly_mesh(mesh);
+    loop_input_connectivity(mesh);  // Loop's own checks and messages
+    const PolyConnectivity conn = build_poly_connectivity(poly);
+    LimitResult out;
+    out.position.resize(static_cast<size_t>(mesh.num_vertices()));
+    out.normal.assign(out.position.size(), Vec3::Constant(kNaN));
+    std::vector<int> ring;
+    for (int v = 0; v < mesh.num_vertices(); ++v) {
+        const Vec3& p = mesh.positions[v];
+        const int start = conn.vertex_corner[v];
+        if (start < 0) {
+            out.position[v] = p;
+            continue;
+        }
+        ring.clear();
+        int faces = 0, last = start;
+        for (int c = start; c >= 0;) {
+            ring.push_back(conn.head(c));
+            ++faces;
+            last = c;
+            c = conn.next_around_vertex(c);
+            if (c == start) break;
+        }
+        if (conn.is_boundary_vertex(v)) {
+            const bool corner = options.boundary == LoopBoundary::EdgeAndCorner && faces == 1;
+            out.position[v] = boundary_limit(p, mesh.positions[conn.corner_vertex[conn.prev[start]]],
+                                             mesh.positions[conn.head(last)], corner);
+            continue;
+        }
+        const int n = faces;
+        const double chi = loop_limit_ring_weight(options.weights, n);
+        Vec3 sum = Vec3::Zero(), t1 = Vec3::Zero(), t2 = Vec3::Zero();
+        for (int i = 0; i < n; ++i) {
+            const Vec3& q = mesh.positions[ring[i]];
+            sum += q;
+            t1 += std::cos(2 * M_PI * i / n) * q;
+            t2 += std::sin(2 * M_PI * i / n) * q;
+        }
+        out.position[v] = (1.0 - n * chi) * p + chi * sum;
+        // The walk crosses each corner's outgoing edge into the face on its right, so the ring
+        // turns clockwise seen from outside and t2 x t1 is the outward normal.
+        out.normal[v] = unit_or_zero(t2.cross(t1));
+    }
+    return out;
+}
+
+LimitResult catmull_clark_limit(const PolyMesh& mesh, const CatmullClarkOptions& options) {
+    if (options.boundary == CatmullClarkBoundary::MidpointAverage)
+        throw InputError("the midpoint-average boundary rule (OpenMesh's) has no cubic B-spline boundary limit mask");
+    const PolyConnectivity conn = build_poly_connectivity(mesh);
+    LimitResult out;
+    out.position.resize(static_cast<size_t>(mesh.num_vertices()));
+    out.normal.assign(out.position.size(), Vec3::Constant(kNaN));
+    for (int v = 0; v < mesh.num_vertices(); ++v) {
+        const Vec3& p = mesh.positions[v];
+        const int start = conn.vertex_corner[v];
+        if (start < 0) {
+            out.position[v] = p;
+            continue;
+        }
+        int faces = 0, last = start;
+        for (int c = start; c >= 0;) {
+            ++faces;
+            last = c;
+            c = conn.next_around_vertex(c);
+            if (c == start) break;
+        }
+        if (conn.is_boundary_vertex(v)) {
+            const bool corner = options.boundary == CatmullClarkBoundary::EdgeAndCorner && faces == 1;
+            out.position[v] = boundary_limit(p, mesh.positions[conn.corner_vertex[conn.prev[start]]],
+                                             mesh.positions[conn.head(last)], corner);
+            continue;
+        }
+        const int n = faces;
+        const double a_n = 1 + std::cos(2 * M_PI / n) + std::cos(M_PI / n) * std::sqrt(2 * (9 + std::cos(2 * M_PI / n)));
+        Vec3 e_sum = Vec3::Zero(), f_sum = Vec3::Zero(), t1 = Vec3::Zero(), t2 = Vec3::Zero();
+        int i = 0;
+        for (int c = start;; ++i) {
+            if (mesh.face_size(conn.corner_face[c]) != 4)
+                throw InputError(mesh.source.describe_vertex(v) + ": face " + std::to_string(conn.corner_face[c]) +
+                                 " around it has " + std::to_string(mesh.face_size(conn.corner_face[c])) +
+                                 " corners; the Catmull-Clark limit mask needs quads (refine one level first)");
+            const Vec3& e = mesh.positions[conn.head(c)];
+            const Vec3& f = mesh.positions[conn.head(conn.next[c])];
+            e_sum += e;
+            f_sum += f;
+            // f_i lies between e_i and e_{i-1}: the walk crosses the outgoing edge of each corner,
+            // so face i holds the ring vertices i and i - 1.
+            const double c0 = std::cos(2 * M_PI * i / n), c1 = std::cos(2 * M_PI * (i - 1) / n);
+            const double s0 = std::sin(2 * M_PI * i / n), s1 = std::sin(2 * M_PI * (i - 1) / n);
+            t1 += a_n * c0 * e + (c0 + c1) * f;
+            t2 += a_n * s0 * e + (s0 + s1) * f;
+            c = conn.next_around_vertex(c);
+            if (c == start) break;
+        }
+        out.position[v] = (double(n) * n * p + 4.0 * e_sum + f_sum) / (double(n) * (n + 5));
+        out.normal[v] = unit_or_zero(t2.cross(t1));  // clockwise ring, as in loop_limit
+    }
+    return out;
+}
+
+}  // namespace crossdiv
