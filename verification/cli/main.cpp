@@ -475,6 +475,28 @@ int main(int argc, char** argv) {
     cli::NormalsArgs normals_args;
     auto* normals = app.add_subcommand("normals", "Vertex normals (area, angle, uniform) against OpenMesh and CGAL");
     normals_args.add_to(*normals);
+    cli::LimitArgs limit_args;
+    auto* lim = app.add_subcommand("limit", "Limit positions of a level's vertices (Loop, Catmull-Clark), against OpenSubdiv");
+    lim->add_option("input", limit_args.input, "Mesh file or bundled:NAME")->required();
+    lim->add_option("--scheme", limit_args.scheme, "loop or catmull-clark")
+        ->check(CLI::IsMember({"loop", "catmull-clark"}))
+        ->capture_default_str();
+    lim->add_option("--weights", limit_args.weights, "Loop weight family: loop or warren")->capture_default_str();
+    lim->add_option("--boundary", limit_args.boundary, "edge-only or edge-and-corner")->capture_default_str();
+    lim->add_option("--levels", limit_args.levels, "Level whose vertices are moved (0: the input)")->capture_default_str();
+    lim->add_option("--against", limit_args.against, "opensubdiv: compare with PrimvarRefiner::Limit");
+    lim->add_option("--json", limit_args.json, "Write the results as JSON");
+    lim->add_option("-o,--output", limit_args.out, "Write the level with every vertex at its limit position");
+    cli::SpectrumArgs spectrum_args;
+    auto* spec = app.add_subcommand("spectrum", "Eigen table of the local subdivision matrices and the convergence table");
+    spec->add_option("--scheme", spectrum_args.scheme, "loop, warren, catmull-clark or all")
+        ->check(CLI::IsMember({"loop", "warren", "catmull-clark", "all"}))
+        ->capture_default_str();
+    spec->add_option("--valence", spectrum_args.valence, "N or A..B (3..64)")->capture_default_str();
+    spec->add_option("--levels", spectrum_args.levels, "Levels of the convergence table")
+        ->check(CLI::Range(2, 8))
+        ->capture_default_str();
+    spec->add_option("--json", spectrum_args.json, "Write both tables as JSON");
     cli::CasteljauArgs cast_args;
     auto* cast = app.add_subcommand("casteljau", "Every de Casteljau level of a Bezier curve at t");
     cast_args.add_to(*cast);
@@ -500,6 +522,8 @@ int main(int argc, char** argv) {
         if (*patch) return cli::run_patch(patch_args);
         if (*edit) return cli::run_edit(edit_args);
         if (*normals) return cli::run_normals(normals_args);
+        if (*lim) return cli::run_limit(limit_args);
+        if (*spec) return cli::run_spectrum(spectrum_args);
         if (*bench) return run_bench_command(bench_json, bench_out, bench_repeats, bench_quick, bench_cold);
     } catch (const InputError& e) {
         std::cerr << "crossdiv: error: " << e.what() << "\n";

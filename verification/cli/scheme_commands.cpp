@@ -10,6 +10,9 @@
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/subdiv/catmull_clark.h"
 #include "crossdiv/verification/inputs.h"
+#include "crossdiv/subdiv/limit.h"
+#include "crossdiv/subdiv/loop.h"
+#include "crossdiv/verification/limit_comparison.h"
 #include "crossdiv/verification/scheme_comparison.h"
 #ifdef CROSSDIV_HAS_OPENSUBDIV
 #include "crossdiv/adapters/opensubdiv.h"
@@ -144,6 +147,118 @@ int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeAr
     }
     fmt::print("\n{}\n", all_agree ? "every reference agrees" : "some references disagree (see above)");
     return all_agree ? 0 : 1;
+}
+
+namespace {
+
+void write_json(const std::string& path, const nlohmann::json& j) {
+    const std::filesystem::path p(path);
+    if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
+    std::ofstream out(path);
+    if (!out) throw InputError(path + ": cannot write");
+    out << j.dump(2) << "\n";
+    fmt::print("results written to {}\n", path);
+}
+
+LoopOptions loop_options(const std::string& weights, const std::string& boundary) {
+    if (weights != "loop" && weights != "warren") throw InputError("unknown weights '" + weights + "' (loop, warren)");
+    if (boundary != "edge-only" && boundary != "edge-and-corner")
+        throw InputError("loop has no boundary rule '" + boundary + "' (edge-only, edge-and-corner)");
+    return {weights == "loop" ? LoopWeights::Loop : LoopWeights::Warren,
+            boundary == "edge-only" ? LoopBoundary::EdgeOnly : LoopBoundary::EdgeAndCorner};
+}
+
+/// "3..20" or "7".
+std::pair<int, int> valence_range(const std::string& s) {
+    const size_t dots = s.find("..");
+    try {
+        const int a = std::stoi(s.substr(0, dots)), b = dots == std::string::npos ? a : std::stoi(s.substr(dots + 2));
+        if (a < 3 || b < a || b > 64) throw InputError("");
+        return {a, b};
+    } catch (const std::exception&) {
+        throw InputError("--valence wants N or A..B with 3 <= A <= B <= 64, got '" + s + "'");
+    }
+}
+
+}  // namespace
+
+int run_limit(const LimitArgs& a) {
+    const PolyMesh mesh = load_input(a.input);
+    if (a.levels < 0 || a.levels > 8) throw InputError("--levels must be in 0..8");
+    check_output_size(mesh, a.levels, a.input);
+    PolyMesh level;
+    LimitResult limit;
+    if (a.scheme == "loop") {
+        const LoopOptions o = loop_options(a.weights, a.boundary);
+        const TriMesh t = loop_subdivide(to_tri_mesh(mesh, "Loop subdivision"), o, a.levels);
+        limit = loop_limit(t, o);
+        level = to_poly_mesh(t);
+    } else if (a.scheme == "catmull-clark") {
+        const CatmullClarkOptions o = catmull_clark_options({a.scheme, a.boundary, a.levels});
+        level = catmull_clark_subdivide(mesh, o, a.levels);
+        limit = catmull_clark_limit(level, o);
+    } else {
+        throw InputError("limit: unknown scheme '" + a.scheme + "' (loop, catmull-clark)");
+    }
+    const double diagonal = bounding_box_diagonal(level.positions);
+    double moved = 0;
+    for (int v = 0; v < level.num_vertices(); ++v)
+        moved = std::max(moved, (limit.position[v] - level.positions[v]).norm() / diagonal);
+    fmt::print("{}: level {} has {} vertices; the largest move to the limit is {:.3g} of the diagonal\n", a.input,
+               a.levels, level.num_vertices(), moved);
+    if (!a.out.empty()) {
+        level.positions = limit.position;
+        write_mesh(a.out, level);
+        fmt::print("limit mesh written to {}\n", a.out);
+    }
+    nlohmann::json j{{"tool", "crossdiv limit"}, {"input", a.input}, {"scheme", a.scheme}, {"levels", a.levels},
+                     {"max_move_rel", moved}};
+    bool ok = true;
+    if (!a.against.empty()) {
+        if (a.against != "opensubdiv") throw InputError("limit: only opensubdiv has limit positions, not '" + a.against + "'");
+        const LimitComparison c = a.scheme == "loop"
+                                      ? compare_loop_limit(mesh, a.input, loop_options(a.weights, a.boundary), a.levels)
+                                      : compare_catmull_clark_limit(
+                                            mesh, a.input, catmull_clark_options({a.scheme, a.boundary, a.levels}), a.levels);
+        fmt::print("against opensubdiv: {} ({})\n", c.verdict, c.explanation);
+        ok = c.verdict == "agree";
+        j["comparison"] = to_json(c);
+    }
+    if (!a.json.empty()) write_json(a.json, j);
+    return ok ? 0 : 1;
+}
+
+int run_spectrum(const SpectrumArgs& a) {
+    const auto [lo, hi] = valence_range(a.valence);
+    std::vector<std::string> schemes;
+    if (a.scheme == "all") schemes = {"loop", "warren", "catmull-clark"};
+    else schemes = {a.scheme};
+    nlohmann::json spectra = nlohmann::json::array(), conv = nlohmann::json::array();
+    bool ok = true;
+    fmt::print("{:<14} {:>3} {:>10} {:>5} {:>10} {:>10} {:>10} {:>9}  {}\n", "scheme", "n", "lambda_1", "mult",
+               "next", "vertex", "|core-cf|", "imag", "regular characteristic map");
+    for (const std::string& s : schemes)
+        for (int n = lo; n <= hi; ++n) {
+            const SpectrumRow r = local_spectrum(s, n);
+            ok &= r.max_difference <= 1e-12;
+            fmt::print("{:<14} {:>3} {:>10.6f} {:>5} {:>10.6f} {:>10.6f} {:>10.2e} {:>9.1e}  {}\n", s, n, r.subdominant,
+                       r.subdominant_multiplicity, r.next, r.vertex_rate, r.max_difference, r.max_imaginary,
+                       r.regular_characteristic_map ? "yes" : "NO");
+            spectra.push_back(to_json(r));
+        }
+    fmt::print("\nconvergence of the centre of a fan to its limit (distance / diagonal at levels 1, {}):\n", a.levels);
+    fmt::print("{:<14} {:>3} {:>10} {:>10} {:>10} {:>10} {:>10}\n", "scheme", "n", "d_1", "d_last", "fitted", "vertex",
+               "lambda_1");
+    for (const std::string& s : schemes)
+        for (int n = lo; n <= std::min(hi, 12); ++n) {
+            const ConvergenceRow r = convergence(s, n, a.levels);
+            fmt::print("{:<14} {:>3} {:>10.3e} {:>10.3e} {:>10.6f} {:>10.6f} {:>10.6f}\n", s, n, r.distance.front(),
+                       r.distance.back(), r.fitted_rate, r.vertex_rate, r.subdominant);
+            conv.push_back(to_json(r));
+        }
+    if (!a.json.empty())
+        write_json(a.json, {{"tool", "crossdiv spectrum"}, {"spectra", spectra}, {"convergence", conv}});
+    return ok ? 0 : 1;
 }
 
 }  // namespace crossdiv::cli

@@ -21,4 +21,23 @@ int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const s
 int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeArgs& s, const std::string& against,
                        const std::string& json_path, double timeout, bool no_isolate);
 
+struct LimitArgs {
+    std::string input, scheme = "loop", weights = "loop", boundary = "edge-only", against, json, out;
+    int levels = 0;
+};
+/// `crossdiv limit IN --scheme loop|catmull-clark [--weights] [--boundary] [--levels N]
+/// [--against opensubdiv] [--json F] [-o OUT]`: the level-N mesh with every vertex moved to
+/// its limit position; with --against, the comparison with OpenSubdiv's Limit() (exit 1 when
+/// it diverges).
+int run_limit(const LimitArgs& a);
+
+struct SpectrumArgs {
+    std::string scheme = "loop", valence = "3..20", json;
+    int levels = 8;  ///< of the convergence table
+};
+/// `crossdiv spectrum --scheme loop|warren|catmull-clark|all --valence A..B [--json F]`: the eigen
+/// table (core's local matrix against the closed form) and the convergence table; exit 1 when
+/// a spectrum departs from its closed form by more than 1e-12.
+int run_spectrum(const SpectrumArgs& a);
+
 }  // namespace crossdiv::cli
