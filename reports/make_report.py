@@ -280,6 +280,71 @@ def surface_section(surface_cases, bench, figdir):
     return md, body
 
 
+def limits_section(limit_cases, figdir):
+    """Schemes and limit behaviour: Catmull-Clark verdicts, limit agreement, eigen and convergence tables."""
+    if not limit_cases:
+        return [], []
+    md, body = ["", "## Schemes and limit behaviour", ""], ["<h2>Schemes and limit behaviour</h2>"]
+    tables = {}
+    for c in limit_cases:
+        for k, v in c.get("tables", {}).items():
+            tables.setdefault(k, []).extend(v)
+    if tables.get("catmull_clark"):
+        verdicts = Counter()
+        for comp in tables["catmull_clark"]:
+            for r in comp["runs"]:
+                verdicts[(comp["rule"], r["reference"], r["rule"], r["verdict"], r.get("divergence_class") or "")] += 1
+        header = ["requested rule", "reference", "its rule", "verdict", "class", "inputs"]
+        rows = [k + (n,) for k, n in sorted(verdicts.items())]
+        md += ["Catmull-Clark, 2 levels, every bundled and polygon mesh:", "",
+               "| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+        md += ["| " + " | ".join(str(v) for v in r) + " |" for r in rows]
+        body.append(table_html(header, rows))
+    if tables.get("limit"):
+        rows = []
+        for key in sorted({(r["scheme"], r["rule"], r["levels"]) for r in tables["limit"]}):
+            sel = [r for r in tables["limit"] if (r["scheme"], r["rule"], r["levels"]) == key]
+            ok = [r for r in sel if r["verdict"] == "agree"]
+            pos = [r["max_rel_position"] for r in sel if r["max_rel_position"] is not None]
+            ang = [r["max_normal_angle"] for r in sel if r["max_normal_angle"] is not None]
+            rows.append(key + (len(sel), len(ok), fmt(max(pos) if pos else None), fmt(max(ang) if ang else None)))
+        header = ["scheme", "rule", "levels", "meshes", "agree", "max position rel", "max normal angle (rad)"]
+        md += ["", "Limit positions and interior limit normals against OpenSubdiv's `PrimvarRefiner::Limit`:", "",
+               "| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+        md += ["| " + " | ".join(str(v) for v in r) + " |" for r in rows]
+        body.append(table_html(header, rows))
+    if tables.get("spectrum"):
+        header = ["scheme", "n", "lambda_1", "multiplicity", "next", "vertex eigenvalue", "|core - closed form|", "regular"]
+        rows = [(r["scheme"], r["valence"], fmt(r["subdominant"], ".6f"), r["subdominant_multiplicity"], fmt(r["next"], ".6f"),
+                 fmt(r["vertex_rate"], ".6f"), fmt(r["max_difference"]), "yes" if r["regular_characteristic_map"] else "NO")
+                for r in tables["spectrum"]]
+        md += ["", "Eigen table: the local subdivision matrix of an interior vertex of valence n, taken from core's S, "
+               "against the published spectrum.", "", "| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+        md += ["| " + " | ".join(str(v) for v in r) + " |" for r in rows]
+        body.append(table_html(header, rows))
+    if tables.get("convergence"):
+        fig, ax = plt.subplots(figsize=(5, 3.6))
+        for r in tables["convergence"]:
+            if r["valence"] in (3, 5, 8, 12):
+                ax.semilogy(range(1, len(r["distance"]) + 1), r["distance"], marker=".", label=f"{r['scheme']} n={r['valence']}")
+        ax.set_xlabel("level k")
+        ax.set_ylabel("|v_k - v_limit| / diagonal")
+        ax.set_title("Convergence of an extraordinary vertex")
+        ax.legend(fontsize=6)
+        save(fig, figdir, "limit_convergence.png")
+        header = ["scheme", "n", "d_1", "d_8", "fitted rate", "vertex eigenvalue", "lambda_1"]
+        rows = [(r["scheme"], r["valence"], fmt(r["distance"][0]), fmt(r["distance"][-1]), fmt(r["fitted_rate"], ".6f"),
+                 fmt(r["vertex_rate"], ".6f"), fmt(r["subdominant"], ".6f")) for r in tables["convergence"]]
+        md += ["", "Convergence table: the centre of a fan refined k = 1..8 times against its limit position. A vertex "
+               "converges at the largest rotation-invariant eigenvalue below 1 (the subdominant pair is not "
+               "rotation invariant and vanishes at the centre).", "",
+               "![convergence](figures/limit_convergence.png)", "",
+               "| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+        md += ["| " + " | ".join(str(v) for v in r) + " |" for r in rows]
+        body += ['<img src="figures/limit_convergence.png">', table_html(header, rows)]
+    return md, body
+
+
 def curve_section(curve_cases, bench, figdir):
     """The curve checks: (markdown lines, html parts). Empty when the suite ran no curves."""
     if not curve_cases and not (bench and bench.get("curves")):
@@ -393,8 +458,9 @@ def main(folder):
     # with the mesh cases only.
     curve_cases = [c for c in results["cases"] if c.get("scheme") == "curves"]
     surface_cases = [c for c in results["cases"] if c.get("scheme") == "surfaces"]
-    results = dict(results, cases=[c for c in results["cases"] if c.get("scheme") not in ("curves", "surfaces")])
-    curve_failures = [(c, r) for c in curve_cases + surface_cases for r in c["runs"] if r["verdict"] != "agree"]
+    limit_cases = [c for c in results["cases"] if c.get("scheme") == "limits"]
+    results = dict(results, cases=[c for c in results["cases"] if c.get("scheme") not in ("curves", "surfaces", "limits")])
+    curve_failures = [(c, r) for c in curve_cases + surface_cases + limit_cases for r in c["runs"] if r["verdict"] != "agree"]
     has_mesh = bool(results["cases"])
     if has_mesh:
         summary_matrix(results, figdir)
@@ -430,7 +496,7 @@ def main(folder):
                           "class": r.get("divergence_class", "unexplained"), "max_rel": r["measured"], "worst": r["curve"],
                           "values": f"{r['check']}: {fmt(r['measured'])} > {fmt(r['tolerance'])} {r['unit']}",
                           "explanation": r.get("explanation", "")})
-    for c in curve_cases + surface_cases:
+    for c in curve_cases + surface_cases + limit_cases:
         if not c["runs"]:
             catalogue.append({"case": c["id"], "reference": "core", "outcome": outcome(c, {}),
                               "class": "ours-failed" if c.get("ours_failed") else "ours-rejected", "max_rel": None,
@@ -438,7 +504,8 @@ def main(folder):
     class_counts = Counter((row["class"], row["reference"]) for row in catalogue)
     curve_md, curve_html = curve_section(curve_cases, bench, figdir)
     surface_md, surface_html = surface_section(surface_cases, bench, figdir)
-    curve_md, curve_html = curve_md + surface_md, curve_html + surface_html
+    limits_md, limits_html = limits_section(limit_cases, figdir)
+    curve_md, curve_html = curve_md + surface_md + limits_md, curve_html + surface_html + limits_html
 
     s = results["summary"]
     refs = ", ".join(f"{r['name']} ({r['version']})" for r in results.get("references", []))

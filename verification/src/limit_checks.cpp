@@ -1,0 +1,150 @@
+#include "crossdiv/verification/limit_checks.h"
+
+#include <cmath>
+
+#include "crossdiv/datasets/bundled.h"
+#include "crossdiv/error.h"
+#include "crossdiv/verification/limit_comparison.h"
+#include "crossdiv/verification/scheme_comparison.h"
+
+namespace crossdiv::verification {
+namespace {
+
+using nlohmann::json;
+
+const std::vector<std::string> kStudies = {"limits:catmull-clark", "limits:opensubdiv", "limits:spectrum",
+                                           "limits:convergence"};
+
+json check(const std::string& reference, const std::string& name, const std::string& subject, double measured,
+           double tolerance, const std::string& unit, const std::string& note) {
+    const bool pass = measured <= tolerance;  // NaN fails
+    json run = {{"reference", reference}, {"check", name}, {"curve", subject},
+                {"measured", std::isfinite(measured) ? json(measured) : json(nullptr)},
+                {"tolerance", tolerance}, {"unit", unit}, {"verdict", pass ? "agree" : "diverge"},
+                {"explanation", note}};
+    if (!pass) run["divergence_class"] = "unexplained";
+    return run;
+}
+
+json catmull_clark_study() {
+    json runs = json::array(), rows = json::array();
+    std::vector<datasets::BundledMesh> meshes = datasets::polygon_meshes();
+    for (auto& b : datasets::bundled_meshes()) meshes.push_back(std::move(b));
+    for (CatmullClarkBoundary rule : {CatmullClarkBoundary::EdgeOnly, CatmullClarkBoundary::EdgeAndCorner}) {
+        for (const auto& b : meshes) {
+            SchemeRequest req;
+            req.catmull_clark = {rule};
+            req.levels = 2;
+            req.timeout_seconds = 60;
+            const SchemeComparison c = compare_scheme(b.mesh, "bundled:" + b.name, req);
+            rows.push_back(to_json(c));
+            for (const SchemeReferenceRun& r : c.runs) {
+                json run = {{"reference", r.reference},
+                            {"check", "catmull-clark " + c.rule + " L2"},
+                            {"curve", c.input},
+                            {"measured", std::isfinite(r.comparison.max_rel) ? json(r.comparison.max_rel) : json(nullptr)},
+                            {"tolerance", req.tolerance},
+                            {"unit", "rel"},
+                            {"verdict", r.verdict},
+                            {"explanation", r.rule + " rule: " + r.explanation}};
+                if (!r.divergence_class.empty()) run["divergence_class"] = r.divergence_class;
+                runs.push_back(run);
+            }
+        }
+    }
+    return {{"runs", runs}, {"tables", {{"catmull_clark", rows}}}};
+}
+
+json opensubdiv_study() {
+    json runs = json::array(), rows = json::array();
+    const auto add = [&](const LimitComparison& c) {
+        rows.push_back(to_json(c));
+        const std::string what = c.scheme + " " + c.rule + " L" + std::to_string(c.levels);
+        if (c.verdict == "ref-rejected" || c.verdict == "ref-crashed" || c.verdict == "ours-rejected") {
+            runs.push_back({{"reference", "opensubdiv"}, {"check", "limit position " + what}, {"curve", c.input},
+                            {"measured", nullptr}, {"tolerance", tolerances::kLimitAgreementRelative}, {"unit", "rel"},
+                            {"verdict", c.verdict}, {"explanation", c.explanation}});
+            return;
+        }
+        runs.push_back(check("opensubdiv", "limit position " + what, c.input, c.max_rel_position,
+                             tolerances::kLimitAgreementRelative, "rel", c.explanation));
+        if (c.normals_compared > 0)
+            runs.push_back(check("opensubdiv", "limit normal " + what, c.input, c.max_normal_angle,
+                                 tolerances::kLimitNormalRad, "rad",
+                                 std::to_string(c.normals_compared) + " interior vertices"));
+    };
+    for (const auto& b : datasets::bundled_meshes())
+        for (LoopBoundary rule : {LoopBoundary::EdgeOnly, LoopBoundary::EdgeAndCorner})
+            for (int levels : {0, 2}) add(compare_loop_limit(b.mesh, "bundled:" + b.name, {LoopWeights::Loop, rule}, levels));
+    std::vector<datasets::BundledMesh> polys = datasets::polygon_meshes();
+    for (auto& b : datasets::bundled_meshes()) polys.push_back(std::move(b));
+    for (const auto& b : polys)
+        for (CatmullClarkBoundary rule : {CatmullClarkBoundary::EdgeOnly, CatmullClarkBoundary::EdgeAndCorner})
+            for (int levels : {1, 3})  // level 0 of a mesh with non-quads has no limit mask
+                add(compare_catmull_clark_limit(b.mesh, "bundled:" + b.name, {rule}, levels));
+    return {{"runs", runs}, {"tables", {{"limit", rows}}}};
+}
+
+json spectrum_study() {
+    json runs = json::array(), rows = json::array();
+    for (const std::string s : {"loop", "warren", "catmull-clark"})
+        for (int n = 3; n <= 20; ++n) {
+            const SpectrumRow r = local_spectrum(s, n);
+            rows.push_back(to_json(r));
+            const std::string who = s + " n=" + std::to_string(n);
+            runs.push_back(check("closed form", "spectrum", who, r.max_difference, tolerances::kSpectrumAgreement, "abs",
+                                 "lambda_1 " + std::to_string(r.subdominant) + ", vertex eigenvalue " +
+                                     std::to_string(r.vertex_rate)));
+            // 0 when the characteristic map is regular (real, double, strictly dominant lambda_1).
+            runs.push_back(check("eigen-analysis", "regular characteristic map", who,
+                                 r.regular_characteristic_map ? 0.0 : 1.0, 0.0, "",
+                                 "multiplicity " + std::to_string(r.subdominant_multiplicity) + ", next " +
+                                     std::to_string(r.next) + ", max |imag| " + std::to_string(r.max_imaginary)));
+        }
+    return {{"runs", runs}, {"tables", {{"spectrum", rows}}}};
+}
+
+json convergence_study() {
+    json runs = json::array(), rows = json::array();
+    for (const std::string s : {"loop", "warren", "catmull-clark"})
+        for (int n = 3; n <= 12; ++n) {
+            const ConvergenceRow r = convergence(s, n, 8);
+            rows.push_back(to_json(r));
+            runs.push_back(check("eigen-analysis", "convergence rate", s + " n=" + std::to_string(n),
+                                 std::abs(r.fitted_rate - r.vertex_rate) / r.vertex_rate,
+                                 tolerances::kConvergenceRateRelative, "rel",
+                                 "fitted " + std::to_string(r.fitted_rate) + " vs vertex eigenvalue " +
+                                     std::to_string(r.vertex_rate) + " (subdominant " + std::to_string(r.subdominant) + ")"));
+        }
+    return {{"runs", runs}, {"tables", {{"convergence", rows}}}};
+}
+
+}  // namespace
+
+std::vector<std::string> expand_limit_inputs(const std::vector<std::string>& specs) {
+    std::vector<std::string> out;
+    for (const std::string& s : specs) {
+        if (s == "limits:all") {
+            out.insert(out.end(), kStudies.begin(), kStudies.end());
+        } else if (std::find(kStudies.begin(), kStudies.end(), s) != kStudies.end()) {
+            out.push_back(s);
+        } else {
+            throw InputError("'" + s + "' is not a limits study (limits:all, limits:catmull-clark, limits:opensubdiv, "
+                             "limits:spectrum, limits:convergence)");
+        }
+    }
+    return out;
+}
+
+json check_limits(const std::string& input) {
+    json rec = input == "limits:catmull-clark" ? catmull_clark_study()
+               : input == "limits:opensubdiv"  ? opensubdiv_study()
+               : input == "limits:spectrum"    ? spectrum_study()
+               : input == "limits:convergence" ? convergence_study()
+                                               : throw InputError("unknown limits study '" + input + "'");
+    rec["input"] = input;
+    rec["scheme"] = "limits";
+    return rec;
+}
+
+}  // namespace crossdiv::verification
