@@ -138,6 +138,16 @@ expect normals-cgal 0 'cgal .*none of area/angle/uniform' -- "$crossdiv" normals
 expect normals-unknown 2 "unknown or unavailable normals reference 'meshlab'" -- "$crossdiv" normals bundled:torus --against meshlab
 expect check-halfedge 0 'half-edge mesh: 25 vertices, 56 edges, 32 faces, 1 boundary loop\(s\), V - E \+ F = 1, every invariant holds' -- "$crossdiv" check bundled:open-patch
 expect split-flip 0 '768 faces, 1 level\(s\), split-flip\)' -- "$crossdiv" subdivide bundled:torus --levels 1 --impl split-flip -o "$tmp/sf.obj"
+# Schemes and limit behaviour.
+expect cc-subdivide 0 '26 vertices, 24 faces, 1 level\(s\), catmull-clark edge-only core' -- "$crossdiv" subdivide bundled:quad-cube --scheme catmull-clark -o "$tmp/cc.obj"
+expect cc-compare 1 'openmesh +midpoint-average +diverge .*boundary-rule' -- "$crossdiv" compare bundled:quad-grid --scheme catmull-clark --levels 2
+expect cc-compare-closed 0 'every reference agrees' -- "$crossdiv" compare bundled:quad-torus --scheme catmull-clark --levels 2 --json "$tmp/cc.json"
+expect cc-midpoint-loop 2 'loop has no midpoint-average boundary rule' -- "$crossdiv" subdivide bundled:torus --boundary midpoint-average -o "$tmp/x.obj"
+expect limit-loop 0 'against opensubdiv: agree' -- "$crossdiv" limit bundled:open-patch --scheme loop --levels 2 --against opensubdiv -o "$tmp/lim.obj" --json "$tmp/lim.json"
+expect limit-cc-nonquad 2 'needs quads \(refine one level first\)' -- "$crossdiv" limit bundled:prism-5 --scheme catmull-clark
+expect limit-cc 0 'against opensubdiv: agree' -- "$crossdiv" limit bundled:prism-5 --scheme catmull-clark --levels 1 --against opensubdiv
+expect spectrum 0 'catmull-clark +4 +0\.500000 +2 ' -- "$crossdiv" spectrum --scheme catmull-clark --valence 3..6 --json "$tmp/sp.json"
+expect spectrum-bad 2 "--valence wants N or A..B" -- "$crossdiv" spectrum --valence 2..5
 printf '<COLLADA><library_geometries><geometry>' > "$tmp/broken.dae"
 expect dae-broken 2 'broken.dae: Assimp could not read it' -- "$crossdiv" check "$tmp/broken.dae"
 dae="$(dirname "$0")/../../../shared/data/meshedit/dae"
