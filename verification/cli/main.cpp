@@ -157,14 +157,7 @@ int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, cons
         all_agree &= c.all_agree();
         results.push_back(to_json(c));
     }
-    if (!json_path.empty()) {
-        const std::filesystem::path p(json_path);
-        if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
-        std::ofstream out(json_path);
-        if (!out) throw InputError(json_path + ": cannot write");
-        out << nlohmann::json{{"tool", "crossdiv compare"}, {"comparisons", results}}.dump(2) << "\n";
-        fmt::print("\nresults written to {}\n", json_path);
-    }
+    if (!json_path.empty()) cli::write_json(json_path, {{"tool", "crossdiv compare"}, {"comparisons", results}});
     fmt::print("\n{}\n", all_agree ? "every reference agrees" : "some references disagree (see above)");
     return all_agree ? 0 : 1;
 }

@@ -14,15 +14,6 @@
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/verification/limit_comparison.h"
 #include "crossdiv/verification/scheme_comparison.h"
-#ifdef CROSSDIV_HAS_OPENSUBDIV
-#include "crossdiv/adapters/opensubdiv.h"
-#endif
-#ifdef CROSSDIV_HAS_OPENMESH
-#include "crossdiv/adapters/openmesh.h"
-#endif
-#ifdef CROSSDIV_HAS_CGAL
-#include "crossdiv/adapters/cgal.h"
-#endif
 
 namespace crossdiv::cli {
 namespace {
@@ -60,9 +51,17 @@ std::vector<std::string> split_commas(const std::string& s) {
 
 }  // namespace
 
+void write_json(const std::string& path, const nlohmann::json& j) {
+    const std::filesystem::path p(path);
+    if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
+    std::ofstream out(path);
+    if (!out) throw InputError(path + ": cannot write");
+    out << j.dump(2) << "\n";
+    fmt::print("results written to {}\n", path);
+}
+
 int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const std::string& impl, const std::string& out) {
-    const Scheme scheme = scheme_from_string(s.scheme);
-    (void)scheme;  // one polygon scheme so far: Catmull-Clark
+    const Scheme scheme = scheme_from_string(s.scheme);  // one polygon scheme so far: Catmull-Clark
     const CatmullClarkOptions o = catmull_clark_options(s);
     const PolyMesh mesh = load_input(in);
     check_output_size(mesh, s.levels, in);
@@ -70,29 +69,17 @@ int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const s
     if (impl == "core") {
         result = catmull_clark_subdivide(mesh, o, s.levels);
     } else {
+        SchemeRequest req;
+        req.scheme = scheme;
+        req.catmull_clark = o;
+        req.levels = s.levels;
+        std::string rule;
         try {
-#ifdef CROSSDIV_HAS_OPENSUBDIV
-            if (impl == "opensubdiv") result = adapters::opensubdiv::catmull_clark(mesh, o, s.levels).back();
-#endif
-#ifdef CROSSDIV_HAS_OPENMESH
-            if (impl == "openmesh") {
-                if (o.boundary != CatmullClarkBoundary::MidpointAverage)
-                    fmt::print("note: openmesh applies the midpoint-average boundary rule, not {}\n", s.boundary);
-                result = adapters::openmesh::catmull_clark(mesh, s.levels).back();
-            }
-#endif
-#ifdef CROSSDIV_HAS_CGAL
-            if (impl == "cgal") {
-                if (o.boundary != CatmullClarkBoundary::EdgeOnly)
-                    fmt::print("note: cgal applies the edge-only boundary rule, not {}\n", s.boundary);
-                result = adapters::cgal::catmull_clark(mesh, s.levels).back();
-            }
-#endif
+            result = run_scheme_reference(impl, req, mesh, rule).back();
         } catch (const adapters::Rejected& e) {
             throw InputError(impl + " refused " + in + ": " + e.what());
         }
-        if (result.num_vertices() == 0 && mesh.num_vertices() > 0)
-            throw InputError(impl + " is not built into this binary, or has no " + s.scheme);
+        if (rule != s.boundary) fmt::print("note: {} applies the {} boundary rule, not {}\n", impl, rule, s.boundary);
     }
     write_mesh(out, result);
     fmt::print("{}: {} vertices, {} faces -> {} ({} vertices, {} faces, {} level(s), {} {} {})\n", in,
@@ -109,11 +96,8 @@ int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeAr
     req.levels = s.levels;
     req.timeout_seconds = timeout;
     req.isolate = !no_isolate;
-    // Only the references that have the scheme; naming one that lacks it is an error.
-    const std::vector<std::string> have = scheme_reference_names(req.scheme);
-    for (const std::string& r : split_commas(against))
-        if (std::find(have.begin(), have.end(), r) != have.end()) req.references.push_back(r);
-        else throw InputError("reference '" + r + "' has no " + s.scheme + " in this build");
+    // compare_scheme refuses a name that lacks the scheme, naming those that have it.
+    req.references = split_commas(against);
 
     const std::vector<std::string> inputs = expand_inputs(specs);
     if (inputs.empty()) throw InputError("no inputs (a collection folder may be absent)");
@@ -137,28 +121,12 @@ int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeAr
         all_agree &= c.all_agree();
         results.push_back(to_json(c));
     }
-    if (!json_path.empty()) {
-        const std::filesystem::path p(json_path);
-        if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
-        std::ofstream out(json_path);
-        if (!out) throw InputError(json_path + ": cannot write");
-        out << nlohmann::json{{"tool", "crossdiv compare"}, {"comparisons", results}}.dump(2) << "\n";
-        fmt::print("\nresults written to {}\n", json_path);
-    }
+    if (!json_path.empty()) write_json(json_path, {{"tool", "crossdiv compare"}, {"comparisons", results}});
     fmt::print("\n{}\n", all_agree ? "every reference agrees" : "some references disagree (see above)");
     return all_agree ? 0 : 1;
 }
 
 namespace {
-
-void write_json(const std::string& path, const nlohmann::json& j) {
-    const std::filesystem::path p(path);
-    if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
-    std::ofstream out(path);
-    if (!out) throw InputError(path + ": cannot write");
-    out << j.dump(2) << "\n";
-    fmt::print("results written to {}\n", path);
-}
 
 LoopOptions loop_options(const std::string& weights, const std::string& boundary) {
     if (weights != "loop" && weights != "warren") throw InputError("unknown weights '" + weights + "' (loop, warren)");

@@ -2,10 +2,14 @@
 // The subcommands of the polygon schemes and of limit behaviour: subdivide and compare with
 // --scheme catmull-clark (Loop stays in main.cpp), limit and spectrum.
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 namespace crossdiv::cli {
+
+/// Writes `j` to `path` (parent folders made), and says so. @throws InputError when it cannot.
+void write_json(const std::string& path, const nlohmann::json& j);
 
 /// What `subdivide`/`compare` were given, for a scheme other than Loop.
 struct PolySchemeArgs {

@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "crossdiv/error.h"
+#include "sci.h"
 #include "crossdiv/subdiv/catmull_clark.h"
 #include "crossdiv/subdiv/limit.h"
 #include "crossdiv/subdiv/loop.h"
@@ -18,11 +19,7 @@
 namespace crossdiv::verification {
 namespace {
 
-std::string sci(double x) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3g", x);
-    return buf;
-}
+using detail::sci;
 
 struct CoreLimit {
     PolyMesh level;
@@ -257,7 +254,10 @@ SpectrumRow local_spectrum(const std::string& scheme, int n) {
         Eigen::Matrix3d M0;
         M0 << (n - 2.0) / n + 1.0 / (4.0 * n), 3.0 / (2.0 * n), 1.0 / (4.0 * n), 0.375, 0.5, 0.125, 0.25, 0.5, 0.25;
         std::vector<double> b0;
-        for (const auto& z : Eigen::EigenSolver<Eigen::Matrix3d>(M0, false).eigenvalues()) b0.push_back(std::abs(z));
+        // A named solver: eigenvalues() refers into it, and a range-for over a temporary's
+        // member would read it after the temporary is gone.
+        const Eigen::EigenSolver<Eigen::Matrix3d> block0(M0, false);
+        for (int k = 0; k < 3; ++k) b0.push_back(std::abs(block0.eigenvalues()[k]));
         b0 = sorted_desc(b0);  // b0[0] is 1
         row.vertex_rate = b0[1];
         cf = b0;

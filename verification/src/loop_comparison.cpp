@@ -7,6 +7,7 @@
 #include <string>
 
 #include "crossdiv/error.h"
+#include "sci.h"
 #include "crossdiv/mesh/mesh_checks.h"
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/verification/references.h"
@@ -19,11 +20,7 @@ std::string describe(const LoopOptions& o) {
     return "weights=" + std::string(to_string(o.weights)) + " boundary=" + std::string(to_string(o.boundary));
 }
 
-std::string sci(double x) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3g", x);
-    return buf;
-}
+using detail::sci;
 
 /// Our refinement of the input under one set of options, kept for classification.
 struct CoreRun {

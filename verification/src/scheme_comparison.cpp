@@ -6,6 +6,7 @@
 #include <functional>
 
 #include "crossdiv/error.h"
+#include "sci.h"
 #include "crossdiv/subdiv/catmull_clark.h"
 #ifdef CROSSDIV_HAS_OPENSUBDIV
 #include "crossdiv/adapters/opensubdiv.h"
@@ -20,11 +21,7 @@
 namespace crossdiv::verification {
 namespace {
 
-std::string sci(double x) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3g", x);
-    return buf;
-}
+using detail::sci;
 
 /// The rule one reference applies, as core options, and how to run it.
 struct SchemeReference {
@@ -63,6 +60,16 @@ std::vector<SchemeReference> references_of(Scheme scheme) {
     return r;
 }
 
+SchemeReference find_reference(Scheme scheme, const std::string& name) {
+    std::string known;
+    for (const SchemeReference& r : references_of(scheme)) {
+        if (r.name == name) return r;
+        known += (known.empty() ? "" : ", ") + r.name;
+    }
+    throw InputError("reference '" + name + "' has no " + to_string(scheme) + " in this build (those that have it: " +
+                     (known.empty() ? "none" : known) + ")");
+}
+
 double ulp_of_largest_coordinate(const PolyMesh& m) {
     double largest = 0;
     for (const Vec3& p : m.positions) largest = std::max(largest, p.cwiseAbs().maxCoeff());
@@ -92,12 +99,6 @@ Scheme scheme_from_string(const std::string& name) {
     throw InputError("unknown scheme '" + name + "' (known: loop, catmull-clark)");
 }
 
-std::vector<std::string> scheme_reference_names(Scheme scheme) {
-    std::vector<std::string> names;
-    for (const SchemeReference& r : references_of(scheme)) names.push_back(r.name);
-    return names;
-}
-
 bool SchemeComparison::all_agree() const {
     if (!core_error.empty() || runs.empty()) return false;
     for (const SchemeReferenceRun& r : runs)
@@ -117,17 +118,7 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
     std::vector<SchemeReference> refs = references_of(req.scheme);
     if (!req.references.empty()) {
         std::vector<SchemeReference> chosen;
-        for (const std::string& want : req.references) {
-            bool found = false;
-            for (const SchemeReference& r : refs)
-                if (r.name == want) chosen.push_back(r), found = true;
-            if (!found) {
-                std::string known;
-                for (const SchemeReference& r : refs) known += (known.empty() ? "" : ", ") + r.name;
-                throw InputError("reference '" + want + "' has no " + to_string(req.scheme) +
-                                 " in this build (those that have it: " + (known.empty() ? "none" : known) + ")");
-            }
-        }
+        for (const std::string& want : req.references) chosen.push_back(find_reference(req.scheme, want));
         refs = std::move(chosen);
     }
 
@@ -208,6 +199,13 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
         out.runs.push_back(std::move(run));
     }
     return out;
+}
+
+adapters::LevelTrace run_scheme_reference(const std::string& name, const SchemeRequest& req, const PolyMesh& mesh,
+                                          std::string& rule) {
+    const SchemeReference ref = find_reference(req.scheme, name);
+    rule = std::string(to_string(ref.rule(req.catmull_clark).boundary));
+    return ref.run(mesh, req.catmull_clark, req.levels);
 }
 
 nlohmann::json to_json(const SchemeComparison& c) {

@@ -27,18 +27,13 @@ RefinementStep catmull_clark_step(const PolyMesh& mesh, const PolyConnectivity& 
             st.end_row();
             continue;
         }
-        int faces = 0, last = start;
-        for (int c = start; c >= 0;) {
-            ++faces;
-            last = c;
-            c = conn.next_around_vertex(c);
-            if (c == start) break;
-        }
+        const PolyConnectivity::Fan fan = conn.fan(v);
+        const int faces = fan.faces;
         if (conn.is_boundary_vertex(v)) {
             const CatmullClarkBoundaryMask m = catmull_clark_boundary_vertex_mask(options.boundary, faces);
             if (m.neighbor != 0.0) {
                 st.add(conn.corner_vertex[conn.prev[start]], m.neighbor);
-                st.add(conn.head(last), m.neighbor);
+                st.add(conn.head(fan.last), m.neighbor);
             }
             st.add(v, m.self);
         } else {

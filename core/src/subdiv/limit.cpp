@@ -6,7 +6,6 @@
 
 #include "crossdiv/error.h"
 #include "crossdiv/mesh/poly_connectivity.h"
-#include "crossdiv/subdiv/loop.h"
 
 namespace crossdiv {
 namespace {
@@ -15,46 +14,49 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 Vec3 unit_or_zero(const Vec3& n) { return n.norm() > 0 ? Vec3(n.normalized()) : Vec3::Zero(); }
 
-/// The cubic B-spline limit of a boundary vertex, or the vertex itself at a fixed corner.
-Vec3 boundary_limit(const Vec3& v, const Vec3& a, const Vec3& b, bool corner) {
-    return corner ? v : Vec3((2.0 / 3.0) * v + (1.0 / 6.0) * (a + b));
+/// The limit of every vertex no interior mask applies to, shared by both schemes: an isolated
+/// vertex stays; a boundary vertex takes the cubic B-spline limit 2/3, 1/6, 1/6 of its two
+/// boundary neighbours, or stays when `corner_rule` holds and it has one face. Returns false
+/// (and writes nothing) for an interior vertex.
+bool boundary_or_isolated_limit(const PolyConnectivity& conn, const std::vector<Vec3>& positions, int v,
+                                bool corner_rule, LimitResult& out) {
+    const Vec3& p = positions[v];
+    const int start = conn.vertex_corner[v];
+    if (start < 0) {
+        out.position[v] = p;
+        return true;
+    }
+    if (!conn.is_boundary_vertex(v)) return false;
+    const PolyConnectivity::Fan fan = conn.fan(v);
+    const Vec3& a = positions[conn.corner_vertex[conn.prev[start]]];
+    const Vec3& b = positions[conn.head(fan.last)];
+    out.position[v] = corner_rule && fan.faces == 1 ? p : Vec3((2.0 / 3.0) * p + (1.0 / 6.0) * (a + b));
+    return true;
 }
 
 }  // namespace
 
 LimitResult loop_limit(const TriMesh& mesh, const LoopOptions& options) {
-    // The polygon connectivity walks rings in the same order as TriConnectivity and needs no
-    // second implementation of the one-ring walk.
+    // The polygon connectivity makes the same checks as Loop's (finite coordinates, manifold,
+    // oriented) and walks rings in the same order, so one build serves both.
     const PolyMesh poly = to_poly_mesh(mesh);
-    loop_input_connectivity(mesh);  // Loop's own checks and messages
     const PolyConnectivity conn = build_poly_connectivity(poly);
     LimitResult out;
     out.position.resize(static_cast<size_t>(mesh.num_vertices()));
     out.normal.assign(out.position.size(), Vec3::Constant(kNaN));
     std::vector<int> ring;
     for (int v = 0; v < mesh.num_vertices(); ++v) {
+        if (boundary_or_isolated_limit(conn, mesh.positions, v, options.boundary == LoopBoundary::EdgeAndCorner, out))
+            continue;
         const Vec3& p = mesh.positions[v];
         const int start = conn.vertex_corner[v];
-        if (start < 0) {
-            out.position[v] = p;
-            continue;
-        }
         ring.clear();
-        int faces = 0, last = start;
-        for (int c = start; c >= 0;) {
+        for (int c = start;;) {
             ring.push_back(conn.head(c));
-            ++faces;
-            last = c;
             c = conn.next_around_vertex(c);
             if (c == start) break;
         }
-        if (conn.is_boundary_vertex(v)) {
-            const bool corner = options.boundary == LoopBoundary::EdgeAndCorner && faces == 1;
-            out.position[v] = boundary_limit(p, mesh.positions[conn.corner_vertex[conn.prev[start]]],
-                                             mesh.positions[conn.head(last)], corner);
-            continue;
-        }
-        const int n = faces;
+        const int n = static_cast<int>(ring.size());
         const double chi = loop_limit_ring_weight(options.weights, n);
         Vec3 sum = Vec3::Zero(), t1 = Vec3::Zero(), t2 = Vec3::Zero();
         for (int i = 0; i < n; ++i) {
@@ -79,26 +81,12 @@ LimitResult catmull_clark_limit(const PolyMesh& mesh, const CatmullClarkOptions&
     out.position.resize(static_cast<size_t>(mesh.num_vertices()));
     out.normal.assign(out.position.size(), Vec3::Constant(kNaN));
     for (int v = 0; v < mesh.num_vertices(); ++v) {
+        if (boundary_or_isolated_limit(conn, mesh.positions, v,
+                                       options.boundary == CatmullClarkBoundary::EdgeAndCorner, out))
+            continue;
         const Vec3& p = mesh.positions[v];
         const int start = conn.vertex_corner[v];
-        if (start < 0) {
-            out.position[v] = p;
-            continue;
-        }
-        int faces = 0, last = start;
-        for (int c = start; c >= 0;) {
-            ++faces;
-            last = c;
-            c = conn.next_around_vertex(c);
-            if (c == start) break;
-        }
-        if (conn.is_boundary_vertex(v)) {
-            const bool corner = options.boundary == CatmullClarkBoundary::EdgeAndCorner && faces == 1;
-            out.position[v] = boundary_limit(p, mesh.positions[conn.corner_vertex[conn.prev[start]]],
-                                             mesh.positions[conn.head(last)], corner);
-            continue;
-        }
-        const int n = faces;
+        const int n = conn.fan(v).faces;
         const double a_n = 1 + std::cos(2 * M_PI / n) + std::cos(M_PI / n) * std::sqrt(2 * (9 + std::cos(2 * M_PI / n)));
         Vec3 e_sum = Vec3::Zero(), f_sum = Vec3::Zero(), t1 = Vec3::Zero(), t2 = Vec3::Zero();
         int i = 0;

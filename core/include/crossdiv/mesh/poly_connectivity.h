@@ -42,6 +42,23 @@ struct PolyConnectivity {
     /// Next corner at the same vertex, across the outgoing half-edge of c; -1 at a boundary.
     /// From vertex_corner[v] until -1 or back at the start it visits every face around v once.
     int next_around_vertex(int c) const { return twin[c] < 0 ? -1 : next[twin[c]]; }
+
+    /// The faces around a vertex: how many, and the walk's last corner (on a boundary, the
+    /// corner whose outgoing half-edge is on the boundary). {0, -1} for an isolated vertex.
+    struct Fan {
+        int faces, last;
+    };
+    Fan fan(int v) const {
+        Fan f{0, -1};
+        const int start = vertex_corner[v];
+        for (int c = start; c >= 0;) {
+            ++f.faces;
+            f.last = c;
+            c = next_around_vertex(c);
+            if (c == start) break;
+        }
+        return f;
+    }
 };
 
 /// Builds the tables in O(sum of valence^2) with flat arrays (no edge map).

@@ -72,8 +72,11 @@ struct SchemeComparison {
 /// @throws InputError for an unknown reference name.
 SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, const SchemeRequest& request);
 
-/// The names of the references built into this binary that have `scheme`.
-std::vector<std::string> scheme_reference_names(Scheme scheme);
+/// One reference's refinement of `mesh` under `request` (scheme, rule, levels), through the same
+/// table compare_scheme uses; `rule` receives the rule the reference applies (its closest).
+/// @throws InputError when `name` is not built or lacks the scheme; adapters::Rejected as the adapter.
+adapters::LevelTrace run_scheme_reference(const std::string& name, const SchemeRequest& request, const PolyMesh& mesh,
+                                          std::string& rule);
 
 nlohmann::json to_json(const SchemeComparison& c);
 
