@@ -83,7 +83,7 @@ RefinementStep catmull_clark_step(const PolyMesh& mesh, const PolyConnectivity& 
 }
 
 PolyMesh catmull_clark_subdivide(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels) {
-    return detail::refine_levels(mesh, levels, [&](const PolyMesh& m, const PolyConnectivity& conn) {
+    return detail::refine_levels(mesh, levels, [&](const PolyMesh& m, const PolyConnectivity& conn, int) {
         return catmull_clark_step(m, conn, options);
     });
 }

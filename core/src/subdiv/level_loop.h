@@ -10,7 +10,7 @@
 
 namespace crossdiv::detail {
 
-/// `step(mesh, conn)` returns the RefinementStep of one level; build_poly_connectivity checks
+/// `step(mesh, conn, level)` returns the RefinementStep of level `level` (0 = the first); build_poly_connectivity checks
 /// the input (and throws InputError naming the element) before the first step.
 template <class Step>
 PolyMesh refine_levels(const PolyMesh& mesh, int levels, const Step& step) {
@@ -18,11 +18,20 @@ PolyMesh refine_levels(const PolyMesh& mesh, int levels, const Step& step) {
     PolyMesh current = mesh;
     for (int l = 0; l < levels; ++l) {
         const PolyConnectivity conn = build_poly_connectivity(current);
-        current = apply_step(step(current, conn), current);
+        current = apply_step(step(current, conn, l), current);
     }
     if (levels == 0) build_poly_connectivity(current);  // the same checks as a refinement
     current.source = {};
     return current;
+}
+
+/// @throws InputError naming the first face that is not a triangle, for the schemes that
+///         refine triangles only (sqrt3, the Butterflies).
+inline void require_triangles(const PolyMesh& mesh, const char* scheme) {
+    for (int f = 0; f < mesh.num_faces(); ++f)
+        if (mesh.face_size(f) != 3)
+            throw InputError(mesh.source.describe_face(f) + ": has " + std::to_string(mesh.face_size(f)) +
+                             " corners; " + scheme + " refines triangles only");
 }
 
 }  // namespace crossdiv::detail

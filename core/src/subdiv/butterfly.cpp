@@ -1,0 +1,141 @@
+#include "crossdiv/subdiv/butterfly.h"
+
+#include <climits>
+#include <string>
+
+#include "crossdiv/error.h"
+#include "level_loop.h"
+
+namespace crossdiv {
+namespace {
+
+/// The stencil terms of one edge point, written into the row being built.
+class EdgeStencil {
+public:
+    EdgeStencil(const PolyConnectivity& conn, const std::vector<int>& valence, StencilTable& st)
+        : conn_(conn), valence_(valence), st_(st) {}
+
+    /// The four-point rule along the boundary polygon; c is the boundary edge's corner.
+    void boundary(int c) {
+        const int a0 = conn_.corner_vertex[c], a1 = conn_.head(c);
+        st_.add(conn_.corner_vertex[conn_.prev[conn_.vertex_corner[a0]]], kFourPointOuter);
+        st_.add(a0, kFourPointInner);
+        st_.add(a1, kFourPointInner);
+        st_.add(conn_.head(conn_.fan(a1).last), kFourPointOuter);
+    }
+
+    /// The eight-point stencil of the interior edge of corner c (a0 -> a1, twin t).
+    void eight_point(int c) {
+        const int t = conn_.twin[c];
+        const int a0 = conn_.corner_vertex[c], a1 = conn_.head(c);
+        st_.add(a0, kButterflyA);
+        st_.add(a1, kButterflyA);
+        st_.add(conn_.corner_vertex[conn_.prev[c]], kButterflyB);
+        st_.add(conn_.corner_vertex[conn_.prev[t]], kButterflyB);
+        // The wing edges of both triangles, each with the endpoint opposite it.
+        wing(conn_.next[c], a0);
+        wing(conn_.prev[c], a1);
+        wing(conn_.next[t], a1);
+        wing(conn_.prev[t], a0);
+    }
+
+    /// Zorin's K-point stencil around endpoint v of the edge of corner c_out (v -> w), scaled.
+    void extraordinary(int c_out, double scale) {
+        const int v = conn_.corner_vertex[c_out], K = valence_[v];
+        const std::vector<double> s = modified_butterfly_stencil(K);
+        int j = 0;
+        for (int c = c_out;;) {
+            st_.add(conn_.head(c), scale * s[j++]);
+            c = conn_.next_around_vertex(c);
+            if (c == c_out) break;
+        }
+        st_.add(v, scale * s[K]);
+    }
+
+private:
+    /// The wing point c across the edge of corner w (x -> b), -1/16; when that edge is on the
+    /// boundary, its reflection x + b - opposite, opposite being the edge's third vertex.
+    void wing(int w, int opposite) {
+        const int t = conn_.twin[w];
+        if (t >= 0) {
+            st_.add(conn_.corner_vertex[conn_.prev[t]], kButterflyC);
+            return;
+        }
+        st_.add(conn_.corner_vertex[w], kButterflyC);
+        st_.add(conn_.head(w), kButterflyC);
+        st_.add(opposite, -kButterflyC);
+    }
+
+    const PolyConnectivity& conn_;
+    const std::vector<int>& valence_;
+    StencilTable& st_;
+};
+
+}  // namespace
+
+RefinementStep butterfly_step(const PolyMesh& mesh, const PolyConnectivity& conn, ButterflyVariant variant) {
+    detail::require_triangles(mesh, to_string(variant).data());
+    const int nv = mesh.num_vertices(), nf = mesh.num_faces(), ne = conn.num_edges();
+    if (static_cast<long long>(nv) + ne > INT_MAX || 4LL * nf > INT_MAX)
+        throw InputError("the next Butterfly level would have " + std::to_string(4LL * nf) +
+                         " faces, more than 32-bit indices address; use fewer levels");
+    // Valence as OpenMesh counts it: edges at the vertex.
+    std::vector<int> valence(static_cast<size_t>(nv), 0);
+    std::vector<char> on_boundary(static_cast<size_t>(nv), 0);
+    for (int v = 0; v < nv; ++v) {
+        if (conn.vertex_corner[v] < 0) continue;
+        on_boundary[v] = conn.is_boundary_vertex(v);
+        valence[v] = conn.fan(v).faces + on_boundary[v];
+    }
+
+    RefinementStep step(nv);
+    StencilTable& st = step.stencils;
+    st.reserve(static_cast<size_t>(nv) + ne, static_cast<size_t>(nv) + 12 * static_cast<size_t>(ne));
+    for (int v = 0; v < nv; ++v) {  // interpolating: old vertices stay
+        st.add(v, 1.0);
+        st.end_row();
+    }
+    EdgeStencil stencil(conn, valence, st);
+    for (int e = 0; e < ne; ++e) {
+        const int c = conn.edge_corner[e], t = conn.twin[c];
+        const int a0 = conn.corner_vertex[c], a1 = conn.head(c);
+        if (t < 0) {
+            stencil.boundary(c);
+        } else if (variant == ButterflyVariant::Classic) {
+            stencil.eight_point(c);
+        } else {
+            const bool regular0 = valence[a0] == 6, regular1 = valence[a1] == 6;
+            const bool b0 = on_boundary[a0], b1 = on_boundary[a1];
+            if ((regular0 && regular1) || (b0 && regular1) || (b1 && regular0) || (b0 && b1)) {
+                stencil.eight_point(c);
+            } else {
+                const bool use0 = !regular0 && !b0, use1 = !regular1 && !b1;
+                const double scale = use0 && use1 ? 0.5 : 1.0;
+                if (use0) stencil.extraordinary(c, scale);
+                if (use1) stencil.extraordinary(t, scale);
+            }
+        }
+        st.end_row();
+    }
+
+    step.face_vertices.reserve(12 * static_cast<size_t>(nf));
+    step.face_start.reserve(4 * static_cast<size_t>(nf) + 1);
+    for (int f = 0; f < nf; ++f) {
+        const int c0 = mesh.face_start[f], c1 = c0 + 1, c2 = c0 + 2;
+        const int e0 = nv + conn.corner_edge[c0], e1 = nv + conn.corner_edge[c1], e2 = nv + conn.corner_edge[c2];
+        step.add_face({conn.corner_vertex[c0], e0, e2});
+        step.add_face({conn.corner_vertex[c1], e1, e0});
+        step.add_face({conn.corner_vertex[c2], e2, e1});
+        step.add_face({e0, e1, e2});
+    }
+    return step;
+}
+
+PolyMesh butterfly_subdivide(const PolyMesh& mesh, ButterflyVariant variant, int levels) {
+    detail::require_triangles(mesh, to_string(variant).data());  // also for levels = 0
+    return detail::refine_levels(mesh, levels, [&](const PolyMesh& m, const PolyConnectivity& conn, int) {
+        return butterfly_step(m, conn, variant);
+    });
+}
+
+}  // namespace crossdiv

@@ -1,0 +1,260 @@
+// sqrt3, Doo-Sabin and the two Butterflies on tiny meshes whose refined positions and counts
+// are computed by hand (the derivations are in the comments).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "crossdiv/error.h"
+#include "crossdiv/mesh/poly_connectivity.h"
+#include "crossdiv/subdiv/butterfly.h"
+#include "crossdiv/subdiv/doo_sabin.h"
+#include "crossdiv/subdiv/sqrt3.h"
+
+namespace crossdiv {
+namespace {
+
+// Hand values are exact rationals of small denominators; 1e-15 allows the last bit of a
+// few-term sum of numbers of size ~1.
+constexpr double kHand = 1e-15;
+
+void expect_near(const Vec3& a, const Vec3& b) {
+    EXPECT_NEAR((a - b).norm(), 0.0, kHand) << a.transpose() << " vs " << b.transpose();
+}
+
+// The regular tetrahedron on alternate cube corners, outward faces; valence 3 everywhere.
+PolyMesh tetrahedron() {
+    PolyMesh m;
+    m.positions = {Vec3(1, 1, 1), Vec3(1, -1, -1), Vec3(-1, 1, -1), Vec3(-1, -1, 1)};
+    m.add_face({0, 1, 2});
+    m.add_face({0, 3, 1});
+    m.add_face({0, 2, 3});
+    m.add_face({1, 3, 2});
+    return m;
+}
+
+// One triangle, every edge on the boundary.
+PolyMesh triangle() {
+    PolyMesh m;
+    m.positions = {Vec3(0, 0, 0), Vec3(3, 0, 0), Vec3(0, 3, 0)};
+    m.add_face({0, 1, 2});
+    return m;
+}
+
+PolyMesh unit_square() {
+    PolyMesh m;
+    m.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
+    m.add_face({0, 1, 2, 3});
+    return m;
+}
+
+// The cube [-1, 1]^3 as six outward quads.
+PolyMesh cube() {
+    PolyMesh m;
+    for (int i = 0; i < 8; ++i) m.positions.emplace_back(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1);
+    m.add_face({0, 2, 3, 1});
+    m.add_face({4, 5, 7, 6});
+    m.add_face({0, 1, 5, 4});
+    m.add_face({2, 6, 7, 3});
+    m.add_face({0, 4, 6, 2});
+    m.add_face({1, 3, 7, 5});
+    return m;
+}
+
+// A regular (valence 6) triangulated torus of n x n quads split by one diagonal.
+PolyMesh regular_torus(int n) {
+    PolyMesh m;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            const double u = 2 * M_PI * i / n, v = 2 * M_PI * j / n;
+            m.positions.emplace_back((2 + std::cos(v)) * std::cos(u), (2 + std::cos(v)) * std::sin(u), std::sin(v));
+        }
+    const auto id = [n](int i, int j) { return ((i + n) % n) * n + (j + n) % n; };
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            m.add_face({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+            m.add_face({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+        }
+    return m;
+}
+
+// ---- sqrt3 ------------------------------------------------------------------------------
+
+TEST(Sqrt3Mask, KobbeltAlphaAtValence3And6) {
+    // alpha_3 = (4 - 2 cos 120deg) / 9 = 5/9; alpha_6 = (4 - 1) / 9 = 1/3.
+    EXPECT_NEAR(sqrt3_interior_vertex_mask(3).self, 4.0 / 9, kHand);
+    EXPECT_NEAR(sqrt3_interior_vertex_mask(3).ring, 5.0 / 27, kHand);
+    EXPECT_NEAR(sqrt3_interior_vertex_mask(6).self, 2.0 / 3, kHand);
+    EXPECT_NEAR(sqrt3_interior_vertex_mask(6).ring, 1.0 / 18, kHand);
+}
+
+TEST(Sqrt3, TetrahedronOneStepByHand) {
+    const PolyMesh r = sqrt3_subdivide(tetrahedron(), {Sqrt3Parity::CountFromInput}, 1);
+    // 4 old + 4 centroids; two faces per edge (6 edges).
+    ASSERT_EQ(r.num_vertices(), 8);
+    ASSERT_EQ(r.num_faces(), 12);
+    // v0 = 4/9 (1,1,1) + 5/27 * (sum of the others = (-1,-1,-1)) = 7/27 (1,1,1).
+    expect_near(r.positions[0], Vec3(7, 7, 7) / 27.0);
+    // Centroid of face 3 (v1, v3, v2) = (-1/3, -1/3, -1/3).
+    expect_near(r.positions[4 + 3], Vec3(-1, -1, -1) / 3.0);
+    // Every old vertex now has valence 3 among the new points only: the old edges are gone.
+    const PolyConnectivity c = build_poly_connectivity(r);
+    for (int e = 0; e < c.num_edges(); ++e) EXPECT_TRUE(c.edge_vertices[e][0] >= 4 || c.edge_vertices[e][1] >= 4);
+}
+
+TEST(Sqrt3, BoundaryWaitsOneStepThenIsTrisected) {
+    // Step 0 keeps the boundary: 3 faces (a, b, m), m = (1, 1, 0).
+    const PolyMesh one = sqrt3_subdivide(triangle(), {Sqrt3Parity::CountFromInput}, 1);
+    ASSERT_EQ(one.num_vertices(), 4);
+    ASSERT_EQ(one.num_faces(), 3);
+    expect_near(one.positions[0], Vec3(0, 0, 0));
+    expect_near(one.positions[3], Vec3(1, 1, 0));
+    // Step 1 trisects each boundary edge (2 points per face) and smooths the boundary:
+    // a' = (4 c + 19 a + 4 b) / 27 = (12, 12, 0) / 27; m (valence 3) = 4/9 m + 5/27 (a + b + c)
+    // = (1, 1, 0); faces = 2 per interior edge (3) + 1 per boundary face (3).
+    const PolyMesh two = sqrt3_subdivide(triangle(), {Sqrt3Parity::CountFromInput}, 2);
+    ASSERT_EQ(two.num_vertices(), 10);
+    ASSERT_EQ(two.num_faces(), 9);
+    expect_near(two.positions[0], Vec3(12, 12, 0) / 27.0);
+    expect_near(two.positions[3], Vec3(1, 1, 0));
+    // Face 0 of level 1 is (a, b, m): its points trisect a -> b, nearer a first:
+    // (c + 16 a + 10 b) / 27 = (30, 3, 0) / 27 and (10 a + 16 b + c) / 27 = (48, 3, 0) / 27.
+    expect_near(two.positions[4], Vec3(30, 3, 0) / 27.0);
+    expect_near(two.positions[5], Vec3(48, 3, 0) / 27.0);
+    // Restarting the generation each level never touches the boundary.
+    const PolyMesh restart = sqrt3_subdivide(triangle(), {Sqrt3Parity::RestartEachLevel}, 2);
+    EXPECT_EQ(restart.num_vertices(), 7);
+    expect_near(restart.positions[0], Vec3(0, 0, 0));
+}
+
+TEST(Sqrt3, RefusesAQuadNamingTheFace) {
+    try {
+        sqrt3_subdivide(unit_square(), {Sqrt3Parity::CountFromInput}, 0);
+        FAIL() << "a quad was accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("face 0: has 4 corners; sqrt3 refines triangles only"), std::string::npos)
+            << e.what();
+    }
+}
+
+TEST(Sqrt3, BoundaryStepRefusesAFaceWithTwoBoundaryEdges) {
+    const PolyMesh t = triangle();
+    EXPECT_THROW(sqrt3_step(t, build_poly_connectivity(t), true), InputError);
+}
+
+// ---- Doo-Sabin ----------------------------------------------------------------------------
+
+TEST(DooSabinMask, QuadIsTheBiquadraticBSplineTriangleIsTwoThirds) {
+    EXPECT_NEAR(doo_sabin_weight(4, 0), 9.0 / 16, kHand);
+    EXPECT_NEAR(doo_sabin_weight(4, 1), 3.0 / 16, kHand);
+    EXPECT_NEAR(doo_sabin_weight(4, 2), 1.0 / 16, kHand);
+    EXPECT_NEAR(doo_sabin_weight(4, 3), 3.0 / 16, kHand);
+    EXPECT_NEAR(doo_sabin_weight(3, 0), 2.0 / 3, kHand);
+    EXPECT_NEAR(doo_sabin_weight(3, 1), 1.0 / 6, kHand);
+    for (int n = 3; n <= 12; ++n) {  // affine: the weights sum to one
+        double sum = 0;
+        for (int k = 0; k < n; ++k) sum += doo_sabin_weight(n, k);
+        EXPECT_NEAR(sum, 1.0, 1e-15) << n;
+    }
+}
+
+TEST(DooSabin, CubeOneLevelByHand) {
+    const PolyMesh r = doo_sabin_subdivide(cube(), {DooSabinBoundary::ChaikinBoundary}, 1);
+    // One point per corner (24); faces F + E + V = 6 + 12 + 8.
+    ASSERT_EQ(r.num_vertices(), 24);
+    ASSERT_EQ(r.num_faces(), 26);
+    // Corner 0 of face 0 (vertex 0 = (-1,-1,-1) of the z = -1 face): 9/16 v0 + 3/16 (v2 + v1)
+    // + 1/16 v3 = (-1/2, -1/2, -1).
+    expect_near(r.positions[0], Vec3(-0.5, -0.5, -1));
+    // The V-face of a valence-3 vertex is a triangle, the E-faces are quads.
+    int triangles = 0, quads = 0;
+    for (int f = 0; f < r.num_faces(); ++f) (r.face_size(f) == 3 ? triangles : quads) += 1;
+    EXPECT_EQ(triangles, 8);
+    EXPECT_EQ(quads, 18);
+    // Closed and consistently oriented: the next level's connectivity accepts it.
+    EXPECT_NO_THROW(build_poly_connectivity(r));
+}
+
+TEST(DooSabin, SquareBoundaryIsChaikinsCornerCutting) {
+    const PolyMesh r = doo_sabin_subdivide(unit_square(), {DooSabinBoundary::ChaikinBoundary}, 1);
+    // 4 corner points + 2 Chaikin points on each of the 4 edges; faces 1 F + 4 E + 4 V.
+    ASSERT_EQ(r.num_vertices(), 12);
+    ASSERT_EQ(r.num_faces(), 9);
+    expect_near(r.positions[0], Vec3(0.25, 0.25, 0));
+    expect_near(r.positions[4], Vec3(0.25, 0, 0));  // edge 0 -> 1: 3/4 a + 1/4 b
+    expect_near(r.positions[5], Vec3(0.75, 0, 0));
+    const PolyConnectivity c = build_poly_connectivity(r);
+    int boundary_edges = 0;
+    for (int e = 0; e < c.num_edges(); ++e) boundary_edges += c.is_boundary_edge(e);
+    EXPECT_EQ(boundary_edges, 8);  // the octagon of Chaikin's points
+    for (int v = 0; v < 4; ++v) EXPECT_FALSE(c.is_boundary_vertex(v));
+    // CGAL's rule keeps the F-face only.
+    const PolyMesh dropped = doo_sabin_subdivide(unit_square(), {DooSabinBoundary::DropBorderFaces}, 1);
+    EXPECT_EQ(dropped.num_vertices(), 4);
+    EXPECT_EQ(dropped.num_faces(), 1);
+}
+
+// ---- Butterflies --------------------------------------------------------------------------
+
+TEST(ButterflyMask, ZorinStencilsSumToOne) {
+    const std::vector<double> s3 = modified_butterfly_stencil(3), s4 = modified_butterfly_stencil(4);
+    EXPECT_EQ(s3, (std::vector<double>{5.0 / 12, -1.0 / 12, -1.0 / 12, 0.75}));
+    EXPECT_EQ(s4, (std::vector<double>{3.0 / 8, 0.0, -1.0 / 8, 0.0, 0.75}));
+    for (int k = 5; k <= 30; ++k) {
+        const std::vector<double> s = modified_butterfly_stencil(k);
+        // s_0 = (1/4 + 1 + 1/2) / K; the centre weight is 3/4 (the ring sums to 1/4).
+        EXPECT_NEAR(s[0], 1.75 / k, kHand);
+        EXPECT_NEAR(s[k], 0.75, 1e-14) << k;
+    }
+}
+
+TEST(Butterfly, TetrahedronClassicIsTheMidpointModifiedIsNot) {
+    // Classic: 1/2 (a0 + a1) + 1/8 (b0 + b1) - 1/16 (4 wing points). On a tetrahedron every
+    // wing point is b0 or b1, twice each, so the b terms cancel: the midpoint (1, 0, 0) of
+    // v0 = (1,1,1), v1 = (1,-1,-1).
+    const PolyMesh t = tetrahedron();
+    const PolyConnectivity c = build_poly_connectivity(t);
+    int e01 = -1;
+    for (int e = 0; e < c.num_edges(); ++e)
+        if (std::min(c.edge_vertices[e][0], c.edge_vertices[e][1]) == 0 && std::max(c.edge_vertices[e][0], c.edge_vertices[e][1]) == 1)
+            e01 = e;
+    ASSERT_GE(e01, 0);
+    const PolyMesh classic = butterfly_subdivide(t, ButterflyVariant::Classic, 1);
+    expect_near(classic.positions[4 + e01], Vec3(1, 0, 0));
+    // Modified: both endpoints have valence 3, so the average of the two K = 3 stencils:
+    // 7/12 (a0 + a1) - 1/12 (b0 + b1) = 7/12 (2,0,0) - 1/12 (-2,0,0) = (4/3, 0, 0).
+    const PolyMesh modified = butterfly_subdivide(t, ButterflyVariant::Modified, 1);
+    expect_near(modified.positions[4 + e01], Vec3(4.0 / 3, 0, 0));
+    for (int v = 0; v < 4; ++v) EXPECT_EQ(modified.positions[v], t.positions[v]);  // interpolating
+    EXPECT_EQ(modified.num_faces(), 16);
+}
+
+TEST(Butterfly, RegularPatchHasThePublishedEightPointStencil) {
+    const PolyMesh torus = regular_torus(6);
+    const RefinementStep step = butterfly_step(torus, build_poly_connectivity(torus), ButterflyVariant::Modified);
+    const Eigen::SparseMatrix<double, Eigen::RowMajor> S = step.stencils.matrix();
+    const std::vector<double> published{-1.0 / 16, -1.0 / 16, -1.0 / 16, -1.0 / 16, 1.0 / 8, 1.0 / 8, 0.5, 0.5};
+    for (int r = torus.num_vertices(); r < S.rows(); ++r) {
+        std::vector<double> w;
+        for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(S, r); it; ++it) w.push_back(it.value());
+        std::sort(w.begin(), w.end());
+        EXPECT_EQ(w, published) << "edge row " << r;
+    }
+    // Both variants are the same scheme there, bit for bit.
+    EXPECT_EQ(butterfly_subdivide(torus, ButterflyVariant::Classic, 2).positions,
+              butterfly_subdivide(torus, ButterflyVariant::Modified, 2).positions);
+}
+
+TEST(Butterfly, BoundaryEdgeIsTheFourPointRule) {
+    // Square split into two triangles: the boundary loop is 0, 1, 2, 3. Edge 0 -> 1 gets
+    // 9/16 (v0 + v1) - 1/16 (v3 + v2) = (1/2, -1/8, 0).
+    PolyMesh m;
+    m.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
+    m.add_face({0, 1, 2});
+    m.add_face({0, 2, 3});
+    const PolyMesh r = butterfly_subdivide(m, ButterflyVariant::Modified, 1);
+    const PolyConnectivity c = build_poly_connectivity(m);
+    expect_near(r.positions[4 + c.corner_edge[0]], Vec3(0.5, -0.125, 0));
+}
+
+}  // namespace
+}  // namespace crossdiv
