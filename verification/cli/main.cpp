@@ -38,27 +38,31 @@ using namespace crossdiv::verification;
 struct SchemeArgs {
     std::string scheme = "loop";
     std::string weights = "loop";
-    std::string boundary = "edge-only";
+    std::string boundary;  ///< empty: the scheme's default (edge-only, chaikin-boundary, count-from-input)
     int levels = 1;
 
     void add_to(CLI::App& app) {
         app.add_option("--scheme", scheme, "Subdivision scheme")
-            ->check(CLI::IsMember({"loop", "catmull-clark"}))
+            ->check(CLI::IsMember({"loop", "catmull-clark", "doo-sabin", "sqrt3", "butterfly", "modified-butterfly"}))
             ->capture_default_str();
         app.add_option("--weights", weights, "Even-vertex weight family: loop (Loop 1987) or warren (3/(8n))")
             ->check(CLI::IsMember({"loop", "warren"}))
             ->capture_default_str();
         app.add_option("--boundary", boundary,
-                       "Boundary rule: edge-only or edge-and-corner; catmull-clark also midpoint-average (OpenMesh's)")
-            ->check(CLI::IsMember({"edge-only", "edge-and-corner", "midpoint-average"}))
-            ->capture_default_str();
+                       "Boundary rule. loop: edge-only (default) or edge-and-corner; catmull-clark: those and "
+                       "midpoint-average (OpenMesh's); doo-sabin: chaikin-boundary (default) or drop-border-faces "
+                       "(CGAL's); sqrt3, when the boundary is refined: count-from-input (default) or "
+                       "restart-each-level (a library called once per level)")
+            ->check(CLI::IsMember({"edge-only", "edge-and-corner", "midpoint-average", "chaikin-boundary",
+                                   "drop-border-faces", "count-from-input", "restart-each-level"}));
         app.add_option("--levels", levels, "Number of subdivision levels")->check(CLI::Range(0, 12))->capture_default_str();
     }
     cli::PolySchemeArgs poly() const { return {scheme, boundary, levels}; }
     LoopOptions options() const {
-        if (boundary == "midpoint-average") throw InputError("loop has no midpoint-average boundary rule");
+        if (!boundary.empty() && boundary != "edge-only" && boundary != "edge-and-corner")
+            throw InputError("loop has no boundary rule '" + boundary + "' (edge-only, edge-and-corner)");
         return {weights == "loop" ? LoopWeights::Loop : LoopWeights::Warren,
-                boundary == "edge-only" ? LoopBoundary::EdgeOnly : LoopBoundary::EdgeAndCorner};
+                boundary == "edge-and-corner" ? LoopBoundary::EdgeAndCorner : LoopBoundary::EdgeOnly};
     }
 };
 
@@ -92,7 +96,7 @@ int run_subdivide(const std::string& in, const SchemeArgs& s, const std::string&
     } else {
         const LoopReference& ref = find_loop_reference(impl);
         if (!ref.supports(s.options()))
-            throw InputError(impl + " has no Loop with weights=" + s.weights + " boundary=" + s.boundary);
+            throw InputError(impl + " has no Loop with weights=" + s.weights + " boundary=" + std::string(to_string(s.options().boundary)));
         result = ref.loop(mesh, s.options(), s.levels).back();
     }
     write_mesh(out, result);
@@ -300,7 +304,7 @@ int run_diff(const std::string& in, const SchemeArgs& s, const std::string& agai
     fmt::print("minimal:       {} ({} faces, {} vertices) after {} comparisons: {} ({})\n", minimal, r.minimal.num_faces(),
                r.minimal.num_vertices(), r.tests, m.divergence_class, m.explanation);
     fmt::print("reproduce:     crossdiv compare {} --weights {} --boundary {} --levels {} --against {}\n", minimal,
-               s.weights, s.boundary, s.levels, against);
+               s.weights, to_string(s.options().boundary), s.levels, against);
     return 0;
 }
 
@@ -388,13 +392,15 @@ int main(int argc, char** argv) {
     sub->add_option("-o,--output", sub_out, "Output mesh (.obj, .off)")->required();
 
     std::vector<std::string> cmp_in;
-    std::string against = "opensubdiv,openmesh,cgal", json_path;
+    std::string against, json_path;  // empty: every reference that has the scheme
     double timeout = 120;
     bool no_isolate = false;
     auto* cmp = app.add_subcommand("compare", "Compare core with reference libraries");
     cmp->add_option("inputs", cmp_in, "Mesh files, bundled:NAME, bundled:all, course:all, cgal:all")->required();
     cmp_args.add_to(*cmp);
-    cmp->add_option("--against", against, "Comma-separated references")->capture_default_str();
+    cmp->add_option("--against", against,
+                    "Comma-separated references (default: every one that has the scheme; sqrt3 also has "
+                    "openmesh-one-call and cgal-one-call, all levels in one call)");
     cmp->add_option("--json", json_path, "Write the results as JSON to this file");
     cmp->add_option("--timeout", timeout, "Seconds a reference may run before it counts as hung")->capture_default_str();
     cmp->add_flag("--no-isolate", no_isolate, "Run references in this process (debugging; a crash ends the run)");

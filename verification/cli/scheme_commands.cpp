@@ -2,13 +2,13 @@
 
 #include <fmt/core.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "crossdiv/error.h"
 #include "crossdiv/io/mesh_io.h"
-#include "crossdiv/subdiv/catmull_clark.h"
 #include "crossdiv/verification/inputs.h"
 #include "crossdiv/subdiv/limit.h"
 #include "crossdiv/subdiv/loop.h"
@@ -20,19 +20,51 @@ namespace {
 
 using namespace crossdiv::verification;
 
-CatmullClarkOptions catmull_clark_options(const PolySchemeArgs& s) {
-    if (s.boundary == "edge-only") return {CatmullClarkBoundary::EdgeOnly};
-    if (s.boundary == "edge-and-corner") return {CatmullClarkBoundary::EdgeAndCorner};
-    if (s.boundary == "midpoint-average") return {CatmullClarkBoundary::MidpointAverage};
-    throw InputError("catmull-clark has no boundary rule '" + s.boundary +
-                     "' (edge-only, edge-and-corner, midpoint-average)");
+/// The rule `--boundary` names for the scheme (its default when empty).
+SchemeRule scheme_rule(Scheme scheme, const std::string& boundary) {
+    SchemeRule rule;
+    if (boundary.empty()) return rule;
+    switch (scheme) {
+        case Scheme::CatmullClark:
+            for (CatmullClarkBoundary b : {CatmullClarkBoundary::EdgeOnly, CatmullClarkBoundary::EdgeAndCorner,
+                                           CatmullClarkBoundary::MidpointAverage})
+                if (boundary == to_string(b)) {
+                    rule.catmull_clark = {b};
+                    return rule;
+                }
+            throw InputError("catmull-clark has no boundary rule '" + boundary +
+                             "' (edge-only, edge-and-corner, midpoint-average)");
+        case Scheme::DooSabin:
+            for (DooSabinBoundary b : {DooSabinBoundary::ChaikinBoundary, DooSabinBoundary::DropBorderFaces})
+                if (boundary == to_string(b)) {
+                    rule.doo_sabin = {b};
+                    return rule;
+                }
+            throw InputError("doo-sabin has no boundary rule '" + boundary + "' (chaikin-boundary, drop-border-faces)");
+        case Scheme::Sqrt3:
+            for (Sqrt3Parity p : {Sqrt3Parity::CountFromInput, Sqrt3Parity::RestartEachLevel})
+                if (boundary == to_string(p)) {
+                    rule.sqrt3 = {p};
+                    return rule;
+                }
+            throw InputError("sqrt3 has no boundary rule '" + boundary + "' (count-from-input, restart-each-level)");
+        case Scheme::Butterfly:
+        case Scheme::ModifiedButterfly: break;
+    }
+    throw InputError(std::string(to_string(scheme)) + " has no boundary rule to choose (boundary edges take the four-point rule)");
 }
 
-/// Catmull-Clark output grows by the corner count each level (every face becomes quads):
-/// refuse before any work past the same face limit as Loop.
-void check_output_size(const PolyMesh& mesh, int levels, const std::string& name) {
-    long long faces = static_cast<long long>(mesh.face_vertices.size());
-    for (int l = 1; l < levels; ++l) faces *= 4;
+/// Refuses before any work an output past the same face limit as Loop. The first level makes
+/// one face per corner (Catmull-Clark), faces + edges + vertices <= 2 corners (Doo-Sabin), two
+/// per edge (sqrt3, at most 3 per face) or 4 per triangle (the Butterflies); later levels
+/// multiply by 3 (sqrt3) or at most 4 (the others).
+void check_output_size(const PolyMesh& mesh, Scheme scheme, int levels, const std::string& name) {
+    const long long corners = static_cast<long long>(mesh.face_vertices.size());
+    long long faces = scheme == Scheme::CatmullClark ? corners
+                      : scheme == Scheme::DooSabin   ? 2 * corners
+                      : scheme == Scheme::Sqrt3      ? 3LL * mesh.num_faces()
+                                                     : 4LL * mesh.num_faces();
+    for (int l = 1; l < levels; ++l) faces *= scheme == Scheme::Sqrt3 ? 3 : 4;
     constexpr long long kMaxOutputFaces = 64LL << 20;
     if (levels > 0 && faces > kMaxOutputFaces)
         throw InputError(name + ": " + std::to_string(levels) + " levels would produce " + std::to_string(faces) +
@@ -61,17 +93,18 @@ void write_json(const std::string& path, const nlohmann::json& j) {
 }
 
 int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const std::string& impl, const std::string& out) {
-    const Scheme scheme = scheme_from_string(s.scheme);  // one polygon scheme so far: Catmull-Clark
-    const CatmullClarkOptions o = catmull_clark_options(s);
+    const Scheme scheme = scheme_from_string(s.scheme);
+    const SchemeRule rule_asked = scheme_rule(scheme, s.boundary);
+    const std::string asked = rule_name(scheme, rule_asked);
     const PolyMesh mesh = load_input(in);
-    check_output_size(mesh, s.levels, in);
+    check_output_size(mesh, scheme, s.levels, in);
     PolyMesh result;
     if (impl == "core") {
-        result = catmull_clark_subdivide(mesh, o, s.levels);
+        result = subdivide(scheme, rule_asked, mesh, s.levels);
     } else {
         SchemeRequest req;
         req.scheme = scheme;
-        req.catmull_clark = o;
+        req.rule = rule_asked;
         req.levels = s.levels;
         std::string rule;
         try {
@@ -79,12 +112,12 @@ int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const s
         } catch (const adapters::Rejected& e) {
             throw InputError(impl + " refused " + in + ": " + e.what());
         }
-        if (rule != s.boundary) fmt::print("note: {} applies the {} boundary rule, not {}\n", impl, rule, s.boundary);
+        if (rule != asked) fmt::print("note: {} applies the {} boundary rule, not {}\n", impl, rule, asked);
     }
     write_mesh(out, result);
     fmt::print("{}: {} vertices, {} faces -> {} ({} vertices, {} faces, {} level(s), {} {} {})\n", in,
                mesh.num_vertices(), mesh.num_faces(), out, result.num_vertices(), result.num_faces(), s.levels,
-               s.scheme, s.boundary, impl);
+               s.scheme, asked, impl);
     return 0;
 }
 
@@ -92,7 +125,7 @@ int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeAr
                        const std::string& json_path, double timeout, bool no_isolate) {
     SchemeRequest req;
     req.scheme = scheme_from_string(s.scheme);
-    req.catmull_clark = catmull_clark_options(s);
+    req.rule = scheme_rule(req.scheme, s.boundary);
     req.levels = s.levels;
     req.timeout_seconds = timeout;
     req.isolate = !no_isolate;
@@ -104,7 +137,7 @@ int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeAr
     std::vector<PolyMesh> meshes;
     for (const std::string& in : inputs) {
         meshes.push_back(load_input(in));
-        check_output_size(meshes.back(), s.levels, in);
+        check_output_size(meshes.back(), req.scheme, s.levels, in);
     }
     nlohmann::json results = nlohmann::json::array();
     bool all_agree = true;
@@ -113,10 +146,12 @@ int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeAr
         fmt::print("\n{} ({} vertices, {} faces) {} boundary={} levels={} (core {:.3f} s)\n", c.input, c.input_vertices,
                    c.input_faces, to_string(c.scheme), c.rule, c.levels, c.core_seconds);
         if (!c.core_error.empty()) fmt::print("  core refused: {}\n", c.core_error);
-        fmt::print("  {:<11} {:<17} {:<13} {:>10}  {}\n", "reference", "rule", "verdict", "max rel", "class / explanation");
+        fmt::print("  {:<17} {:<18} {:<13} {:>10}  {}\n", "reference", "rule", "verdict", "max rel", "class / explanation");
         for (const SchemeReferenceRun& r : c.runs)
-            fmt::print("  {:<11} {:<17} {:<13} {:>10}  {}{}\n", r.reference, r.rule, r.verdict,
-                       r.correspondence.method == MatchMethod::None ? "-" : fmt::format("{:.3g}", r.comparison.max_rel),
+            fmt::print("  {:<17} {:<18} {:<13} {:>10}  {}{}\n", r.reference, r.rule, r.verdict,
+                       !std::isfinite(r.comparison.max_rel) || r.correspondence.method == MatchMethod::None
+                           ? "-"
+                           : fmt::format("{:.3g}", r.comparison.max_rel),
                        r.divergence_class.empty() ? "" : r.divergence_class + ": ", r.explanation);
         all_agree &= c.all_agree();
         results.push_back(to_json(c));
@@ -153,7 +188,7 @@ std::pair<int, int> valence_range(const std::string& s) {
 int run_limit(const LimitArgs& a) {
     const PolyMesh mesh = load_input(a.input);
     if (a.levels < 0 || a.levels > 8) throw InputError("--levels must be in 0..8");
-    check_output_size(mesh, a.levels, a.input);
+    check_output_size(mesh, Scheme::CatmullClark, a.levels, a.input);  // Loop grows as fast
     PolyMesh level;
     LimitResult limit;
     if (a.scheme == "loop") {
@@ -162,8 +197,8 @@ int run_limit(const LimitArgs& a) {
         limit = loop_limit(t, o);
         level = to_poly_mesh(t);
     } else if (a.scheme == "catmull-clark") {
-        const CatmullClarkOptions o = catmull_clark_options({a.scheme, a.boundary, a.levels});
-        level = catmull_clark_subdivide(mesh, o, a.levels);
+        const CatmullClarkOptions o = scheme_rule(Scheme::CatmullClark, a.boundary).catmull_clark;
+        level = subdivide(Scheme::CatmullClark, {o}, mesh, a.levels);
         limit = catmull_clark_limit(level, o);
     } else {
         throw InputError("limit: unknown scheme '" + a.scheme + "' (loop, catmull-clark)");
@@ -187,7 +222,7 @@ int run_limit(const LimitArgs& a) {
         const LimitComparison c = a.scheme == "loop"
                                       ? compare_loop_limit(mesh, a.input, loop_options(a.weights, a.boundary), a.levels)
                                       : compare_catmull_clark_limit(
-                                            mesh, a.input, catmull_clark_options({a.scheme, a.boundary, a.levels}), a.levels);
+                                            mesh, a.input, scheme_rule(Scheme::CatmullClark, a.boundary).catmull_clark, a.levels);
         fmt::print("against opensubdiv: {} ({})\n", c.verdict, c.explanation);
         ok = c.verdict == "agree";
         j["comparison"] = to_json(c);

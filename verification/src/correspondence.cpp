@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <numeric>
 #include <string>
 #include <unordered_map>
 
@@ -64,6 +65,7 @@ const char* to_string(MatchMethod method) {
         case MatchMethod::Order: return "order";
         case MatchMethod::Topology: return "topology";
         case MatchMethod::Nearest: return "nearest";
+        case MatchMethod::NearestAndFaces: return "nearest+faces";
         case MatchMethod::None: return "none";
     }
     return "unknown";
@@ -94,6 +96,89 @@ Correspondence match_nearest(const std::vector<Vec3>& ours, const std::vector<Ve
         c.ref_to_ours[i] = static_cast<int>(idx);
     }
     c.method = MatchMethod::Nearest;
+    return c;
+}
+
+Correspondence match_nearest_and_faces(const PolyMesh& ours, const PolyMesh& ref) {
+    Correspondence c = match_nearest(ours.positions, ref.positions);
+    if (c.method != MatchMethod::None || ours.num_vertices() != ref.num_vertices()) return c;
+    const std::string nearest_failed = c.note;
+    const size_t n = ref.positions.size();
+
+    // Closest pairs first.
+    PointCloud cloud{ours.positions};
+    PointTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+    tree.buildIndex();
+    std::vector<unsigned> nearest(n);
+    std::vector<double> d2(n);
+    for (size_t i = 0; i < n; ++i) tree.knnSearch(ref.positions[i].data(), 1, &nearest[i], &d2[i]);
+    std::vector<int> order(n);
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return d2[a] < d2[b]; });
+    // Only mutual nearest neighbours: a reference vertex that moved far may sit nearest to
+    // one of ours whose own twin moved too, and must not take it.
+    PointCloud ref_cloud{ref.positions};
+    PointTree ref_tree(3, ref_cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+    ref_tree.buildIndex();
+    const auto mutual = [&](int i) {
+        unsigned back = 0;
+        double back_d2 = 0;
+        ref_tree.knnSearch(ours.positions[nearest[i]].data(), 1, &back, &back_d2);
+        return back_d2 >= d2[i];  // i is (one of) the nearest to its nearest
+    };
+    std::vector<int> map(n, -1), taken_by(n, -1);
+    for (int i : order)
+        if (taken_by[nearest[i]] < 0 && mutual(i)) {
+            map[i] = static_cast<int>(nearest[i]);
+            taken_by[nearest[i]] = i;
+        }
+
+    // Our faces by their directed edges, to find the face a reference face maps to.
+    std::unordered_map<std::uint64_t, int> face_of_edge;
+    const auto key = [](int a, int b) { return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b); };
+    for (int f = 0; f < ours.num_faces(); ++f)
+        for (int k = 0, m = ours.face_size(f); k < m; ++k) face_of_edge[key(ours.face(f)[k], ours.face(f)[(k + 1) % m])] = f;
+    for (bool placed = true; placed;) {
+        placed = false;
+        for (int f = 0; f < ref.num_faces(); ++f) {
+            const int m = ref.face_size(f);
+            const int* rf = ref.face(f);
+            int unmatched = 0, edge = -1;  // edge: a corner k with k and k+1 matched
+            for (int k = 0; k < m; ++k) {
+                if (map[rf[k]] < 0) ++unmatched;
+                else if (edge < 0 && map[rf[(k + 1) % m]] >= 0) edge = k;
+            }
+            if (unmatched == 0 || edge < 0) continue;
+            // The matched edge names our face; its corners at the unmatched places must be free.
+            const int a = map[rf[edge]], b = map[rf[(edge + 1) % m]];
+            const auto it = face_of_edge.find(key(a, b));
+            if (it == face_of_edge.end() || ours.face_size(it->second) != m) continue;
+            const int* of = ours.face(it->second);
+            int at = 0;
+            while (of[at] != a) ++at;
+            for (int k = 0; k < m; ++k) {
+                if (map[rf[k]] >= 0) continue;
+                const int candidate = of[(at + k - edge + m) % m];
+                if (taken_by[candidate] >= 0) continue;
+                map[rf[k]] = candidate;
+                taken_by[candidate] = rf[k];
+                placed = true;
+            }
+        }
+    }
+    std::vector<int> left_ref, left_ours;
+    for (size_t i = 0; i < n; ++i) {
+        if (map[i] < 0) left_ref.push_back(static_cast<int>(i));
+        if (taken_by[i] < 0) left_ours.push_back(static_cast<int>(i));
+    }
+    if (left_ref.size() == 1 && left_ours.size() == 1) map[left_ref[0]] = left_ours[0];
+    else if (!left_ref.empty()) {
+        c.note = nearest_failed + "; " + std::to_string(left_ref.size()) + " vertices left unplaced by the faces";
+        return c;
+    }
+    c.method = MatchMethod::NearestAndFaces;
+    c.ref_to_ours = std::move(map);
+    c.note = nearest_failed;
     return c;
 }
 

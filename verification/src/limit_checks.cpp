@@ -33,7 +33,7 @@ json catmull_clark_study() {
     for (CatmullClarkBoundary rule : {CatmullClarkBoundary::EdgeOnly, CatmullClarkBoundary::EdgeAndCorner}) {
         for (const auto& b : meshes) {
             SchemeRequest req;
-            req.catmull_clark = {rule};
+            req.rule.catmull_clark = {rule};
             req.levels = 2;
             req.timeout_seconds = 60;
             const SchemeComparison c = compare_scheme(b.mesh, "bundled:" + b.name, req);

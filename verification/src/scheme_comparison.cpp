@@ -1,5 +1,7 @@
 #include "crossdiv/verification/scheme_comparison.h"
 
+#include "crossdiv/verification/mesh_topology.h"
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -7,7 +9,11 @@
 
 #include "crossdiv/error.h"
 #include "sci.h"
+#include "crossdiv/mesh/tri_mesh.h"
+#include "crossdiv/subdiv/butterfly.h"
 #include "crossdiv/subdiv/catmull_clark.h"
+#include "crossdiv/subdiv/doo_sabin.h"
+#include "crossdiv/subdiv/sqrt3.h"
 #ifdef CROSSDIV_HAS_OPENSUBDIV
 #include "crossdiv/adapters/opensubdiv.h"
 #endif
@@ -23,40 +29,113 @@ namespace {
 
 using detail::sci;
 
-/// The rule one reference applies, as core options, and how to run it.
+/// The rule one reference applies, and how to run it.
 struct SchemeReference {
     std::string name, version;
     /// The rule the reference applies when asked for `requested` (its closest one).
-    std::function<CatmullClarkOptions(const CatmullClarkOptions& requested)> rule;
-    std::function<adapters::LevelTrace(const PolyMesh&, const CatmullClarkOptions&, int levels)> run;
+    std::function<SchemeRule(const SchemeRule& requested)> rule;
+    std::function<adapters::LevelTrace(const PolyMesh&, const SchemeRule&, int levels)> run;
+    /// The largest valence its weight table holds (0: any), with where that is written.
+    int max_valence = 0;
+    std::string valence_table;
 };
+
+/// A rule that is `requested` with one member replaced.
+template <class Member, class Value>
+std::function<SchemeRule(const SchemeRule&)> with(Member member, Value value) {
+    return [member, value](const SchemeRule& requested) {
+        SchemeRule r = requested;
+        r.*member = value;
+        return r;
+    };
+}
+const auto as_requested = [](const SchemeRule& requested) { return requested; };
+
+#if defined(CROSSDIV_HAS_OPENMESH) || defined(CROSSDIV_HAS_CGAL)
+/// The triangle schemes' adapters take a TriMesh; a polygon is the reference's refusal.
+TriMesh triangles_for(const PolyMesh& m, const char* scheme) {
+    try {
+        return to_tri_mesh(m, scheme);
+    } catch (const InputError& e) {
+        throw adapters::Rejected(e.what());
+    }
+}
+#endif
 
 std::vector<SchemeReference> references_of(Scheme scheme) {
     std::vector<SchemeReference> r;
-    if (scheme != Scheme::CatmullClark) return r;
+    [[maybe_unused]] const auto sqrt3_rule = [](Sqrt3Parity p) { return with(&SchemeRule::sqrt3, Sqrt3Options{p}); };
+    switch (scheme) {
+        case Scheme::CatmullClark:
 #ifdef CROSSDIV_HAS_OPENSUBDIV
-    r.push_back({"opensubdiv", adapters::opensubdiv::version(),
-                 [](const CatmullClarkOptions& o) {
-                     return adapters::opensubdiv::supports(o) ? o : CatmullClarkOptions{CatmullClarkBoundary::EdgeOnly};
-                 },
-                 [](const PolyMesh& m, const CatmullClarkOptions& o, int levels) {
-                     return adapters::opensubdiv::catmull_clark(m, o, levels);
-                 }});
+            r.push_back({"opensubdiv", adapters::opensubdiv::version(),
+                         [](const SchemeRule& o) {
+                             SchemeRule r = o;
+                             if (!adapters::opensubdiv::supports(o.catmull_clark)) r.catmull_clark = {CatmullClarkBoundary::EdgeOnly};
+                             return r;
+                         },
+                         [](const PolyMesh& m, const SchemeRule& o, int levels) {
+                             return adapters::opensubdiv::catmull_clark(m, o.catmull_clark, levels);
+                         }});
 #endif
 #ifdef CROSSDIV_HAS_OPENMESH
-    r.push_back({"openmesh", adapters::openmesh::version(),
-                 [](const CatmullClarkOptions&) { return CatmullClarkOptions{CatmullClarkBoundary::MidpointAverage}; },
-                 [](const PolyMesh& m, const CatmullClarkOptions&, int levels) {
-                     return adapters::openmesh::catmull_clark(m, levels);
-                 }});
+            r.push_back({"openmesh", adapters::openmesh::version(),
+                         with(&SchemeRule::catmull_clark, CatmullClarkOptions{CatmullClarkBoundary::MidpointAverage}),
+                         [](const PolyMesh& m, const SchemeRule&, int levels) { return adapters::openmesh::catmull_clark(m, levels); }});
 #endif
 #ifdef CROSSDIV_HAS_CGAL
-    r.push_back({"cgal", adapters::cgal::version(),
-                 [](const CatmullClarkOptions&) { return CatmullClarkOptions{CatmullClarkBoundary::EdgeOnly}; },
-                 [](const PolyMesh& m, const CatmullClarkOptions&, int levels) {
-                     return adapters::cgal::catmull_clark(m, levels);
-                 }});
+            r.push_back({"cgal", adapters::cgal::version(),
+                         with(&SchemeRule::catmull_clark, CatmullClarkOptions{CatmullClarkBoundary::EdgeOnly}),
+                         [](const PolyMesh& m, const SchemeRule&, int levels) { return adapters::cgal::catmull_clark(m, levels); }});
 #endif
+            break;
+        case Scheme::DooSabin:
+#ifdef CROSSDIV_HAS_CGAL
+            r.push_back({"cgal", adapters::cgal::version(),
+                         with(&SchemeRule::doo_sabin, DooSabinOptions{DooSabinBoundary::DropBorderFaces}),
+                         [](const PolyMesh& m, const SchemeRule&, int levels) { return adapters::cgal::doo_sabin(m, levels); }});
+#endif
+            break;
+        case Scheme::Sqrt3:
+            // Both libraries count the boundary generations within one call: called once per
+            // level (as every other trace is made) they never refine the boundary; asked for
+            // all levels in one call they follow Kobbelt. Both ways are references.
+#ifdef CROSSDIV_HAS_OPENMESH
+            // Sqrt3T fills its weights for valences below 50 (init_weights(50)) and indexes the
+            // table with the valence unchecked.
+            r.push_back({"openmesh", adapters::openmesh::version(), sqrt3_rule(Sqrt3Parity::RestartEachLevel),
+                         [](const PolyMesh& m, const SchemeRule&, int levels) {
+                             return adapters::openmesh::sqrt3(triangles_for(m, "sqrt3"), levels, false);
+                         },
+                         49, "Sqrt3T::init_weights(50)"});
+            r.push_back({"openmesh-one-call", adapters::openmesh::version(), sqrt3_rule(Sqrt3Parity::CountFromInput),
+                         [](const PolyMesh& m, const SchemeRule&, int levels) {
+                             return adapters::openmesh::sqrt3(triangles_for(m, "sqrt3"), levels, true);
+                         },
+                         49, "Sqrt3T::init_weights(50)"});
+#endif
+#ifdef CROSSDIV_HAS_CGAL
+            r.push_back({"cgal", adapters::cgal::version(), sqrt3_rule(Sqrt3Parity::RestartEachLevel),
+                         [](const PolyMesh& m, const SchemeRule&, int levels) {
+                             return adapters::cgal::sqrt3(triangles_for(m, "sqrt3"), levels, false);
+                         }});
+            r.push_back({"cgal-one-call", adapters::cgal::version(), sqrt3_rule(Sqrt3Parity::CountFromInput),
+                         [](const PolyMesh& m, const SchemeRule&, int levels) {
+                             return adapters::cgal::sqrt3(triangles_for(m, "sqrt3"), levels, true);
+                         }});
+#endif
+            break;
+        case Scheme::ModifiedButterfly:
+#ifdef CROSSDIV_HAS_OPENMESH
+            r.push_back({"openmesh", adapters::openmesh::version(), as_requested,
+                         [](const PolyMesh& m, const SchemeRule&, int levels) {
+                             return adapters::openmesh::modified_butterfly(triangles_for(m, "modified-butterfly"), levels);
+                         }});
+#endif
+            break;
+        case Scheme::Butterfly:  // no library has the classic scheme: butterfly_properties() checks it
+            break;
+    }
     return r;
 }
 
@@ -76,13 +155,70 @@ double ulp_of_largest_coordinate(const PolyMesh& m) {
     return std::nextafter(largest, INFINITY) - largest;
 }
 
-/// The two rules differ only in the corner rule (EdgeOnly vs EdgeAndCorner), or elsewhere on
-/// the boundary.
-const char* rule_class(const CatmullClarkOptions& a, const CatmullClarkOptions& b) {
-    const auto corner_only = [](CatmullClarkBoundary x) {
-        return x == CatmullClarkBoundary::EdgeOnly || x == CatmullClarkBoundary::EdgeAndCorner;
-    };
-    return corner_only(a.boundary) && corner_only(b.boundary) ? "corner-rule" : "boundary-rule";
+/// The class of a divergence that the reference's rule explains.
+const char* rule_class(Scheme scheme, const SchemeRule& ref, const SchemeRule& requested) {
+    switch (scheme) {
+        case Scheme::CatmullClark: {
+            const auto corner_only = [](CatmullClarkBoundary x) {
+                return x == CatmullClarkBoundary::EdgeOnly || x == CatmullClarkBoundary::EdgeAndCorner;
+            };
+            return corner_only(ref.catmull_clark.boundary) && corner_only(requested.catmull_clark.boundary) ? "corner-rule"
+                                                                                                            : "boundary-rule";
+        }
+        case Scheme::DooSabin:
+            return ref.doo_sabin.boundary == DooSabinBoundary::DropBorderFaces ? "border-faces-dropped" : "boundary-rule";
+        case Scheme::Sqrt3: return "parity";
+        case Scheme::Butterfly:
+        case Scheme::ModifiedButterfly: break;
+    }
+    return "boundary-rule";
+}
+
+/// What the reference's rule does, for the explanation.
+std::string rule_effect(Scheme scheme, const std::string& ref_name, const std::string& rule, int levels) {
+    switch (scheme) {
+        case Scheme::DooSabin: return ref_name + " drops the faces of border edges and vertices";
+        case Scheme::Sqrt3:
+            return ref_name + (rule == "restart-each-level"
+                                   ? " counts generations per call, and was called once per level, so it never refined the boundary"
+                                   : " counts generations from the input (one call of " + std::to_string(levels) + " levels)");
+        default: return ref_name + " applies the " + rule + " boundary rule";
+    }
+}
+
+/// When the reference's weight table is shorter than the input's largest valence: whether at
+/// level 1 exactly the vertices beyond the table differ (the others agree within `tolerance`);
+/// fills `explanation` with the figures. Later levels inherit the difference from them.
+bool beyond_valence_table(const SchemeReference& ref, Scheme scheme, const SchemeRule& ref_rule, const PolyMesh& input,
+                          const adapters::LevelTrace& trace, double tolerance, std::string& explanation) {
+    if (ref.max_valence <= 0 || trace.size() < 2) return false;
+    const MeshTopology topo = mesh_topology(input);
+    int beyond = 0, largest = 0;
+    for (int v = 0; v < input.num_vertices(); ++v) {
+        beyond += topo.valence[v] > ref.max_valence;
+        largest = std::max(largest, topo.valence[v]);
+    }
+    if (beyond == 0) return false;
+    const PolyMesh ours = subdivide(scheme, ref_rule, input, 1);
+    const Correspondence c = match_nearest_and_faces(ours, trace[1]);
+    if (c.method == MatchMethod::None) return false;
+    const std::vector<double> d = vertex_distances(ours, trace[1], c.ref_to_ours);
+    const double diagonal = bounding_box_diagonal(ours.positions);
+    int differing = 0;
+    double worst = 0;
+    for (size_t i = 0; i < d.size(); ++i) {
+        if (!(d[i] > tolerance * diagonal)) continue;
+        const int v = c.ref_to_ours[i];  // core keeps old vertices first, in input order
+        if (v >= input.num_vertices() || topo.valence[v] <= ref.max_valence) return false;
+        ++differing;
+        worst = std::max(worst, d[i] / diagonal);
+    }
+    if (differing != beyond) return false;
+    explanation = ref.name + "'s weight table ends at valence " + std::to_string(ref.max_valence) + " (" +
+                  ref.valence_table + "); at level 1 exactly the " + std::to_string(beyond) +
+                  " vertices of larger valence (up to " + std::to_string(largest) + ") differ, by up to " + sci(worst) +
+                  " of the diagonal, and every other vertex agrees";
+    return true;
 }
 
 }  // namespace
@@ -90,13 +226,55 @@ const char* rule_class(const CatmullClarkOptions& a, const CatmullClarkOptions& 
 const char* to_string(Scheme scheme) {
     switch (scheme) {
         case Scheme::CatmullClark: return "catmull-clark";
+        case Scheme::DooSabin: return "doo-sabin";
+        case Scheme::Sqrt3: return "sqrt3";
+        case Scheme::Butterfly: return "butterfly";
+        case Scheme::ModifiedButterfly: return "modified-butterfly";
     }
     return "?";
 }
 
+std::vector<Scheme> all_schemes() {
+    return {Scheme::CatmullClark, Scheme::DooSabin, Scheme::Sqrt3, Scheme::Butterfly, Scheme::ModifiedButterfly};
+}
+
 Scheme scheme_from_string(const std::string& name) {
-    if (name == "catmull-clark") return Scheme::CatmullClark;
-    throw InputError("unknown scheme '" + name + "' (known: loop, catmull-clark)");
+    std::string known = "loop";
+    for (Scheme s : all_schemes()) {
+        if (name == to_string(s)) return s;
+        known += std::string(", ") + to_string(s);
+    }
+    throw InputError("unknown scheme '" + name + "' (known: " + known + ")");
+}
+
+std::string rule_name(Scheme scheme, const SchemeRule& rule) {
+    switch (scheme) {
+        case Scheme::CatmullClark: return std::string(to_string(rule.catmull_clark.boundary));
+        case Scheme::DooSabin: return std::string(to_string(rule.doo_sabin.boundary));
+        case Scheme::Sqrt3: return std::string(to_string(rule.sqrt3.parity));
+        case Scheme::Butterfly:
+        case Scheme::ModifiedButterfly: break;
+    }
+    return "-";
+}
+
+bool same_rule(Scheme scheme, const SchemeRule& a, const SchemeRule& b) { return rule_name(scheme, a) == rule_name(scheme, b); }
+
+PolyMesh subdivide(Scheme scheme, const SchemeRule& rule, const PolyMesh& mesh, int levels) {
+    switch (scheme) {
+        case Scheme::CatmullClark: return catmull_clark_subdivide(mesh, rule.catmull_clark, levels);
+        case Scheme::DooSabin: return doo_sabin_subdivide(mesh, rule.doo_sabin, levels);
+        case Scheme::Sqrt3: return sqrt3_subdivide(mesh, rule.sqrt3, levels);
+        case Scheme::Butterfly: return butterfly_subdivide(mesh, ButterflyVariant::Classic, levels);
+        case Scheme::ModifiedButterfly: return butterfly_subdivide(mesh, ButterflyVariant::Modified, levels);
+    }
+    throw InputError("unknown scheme");
+}
+
+std::vector<std::string> scheme_reference_names(Scheme scheme) {
+    std::vector<std::string> names;
+    for (const SchemeReference& r : references_of(scheme)) names.push_back(r.name);
+    return names;
 }
 
 bool SchemeComparison::all_agree() const {
@@ -110,7 +288,7 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
     SchemeComparison out;
     out.input = name;
     out.scheme = req.scheme;
-    out.rule = std::string(to_string(req.catmull_clark.boundary));
+    out.rule = rule_name(req.scheme, req.rule);
     out.levels = req.levels;
     out.input_vertices = input.num_vertices();
     out.input_faces = input.num_faces();
@@ -126,7 +304,7 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
     PolyMesh ours;
     const auto t0 = std::chrono::steady_clock::now();
     try {
-        ours = catmull_clark_subdivide(input, req.catmull_clark, req.levels);
+        ours = subdivide(req.scheme, req.rule, input, req.levels);
     } catch (const InputError& e) {
         out.core_error = e.what();
     }
@@ -136,64 +314,86 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
         SchemeReferenceRun run;
         run.reference = ref.name;
         run.version = ref.version;
-        const CatmullClarkOptions ref_rule = ref.rule(req.catmull_clark);
-        run.rule = std::string(to_string(ref_rule.boundary));
-        IsolatedTrace it = run_isolated([&] { return ref.run(input, req.catmull_clark, req.levels); },
-                                        req.timeout_seconds, req.isolate);
+        const SchemeRule ref_rule = ref.rule(req.rule);
+        const bool rules_differ = !same_rule(req.scheme, ref_rule, req.rule);
+        run.rule = rule_name(req.scheme, ref_rule);
+        IsolatedTrace it =
+            run_isolated([&] { return ref.run(input, req.rule, req.levels); }, req.timeout_seconds, req.isolate);
         run.outcome = it.outcome;
         if (run.outcome.status == RunStatus::Rejected) {
             run.verdict = "ref-rejected";
             run.explanation = run.outcome.message;
-        } else if (run.outcome.status != RunStatus::Ok) {
+            out.runs.push_back(std::move(run));
+            continue;
+        }
+        if (run.outcome.status != RunStatus::Ok) {
             run.verdict = "ref-crashed";
             run.explanation = run.outcome.summary();
-        } else if (!out.core_error.empty()) {
+            out.runs.push_back(std::move(run));
+            continue;
+        }
+        const PolyMesh& theirs = it.trace->back();
+        if (!out.core_error.empty()) {
             run.verdict = "ours-rejected";
             run.explanation = "core refused the input; " + ref.name + " made a mesh of " +
-                              std::to_string(it.trace->back().num_vertices()) + " vertices and " +
-                              std::to_string(it.trace->back().num_faces()) + " faces";
+                              std::to_string(theirs.num_vertices()) + " vertices and " +
+                              std::to_string(theirs.num_faces()) + " faces";
+            out.runs.push_back(std::move(run));
+            continue;
+        }
+        const PolyMesh same_rule_mesh = rules_differ ? subdivide(req.scheme, ref_rule, input, req.levels) : ours;
+        // Match against core with the reference's rule: positions then coincide up to
+        // rounding, so nearest-neighbour matching is sound even where the requested rule
+        // moves vertices (or makes others).
+        run.correspondence = match_nearest_and_faces(same_rule_mesh, theirs);
+        if (run.correspondence.method == MatchMethod::None) {
+            run.verdict = "diverge";
+            run.divergence_class = "topology";
+            run.explanation = "no vertex bijection with core's " + run.rule + " refinement (" + run.correspondence.note +
+                              "); " + std::to_string(theirs.num_faces()) + " faces against core's " +
+                              std::to_string(ours.num_faces());
+            out.runs.push_back(std::move(run));
+            continue;
+        }
+        // Under the requested rule the same map holds only where the vertex sets coincide;
+        // otherwise compare_meshes reports the counts and no distances.
+        const std::vector<int> no_map;
+        run.comparison = compare_meshes(ours, theirs, rules_differ && ours.num_vertices() != same_rule_mesh.num_vertices()
+                                                          ? no_map
+                                                          : run.correspondence.ref_to_ours);
+        const MeshComparison with_rule = compare_meshes(same_rule_mesh, theirs, run.correspondence.ref_to_ours);
+        run.max_rel_with_reference_rule = with_rule.max_rel;
+        const bool rule_explains = rules_differ && with_rule.topology_equal() && with_rule.max_rel <= req.tolerance;
+        if (run.comparison.topology_equal() && run.comparison.max_rel <= req.tolerance) {
+            run.verdict = "agree";
+            run.explanation = "max relative error " + sci(run.comparison.max_rel) + " <= " + sci(req.tolerance);
         } else {
-            const PolyMesh& theirs = it.trace->back();
-            const PolyMesh same_rule =
-                ref_rule == req.catmull_clark ? ours : catmull_clark_subdivide(input, ref_rule, req.levels);
-            // Match against core with the reference's rule (the same vertex order as ours):
-            // positions then coincide up to rounding, so nearest-neighbour matching is sound
-            // even where the requested rule moves vertices.
-            run.correspondence = match_nearest(same_rule.positions, theirs.positions);
-            if (run.correspondence.method == MatchMethod::None) {
-                run.verdict = "diverge";
+            run.verdict = "diverge";
+            const double ulps = run.comparison.max_abs / ulp_of_largest_coordinate(ours);
+            const std::string faces = std::to_string(theirs.num_faces()) + " faces and " +
+                                      std::to_string(theirs.num_vertices()) + " vertices against core's " +
+                                      std::to_string(ours.num_faces()) + " and " + std::to_string(ours.num_vertices());
+            if (run.comparison.topology_equal() && ulps <= tolerances::kRoundingUlps) {
+                run.divergence_class = "rounding";
+                run.explanation = "differs by " + sci(ulps) + " ulps of the largest coordinate";
+            } else if (rule_explains) {
+                run.divergence_class = rule_class(req.scheme, ref_rule, req.rule);
+                run.explanation = rule_effect(req.scheme, ref.name, run.rule, req.levels) + ": core with " + run.rule +
+                                  " agrees to " + sci(with_rule.max_rel) + "; core's " + out.rule +
+                                  (run.comparison.topology_equal()
+                                       ? " differs by " + sci(run.comparison.max_rel) + " of the diagonal"
+                                       : " makes different faces (" + faces + ")");
+            } else if (std::string why; beyond_valence_table(ref, req.scheme, ref_rule, input, *it.trace, req.tolerance, why)) {
+                run.divergence_class = "valence-limit";
+                run.explanation = why;
+            } else if (!run.comparison.topology_equal()) {
                 run.divergence_class = "topology";
-                run.explanation = "no vertex bijection with core's " + run.rule + " refinement (" +
-                                  run.correspondence.note + "); " + std::to_string(theirs.num_faces()) +
-                                  " faces against core's " + std::to_string(ours.num_faces());
+                run.explanation = faces + "; " + std::to_string(run.comparison.faces_only_in_ref) + " faces only in " +
+                                  ref.name + ", " + std::to_string(run.comparison.faces_only_in_ours) + " only in core";
             } else {
-                run.comparison = compare_meshes(ours, theirs, run.correspondence.ref_to_ours);
-                const MeshComparison with_rule = compare_meshes(same_rule, theirs, run.correspondence.ref_to_ours);
-                run.max_rel_with_reference_rule = with_rule.max_rel;
-                const double ulps = run.comparison.max_abs / ulp_of_largest_coordinate(ours);
-                if (run.comparison.topology_equal() && run.comparison.max_rel <= req.tolerance) {
-                    run.verdict = "agree";
-                    run.explanation = "max relative error " + sci(run.comparison.max_rel) + " <= " + sci(req.tolerance);
-                } else {
-                    run.verdict = "diverge";
-                    if (!run.comparison.topology_equal()) {
-                        run.divergence_class = "topology";
-                        run.explanation = std::to_string(run.comparison.faces_only_in_ref) + " faces only in " + ref.name +
-                                          ", " + std::to_string(run.comparison.faces_only_in_ours) + " only in core";
-                    } else if (ulps <= tolerances::kRoundingUlps) {
-                        run.divergence_class = "rounding";
-                        run.explanation = "differs by " + sci(ulps) + " ulps of the largest coordinate";
-                    } else if (!(ref_rule == req.catmull_clark) && with_rule.max_rel <= req.tolerance) {
-                        run.divergence_class = rule_class(ref_rule, req.catmull_clark);
-                        run.explanation = ref.name + " applies the " + run.rule + " boundary rule: core with it agrees to " +
-                                          sci(with_rule.max_rel) + ", core's " + out.rule + " differs by " +
-                                          sci(run.comparison.max_rel) + " of the diagonal";
-                    } else {
-                        run.divergence_class = "unexplained";
-                        run.explanation = "differs by " + sci(run.comparison.max_rel) + "; with " + ref.name + "'s " +
-                                          run.rule + " rule still " + sci(with_rule.max_rel);
-                    }
-                }
+                run.divergence_class = "unexplained";
+                run.explanation = "differs by " + sci(run.comparison.max_rel) + "; with " + ref.name + "'s " + run.rule +
+                                  " rule still " + sci(with_rule.max_rel);
             }
         }
         out.runs.push_back(std::move(run));
@@ -204,8 +404,8 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
 adapters::LevelTrace run_scheme_reference(const std::string& name, const SchemeRequest& req, const PolyMesh& mesh,
                                           std::string& rule) {
     const SchemeReference ref = find_reference(req.scheme, name);
-    rule = std::string(to_string(ref.rule(req.catmull_clark).boundary));
-    return ref.run(mesh, req.catmull_clark, req.levels);
+    rule = rule_name(req.scheme, ref.rule(req.rule));
+    return ref.run(mesh, req.rule, req.levels);
 }
 
 nlohmann::json to_json(const SchemeComparison& c) {

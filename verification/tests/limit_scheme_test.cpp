@@ -28,7 +28,7 @@ bool open_mesh(const PolyMesh& m) {
 TEST(CatmullClarkComparison, EveryReferenceAgreesOrDivergesByItsDocumentedRule) {
     for (const auto& b : catalog()) {
         SchemeRequest req;
-        req.catmull_clark = {CatmullClarkBoundary::EdgeOnly};
+        req.rule.catmull_clark = {CatmullClarkBoundary::EdgeOnly};
         req.levels = 2;
         const SchemeComparison c = compare_scheme(b.mesh, b.name, req);
         ASSERT_TRUE(c.core_error.empty()) << b.name << ": " << c.core_error;
@@ -50,7 +50,7 @@ TEST(CatmullClarkComparison, EveryReferenceAgreesOrDivergesByItsDocumentedRule) 
 
 TEST(CatmullClarkComparison, CgalLacksTheCornerRule) {
     SchemeRequest req;
-    req.catmull_clark = {CatmullClarkBoundary::EdgeAndCorner};
+    req.rule.catmull_clark = {CatmullClarkBoundary::EdgeAndCorner};
     req.levels = 2;
     req.references = {"cgal", "opensubdiv"};
     const SchemeComparison c = compare_scheme(datasets::bundled_mesh("quad-grid"), "quad-grid", req);

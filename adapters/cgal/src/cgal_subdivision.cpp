@@ -16,14 +16,18 @@ using detail::Mesh;
 
 PolyMesh snapshot(const Mesh& m) {
     PolyMesh out;
-    // Surface_mesh indices are dense here (nothing is removed), so idx() is the vertex number.
-    out.positions.resize(m.number_of_vertices());
+    // Vertices numbered in iteration order, which skips removed ones: Doo-Sabin's DQQ step
+    // removes the old vertices and some faces, and leaves their slots as garbage, so idx()
+    // is not a vertex number there (it is for the schemes that remove nothing).
+    std::vector<int> number(m.num_vertices(), -1);
+    out.positions.reserve(m.number_of_vertices());
     for (Mesh::Vertex_index v : m.vertices()) {
         const auto& p = m.point(v);
-        out.positions[v.idx()] = Vec3(p.x(), p.y(), p.z());
+        number[v.idx()] = out.num_vertices();
+        out.positions.emplace_back(p.x(), p.y(), p.z());
     }
     for (Mesh::Face_index f : m.faces()) {
-        for (Mesh::Vertex_index v : CGAL::vertices_around_face(m.halfedge(f), m)) out.face_vertices.push_back(static_cast<int>(v.idx()));
+        for (Mesh::Vertex_index v : CGAL::vertices_around_face(m.halfedge(f), m)) out.face_vertices.push_back(number[v.idx()]);
         out.face_start.push_back(static_cast<int>(out.face_vertices.size()));
     }
     return out;

@@ -16,10 +16,13 @@ enum class MatchMethod {
     Order,     ///< the library numbered every vertex as we do
     Topology,  ///< recovered level by level from connectivity alone
     Nearest,   ///< nearest neighbour of positions (k-d tree), a bijection
+    /// Nearest neighbours, closest pairs first, and the vertices left over (a reference vertex
+    /// far from where it should be) placed by the faces around them.
+    NearestAndFaces,
     None,      ///< no bijection found
 };
 
-/// "order", "topology", "nearest", "none".
+/// "order", "topology", "nearest", "nearest+faces", "none".
 const char* to_string(MatchMethod method);
 
 struct Correspondence {
@@ -46,5 +49,13 @@ Correspondence match_loop_refinement(const std::vector<std::vector<VertexOrigin>
 
 /// Nearest-neighbour matching of `ref` onto `ours` (k-d tree); method None unless bijective.
 Correspondence match_nearest(const std::vector<Vec3>& ours, const std::vector<Vec3>& ref);
+
+/// match_nearest, and when two reference vertices want the same one of ours (a reference
+/// vertex moved far, onto another's place): mutual nearest pairs are taken closest first, and each vertex
+/// left over is placed through a reference face with two matched neighbouring corners: our
+/// face with that edge has it at the same place (repeated while that places more), then a single leftover pair is
+/// paired. So a divergence confined to a few vertices is measured, not lost to matching.
+/// Method None unless this gives a bijection.
+Correspondence match_nearest_and_faces(const PolyMesh& ours, const PolyMesh& ref);
 
 }  // namespace crossdiv::verification
