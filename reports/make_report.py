@@ -281,7 +281,7 @@ def surface_section(surface_cases, bench, figdir):
 
 
 def limits_section(limit_cases, figdir):
-    """Schemes and limit behaviour: Catmull-Clark verdicts, limit agreement, eigen and convergence tables."""
+    """Schemes and limit behaviour: scheme verdicts, Butterfly properties, limit agreement, eigen and convergence tables."""
     if not limit_cases:
         return [], []
     md, body = ["", "## Schemes and limit behaviour", ""], ["<h2>Schemes and limit behaviour</h2>"]
@@ -289,15 +289,31 @@ def limits_section(limit_cases, figdir):
     for c in limit_cases:
         for k, v in c.get("tables", {}).items():
             tables.setdefault(k, []).extend(v)
-    if tables.get("catmull_clark"):
+    comparisons = tables.get("catmull_clark", []) + tables.get("schemes", [])
+    if comparisons:
         verdicts = Counter()
-        for comp in tables["catmull_clark"]:
+        for comp in comparisons:
             for r in comp["runs"]:
-                verdicts[(comp["rule"], r["reference"], r["rule"], r["verdict"], r.get("divergence_class") or "")] += 1
-        header = ["requested rule", "reference", "its rule", "verdict", "class", "inputs"]
+                verdicts[(comp["scheme"], comp["levels"], comp["rule"], r["reference"], r["rule"], r["verdict"],
+                          r.get("divergence_class") or "")] += 1
+        header = ["scheme", "levels", "requested rule", "reference", "its rule", "verdict", "class", "inputs"]
         rows = [k + (n,) for k, n in sorted(verdicts.items())]
-        md += ["Catmull-Clark, 2 levels, every bundled and polygon mesh:", "",
+        md += ["Every polygon scheme against every reference that has it, on the bundled and polygon meshes "
+               "(a divergence's class is measured: core re-run with the reference's rule agrees).", "",
                "| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+        md += ["| " + " | ".join(str(v) for v in r) + " |" for r in rows]
+        body.append(table_html(header, rows))
+    if tables.get("butterfly_properties"):
+        rows = []
+        for scheme in sorted({r["scheme"] for r in tables["butterfly_properties"]}):
+            sel = [r for r in tables["butterfly_properties"] if r["scheme"] == scheme]
+            rows.append((scheme, len(sel), fmt(max(r["max_interpolation_move"] for r in sel)),
+                         fmt(max(r["max_plane_residual"] for r in sel)),
+                         f'{sum(r["regular_edges_published"] for r in sel)} / {sum(r["regular_edges"] for r in sel)}'))
+        header = ["scheme", "meshes", "max move of an old vertex", "max plane residual (rel)",
+                  "regular edges with the published stencil"]
+        md += ["", "Butterfly properties, 2 levels on the bundled triangle meshes (the classic scheme has no "
+               "reference library):", "", "| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
         md += ["| " + " | ".join(str(v) for v in r) + " |" for r in rows]
         body.append(table_html(header, rows))
     if tables.get("limit"):

@@ -5,6 +5,7 @@
 #include "crossdiv/error.h"
 #include "crossdiv/mesh/poly_connectivity.h"
 #include "crossdiv/subdiv/catmull_clark.h"
+#include "test_meshes.h"
 
 namespace crossdiv {
 namespace {
@@ -13,26 +14,8 @@ constexpr CatmullClarkOptions kEdgeOnly{CatmullClarkBoundary::EdgeOnly};
 constexpr CatmullClarkOptions kEdgeAndCorner{CatmullClarkBoundary::EdgeAndCorner};
 constexpr CatmullClarkOptions kMidpointAverage{CatmullClarkBoundary::MidpointAverage};
 
-// The cube [-1, 1]^3 as six outward quads; every vertex has valence 3.
-PolyMesh cube() {
-    PolyMesh m;
-    for (int i = 0; i < 8; ++i) m.positions.emplace_back(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1);
-    m.add_face({0, 2, 3, 1});  // z = -1
-    m.add_face({4, 5, 7, 6});  // z = +1
-    m.add_face({0, 1, 5, 4});  // y = -1
-    m.add_face({2, 6, 7, 3});  // y = +1
-    m.add_face({0, 4, 6, 2});  // x = -1
-    m.add_face({1, 3, 7, 5});  // x = +1
-    return m;
-}
-
-// The unit square in z = 0: four boundary corners.
-PolyMesh square() {
-    PolyMesh m;
-    m.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
-    m.add_face({0, 1, 2, 3});
-    return m;
-}
+using test::cube;
+using test::square;
 
 void expect_near(const Vec3& a, const Vec3& b) {
     EXPECT_NEAR((a - b).norm(), 0.0, 1e-15) << a.transpose() << " vs " << b.transpose();

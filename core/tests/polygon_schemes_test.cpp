@@ -9,6 +9,7 @@
 #include "crossdiv/subdiv/butterfly.h"
 #include "crossdiv/subdiv/doo_sabin.h"
 #include "crossdiv/subdiv/sqrt3.h"
+#include "test_meshes.h"
 
 namespace crossdiv {
 namespace {
@@ -40,25 +41,7 @@ PolyMesh triangle() {
     return m;
 }
 
-PolyMesh unit_square() {
-    PolyMesh m;
-    m.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
-    m.add_face({0, 1, 2, 3});
-    return m;
-}
-
-// The cube [-1, 1]^3 as six outward quads.
-PolyMesh cube() {
-    PolyMesh m;
-    for (int i = 0; i < 8; ++i) m.positions.emplace_back(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1);
-    m.add_face({0, 2, 3, 1});
-    m.add_face({4, 5, 7, 6});
-    m.add_face({0, 1, 5, 4});
-    m.add_face({2, 6, 7, 3});
-    m.add_face({0, 4, 6, 2});
-    m.add_face({1, 3, 7, 5});
-    return m;
-}
+using test::cube;
 
 // A regular (valence 6) triangulated torus of n x n quads split by one diagonal.
 PolyMesh regular_torus(int n) {
@@ -128,7 +111,7 @@ TEST(Sqrt3, BoundaryWaitsOneStepThenIsTrisected) {
 
 TEST(Sqrt3, RefusesAQuadNamingTheFace) {
     try {
-        sqrt3_subdivide(unit_square(), {Sqrt3Parity::CountFromInput}, 0);
+        sqrt3_subdivide(test::square(), {Sqrt3Parity::CountFromInput}, 0);
         FAIL() << "a quad was accepted";
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("face 0: has 4 corners; sqrt3 refines triangles only"), std::string::npos)
@@ -175,7 +158,7 @@ TEST(DooSabin, CubeOneLevelByHand) {
 }
 
 TEST(DooSabin, SquareBoundaryIsChaikinsCornerCutting) {
-    const PolyMesh r = doo_sabin_subdivide(unit_square(), {DooSabinBoundary::ChaikinBoundary}, 1);
+    const PolyMesh r = doo_sabin_subdivide(test::square(), {DooSabinBoundary::ChaikinBoundary}, 1);
     // 4 corner points + 2 Chaikin points on each of the 4 edges; faces 1 F + 4 E + 4 V.
     ASSERT_EQ(r.num_vertices(), 12);
     ASSERT_EQ(r.num_faces(), 9);
@@ -188,7 +171,7 @@ TEST(DooSabin, SquareBoundaryIsChaikinsCornerCutting) {
     EXPECT_EQ(boundary_edges, 8);  // the octagon of Chaikin's points
     for (int v = 0; v < 4; ++v) EXPECT_FALSE(c.is_boundary_vertex(v));
     // CGAL's rule keeps the F-face only.
-    const PolyMesh dropped = doo_sabin_subdivide(unit_square(), {DooSabinBoundary::DropBorderFaces}, 1);
+    const PolyMesh dropped = doo_sabin_subdivide(test::square(), {DooSabinBoundary::DropBorderFaces}, 1);
     EXPECT_EQ(dropped.num_vertices(), 4);
     EXPECT_EQ(dropped.num_faces(), 1);
 }

@@ -9,6 +9,7 @@
 
 #include "crossdiv/error.h"
 #include "crossdiv/io/mesh_io.h"
+#include "crossdiv/verification/butterfly_properties.h"
 #include "crossdiv/verification/inputs.h"
 #include "crossdiv/subdiv/limit.h"
 #include "crossdiv/subdiv/loop.h"
@@ -153,11 +154,31 @@ int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeAr
                            ? "-"
                            : fmt::format("{:.3g}", r.comparison.max_rel),
                        r.divergence_class.empty() ? "" : r.divergence_class + ": ", r.explanation);
-        all_agree &= c.all_agree();
-        results.push_back(to_json(c));
+        nlohmann::json record = to_json(c);
+        if (req.scheme == Scheme::Butterfly || req.scheme == Scheme::ModifiedButterfly) {
+            // The classic scheme has no reference: its verdict is its properties.
+            const ButterflyVariant v = req.scheme == Scheme::Butterfly ? ButterflyVariant::Classic : ButterflyVariant::Modified;
+            const ButterflyProperties p = check_butterfly_properties(meshes[i], inputs[i], v, s.levels);
+            const bool holds = p.core_error.empty() && p.max_interpolation_move == 0.0 &&
+                               p.max_plane_residual <= tolerances::kPlaneReproduction &&
+                               p.regular_edges_published == p.regular_edges;
+            if (!p.core_error.empty())
+                fmt::print("  properties: not measured (core refused the input)\n");
+            else
+                fmt::print("  properties: old vertices move by {:.3g}, plane residual {:.3g} (<= {:.0e}), {} of {} "
+                           "regular edges have the published stencil: {}\n",
+                           p.max_interpolation_move, p.max_plane_residual, tolerances::kPlaneReproduction,
+                           p.regular_edges_published, p.regular_edges, holds ? "hold" : "VIOLATED");
+            record["properties"] = to_json(p);
+            all_agree &= holds && (c.runs.empty() ? c.core_error.empty() : c.all_agree());
+        } else {
+            all_agree &= c.all_agree();
+        }
+        results.push_back(record);
     }
     if (!json_path.empty()) write_json(json_path, {{"tool", "crossdiv compare"}, {"comparisons", results}});
-    fmt::print("\n{}\n", all_agree ? "every reference agrees" : "some references disagree (see above)");
+    fmt::print("\n{}\n", all_agree ? "every reference agrees (and every property holds)"
+                                    : "some references disagree or a property fails (see above)");
     return all_agree ? 0 : 1;
 }
 

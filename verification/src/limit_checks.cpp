@@ -4,6 +4,7 @@
 
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/error.h"
+#include "crossdiv/verification/butterfly_properties.h"
 #include "crossdiv/verification/limit_comparison.h"
 #include "crossdiv/verification/scheme_comparison.h"
 
@@ -12,8 +13,8 @@ namespace {
 
 using nlohmann::json;
 
-const std::vector<std::string> kStudies = {"limits:catmull-clark", "limits:opensubdiv", "limits:spectrum",
-                                           "limits:convergence"};
+const std::vector<std::string> kStudies = {"limits:catmull-clark", "limits:schemes", "limits:opensubdiv",
+                                           "limits:spectrum", "limits:convergence"};
 
 json check(const std::string& reference, const std::string& name, const std::string& subject, double measured,
            double tolerance, const std::string& unit, const std::string& note) {
@@ -26,10 +27,32 @@ json check(const std::string& reference, const std::string& name, const std::str
     return run;
 }
 
-json catmull_clark_study() {
-    json runs = json::array(), rows = json::array();
+/// The bundled polygon and triangle meshes.
+std::vector<datasets::BundledMesh> catalog() {
     std::vector<datasets::BundledMesh> meshes = datasets::polygon_meshes();
     for (auto& b : datasets::bundled_meshes()) meshes.push_back(std::move(b));
+    return meshes;
+}
+
+/// One check record per reference run of a scheme comparison.
+void add_scheme_runs(const SchemeComparison& c, double tolerance, json& runs) {
+    for (const SchemeReferenceRun& r : c.runs) {
+        json run = {{"reference", r.reference},
+                    {"check", std::string(to_string(c.scheme)) + " " + c.rule + " L" + std::to_string(c.levels)},
+                    {"curve", c.input},
+                    {"measured", std::isfinite(r.comparison.max_rel) ? json(r.comparison.max_rel) : json(nullptr)},
+                    {"tolerance", tolerance},
+                    {"unit", "rel"},
+                    {"verdict", r.verdict},
+                    {"explanation", r.rule + " rule: " + r.explanation}};
+        if (!r.divergence_class.empty()) run["divergence_class"] = r.divergence_class;
+        runs.push_back(run);
+    }
+}
+
+json catmull_clark_study() {
+    json runs = json::array(), rows = json::array();
+    const std::vector<datasets::BundledMesh> meshes = catalog();
     for (CatmullClarkBoundary rule : {CatmullClarkBoundary::EdgeOnly, CatmullClarkBoundary::EdgeAndCorner}) {
         for (const auto& b : meshes) {
             SchemeRequest req;
@@ -38,21 +61,48 @@ json catmull_clark_study() {
             req.timeout_seconds = 60;
             const SchemeComparison c = compare_scheme(b.mesh, "bundled:" + b.name, req);
             rows.push_back(to_json(c));
-            for (const SchemeReferenceRun& r : c.runs) {
-                json run = {{"reference", r.reference},
-                            {"check", "catmull-clark " + c.rule + " L2"},
-                            {"curve", c.input},
-                            {"measured", std::isfinite(r.comparison.max_rel) ? json(r.comparison.max_rel) : json(nullptr)},
-                            {"tolerance", req.tolerance},
-                            {"unit", "rel"},
-                            {"verdict", r.verdict},
-                            {"explanation", r.rule + " rule: " + r.explanation}};
-                if (!r.divergence_class.empty()) run["divergence_class"] = r.divergence_class;
-                runs.push_back(run);
-            }
+            add_scheme_runs(c, req.tolerance, runs);
         }
     }
     return {{"runs", runs}, {"tables", {{"catmull_clark", rows}}}};
+}
+
+/// Doo-Sabin, sqrt3 and the modified Butterfly against their references (sqrt3 to 3 levels,
+/// so that a boundary step and the step after it are both seen), and the Butterfly
+/// properties of both variants.
+json schemes_study() {
+    json runs = json::array(), rows = json::array(), properties = json::array();
+    const std::vector<datasets::BundledMesh> meshes = catalog();
+    for (const auto& [scheme, levels] : {std::pair{Scheme::DooSabin, 2}, {Scheme::Sqrt3, 3}, {Scheme::ModifiedButterfly, 2}})
+        for (const auto& b : meshes) {
+            // The triangle schemes' refusal of polygons is tested elsewhere.
+            if (scheme != Scheme::DooSabin && b.mesh.face_vertices.size() != 3 * static_cast<size_t>(b.mesh.num_faces()))
+                continue;
+            SchemeRequest req;
+            req.scheme = scheme;
+            req.levels = levels;
+            req.timeout_seconds = 60;
+            const SchemeComparison c = compare_scheme(b.mesh, "bundled:" + b.name, req);
+            rows.push_back(to_json(c));
+            add_scheme_runs(c, req.tolerance, runs);
+        }
+    for (const auto& b : datasets::bundled_meshes())
+        for (ButterflyVariant v : {ButterflyVariant::Classic, ButterflyVariant::Modified}) {
+            const ButterflyProperties p = check_butterfly_properties(b.mesh, "bundled:" + b.name, v, 2);
+            properties.push_back(to_json(p));
+            const std::string who = std::string(to_string(v)) + " L2";
+            const std::string input = "bundled:" + b.name;
+            runs.push_back(check("property", "interpolation " + who, input, p.max_interpolation_move, 0.0, "abs",
+                                 "largest move of an existing vertex at a later level" +
+                                     (p.core_error.empty() ? "" : "; core refused: " + p.core_error)));
+            runs.push_back(check("property", "plane reproduction " + who, input, p.max_plane_residual,
+                                 tolerances::kPlaneReproduction, "rel", "residual of a planar copy of the mesh"));
+            runs.push_back(check("property", "published stencil " + who, input,
+                                 p.regular_edges - p.regular_edges_published, 0.0, "edges",
+                                 std::to_string(p.regular_edges_published) + " of " + std::to_string(p.regular_edges) +
+                                     " regular interior edges have exactly 1/2, 1/2, 1/8, 1/8, 4 x -1/16"));
+        }
+    return {{"runs", runs}, {"tables", {{"schemes", rows}, {"butterfly_properties", properties}}}};
 }
 
 json opensubdiv_study() {
@@ -76,9 +126,7 @@ json opensubdiv_study() {
     for (const auto& b : datasets::bundled_meshes())
         for (LoopBoundary rule : {LoopBoundary::EdgeOnly, LoopBoundary::EdgeAndCorner})
             for (int levels : {0, 2}) add(compare_loop_limit(b.mesh, "bundled:" + b.name, {LoopWeights::Loop, rule}, levels));
-    std::vector<datasets::BundledMesh> polys = datasets::polygon_meshes();
-    for (auto& b : datasets::bundled_meshes()) polys.push_back(std::move(b));
-    for (const auto& b : polys)
+    for (const auto& b : catalog())
         for (CatmullClarkBoundary rule : {CatmullClarkBoundary::EdgeOnly, CatmullClarkBoundary::EdgeAndCorner})
             for (int levels : {1, 3})  // level 0 of a mesh with non-quads has no limit mask
                 add(compare_catmull_clark_limit(b.mesh, "bundled:" + b.name, {rule}, levels));
@@ -129,7 +177,7 @@ std::vector<std::string> expand_limit_inputs(const std::vector<std::string>& spe
         } else if (std::find(kStudies.begin(), kStudies.end(), s) != kStudies.end()) {
             out.push_back(s);
         } else {
-            throw InputError("'" + s + "' is not a limits study (limits:all, limits:catmull-clark, limits:opensubdiv, "
+            throw InputError("'" + s + "' is not a limits study (limits:all, limits:catmull-clark, limits:schemes, limits:opensubdiv, "
                              "limits:spectrum, limits:convergence)");
         }
     }
@@ -138,6 +186,7 @@ std::vector<std::string> expand_limit_inputs(const std::vector<std::string>& spe
 
 json check_limits(const std::string& input) {
     json rec = input == "limits:catmull-clark" ? catmull_clark_study()
+               : input == "limits:schemes"     ? schemes_study()
                : input == "limits:opensubdiv"  ? opensubdiv_study()
                : input == "limits:spectrum"    ? spectrum_study()
                : input == "limits:convergence" ? convergence_study()

@@ -155,10 +155,12 @@ std::string number_or_empty(const json& j, const char* key) {
     return buf;
 }
 
-/// "measured 3.1e-16 <= tolerance 1.4e-14 rel" for a curve check.
+/// "measured 3.1e-16 <= tolerance 1.4e-14 rel" for a curve check ("measured -" when there is
+/// no figure, e.g. two meshes with different faces).
 std::string fmt_measured(const json& r) {
-    char buf[128];
-    std::snprintf(buf, sizeof buf, "measured %.3g %s tolerance %.3g %s", r.value("measured", 0.0),
+    const std::string measured = number_or_empty(r, "measured");
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "measured %s %s tolerance %.3g %s", measured.empty() ? "-" : measured.c_str(),
                   r.value("verdict", "") == "agree" ? "<=" : ">", r.value("tolerance", 0.0), r.value("unit", "").c_str());
     return buf;
 }

@@ -24,6 +24,7 @@ printf 'v 0 0 0\nv 1 0\nv 0 1 0\nf 1 2 3\n' > "$tmp/missing.obj"
 printf 'v 0 0 0\nv 1 0 0\nv 0 nan 0\nf 1 2 3\n' > "$tmp/nan.obj"
 printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n' > "$tmp/quad.obj"
 printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n' > "$tmp/square.obj"
+printf 'v 0 0 0\nv 3 0 0\nv 0 3 0\nf 1 2 3\n' > "$tmp/triangle.obj"
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 1 1 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n' > "$tmp/nonmanifold.obj"
 # A tetrahedron plus one vertex no face uses.
 printf 'v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\nv 5 5 5\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n' > "$tmp/isolated.obj"
@@ -142,12 +143,22 @@ expect split-flip 0 '768 faces, 1 level\(s\), split-flip\)' -- "$crossdiv" subdi
 expect cc-subdivide 0 '26 vertices, 24 faces, 1 level\(s\), catmull-clark edge-only core' -- "$crossdiv" subdivide bundled:quad-cube --scheme catmull-clark -o "$tmp/cc.obj"
 expect cc-compare 1 'openmesh +midpoint-average +diverge .*boundary-rule' -- "$crossdiv" compare bundled:quad-grid --scheme catmull-clark --levels 2
 expect cc-compare-closed 0 'every reference agrees' -- "$crossdiv" compare bundled:quad-torus --scheme catmull-clark --levels 2 --json "$tmp/cc.json"
-expect cc-midpoint-loop 2 'loop has no midpoint-average boundary rule' -- "$crossdiv" subdivide bundled:torus --boundary midpoint-average -o "$tmp/x.obj"
+expect cc-midpoint-loop 2 "loop has no boundary rule 'midpoint-average'" -- "$crossdiv" subdivide bundled:torus --boundary midpoint-average -o "$tmp/x.obj"
 expect limit-loop 0 'against opensubdiv: agree' -- "$crossdiv" limit bundled:open-patch --scheme loop --levels 2 --against opensubdiv -o "$tmp/lim.obj" --json "$tmp/lim.json"
 expect limit-cc-nonquad 2 'needs quads \(refine one level first\)' -- "$crossdiv" limit bundled:prism-5 --scheme catmull-clark
 expect limit-cc 0 'against opensubdiv: agree' -- "$crossdiv" limit bundled:prism-5 --scheme catmull-clark --levels 1 --against opensubdiv
 expect spectrum 0 'catmull-clark +4 +0\.500000 +2 ' -- "$crossdiv" spectrum --scheme catmull-clark --valence 3..6 --json "$tmp/sp.json"
 expect spectrum-bad 2 "--valence wants N or A..B" -- "$crossdiv" spectrum --valence 2..5
+expect sqrt3-subdivide 0 '10 vertices, 9 faces, 2 level\(s\), sqrt3 count-from-input core' -- "$crossdiv" subdivide "$tmp/triangle.obj" --scheme sqrt3 --levels 2 -o "$tmp/s3.obj"
+expect sqrt3-parity 1 'openmesh +restart-each-level +diverge .*parity: openmesh counts generations per call' -- "$crossdiv" compare bundled:fan-5 --scheme sqrt3 --levels 2
+expect sqrt3-one-call 0 'every reference agrees' -- "$crossdiv" compare bundled:fan-5 --scheme sqrt3 --levels 3 --against openmesh-one-call,cgal-one-call
+expect sqrt3-valence-limit 1 "valence-limit: openmesh's weight table ends at valence 49" -- "$crossdiv" compare bundled:pole-64 --scheme sqrt3 --against openmesh
+expect sqrt3-quad 1 'core refused: face 0: has 4 corners; sqrt3 refines triangles only' -- "$crossdiv" compare bundled:quad-cube --scheme sqrt3
+expect doo-sabin-dropped 1 'cgal +drop-border-faces +diverge .*border-faces-dropped' -- "$crossdiv" compare bundled:quad-grid --scheme doo-sabin --levels 2
+expect doo-sabin-closed 0 'every reference agrees' -- "$crossdiv" compare bundled:quad-cube bundled:icosahedron --scheme doo-sabin --levels 2
+expect doo-sabin-rule 2 "doo-sabin has no boundary rule 'edge-only'" -- "$crossdiv" subdivide bundled:quad-cube --scheme doo-sabin --boundary edge-only -o "$tmp/x.obj"
+expect modified-butterfly 0 'properties: old vertices move by 0, .* hold' -- "$crossdiv" compare bundled:open-patch bundled:icosahedron --scheme modified-butterfly --levels 2
+expect butterfly-properties 0 '288 of 288 regular edges have the published stencil: hold' -- "$crossdiv" compare bundled:torus --scheme butterfly --levels 2
 printf '<COLLADA><library_geometries><geometry>' > "$tmp/broken.dae"
 expect dae-broken 2 'broken.dae: Assimp could not read it' -- "$crossdiv" check "$tmp/broken.dae"
 dae="$(dirname "$0")/../../../shared/data/meshedit/dae"

@@ -8,22 +8,13 @@
 #include "crossdiv/verification/limit_checks.h"
 #include "crossdiv/verification/limit_comparison.h"
 #include "crossdiv/verification/scheme_comparison.h"
+#include "scheme_test_catalog.h"
 
 namespace crossdiv::verification {
 namespace {
 
-std::vector<datasets::BundledMesh> catalog() {
-    std::vector<datasets::BundledMesh> all = datasets::polygon_meshes();
-    for (auto& b : datasets::bundled_meshes()) all.push_back(std::move(b));
-    return all;
-}
-
-bool open_mesh(const PolyMesh& m) {
-    const PolyConnectivity c = build_poly_connectivity(m);
-    for (int e = 0; e < c.num_edges(); ++e)
-        if (c.is_boundary_edge(e)) return true;
-    return false;
-}
+using test::catalog;
+using test::open_mesh;
 
 TEST(CatmullClarkComparison, EveryReferenceAgreesOrDivergesByItsDocumentedRule) {
     for (const auto& b : catalog()) {
@@ -108,7 +99,7 @@ TEST(Convergence, AVertexConvergesAtItsRotationInvariantEigenvalue) {
 
 TEST(LimitChecks, UnknownStudyIsRefused) {
     EXPECT_THROW(expand_limit_inputs({"limits:eigen"}), InputError);
-    EXPECT_EQ(expand_limit_inputs({"limits:all"}).size(), 4u);
+    EXPECT_EQ(expand_limit_inputs({"limits:all"}).size(), 5u);
 }
 
 }  // namespace

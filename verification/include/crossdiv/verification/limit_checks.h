@@ -4,6 +4,9 @@
 /// measured checks (the record format of curve_checks.h), one input per study:
 ///   limits:catmull-clark  core against OpenSubdiv, OpenMesh, CGAL on the bundled and polygon
 ///                         meshes, both OpenSubdiv boundary rules, 2 levels; each divergence classified
+///   limits:schemes        Doo-Sabin (CGAL), sqrt3 (OpenMesh, CGAL; per level and in one call, 3
+///                         levels) and the modified Butterfly (OpenMesh) on the same meshes, and the
+///                         Butterfly properties (interpolation, planes, published stencil), both variants
 ///   limits:opensubdiv     limit positions and interior normals against OpenSubdiv's Limit()
 ///                         (Loop on bundled:all, Catmull-Clark on polygons:all and bundled:all)
 ///   limits:spectrum       the eigen table, valence 3..20, Loop, Warren, Catmull-Clark
@@ -28,7 +31,7 @@ inline constexpr double kConvergenceRateRelative = 0.01;
 
 namespace crossdiv::verification {
 
-/// @throws InputError for a name other than the four above (or "limits:all").
+/// @throws InputError for a name other than the five above (or "limits:all").
 std::vector<std::string> expand_limit_inputs(const std::vector<std::string>& specs);
 
 /// Runs one study; the record has "input", "scheme" ("limits"), "runs" (one measured check
