@@ -329,6 +329,20 @@ def limits_section(limit_cases, figdir):
                "| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
         md += ["| " + " | ".join(str(v) for v in r) + " |" for r in rows]
         body.append(table_html(header, rows))
+    if tables.get("bfr"):
+        rows = []
+        for scheme in sorted({r["scheme"] for r in tables["bfr"]}):
+            sel = [r for r in tables["bfr"] if r["scheme"] == scheme and not r["error"]]
+            rows.append((scheme, len(sel), sum(r["regular_faces"] for r in sel), sum(r["irregular_faces"] for r in sel),
+                         fmt(max(r["max_regular"] for r in sel)), fmt(max(r["max_irregular_corner"] for r in sel)),
+                         fmt(max(r["max_irregular_inner"] for r in sel))))
+        header = ["scheme", "meshes", "regular faces", "irregular faces", "max on regular", "max at irregular corners",
+                  "max at irregular midpoints/centres"]
+        md += ["", "OpenSubdiv's Bfr at (u, v) against core's exact limit at the dyadic points of level 1 (corners, "
+               "edge midpoints, quad centres), relative to the diagonal:", "",
+               "| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+        md += ["| " + " | ".join(str(v) for v in r) + " |" for r in rows]
+        body.append(table_html(header, rows))
     if tables.get("spectrum"):
         header = ["scheme", "n", "lambda_1", "multiplicity", "next", "vertex eigenvalue", "|core - closed form|", "regular"]
         rows = [(r["scheme"], r["valence"], fmt(r["subdominant"], ".6f"), r["subdominant_multiplicity"], fmt(r["next"], ".6f"),

@@ -4,6 +4,7 @@
 
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/error.h"
+#include "crossdiv/verification/bfr_comparison.h"
 #include "crossdiv/verification/butterfly_properties.h"
 #include "crossdiv/verification/limit_comparison.h"
 #include "crossdiv/verification/scheme_comparison.h"
@@ -130,7 +131,25 @@ json opensubdiv_study() {
         for (CatmullClarkBoundary rule : {CatmullClarkBoundary::EdgeOnly, CatmullClarkBoundary::EdgeAndCorner})
             for (int levels : {1, 3})  // level 0 of a mesh with non-quads has no limit mask
                 add(compare_catmull_clark_limit(b.mesh, "bundled:" + b.name, {rule}, levels));
-    return {{"runs", runs}, {"tables", {{"limit", rows}}}};
+    // Bfr at (u, v): exact on regular faces, measured on irregular ones.
+    json bfr_rows = json::array();
+    for (const auto& b : catalog())
+        for (const std::string scheme : {"loop", "catmull-clark"}) {
+            if (scheme == "loop" && b.mesh.face_vertices.size() != 3 * static_cast<size_t>(b.mesh.num_faces())) continue;
+            const BfrComparison c = compare_bfr_limit(b.mesh, "bundled:" + b.name, scheme);
+            bfr_rows.push_back(to_json(c));
+            if (!c.error.empty()) {
+                runs.push_back({{"reference", "opensubdiv-bfr"}, {"check", "bfr " + scheme}, {"curve", c.input},
+                                {"measured", nullptr}, {"tolerance", tolerances::kBfrRegularRelative}, {"unit", "rel"},
+                                {"verdict", "ref-rejected"}, {"explanation", c.error}});
+                continue;
+            }
+            if (c.regular_faces > 0)
+                runs.push_back(check("opensubdiv-bfr", "bfr " + scheme + " regular faces", c.input, c.max_regular,
+                                     tolerances::kBfrRegularRelative, "rel",
+                                     std::to_string(c.regular_faces) + " regular faces, dyadic points of level 1"));
+        }
+    return {{"runs", runs}, {"tables", {{"limit", rows}, {"bfr", bfr_rows}}}};
 }
 
 json spectrum_study() {

@@ -2,9 +2,12 @@
 // convergence tables: the measured figures of issue 6 asserted on the catalog.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/error.h"
 #include "crossdiv/mesh/poly_connectivity.h"
+#include "crossdiv/verification/bfr_comparison.h"
 #include "crossdiv/verification/limit_checks.h"
 #include "crossdiv/verification/limit_comparison.h"
 #include "crossdiv/verification/scheme_comparison.h"
@@ -96,6 +99,33 @@ TEST(Convergence, AVertexConvergesAtItsRotationInvariantEigenvalue) {
         EXPECT_NEAR(cc.fitted_rate, cc.vertex_rate, tolerances::kConvergenceRateRelative * cc.vertex_rate) << n;
     }
 }
+
+#ifdef CROSSDIV_HAS_OPENSUBDIV
+TEST(BfrComparison, ExactAtLevelOneDyadicPointsEvenOnIrregularFaces) {
+    // Measured: Bfr's approximation of an irregular face does not reach the level-1 dyadic
+    // points (its sub-patches there are exact), so every point agrees with core's limit masks.
+    int regular = 0, irregular = 0;
+    for (const char* name : {"open-patch", "pole-64", "fan-7", "icosahedron"}) {
+        const BfrComparison c = compare_bfr_limit(datasets::bundled_mesh(name), name, "loop");
+        ASSERT_TRUE(c.error.empty()) << c.error;
+        EXPECT_LE(std::max({c.max_regular, c.max_irregular_corner, c.max_irregular_inner}), tolerances::kBfrRegularRelative)
+            << name;
+        regular += c.regular_faces;
+        irregular += c.irregular_faces;
+    }
+    for (const char* name : {"quad-grid", "quad-fan-5", "prism-5"}) {
+        const BfrComparison c = compare_bfr_limit(datasets::bundled_mesh(name), name, "catmull-clark");
+        ASSERT_TRUE(c.error.empty()) << c.error;
+        EXPECT_LE(std::max({c.max_regular, c.max_irregular_corner, c.max_irregular_inner}), tolerances::kBfrRegularRelative)
+            << name;
+        regular += c.regular_faces;
+        irregular += c.irregular_faces;
+    }
+    EXPECT_EQ(regular, 26 + 384 + 12);  // open-patch, pole-64 (Loop), quad-grid
+    EXPECT_GT(irregular, 400);
+    EXPECT_EQ(compare_bfr_limit(datasets::bundled_mesh("prism-5"), "prism-5", "catmull-clark").skipped_faces, 2);
+}
+#endif
 
 TEST(LimitChecks, UnknownStudyIsRefused) {
     EXPECT_THROW(expand_limit_inputs({"limits:eigen"}), InputError);

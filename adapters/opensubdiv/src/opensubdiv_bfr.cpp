@@ -1,4 +1,4 @@
-// Catmull-Clark limit surface evaluation through OpenSubdiv's Bfr (3.5).
+// Catmull-Clark and Loop limit surface evaluation through OpenSubdiv's Bfr (3.5).
 #include <opensubdiv/bfr/refinerSurfaceFactory.h>
 #include <opensubdiv/bfr/surface.h>
 #include <opensubdiv/far/topologyDescriptor.h>
@@ -16,20 +16,14 @@ using namespace OpenSubdiv;
 
 namespace {
 
-/// A Catmull-Clark topology refiner of the polygon mesh, with the boundary rule OpenSubdiv
-/// calls EDGE_ONLY (the library default, NONE, would make boundary faces holes).
-std::unique_ptr<Far::TopologyRefiner> catmark_refiner(const PolyMesh& mesh) {
-    Sdc::Options sdc;
-    sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
-    return detail::make_refiner(mesh, Sdc::SCHEME_CATMARK, sdc);
-}
-
-}  // namespace
-
-LimitEvaluation catmark_limit(const PolyMesh& mesh, int face, std::span<const std::array<double, 2>> uv) {
+/// Bfr's surface of one face of a refiner (boundary rule EDGE_ONLY: the library default,
+/// NONE, would make boundary faces holes), evaluated at each (u, v).
+LimitEvaluation evaluate(const PolyMesh& mesh, Sdc::SchemeType scheme, int face, std::span<const std::array<double, 2>> uv) {
     if (face < 0 || face >= mesh.num_faces())
         throw Rejected("face " + std::to_string(face) + " is not in a mesh of " + std::to_string(mesh.num_faces()) + " faces");
-    const std::unique_ptr<Far::TopologyRefiner> refiner = catmark_refiner(mesh);
+    Sdc::Options sdc;
+    sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
+    const std::unique_ptr<Far::TopologyRefiner> refiner = detail::make_refiner(mesh, scheme, sdc);
     Bfr::RefinerSurfaceFactory<> factory(*refiner);
     Bfr::Surface<double> surface;
     if (!factory.InitVertexSurface(face, &surface) || !surface.IsValid())
@@ -50,6 +44,18 @@ LimitEvaluation catmark_limit(const PolyMesh& mesh, int face, std::span<const st
         out.samples.push_back({Vec3(p[0], p[1], p[2]), Vec3(du[0], du[1], du[2]), Vec3(dv[0], dv[1], dv[2])});
     }
     return out;
+}
+
+}  // namespace
+
+LimitEvaluation catmark_limit(const PolyMesh& mesh, int face, std::span<const std::array<double, 2>> uv) {
+    return evaluate(mesh, Sdc::SCHEME_CATMARK, face, uv);
+}
+
+LimitEvaluation loop_limit_surface(const PolyMesh& mesh, int face, std::span<const std::array<double, 2>> uv) {
+    for (int f = 0; f < mesh.num_faces(); ++f)
+        if (mesh.face_size(f) != 3) throw Rejected("face " + std::to_string(f) + ": Loop needs triangles");
+    return evaluate(mesh, Sdc::SCHEME_LOOP, face, uv);
 }
 
 }  // namespace crossdiv::adapters::opensubdiv

@@ -8,7 +8,8 @@
 ///                         levels) and the modified Butterfly (OpenMesh) on the same meshes, and the
 ///                         Butterfly properties (interpolation, planes, published stencil), both variants
 ///   limits:opensubdiv     limit positions and interior normals against OpenSubdiv's Limit()
-///                         (Loop on bundled:all, Catmull-Clark on polygons:all and bundled:all)
+///                         (Loop on bundled:all, Catmull-Clark on polygons:all and bundled:all), and
+///                         Bfr's (u, v) evaluation against core's exact limit (bfr_comparison.h)
 ///   limits:spectrum       the eigen table, valence 3..20, Loop, Warren, Catmull-Clark
 ///   limits:convergence    the convergence table, valence 3..12, levels 1..8
 

@@ -45,6 +45,10 @@ struct LimitEvaluation {
 /// @throws Rejected when Far refuses the mesh or the face has no limit surface.
 LimitEvaluation catmark_limit(const PolyMesh& mesh, int face, std::span<const std::array<double, 2>> uv);
 
+/// The Loop limit surface of one triangle, likewise (corner 0 at (0, 0), corner 1 at (1, 0),
+/// corner 2 at (0, 1)). @throws Rejected as catmark_limit(), and for a non-triangle face.
+LimitEvaluation loop_limit_surface(const PolyMesh& mesh, int face, std::span<const std::array<double, 2>> uv);
+
 /// OpenSubdiv's Catmull-Clark (SCHEME_CATMARK) has our EdgeOnly and EdgeAndCorner boundary
 /// rules (VTX_BOUNDARY_EDGE_ONLY, VTX_BOUNDARY_EDGE_AND_CORNER), not OpenMesh's midpoint-average.
 bool supports(const CatmullClarkOptions& options);
