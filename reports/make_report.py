@@ -235,8 +235,7 @@ def surface_section(surface_cases, bench, figdir):
                  fmt(r["signed_volume"]), ("yes" if r["cgal"]["outward"] else "NO") if "cgal" in r else "-",
                  r.get("fold", {}).get("faces", 0)) for r in built]
         md += ["Every surface built; closed ones must be watertight, manifold and outward (our checks and CGAL's).", "",
-               "| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-        md += ["| " + " | ".join(str(v) for v in r) + " |" for r in rows]
+               *md_table(header, rows)]
         body.append(table_html(header, rows))
     for c in surface_cases:
         t = c.get("tables", {})
@@ -264,8 +263,7 @@ def surface_section(surface_cases, bench, figdir):
                     for r in t["bfr"]]
             header = ["grid", "faces", "regular (Bfr)", "samples", "position rel", "derivatives rel"]
             md += ["", "Catmull-Clark limit of regular grids: our bicubic Bezier form against OpenSubdiv's Bfr.", "",
-                   "| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-            md += ["| " + " | ".join(str(v) for v in r) + " |" for r in rows]
+                   *md_table(header, rows)]
             body.append(table_html(header, rows))
     if sweep:
         u, a, seed = sweep["uniform"], sweep["adaptive"], sweep["seed"]
@@ -274,8 +272,7 @@ def surface_section(surface_cases, bench, figdir):
         header = ["wineglass", "faces", "slices", "profile samples", "deviation"]
         md += ["", f"Adaptive sweep ({sweep['input']}): uniform / adaptive faces {sweep['ratio']:.2f}, the seed's "
                f"{seed['uniform_faces']} / {seed['adaptive_faces']} = {seed['ratio']:.2f}.", "",
-               "| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-        md += ["| " + " | ".join(str(v) for v in r) + " |" for r in rows]
+               *md_table(header, rows)]
         body.append(table_html(header, rows))
     return md, body
 
@@ -300,8 +297,7 @@ def limits_section(limit_cases, figdir):
         rows = [k + (n,) for k, n in sorted(verdicts.items())]
         md += ["Every polygon scheme against every reference that has it, on the bundled and polygon meshes "
                "(a divergence's class is measured: core re-run with the reference's rule agrees).", "",
-               "| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-        md += ["| " + " | ".join(str(v) for v in r) + " |" for r in rows]
+               *md_table(header, rows)]
         body.append(table_html(header, rows))
     if tables.get("butterfly_properties"):
         rows = []
@@ -313,8 +309,7 @@ def limits_section(limit_cases, figdir):
         header = ["scheme", "meshes", "max move of an old vertex", "max plane residual (rel)",
                   "regular edges with the published stencil"]
         md += ["", "Butterfly properties, 2 levels on the bundled triangle meshes (the classic scheme has no "
-               "reference library):", "", "| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-        md += ["| " + " | ".join(str(v) for v in r) + " |" for r in rows]
+               "reference library):", "", *md_table(header, rows)]
         body.append(table_html(header, rows))
     if tables.get("limit"):
         rows = []
@@ -326,8 +321,7 @@ def limits_section(limit_cases, figdir):
             rows.append(key + (len(sel), len(ok), fmt(max(pos) if pos else None), fmt(max(ang) if ang else None)))
         header = ["scheme", "rule", "levels", "meshes", "agree", "max position rel", "max normal angle (rad)"]
         md += ["", "Limit positions and interior limit normals against OpenSubdiv's `PrimvarRefiner::Limit`:", "",
-               "| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-        md += ["| " + " | ".join(str(v) for v in r) + " |" for r in rows]
+               *md_table(header, rows)]
         body.append(table_html(header, rows))
     if tables.get("bfr"):
         rows = []
@@ -340,8 +334,7 @@ def limits_section(limit_cases, figdir):
                   "max at irregular midpoints/centres"]
         md += ["", "OpenSubdiv's Bfr at (u, v) against core's exact limit at the dyadic points of level 1 (corners, "
                "edge midpoints, quad centres), relative to the diagonal:", "",
-               "| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-        md += ["| " + " | ".join(str(v) for v in r) + " |" for r in rows]
+               *md_table(header, rows)]
         body.append(table_html(header, rows))
     if tables.get("spectrum"):
         header = ["scheme", "n", "lambda_1", "multiplicity", "next", "vertex eigenvalue", "|core - closed form|", "regular"]
@@ -349,8 +342,7 @@ def limits_section(limit_cases, figdir):
                  fmt(r["vertex_rate"], ".6f"), fmt(r["max_difference"]), "yes" if r["regular_characteristic_map"] else "NO")
                 for r in tables["spectrum"]]
         md += ["", "Eigen table: the local subdivision matrix of an interior vertex of valence n, taken from core's S, "
-               "against the published spectrum.", "", "| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-        md += ["| " + " | ".join(str(v) for v in r) + " |" for r in rows]
+               "against the published spectrum.", "", *md_table(header, rows)]
         body.append(table_html(header, rows))
     if tables.get("convergence"):
         fig, ax = plt.subplots(figsize=(5, 3.6))
@@ -369,8 +361,7 @@ def limits_section(limit_cases, figdir):
                "converges at the largest rotation-invariant eigenvalue below 1 (the subdominant pair is not "
                "rotation invariant and vanishes at the centre).", "",
                "![convergence](figures/limit_convergence.png)", "",
-               "| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-        md += ["| " + " | ".join(str(v) for v in r) + " |" for r in rows]
+               *md_table(header, rows)]
         body += ['<img src="figures/limit_convergence.png">', table_html(header, rows)]
     return md, body
 
@@ -394,8 +385,7 @@ def curve_section(curve_cases, bench, figdir):
     if rows:
         md += ["Each check is measured <= tolerance (tolerances.h names and justifies each); Eigen is "
                "`unsupported/Eigen/Splines` (Cox-de Boor), compared in position, first and second derivative.", "",
-               "| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-        md += ["| " + " | ".join(str(v) for v in r) + " |" for r in rows]
+               *md_table(header, rows)]
         body.append(table_html(header, rows))
     for c in curve_cases:
         t = c.get("tables", {})
@@ -454,8 +444,7 @@ def curve_section(curve_cases, bench, figdir):
                "(uniform: fewest equal steps per segment found by measuring; angle: largest angle tolerance that "
                "meets it; distance: the guaranteed adaptive mode; Wang: the guaranteed uniform count per segment)"
                + (" from `crossdiv bench`" if bench_rows else "") + ":", "",
-               "| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-        md += ["| " + " | ".join(str(v) for v in r) + " |" for r in rows]
+               *md_table(header, rows)]
         body.append(table_html(header, rows))
     closure = [row for c in curve_cases for row in c.get("tables", {}).get("closure", [])]
     if closure:
@@ -464,6 +453,12 @@ def curve_section(curve_cases, bench, figdir):
         md += [f"| {r['curve']} | {r['method']} | {fmt(r['mismatch_deg'])} | {fmt(r['after_distribution_deg'])} |"
                for r in closure]
     return md, body
+
+
+def md_table(header, rows):
+    """A Markdown table: the header line, the rule, one line per row."""
+    return (["| " + " | ".join(header) + " |", "|" + "---|" * len(header)] +
+            ["| " + " | ".join(str(v) for v in r) + " |" for r in rows])
 
 
 def table_html(header, rows):

@@ -56,13 +56,18 @@ std::vector<BundledMesh> polygon_meshes() {
     return all;
 }
 
+std::vector<BundledMesh> catalog_meshes() {
+    std::vector<BundledMesh> all = polygon_meshes();
+    for (BundledMesh& b : bundled_meshes()) all.push_back(std::move(b));
+    return all;
+}
+
 PolyMesh bundled_mesh(const std::string& name) {
     std::string known;
-    for (auto&& list : {bundled_meshes(), polygon_meshes()})
-        for (const BundledMesh& b : list) {
-            if (b.name == name) return b.mesh;
-            known += (known.empty() ? "" : ", ") + b.name;
-        }
+    for (const BundledMesh& b : catalog_meshes()) {
+        if (b.name == name) return b.mesh;
+        known += (known.empty() ? "" : ", ") + b.name;
+    }
     throw InputError("unknown bundled mesh '" + name + "' (known: " + known + ")");
 }
 

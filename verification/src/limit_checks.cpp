@@ -28,13 +28,6 @@ json check(const std::string& reference, const std::string& name, const std::str
     return run;
 }
 
-/// The bundled polygon and triangle meshes.
-std::vector<datasets::BundledMesh> catalog() {
-    std::vector<datasets::BundledMesh> meshes = datasets::polygon_meshes();
-    for (auto& b : datasets::bundled_meshes()) meshes.push_back(std::move(b));
-    return meshes;
-}
-
 /// One check record per reference run of a scheme comparison.
 void add_scheme_runs(const SchemeComparison& c, double tolerance, json& runs) {
     for (const SchemeReferenceRun& r : c.runs) {
@@ -53,7 +46,7 @@ void add_scheme_runs(const SchemeComparison& c, double tolerance, json& runs) {
 
 json catmull_clark_study() {
     json runs = json::array(), rows = json::array();
-    const std::vector<datasets::BundledMesh> meshes = catalog();
+    const std::vector<datasets::BundledMesh> meshes = datasets::catalog_meshes();
     for (CatmullClarkBoundary rule : {CatmullClarkBoundary::EdgeOnly, CatmullClarkBoundary::EdgeAndCorner}) {
         for (const auto& b : meshes) {
             SchemeRequest req;
@@ -73,11 +66,11 @@ json catmull_clark_study() {
 /// properties of both variants.
 json schemes_study() {
     json runs = json::array(), rows = json::array(), properties = json::array();
-    const std::vector<datasets::BundledMesh> meshes = catalog();
+    const std::vector<datasets::BundledMesh> meshes = datasets::catalog_meshes();
     for (const auto& [scheme, levels] : {std::pair{Scheme::DooSabin, 2}, {Scheme::Sqrt3, 3}, {Scheme::ModifiedButterfly, 2}})
         for (const auto& b : meshes) {
             // The triangle schemes' refusal of polygons is tested elsewhere.
-            if (scheme != Scheme::DooSabin && b.mesh.face_vertices.size() != 3 * static_cast<size_t>(b.mesh.num_faces()))
+            if (scheme != Scheme::DooSabin && !b.mesh.all_triangles())
                 continue;
             SchemeRequest req;
             req.scheme = scheme;
@@ -127,15 +120,15 @@ json opensubdiv_study() {
     for (const auto& b : datasets::bundled_meshes())
         for (LoopBoundary rule : {LoopBoundary::EdgeOnly, LoopBoundary::EdgeAndCorner})
             for (int levels : {0, 2}) add(compare_loop_limit(b.mesh, "bundled:" + b.name, {LoopWeights::Loop, rule}, levels));
-    for (const auto& b : catalog())
+    for (const auto& b : datasets::catalog_meshes())
         for (CatmullClarkBoundary rule : {CatmullClarkBoundary::EdgeOnly, CatmullClarkBoundary::EdgeAndCorner})
             for (int levels : {1, 3})  // level 0 of a mesh with non-quads has no limit mask
                 add(compare_catmull_clark_limit(b.mesh, "bundled:" + b.name, {rule}, levels));
     // Bfr at (u, v): exact on regular faces, measured on irregular ones.
     json bfr_rows = json::array();
-    for (const auto& b : catalog())
+    for (const auto& b : datasets::catalog_meshes())
         for (const std::string scheme : {"loop", "catmull-clark"}) {
-            if (scheme == "loop" && b.mesh.face_vertices.size() != 3 * static_cast<size_t>(b.mesh.num_faces())) continue;
+            if (scheme == "loop" && !b.mesh.all_triangles()) continue;
             const BfrComparison c = compare_bfr_limit(b.mesh, "bundled:" + b.name, scheme);
             bfr_rows.push_back(to_json(c));
             if (!c.error.empty()) {

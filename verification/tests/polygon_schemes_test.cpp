@@ -17,8 +17,6 @@ namespace {
 using test::catalog;
 using test::open_mesh;
 
-bool triangles_only(const PolyMesh& m) { return m.face_vertices.size() == 3 * static_cast<size_t>(m.num_faces()); }
-
 int max_valence(const PolyMesh& m) {
     const PolyConnectivity c = build_poly_connectivity(m);
     int largest = 0;
@@ -51,7 +49,7 @@ TEST(DooSabinComparison, CgalAgreesOnClosedMeshesAndDropsBorderFacesOnOpenOnes) 
 #if defined(CROSSDIV_HAS_CGAL) && defined(CROSSDIV_HAS_OPENMESH)
 TEST(Sqrt3Comparison, OneCallAgreesPerLevelCallsNeverRefineTheBoundary) {
     for (const auto& b : catalog()) {
-        if (!triangles_only(b.mesh)) continue;
+        if (!b.mesh.all_triangles()) continue;
         SchemeRequest req;
         req.scheme = Scheme::Sqrt3;
         req.levels = 3;  // steps 0, 1 (boundary), 2

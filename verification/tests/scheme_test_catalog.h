@@ -9,11 +9,7 @@
 namespace crossdiv::verification::test {
 
 /// The polygon meshes, then the bundled triangle meshes.
-inline std::vector<datasets::BundledMesh> catalog() {
-    std::vector<datasets::BundledMesh> all = datasets::polygon_meshes();
-    for (auto& b : datasets::bundled_meshes()) all.push_back(std::move(b));
-    return all;
-}
+inline std::vector<datasets::BundledMesh> catalog() { return datasets::catalog_meshes(); }
 
 /// Whether the mesh has a boundary edge.
 inline bool open_mesh(const PolyMesh& m) {

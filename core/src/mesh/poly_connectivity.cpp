@@ -3,6 +3,7 @@
 #include <string>
 
 #include "crossdiv/error.h"
+#include "one_ring_starts.h"
 
 namespace crossdiv {
 namespace {
@@ -83,28 +84,8 @@ PolyConnectivity build_poly_connectivity(const PolyMesh& mesh) {
     }
 
     // One-ring entry corners; a vertex whose corners do not form one fan is a bowtie.
-    for (int v = 0; v < nv; ++v) {
-        const int begin = out_start[v], end = out_start[v + 1];
-        if (begin == end) continue;  // isolated
-        int start = -1, boundary_fans = 0;
-        for (int k = begin; k < end; ++k) {
-            const int c = out_corners[k];
-            if (conn.twin[conn.prev[c]] < 0) {
-                ++boundary_fans;
-                if (start < 0) start = c;
-            }
-        }
-        if (start < 0) start = out_corners[begin];
-        int visited = 0;
-        for (int c = start; c >= 0; c = conn.next_around_vertex(c)) {
-            ++visited;
-            if (conn.next_around_vertex(c) == start) break;
-        }
-        if (boundary_fans > 1 || visited != end - begin)
-            throw InputError(src.describe_vertex(v) + " is non-manifold: its " + std::to_string(end - begin) +
-                             " faces form more than one fan (bowtie vertex)");
-        conn.vertex_corner[v] = start;
-    }
+    detail::find_one_ring_starts(
+        conn, out_start, out_corners, [&](int c) { return conn.twin[conn.prev[c]] < 0; }, src, "faces");
     return conn;
 }
 

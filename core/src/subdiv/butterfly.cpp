@@ -18,10 +18,10 @@ public:
     /// The four-point rule along the boundary polygon; c is the boundary edge's corner.
     void boundary(int c) {
         const int a0 = conn_.corner_vertex[c], a1 = conn_.head(c);
-        st_.add(conn_.corner_vertex[conn_.prev[conn_.vertex_corner[a0]]], kFourPointOuter);
+        st_.add(conn_.boundary_neighbors(a0).before, kFourPointOuter);
         st_.add(a0, kFourPointInner);
         st_.add(a1, kFourPointInner);
-        st_.add(conn_.head(conn_.fan(a1).last), kFourPointOuter);
+        st_.add(conn_.boundary_neighbors(a1).after, kFourPointOuter);
     }
 
     /// The eight-point stencil of the interior edge of corner c (a0 -> a1, twin t).

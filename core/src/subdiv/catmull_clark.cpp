@@ -32,8 +32,9 @@ RefinementStep catmull_clark_step(const PolyMesh& mesh, const PolyConnectivity& 
         if (conn.is_boundary_vertex(v)) {
             const CatmullClarkBoundaryMask m = catmull_clark_boundary_vertex_mask(options.boundary, faces);
             if (m.neighbor != 0.0) {
-                st.add(conn.corner_vertex[conn.prev[start]], m.neighbor);
-                st.add(conn.head(fan.last), m.neighbor);
+                const PolyConnectivity::BoundaryNeighbors nb = conn.boundary_neighbors(v, fan);
+                st.add(nb.before, m.neighbor);
+                st.add(nb.after, m.neighbor);
             }
             st.add(v, m.self);
         } else {

@@ -28,8 +28,9 @@ bool boundary_or_isolated_limit(const PolyConnectivity& conn, const std::vector<
     }
     if (!conn.is_boundary_vertex(v)) return false;
     const PolyConnectivity::Fan fan = conn.fan(v);
-    const Vec3& a = positions[conn.corner_vertex[conn.prev[start]]];
-    const Vec3& b = positions[conn.head(fan.last)];
+    const PolyConnectivity::BoundaryNeighbors nb = conn.boundary_neighbors(v, fan);
+    const Vec3& a = positions[nb.before];
+    const Vec3& b = positions[nb.after];
     out.position[v] = corner_rule && fan.faces == 1 ? p : Vec3((2.0 / 3.0) * p + (1.0 / 6.0) * (a + b));
     return true;
 }

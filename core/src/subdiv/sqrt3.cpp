@@ -7,18 +7,6 @@
 #include "level_loop.h"
 
 namespace crossdiv {
-namespace {
-
-/// The boundary neighbours of boundary vertex v: the one the boundary comes from (before)
-/// and the one it goes to (after), in the orientation of the faces.
-struct BoundaryNeighbors {
-    int before, after;
-};
-BoundaryNeighbors boundary_neighbors(const PolyConnectivity& conn, int v) {
-    return {conn.corner_vertex[conn.prev[conn.vertex_corner[v]]], conn.head(conn.fan(v).last)};
-}
-
-}  // namespace
 
 RefinementStep sqrt3_step(const PolyMesh& mesh, const PolyConnectivity& conn, bool refine_boundary) {
     const int nv = mesh.num_vertices(), nf = mesh.num_faces(), ne = conn.num_edges();
@@ -51,7 +39,7 @@ RefinementStep sqrt3_step(const PolyMesh& mesh, const PolyConnectivity& conn, bo
             st.add(v, 1.0);
         } else if (conn.is_boundary_vertex(v)) {
             if (refine_boundary) {
-                const BoundaryNeighbors nb = boundary_neighbors(conn, v);
+                const PolyConnectivity::BoundaryNeighbors nb = conn.boundary_neighbors(v);
                 st.add(nb.before, kSqrt3BoundaryVertexNeighbor);
                 st.add(v, kSqrt3BoundaryVertexSelf);
                 st.add(nb.after, kSqrt3BoundaryVertexNeighbor);
@@ -81,7 +69,7 @@ RefinementStep sqrt3_step(const PolyMesh& mesh, const PolyConnectivity& conn, bo
             continue;
         }
         const int a = conn.corner_vertex[bc], b = conn.head(bc);
-        const int before_a = boundary_neighbors(conn, a).before, after_b = boundary_neighbors(conn, b).after;
+        const int before_a = conn.boundary_neighbors(a).before, after_b = conn.boundary_neighbors(b).after;
         st.add(before_a, kSqrt3BoundaryEdgeFar);
         st.add(a, kSqrt3BoundaryEdgeNear);
         st.add(b, kSqrt3BoundaryEdgeOther);

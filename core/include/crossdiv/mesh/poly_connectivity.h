@@ -59,6 +59,17 @@ struct PolyConnectivity {
         }
         return f;
     }
+
+    /// The two boundary neighbours of boundary vertex v, in the faces' orientation: the
+    /// boundary comes in from `before` (before -> v is a boundary half-edge) and goes on to
+    /// `after`. `f` is fan(v), for callers that have it already.
+    struct BoundaryNeighbors {
+        int before, after;
+    };
+    BoundaryNeighbors boundary_neighbors(int v, const Fan& f) const {
+        return {corner_vertex[prev[vertex_corner[v]]], head(f.last)};
+    }
+    BoundaryNeighbors boundary_neighbors(int v) const { return boundary_neighbors(v, fan(v)); }
 };
 
 /// Builds the tables in O(sum of valence^2) with flat arrays (no edge map).

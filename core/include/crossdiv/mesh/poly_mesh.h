@@ -26,6 +26,12 @@ struct PolyMesh {
     int num_faces() const { return static_cast<int>(face_start.size()) - 1; }
     int face_size(int f) const { return face_start[f + 1] - face_start[f]; }
     const int* face(int f) const { return face_vertices.data() + face_start[f]; }
+    /// Whether every face is a triangle (the input of Loop, sqrt3 and the Butterflies).
+    bool all_triangles() const {
+        for (int f = 0; f < num_faces(); ++f)
+            if (face_size(f) != 3) return false;
+        return true;
+    }
 
     /// Appends a face given by its corner vertex indices.
     template <class Range>

@@ -26,6 +26,10 @@ std::vector<BundledMesh> bundled_meshes();
 /// "polygons:all". Not in bundled_meshes(), whose every member is a Loop input.
 std::vector<BundledMesh> polygon_meshes();
 
+/// The polygon meshes, then the bundled (triangle) meshes: the catalog the scheme and limit
+/// studies run over.
+std::vector<BundledMesh> catalog_meshes();
+
 /// One bundled or polygon mesh by name. @throws InputError naming the unknown name and listing the known ones.
 PolyMesh bundled_mesh(const std::string& name);
 
