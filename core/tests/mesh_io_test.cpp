@@ -72,7 +72,7 @@ TEST(MeshIo, OffRoundTripAndColors) {
 
 TEST(MeshIo, ObjErrorsNameFileAndLine) {
     EXPECT_EQ(obj_error("v 0 0 0\nv 1 0\nf 1 2 1\n"), "t.obj:2: missing z coordinate");
-    EXPECT_EQ(obj_error("v 0 0 0\nv 1 0 nan\n"), "t.obj:2: z coordinate is nan; coordinates must be finite");
+    EXPECT_EQ(obj_error("v 0 0 0\nv 1 0 nan\n"), "t.obj:2: z coordinate is nan; numbers must be finite");
     EXPECT_EQ(obj_error("v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 4\n"),
               "t.obj:4: vertex index 4 out of range: the file has 3 vertices");
     EXPECT_EQ(obj_error("v 0 0 0\nf 0 1 1\n"), "t.obj:2: vertex index 0: OBJ indices start at 1");
@@ -86,6 +86,44 @@ TEST(MeshIo, ObjSkipsUnknownStatementsWithANote) {
     EXPECT_EQ(m.num_faces(), 1);
     ASSERT_EQ(m.source.notes.size(), 1u);
     EXPECT_EQ(m.source.notes[0], "skipped 2 line(s) with an unknown statement, the first at t.obj:1 ('<html><pre>')");
+}
+
+TEST(MeshIo, ObjReadsOpenSubdivCreaseTags) {
+    const std::string quad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
+    const PolyMesh m = obj(quad + "t crease 2/1/0 0 1 2.5\nt crease 4/2/0 1 2 2 3 1 10\nt corner 2/1/0 0 3 4\n" +
+                           "t creasemethod 0/0/1 chaikin\nt interpolateboundary 1/0/0 2\n");
+    ASSERT_EQ(m.creases.edges.size(), 3u);
+    EXPECT_EQ(m.creases.edges[0], (SharpEdge{0, 1, 2.5f}));
+    EXPECT_EQ(m.creases.edges[1], (SharpEdge{1, 2, 1.0f}));  // one value per pair
+    EXPECT_EQ(m.creases.edges[2], (SharpEdge{2, 3, 10.0f}));
+    EXPECT_EQ(m.creases.edge_line, (std::vector<int>{6, 7, 7}));
+    ASSERT_EQ(m.creases.vertices.size(), 2u);
+    EXPECT_EQ(m.creases.vertices[1], (SharpVertex{3, 4.0f}));  // one value for all
+    EXPECT_EQ(m.creases.method, CreaseMethod::Chaikin);
+    ASSERT_EQ(m.source.notes.size(), 1u);  // interpolateboundary is not ours: said, not dropped silently
+    EXPECT_EQ(m.source.notes[0],
+              "ignored tag 'interpolateboundary' at t.obj:10 (only crease, corner and creasemethod are read)");
+
+    // Written back in the same format, they read back equal.
+    std::ostringstream out;
+    write_obj(out, m);
+    const PolyMesh back = obj(out.str());
+    EXPECT_EQ(back.creases.edges, m.creases.edges);
+    EXPECT_EQ(back.creases.vertices, m.creases.vertices);
+    EXPECT_EQ(back.creases.method, m.creases.method);
+
+    EXPECT_EQ(obj_error(quad + "t crease 2/1/0 0 9 1\n"),
+              "t.obj:6: tag vertex index 9 out of range: tags count from 0 and the file has 4 vertices");
+    EXPECT_EQ(obj_error(quad + "t crease 2/1/0 0 1 -1\n"), "t.obj:6: tag 'crease': sharpness -1.000000 is negative");
+    EXPECT_EQ(obj_error(quad + "t crease 2/1/0 0 1 nan\n"), "t.obj:6: tag float argument is nan; numbers must be finite");
+    EXPECT_EQ(obj_error(quad + "t crease 3/1/0 0 1 2 1\n"), "t.obj:6: tag 'crease': needs vertex index pairs, got 3 integer(s)");
+    EXPECT_EQ(obj_error(quad + "t crease 2/1/0 0 1\n"), "t.obj:6: missing tag float argument");
+    EXPECT_EQ(obj_error(quad + "t crease 2/2/0 0 1 1 2\n"),
+              "t.obj:6: tag 'crease': 2 sharpness values for 1 item(s); give 1 or 1");
+    EXPECT_EQ(obj_error(quad + "t crease 2-1-0 0 1 1\n"),
+              "t.obj:6: tag 'crease': expected counts as nint/nfloat/nstring, got '2-1-0'");
+    EXPECT_EQ(obj_error(quad + "t creasemethod 0/0/1 smooth\n"),
+              "t.obj:6: tag 'creasemethod': expects one string, 'normal' or 'chaikin'");
 }
 
 TEST(MeshIo, OffErrorsNameFileAndLine) {

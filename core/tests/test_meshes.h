@@ -1,6 +1,8 @@
 #pragma once
 // Tiny polygon meshes the scheme tests compute by hand.
 
+#include <array>
+
 #include "crossdiv/mesh/poly_mesh.h"
 
 namespace crossdiv::test {
@@ -24,6 +26,16 @@ inline PolyMesh square() {
     PolyMesh m;
     m.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
     m.add_face({0, 1, 2, 3});
+    return m;
+}
+
+/// The octahedron with vertices 0..5 = +x, -x, +y, -y, +z, -z; outward triangles, every
+/// vertex of valence 4. Its equator (z = 0) is the loop 0-2-1-3-0.
+inline PolyMesh octahedron() {
+    PolyMesh m;
+    m.positions = {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0, 0, 1), Vec3(0, 0, -1)};
+    for (auto f : {std::array{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}})
+        m.add_face(f);
     return m;
 }
 

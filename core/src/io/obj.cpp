@@ -1,3 +1,4 @@
+#include <charconv>
 #include <ostream>
 #include <span>
 #include <stdexcept>
@@ -8,6 +9,89 @@
 #include "line_reader.h"
 
 namespace crossdiv {
+namespace {
+
+/// Reads the arguments of a tag line after its name, `t NAME nint/nfloat/nstring ints floats
+/// strings` (the shape-file tag format of OpenSubdiv's regression suite), and stores the
+/// crease, corner and creasemethod tags. Returns false for a tag name it does not know.
+bool read_tag(io_detail::LineReader& r, std::string_view name, CreaseTags& tags) {
+    const std::string_view counts = r.token();
+    const size_t s1 = counts.find('/'), s2 = s1 == std::string_view::npos ? s1 : counts.find('/', s1 + 1);
+    if (s2 == std::string_view::npos)
+        r.fail("tag '" + std::string(name) + "': expected counts as nint/nfloat/nstring, got '" + std::string(counts) + "'");
+    const long ni = r.integer(counts.substr(0, s1), "tag integer count");
+    const long nf = r.integer(counts.substr(s1 + 1, s2 - s1 - 1), "tag float count");
+    const long ns = r.integer(counts.substr(s2 + 1), "tag string count");
+    if (ni < 0 || nf < 0 || ns < 0 || ni > 1'000'000 || nf > 1'000'000 || ns > 1'000'000)
+        r.fail("tag '" + std::string(name) + "': counts out of range");
+    std::vector<long> ints;
+    std::vector<double> reals;
+    std::vector<std::string_view> strings;
+    for (long k = 0; k < ni; ++k) ints.push_back(r.integer("tag integer argument"));
+    for (long k = 0; k < nf; ++k) reals.push_back(r.real("tag float argument"));
+    for (long k = 0; k < ns; ++k) {
+        strings.push_back(r.token());
+        if (strings.back().empty()) r.fail("tag '" + std::string(name) + "': missing string argument");
+    }
+    if (!r.at_end_of_line()) r.fail("tag '" + std::string(name) + "': more arguments than its counts announce");
+
+    auto sharpness = [&](size_t k, size_t items) {
+        // One value for all, or one per item (the pair or vertex), in order. (OpenSubdiv's own
+        // regression reader, far_utils.h, indexes per-pair values by integer position,
+        // floatargs[j], which is a different value from the second pair on; its shape files
+        // give one pair per tag, where the two readings agree.)
+        if (reals.size() != 1 && reals.size() != items)
+            r.fail("tag '" + std::string(name) + "': " + std::to_string(reals.size()) + " sharpness values for " +
+                   std::to_string(items) + " item(s); give 1 or " + std::to_string(items));
+        const double s = reals.size() == 1 ? reals[0] : reals[k];
+        if (s < 0) r.fail("tag '" + std::string(name) + "': sharpness " + std::to_string(s) + " is negative");
+        return static_cast<float>(s);
+    };
+    if (name == "crease") {
+        if (ints.size() < 2 || ints.size() % 2 != 0)
+            r.fail("tag 'crease': needs vertex index pairs, got " + std::to_string(ints.size()) + " integer(s)");
+        for (size_t k = 0; k < ints.size(); k += 2) {
+            if (ints[k] == ints[k + 1]) r.fail("tag 'crease': edge (" + std::to_string(ints[k]) + ", " +
+                                               std::to_string(ints[k]) + ") joins a vertex to itself");
+            tags.edges.push_back({static_cast<int>(ints[k]), static_cast<int>(ints[k + 1]), sharpness(k / 2, ints.size() / 2)});
+            tags.edge_line.push_back(r.line_number());
+        }
+        return true;
+    }
+    if (name == "corner") {
+        if (ints.empty()) r.fail("tag 'corner': needs at least one vertex index");
+        for (size_t k = 0; k < ints.size(); ++k) {
+            tags.vertices.push_back({static_cast<int>(ints[k]), sharpness(k, ints.size())});
+            tags.vertex_line.push_back(r.line_number());
+        }
+        return true;
+    }
+    if (name == "creasemethod") {
+        if (strings.size() != 1 || (strings[0] != "normal" && strings[0] != "chaikin"))
+            r.fail("tag 'creasemethod': expects one string, 'normal' or 'chaikin'");
+        tags.method = strings[0] == "normal" ? CreaseMethod::Uniform : CreaseMethod::Chaikin;
+        return true;
+    }
+    return false;
+}
+
+/// Tag indices are 0-based vertex indices; checked once every vertex is read.
+void check_tag_indices(const io_detail::LineReader& r, const PolyMesh& mesh) {
+    const long nv = mesh.num_vertices();
+    auto check = [&](long v, int line) {
+        if (v < 0 || v >= nv)
+            r.fail_at(line, "tag vertex index " + std::to_string(v) + " out of range: tags count from 0 and the file has " +
+                                std::to_string(nv) + " vertices");
+    };
+    for (size_t k = 0; k < mesh.creases.edges.size(); ++k) {
+        check(mesh.creases.edges[k].a, mesh.creases.edge_line[k]);
+        check(mesh.creases.edges[k].b, mesh.creases.edge_line[k]);
+    }
+    for (size_t k = 0; k < mesh.creases.vertices.size(); ++k)
+        check(mesh.creases.vertices[k].v, mesh.creases.vertex_line[k]);
+}
+
+}  // namespace
 
 PolyMesh read_obj(std::istream& in, const std::string& name) {
     io_detail::LineReader r(in, name);
@@ -50,8 +134,15 @@ PolyMesh read_obj(std::istream& in, const std::string& name) {
             mesh.add_face(corners);
             mesh.source.face_line.push_back(r.line_number());
         } else if (kw == "vt" || kw == "vn" || kw == "vp" || kw == "g" || kw == "o" || kw == "s" ||
-                   kw == "usemtl" || kw == "mtllib" || kw == "l" || kw == "p" || kw == "t") {
+                   kw == "usemtl" || kw == "mtllib" || kw == "l" || kw == "p") {
             continue;  // not geometry the schemes use
+        } else if (kw == "t") {
+            const std::string name(r.token());
+            if (name.empty()) r.fail("a tag line needs a tag name");
+            if (!read_tag(r, name, mesh.creases))
+                mesh.source.notes.push_back("ignored tag '" + name + "' at " + r.name() + ":" +
+                                            std::to_string(r.line_number()) +
+                                            " (only crease, corner and creasemethod are read)");
         } else if (unknown_lines++ == 0) {
             first_unknown = r.line_number();
             first_unknown_word = std::string(kw.substr(0, 40));
@@ -69,6 +160,7 @@ PolyMesh read_obj(std::istream& in, const std::string& name) {
                 r.fail_at(mesh.source.face_line[f], "vertex index " + std::to_string(mesh.face(f)[k] + 1) +
                                                         " out of range: the file has " + std::to_string(nv) +
                                                         " vertices");
+    check_tag_indices(r, mesh);
     if (!any_color) mesh.colors.clear();
     return mesh;
 }
@@ -105,6 +197,34 @@ void write_obj(std::ostream& out, const PolyMesh& mesh, std::span<const Vec3> no
                 append_int(buf, mesh.face(f)[k] + 1);
             }
         }
+        buf += '\n';
+    }
+    // Sharpness tags in the shape-file format, so OpenSubdiv's tools read them back; the
+    // float is written with 9 significant digits, enough for every float to read back exactly.
+    auto append_float = [&buf](float x) {
+        char b[32];
+        auto [p, ec] = std::to_chars(b, b + sizeof b, x, std::chars_format::general, 9);
+        buf.append(b, p);
+    };
+    for (const SharpEdge& e : mesh.creases.edges) {
+        buf += "t crease 2/1/0 ";
+        append_int(buf, e.a);
+        buf += ' ';
+        append_int(buf, e.b);
+        buf += ' ';
+        append_float(e.sharpness);
+        buf += '\n';
+    }
+    for (const SharpVertex& v : mesh.creases.vertices) {
+        buf += "t corner 1/1/0 ";
+        append_int(buf, v.v);
+        buf += ' ';
+        append_float(v.sharpness);
+        buf += '\n';
+    }
+    if (mesh.creases.method && !mesh.creases.empty()) {
+        buf += "t creasemethod 0/0/1 ";
+        buf += *mesh.creases.method == CreaseMethod::Uniform ? "normal" : "chaikin";
         buf += '\n';
     }
     out.write(buf.data(), static_cast<std::streamsize>(buf.size()));

@@ -7,6 +7,11 @@
 namespace crossdiv {
 
 TriMesh to_tri_mesh(const PolyMesh& mesh, const char* scheme) {
+    if (!mesh.creases.empty())
+        throw InputError((mesh.source.file.empty() ? std::string("the mesh") : mesh.source.file) +
+                         " has crease or corner tags; " + scheme +
+                         " works on a triangle mesh, which has no tags (only Loop and Catmull-Clark on the "
+                         "polygon mesh honour them)");
     TriMesh tri;
     tri.positions = mesh.positions;
     tri.colors = mesh.colors;

@@ -133,6 +133,7 @@ RefinementStep butterfly_step(const PolyMesh& mesh, const PolyConnectivity& conn
 
 PolyMesh butterfly_subdivide(const PolyMesh& mesh, ButterflyVariant variant, int levels) {
     detail::require_triangles(mesh, to_string(variant).data());  // also for levels = 0
+    detail::require_no_creases(mesh, to_string(variant).data());
     return detail::refine_levels(mesh, levels, [&](const PolyMesh& m, const PolyConnectivity& conn, int) {
         return butterfly_step(m, conn, variant);
     });

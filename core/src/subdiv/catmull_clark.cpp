@@ -1,12 +1,43 @@
 #include "crossdiv/subdiv/catmull_clark.h"
 
 #include <climits>
+#include <optional>
 #include <string>
 
 #include "crossdiv/error.h"
+#include "crossdiv/subdiv/crease_level.h"
 #include "level_loop.h"
 
 namespace crossdiv {
+namespace {
+
+/// The smooth interior mask in VertexPointMask form (for blending with a sharper rule).
+void set_smooth_mask(VertexPointMask& m, int valence) {
+    const CatmullClarkVertexMask w = catmull_clark_interior_vertex_mask(valence);
+    m.vertex = w.self;
+    m.has_edges = true;
+    m.edge.assign(static_cast<size_t>(valence), w.ring);
+    m.face.assign(static_cast<size_t>(valence), w.face);
+}
+
+/// The vertex point of a vertex whose rule is Crease or Corner at this level, blended with
+/// its next level's rule when that differs (OpenSubdiv's ComputeVertexVertexMask).
+void add_sharp_vertex_point(StencilTable& st, const PolyConnectivity& conn, int v, const CreaseLevel::Vertex& r,
+                            int face_point, VertexPointMask& mask, VertexPointMask& child) {
+    auto assign = [&](VertexPointMask& m, VertexRule rule, const int ends[2]) {
+        if (rule == VertexRule::Crease) m.set_crease(r.edges, ends[0], ends[1]);
+        else if (rule == VertexRule::Corner) m.set_corner();
+        else set_smooth_mask(m, r.edges);  // Smooth or Dart: an interior vertex, edges == faces
+    };
+    assign(mask, r.parent, r.parent_ends);
+    if (r.child != r.parent) {
+        assign(child, r.child, r.child_ends);
+        blend_vertex_masks(mask, child, r.weight);
+    }
+    add_vertex_point_mask(st, conn, v, mask, face_point);
+}
+
+}  // namespace
 
 RefinementStep catmull_clark_step(const PolyMesh& mesh, const PolyConnectivity& conn, const CatmullClarkOptions& options) {
     const int nv = mesh.num_vertices(), nf = mesh.num_faces(), ne = conn.num_edges(), nc = conn.num_corners();
@@ -18,6 +49,18 @@ RefinementStep catmull_clark_step(const PolyMesh& mesh, const PolyConnectivity& 
     StencilTable& st = step.stencils;
     st.reserve(static_cast<size_t>(nv) + nf + ne, 8 * static_cast<size_t>(nc) + nv);
 
+    // Crease tags switch on OpenSubdiv's sharp rules, whose boundary is edge-only or
+    // edge-and-corner; an untagged mesh takes the plain masks below (the same weights).
+    std::optional<CreaseLevel> crease;
+    if (!mesh.creases.empty()) {
+        if (options.boundary == CatmullClarkBoundary::MidpointAverage)
+            throw InputError("crease tags follow OpenSubdiv's rules, whose boundary is edge-only or edge-and-corner; "
+                             "the midpoint-average boundary rule has no creases");
+        crease.emplace(mesh, conn, options.creasing, options.boundary == CatmullClarkBoundary::EdgeAndCorner);
+        step.creases = crease->child_tags(edge_point);
+    }
+    VertexPointMask mask, child_mask;  // reused: no allocation per vertex once grown
+
     // Vertex points. The terms are added in OpenSubdiv's order (PrimvarRefiner::interpFromVerts:
     // face points, then ring vertices, then the vertex) so that rounding can match.
     for (int v = 0; v < nv; ++v) {
@@ -26,6 +69,14 @@ RefinementStep catmull_clark_step(const PolyMesh& mesh, const PolyConnectivity& 
             st.add(v, 1.0);
             st.end_row();
             continue;
+        }
+        if (crease) {
+            const CreaseLevel::Vertex& r = crease->vertex(v);
+            if (r.parent == VertexRule::Crease || r.parent == VertexRule::Corner) {
+                add_sharp_vertex_point(st, conn, v, r, face_point, mask, child_mask);
+                st.end_row();
+                continue;
+            }
         }
         const PolyConnectivity::Fan fan = conn.fan(v);
         const int faces = fan.faces;
@@ -63,14 +114,17 @@ RefinementStep catmull_clark_step(const PolyMesh& mesh, const PolyConnectivity& 
     for (int e = 0; e < ne; ++e) {
         const int c = conn.edge_corner[e], t = conn.twin[c];
         const auto& ends = conn.edge_vertices[e];
-        if (t < 0) {
-            st.add(ends[0], 0.5);
-            st.add(ends[1], 0.5);
-        } else {
-            st.add(ends[0], kCatmullClarkEdgeEnd);
-            st.add(ends[1], kCatmullClarkEdgeEnd);
-            st.add_refined(face_point + conn.corner_face[c], kCatmullClarkEdgeFace);
-            st.add_refined(face_point + conn.corner_face[t], kCatmullClarkEdgeFace);
+        EdgePointWeights w{kCatmullClarkEdgeEnd, kCatmullClarkEdgeFace};
+        if (t < 0 || (crease && crease->edge_child_is_crease(e))) {
+            w = {0.5, 0.0};  // the crease mask: the midpoint
+        } else if (crease && is_sharp(crease->edge_sharpness(e))) {
+            w = transition_edge_weights(w, crease->edge_sharpness(e));
+        }
+        st.add(ends[0], w.end);
+        st.add(ends[1], w.end);
+        if (w.other != 0.0) {
+            st.add_refined(face_point + conn.corner_face[c], w.other);
+            st.add_refined(face_point + conn.corner_face[t], w.other);
         }
         st.end_row();
     }

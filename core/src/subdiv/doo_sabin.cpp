@@ -87,6 +87,7 @@ RefinementStep doo_sabin_step(const PolyMesh& mesh, const PolyConnectivity& conn
 }
 
 PolyMesh doo_sabin_subdivide(const PolyMesh& mesh, const DooSabinOptions& options, int levels) {
+    detail::require_no_creases(mesh, "Doo-Sabin");
     return detail::refine_levels(mesh, levels, [&](const PolyMesh& m, const PolyConnectivity& conn, int) {
         return doo_sabin_step(m, conn, options);
     });

@@ -45,6 +45,7 @@ PolyMesh apply_step(const RefinementStep& step, const PolyMesh& coarse) {
     if (!coarse.colors.empty()) out.colors = step.stencils.apply(coarse.colors);
     out.face_start = step.face_start;
     out.face_vertices = step.face_vertices;
+    out.creases = step.creases;
     return out;
 }
 

@@ -109,6 +109,7 @@ RefinementStep sqrt3_step(const PolyMesh& mesh, const PolyConnectivity& conn, bo
 
 PolyMesh sqrt3_subdivide(const PolyMesh& mesh, const Sqrt3Options& options, int levels) {
     detail::require_triangles(mesh, "sqrt3");  // also for levels = 0
+    detail::require_no_creases(mesh, "sqrt3");
     return detail::refine_levels(mesh, levels, [&](const PolyMesh& m, const PolyConnectivity& conn, int level) {
         const bool odd_generation = options.parity == Sqrt3Parity::CountFromInput && level % 2 == 1;
         return sqrt3_step(m, conn, odd_generation);

@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "crossdiv/mesh/crease_tags.h"
 #include "crossdiv/mesh/source.h"
 
 namespace crossdiv {
@@ -20,6 +21,9 @@ struct PolyMesh {
     std::vector<Vec3> colors;           ///< empty, or one RGB per vertex
     std::vector<int> face_start{0};     ///< size num_faces()+1, face_start[0] == 0
     std::vector<int> face_vertices;
+    /// Crease and corner sharpness (Loop and Catmull-Clark honour them; the schemes without
+    /// crease rules refuse a tagged mesh rather than drop the tags).
+    CreaseTags creases;
     MeshSource source;
 
     int num_vertices() const { return static_cast<int>(positions.size()); }

@@ -10,6 +10,8 @@
 
 #include <string_view>
 
+#include "crossdiv/mesh/crease_tags.h"
+
 namespace crossdiv {
 
 /// How the boundary of an open mesh is refined. Every rule makes boundary edge points the
@@ -29,6 +31,8 @@ enum class CatmullClarkBoundary {
 
 struct CatmullClarkOptions {
     CatmullClarkBoundary boundary;
+    /// How semi-sharp crease tags decay (crease_mask.h); without tags it changes nothing.
+    CreaseMethod creasing = CreaseMethod::Uniform;
     friend bool operator==(const CatmullClarkOptions&, const CatmullClarkOptions&) = default;
 };
 

@@ -14,9 +14,11 @@
 #include <Eigen/SparseCore>
 #include <vector>
 
+#include "crossdiv/mesh/poly_connectivity.h"
 #include "crossdiv/mesh/tri_connectivity.h"
 #include "crossdiv/mesh/tri_mesh.h"
 #include "crossdiv/subdiv/loop_mask.h"
+#include "crossdiv/subdiv/refinement.h"
 
 namespace crossdiv {
 
@@ -70,6 +72,20 @@ TriMesh loop_refine_once(const TriMesh& mesh, const TriConnectivity& conn, const
 
 /// The connectivity of the level loop_refine_once produces, derived from the coarse one.
 TriConnectivity refine_tri_connectivity(const TriMesh& coarse, const TriConnectivity& conn);
+
+/// One Loop level of a polygon mesh whose faces are triangles, as a RefinementStep of the
+/// generic driver (loop_step.cpp), honouring the mesh's crease tags with OpenSubdiv's sharp
+/// rules (crease_mask.h); the refined tags are in the step. Vertex and face order are those of
+/// loop_refine_once on the same mesh (both connectivities number edges in scan order); over
+/// several levels the orders part, as the fast driver numbers the halves of coarse edges
+/// first while this one rebuilds the connectivity in scan order. Positions agree.
+/// @throws InputError naming the first face that is not a triangle, or a bad tag.
+RefinementStep loop_step(const PolyMesh& mesh, const PolyConnectivity& conn, const LoopOptions& options);
+
+/// `levels` Loop levels of a polygon mesh of triangles, crease tags honoured (the result
+/// carries the decayed tags). Untagged meshes take the fast driver; tagged ones loop_step.
+/// @throws InputError as loop_step or LoopRefiner.
+PolyMesh loop_subdivide(const PolyMesh& mesh, const LoopOptions& options, int levels);
 
 /// Checks what Loop needs (finite coordinates; the rest is checked by building the
 /// connectivity) and returns the connectivity. @throws InputError naming the element.

@@ -11,6 +11,8 @@
 #include <cmath>
 #include <string_view>
 
+#include "crossdiv/mesh/crease_tags.h"
+
 namespace crossdiv {
 
 /// The weight family of the even (old) vertex rule at an interior vertex of valence n.
@@ -32,10 +34,13 @@ enum class LoopBoundary {
     EdgeAndCorner,
 };
 
-/// Both rules named; there is no default, callers say which variant they mean.
+/// Both rules named; there is no default for them, callers say which variant they mean. The
+/// crease decay defaults to OpenSubdiv's (uniform); it only acts on a crease-tagged mesh.
 struct LoopOptions {
     LoopWeights weights;
     LoopBoundary boundary;
+    /// How semi-sharp crease tags decay (crease_mask.h); without tags it changes nothing.
+    CreaseMethod creasing = CreaseMethod::Uniform;
     friend bool operator==(const LoopOptions&, const LoopOptions&) = default;
 };
 

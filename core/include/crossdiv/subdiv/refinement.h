@@ -82,6 +82,7 @@ struct RefinementStep {
     StencilTable stencils;
     std::vector<int> face_start{0};
     std::vector<int> face_vertices;
+    CreaseTags creases;  ///< the refined mesh's sharpness tags (schemes with crease rules)
 
     explicit RefinementStep(int num_coarse) : stencils(num_coarse) {}
     void add_face(std::initializer_list<int> corners) {
@@ -90,8 +91,8 @@ struct RefinementStep {
     }
 };
 
-/// The refined mesh: faces of the step, positions (and colors, when the coarse mesh has
-/// them) through its stencils. The source (file lines) is not carried over.
+/// The refined mesh: faces and crease tags of the step, positions (and colors, when the
+/// coarse mesh has them) through its stencils. The source (file lines) is not carried over.
 PolyMesh apply_step(const RefinementStep& step, const PolyMesh& coarse);
 
 }  // namespace crossdiv
