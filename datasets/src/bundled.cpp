@@ -64,7 +64,9 @@ std::vector<BundledMesh> catalog_meshes() {
 
 PolyMesh bundled_mesh(const std::string& name) {
     std::string known;
-    for (const BundledMesh& b : catalog_meshes()) {
+    std::vector<BundledMesh> all = catalog_meshes();
+    for (BundledMesh& b : crease_meshes()) all.push_back(std::move(b));
+    for (const BundledMesh& b : all) {
         if (b.name == name) return b.mesh;
         known += (known.empty() ? "" : ", ") + b.name;
     }

@@ -6,6 +6,8 @@
 #include "crossdiv/error.h"
 #include "crossdiv/verification/bfr_comparison.h"
 #include "crossdiv/verification/butterfly_properties.h"
+#include "crossdiv/verification/crease_comparison.h"
+#include "crossdiv/subdiv/catmull_clark.h"
 #include "crossdiv/verification/limit_comparison.h"
 #include "crossdiv/verification/scheme_comparison.h"
 
@@ -14,8 +16,8 @@ namespace {
 
 using nlohmann::json;
 
-const std::vector<std::string> kStudies = {"limits:catmull-clark", "limits:schemes", "limits:opensubdiv",
-                                           "limits:spectrum", "limits:convergence"};
+const std::vector<std::string> kStudies = {"limits:catmull-clark", "limits:schemes", "limits:creases",
+                                           "limits:opensubdiv", "limits:spectrum", "limits:convergence"};
 
 json check(const std::string& reference, const std::string& name, const std::string& subject, double measured,
            double tolerance, const std::string& unit, const std::string& note) {
@@ -145,6 +147,39 @@ json opensubdiv_study() {
     return {{"runs", runs}, {"tables", {{"limit", rows}, {"bfr", bfr_rows}}}};
 }
 
+/// A refined mesh as {positions, faces} for the report's figures.
+json mesh_json(const PolyMesh& m) {
+    json pos = json::array(), faces = json::array();
+    for (const Vec3& p : m.positions) pos.push_back({p.x(), p.y(), p.z()});
+    for (int f = 0; f < m.num_faces(); ++f) faces.push_back(std::vector<int>(m.face(f), m.face(f) + m.face_size(f)));
+    return {{"positions", pos}, {"faces", faces}};
+}
+
+json creases_study() {
+    json runs = json::array(), rows = json::array();
+    for (const CreaseComparison& c : compare_crease_catalog()) {
+        rows.push_back(to_json(c));
+        json run = {{"reference", "opensubdiv"},
+                    {"check", std::string("creases ") + c.scheme + " " + c.method + " L" + std::to_string(c.levels)},
+                    {"curve", c.input},
+                    {"measured", std::isfinite(c.max_rel) ? json(c.max_rel) : json(nullptr)},
+                    {"tolerance", tolerances::kAgreementRelative},
+                    {"unit", "rel"},
+                    {"verdict", c.verdict},
+                    {"explanation", c.explanation}};
+        if (!c.divergence_class.empty()) run["divergence_class"] = c.divergence_class;
+        runs.push_back(run);
+    }
+    // The seed's question, as a figure: the cube refined three times, smooth, with its top
+    // edges infinitely sharp, and with every edge of sharpness 2.
+    json figure = json::object();
+    for (auto [key, variant] : {std::pair{"smooth", datasets::CreaseCubeVariant::Smooth},
+                                {"sharp-top", datasets::CreaseCubeVariant::SharpTop},
+                                {"semi-sharp-2", datasets::CreaseCubeVariant::SemiSharp}})
+        figure[key] = mesh_json(catmull_clark_subdivide(datasets::crease_cube(variant), {CatmullClarkBoundary::EdgeOnly}, 3));
+    return {{"runs", runs}, {"tables", {{"creases", rows}, {"crease_cube", figure}}}};
+}
+
 json spectrum_study() {
     json runs = json::array(), rows = json::array();
     for (const std::string s : {"loop", "warren", "catmull-clark"})
@@ -189,7 +224,7 @@ std::vector<std::string> expand_limit_inputs(const std::vector<std::string>& spe
         } else if (std::find(kStudies.begin(), kStudies.end(), s) != kStudies.end()) {
             out.push_back(s);
         } else {
-            throw InputError("'" + s + "' is not a limits study (limits:all, limits:catmull-clark, limits:schemes, limits:opensubdiv, "
+            throw InputError("'" + s + "' is not a limits study (limits:all, limits:catmull-clark, limits:schemes, limits:creases, limits:opensubdiv, "
                              "limits:spectrum, limits:convergence)");
         }
     }
@@ -199,6 +234,7 @@ std::vector<std::string> expand_limit_inputs(const std::vector<std::string>& spe
 json check_limits(const std::string& input) {
     json rec = input == "limits:catmull-clark" ? catmull_clark_study()
                : input == "limits:schemes"     ? schemes_study()
+               : input == "limits:creases"     ? creases_study()
                : input == "limits:opensubdiv"  ? opensubdiv_study()
                : input == "limits:spectrum"    ? spectrum_study()
                : input == "limits:convergence" ? convergence_study()

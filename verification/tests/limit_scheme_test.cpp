@@ -129,7 +129,7 @@ TEST(BfrComparison, ExactAtLevelOneDyadicPointsEvenOnIrregularFaces) {
 
 TEST(LimitChecks, UnknownStudyIsRefused) {
     EXPECT_THROW(expand_limit_inputs({"limits:eigen"}), InputError);
-    EXPECT_EQ(expand_limit_inputs({"limits:all"}).size(), 5u);
+    EXPECT_EQ(expand_limit_inputs({"limits:all"}).size(), 6u);
 }
 
 }  // namespace

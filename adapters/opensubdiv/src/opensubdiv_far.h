@@ -17,6 +17,11 @@ namespace crossdiv::adapters::opensubdiv::detail {
 
 using namespace OpenSubdiv;
 
+/// Sdc's creasing method for ours.
+inline Sdc::Options::CreasingMethod creasing(CreaseMethod m) {
+    return m == CreaseMethod::Uniform ? Sdc::Options::CREASE_UNIFORM : Sdc::Options::CREASE_CHAIKIN;
+}
+
 /// Primvar with the Clear/AddWithWeight interface PrimvarRefiner expects.
 struct Point3 {
     double p[3];
@@ -38,14 +43,32 @@ inline void collect_far_error(Far::ErrorType, const char* message) {
 
 /// Far's refiner for a polygon mesh given as face sizes and corner indices (not refined yet).
 /// @throws Rejected with Far's own words when the factory refuses the mesh.
+/// Crease and corner tags go to the descriptor's sharpness arrays, as given (Far sharpens the
+/// boundary itself).
 inline std::unique_ptr<Far::TopologyRefiner> make_refiner(int num_vertices, const std::vector<int>& face_sizes,
                                                           const std::vector<int>& corners, Sdc::SchemeType scheme,
-                                                          const Sdc::Options& sdc) {
+                                                          const Sdc::Options& sdc, const CreaseTags& tags = {}) {
     Far::TopologyDescriptor desc;
     desc.numVertices = num_vertices;
     desc.numFaces = static_cast<int>(face_sizes.size());
     desc.numVertsPerFace = face_sizes.data();
     desc.vertIndicesPerFace = corners.data();
+    std::vector<int> crease_pairs, corner_vertices;
+    std::vector<float> crease_weights, corner_weights;
+    for (const SharpEdge& e : tags.edges) {
+        crease_pairs.insert(crease_pairs.end(), {e.a, e.b});
+        crease_weights.push_back(e.sharpness);
+    }
+    for (const SharpVertex& v : tags.vertices) {
+        corner_vertices.push_back(v.v);
+        corner_weights.push_back(v.sharpness);
+    }
+    desc.numCreases = static_cast<int>(crease_weights.size());
+    desc.creaseVertexIndexPairs = crease_pairs.data();
+    desc.creaseWeights = crease_weights.data();
+    desc.numCorners = static_cast<int>(corner_weights.size());
+    desc.cornerVertexIndices = corner_vertices.data();
+    desc.cornerWeights = corner_weights.data();
     g_far_errors.clear();
     Far::SetErrorCallback(collect_far_error);
     using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
@@ -58,7 +81,7 @@ inline std::unique_ptr<Far::TopologyRefiner> make_refiner(const PolyMesh& mesh, 
                                                           const Sdc::Options& sdc) {
     std::vector<int> sizes(static_cast<size_t>(mesh.num_faces()));
     for (int f = 0; f < mesh.num_faces(); ++f) sizes[f] = mesh.face_size(f);
-    return make_refiner(mesh.num_vertices(), sizes, mesh.face_vertices, scheme, sdc);
+    return make_refiner(mesh.num_vertices(), sizes, mesh.face_vertices, scheme, sdc, mesh.creases);
 }
 
 /// Uniform refinement; full topology in the last level when asked (edges, for Limit()).

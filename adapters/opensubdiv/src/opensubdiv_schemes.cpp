@@ -23,6 +23,7 @@ Sdc::Options catmark_options(const CatmullClarkOptions& options) {
     sdc.SetVtxBoundaryInterpolation(options.boundary == CatmullClarkBoundary::EdgeOnly
                                         ? Sdc::Options::VTX_BOUNDARY_EDGE_ONLY
                                         : Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
+    sdc.SetCreasingMethod(creasing(options.creasing));
     return sdc;
 }
 
@@ -32,6 +33,7 @@ Sdc::Options loop_options(const LoopOptions& options) {
     sdc.SetVtxBoundaryInterpolation(options.boundary == LoopBoundary::EdgeOnly
                                         ? Sdc::Options::VTX_BOUNDARY_EDGE_ONLY
                                         : Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
+    sdc.SetCreasingMethod(creasing(options.creasing));
     return sdc;
 }
 
@@ -67,6 +69,12 @@ std::vector<int> triangle_corners(const TriMesh& mesh) {
 
 LevelTrace catmull_clark(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels) {
     std::unique_ptr<Far::TopologyRefiner> refiner = make_refiner(mesh, Sdc::SCHEME_CATMARK, catmark_options(options));
+    refine_uniform(*refiner, levels, true);
+    return interpolate_trace(*refiner, mesh.positions);
+}
+
+LevelTrace loop(const PolyMesh& mesh, const LoopOptions& options, int levels) {
+    std::unique_ptr<Far::TopologyRefiner> refiner = make_refiner(mesh, Sdc::SCHEME_LOOP, loop_options(options));
     refine_uniform(*refiner, levels, true);
     return interpolate_trace(*refiner, mesh.positions);
 }

@@ -30,6 +30,22 @@ std::vector<BundledMesh> polygon_meshes();
 /// studies run over.
 std::vector<BundledMesh> catalog_meshes();
 
+/// The crease-tagged meshes (crease and corner tags as OpenSubdiv's shape files give them):
+/// quad meshes for Catmull-Clark, then triangle meshes for Loop and Catmull-Clark alike.
+/// Infinitely sharp, semi-sharp and fractional sharpness, varying sharpness along a crease
+/// (Chaikin decay), darts, crease lines meeting a border, corner tags. Names start "crease-".
+std::vector<BundledMesh> crease_meshes();
+
+/// The cube of the seed's question "what happens to sharp features?".
+enum class CreaseCubeVariant {
+    Smooth,     ///< no tags
+    SharpTop,   ///< the four edges of the top face infinitely sharp
+    SemiSharp,  ///< all edges of sharpness 2
+    Sharp,      ///< all edges infinitely sharp
+};
+/// The quad cube [-1, 1]^3 with the variant's tags.
+PolyMesh crease_cube(CreaseCubeVariant variant);
+
 /// One bundled or polygon mesh by name. @throws InputError naming the unknown name and listing the known ones.
 PolyMesh bundled_mesh(const std::string& name);
 

@@ -19,6 +19,15 @@ public:
     explicit Rejected(const std::string& why) : std::runtime_error(why) {}
 };
 
+/// @throws Rejected when `mesh` has crease or corner tags and `library` has no crease rules:
+///         refining it smooth would answer a different question.
+inline void reject_crease_tags(const PolyMesh& mesh, const char* library) {
+    if (!mesh.creases.empty())
+        throw Rejected(std::string(library) + " has no crease rules; the mesh has " +
+                       std::to_string(mesh.creases.edges.size()) + " crease and " +
+                       std::to_string(mesh.creases.vertices.size()) + " corner tag(s)");
+}
+
 /// Each level of a refinement as the library holds it: levels[0] is the input as the
 /// library stored it, levels[k] the mesh after k subdivision steps, vertices and faces in
 /// the library's own order.

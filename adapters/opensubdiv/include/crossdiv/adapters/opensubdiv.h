@@ -27,6 +27,12 @@ bool supports(const LoopOptions& options);
 /// @throws Rejected for Warren weights or when Far's factory reports a topology error.
 LevelTrace loop(const TriMesh& mesh, const LoopOptions& options, int levels);
 
+/// Loop refinement of a polygon mesh of triangles with its crease and corner tags (the
+/// descriptor's creaseVertexIndexPairs/cornerVertexIndices) and options.creasing
+/// (CREASE_UNIFORM or CREASE_CHAIKIN). Far's factory rejects a face that is not a triangle.
+/// @throws Rejected as loop(), and when a tag names an edge the mesh does not have.
+LevelTrace loop(const PolyMesh& mesh, const LoopOptions& options, int levels);
+
 /// The same refinement in the library's own structures, with nothing converted back: what
 /// `crossdiv bench` times. Returns the number of output faces. @throws as loop().
 size_t loop_native(const TriMesh& mesh, const LoopOptions& options, int levels);
@@ -54,7 +60,8 @@ LimitEvaluation loop_limit_surface(const PolyMesh& mesh, int face, std::span<con
 bool supports(const CatmullClarkOptions& options);
 
 /// `levels` uniform Catmull-Clark levels of a polygon mesh (any face sizes), every level kept
-/// in Far's order (old vertices first, then one per face, then one per edge).
+/// in Far's order (old vertices first, then one per face, then one per edge). Crease and
+/// corner tags and options.creasing go to Far as for loop(const PolyMesh&, ...).
 /// @throws Rejected for the midpoint-average rule or when Far's factory reports an error.
 LevelTrace catmull_clark(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels);
 

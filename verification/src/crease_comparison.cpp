@@ -1,0 +1,144 @@
+#include "crossdiv/verification/crease_comparison.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "crossdiv/datasets/bundled.h"
+#include "crossdiv/error.h"
+#include "crossdiv/subdiv/catmull_clark.h"
+#include "crossdiv/subdiv/loop.h"
+#include "crossdiv/verification/compare.h"
+#include "crossdiv/verification/correspondence.h"
+#include "crossdiv/verification/isolate.h"
+#ifdef CROSSDIV_HAS_OPENSUBDIV
+#include "crossdiv/adapters/opensubdiv.h"
+#endif
+
+namespace crossdiv::verification {
+namespace {
+
+/// Core's levels 1..N (each level refines the previous one, tags and all).
+std::vector<PolyMesh> core_levels(const PolyMesh& mesh, const CreaseRequest& req) {
+    std::vector<PolyMesh> out;
+    PolyMesh current = mesh;
+    for (int l = 0; l < req.levels; ++l) {
+        current = req.loop ? loop_subdivide(current, {LoopWeights::Loop, LoopBoundary::EdgeOnly, req.method}, 1)
+                           : catmull_clark_subdivide(current, {CatmullClarkBoundary::EdgeOnly, req.method}, 1);
+        out.push_back(current);
+    }
+    return out;
+}
+
+}  // namespace
+
+CreaseComparison compare_creases(const PolyMesh& mesh, const std::string& name, const CreaseRequest& req) {
+    CreaseComparison c;
+    c.input = name;
+    c.scheme = req.loop ? "loop" : "catmull-clark";
+    c.method = std::string(to_string(req.method));
+    c.levels = req.levels;
+    c.edge_tags = static_cast<int>(mesh.creases.edges.size());
+    c.vertex_tags = static_cast<int>(mesh.creases.vertices.size());
+
+    std::vector<PolyMesh> ours;
+    try {
+        ours = core_levels(mesh, req);
+        PolyMesh untagged = mesh;
+        untagged.creases = {};
+        const PolyMesh smooth = core_levels(untagged, req).back();
+        const double diag = bounding_box_diagonal(ours.back().positions);
+        double effect = 0;  // same order: the tags change weights, not topology, at one level
+        if (smooth.num_vertices() == ours.back().num_vertices() && req.levels == 1)
+            for (int v = 0; v < smooth.num_vertices(); ++v)
+                effect = std::max(effect, (smooth.positions[v] - ours.back().positions[v]).norm());
+        else
+            effect = hausdorff_vertex_sets(smooth.positions, ours.back().positions);
+        c.effect_of_tags = effect / diag;
+    } catch (const InputError& e) {
+        c.core_error = e.what();
+    }
+
+#ifdef CROSSDIV_HAS_OPENSUBDIV
+    const CreaseRequest r = req;
+    IsolatedTrace it = run_isolated(
+        [&] {
+            return r.loop ? adapters::opensubdiv::loop(mesh, {LoopWeights::Loop, LoopBoundary::EdgeOnly, r.method}, r.levels)
+                          : adapters::opensubdiv::catmull_clark(mesh, {CatmullClarkBoundary::EdgeOnly, r.method}, r.levels);
+        },
+        req.timeout_seconds, req.isolate);
+    if (it.outcome.status == RunStatus::Rejected) {
+        c.verdict = "ref-rejected";
+        c.explanation = it.outcome.message;
+        return c;
+    }
+    if (it.outcome.status != RunStatus::Ok) {
+        c.verdict = "ref-crashed";
+        c.explanation = it.outcome.summary();
+        return c;
+    }
+    if (!c.core_error.empty()) {
+        c.verdict = "ours-rejected";
+        c.explanation = "core refused the tags; OpenSubdiv refined the mesh (Far only warns about a bad tag)";
+        return c;
+    }
+    c.faces_equal = true;
+    for (int l = 1; l <= req.levels; ++l) {
+        const PolyMesh& theirs = (*it.trace)[static_cast<size_t>(l)];
+        const Correspondence m = match_nearest_and_faces(ours[static_cast<size_t>(l - 1)], theirs);
+        if (m.method == MatchMethod::None) {
+            c.verdict = "diverge";
+            c.divergence_class = "topology";
+            c.faces_equal = false;
+            c.explanation = "level " + std::to_string(l) + ": no vertex bijection (" + m.note + ")";
+            return c;
+        }
+        const MeshComparison mc = compare_meshes(ours[static_cast<size_t>(l - 1)], theirs, m.ref_to_ours, 1);
+        c.faces_equal = c.faces_equal && mc.topology_equal();
+        c.max_rel_per_level.push_back(mc.max_rel);
+    }
+    c.max_rel = c.max_rel_per_level.back();
+    const double worst = *std::max_element(c.max_rel_per_level.begin(), c.max_rel_per_level.end());
+    const bool agree = c.faces_equal && worst <= req.tolerance;
+    c.verdict = agree ? "agree" : "diverge";
+    if (!agree) c.divergence_class = c.faces_equal ? "unexplained" : "topology";
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "%d edge and %d vertex tags, %s decay; worst level %.2e of the diagonal; the tags "
+                  "move the surface by %.2e", c.edge_tags, c.vertex_tags, c.method.c_str(), worst, c.effect_of_tags);
+    c.explanation = buf;
+#else
+    c.verdict = "ref-rejected";
+    c.explanation = "this build has no OpenSubdiv";
+#endif
+    return c;
+}
+
+std::vector<CreaseComparison> compare_crease_catalog() {
+    std::vector<CreaseComparison> out;
+    for (const datasets::BundledMesh& b : datasets::crease_meshes())
+        for (bool loop : {false, true}) {
+            if (loop && !b.mesh.all_triangles()) continue;
+            for (CreaseMethod method : {CreaseMethod::Uniform, CreaseMethod::Chaikin}) {
+                CreaseRequest req;
+                req.loop = loop;
+                req.method = method;
+                out.push_back(compare_creases(b.mesh, "bundled:" + b.name, req));
+            }
+        }
+    return out;
+}
+
+nlohmann::json to_json(const CreaseComparison& c) {
+    auto num = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
+    nlohmann::json levels = nlohmann::json::array();
+    for (double x : c.max_rel_per_level) levels.push_back(num(x));
+    nlohmann::json j = {{"input", c.input},          {"scheme", c.scheme},           {"method", c.method},
+                        {"levels", c.levels},        {"edge_tags", c.edge_tags},     {"vertex_tags", c.vertex_tags},
+                        {"verdict", c.verdict},      {"max_rel", num(c.max_rel)},    {"max_rel_per_level", levels},
+                        {"faces_equal", c.faces_equal}, {"effect_of_tags", num(c.effect_of_tags)},
+                        {"explanation", c.explanation}};
+    if (!c.core_error.empty()) j["core_error"] = c.core_error;
+    if (!c.divergence_class.empty()) j["divergence_class"] = c.divergence_class;
+    return j;
+}
+
+}  // namespace crossdiv::verification
