@@ -22,6 +22,9 @@
 #include "crossdiv/verification/references.h"
 #include "crossdiv/verification/shrink.h"
 #include "crossdiv/verification/suite.h"
+#ifdef CROSSDIV_HAS_OPENSUBDIV
+#include "crossdiv/adapters/opensubdiv.h"
+#endif
 #ifdef CROSSDIV_HAS_EIGEN_SPLINES
 #include "crossdiv/adapters/eigen_splines.h"
 #endif
@@ -40,6 +43,7 @@ struct SchemeArgs {
     std::string weights = "loop";
     std::string boundary;  ///< empty: the scheme's default (edge-only, chaikin-boundary, count-from-input)
     int levels = 1;
+    std::string creasing;  ///< empty: the input's t creasemethod tag, else uniform
 
     void add_to(CLI::App& app) {
         app.add_option("--scheme", scheme, "Subdivision scheme")
@@ -56,8 +60,12 @@ struct SchemeArgs {
             ->check(CLI::IsMember({"edge-only", "edge-and-corner", "midpoint-average", "chaikin-boundary",
                                    "drop-border-faces", "count-from-input", "restart-each-level"}));
         app.add_option("--levels", levels, "Number of subdivision levels")->check(CLI::Range(0, 12))->capture_default_str();
+        app.add_option("--crease-method", creasing,
+                       "Decay of semi-sharp crease tags (loop, catmull-clark): uniform (OpenSubdiv's default) or "
+                       "chaikin. Default: the input's 't creasemethod' tag, else uniform")
+            ->check(CLI::IsMember({"uniform", "chaikin"}));
     }
-    cli::PolySchemeArgs poly() const { return {scheme, boundary, levels}; }
+    cli::PolySchemeArgs poly() const { return {scheme, boundary, levels, creasing}; }
     LoopOptions options() const {
         if (!boundary.empty() && boundary != "edge-only" && boundary != "edge-and-corner")
             throw InputError("loop has no boundary rule '" + boundary + "' (edge-only, edge-and-corner)");
@@ -71,12 +79,46 @@ struct SchemeArgs {
 /// machine refines with the three references side by side.
 constexpr long long kMaxOutputFaces = 64LL << 20;
 
-void check_output_size(const TriMesh& mesh, int levels, const std::string& name) {
-    long long faces = mesh.num_faces();
+void check_output_size(long long faces, int levels, const std::string& name) {
     for (int l = 0; l < levels; ++l) faces *= 4;
     if (faces > kMaxOutputFaces)
         throw InputError(name + ": " + std::to_string(levels) + " levels would produce " + std::to_string(faces) +
                          " faces, over the limit of " + std::to_string(kMaxOutputFaces) + "; use fewer levels");
+}
+
+void check_output_size(const TriMesh& mesh, int levels, const std::string& name) {
+    check_output_size(mesh.num_faces(), levels, name);
+}
+
+/// Loop on a crease-tagged input: core's generic step, or OpenSubdiv, the one reference with
+/// crease rules; the others (and split-and-flip) have none and refuse.
+int run_loop_subdivide_creased(const std::string& in, const PolyMesh& input, const SchemeArgs& s,
+                               const std::string& impl, const std::string& out) {
+    LoopOptions o = s.options();
+    o.creasing = cli::crease_method(s.creasing, input);
+    check_output_size(input.num_faces(), s.levels, in);
+    PolyMesh result;
+    if (impl == "core") {
+        result = loop_subdivide(input, o, s.levels);
+#ifdef CROSSDIV_HAS_OPENSUBDIV
+    } else if (impl == "opensubdiv") {
+        if (o.weights != LoopWeights::Loop) throw InputError("opensubdiv has no Loop with weights=warren");
+        try {
+            result = adapters::opensubdiv::loop(input, o, s.levels).back();
+        } catch (const adapters::Rejected& e) {
+            throw InputError("opensubdiv refused " + in + ": " + e.what());
+        }
+#endif
+    } else {
+        throw InputError(in + " has crease or corner tags; " + impl +
+                         " has no crease rules (core and opensubdiv have; drop the tags to compare the smooth scheme)");
+    }
+    write_mesh(out, result);
+    fmt::print("{}: {} vertices, {} faces, {} crease and {} corner tag(s) -> {} ({} vertices, {} faces, {} level(s), "
+               "{} decay, {})\n",
+               in, input.num_vertices(), input.num_faces(), input.creases.edges.size(), input.creases.vertices.size(),
+               out, result.num_vertices(), result.num_faces(), s.levels, to_string(o.creasing), impl);
+    return 0;
 }
 
 int run_subdivide(const std::string& in, const SchemeArgs& s, const std::string& impl, const std::string& out) {
@@ -84,7 +126,9 @@ int run_subdivide(const std::string& in, const SchemeArgs& s, const std::string&
         if (impl == "split-flip") throw InputError("split-flip is Loop's method; " + s.scheme + " has none");
         return cli::run_scheme_subdivide(in, s.poly(), impl, out);
     }
-    const TriMesh mesh = to_tri_mesh(load_input(in), "Loop subdivision");
+    const PolyMesh input = load_input(in);
+    if (!input.creases.empty()) return run_loop_subdivide_creased(in, input, s, impl, out);
+    const TriMesh mesh = to_tri_mesh(input, "Loop subdivision");
     check_output_size(mesh, s.levels, in);
     PolyMesh result;
     if (impl == "core") {
@@ -147,15 +191,32 @@ int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, cons
     const std::vector<std::string> inputs = expand_inputs(specs);
     if (inputs.empty()) throw InputError("no inputs (a collection folder may be absent)");
     // Load and validate every input before running anything: bad input is exit 2.
+    // Crease-tagged inputs are compared with OpenSubdiv alone, level by level (the Loop
+    // comparison's other references have no crease rules).
     std::vector<TriMesh> meshes;
-    for (const std::string& in : inputs) {
-        meshes.push_back(to_tri_mesh(load_input(in), "Loop subdivision"));
+    std::vector<PolyMesh> tagged(inputs.size());
+    for (size_t i = 0; i < inputs.size(); ++i) {
+        PolyMesh m = load_input(inputs[i]);
+        if (!m.creases.empty()) {
+            tagged[i] = std::move(m);
+            meshes.emplace_back();
+            continue;
+        }
+        meshes.push_back(to_tri_mesh(m, "Loop subdivision"));
         loop_input_connectivity(meshes.back());
-        check_output_size(meshes.back(), s.levels, in);
+        check_output_size(meshes.back(), s.levels, inputs[i]);
     }
     nlohmann::json results = nlohmann::json::array();
     bool all_agree = true;
     for (size_t i = 0; i < inputs.size(); ++i) {
+        if (!tagged[i].creases.empty()) {
+            nlohmann::json record;
+            all_agree &= cli::compare_loop_creases(tagged[i], inputs[i], s.weights, s.boundary,
+                                                   cli::crease_method(s.creasing, tagged[i]), s.levels, timeout,
+                                                   !no_isolate, record);
+            results.push_back(record);
+            continue;
+        }
         const LoopComparison c = compare_loop(meshes[i], inputs[i], req);
         print_table(c);
         all_agree &= c.all_agree();

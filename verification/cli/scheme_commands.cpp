@@ -14,6 +14,7 @@
 #include "crossdiv/subdiv/limit.h"
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/verification/limit_comparison.h"
+#include "crossdiv/verification/crease_comparison.h"
 #include "crossdiv/verification/scheme_comparison.h"
 
 namespace crossdiv::cli {
@@ -93,11 +94,44 @@ void write_json(const std::string& path, const nlohmann::json& j) {
     fmt::print("results written to {}\n", path);
 }
 
+CreaseMethod crease_method(const std::string& flag, const PolyMesh& mesh) {
+    if (flag == "uniform") return CreaseMethod::Uniform;
+    if (flag == "chaikin") return CreaseMethod::Chaikin;
+    if (!flag.empty()) throw InputError("--crease-method: '" + flag + "' is not uniform or chaikin");
+    return mesh.creases.method.value_or(CreaseMethod::Uniform);
+}
+
+bool compare_loop_creases(const PolyMesh& mesh, const std::string& name, const std::string& weights,
+                          const std::string& boundary, CreaseMethod method, int levels, double timeout, bool isolate,
+                          nlohmann::json& record) {
+    if (weights != "loop" || (!boundary.empty() && boundary != "edge-only"))
+        throw InputError(name + ": creases are compared with Loop weights and the edge-only boundary (OpenSubdiv's)");
+    CreaseRequest req;
+    req.loop = true;
+    req.method = method;
+    req.levels = levels;
+    req.timeout_seconds = timeout;
+    req.isolate = isolate;
+    const CreaseComparison c = compare_creases(mesh, name, req);
+    fmt::print("\n{} ({} vertices, {} faces) loop with {} crease and {} corner tag(s), {} decay, levels={}\n", name,
+               mesh.num_vertices(), mesh.num_faces(), c.edge_tags, c.vertex_tags, c.method, levels);
+    if (!c.core_error.empty()) fmt::print("  core refused: {}\n", c.core_error);
+    fmt::print("  {:<11} {:<13} {:>10}  {}\n", "reference", "verdict", "max rel", "per level / explanation");
+    std::string per_level;
+    for (double d : c.max_rel_per_level) per_level += fmt::format("{:.3g} ", d);
+    fmt::print("  {:<11} {:<13} {:>10}  {}{}\n", "opensubdiv", c.verdict,
+               std::isfinite(c.max_rel) ? fmt::format("{:.3g}", c.max_rel) : "-", per_level,
+               c.divergence_class.empty() ? c.explanation : c.divergence_class + ": " + c.explanation);
+    record = to_json(c);
+    return c.verdict == "agree";
+}
+
 int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const std::string& impl, const std::string& out) {
     const Scheme scheme = scheme_from_string(s.scheme);
-    const SchemeRule rule_asked = scheme_rule(scheme, s.boundary);
-    const std::string asked = rule_name(scheme, rule_asked);
     const PolyMesh mesh = load_input(in);
+    SchemeRule rule_asked = scheme_rule(scheme, s.boundary);
+    rule_asked.catmull_clark.creasing = crease_method(s.creasing, mesh);
+    const std::string asked = rule_name(scheme, rule_asked);
     check_output_size(mesh, scheme, s.levels, in);
     PolyMesh result;
     if (impl == "core") {
@@ -116,9 +150,14 @@ int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const s
         if (rule != asked) fmt::print("note: {} applies the {} boundary rule, not {}\n", impl, rule, asked);
     }
     write_mesh(out, result);
-    fmt::print("{}: {} vertices, {} faces -> {} ({} vertices, {} faces, {} level(s), {} {} {})\n", in,
-               mesh.num_vertices(), mesh.num_faces(), out, result.num_vertices(), result.num_faces(), s.levels,
-               s.scheme, asked, impl);
+    const std::string tags = mesh.creases.empty() ? ""
+                             : fmt::format(", {} crease and {} corner tag(s)", mesh.creases.edges.size(),
+                                           mesh.creases.vertices.size());
+    const std::string decay =
+        mesh.creases.empty() ? "" : fmt::format(", {} decay", to_string(rule_asked.catmull_clark.creasing));
+    fmt::print("{}: {} vertices, {} faces{} -> {} ({} vertices, {} faces, {} level(s){}, {} {} {})\n", in,
+               mesh.num_vertices(), mesh.num_faces(), tags, out, result.num_vertices(), result.num_faces(), s.levels,
+               decay, s.scheme, asked, impl);
     return 0;
 }
 
@@ -143,7 +182,15 @@ int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeAr
     nlohmann::json results = nlohmann::json::array();
     bool all_agree = true;
     for (size_t i = 0; i < inputs.size(); ++i) {
-        const SchemeComparison c = compare_scheme(meshes[i], inputs[i], req);
+        SchemeRequest this_req = req;
+        this_req.rule.catmull_clark.creasing = crease_method(s.creasing, meshes[i]);
+        if (!meshes[i].creases.empty() && req.references.empty()) {
+            // Only OpenSubdiv has crease rules; the others would refuse the tags.
+            this_req.references = {"opensubdiv"};
+            fmt::print("\nnote: {} has crease tags; compared with opensubdiv, the one reference with crease rules\n",
+                       inputs[i]);
+        }
+        const SchemeComparison c = compare_scheme(meshes[i], inputs[i], this_req);
         fmt::print("\n{} ({} vertices, {} faces) {} boundary={} levels={} (core {:.3f} s)\n", c.input, c.input_vertices,
                    c.input_faces, to_string(c.scheme), c.rule, c.levels, c.core_seconds);
         if (!c.core_error.empty()) fmt::print("  core refused: {}\n", c.core_error);
@@ -210,6 +257,9 @@ int run_limit(const LimitArgs& a) {
     const PolyMesh mesh = load_input(a.input);
     if (a.levels < 0 || a.levels > 8) throw InputError("--levels must be in 0..8");
     check_output_size(mesh, Scheme::CatmullClark, a.levels, a.input);  // Loop grows as fast
+    if (!mesh.creases.empty())
+        throw InputError(a.input + " has crease or corner tags; limit positions under creases are not implemented "
+                         "(the limit masks here are the smooth and boundary ones); use subdivide");
     PolyMesh level;
     LimitResult limit;
     if (a.scheme == "loop") {

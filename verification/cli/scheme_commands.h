@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "crossdiv/mesh/poly_mesh.h"
+
 namespace crossdiv::cli {
 
 /// Writes `j` to `path` (parent folders made), and says so. @throws InputError when it cannot.
@@ -15,7 +17,18 @@ void write_json(const std::string& path, const nlohmann::json& j);
 struct PolySchemeArgs {
     std::string scheme, boundary;
     int levels = 1;
+    std::string creasing;  ///< --crease-method; empty: the file's, else uniform
 };
+
+/// The crease decay a run uses: `--crease-method` when given, else the input's
+/// `t creasemethod` tag, else uniform (OpenSubdiv's default).
+CreaseMethod crease_method(const std::string& flag, const PolyMesh& mesh);
+
+/// `crossdiv compare INPUT --scheme loop` for a crease-tagged input: OpenSubdiv, the only
+/// reference with creases, level by level; prints the table and returns whether it agrees.
+bool compare_loop_creases(const PolyMesh& mesh, const std::string& name, const std::string& weights,
+                          const std::string& boundary, CreaseMethod method, int levels, double timeout, bool isolate,
+                          nlohmann::json& record);
 
 /// `crossdiv subdivide IN --scheme catmull-clark --impl core|opensubdiv|openmesh|cgal -o OUT`.
 int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const std::string& impl, const std::string& out);

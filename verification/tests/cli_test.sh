@@ -159,6 +159,21 @@ expect doo-sabin-closed 0 'every reference agrees' -- "$crossdiv" compare bundle
 expect doo-sabin-rule 2 "doo-sabin has no boundary rule 'edge-only'" -- "$crossdiv" subdivide bundled:quad-cube --scheme doo-sabin --boundary edge-only -o "$tmp/x.obj"
 expect modified-butterfly 0 'properties: old vertices move by 0, .* hold' -- "$crossdiv" compare bundled:open-patch bundled:icosahedron --scheme modified-butterfly --levels 2
 expect butterfly-properties 0 '288 of 288 regular edges have the published stencil: hold' -- "$crossdiv" compare bundled:torus --scheme butterfly --levels 2
+# Creases: OBJ tags as OpenSubdiv's shape files write them, refined by core and by Far alike.
+printf 'v -1 -1 -1\nv 1 -1 -1\nv -1 1 -1\nv 1 1 -1\nv -1 -1 1\nv 1 -1 1\nv -1 1 1\nv 1 1 1\nf 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\nt crease 2/1/0 4 5 10\nt crease 2/1/0 5 7 10\nt crease 2/1/0 7 6 2.5\nt crease 2/1/0 6 4 0.5\nt corner 1/1/0 0 3\nt creasemethod 0/0/1 chaikin\n' > "$tmp/creased.obj"
+expect crease-subdivide 0 '8 vertices, 6 faces, 4 crease and 1 corner tag\(s\) -> .* 2 level\(s\), chaikin decay, catmull-clark edge-only core' -- "$crossdiv" subdivide "$tmp/creased.obj" --scheme catmull-clark --levels 2 -o "$tmp/creased_cc.obj"
+expect crease-tags-written 0 '^t crease 2/1/0 [0-9]+ [0-9]+ 10$' -- cat "$tmp/creased_cc.obj"
+expect crease-compare-cc 0 'opensubdiv +edge-only +agree' -- "$crossdiv" compare "$tmp/creased.obj" --scheme catmull-clark --levels 3
+printf 'v 1 0 0\nv -1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nv 0 0 -1\nf 1 3 5\nf 3 2 5\nf 2 4 5\nf 4 1 5\nf 3 1 6\nf 2 3 6\nf 4 2 6\nf 1 4 6\nt crease 2/1/0 0 2 1.5\nt crease 2/1/0 2 1 10\nt corner 1/1/0 4 0.5\n' > "$tmp/creased_oct.obj"
+expect crease-compare-loop 0 'opensubdiv +agree .*2 edge and 1 vertex tags, uniform decay' -- "$crossdiv" compare "$tmp/creased_oct.obj" --levels 3
+expect crease-loop-opensubdiv 0 'uniform decay, opensubdiv' -- "$crossdiv" subdivide "$tmp/creased_oct.obj" --levels 2 --impl opensubdiv -o "$tmp/x.obj"
+expect crease-loop-openmesh 2 'openmesh has no crease rules' -- "$crossdiv" subdivide "$tmp/creased_oct.obj" --levels 2 --impl openmesh -o "$tmp/x.obj"
+expect crease-sqrt3 2 'sqrt3 has no crease rules' -- "$crossdiv" subdivide "$tmp/creased_oct.obj" --scheme sqrt3 -o "$tmp/x.obj"
+expect crease-limit 2 'limit positions under creases are not implemented' -- "$crossdiv" limit "$tmp/creased_oct.obj" --scheme loop
+printf 'v 1 0 0\nv -1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nv 0 0 -1\nf 1 3 5\nf 3 2 5\nf 2 4 5\nf 4 1 5\nf 3 1 6\nf 2 3 6\nf 4 2 6\nf 1 4 6\nt crease 2/1/0 4 5 2\n' > "$tmp/bad_crease.obj"
+expect crease-no-edge 2 'crease tag \(4, 5\) \(.*bad_crease.obj:15\): vertices 4 and 5 share no edge' -- "$crossdiv" subdivide "$tmp/bad_crease.obj" -o "$tmp/x.obj"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nt crease 2/1/0 0 1 -2\n' > "$tmp/neg_crease.obj"
+expect crease-negative 2 'neg_crease.obj:5: tag .crease.: sharpness -2.000000 is negative' -- "$crossdiv" subdivide "$tmp/neg_crease.obj" -o "$tmp/x.obj"
 printf '<COLLADA><library_geometries><geometry>' > "$tmp/broken.dae"
 expect dae-broken 2 'broken.dae: Assimp could not read it' -- "$crossdiv" check "$tmp/broken.dae"
 dae="$(dirname "$0")/../../../shared/data/meshedit/dae"

@@ -73,7 +73,7 @@ size_t loop_native(const TriMesh& mesh, const LoopOptions& options, int levels) 
 namespace {
 
 Mesh build_polygons(const PolyMesh& mesh) {
-    reject_crease_tags(mesh, "CGAL's subdivision");
+    reject_crease_tags(mesh, "CGAL");
     std::string refused;
     Mesh m = detail::to_surface_mesh(mesh, refused);
     if (!refused.empty()) throw Rejected(refused);

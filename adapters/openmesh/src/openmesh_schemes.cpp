@@ -31,7 +31,7 @@ PolyMesh snapshot(const M& m) {
 }
 
 Poly to_poly(const PolyMesh& mesh) {
-    reject_crease_tags(mesh, "OpenMesh's subdividers");
+    reject_crease_tags(mesh, "OpenMesh");
     Poly m;
     std::vector<Poly::VertexHandle> vh;
     for (const Vec3& p : mesh.positions) vh.push_back(m.add_vertex(Poly::Point(p.x(), p.y(), p.z())));
