@@ -172,11 +172,14 @@ json creases_study() {
     }
     // The seed's question, as a figure: the cube refined three times, smooth, with its top
     // edges infinitely sharp, and with every edge of sharpness 2.
-    json figure = json::object();
-    for (auto [key, variant] : {std::pair{"smooth", datasets::CreaseCubeVariant::Smooth},
-                                {"sharp-top", datasets::CreaseCubeVariant::SharpTop},
-                                {"semi-sharp-2", datasets::CreaseCubeVariant::SemiSharp}})
-        figure[key] = mesh_json(catmull_clark_subdivide(datasets::crease_cube(variant), {CatmullClarkBoundary::EdgeOnly}, 3));
+    json figure = json::array();
+    for (auto [key, variant] : {std::pair{"no tags", datasets::CreaseCubeVariant::Smooth},
+                                {"top edges infinitely sharp", datasets::CreaseCubeVariant::SharpTop},
+                                {"all edges sharpness 2", datasets::CreaseCubeVariant::SemiSharp}}) {
+        json m = mesh_json(catmull_clark_subdivide(datasets::crease_cube(variant), {CatmullClarkBoundary::EdgeOnly}, 3));
+        m["name"] = key;
+        figure.push_back(m);
+    }
     return {{"runs", runs}, {"tables", {{"creases", rows}, {"crease_cube", figure}}}};
 }
 
