@@ -132,6 +132,34 @@ TEST(CatmullClarkCreases, FractionalSharpnessBlendsByHand) {
     EXPECT_TRUE(r.creases.empty());  // all decayed
 }
 
+TEST(CatmullClarkCreases, ChaikinTransitionWeightIsNotClamped) {
+    // Bottom loop 1.2, 0.2, 1.2, 0.2 under Chaikin: a 1.2 edge's halves become
+    // 3/4 * 1.2 + 1/4 * 0.2 - 1 < 0, smooth, so the edge point blends with weight s = 1.2 as
+    // OpenSubdiv does (no clamp): ends 1.2 * 1/2 - 0.2 * 1/4 = 0.55, face points -0.2 * 1/4.
+    PolyMesh m = cube();
+    m.creases.edges = {{0, 1, 1.2f}, {1, 3, 0.2f}, {3, 2, 1.2f}, {2, 0, 0.2f}};
+    const PolyMesh r = catmull_clark_subdivide(m, {CatmullClarkBoundary::EdgeOnly, CreaseMethod::Chaikin}, 1);
+    const PolyConnectivity conn = build_poly_connectivity(m);
+    int e01 = -1;
+    for (int e = 0; e < conn.num_edges(); ++e)
+        if (std::min(conn.edge_vertices[e][0], conn.edge_vertices[e][1]) == 0 &&
+            std::max(conn.edge_vertices[e][0], conn.edge_vertices[e][1]) == 1)
+            e01 = e;
+    ASSERT_GE(e01, 0);
+    // 0.55 * ((-1,-1,-1) + (1,-1,-1)) - 0.05 * ((0,0,-1) + (0,-1,0)) = (0, -1.05, -1.05),
+    // outside the cube -- with s the float nearest 1.2, as tags are stored.
+    const double sharp = 1.2f, end = sharp * 0.5 + (1 - sharp) * 0.25, face = (1 - sharp) * 0.25;
+    const Vec3 p = r.positions[8 + 6 + e01];
+    EXPECT_NEAR(end, 0.55, 1e-7);
+    EXPECT_NEAR(p.x(), 0.0, 1e-15);
+    EXPECT_NEAR(p.y(), -2 * end - face, 1e-15);
+    EXPECT_NEAR(p.z(), -2 * end - face, 1e-15);
+    EXPECT_LT(p.y(), -1.0499);
+    // Uniform decay keeps the halves at 0.2: a crease, the midpoint.
+    const PolyMesh u = catmull_clark_subdivide(m, kCC, 1);
+    EXPECT_EQ(u.positions[8 + 6 + e01], Vec3(0, -1, -1));
+}
+
 TEST(CatmullClarkCreases, SharpnessOneIsOneSharpLevelThenSmooth) {
     // s = 1 decays to 0 with transition weight 1: level 1 is exactly the infinitely sharp
     // one, and what follows is plain Catmull-Clark.
