@@ -20,23 +20,6 @@ void set_smooth_mask(VertexPointMask& m, int valence) {
     m.face.assign(static_cast<size_t>(valence), w.face);
 }
 
-/// The vertex point of a vertex whose rule is Crease or Corner at this level, blended with
-/// its next level's rule when that differs (OpenSubdiv's ComputeVertexVertexMask).
-void add_sharp_vertex_point(StencilTable& st, const PolyConnectivity& conn, int v, const CreaseLevel::Vertex& r,
-                            int face_point, VertexPointMask& mask, VertexPointMask& child) {
-    auto assign = [&](VertexPointMask& m, VertexRule rule, const int ends[2]) {
-        if (rule == VertexRule::Crease) m.set_crease(r.edges, ends[0], ends[1]);
-        else if (rule == VertexRule::Corner) m.set_corner();
-        else set_smooth_mask(m, r.edges);  // Smooth or Dart: an interior vertex, edges == faces
-    };
-    assign(mask, r.parent, r.parent_ends);
-    if (r.child != r.parent) {
-        assign(child, r.child, r.child_ends);
-        blend_vertex_masks(mask, child, r.weight);
-    }
-    add_vertex_point_mask(st, conn, v, mask, face_point);
-}
-
 }  // namespace
 
 RefinementStep catmull_clark_step(const PolyMesh& mesh, const PolyConnectivity& conn, const CatmullClarkOptions& options) {
@@ -73,7 +56,8 @@ RefinementStep catmull_clark_step(const PolyMesh& mesh, const PolyConnectivity& 
         if (crease) {
             const CreaseLevel::Vertex& r = crease->vertex(v);
             if (r.parent == VertexRule::Crease || r.parent == VertexRule::Corner) {
-                add_sharp_vertex_point(st, conn, v, r, face_point, mask, child_mask);
+                vertex_point_mask(r, mask, child_mask, [&](VertexPointMask& m) { set_smooth_mask(m, r.edges); });
+                add_vertex_point_mask(st, conn, v, mask, face_point);
                 st.end_row();
                 continue;
             }

@@ -41,11 +41,6 @@ RefinementStep loop_step(const PolyMesh& mesh, const PolyConnectivity& conn, con
         step.creases = crease->child_tags(nv);
     }
     VertexPointMask mask, child;  // reused: no allocation per vertex once grown
-    auto assign = [&](VertexPointMask& m, VertexRule rule, const int ends[2], int edges) {
-        if (rule == VertexRule::Crease) m.set_crease(edges, ends[0], ends[1]);
-        else if (rule == VertexRule::Corner) m.set_corner();
-        else set_smooth_mask(m, options.weights, edges);  // Smooth or Dart: interior
-    };
 
     for (int v = 0; v < nv; ++v) {
         if (conn.vertex_corner[v] < 0) {  // isolated: it stays
@@ -55,11 +50,7 @@ RefinementStep loop_step(const PolyMesh& mesh, const PolyConnectivity& conn, con
         }
         if (crease) {
             const CreaseLevel::Vertex& r = crease->vertex(v);
-            assign(mask, r.parent, r.parent_ends, r.edges);
-            if (r.child != r.parent) {
-                assign(child, r.child, r.child_ends, r.edges);
-                blend_vertex_masks(mask, child, r.weight);
-            }
+            vertex_point_mask(r, mask, child, [&](VertexPointMask& m) { set_smooth_mask(m, options.weights, r.edges); });
         } else if (conn.is_boundary_vertex(v)) {
             const PolyConnectivity::Fan fan = conn.fan(v);
             const VertexMask m = boundary_vertex_mask(options.boundary, fan.faces);

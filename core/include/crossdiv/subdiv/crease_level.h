@@ -72,6 +72,25 @@ private:
     std::vector<Vertex> vertices_;
 };
 
+/// The vertex-point mask of a vertex with rules `r` (OpenSubdiv's ComputeVertexVertexMask):
+/// the parent rule's mask, blended with the child rule's when they differ. `set_smooth(m)`
+/// writes the scheme's smooth mask (used for Smooth and Dart, which occur at interior
+/// vertices only, where edges and faces are equally many); `child` is scratch space.
+template <class SetSmooth>
+void vertex_point_mask(const CreaseLevel::Vertex& r, VertexPointMask& mask, VertexPointMask& child,
+                       const SetSmooth& set_smooth) {
+    auto assign = [&](VertexPointMask& m, VertexRule rule, const int ends[2]) {
+        if (rule == VertexRule::Crease) m.set_crease(r.edges, ends[0], ends[1]);
+        else if (rule == VertexRule::Corner) m.set_corner();
+        else set_smooth(m);
+    };
+    assign(mask, r.parent, r.parent_ends);
+    if (r.child != r.parent) {
+        assign(child, r.child, r.child_ends);
+        blend_vertex_masks(mask, child, r.weight);
+    }
+}
+
 /// Appends vertex-point mask `m` of vertex v to the row being built, in OpenSubdiv's order
 /// (face points, the other ends of the edges, the vertex), leaving out zero weights. Face k
 /// is the k-th face of v's one-ring walk; its new point is refined row `face_point + face`.
