@@ -21,8 +21,7 @@ namespace {
 LimitEvaluation evaluate(const PolyMesh& mesh, Sdc::SchemeType scheme, int face, std::span<const std::array<double, 2>> uv) {
     if (face < 0 || face >= mesh.num_faces())
         throw Rejected("face " + std::to_string(face) + " is not in a mesh of " + std::to_string(mesh.num_faces()) + " faces");
-    Sdc::Options sdc;
-    sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
+    const Sdc::Options sdc = detail::sdc_options(false, CreaseMethod::Uniform);  // edge-only
     const std::unique_ptr<Far::TopologyRefiner> refiner = detail::make_refiner(mesh, scheme, sdc);
     Bfr::RefinerSurfaceFactory<> factory(*refiner);
     Bfr::Surface<double> surface;

@@ -17,9 +17,15 @@ namespace crossdiv::adapters::opensubdiv::detail {
 
 using namespace OpenSubdiv;
 
-/// Sdc's creasing method for ours.
-inline Sdc::Options::CreasingMethod creasing(CreaseMethod m) {
-    return m == CreaseMethod::Uniform ? Sdc::Options::CREASE_UNIFORM : Sdc::Options::CREASE_CHAIKIN;
+/// Sdc options for our boundary rule (edge-only, or edge-and-corner) and crease decay; the
+/// library default VTX_BOUNDARY_NONE (boundary faces become holes) is never used.
+inline Sdc::Options sdc_options(bool edge_and_corner, CreaseMethod creasing) {
+    Sdc::Options sdc;
+    sdc.SetVtxBoundaryInterpolation(edge_and_corner ? Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER
+                                                    : Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
+    sdc.SetCreasingMethod(creasing == CreaseMethod::Uniform ? Sdc::Options::CREASE_UNIFORM
+                                                            : Sdc::Options::CREASE_CHAIKIN);
+    return sdc;
 }
 
 /// Primvar with the Clear/AddWithWeight interface PrimvarRefiner expects.

@@ -26,10 +26,7 @@ std::unique_ptr<Far::TopologyRefiner> refine_topology(const TriMesh& mesh, const
                                                       bool full_topology_in_last_level) {
     if (!supports(options)) throw Rejected("OpenSubdiv's Loop scheme has Loop's 1987 weights only (no Warren)");
 
-    Sdc::Options sdc;
-    sdc.SetVtxBoundaryInterpolation(options.boundary == LoopBoundary::EdgeOnly
-                                        ? Sdc::Options::VTX_BOUNDARY_EDGE_ONLY
-                                        : Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
+    const Sdc::Options sdc = sdc_options(options.boundary == LoopBoundary::EdgeAndCorner, options.creasing);
     std::vector<int> verts_per_face(static_cast<size_t>(mesh.num_faces()), 3);
     std::vector<int> indices;
     indices.reserve(3 * static_cast<size_t>(mesh.num_faces()));

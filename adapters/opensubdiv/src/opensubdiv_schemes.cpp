@@ -19,22 +19,12 @@ namespace {
 Sdc::Options catmark_options(const CatmullClarkOptions& options) {
     if (!supports(options))
         throw Rejected("OpenSubdiv's Catmull-Clark has no midpoint-average boundary rule (OpenMesh's)");
-    Sdc::Options sdc;
-    sdc.SetVtxBoundaryInterpolation(options.boundary == CatmullClarkBoundary::EdgeOnly
-                                        ? Sdc::Options::VTX_BOUNDARY_EDGE_ONLY
-                                        : Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
-    sdc.SetCreasingMethod(creasing(options.creasing));
-    return sdc;
+    return sdc_options(options.boundary == CatmullClarkBoundary::EdgeAndCorner, options.creasing);
 }
 
 Sdc::Options loop_options(const LoopOptions& options) {
     if (!supports(options)) throw Rejected("OpenSubdiv's Loop scheme has Loop's 1987 weights only (no Warren)");
-    Sdc::Options sdc;
-    sdc.SetVtxBoundaryInterpolation(options.boundary == LoopBoundary::EdgeOnly
-                                        ? Sdc::Options::VTX_BOUNDARY_EDGE_ONLY
-                                        : Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
-    sdc.SetCreasingMethod(creasing(options.creasing));
-    return sdc;
+    return sdc_options(options.boundary == LoopBoundary::EdgeAndCorner, options.creasing);
 }
 
 /// Refines `levels` levels with full topology in the last one and evaluates Limit() there.

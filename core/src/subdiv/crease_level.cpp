@@ -77,7 +77,8 @@ CreaseLevel::CreaseLevel(const PolyMesh& mesh, const PolyConnectivity& conn, Cre
             half_[2 * static_cast<size_t>(e) + (conn.edge_vertices[e][0] == v ? 0 : 1)] = child_around[i];
         }
         float sharpness = vertex_tag_[static_cast<size_t>(v)];
-        if (sharpen_corners && conn.is_boundary_vertex(v) && conn.fan(v).faces == 1) sharpness = kSharpnessInfinite;
+        // A boundary vertex with one face has two edges (the walk above counted them).
+        if (sharpen_corners && conn.is_boundary_vertex(v) && edges.size() == 2) sharpness = kSharpnessInfinite;
         const float child_sharpness = decrement_sharpness(sharpness);
 
         Vertex& out = vertices_[static_cast<size_t>(v)];
