@@ -12,11 +12,9 @@
 #include "crossdiv/datasets/bundled_curves.h"
 #include "crossdiv/io/curve_io.h"
 #include "crossdiv/mesh/tri_mesh.h"
-#ifdef CROSSDIV_HAS_EIGEN_SPLINES
-#include "crossdiv/adapters/eigen_splines.h"
-#endif
 #include "crossdiv/error.h"
-#include "crossdiv/verification/curve_checks.h"
+#include "crossdiv/verification/implementations/registry.h"
+#include "crossdiv/verification/properties/curve_checks.h"
 
 namespace crossdiv::cli {
 using nlohmann::json;
@@ -214,6 +212,8 @@ json run_curve_bench(int repeats) {
     fmt::print("\nCurve tessellation: edges (measured max deviation) per mode at each distance tolerance\n");
     fmt::print("{:<28} {:>9}  {:>18} {:>18} {:>18} {:>18}\n", "curve", "tol", "uniform", "angle", "distance", "Wang");
     json rows = json::array(), timing = json::array();
+    const std::vector<const Implementation*> spline_refs = references_with(&Capabilities::spline_evaluation);
+    const Implementation* eigen = spline_refs.empty() ? nullptr : spline_refs.front();
     for (const auto& [input, file] : files) {
         for (size_t i = 0; i < file.curves.size(); ++i) {
             const CurveRecord& r = file.curves[i];
@@ -233,9 +233,8 @@ json run_curve_bench(int repeats) {
                                 {"distance_edges", row.distance_edges}, {"distance_dev", row.distance_dev},
                                 {"wang_edges", row.wang_edges}, {"wang_dev", row.wang_dev}});
             }
-#ifdef CROSSDIV_HAS_EIGEN_SPLINES
             // Evaluation time: position, d1 and d2 at 1000 parameters per segment, ours vs Eigen.
-            if (r.type != CurveType::BSpline && r.type != CurveType::Bezier) continue;
+            if (!eigen || (r.type != CurveType::BSpline && r.type != CurveType::Bezier)) continue;
             const BezierChain c = r.chain();
             constexpr int kPerSegment = 1000;
             std::vector<double> u;
@@ -255,14 +254,13 @@ json run_curve_bench(int repeats) {
             const double ours = median_ms([&] {
                 for (double x : u) sink += chain_jet(c, x).d2.x();
             });
-            const double eigen = median_ms([&] {
-                const auto s = r.type == CurveType::BSpline ? adapters::eigen_splines::uniform_cubic_bspline(r.control, u)
-                                                            : adapters::eigen_splines::clamped_bezier(r.control, u);
+            const double theirs = median_ms([&] {
+                const auto s = eigen->evaluate_spline(
+                    r.type == CurveType::BSpline ? SplineKind::UniformCubicBSpline : SplineKind::ClampedBezier, r.control, u);
                 sink += s.d2.back().x();
             });
             timing.push_back({{"curve", label}, {"degree", c.degree}, {"evaluations", u.size()}, {"core_ms", ours},
-                              {"eigen_ms", eigen}, {"eigen_over_core", eigen / ours}, {"checksum", sink}});
-#endif
+                              {"eigen_ms", theirs}, {"eigen_over_core", theirs / ours}, {"checksum", sink}});
         }
     }
     if (!timing.empty()) {

@@ -9,8 +9,8 @@
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/mesh/halfedge_mesh.h"
 #include "crossdiv/mesh/halfedge_validity.h"
-#include "crossdiv/verification/inputs.h"
-#include "crossdiv/verification/normals_comparison.h"
+#include "crossdiv/verification/harness/inputs.h"
+#include "crossdiv/verification/comparisons/normals_comparison.h"
 
 namespace crossdiv::cli {
 

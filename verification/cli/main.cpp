@@ -16,18 +16,12 @@
 #include "crossdiv/mesh/mesh_checks.h"
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/subdiv/loop_split_flip.h"
-#include "crossdiv/verification/bench.h"
-#include "crossdiv/verification/inputs.h"
-#include "crossdiv/verification/loop_comparison.h"
-#include "crossdiv/verification/references.h"
-#include "crossdiv/verification/shrink.h"
-#include "crossdiv/verification/suite.h"
-#ifdef CROSSDIV_HAS_OPENSUBDIV
-#include "crossdiv/adapters/opensubdiv.h"
-#endif
-#ifdef CROSSDIV_HAS_EIGEN_SPLINES
-#include "crossdiv/adapters/eigen_splines.h"
-#endif
+#include "crossdiv/verification/bench/bench.h"
+#include "crossdiv/verification/harness/inputs.h"
+#include "crossdiv/verification/comparisons/loop_comparison.h"
+#include "crossdiv/verification/implementations/registry.h"
+#include "crossdiv/verification/comparisons/shrink.h"
+#include "crossdiv/verification/suite/suite.h"
 #include "curve_commands.h"
 #include "edit_commands.h"
 #include "scheme_commands.h"
@@ -98,17 +92,18 @@ int run_loop_subdivide_creased(const std::string& in, const PolyMesh& input, con
     o.creasing = cli::crease_method(s.creasing, input);
     check_output_size(input.num_faces(), s.levels, in);
     PolyMesh result;
-    if (impl == "core") {
-        result = loop_subdivide(input, o, s.levels);
-#ifdef CROSSDIV_HAS_OPENSUBDIV
-    } else if (impl == "opensubdiv") {
-        if (o.weights != LoopWeights::Loop) throw InputError("opensubdiv has no Loop with weights=warren");
+    RefineRequest request{Scheme::Loop, {}, s.levels};
+    request.rule.loop = o;
+    const Implementation& chosen = find_implementation(impl == "split-flip" ? "core" : impl);
+    const SchemeSupport* support = chosen.support(Scheme::Loop);
+    if (impl != "split-flip" && support && support->creases) {
+        if (!chosen.applies(Scheme::Loop, request.rule))
+            throw InputError(impl + " has no Loop with weights=" + std::string(to_string(o.weights)));
         try {
-            result = adapters::opensubdiv::loop(input, o, s.levels).back();
+            result = chosen.refine_last(input, request);
         } catch (const adapters::Rejected& e) {
-            throw InputError("opensubdiv refused " + in + ": " + e.what());
+            throw InputError(impl + " refused " + in + ": " + e.what());
         }
-#endif
     } else {
         throw InputError(in + " has crease or corner tags; " + impl +
                          " has no crease rules (core and opensubdiv have; drop the tags to compare the smooth scheme)");
@@ -138,10 +133,12 @@ int run_subdivide(const std::string& in, const SchemeArgs& s, const std::string&
         for (int l = 0; l < s.levels; ++l) level = loop_by_split_and_flip(level, s.options());
         result = to_poly_mesh(level);
     } else {
-        const LoopReference& ref = find_loop_reference(impl);
-        if (!ref.supports(s.options()))
+        const Implementation& ref = *select_references(Scheme::Loop, {impl}).front();
+        RefineRequest request{Scheme::Loop, {}, s.levels};
+        request.rule.loop = s.options();
+        if (!ref.applies(Scheme::Loop, request.rule))
             throw InputError(impl + " has no Loop with weights=" + s.weights + " boundary=" + std::string(to_string(s.options().boundary)));
-        result = ref.loop(mesh, s.options(), s.levels).back();
+        result = ref.refine(input, request).back();
     }
     write_mesh(out, result);
     fmt::print("{}: {} vertices, {} faces -> {} ({} vertices, {} faces, {} level(s), {})\n", in, mesh.num_vertices(),
@@ -158,13 +155,14 @@ void print_table(const LoopComparison& c) {
     for (const ReferenceRun& r : c.runs) {
         const bool ok = r.outcome.status == RunStatus::Ok;
         fmt::print("  {:<11} {:<9} {:<13} {:<9} {:<8} {:>10} {:>10}  {}{}\n", r.reference,
-                   to_string(r.outcome.status), r.verdict,
+                   to_string(r.outcome.status), to_string(r.verdict),
                    ok ? to_string(r.correspondence.method) : "-",
                    ok ? (r.comparison.topology_equal() ? "equal" : "differs") : "-",
                    ok ? fmt::format("{:.3g}", r.comparison.max_rel) : "-",
                    ok ? fmt::format("{:.3g}", r.comparison.rms_rel) : "-",
-                   r.divergence_class.empty() ? "" : r.divergence_class + ": ", r.explanation);
-        if (ok && r.verdict == "diverge")
+                   r.divergence_class == DivergenceClass::None ? "" : std::string(to_string(r.divergence_class)) + ": ",
+                   r.explanation);
+        if (ok && r.verdict == Verdict::Diverge)
             for (const WorstVertex& w : r.comparison.worst)
                 fmt::print("      vertex {:>6} valence {:>2} {:<8} dist {:.3g}  core ({:.6g}, {:.6g}, {:.6g})  "
                            "{} ({:.6g}, {:.6g}, {:.6g})\n",
@@ -186,7 +184,7 @@ int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, cons
         if (e == std::string::npos) e = against.size();
         if (e > b) req.references.push_back(against.substr(b, e - b));
     }
-    for (const std::string& r : req.references) find_loop_reference(r);  // fail early on a typo
+    select_references(Scheme::Loop, req.references);  // fail early on a typo
 
     const std::vector<std::string> inputs = expand_inputs(specs);
     if (inputs.empty()) throw InputError("no inputs (a collection folder may be absent)");
@@ -314,11 +312,10 @@ int run_suite(const std::string& manifest_path, const std::string& out, int jobs
         std::fflush(stdout);
     });
     nlohmann::json refs = nlohmann::json::array();
-    for (const LoopReference& r : loop_references()) refs.push_back({{"name", r.name}, {"version", r.version}});
+    for (const Implementation* r : references_for(Scheme::Loop)) refs.push_back({{"name", r->name()}, {"version", r->version()}});
     nlohmann::json curve_refs = nlohmann::json::array();
-#ifdef CROSSDIV_HAS_EIGEN_SPLINES
-    curve_refs.push_back({{"name", "eigen"}, {"version", adapters::eigen_splines::version()}});
-#endif
+    for (const Implementation* r : references_with(&Capabilities::spline_evaluation))
+        curve_refs.push_back({{"name", r->name()}, {"version", r->version()}});
     const nlohmann::json header = {
         {"tool", "crossdiv suite"}, {"schema_version", 2}, {"suite", manifest.name}, {"manifest", manifest.file},
         {"shard", fmt::format("{}/{}", shard_i, shard_n)}, {"jobs_total", all.size()}, {"jobs_run", mine.size()},
@@ -349,11 +346,11 @@ int run_diff(const std::string& in, const SchemeArgs& s, const std::string& agai
     req.options = s.options();
     req.levels = s.levels;
     req.references = {against};
-    find_loop_reference(against);
+    select_references(Scheme::Loop, {against});
     const ShrinkResult r = shrink_divergence(mesh, in, req);
     const ReferenceRun& orig = r.original.runs[0];
     fmt::print("{} ({} faces): {} diverges from core, class {}: {}\n", in, mesh.num_faces(), against,
-               r.divergence_class, orig.explanation);
+               to_string(r.divergence_class), orig.explanation);
     std::filesystem::create_directories(out_dir);
     const std::string ring = (std::filesystem::path(out_dir) / "neighbourhood.obj").string();
     const std::string minimal = (std::filesystem::path(out_dir) / "minimal.obj").string();
@@ -363,7 +360,7 @@ int run_diff(const std::string& in, const SchemeArgs& s, const std::string& agai
     fmt::print("neighbourhood: {} ({} faces, {})\n", ring, r.neighbourhood.num_faces(),
                r.k ? fmt::format("{}-ring of the worst vertex's coarse ancestors", r.k) : std::string("the whole mesh"));
     fmt::print("minimal:       {} ({} faces, {} vertices) after {} comparisons: {} ({})\n", minimal, r.minimal.num_faces(),
-               r.minimal.num_vertices(), r.tests, m.divergence_class, m.explanation);
+               r.minimal.num_vertices(), r.tests, to_string(m.divergence_class), m.explanation);
     fmt::print("reproduce:     crossdiv compare {} --weights {} --boundary {} --levels {} --against {}\n", minimal,
                s.weights, to_string(s.options().boundary), s.levels, against);
     return 0;

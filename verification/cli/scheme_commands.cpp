@@ -9,52 +9,19 @@
 
 #include "crossdiv/error.h"
 #include "crossdiv/io/mesh_io.h"
-#include "crossdiv/verification/butterfly_properties.h"
-#include "crossdiv/verification/inputs.h"
+#include "crossdiv/verification/properties/butterfly_properties.h"
+#include "crossdiv/verification/harness/inputs.h"
 #include "crossdiv/subdiv/limit.h"
 #include "crossdiv/subdiv/loop.h"
-#include "crossdiv/verification/limit_comparison.h"
-#include "crossdiv/verification/crease_comparison.h"
-#include "crossdiv/verification/scheme_comparison.h"
+#include "crossdiv/verification/comparisons/limit_comparison.h"
+#include "crossdiv/verification/comparisons/crease_comparison.h"
+#include "crossdiv/verification/comparisons/scheme_comparison.h"
+#include "crossdiv/verification/implementations/registry.h"
 
 namespace crossdiv::cli {
 namespace {
 
 using namespace crossdiv::verification;
-
-/// The rule `--boundary` names for the scheme (its default when empty).
-SchemeRule scheme_rule(Scheme scheme, const std::string& boundary) {
-    SchemeRule rule;
-    if (boundary.empty()) return rule;
-    switch (scheme) {
-        case Scheme::CatmullClark:
-            for (CatmullClarkBoundary b : {CatmullClarkBoundary::EdgeOnly, CatmullClarkBoundary::EdgeAndCorner,
-                                           CatmullClarkBoundary::MidpointAverage})
-                if (boundary == to_string(b)) {
-                    rule.catmull_clark = {b};
-                    return rule;
-                }
-            throw InputError("catmull-clark has no boundary rule '" + boundary +
-                             "' (edge-only, edge-and-corner, midpoint-average)");
-        case Scheme::DooSabin:
-            for (DooSabinBoundary b : {DooSabinBoundary::ChaikinBoundary, DooSabinBoundary::DropBorderFaces})
-                if (boundary == to_string(b)) {
-                    rule.doo_sabin = {b};
-                    return rule;
-                }
-            throw InputError("doo-sabin has no boundary rule '" + boundary + "' (chaikin-boundary, drop-border-faces)");
-        case Scheme::Sqrt3:
-            for (Sqrt3Parity p : {Sqrt3Parity::CountFromInput, Sqrt3Parity::RestartEachLevel})
-                if (boundary == to_string(p)) {
-                    rule.sqrt3 = {p};
-                    return rule;
-                }
-            throw InputError("sqrt3 has no boundary rule '" + boundary + "' (count-from-input, restart-each-level)");
-        case Scheme::Butterfly:
-        case Scheme::ModifiedButterfly: break;
-    }
-    throw InputError(std::string(to_string(scheme)) + " has no boundary rule to choose (boundary edges take the four-point rule)");
-}
 
 /// Refuses before any work an output past the same face limit as Loop. The first level makes
 /// one face per corner (Catmull-Clark), faces + edges + vertices <= 2 corners (Doo-Sabin), two
@@ -119,17 +86,18 @@ bool compare_loop_creases(const PolyMesh& mesh, const std::string& name, const s
     fmt::print("  {:<11} {:<13} {:>10}  {}\n", "reference", "verdict", "max rel", "per level / explanation");
     std::string per_level;
     for (double d : c.max_rel_per_level) per_level += fmt::format("{:.3g} ", d);
-    fmt::print("  {:<11} {:<13} {:>10}  {}{}\n", "opensubdiv", c.verdict,
+    fmt::print("  {:<11} {:<13} {:>10}  {}{}\n", "opensubdiv", to_string(c.verdict),
                std::isfinite(c.max_rel) ? fmt::format("{:.3g}", c.max_rel) : "-", per_level,
-               c.divergence_class.empty() ? c.explanation : c.divergence_class + ": " + c.explanation);
+               c.divergence_class == DivergenceClass::None ? c.explanation
+                                                             : std::string(to_string(c.divergence_class)) + ": " + c.explanation);
     record = to_json(c);
-    return c.verdict == "agree";
+    return c.verdict == Verdict::Agree;
 }
 
 int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const std::string& impl, const std::string& out) {
     const Scheme scheme = scheme_from_string(s.scheme);
     const PolyMesh mesh = load_input(in);
-    SchemeRule rule_asked = scheme_rule(scheme, s.boundary);
+    SchemeRule rule_asked = rule_from_boundary_name(scheme, s.boundary);
     rule_asked.catmull_clark.creasing = crease_method(s.creasing, mesh);
     const std::string asked = rule_name(scheme, rule_asked);
     check_output_size(mesh, scheme, s.levels, in);
@@ -137,13 +105,10 @@ int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const s
     if (impl == "core") {
         result = subdivide(scheme, rule_asked, mesh, s.levels);
     } else {
-        SchemeRequest req;
-        req.scheme = scheme;
-        req.rule = rule_asked;
-        req.levels = s.levels;
-        std::string rule;
+        const Implementation& ref = *select_references(scheme, {impl}).front();
+        const std::string rule = rule_name(scheme, ref.closest_rule(scheme, rule_asked));
         try {
-            result = run_scheme_reference(impl, req, mesh, rule).back();
+            result = ref.refine(mesh, {scheme, rule_asked, s.levels}).back();
         } catch (const adapters::Rejected& e) {
             throw InputError(impl + " refused " + in + ": " + e.what());
         }
@@ -165,7 +130,7 @@ int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeAr
                        const std::string& json_path, double timeout, bool no_isolate) {
     SchemeRequest req;
     req.scheme = scheme_from_string(s.scheme);
-    req.rule = scheme_rule(req.scheme, s.boundary);
+    req.rule = rule_from_boundary_name(req.scheme, s.boundary);
     req.levels = s.levels;
     req.timeout_seconds = timeout;
     req.isolate = !no_isolate;
@@ -196,11 +161,12 @@ int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeAr
         if (!c.core_error.empty()) fmt::print("  core refused: {}\n", c.core_error);
         fmt::print("  {:<17} {:<18} {:<13} {:>10}  {}\n", "reference", "rule", "verdict", "max rel", "class / explanation");
         for (const SchemeReferenceRun& r : c.runs)
-            fmt::print("  {:<17} {:<18} {:<13} {:>10}  {}{}\n", r.reference, r.rule, r.verdict,
+            fmt::print("  {:<17} {:<18} {:<13} {:>10}  {}{}\n", r.reference, r.rule, to_string(r.verdict),
                        !std::isfinite(r.comparison.max_rel) || r.correspondence.method == MatchMethod::None
                            ? "-"
                            : fmt::format("{:.3g}", r.comparison.max_rel),
-                       r.divergence_class.empty() ? "" : r.divergence_class + ": ", r.explanation);
+                       r.divergence_class == DivergenceClass::None ? "" : std::string(to_string(r.divergence_class)) + ": ",
+                       r.explanation);
         nlohmann::json record = to_json(c);
         if (req.scheme == Scheme::Butterfly || req.scheme == Scheme::ModifiedButterfly) {
             // The classic scheme has no reference: its verdict is its properties.
@@ -231,12 +197,12 @@ int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeAr
 
 namespace {
 
-LoopOptions loop_options(const std::string& weights, const std::string& boundary) {
-    if (weights != "loop" && weights != "warren") throw InputError("unknown weights '" + weights + "' (loop, warren)");
-    if (boundary != "edge-only" && boundary != "edge-and-corner")
-        throw InputError("loop has no boundary rule '" + boundary + "' (edge-only, edge-and-corner)");
-    return {weights == "loop" ? LoopWeights::Loop : LoopWeights::Warren,
-            boundary == "edge-only" ? LoopBoundary::EdgeOnly : LoopBoundary::EdgeAndCorner};
+/// What `crossdiv limit` asks for: the scheme, its weights (Loop) and boundary rule, the levels.
+RefineRequest limit_request(const LimitArgs& a) {
+    const Scheme scheme = scheme_from_string(a.scheme);
+    RefineRequest r{scheme, rule_from_boundary_name(scheme, a.boundary), a.levels};
+    if (scheme == Scheme::Loop) r.rule.loop.weights = loop_weights_from_string(a.weights);
+    return r;
 }
 
 /// "3..20" or "7".
@@ -260,20 +226,9 @@ int run_limit(const LimitArgs& a) {
     if (!mesh.creases.empty())
         throw InputError(a.input + " has crease or corner tags; limit positions under creases are not implemented "
                          "(the limit masks here are the smooth and boundary ones); use subdivide");
-    PolyMesh level;
-    LimitResult limit;
-    if (a.scheme == "loop") {
-        const LoopOptions o = loop_options(a.weights, a.boundary);
-        const TriMesh t = loop_subdivide(to_tri_mesh(mesh, "Loop subdivision"), o, a.levels);
-        limit = loop_limit(t, o);
-        level = to_poly_mesh(t);
-    } else if (a.scheme == "catmull-clark") {
-        const CatmullClarkOptions o = scheme_rule(Scheme::CatmullClark, a.boundary).catmull_clark;
-        level = subdivide(Scheme::CatmullClark, {o}, mesh, a.levels);
-        limit = catmull_clark_limit(level, o);
-    } else {
-        throw InputError("limit: unknown scheme '" + a.scheme + "' (loop, catmull-clark)");
-    }
+    const RefineRequest request = limit_request(a);
+    const adapters::LimitPoints limit = core_implementation().limit_points(mesh, request);
+    PolyMesh level = limit.level;
     const double diagonal = bounding_box_diagonal(level.positions);
     double moved = 0;
     for (int v = 0; v < level.num_vertices(); ++v)
@@ -290,12 +245,11 @@ int run_limit(const LimitArgs& a) {
     bool ok = true;
     if (!a.against.empty()) {
         if (a.against != "opensubdiv") throw InputError("limit: only opensubdiv has limit positions, not '" + a.against + "'");
-        const LimitComparison c = a.scheme == "loop"
-                                      ? compare_loop_limit(mesh, a.input, loop_options(a.weights, a.boundary), a.levels)
-                                      : compare_catmull_clark_limit(
-                                            mesh, a.input, scheme_rule(Scheme::CatmullClark, a.boundary).catmull_clark, a.levels);
-        fmt::print("against opensubdiv: {} ({})\n", c.verdict, c.explanation);
-        ok = c.verdict == "agree";
+        const LimitComparison c = request.scheme == Scheme::Loop
+                                      ? compare_loop_limit(mesh, a.input, request.rule.loop, a.levels)
+                                      : compare_catmull_clark_limit(mesh, a.input, request.rule.catmull_clark, a.levels);
+        fmt::print("against opensubdiv: {} ({})\n", to_string(c.verdict), c.explanation);
+        ok = c.verdict == Verdict::Agree;
         j["comparison"] = to_json(c);
     }
     if (!a.json.empty()) write_json(a.json, j);

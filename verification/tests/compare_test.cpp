@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "crossdiv/verification/compare.h"
+#include "crossdiv/verification/harness/mesh_comparison.h"
 
 namespace crossdiv::verification {
 namespace {

@@ -7,7 +7,7 @@
 
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/subdiv/loop.h"
-#include "crossdiv/verification/correspondence.h"
+#include "crossdiv/verification/harness/correspondence.h"
 
 namespace crossdiv::verification {
 namespace {

@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 
 #include "crossdiv/datasets/bundled.h"
-#include "crossdiv/verification/crease_comparison.h"
-#include "crossdiv/verification/scheme_comparison.h"
+#include "crossdiv/verification/comparisons/crease_comparison.h"
+#include "crossdiv/verification/comparisons/scheme_comparison.h"
 
 namespace crossdiv::verification {
 namespace {
@@ -18,7 +18,7 @@ TEST(CreaseComparison, OpenSubdivAgreesOnEveryCreaseMesh) {
     int runs = 0;
     for (const CreaseComparison& c : compare_crease_catalog()) {
         SCOPED_TRACE(c.input + " " + c.scheme + " " + c.method);
-        EXPECT_EQ(c.verdict, "agree") << c.explanation << c.core_error;
+        EXPECT_EQ(c.verdict, Verdict::Agree) << c.explanation << c.core_error;
         EXPECT_TRUE(c.faces_equal);
         ASSERT_EQ(c.max_rel_per_level.size(), 3u);
         for (double d : c.max_rel_per_level) EXPECT_LE(d, tolerances::kAgreementRelative);
@@ -47,9 +47,9 @@ TEST(CreaseComparison, ReferencesWithoutCreaseRulesRefuseTaggedMeshes) {
     for (const SchemeReferenceRun& r : c.runs) {
         SCOPED_TRACE(r.reference);
         if (r.reference == "opensubdiv") {
-            EXPECT_EQ(r.verdict, "agree") << r.explanation;
+            EXPECT_EQ(r.verdict, Verdict::Agree) << r.explanation;
         } else {
-            EXPECT_EQ(r.verdict, "ref-rejected");
+            EXPECT_EQ(r.verdict, Verdict::RefRejected);
             EXPECT_NE(r.explanation.find("has no crease rules"), std::string::npos) << r.explanation;
         }
     }

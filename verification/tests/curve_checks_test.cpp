@@ -7,8 +7,8 @@
 
 #include "crossdiv/datasets/bundled_curves.h"
 #include "crossdiv/error.h"
-#include "crossdiv/verification/curve_checks.h"
-#include "crossdiv/verification/tolerances.h"
+#include "crossdiv/verification/properties/curve_checks.h"
+#include "crossdiv/verification/harness/tolerances.h"
 
 using namespace crossdiv;
 using namespace crossdiv::verification;
@@ -33,7 +33,9 @@ TEST(CurveChecks, CourseCurveFilesReadAndPass) {
     const bool present = std::filesystem::is_directory(CROSSDIV_SHARED_DATA "/c3100/swp");
     EXPECT_EQ(files.empty(), !present);
     EXPECT_EQ(expand_curve_inputs({"curves:course"}).size(), files.size());
-    if (present) EXPECT_GE(files.size(), 13u);
+    if (present) {
+        EXPECT_GE(files.size(), 13u);
+    }
     for (const std::string& f : files) expect_all_pass(check_curve_file(load_curve_input(f), f));
 }
 
@@ -62,6 +64,8 @@ TEST(CurveChecks, TessellationStudyOrdersTheModes) {
         EXPECT_LE(row.distance_dev, row.tol);
         EXPECT_LE(row.wang_dev, row.tol);
         EXPECT_GE(row.wang_edges, row.uniform_edges / 3);  // per segment vs one count for all three
-        if (row.angle_reached) EXPECT_LE(row.angle_dev, row.tol);
+        if (row.angle_reached) {
+            EXPECT_LE(row.angle_dev, row.tol);
+        }
     }
 }

@@ -4,7 +4,7 @@
 
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/error.h"
-#include "crossdiv/verification/edit_differential.h"
+#include "crossdiv/verification/comparisons/edit_differential.h"
 
 namespace crossdiv::verification {
 namespace {

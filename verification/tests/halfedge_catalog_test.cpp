@@ -11,9 +11,9 @@
 #include "crossdiv/mesh/halfedge_validity.h"
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/subdiv/loop_split_flip.h"
-#include "crossdiv/verification/edit_differential.h"
-#include "crossdiv/verification/inputs.h"
-#include "crossdiv/verification/normals_comparison.h"
+#include "crossdiv/verification/comparisons/edit_differential.h"
+#include "crossdiv/verification/harness/inputs.h"
+#include "crossdiv/verification/comparisons/normals_comparison.h"
 
 namespace crossdiv::verification {
 namespace {
@@ -66,7 +66,9 @@ TEST(HalfedgeCatalog, LoopBySplitAndFlipEqualsIndexBasedLoopEverywhere) {
     EXPECT_GT(both_refused, 0);   // the invalid edge cases were offered to both
     std::cout << compared << " comparisons equal, " << both_refused << " refused by both, " << doubled
               << " doubled-triangle refusals\n";
-    if (kMeshedit) EXPECT_GE(compared, 4 * 40 + 4 * 8);
+    if (kMeshedit) {
+        EXPECT_GE(compared, 4 * 40 + 4 * 8);
+    }
 }
 
 TEST(HalfedgeCatalog, OpenMeshNormalsAreAreaAndUniformCgalIsClassified) {
@@ -152,7 +154,9 @@ TEST(HalfedgeCatalog, MeshEditColladaFilesLoadAndSubdivide) {
         const HalfedgeMesh he = HalfedgeMesh::from_triangles(mesh);
         EXPECT_TRUE(check_halfedge_mesh(he).empty()) << f;
         const std::string stem = std::filesystem::path(f).stem().string();
-        if (stem == "beetle") EXPECT_GT(he.num_boundary_loops(), 0);
+        if (stem == "beetle") {
+            EXPECT_GT(he.num_boundary_loops(), 0);
+        }
         if (stem == "teapot" || stem == "cube" || stem == "beetle" || stem == "cow") {
             const TriMesh fine = loop_subdivide(mesh, {LoopWeights::Loop, LoopBoundary::EdgeOnly}, 1);
             EXPECT_EQ(fine.num_faces(), 4 * mesh.num_faces()) << f;

@@ -4,7 +4,7 @@
 #include <csignal>
 #include <thread>
 
-#include "crossdiv/verification/isolate.h"
+#include "crossdiv/verification/harness/isolate.h"
 
 namespace crossdiv::verification {
 namespace {

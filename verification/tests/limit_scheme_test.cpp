@@ -7,10 +7,10 @@
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/error.h"
 #include "crossdiv/mesh/poly_connectivity.h"
-#include "crossdiv/verification/bfr_comparison.h"
-#include "crossdiv/verification/limit_checks.h"
-#include "crossdiv/verification/limit_comparison.h"
-#include "crossdiv/verification/scheme_comparison.h"
+#include "crossdiv/verification/comparisons/bfr_comparison.h"
+#include "crossdiv/verification/suite/limit_checks.h"
+#include "crossdiv/verification/comparisons/limit_comparison.h"
+#include "crossdiv/verification/comparisons/scheme_comparison.h"
 #include "scheme_test_catalog.h"
 
 namespace crossdiv::verification {
@@ -30,12 +30,12 @@ TEST(CatmullClarkComparison, EveryReferenceAgreesOrDivergesByItsDocumentedRule) 
             SCOPED_TRACE(b.name + " vs " + r.reference);
             if (r.reference == "openmesh" && open_mesh(b.mesh)) {
                 // OpenMesh's boundary vertex is 2/3, 1/6, 1/6: measured, and explained by it.
-                EXPECT_EQ(r.verdict, "diverge");
-                EXPECT_EQ(r.divergence_class, "boundary-rule");
+                EXPECT_EQ(r.verdict, Verdict::Diverge);
+                EXPECT_EQ(r.divergence_class, DivergenceClass::BoundaryRule);
                 EXPECT_GT(r.comparison.max_rel, 1e-3);
                 EXPECT_LE(r.max_rel_with_reference_rule, tolerances::kAgreementRelative);
             } else {
-                EXPECT_EQ(r.verdict, "agree") << r.explanation;
+                EXPECT_EQ(r.verdict, Verdict::Agree) << r.explanation;
                 EXPECT_LE(r.comparison.max_rel, tolerances::kAgreementRelative);
             }
         }
@@ -49,8 +49,8 @@ TEST(CatmullClarkComparison, CgalLacksTheCornerRule) {
     req.references = {"cgal", "opensubdiv"};
     const SchemeComparison c = compare_scheme(datasets::bundled_mesh("quad-grid"), "quad-grid", req);
     ASSERT_EQ(c.runs.size(), 2u);
-    EXPECT_EQ(c.runs[0].divergence_class, "corner-rule");
-    EXPECT_EQ(c.runs[1].verdict, "agree");
+    EXPECT_EQ(c.runs[0].divergence_class, DivergenceClass::CornerRule);
+    EXPECT_EQ(c.runs[1].verdict, Verdict::Agree);
 }
 
 TEST(LimitComparison, LoopAndCatmullClarkAgreeWithOpenSubdivClosedAndOpen) {
@@ -58,19 +58,19 @@ TEST(LimitComparison, LoopAndCatmullClarkAgreeWithOpenSubdivClosedAndOpen) {
         for (int levels : {0, 2}) {
             const LimitComparison c = compare_loop_limit(datasets::bundled_mesh(name), name,
                                                          {LoopWeights::Loop, LoopBoundary::EdgeAndCorner}, levels);
-            EXPECT_EQ(c.verdict, "agree") << name << " L" << levels << ": " << c.explanation;
+            EXPECT_EQ(c.verdict, Verdict::Agree) << name << " L" << levels << ": " << c.explanation;
             EXPECT_GT(c.normals_compared, 0);
         }
     for (const char* name : {"quad-cube", "quad-grid", "prism-5", "tetrahedron"})
         for (int levels : {1, 3}) {
             const LimitComparison c = compare_catmull_clark_limit(datasets::bundled_mesh(name), name,
                                                                   {CatmullClarkBoundary::EdgeOnly}, levels);
-            EXPECT_EQ(c.verdict, "agree") << name << " L" << levels << ": " << c.explanation;
+            EXPECT_EQ(c.verdict, Verdict::Agree) << name << " L" << levels << ": " << c.explanation;
         }
     // Warren: OpenSubdiv has Loop's weights only, and says so.
     EXPECT_EQ(compare_loop_limit(datasets::bundled_mesh("icosahedron"), "icosahedron",
                                  {LoopWeights::Warren, LoopBoundary::EdgeOnly}, 0).verdict,
-              "ref-rejected");
+              Verdict::RefRejected);
 }
 
 TEST(Spectrum, MatchesThePublishedClosedFormsAndIsRegular) {

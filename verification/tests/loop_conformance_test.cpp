@@ -8,11 +8,11 @@
 #include <filesystem>
 
 #include "crossdiv/datasets/bundled.h"
-#include "crossdiv/verification/inputs.h"
-#include "crossdiv/verification/loop_comparison.h"
-#include "crossdiv/verification/mesh_topology.h"
-#include "crossdiv/verification/references.h"
-#include "crossdiv/verification/tolerances.h"
+#include "crossdiv/verification/harness/inputs.h"
+#include "crossdiv/verification/comparisons/loop_comparison.h"
+#include "crossdiv/verification/harness/mesh_topology.h"
+#include "crossdiv/verification/implementations/registry.h"
+#include "crossdiv/verification/harness/tolerances.h"
 
 namespace crossdiv::verification {
 namespace {
@@ -97,7 +97,7 @@ TEST_P(LoopConformance, CoreAgreesWithEachReferenceOrDivergesByTheMissingRule) {
     req.options = c.options;
     req.levels = c.levels;
     const LoopComparison result = compare_loop(to_tri_mesh(input, "Loop"), c.input, req);
-    ASSERT_EQ(result.runs.size(), loop_references().size());
+    ASSERT_EQ(result.runs.size(), references_for(Scheme::Loop).size());
 
     for (const ReferenceRun& r : result.runs) {
         SCOPED_TRACE(r.reference + ": " + r.explanation);
@@ -111,13 +111,13 @@ TEST_P(LoopConformance, CoreAgreesWithEachReferenceOrDivergesByTheMissingRule) {
         const bool expect_diverge =
             (weights_missing && fp.curved_irregular_interior) || (boundary_missing && fp.curved_one_face_corner);
         if (!expect_diverge) {
-            EXPECT_EQ(r.verdict, "agree");
+            EXPECT_EQ(r.verdict, Verdict::Agree);
             for (int l = 0; l < c.levels; ++l)
                 EXPECT_LE(r.level_max_rel[l], tolerances::kAgreementRelative) << "level " << l + 1;
             continue;
         }
-        EXPECT_EQ(r.verdict, "diverge");
-        EXPECT_EQ(r.divergence_class, weights_missing ? "weight-family" : "corner-rule");
+        EXPECT_EQ(r.verdict, Verdict::Diverge);
+        EXPECT_EQ(r.divergence_class, weights_missing ? DivergenceClass::WeightFamily : DivergenceClass::CornerRule);
         // A real rule difference, far above rounding: vertices move by a visible fraction.
         EXPECT_GT(r.comparison.max_rel, 1e-6);
     }
@@ -129,8 +129,9 @@ INSTANTIATE_TEST_SUITE_P(AllInputs, LoopConformance, ::testing::ValuesIn(all_cas
 TEST(LoopConformanceData, TheCatalogIsComplete) {
     // The bundled catalog is always there; the course and CGAL folders are optional inputs.
     EXPECT_EQ(datasets::bundled_meshes().size(), 7u + 10u + 1u);
-    if (std::filesystem::is_directory(CROSSDIV_SHARED_DATA "/c3100/objs"))
+    if (std::filesystem::is_directory(CROSSDIV_SHARED_DATA "/c3100/objs")) {
         EXPECT_EQ(datasets::course_mesh_files().size(), 3u);
+    }
 }
 
 }  // namespace

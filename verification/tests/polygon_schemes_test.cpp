@@ -6,9 +6,9 @@
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/mesh/poly_connectivity.h"
 #include "crossdiv/subdiv/sqrt3.h"
-#include "crossdiv/verification/butterfly_properties.h"
-#include "crossdiv/verification/correspondence.h"
-#include "crossdiv/verification/scheme_comparison.h"
+#include "crossdiv/verification/properties/butterfly_properties.h"
+#include "crossdiv/verification/harness/correspondence.h"
+#include "crossdiv/verification/comparisons/scheme_comparison.h"
 #include "scheme_test_catalog.h"
 
 namespace crossdiv::verification {
@@ -37,10 +37,10 @@ TEST(DooSabinComparison, CgalAgreesOnClosedMeshesAndDropsBorderFacesOnOpenOnes) 
         const SchemeReferenceRun& r = c.runs[0];
         SCOPED_TRACE(b.name);
         if (open_mesh(b.mesh)) {
-            EXPECT_EQ(r.divergence_class, "border-faces-dropped") << r.explanation;
+            EXPECT_EQ(r.divergence_class, DivergenceClass::BorderFacesDropped) << r.explanation;
             EXPECT_LE(r.max_rel_with_reference_rule, tolerances::kAgreementRelative);
         } else {
-            EXPECT_EQ(r.verdict, "agree") << r.explanation;
+            EXPECT_EQ(r.verdict, Verdict::Agree) << r.explanation;
         }
     }
 }
@@ -61,12 +61,12 @@ TEST(Sqrt3Comparison, OneCallAgreesPerLevelCallsNeverRefineTheBoundary) {
             const bool one_call = r.reference.find("one-call") != std::string::npos;
             if (r.reference.rfind("openmesh", 0) == 0 && max_valence(b.mesh) > 49) {
                 // Sqrt3T's weight table has 50 entries: pole-64 reads past it.
-                EXPECT_EQ(r.divergence_class, "valence-limit") << r.explanation;
+                EXPECT_EQ(r.divergence_class, DivergenceClass::ValenceLimit) << r.explanation;
             } else if (!one_call && open_mesh(b.mesh)) {
-                EXPECT_EQ(r.divergence_class, "parity") << r.explanation;
+                EXPECT_EQ(r.divergence_class, DivergenceClass::Parity) << r.explanation;
                 EXPECT_LE(r.max_rel_with_reference_rule, tolerances::kAgreementRelative);
             } else {
-                EXPECT_EQ(r.verdict, "agree") << r.explanation;
+                EXPECT_EQ(r.verdict, Verdict::Agree) << r.explanation;
             }
         }
     }
@@ -81,7 +81,7 @@ TEST(ModifiedButterflyComparison, OpenMeshAgreesOnEveryTriangleMesh) {
         req.levels = 2;
         const SchemeComparison c = compare_scheme(b.mesh, b.name, req);
         ASSERT_EQ(c.runs.size(), 1u);
-        EXPECT_EQ(c.runs[0].verdict, "agree") << b.name << ": " << c.runs[0].explanation;
+        EXPECT_EQ(c.runs[0].verdict, Verdict::Agree) << b.name << ": " << c.runs[0].explanation;
     }
 }
 #endif

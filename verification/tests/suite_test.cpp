@@ -11,10 +11,10 @@
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/error.h"
 #include "crossdiv/subdiv/loop.h"
-#include "crossdiv/verification/bench.h"
-#include "crossdiv/verification/references.h"
-#include "crossdiv/verification/shrink.h"
-#include "crossdiv/verification/suite.h"
+#include "crossdiv/verification/bench/bench.h"
+#include "crossdiv/verification/implementations/registry.h"
+#include "crossdiv/verification/comparisons/shrink.h"
+#include "crossdiv/verification/suite/suite.h"
 
 namespace crossdiv::verification {
 namespace {
@@ -194,12 +194,12 @@ TEST(Tiers, ARuleDifferenceIsClassifiedTheSameInEveryTier) {
     for (const auto& [tier, tol] : std::vector<std::pair<Tier, double>>{
              {Tier::Strict, 0.0}, {Tier::Weak, 1e-12}, {Tier::Geometric, 1e-6}}) {
         const LoopComparison c = compare_loop(ico, "icosahedron", against("opensubdiv", warren, 2, tier, tol));
-        EXPECT_EQ(c.runs[0].verdict, "diverge") << to_string(tier);
-        EXPECT_EQ(c.runs[0].divergence_class, "weight-family") << to_string(tier) << ": " << c.runs[0].explanation;
+        EXPECT_EQ(c.runs[0].verdict, Verdict::Diverge) << to_string(tier);
+        EXPECT_EQ(c.runs[0].divergence_class, DivergenceClass::WeightFamily) << to_string(tier) << ": " << c.runs[0].explanation;
     }
     // The geometric tier at a tolerance above what the rule moves calls it agreement.
     const LoopComparison loose = compare_loop(ico, "icosahedron", against("opensubdiv", warren, 2, Tier::Geometric, 0.05));
-    EXPECT_EQ(loose.runs[0].verdict, "agree");
+    EXPECT_EQ(loose.runs[0].verdict, Verdict::Agree);
     EXPECT_GT(loose.runs[0].hausdorff_rel, 1e-4);
     EXPECT_LT(loose.runs[0].hausdorff_rel, 0.05);
 }
@@ -208,18 +208,18 @@ TEST(Shrink, CornerRuleOnTheOpenPatchShrinksToOneTriangle) {
     const TriMesh patch = to_tri_mesh(datasets::bundled_mesh("open-patch"), "test");
     const LoopComparisonRequest req = against("openmesh", {LoopWeights::Loop, LoopBoundary::EdgeAndCorner}, 2);
     const ShrinkResult r = shrink_divergence(patch, "open-patch", req);
-    EXPECT_EQ(r.divergence_class, "corner-rule");
+    EXPECT_EQ(r.divergence_class, DivergenceClass::CornerRule);
     EXPECT_LE(r.neighbourhood.num_faces(), 4);
     // A one-face corner is what the corner rule moves: a single triangle is all corners.
     EXPECT_EQ(r.minimal.num_faces(), 1);
-    EXPECT_EQ(r.minimal_comparison.runs[0].divergence_class, "corner-rule");
+    EXPECT_EQ(r.minimal_comparison.runs[0].divergence_class, DivergenceClass::CornerRule);
 }
 
 TEST(Shrink, WarrenWeightsShrinkToOneIrregularFanAndTheResultIsOneMinimal) {
     const TriMesh ico = to_tri_mesh(datasets::bundled_mesh("icosahedron"), "test");
     const LoopComparisonRequest req = against("opensubdiv", {LoopWeights::Warren, LoopBoundary::EdgeOnly}, 1);
     const ShrinkResult r = shrink_divergence(ico, "icosahedron", req);
-    EXPECT_EQ(r.divergence_class, "weight-family");
+    EXPECT_EQ(r.divergence_class, DivergenceClass::WeightFamily);
     EXPECT_LE(r.minimal.num_faces(), 5);
     // 1-minimal: dropping any single face loses the divergence.
     for (int f = 0; f < r.minimal.num_faces(); ++f) {
@@ -228,7 +228,7 @@ TEST(Shrink, WarrenWeightsShrinkToOneIrregularFanAndTheResultIsOneMinimal) {
             if (g != f) keep.push_back(g);
         const TriMesh smaller = submesh(r.minimal, keep);
         const LoopComparison c = compare_loop(smaller, "smaller", req);
-        EXPECT_FALSE(c.runs[0].verdict == "diverge" && c.runs[0].divergence_class == "weight-family") << f;
+        EXPECT_FALSE(c.runs[0].verdict == Verdict::Diverge && c.runs[0].divergence_class == DivergenceClass::WeightFamily) << f;
     }
 }
 
@@ -240,7 +240,7 @@ TEST(Shrink, RefusesWhenThereIsNothingToShrink) {
 TEST(Bench, EveryImplementationMakesTheSameOutputSize) {
     const std::vector<BenchInput> in = {{"octahedron", to_tri_mesh(datasets::bundled_mesh("octahedron"), "t"), 2}};
     const auto records = run_bench(in, {LoopWeights::Loop, LoopBoundary::EdgeOnly}, 1, false);
-    ASSERT_EQ(records.size(), 1 + loop_references().size());
+    ASSERT_EQ(records.size(), 1 + references_for(Scheme::Loop).size());
     EXPECT_EQ(records[0].impl, "core");
     for (const BenchRecord& r : records) {
         EXPECT_EQ(r.status, "ok") << r.impl;

@@ -9,7 +9,7 @@
 #include "crossdiv/datasets/bundled_surfaces.h"
 #include "crossdiv/error.h"
 #include "crossdiv/io/patch_io.h"
-#include "crossdiv/verification/surface_checks.h"
+#include "crossdiv/verification/properties/surface_checks.h"
 
 using namespace crossdiv;
 using namespace crossdiv::verification;

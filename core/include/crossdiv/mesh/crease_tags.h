@@ -6,9 +6,12 @@
 /// indices from 0). Tags name vertices, not edges, so they survive any renumbering of edges
 /// and a refined mesh can carry its own (decayed) tags.
 
+#include <array>
 #include <optional>
 #include <string_view>
 #include <vector>
+
+#include "crossdiv/named_variant.h"
 
 namespace crossdiv {
 
@@ -24,6 +27,10 @@ enum class CreaseMethod {
 
 /// "uniform" / "chaikin".
 constexpr std::string_view to_string(CreaseMethod m) { return m == CreaseMethod::Uniform ? "uniform" : "chaikin"; }
+/// The creasing method named `name`. @throws InputError listing the names.
+inline CreaseMethod crease_method_from_string(std::string_view name) {
+    return variant_from_string<CreaseMethod>(name, std::array{CreaseMethod::Uniform, CreaseMethod::Chaikin}, "creasing method");
+}
 
 /// Sharpness of the edge between vertices a and b (either order). 0 is smooth; 10 and above
 /// is infinitely sharp (Sdc::Crease::SHARPNESS_INFINITE); in between the edge is semi-sharp

@@ -10,10 +10,13 @@
 /// topology", SIGGRAPH 1996: the modified scheme, a K-point stencil around an extraordinary
 /// endpoint, C1 at every valence.
 
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <string_view>
 #include <vector>
+
+#include "crossdiv/named_variant.h"
 
 namespace crossdiv {
 
@@ -67,6 +70,12 @@ inline std::vector<double> modified_butterfly_stencil(int valence) {
 /// "butterfly", "modified-butterfly".
 constexpr std::string_view to_string(ButterflyVariant v) {
     return v == ButterflyVariant::Classic ? "butterfly" : "modified-butterfly";
+}
+
+/// The variant named `name`. @throws InputError listing the names.
+inline ButterflyVariant butterfly_variant_from_string(std::string_view name) {
+    return variant_from_string<ButterflyVariant>(name, std::array{ButterflyVariant::Classic, ButterflyVariant::Modified},
+                                                 "Butterfly variant");
 }
 
 }  // namespace crossdiv

@@ -8,8 +8,10 @@
 /// (Sdc::Scheme<SCHEME_CATMARK>::assignSmoothMaskForVertex): (n-2)/n on the vertex, 1/n^2 on
 /// each ring vertex and on each new face point -- the paper's (F + 2R + (n-3) V)/n expanded.
 
+#include <array>
 #include <string_view>
 
+#include "crossdiv/named_variant.h"
 #include "crossdiv/mesh/crease_tags.h"
 
 namespace crossdiv {
@@ -77,6 +79,13 @@ constexpr std::string_view to_string(CatmullClarkBoundary b) {
         case CatmullClarkBoundary::MidpointAverage: return "midpoint-average";
     }
     return "?";
+}
+
+/// The boundary rule named `name`. @throws InputError listing the names.
+inline CatmullClarkBoundary catmull_clark_boundary_from_string(std::string_view name) {
+    return variant_from_string<CatmullClarkBoundary>(
+        name, std::array{CatmullClarkBoundary::EdgeOnly, CatmullClarkBoundary::EdgeAndCorner, CatmullClarkBoundary::MidpointAverage},
+        "Catmull-Clark boundary rule");
 }
 
 }  // namespace crossdiv

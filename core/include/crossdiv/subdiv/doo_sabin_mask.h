@@ -9,9 +9,12 @@
 /// from v_0 around the face: alpha_0 = 1/4 + 5/(4n), alpha_k = (3 + 2 cos(2 pi k / n)) / (4n).
 /// On a quad this is the tensor-product quadratic B-spline's (9, 3, 1, 3) / 16.
 
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <string_view>
+
+#include "crossdiv/named_variant.h"
 
 namespace crossdiv {
 
@@ -46,6 +49,12 @@ inline constexpr double kChaikinNear = 0.75, kChaikinFar = 0.25;
 /// "chaikin-boundary", "drop-border-faces".
 constexpr std::string_view to_string(DooSabinBoundary b) {
     return b == DooSabinBoundary::ChaikinBoundary ? "chaikin-boundary" : "drop-border-faces";
+}
+
+/// The boundary rule named `name`. @throws InputError listing the names.
+inline DooSabinBoundary doo_sabin_boundary_from_string(std::string_view name) {
+    return variant_from_string<DooSabinBoundary>(
+        name, std::array{DooSabinBoundary::ChaikinBoundary, DooSabinBoundary::DropBorderFaces}, "Doo-Sabin boundary rule");
 }
 
 }  // namespace crossdiv

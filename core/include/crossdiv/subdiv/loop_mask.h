@@ -8,9 +8,11 @@
 /// even weights); boundary rules as in D. Zorin, P. Schroeder et al., "Subdivision for
 /// Modeling and Animation", SIGGRAPH 2000 course notes, ch. 4.
 
+#include <array>
 #include <cmath>
 #include <string_view>
 
+#include "crossdiv/named_variant.h"
 #include "crossdiv/mesh/crease_tags.h"
 
 namespace crossdiv {
@@ -102,6 +104,16 @@ constexpr std::string_view to_string(LoopWeights w) { return w == LoopWeights::L
 /// "edge-only" / "edge-and-corner".
 constexpr std::string_view to_string(LoopBoundary b) {
     return b == LoopBoundary::EdgeOnly ? "edge-only" : "edge-and-corner";
+}
+
+/// The weight family named `name` ("loop", "warren"). @throws InputError listing the names.
+inline LoopWeights loop_weights_from_string(std::string_view name) {
+    return variant_from_string<LoopWeights>(name, std::array{LoopWeights::Loop, LoopWeights::Warren}, "Loop weight family");
+}
+/// The boundary rule named `name` ("edge-only", "edge-and-corner"). @throws InputError.
+inline LoopBoundary loop_boundary_from_string(std::string_view name) {
+    return variant_from_string<LoopBoundary>(name, std::array{LoopBoundary::EdgeOnly, LoopBoundary::EdgeAndCorner},
+                                             "Loop boundary rule");
 }
 
 }  // namespace crossdiv

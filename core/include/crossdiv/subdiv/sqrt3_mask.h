@@ -7,9 +7,12 @@
 /// a 1-to-9 refinement. The boundary polygon is refined by the univariate ternary rule, and
 /// only on every second step, so that two steps trisect each boundary edge once.
 
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <string_view>
+
+#include "crossdiv/named_variant.h"
 
 namespace crossdiv {
 
@@ -55,6 +58,12 @@ inline constexpr double kSqrt3BoundaryEdgeFar = 1.0 / 27.0, kSqrt3BoundaryEdgeNe
 /// "count-from-input", "restart-each-level".
 constexpr std::string_view to_string(Sqrt3Parity p) {
     return p == Sqrt3Parity::CountFromInput ? "count-from-input" : "restart-each-level";
+}
+
+/// The parity named `name`. @throws InputError listing the names.
+inline Sqrt3Parity sqrt3_parity_from_string(std::string_view name) {
+    return variant_from_string<Sqrt3Parity>(name, std::array{Sqrt3Parity::CountFromInput, Sqrt3Parity::RestartEachLevel},
+                                            "sqrt3 boundary parity");
 }
 
 }  // namespace crossdiv

@@ -15,6 +15,8 @@
 
 namespace crossdiv::adapters::cgal {
 
+using adapters::ClosedMeshReport;  // reference.h
+
 /// Loop_mask_3 has Loop's weights, the midpoint border edge and the 1-6-1 border vertex
 /// (our EdgeOnly); it has no corner rule.
 bool supports(const LoopOptions& options);
@@ -44,15 +46,6 @@ LevelTrace doo_sabin(const PolyMesh& mesh, int levels);
 /// never refined) when false. @throws as catmull_clark(), and for a non-triangle face.
 LevelTrace sqrt3(const TriMesh& mesh, int levels, bool one_call);
 
-/// What CGAL says about a triangle mesh as a closed surface.
-struct ClosedMeshReport {
-    bool built = false;           ///< Surface_mesh accepted every face
-    std::string error;            ///< why not, naming the face
-    bool valid = false;           ///< CGAL::is_valid_polygon_mesh
-    bool closed = false;          ///< CGAL::is_closed (no border halfedge)
-    bool outward = false;         ///< PMP::is_outward_oriented (only computed when closed)
-    double volume = 0;            ///< PMP::volume (only computed when closed)
-};
 /// Builds a Surface_mesh and asks is_valid_polygon_mesh, is_closed, and, for a closed mesh,
 /// PMP::is_outward_oriented and PMP::volume. Never throws for a bad mesh: a face Surface_mesh
 /// refuses is reported in `error`.

@@ -33,4 +33,37 @@ inline void reject_crease_tags(const PolyMesh& mesh, const char* library) {
 /// the library's own order.
 using LevelTrace = std::vector<PolyMesh>;
 
+/// A point of a limit surface with its first partial derivatives.
+struct LimitSample {
+    Vec3 position, du, dv;
+};
+struct LimitEvaluation {
+    bool regular = false;  ///< Bfr represents the face exactly by one regular bicubic patch
+    std::vector<LimitSample> samples;
+};
+
+/// Limit positions and limit normals of every vertex of a refined level (the normal is the
+/// normalized cross product of the two limit tangents, zero where they are parallel); `level`
+/// is that level's mesh in the library's order.
+struct LimitPoints {
+    PolyMesh level;
+    std::vector<Vec3> position, normal;
+};
+
+/// Position and first and second derivatives at each requested parameter.
+struct SplineSamples {
+    std::vector<Vec3> position, d1, d2;
+};
+
+/// What a library says about a triangle mesh as a closed surface (CGAL: is_valid_polygon_mesh,
+/// is_closed, PMP::is_outward_oriented, PMP::volume).
+struct ClosedMeshReport {
+    bool built = false;           ///< Surface_mesh accepted every face
+    std::string error;            ///< why not, naming the face
+    bool valid = false;           ///< CGAL::is_valid_polygon_mesh
+    bool closed = false;          ///< CGAL::is_closed (no border halfedge)
+    bool outward = false;         ///< PMP::is_outward_oriented (only computed when closed)
+    double volume = 0;            ///< PMP::volume (only computed when closed)
+};
+
 }  // namespace crossdiv::adapters

@@ -9,14 +9,13 @@
 #include <string>
 #include <vector>
 
+#include "crossdiv/adapters/reference.h"
 #include "crossdiv/mesh/poly_mesh.h"
 
 namespace crossdiv::adapters::eigen_splines {
 
-/// Position and first and second derivatives at each requested parameter.
-struct SplineSamples {
-    std::vector<Vec3> position, d1, d2;
-};
+using adapters::SplineSamples;  // reference.h
+
 
 /// The uniform cubic B-spline of `control` (n >= 4 points) as Eigen::Spline with the
 /// uniform knot vector 0, 1, ..., n + 3, evaluated at our global parameters u in [0, n - 3]

@@ -15,6 +15,10 @@
 
 namespace crossdiv::adapters::opensubdiv {
 
+using adapters::LimitSample;  // reference.h
+using adapters::LimitEvaluation;  // reference.h
+using adapters::LimitPoints;  // reference.h
+
 /// OpenSubdiv's Loop has Loop's 1987 weights only; both boundary rules map to Sdc options
 /// (EdgeOnly -> VTX_BOUNDARY_EDGE_ONLY, EdgeAndCorner -> VTX_BOUNDARY_EDGE_AND_CORNER; the
 /// library default, VTX_BOUNDARY_NONE, would make boundary faces holes and is never used).
@@ -37,14 +41,6 @@ LevelTrace loop(const PolyMesh& mesh, const LoopOptions& options, int levels);
 /// `crossdiv bench` times. Returns the number of output faces. @throws as loop().
 size_t loop_native(const TriMesh& mesh, const LoopOptions& options, int levels);
 
-/// A point of a limit surface with its first partial derivatives.
-struct LimitSample {
-    Vec3 position, du, dv;
-};
-struct LimitEvaluation {
-    bool regular = false;  ///< Bfr represents the face exactly by one regular bicubic patch
-    std::vector<LimitSample> samples;
-};
 /// The Catmull-Clark limit surface of one face of a polygon mesh, evaluated by Bfr
 /// (Bfr::RefinerSurfaceFactory, Surface<double>::Evaluate) at each (u, v). For a quad, u runs
 /// from its corner 0 to corner 1 and v from corner 0 to corner 3. Boundary rule EDGE_ONLY.
@@ -68,10 +64,6 @@ LevelTrace catmull_clark(const PolyMesh& mesh, const CatmullClarkOptions& option
 /// Limit positions and limit normals of every vertex of a refined level, by
 /// PrimvarRefinerReal<double>::Limit (with its two tangents; the normal is their normalized
 /// cross product, zero where they are parallel). `level` is that level's mesh in Far's order.
-struct LimitPoints {
-    PolyMesh level;
-    std::vector<Vec3> position, normal;
-};
 /// Loop: `levels` uniform levels (0: the input itself), then Limit() on the last one.
 /// @throws Rejected for Warren weights or a topology Far refuses.
 LimitPoints loop_limit(const TriMesh& mesh, const LoopOptions& options, int levels);

@@ -1,0 +1,66 @@
+#pragma once
+/// @file
+/// The one classification ladder: why a run diverges, decided by measurement. Every
+/// comparison of refinements (Loop, the polygon schemes) hands its measured tests to
+/// classify_divergence, which tries them in one fixed precedence and takes the first that
+/// holds:
+///
+///   1. isolated-vertex-handling  same faces, and only vertices without faces differ
+///   2. rounding                  same faces, within tolerances::kRoundingUlps of the coordinates
+///   3. the reference's rule      core re-run with the rule the reference applies agrees in faces
+///                                and positions (weight-family, corner-rule, boundary-rule,
+///                                border-faces-dropped, parity: rule_difference_class)
+///   4. valence-limit             at level 1 exactly the vertices beyond the reference's weight
+///                                table differ
+///   5. topology                  the refined connectivity differs (or, with equal counts, no
+///                                one-to-one vertex match: ambiguous-correspondence)
+///   6. unexplained               none of the above: a failure
+///
+/// A test a comparison cannot run (no weight table, no vertex correspondence) is left empty.
+/// Cheap tests come first; a test is run only when every one before it failed, so core is
+/// re-run with another rule only when rounding does not already explain the difference.
+
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "crossdiv/mesh/poly_mesh.h"
+#include "crossdiv/verification/harness/verdict.h"
+#include "crossdiv/verification/implementations/scheme.h"
+
+namespace crossdiv::verification {
+
+/// A class with the sentence (measured figures included) that shows it.
+struct Classification {
+    DivergenceClass cls = DivergenceClass::Unexplained;
+    std::string explanation;
+};
+
+/// One test of the ladder: its classification when it holds, nothing otherwise.
+using DivergenceTest = std::function<std::optional<Classification>()>;
+
+/// The tests one comparison can run on one divergence (empty: not applicable).
+struct DivergenceTests {
+    DivergenceTest isolated_vertices;
+    DivergenceTest rounding;
+    DivergenceTest reference_rule;
+    DivergenceTest valence_table;
+    DivergenceTest topology;
+    /// The sentence for an unexplained divergence (its class is always Unexplained).
+    std::function<std::string()> unexplained;
+};
+
+/// The first test of the ladder that holds, else Unexplained with `tests.unexplained()`.
+Classification classify_divergence(const DivergenceTests& tests);
+
+/// The class of a divergence that the reference's rule `applied` explains, against the rule
+/// `requested`: Loop weight-family, corner-rule or both; Catmull-Clark corner-rule between
+/// edge-only and edge-and-corner, else boundary-rule; Doo-Sabin border-faces-dropped; sqrt3 parity.
+DivergenceClass rule_difference_class(Scheme scheme, const SchemeRule& applied, const SchemeRule& requested);
+
+/// The input handling a reference shows on an input core refuses, from the first error of
+/// core's mesh checks: non-manifold-handling, orientation-handling, degenerate-face-handling,
+/// else invalid-input-handling.
+DivergenceClass input_handling_class(const PolyMesh& input);
+
+}  // namespace crossdiv::verification

@@ -1,0 +1,56 @@
+#pragma once
+/// @file
+/// Creases (Loop and Catmull-Clark) against OpenSubdiv, the only reference with crease
+/// rules: core and Far refine the same tagged mesh under the same creasing method, every
+/// level is matched by position and faces (the two number refined edges differently from
+/// level 2 on), and the largest distance per level is reported. OpenMesh and CGAL refuse a
+/// tagged mesh (adapters::reject_crease_tags) rather than answer a smooth question.
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "crossdiv/mesh/poly_mesh.h"
+#include "crossdiv/verification/harness/verdict.h"
+#include "crossdiv/verification/harness/tolerances.h"
+
+namespace crossdiv::verification {
+
+struct CreaseRequest {
+    bool loop = false;  ///< Loop, else Catmull-Clark
+    CreaseMethod method = CreaseMethod::Uniform;
+    int levels = 3;
+    double timeout_seconds = 60;
+    bool isolate = true;
+    double tolerance = tolerances::kAgreementRelative;  ///< relative to our diagonal
+};
+
+struct CreaseComparison {
+    std::string input, scheme, method;
+    int levels = 0;
+    int edge_tags = 0, vertex_tags = 0;
+    std::string core_error;  ///< non-empty: core refused the mesh (the message)
+    /// "agree", "diverge", "ours-rejected", "ref-rejected", "ref-crashed".
+    Verdict verdict = Verdict::Agree;
+    DivergenceClass divergence_class = DivergenceClass::None;  ///< "topology" or "unexplained" for "diverge"
+    std::string explanation;
+    std::vector<double> max_rel_per_level;  ///< levels 1..N; the last is max_rel
+    double max_rel = NAN;
+    bool faces_equal = false;  ///< at every level, under the matching
+    /// How far creases moved the surface: the largest distance between the tagged and the
+    /// untagged refinement at the last level, over the diagonal (0 would mean the tags did
+    /// nothing, and the check would not test them).
+    double effect_of_tags = NAN;
+};
+
+/// Refines `mesh` (its tags) with core and with OpenSubdiv and compares every level.
+/// Failures of either side are recorded, never thrown.
+CreaseComparison compare_creases(const PolyMesh& mesh, const std::string& name, const CreaseRequest& request);
+
+/// The whole crease catalog (datasets::crease_meshes): Catmull-Clark on every mesh, Loop on
+/// the triangle meshes, each under uniform and Chaikin decay, three levels.
+std::vector<CreaseComparison> compare_crease_catalog();
+
+nlohmann::json to_json(const CreaseComparison& c);
+
+}  // namespace crossdiv::verification

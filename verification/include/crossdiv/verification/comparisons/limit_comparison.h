@@ -1,0 +1,94 @@
+#pragma once
+/// @file
+/// Limit positions and normals of core against OpenSubdiv's PrimvarRefiner::Limit, and the
+/// convergence of refined vertices to their limit; plus the spectrum of the local subdivision
+/// matrices (eigen-analysis of limit behaviour).
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "crossdiv/mesh/poly_mesh.h"
+#include "crossdiv/subdiv/catmull_clark_mask.h"
+#include "crossdiv/subdiv/loop_mask.h"
+#include "crossdiv/verification/harness/verdict.h"
+#include "crossdiv/verification/harness/isolate.h"
+
+namespace crossdiv::tolerances {
+/// Core's limit positions agree with OpenSubdiv's when they differ by at most this times the
+/// bounding-box diagonal: both apply one mask of up to 2n+1 terms to positions that already
+/// agree to ~1e-16 of the diagonal after the levels; 1e-12 is the bar and 1e4 times
+/// above what rounding makes.
+inline constexpr double kLimitAgreementRelative = 1e-12;
+/// Interior limit normals agree to this angle (radians): both are cross products of tangent
+/// masks that differ by a scale per tangent (OpenSubdiv normalizes its masks differently),
+/// which moves the direction by rounding only, a few ulps of the tangents' conditioning.
+inline constexpr double kLimitNormalRad = 1e-10;
+}  // namespace crossdiv::tolerances
+
+namespace crossdiv::verification {
+
+struct LimitComparison {
+    std::string input, scheme, rule;
+    int levels = 0;
+    int vertices = 0;             ///< of the level whose limit is taken
+    std::string core_error;       ///< core refused (the message)
+    RunOutcome outcome;           ///< OpenSubdiv's run
+    Verdict verdict = Verdict::Agree;          ///< "agree", "diverge", "ref-rejected", "ref-crashed", "ours-rejected"
+    double max_rel_position = NAN;  ///< over every vertex, relative to the diagonal
+    int normals_compared = 0;       ///< interior vertices (core computes no boundary normal)
+    double max_normal_angle = NAN;  ///< radians, over those
+    std::string explanation;
+};
+
+/// Loop: `levels` levels of core then core's limit masks, against OpenSubdiv with the same
+/// levels and Limit(). Vertices matched by nearest position (the levels agree to rounding).
+LimitComparison compare_loop_limit(const PolyMesh& input, const std::string& name, const LoopOptions& options,
+                                   int levels, bool isolate = true);
+/// Catmull-Clark, as compare_loop_limit.
+LimitComparison compare_catmull_clark_limit(const PolyMesh& input, const std::string& name,
+                                            const CatmullClarkOptions& options, int levels, bool isolate = true);
+
+nlohmann::json to_json(const LimitComparison& c);
+
+/// One row of the eigen table: the local subdivision matrix of an interior vertex of valence
+/// n (rows: the refined 1-ring, columns: the coarse 1-ring), taken out of core's own
+/// subdivision matrix of a fan, and its spectrum against the published closed form.
+struct SpectrumRow {
+    std::string scheme;  ///< "loop", "warren", "catmull-clark"
+    int valence = 0;
+    std::vector<double> eigenvalues;   ///< core's matrix, moduli sorted descending
+    std::vector<double> closed_form;   ///< the published spectrum, sorted descending
+    double max_difference = NAN;       ///< between the two lists
+    double max_imaginary = NAN;        ///< largest |imaginary part| among core's eigenvalues
+    double subdominant = NAN;          ///< lambda_1
+    int subdominant_multiplicity = 0;  ///< eigenvalues within 1e-9 of lambda_1
+    double next = NAN;                 ///< the largest eigenvalue below lambda_1
+    /// lambda_1 real, double, and strictly above the next: the condition for a regular
+    /// characteristic map (Reif 1995; Zorin's thesis ch. 4).
+    bool regular_characteristic_map = false;
+    /// The eigenvalue that governs how fast a vertex position converges: the largest one
+    /// below 1 whose eigenvector is rotation invariant (the others vanish at the centre).
+    double vertex_rate = NAN;
+};
+
+/// @throws InputError for a scheme other than loop, warren, catmull-clark or n < 3.
+SpectrumRow local_spectrum(const std::string& scheme, int valence);
+
+/// One row of the convergence table: the centre of a fan of valence n refined k = 1..levels
+/// times, its distance to the limit position computed on the input.
+struct ConvergenceRow {
+    std::string scheme;
+    int valence = 0;
+    std::vector<double> distance;  ///< k = 1 .. levels, relative to the input's diagonal
+    double fitted_rate = NAN;      ///< geometric mean of d_{k+1} / d_k over the levels
+    double vertex_rate = NAN;      ///< from the spectrum, for comparison
+    double subdominant = NAN;
+};
+
+ConvergenceRow convergence(const std::string& scheme, int valence, int levels);
+
+nlohmann::json to_json(const SpectrumRow& r);
+nlohmann::json to_json(const ConvergenceRow& r);
+
+}  // namespace crossdiv::verification

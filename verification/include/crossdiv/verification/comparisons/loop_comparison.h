@@ -1,0 +1,113 @@
+#pragma once
+/// @file
+/// One Loop comparison end to end: refine with core, run each reference isolated, match
+/// vertices, compare every level, and classify each divergence by measurement.
+
+#include <nlohmann/json.hpp>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "crossdiv/mesh/tri_mesh.h"
+#include "crossdiv/subdiv/loop_mask.h"
+#include "crossdiv/verification/harness/verdict.h"
+#include "crossdiv/verification/harness/mesh_comparison.h"
+#include "crossdiv/verification/harness/correspondence.h"
+#include "crossdiv/verification/harness/isolate.h"
+#include "crossdiv/verification/harness/tolerances.h"
+
+namespace crossdiv::verification {
+
+/// How close is close enough (the tiers of OpenSubdiv's hbr/far regressions, plus one).
+enum class Tier {
+    Strict,     ///< bitwise: identical topology and every coordinate equal
+    Weak,       ///< identical topology, max distance <= tolerance * diagonal at every level
+    Geometric,  ///< vertex-set Hausdorff distance <= tolerance * diagonal; topology may differ
+};
+const char* to_string(Tier tier);
+/// @throws InputError for a name other than strict, weak, geometric.
+Tier tier_from_string(const std::string& name);
+
+struct LoopComparisonRequest {
+    LoopOptions options;
+    int levels = 1;
+    std::vector<std::string> references;  ///< names; all built ones when empty
+    double timeout_seconds = 120;
+    bool isolate = true;
+    Tier tier = Tier::Weak;
+    double tolerance = tolerances::kAgreementRelative;  ///< relative to the diagonal (Weak, Geometric)
+    /// Keep, for each divergence, our mesh at the first level that diverges with each
+    /// vertex's distance to the reference (for pictures), if it has at most this many faces.
+    int error_field_max_faces = 0;
+};
+
+/// Our mesh at one level with the per-vertex distance to a reference (NaN: unmatched).
+struct ErrorField {
+    int level = 0;
+    PolyMesh mesh;
+    std::vector<double> distance;
+};
+
+/// The outcome of one reference on one input.
+struct ReferenceRun {
+    std::string reference, version;
+    LoopOptions ran_with;  ///< the options the reference was run with (closest it has)
+    RunOutcome outcome;
+    Correspondence correspondence;
+    MeshComparison comparison;             ///< last level
+    std::vector<double> level_max_rel;     ///< max relative error at levels 1..N
+    /// "agree", "diverge", "ref-rejected", "ref-crashed" (also threw and timeout).
+    Verdict verdict = Verdict::Agree;
+    /// For "diverge", from measurement: "weight-family", "corner-rule",
+    /// "weight-family+corner-rule" (core rerun with the reference's rule agrees), "rounding"
+    /// (within tolerances::kRoundingUlps of the coordinates), "topology" (refined
+    /// connectivity differs), "isolated-vertex-handling" (only vertices without faces
+    /// differ), "ambiguous-correspondence" (same counts, but vertices cannot be
+    /// matched one to one), or "unexplained". For "ours-rejected": the input-handling class
+    /// ("non-manifold-handling", "orientation-handling", "degenerate-face-handling").
+    DivergenceClass divergence_class = DivergenceClass::None;
+    std::string explanation;  ///< one sentence with the measured figures
+    double hausdorff_rel = NAN;  ///< vertex-set Hausdorff distance / diagonal (Geometric tier)
+    std::optional<ErrorField> error_field;
+};
+
+/// The vertex where some reference parts most from core, with every implementation's value
+/// there (a reference without a vertex correspondence has none).
+struct CaseWorstVertex {
+    int ours_index = -1;
+    int valence = 0;
+    bool boundary = false;
+    Vec3 core;
+    std::map<std::string, Vec3> reference_positions;
+};
+
+struct LoopComparison {
+    std::string input;
+    int input_vertices = 0, input_faces = 0;
+    LoopOptions options;
+    int levels = 0;
+    double core_seconds = 0;
+    Tier tier = Tier::Weak;
+    double tolerance = tolerances::kAgreementRelative;
+    std::string core_error;  ///< non-empty: core refused the input (the message)
+    std::vector<ReferenceRun> runs;
+    std::optional<CaseWorstVertex> worst_vertex;  ///< when some reference diverges
+    bool all_agree() const;
+};
+
+/// Runs the comparison. @throws InputError if core cannot refine the input (bad mesh) or a
+/// reference name is unknown; reference failures are recorded, never thrown.
+LoopComparison compare_loop(const TriMesh& input, const std::string& name, const LoopComparisonRequest& request);
+
+/// For an input core refuses (`core_error`, its message): runs each reference anyway and
+/// records what it does (verdict "ours-rejected", with the class of input handling when the
+/// reference made a mesh of it, or its own failure).
+LoopComparison compare_loop_refused(const TriMesh& input, const std::string& name, const LoopComparisonRequest& request,
+                                    const std::string& core_error);
+
+/// The comparison as JSON (schema in reports/results-schema.md).
+nlohmann::json to_json(const LoopComparison& c);
+
+}  // namespace crossdiv::verification

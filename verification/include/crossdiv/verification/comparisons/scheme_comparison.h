@@ -1,0 +1,77 @@
+#pragma once
+/// @file
+/// The comparison of the polygon schemes (Catmull-Clark, Doo-Sabin, sqrt3, the Butterflies) with
+/// every reference that has them: refine with core, run each reference isolated, match
+/// vertices by position, compare the last level, and classify a divergence by re-running core
+/// with the rule the reference is documented to use. Loop keeps its own, richer comparison
+/// (loop_comparison.h), which matches vertices level by level through provenance.
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "crossdiv/mesh/poly_mesh.h"
+#include "crossdiv/verification/harness/verdict.h"
+#include "crossdiv/verification/harness/mesh_comparison.h"
+#include "crossdiv/verification/harness/correspondence.h"
+#include "crossdiv/verification/harness/isolate.h"
+#include "crossdiv/verification/harness/tolerances.h"
+#include "crossdiv/verification/implementations/scheme.h"
+
+namespace crossdiv::verification {
+
+/// Core's refinement of `mesh` by `scheme` under `rule` (its last level).
+/// @throws InputError as the scheme's *_subdivide (naming the element).
+PolyMesh subdivide(Scheme scheme, const SchemeRule& rule, const PolyMesh& mesh, int levels);
+
+struct SchemeRequest {
+    Scheme scheme = Scheme::CatmullClark;
+    SchemeRule rule;
+    int levels = 1;
+    std::vector<std::string> references;  ///< names; every one that has the scheme when empty
+    double timeout_seconds = 120;
+    bool isolate = true;
+    double tolerance = tolerances::kAgreementRelative;  ///< relative to our diagonal
+};
+
+/// One reference on one input.
+struct SchemeReferenceRun {
+    std::string reference, version;
+    std::string rule;  ///< the rule the reference applies, in our names ("edge-only", ...)
+    RunOutcome outcome;
+    Correspondence correspondence;
+    MeshComparison comparison;  ///< our requested rule against the reference, last level
+    /// "agree", "diverge", "ref-rejected", "ref-crashed" (also threw and timeout).
+    Verdict verdict = Verdict::Agree;
+    /// For "diverge", by measurement: "rounding" (same faces, within tolerances::kRoundingUlps
+    /// of the coordinates); the rule the reference applies, when core re-run with it agrees
+    /// within the tolerance in faces and positions: "boundary-rule", "corner-rule" (both
+    /// Catmull-Clark), "border-faces-dropped" (Doo-Sabin), "parity" (sqrt3's boundary
+    /// generations); "valence-limit" (the reference's weight table is shorter than the input's
+    /// largest valence, and at level 1 exactly the vertices beyond it differ); "topology" (no
+    /// vertex bijection or different faces), or "unexplained".
+    DivergenceClass divergence_class = DivergenceClass::None;
+    std::string explanation;  ///< one sentence with the measured figures
+    double max_rel_with_reference_rule = NAN;  ///< core re-run with the reference's rule
+};
+
+struct SchemeComparison {
+    std::string input;
+    Scheme scheme = Scheme::CatmullClark;
+    std::string rule;  ///< our requested rule
+    int levels = 0;
+    int input_vertices = 0, input_faces = 0;
+    double core_seconds = 0;
+    std::string core_error;  ///< non-empty: core refused the input (the message)
+    std::vector<SchemeReferenceRun> runs;
+    bool all_agree() const;
+};
+
+/// Runs the comparison. Core's refusal is recorded in core_error (the references still run,
+/// with verdicts about what they did); reference failures are recorded, never thrown.
+/// @throws InputError for an unknown reference name.
+SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, const SchemeRequest& request);
+
+nlohmann::json to_json(const SchemeComparison& c);
+
+}  // namespace crossdiv::verification

@@ -1,0 +1,76 @@
+#pragma once
+/// @file
+/// What the harness concludes about one implementation run against another: the verdict and,
+/// for a divergence or a refusal of ours, its class. Typed throughout the harness; turned
+/// into the strings of results.json, results.csv and JUnit only at the output edge
+/// (to_string), and parsed back from them by from_string when a results file is merged.
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace crossdiv::verification {
+
+/// The verdict on one run.
+enum class Verdict {
+    Agree,         ///< within the tier's tolerance at every level compared
+    Diverge,       ///< outside it; the DivergenceClass says why, by measurement
+    RefRejected,   ///< the reference refused the input or the rule (adapters::Rejected)
+    RefCrashed,    ///< the reference crashed, threw, hung or ended without a result
+    OursRejected,  ///< core refused the input (the class names the input handling)
+};
+
+/// "agree", "diverge", "ref-rejected", "ref-crashed", "ours-rejected".
+const char* to_string(Verdict verdict);
+/// @throws InputError naming the unknown verdict and the known ones.
+Verdict verdict_from_string(std::string_view name);
+
+/// Why two implementations differ, each class established by a measurement (see
+/// comparisons/classification.h for the ladder that assigns them).
+enum class DivergenceClass {
+    None,  ///< no divergence (agreement, or a failure that is not a divergence)
+    // A rule the reference applies, shown by re-running core with it:
+    WeightFamily,              ///< Loop: the reference has Loop's weights, not Warren's
+    CornerRule,                ///< the reference lacks the corner rule (edge-only boundary)
+    WeightFamilyAndCornerRule, ///< both of the above
+    BoundaryRule,              ///< another boundary rule (OpenMesh's Catmull-Clark midpoint average)
+    BorderFacesDropped,        ///< Doo-Sabin: the faces of border edges and vertices are dropped
+    Parity,                    ///< sqrt3: the boundary generations are counted per call
+    // Something else measured:
+    Rounding,                  ///< same faces, within tolerances::kRoundingUlps of the coordinates
+    IsolatedVertexHandling,    ///< only vertices without faces differ
+    ValenceLimit,              ///< the reference's weight table ends below the input's valence
+    Topology,                  ///< the refined connectivity differs
+    AmbiguousCorrespondence,   ///< same counts, but no one-to-one vertex match
+    Unexplained,               ///< none of the above: a failure
+    // For OursRejected, the input handling the reference shows:
+    NonManifoldHandling,
+    OrientationHandling,
+    DegenerateFaceHandling,
+    InvalidInputHandling,
+};
+
+/// "" for None, else the class's name in results.json ("weight-family", "corner-rule",
+/// "weight-family+corner-rule", "boundary-rule", "border-faces-dropped", "parity", "rounding",
+/// "isolated-vertex-handling", "valence-limit", "topology", "ambiguous-correspondence",
+/// "unexplained", "non-manifold-handling", "orientation-handling", "degenerate-face-handling",
+/// "invalid-input-handling").
+const char* to_string(DivergenceClass cls);
+/// "" gives None. @throws InputError naming the unknown class and the known ones.
+DivergenceClass divergence_class_from_string(std::string_view name);
+
+/// A verdict with its class: the outcome of one run as the summary counts it.
+struct Outcome {
+    Verdict verdict = Verdict::Agree;
+    DivergenceClass cls = DivergenceClass::None;
+
+    /// Counted as a failure (JUnit, exit status): an unexplained divergence.
+    bool is_failure() const { return verdict == Verdict::Diverge && cls == DivergenceClass::Unexplained; }
+    friend bool operator==(const Outcome&, const Outcome&) = default;
+};
+
+/// "agree", "diverge (<class>)", "ref-rejected", "ref-crashed", "ours-rejected (<class>)";
+/// a diverge or ours-rejected without a class is the bare verdict.
+std::string to_string(const Outcome& outcome);
+
+}  // namespace crossdiv::verification

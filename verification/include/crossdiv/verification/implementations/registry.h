@@ -1,0 +1,38 @@
+#pragma once
+/// @file
+/// Every implementation this binary has, by name: core first, then each reference library
+/// it was built with (CROSSDIV_WITH_* options), in a fixed order. The only place in the
+/// harness that knows which adapters exist; everything else asks here.
+
+#include <string_view>
+#include <vector>
+
+#include "crossdiv/verification/implementations/implementation.h"
+
+namespace crossdiv::verification {
+
+/// core, opensubdiv, openmesh, openmesh-one-call, cgal, cgal-one-call, eigen (those built).
+const std::vector<const Implementation*>& implementations();
+
+/// Core's implementation (always present).
+const Implementation& core_implementation();
+
+/// @throws InputError naming the unknown or unbuilt implementation and listing those built.
+const Implementation& find_implementation(std::string_view name);
+
+/// The references (every implementation but core) that have `scheme`, in registry order.
+std::vector<const Implementation*> references_for(Scheme scheme);
+
+/// The references that declare a capability, e.g. references_with(&Capabilities::edits).
+std::vector<const Implementation*> references_with(bool Capabilities::*capability);
+
+/// `names` resolved to references that have `scheme` (all of them when `names` is empty).
+/// @throws InputError for a name that is not built or lacks the scheme, listing those that have it.
+std::vector<const Implementation*> select_references(Scheme scheme, const std::vector<std::string>& names);
+
+/// `names` resolved to references that declare `capability` (all when `names` is empty).
+/// @throws InputError for a name that is not built or lacks it; `what` names the capability.
+std::vector<const Implementation*> select_references(bool Capabilities::*capability, const std::vector<std::string>& names,
+                                                     const char* what);
+
+}  // namespace crossdiv::verification

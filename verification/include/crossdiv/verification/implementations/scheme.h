@@ -1,0 +1,57 @@
+#pragma once
+/// @file
+/// The schemes every implementation is asked for, and their named rules: the vocabulary in
+/// which the harness states what it asks of core, of a library or of a user's code.
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "crossdiv/subdiv/catmull_clark_mask.h"
+#include "crossdiv/subdiv/doo_sabin_mask.h"
+#include "crossdiv/subdiv/loop_mask.h"
+#include "crossdiv/subdiv/sqrt3_mask.h"
+
+namespace crossdiv::verification {
+
+/// A refinement scheme.
+enum class Scheme { Loop, CatmullClark, DooSabin, Sqrt3, Butterfly, ModifiedButterfly };
+
+/// "loop", "catmull-clark", "doo-sabin", "sqrt3", "butterfly", "modified-butterfly".
+const char* to_string(Scheme scheme);
+/// @throws InputError naming the unknown scheme and the known ones.
+Scheme scheme_from_string(std::string_view name);
+/// Every scheme, in the order above.
+std::vector<Scheme> all_schemes();
+/// The schemes other than Loop, which share the polygon comparison (scheme_comparison.h).
+std::vector<Scheme> polygon_schemes();
+
+/// The named variant of each scheme; only the member of the scheme at hand is read. The
+/// Butterflies have none (the variant is the scheme).
+struct SchemeRule {
+    LoopOptions loop{LoopWeights::Loop, LoopBoundary::EdgeOnly};
+    CatmullClarkOptions catmull_clark{CatmullClarkBoundary::EdgeOnly};
+    DooSabinOptions doo_sabin{DooSabinBoundary::ChaikinBoundary};
+    Sqrt3Options sqrt3{Sqrt3Parity::CountFromInput};
+};
+
+/// The rule's name for `scheme`: "weights=loop boundary=edge-only" for Loop, "edge-only",
+/// "chaikin-boundary", "count-from-input"; "-" for the Butterflies.
+std::string rule_name(Scheme scheme, const SchemeRule& rule);
+/// Whether the two rules are the same variant of `scheme` (the creasing method included).
+bool same_rule(Scheme scheme, const SchemeRule& a, const SchemeRule& b);
+
+/// The rule whose boundary option is named `boundary` for `scheme` (the default when empty):
+/// Loop edge-only | edge-and-corner, Catmull-Clark those and midpoint-average, Doo-Sabin
+/// chaikin-boundary | drop-border-faces, sqrt3 count-from-input | restart-each-level.
+/// @throws InputError for a name the scheme does not have (the Butterflies have none).
+SchemeRule rule_from_boundary_name(Scheme scheme, std::string_view boundary);
+
+/// One refinement asked of an implementation.
+struct RefineRequest {
+    Scheme scheme = Scheme::Loop;
+    SchemeRule rule;
+    int levels = 1;
+};
+
+}  // namespace crossdiv::verification

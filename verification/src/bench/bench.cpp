@@ -1,0 +1,136 @@
+#include "crossdiv/verification/bench/bench.h"
+
+#include <malloc.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <cstring>
+
+#include "crossdiv/adapters/reference.h"
+#include "crossdiv/datasets/edge_cases.h"
+#include "crossdiv/subdiv/loop.h"
+#include "crossdiv/verification/implementations/registry.h"
+
+namespace crossdiv::verification {
+namespace {
+
+using Refine = std::function<size_t()>;
+
+/// What the child sends back: the output size and each repeat's time, or a failure.
+struct ChildReport {
+    long long output_faces = -1;
+    int repeats = 0;
+    double ms[64] = {};
+    char error[256] = {};
+};
+
+BenchRecord time_in_child(const Refine& refine, int repeats, bool cold) {
+    BenchRecord r;
+    repeats = std::clamp(repeats, 1, 64);
+    int fd[2];
+    if (pipe(fd) != 0) throw std::runtime_error("pipe failed");
+    std::fflush(nullptr);
+    const pid_t pid = fork();
+    if (pid == 0) {
+        close(fd[0]);
+        // Keep freed memory in the process for every implementation alike: on this kind of
+        // virtual machine a first-touch page fault costs microseconds, and returning memory
+        // to the kernel between repeats would time the hypervisor instead of the algorithm.
+        // The warm-up run pays the faults once; `crossdiv bench --cold` keeps them in.
+        if (!cold) {
+            mallopt(M_MMAP_THRESHOLD, 1 << 30);
+            mallopt(M_TRIM_THRESHOLD, -1);
+        }
+        ChildReport rep;
+        try {
+            rep.output_faces = static_cast<long long>(refine());  // warm-up: page faults, caches
+            for (int i = 0; i < repeats; ++i) {
+                const auto t0 = std::chrono::steady_clock::now();
+                const size_t faces = refine();
+                rep.ms[i] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+                if (static_cast<long long>(faces) != rep.output_faces) throw std::runtime_error("output size changed");
+            }
+            rep.repeats = repeats;
+        } catch (const adapters::Rejected& e) {
+            std::snprintf(rep.error, sizeof rep.error, "rejected: %s", e.what());
+        } catch (const std::exception& e) {
+            std::snprintf(rep.error, sizeof rep.error, "threw: %s", e.what());
+        }
+        const ssize_t n = write(fd[1], &rep, sizeof rep);
+        _exit(n == static_cast<ssize_t>(sizeof rep) ? 0 : 1);
+    }
+    close(fd[1]);
+    ChildReport rep;
+    size_t got = 0;
+    for (ssize_t n; got < sizeof rep && (n = read(fd[0], reinterpret_cast<char*>(&rep) + got, sizeof rep - got)) > 0;)
+        got += static_cast<size_t>(n);
+    close(fd[0]);
+    int status = 0;
+    rusage usage{};
+    wait4(pid, &status, 0, &usage);
+    r.peak_rss_mb = usage.ru_maxrss / 1024.0;  // kilobytes on Linux
+    if (WIFSIGNALED(status)) {
+        r.status = std::string("crashed: signal ") + std::to_string(WTERMSIG(status)) + " (" + strsignal(WTERMSIG(status)) + ")";
+        return r;
+    }
+    if (got != sizeof rep || rep.error[0]) {
+        r.status = got == sizeof rep ? rep.error : "child ended without a report";
+        return r;
+    }
+    std::vector<double> ms(rep.ms, rep.ms + rep.repeats);
+    std::sort(ms.begin(), ms.end());
+    r.repeats = rep.repeats;
+    r.output_faces = rep.output_faces;
+    r.min_ms = ms.front();
+    r.max_ms = ms.back();
+    r.median_ms = ms.size() % 2 ? ms[ms.size() / 2] : (ms[ms.size() / 2 - 1] + ms[ms.size() / 2]) / 2;
+    return r;
+}
+
+}  // namespace
+
+std::vector<BenchRecord> run_bench(const std::vector<BenchInput>& inputs, const LoopOptions& options, int repeats,
+                                   bool cold) {
+    std::vector<BenchRecord> out;
+    for (const BenchInput& in : inputs) {
+        auto add = [&](const std::string& impl, const Refine& refine) {
+            BenchRecord r = time_in_child(refine, repeats, cold);
+            r.impl = impl;
+            r.input = in.name;
+            r.levels = in.levels;
+            r.input_faces = in.mesh.num_faces();
+            out.push_back(r);
+        };
+        RefineRequest request{Scheme::Loop, {}, in.levels};
+        request.rule.loop = options;
+        for (const Implementation* impl : implementations())
+            if (impl->has(Scheme::Loop) && impl->applies(Scheme::Loop, request.rule))
+                add(impl->name(), [&] { return impl->refine_native(in.mesh, request); });
+    }
+    return out;
+}
+
+std::vector<BenchInput> default_bench_inputs(bool quick) {
+    std::vector<BenchInput> in;
+    auto add = [&](int faces, int levels) {
+        TriMesh m = to_tri_mesh(datasets::benchmark_mesh(faces), "benchmark");
+        in.push_back({"torus-" + std::to_string(m.num_faces()), std::move(m), levels});
+    };
+    for (int faces : quick ? std::vector<int>{320, 20000} : std::vector<int>{320, 1280, 5120, 20000})
+        for (int levels : {1, 2}) add(faces, levels);
+    if (!quick) add(20000, 3);
+    return in;
+}
+
+nlohmann::json to_json(const BenchRecord& r) {
+    return {{"impl", r.impl},         {"scheme", r.scheme},         {"input", r.input},
+            {"levels", r.levels},     {"input_faces", r.input_faces}, {"output_faces", r.output_faces},
+            {"median_ms", r.median_ms}, {"min_ms", r.min_ms},       {"max_ms", r.max_ms},
+            {"repeats", r.repeats},   {"peak_rss_mb", r.peak_rss_mb}, {"status", r.status}};
+}
+
+}  // namespace crossdiv::verification

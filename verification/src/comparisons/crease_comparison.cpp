@@ -1,0 +1,139 @@
+#include "crossdiv/verification/comparisons/crease_comparison.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "crossdiv/datasets/bundled.h"
+#include "crossdiv/error.h"
+#include "crossdiv/subdiv/catmull_clark.h"
+#include "crossdiv/subdiv/loop.h"
+#include "crossdiv/verification/harness/mesh_comparison.h"
+#include "crossdiv/verification/harness/correspondence.h"
+#include "crossdiv/verification/harness/isolate.h"
+#include "crossdiv/verification/implementations/registry.h"
+
+namespace crossdiv::verification {
+namespace {
+
+/// Core's levels 1..N (each level refines the previous one, tags and all).
+std::vector<PolyMesh> core_levels(const PolyMesh& mesh, const CreaseRequest& req) {
+    std::vector<PolyMesh> out;
+    PolyMesh current = mesh;
+    for (int l = 0; l < req.levels; ++l) {
+        current = req.loop ? loop_subdivide(current, {LoopWeights::Loop, LoopBoundary::EdgeOnly, req.method}, 1)
+                           : catmull_clark_subdivide(current, {CatmullClarkBoundary::EdgeOnly, req.method}, 1);
+        out.push_back(current);
+    }
+    return out;
+}
+
+}  // namespace
+
+CreaseComparison compare_creases(const PolyMesh& mesh, const std::string& name, const CreaseRequest& req) {
+    CreaseComparison c;
+    c.input = name;
+    c.scheme = req.loop ? "loop" : "catmull-clark";
+    c.method = std::string(to_string(req.method));
+    c.levels = req.levels;
+    c.edge_tags = static_cast<int>(mesh.creases.edges.size());
+    c.vertex_tags = static_cast<int>(mesh.creases.vertices.size());
+
+    std::vector<PolyMesh> ours;
+    try {
+        ours = core_levels(mesh, req);
+        PolyMesh untagged = mesh;
+        untagged.creases = {};
+        const PolyMesh smooth = core_levels(untagged, req).back();
+        const double diag = bounding_box_diagonal(ours.back().positions);
+        double effect = 0;  // same order: the tags change weights, not topology, at one level
+        if (smooth.num_vertices() == ours.back().num_vertices() && req.levels == 1)
+            for (int v = 0; v < smooth.num_vertices(); ++v)
+                effect = std::max(effect, (smooth.positions[v] - ours.back().positions[v]).norm());
+        else
+            effect = hausdorff_vertex_sets(smooth.positions, ours.back().positions);
+        c.effect_of_tags = effect / diag;
+    } catch (const InputError& e) {
+        c.core_error = e.what();
+    }
+
+    // The references with crease rules for the scheme: OpenSubdiv.
+    const Scheme scheme = req.loop ? Scheme::Loop : Scheme::CatmullClark;
+    const Implementation* ref = nullptr;
+    for (const Implementation* i : references_for(scheme))
+        if (i->support(scheme)->creases) ref = ref ? ref : i;
+    if (!ref) {
+        c.verdict = Verdict::RefRejected;
+        c.explanation = "this build has no OpenSubdiv";
+        return c;
+    }
+    RefineRequest r{scheme, {}, req.levels};
+    r.rule.loop = {LoopWeights::Loop, LoopBoundary::EdgeOnly, req.method};
+    r.rule.catmull_clark = {CatmullClarkBoundary::EdgeOnly, req.method};
+    IsolatedTrace it = run_isolated([&] { return ref->refine(mesh, r); }, req.timeout_seconds, req.isolate);
+    if (it.outcome.status != RunStatus::Ok) {
+        c.verdict = verdict_of_failed_run(it.outcome.status);
+        c.explanation = it.outcome.failure_explanation();
+        return c;
+    }
+    if (!c.core_error.empty()) {
+        c.verdict = Verdict::OursRejected;
+        c.explanation = "core refused the tags; OpenSubdiv refined the mesh (Far only warns about a bad tag)";
+        return c;
+    }
+    c.faces_equal = true;
+    for (int l = 1; l <= req.levels; ++l) {
+        const PolyMesh& theirs = (*it.trace)[static_cast<size_t>(l)];
+        const Correspondence m = match_nearest_and_faces(ours[static_cast<size_t>(l - 1)], theirs);
+        if (m.method == MatchMethod::None) {
+            c.verdict = Verdict::Diverge;
+            c.divergence_class = DivergenceClass::Topology;
+            c.faces_equal = false;
+            c.explanation = "level " + std::to_string(l) + ": no vertex bijection (" + m.note + ")";
+            return c;
+        }
+        const MeshComparison mc = compare_meshes(ours[static_cast<size_t>(l - 1)], theirs, m.ref_to_ours, 1);
+        c.faces_equal = c.faces_equal && mc.topology_equal();
+        c.max_rel_per_level.push_back(mc.max_rel);
+    }
+    c.max_rel = c.max_rel_per_level.back();
+    const double worst = *std::max_element(c.max_rel_per_level.begin(), c.max_rel_per_level.end());
+    const bool agree = c.faces_equal && worst <= req.tolerance;
+    c.verdict = agree ? Verdict::Agree : Verdict::Diverge;
+    if (!agree) c.divergence_class = c.faces_equal ? DivergenceClass::Unexplained : DivergenceClass::Topology;
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "%d edge and %d vertex tags, %s decay; worst level %.2e of the diagonal; the tags "
+                  "move the surface by %.2e", c.edge_tags, c.vertex_tags, c.method.c_str(), worst, c.effect_of_tags);
+    c.explanation = buf;
+    return c;
+}
+
+std::vector<CreaseComparison> compare_crease_catalog() {
+    std::vector<CreaseComparison> out;
+    for (const datasets::BundledMesh& b : datasets::crease_meshes())
+        for (bool loop : {false, true}) {
+            if (loop && !b.mesh.all_triangles()) continue;
+            for (CreaseMethod method : {CreaseMethod::Uniform, CreaseMethod::Chaikin}) {
+                CreaseRequest req;
+                req.loop = loop;
+                req.method = method;
+                out.push_back(compare_creases(b.mesh, "bundled:" + b.name, req));
+            }
+        }
+    return out;
+}
+
+nlohmann::json to_json(const CreaseComparison& c) {
+    auto num = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
+    nlohmann::json levels = nlohmann::json::array();
+    for (double x : c.max_rel_per_level) levels.push_back(num(x));
+    nlohmann::json j = {{"input", c.input},          {"scheme", c.scheme},           {"method", c.method},
+                        {"levels", c.levels},        {"edge_tags", c.edge_tags},     {"vertex_tags", c.vertex_tags},
+                        {"verdict", to_string(c.verdict)},      {"max_rel", num(c.max_rel)},    {"max_rel_per_level", levels},
+                        {"faces_equal", c.faces_equal}, {"effect_of_tags", num(c.effect_of_tags)},
+                        {"explanation", c.explanation}};
+    if (!c.core_error.empty()) j["core_error"] = c.core_error;
+    if (c.divergence_class != DivergenceClass::None) j["divergence_class"] = to_string(c.divergence_class);
+    return j;
+}
+
+}  // namespace crossdiv::verification

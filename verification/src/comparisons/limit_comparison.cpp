@@ -1,0 +1,341 @@
+#include "crossdiv/verification/comparisons/limit_comparison.h"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstdio>
+
+#include "crossdiv/error.h"
+#include "harness/sci.h"
+#include "crossdiv/subdiv/catmull_clark.h"
+#include "crossdiv/subdiv/limit.h"
+#include "crossdiv/subdiv/loop.h"
+#include "crossdiv/verification/harness/correspondence.h"
+#include "crossdiv/verification/implementations/registry.h"
+
+namespace crossdiv::verification {
+namespace {
+
+using detail::sci;
+
+struct CoreLimit {
+    PolyMesh level;
+    LimitResult limit;
+};
+
+/// Compares core's limit with OpenSubdiv's; `reference` runs the adapter and returns
+/// {level, limit positions, limit normals} as three meshes (the isolation ships a LevelTrace).
+LimitComparison compare(const std::string& name, const std::string& scheme, const std::string& rule, int levels,
+                        const std::function<CoreLimit()>& core,
+                        const std::function<adapters::LevelTrace()>& reference, bool isolate) {
+    LimitComparison out;
+    out.input = name;
+    out.scheme = scheme;
+    out.rule = rule;
+    out.levels = levels;
+    CoreLimit ours;
+    try {
+        ours = core();
+        out.vertices = ours.level.num_vertices();
+    } catch (const InputError& e) {
+        out.core_error = e.what();
+    }
+    const IsolatedTrace it = run_isolated(reference, 300, isolate);
+    out.outcome = it.outcome;
+    if (it.outcome.status != RunStatus::Ok) {
+        out.verdict = verdict_of_failed_run(it.outcome.status);
+        out.explanation = it.outcome.failure_explanation();
+        return out;
+    }
+    if (!out.core_error.empty()) {
+        out.verdict = Verdict::OursRejected;
+        out.explanation = out.core_error;
+        return out;
+    }
+    const adapters::LevelTrace& t = *it.trace;
+    const Correspondence c = match_nearest(ours.level.positions, t[0].positions);
+    if (c.method == MatchMethod::None) {
+        out.verdict = Verdict::Diverge;
+        out.explanation = "the refined levels do not match vertex for vertex: " + c.note;
+        return out;
+    }
+    const double diagonal = bounding_box_diagonal(ours.level.positions);
+    out.max_rel_position = 0;
+    out.max_normal_angle = 0;
+    for (size_t i = 0; i < c.ref_to_ours.size(); ++i) {
+        const int v = c.ref_to_ours[i];
+        out.max_rel_position = std::max(out.max_rel_position, (ours.limit.position[v] - t[1].positions[i]).norm() / diagonal);
+        const Vec3& n = ours.limit.normal[v];
+        if (std::isnan(n.x())) continue;
+        ++out.normals_compared;
+        const Vec3& m = t[2].positions[i];
+        out.max_normal_angle = std::max(out.max_normal_angle, std::atan2(n.cross(m).norm(), n.dot(m)));
+    }
+    const bool positions_ok = out.max_rel_position <= tolerances::kLimitAgreementRelative;
+    const bool normals_ok = out.normals_compared == 0 || out.max_normal_angle <= tolerances::kLimitNormalRad;
+    out.verdict = positions_ok && normals_ok ? Verdict::Agree : Verdict::Diverge;
+    out.explanation = "limit positions within " + sci(out.max_rel_position) + " of the diagonal (bar " +
+                      sci(tolerances::kLimitAgreementRelative) + "), " + std::to_string(out.normals_compared) +
+                      " interior normals within " + sci(out.max_normal_angle) + " rad (bar " +
+                      sci(tolerances::kLimitNormalRad) + ")";
+    return out;
+}
+
+/// OpenSubdiv's limit points of `request` as three meshes {level, positions, normals} (the
+/// isolation ships a LevelTrace).
+adapters::LevelTrace reference_limit(const PolyMesh& input, const RefineRequest& request) {
+    const std::vector<const Implementation*> refs = select_references(&Capabilities::limit_positions, {}, "limit");
+    if (refs.empty()) throw adapters::Rejected("OpenSubdiv is not built into this binary");
+    const adapters::LimitPoints l = refs.front()->limit_points(input, request);
+    PolyMesh positions, normals;
+    positions.positions = l.position;
+    normals.positions = l.normal;
+    return {l.level, positions, normals};
+}
+
+}  // namespace
+
+LimitComparison compare_loop_limit(const PolyMesh& input, const std::string& name, const LoopOptions& options,
+                                   int levels, bool isolate) {
+    return compare(
+        name, "loop", std::string(to_string(options.weights)) + " " + std::string(to_string(options.boundary)), levels,
+        [&] {
+            const TriMesh level = loop_subdivide(to_tri_mesh(input, "Loop subdivision"), options, levels);
+            return CoreLimit{to_poly_mesh(level), loop_limit(level, options)};
+        },
+        [&] {
+            RefineRequest r{Scheme::Loop, {}, levels};
+            r.rule.loop = options;
+            return reference_limit(input, r);
+        },
+        isolate);
+}
+
+LimitComparison compare_catmull_clark_limit(const PolyMesh& input, const std::string& name,
+                                            const CatmullClarkOptions& options, int levels, bool isolate) {
+    return compare(
+        name, "catmull-clark", std::string(to_string(options.boundary)), levels,
+        [&] {
+            PolyMesh level = catmull_clark_subdivide(input, options, levels);
+            LimitResult limit = catmull_clark_limit(level, options);
+            return CoreLimit{std::move(level), std::move(limit)};
+        },
+        [&] {
+            RefineRequest r{Scheme::CatmullClark, {}, levels};
+            r.rule.catmull_clark = options;
+            return reference_limit(input, r);
+        },
+        isolate);
+}
+
+nlohmann::json to_json(const LimitComparison& c) {
+    const auto finite = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
+    return {{"input", c.input},
+            {"scheme", c.scheme},
+            {"rule", c.rule},
+            {"levels", c.levels},
+            {"vertices", c.vertices},
+            {"core_error", c.core_error},
+            {"reference", "opensubdiv"},
+            {"outcome", c.outcome.summary()},
+            {"verdict", to_string(c.verdict)},
+            {"max_rel_position", finite(c.max_rel_position)},
+            {"normals_compared", c.normals_compared},
+            {"max_normal_angle", finite(c.max_normal_angle)},
+            {"explanation", c.explanation}};
+}
+
+// ---- Eigen-analysis ------------------------------------------------------------------------
+
+namespace {
+
+/// Loop fan: centre 0, ring 1..n (slightly irregular so that no eigen-direction is missed).
+TriMesh loop_fan(int n) {
+    TriMesh m;
+    m.positions.emplace_back(0.1, -0.2, 0.7);
+    for (int k = 0; k < n; ++k)
+        m.positions.emplace_back(std::cos(2 * M_PI * k / n) * (1 + 0.1 * k), std::sin(2 * M_PI * k / n), 0.05 * k);
+    for (int k = 0; k < n; ++k) m.triangles.push_back({0, 1 + k, 1 + (k + 1) % n});
+    return m;
+}
+
+/// Quad fan: centre 0, spoke ends 1 + 2k, face-opposite vertices 2 + 2k, quads (0, s_k, r_k, s_k+1).
+PolyMesh quad_fan(int n) {
+    PolyMesh m;
+    m.positions.emplace_back(0.1, -0.2, 0.7);
+    for (int k = 0; k < n; ++k) {
+        const double a = 2 * M_PI * k / n, b = a + M_PI / n;
+        m.positions.emplace_back(std::cos(a) * (1 + 0.1 * k), std::sin(a), 0.05 * k);
+        m.positions.emplace_back(1.6 * std::cos(b), 1.5 * std::sin(b), -0.04 * k);
+    }
+    for (int k = 0; k < n; ++k) m.add_face({0, 1 + 2 * k, 2 + 2 * k, 1 + 2 * ((k + 1) % n)});
+    return m;
+}
+
+bool is_loop_family(const std::string& s) { return s == "loop" || s == "warren"; }
+
+/// The local matrix: rows of the refined 1-ring of the centre in core's S, columns of the
+/// coarse 1-ring (the whole fan).
+Eigen::MatrixXd local_matrix(const std::string& scheme, int n) {
+    if (is_loop_family(scheme)) {
+        const TriMesh m = loop_fan(n);
+        const Eigen::MatrixXd S(loop_subdivision_matrix(
+            m, {scheme == "loop" ? LoopWeights::Loop : LoopWeights::Warren, LoopBoundary::EdgeOnly}));
+        const TriConnectivity conn = build_tri_connectivity(m);
+        // Row i must be the refined counterpart of column i (a similarity, not a permutation
+        // of rows only): the edge point of spoke (0, k) sits at row k.
+        Eigen::MatrixXd L(n + 1, n + 1);
+        L.row(0) = S.row(0);
+        for (int e = 0; e < conn.num_edges(); ++e) {
+            const auto& ev = conn.edge_vertices[e];
+            if (ev[0] == 0 || ev[1] == 0) L.row(ev[0] + ev[1]) = S.row(m.num_vertices() + e);
+        }
+        return L;
+    }
+    const PolyMesh m = quad_fan(n);
+    const Eigen::MatrixXd S(catmull_clark_subdivision_matrix(m, {CatmullClarkBoundary::EdgeOnly}));
+    const PolyConnectivity conn = build_poly_connectivity(m);
+    // Refined counterparts: the edge point of spoke (0, 1 + 2k) replaces the spoke end
+    // 1 + 2k, the face point of quad k the vertex opposite the centre in it, 2 + 2k.
+    Eigen::MatrixXd L(2 * n + 1, 2 * n + 1);
+    L.row(0) = S.row(0);
+    for (int f = 0; f < m.num_faces(); ++f) L.row(2 + 2 * f) = S.row(m.num_vertices() + f);
+    for (int e = 0; e < conn.num_edges(); ++e) {
+        const auto& ev = conn.edge_vertices[e];
+        if (ev[0] == 0 || ev[1] == 0) L.row(ev[0] + ev[1]) = S.row(m.num_vertices() + m.num_faces() + e);
+    }
+    return L;
+}
+
+std::vector<double> sorted_desc(std::vector<double> v) {
+    std::sort(v.begin(), v.end(), std::greater<>());
+    return v;
+}
+
+}  // namespace
+
+SpectrumRow local_spectrum(const std::string& scheme, int n) {
+    if (!is_loop_family(scheme) && scheme != "catmull-clark")
+        throw InputError("spectrum: unknown scheme '" + scheme + "' (loop, warren, catmull-clark)");
+    if (n < 3) throw InputError("spectrum: valence must be at least 3, got " + std::to_string(n));
+    SpectrumRow row;
+    row.scheme = scheme;
+    row.valence = n;
+    const Eigen::EigenSolver<Eigen::MatrixXd> es(local_matrix(scheme, n), false);
+    row.max_imaginary = 0;
+    for (int k = 0; k < es.eigenvalues().size(); ++k) {
+        row.eigenvalues.push_back(std::abs(es.eigenvalues()[k]));
+        row.max_imaginary = std::max(row.max_imaginary, std::abs(es.eigenvalues()[k].imag()));
+    }
+    row.eigenvalues = sorted_desc(row.eigenvalues);
+
+    // Published spectra, block by block of the discrete Fourier transform around the vertex.
+    std::vector<double> cf{1.0};
+    if (is_loop_family(scheme)) {
+        // Loop 1987 sec. 3.3: the rotation-invariant block gives 1 and 5/8 - n beta, Fourier
+        // mode k the edge-part eigenvalue 3/8 + cos(2 pi k / n) / 4.
+        const double beta = loop_beta(scheme == "loop" ? LoopWeights::Loop : LoopWeights::Warren, n);
+        row.vertex_rate = 0.625 - n * beta;
+        cf.push_back(row.vertex_rate);
+        for (int k = 1; k < n; ++k) cf.push_back(0.375 + 0.25 * std::cos(2 * M_PI * k / n));
+    } else {
+        // Catmull-Clark (Ball and Storry 1988; Halstead et al. 1993): mode k != 0 is the 2x2 block
+        // with eigenvalues (5 + cos t +- cos(t/2) sqrt(2 (9 + cos t))) / 16, t = 2 pi k / n; the
+        // rotation-invariant block acts on (v, mean e, mean f).
+        Eigen::Matrix3d M0;
+        M0 << (n - 2.0) / n + 1.0 / (4.0 * n), 3.0 / (2.0 * n), 1.0 / (4.0 * n), 0.375, 0.5, 0.125, 0.25, 0.5, 0.25;
+        std::vector<double> b0;
+        // A named solver: eigenvalues() refers into it, and a range-for over a temporary's
+        // member would read it after the temporary is gone.
+        const Eigen::EigenSolver<Eigen::Matrix3d> block0(M0, false);
+        for (int k = 0; k < 3; ++k) b0.push_back(std::abs(block0.eigenvalues()[k]));
+        b0 = sorted_desc(b0);  // b0[0] is 1
+        row.vertex_rate = b0[1];
+        cf = b0;
+        for (int k = 1; k < n; ++k) {
+            const double t = 2 * M_PI * k / n;
+            const double root = std::cos(t / 2) * std::sqrt(2 * (9 + std::cos(t)));
+            cf.push_back((5 + std::cos(t) + root) / 16);
+            cf.push_back(std::abs(5 + std::cos(t) - root) / 16);
+        }
+    }
+    row.closed_form = sorted_desc(cf);
+    row.max_difference = 0;
+    for (size_t i = 0; i < row.eigenvalues.size() && i < row.closed_form.size(); ++i)
+        row.max_difference = std::max(row.max_difference, std::abs(row.eigenvalues[i] - row.closed_form[i]));
+    if (row.eigenvalues.size() != row.closed_form.size()) row.max_difference = INFINITY;
+
+    constexpr double kSame = 1e-9;  // eigenvalues of a 2n+1 matrix of O(1) weights: far above rounding
+    const auto below_one = std::find_if(row.eigenvalues.begin(), row.eigenvalues.end(), [](double x) { return x < 1 - kSame; });
+    if (below_one != row.eigenvalues.end()) {
+        row.subdominant = *below_one;
+        row.subdominant_multiplicity = static_cast<int>(std::count_if(
+            row.eigenvalues.begin(), row.eigenvalues.end(), [&](double x) { return std::abs(x - row.subdominant) <= kSame; }));
+        const auto next = std::find_if(below_one, row.eigenvalues.end(), [&](double x) { return x < row.subdominant - kSame; });
+        row.next = next == row.eigenvalues.end() ? 0.0 : *next;
+    }
+    row.regular_characteristic_map =
+        row.max_imaginary <= kSame && row.subdominant_multiplicity == 2 && row.next < row.subdominant - kSame;
+    return row;
+}
+
+ConvergenceRow convergence(const std::string& scheme, int n, int levels) {
+    ConvergenceRow row;
+    row.scheme = scheme;
+    row.valence = n;
+    const SpectrumRow spectrum = local_spectrum(scheme, n);
+    row.vertex_rate = spectrum.vertex_rate;
+    row.subdominant = spectrum.subdominant;
+    if (is_loop_family(scheme)) {
+        const LoopOptions o{scheme == "loop" ? LoopWeights::Loop : LoopWeights::Warren, LoopBoundary::EdgeOnly};
+        const TriMesh fan = loop_fan(n);
+        const Vec3 limit = loop_limit(fan, o).position[0];
+        const double diagonal = bounding_box_diagonal(fan.positions);
+        TriMesh level = fan;
+        TriConnectivity conn = build_tri_connectivity(level);
+        for (int k = 1; k <= levels; ++k) {
+            TriMesh next = loop_refine_once(level, conn, o);
+            if (k < levels) conn = refine_tri_connectivity(level, conn);
+            level = std::move(next);
+            row.distance.push_back((level.positions[0] - limit).norm() / diagonal);
+        }
+    } else {
+        const CatmullClarkOptions o{CatmullClarkBoundary::EdgeOnly};
+        const PolyMesh fan = quad_fan(n);
+        const Vec3 limit = catmull_clark_limit(fan, o).position[0];
+        const double diagonal = bounding_box_diagonal(fan.positions);
+        PolyMesh level = fan;
+        for (int k = 1; k <= levels; ++k) {
+            level = catmull_clark_subdivide(level, o, 1);
+            row.distance.push_back((level.positions[0] - limit).norm() / diagonal);
+        }
+    }
+    if (row.distance.size() >= 2 && row.distance.front() > 0)
+        row.fitted_rate = std::pow(row.distance.back() / row.distance.front(), 1.0 / (row.distance.size() - 1));
+    return row;
+}
+
+nlohmann::json to_json(const SpectrumRow& r) {
+    const auto finite = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
+    return {{"scheme", r.scheme},
+            {"valence", r.valence},
+            {"eigenvalues", r.eigenvalues},
+            {"closed_form", r.closed_form},
+            {"max_difference", finite(r.max_difference)},
+            {"max_imaginary", finite(r.max_imaginary)},
+            {"subdominant", finite(r.subdominant)},
+            {"subdominant_multiplicity", r.subdominant_multiplicity},
+            {"next", finite(r.next)},
+            {"regular_characteristic_map", r.regular_characteristic_map},
+            {"vertex_rate", finite(r.vertex_rate)}};
+}
+
+nlohmann::json to_json(const ConvergenceRow& r) {
+    const auto finite = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
+    return {{"scheme", r.scheme},       {"valence", r.valence},
+            {"distance", r.distance},   {"fitted_rate", finite(r.fitted_rate)},
+            {"vertex_rate", finite(r.vertex_rate)}, {"subdominant", finite(r.subdominant)}};
+}
+
+}  // namespace crossdiv::verification

@@ -1,0 +1,398 @@
+#include "crossdiv/verification/comparisons/loop_comparison.h"
+
+#include <chrono>
+#include <deque>
+#include <map>
+#include <memory>
+#include <string>
+
+#include "crossdiv/error.h"
+#include "harness/sci.h"
+#include "crossdiv/verification/comparisons/classification.h"
+#include "crossdiv/subdiv/loop.h"
+#include "crossdiv/verification/implementations/registry.h"
+#include "crossdiv/verification/harness/tolerances.h"
+
+namespace crossdiv::verification {
+namespace {
+
+std::string describe(const LoopOptions& o) {
+    return "weights=" + std::string(to_string(o.weights)) + " boundary=" + std::string(to_string(o.boundary));
+}
+
+using detail::sci;
+
+/// Our refinement of the input under one set of options, kept for classification.
+struct CoreRun {
+    LoopOptions options;
+    std::unique_ptr<LoopRefiner> refiner;
+    std::vector<PolyMesh> levels;  ///< levels 1..N as polygon meshes (index 0 = level 1)
+    std::vector<std::vector<VertexOrigin>> origins;
+};
+
+CoreRun run_core(const TriMesh& input, const LoopOptions& options, int levels) {
+    CoreRun run{options, std::make_unique<LoopRefiner>(input, options), {}, {}};
+    run.refiner->refine(levels);
+    for (int l = 1; l <= levels; ++l) {
+        run.levels.push_back(to_poly_mesh(run.refiner->mesh(l)));
+        run.origins.push_back(run.refiner->origins(l));
+    }
+    return run;
+}
+
+/// Max relative error at each level 1..N under the level maps (or the last level only, when
+/// the match was by nearest neighbour). Positions only: topology is compared once, at the end.
+std::vector<double> level_errors(const CoreRun& core, const adapters::LevelTrace& ref, const Correspondence& c) {
+    std::vector<double> e;
+    for (size_t l = 1; l < ref.size(); ++l) {
+        if (l < c.level_maps.size())
+            e.push_back(max_relative_distance(core.levels[l - 1], ref[l], c.level_maps[l]));
+        else if (l + 1 == ref.size())
+            e.push_back(max_relative_distance(core.levels[l - 1], ref[l], c.ref_to_ours));
+    }
+    return e;
+}
+
+/// The tier's verdict on one comparison (and its per-level errors).
+bool within(const LoopComparisonRequest& req, const MeshComparison& c, const std::vector<double>& level_errors,
+            double hausdorff_rel) {
+    switch (req.tier) {
+        case Tier::Strict: return c.topology_equal() && c.max_abs == 0.0;
+        case Tier::Geometric: return hausdorff_rel <= req.tolerance;
+        case Tier::Weak:
+            if (!c.topology_equal() || !(c.max_rel <= req.tolerance)) return false;
+            for (double e : level_errors)
+                if (!(e <= req.tolerance)) return false;
+            return true;
+    }
+    return false;
+}
+
+/// Whether every vertex farther than `tolerance` x diagonal from its match has no face.
+bool only_isolated_vertices_differ(const PolyMesh& ours, const PolyMesh& ref, const std::vector<int>& ref_to_ours,
+                                   double tolerance) {
+    const std::vector<double> d = vertex_distances(ours, ref, ref_to_ours);
+    const double limit = tolerance * bounding_box_diagonal(ours.positions);
+    std::vector<char> used(d.size(), 0);
+    for (int v : ours.face_vertices) used[v] = 1;
+    bool any = false;
+    for (size_t v = 0; v < d.size(); ++v)
+        if (!(d[v] <= limit)) {
+            if (used[v]) return false;
+            any = true;
+        }
+    return any;
+}
+
+
+/// Our mesh at the first level that diverges, with per-vertex distances (the last level's
+/// map when matched by nearest neighbour); empty when larger than the request allows.
+std::optional<ErrorField> error_field(const CoreRun& ours, const adapters::LevelTrace& ref, const Correspondence& c,
+                                      const std::vector<double>& level_max_rel, const LoopComparisonRequest& req) {
+    const int levels = static_cast<int>(ref.size()) - 1;
+    // level_errors() has one entry per level with a map, in order, ending at the last level.
+    size_t k = 0;
+    for (int l = 1; l <= levels; ++l) {
+        const std::vector<int>* map = l < static_cast<int>(c.level_maps.size()) ? &c.level_maps[l]
+                                      : l == levels                             ? &c.ref_to_ours
+                                                                                : nullptr;
+        if (!map) continue;
+        const PolyMesh& mesh = ours.levels[l - 1];
+        if (level_max_rel.at(k++) <= req.tolerance && l < levels) continue;
+        if (mesh.num_faces() > req.error_field_max_faces) return std::nullopt;
+        return ErrorField{l, mesh, vertex_distances(mesh, ref[l], *map)};
+    }
+    return std::nullopt;
+}
+
+/// Runs one reference, isolated, with the closest rules it has; fills the run's identity.
+IsolatedTrace run_reference(const Implementation& ref, const TriMesh& input, const LoopComparisonRequest& req,
+                            ReferenceRun& run) {
+    run.reference = ref.name();
+    run.version = ref.version();
+    RefineRequest asked{Scheme::Loop, {}, req.levels};
+    asked.rule.loop = req.options;
+    asked.rule = ref.closest_rule(Scheme::Loop, asked.rule);
+    run.ran_with = asked.rule.loop;
+    const PolyMesh mesh = to_poly_mesh(input);
+    IsolatedTrace iso = run_isolated([&] { return ref.refine(mesh, asked); }, req.timeout_seconds, req.isolate);
+    run.outcome = iso.outcome;
+    return iso;
+}
+
+LoopComparison empty_comparison(const TriMesh& input, const std::string& name, const LoopComparisonRequest& req) {
+    LoopComparison out;
+    out.input = name;
+    out.input_vertices = input.num_vertices();
+    out.input_faces = input.num_faces();
+    out.options = req.options;
+    out.levels = req.levels;
+    out.tier = req.tier;
+    out.tolerance = req.tolerance;
+    return out;
+}
+
+std::vector<const Implementation*> selected_references(const LoopComparisonRequest& req) {
+    return select_references(Scheme::Loop, req.references);
+}
+
+}  // namespace
+
+const char* to_string(Tier tier) {
+    switch (tier) {
+        case Tier::Strict: return "strict";
+        case Tier::Weak: return "weak";
+        case Tier::Geometric: return "geometric";
+    }
+    return "unknown";
+}
+
+Tier tier_from_string(const std::string& name) {
+    for (Tier t : {Tier::Strict, Tier::Weak, Tier::Geometric})
+        if (name == to_string(t)) return t;
+    throw InputError("unknown tier '" + name + "' (known: strict, weak, geometric)");
+}
+
+bool LoopComparison::all_agree() const {
+    for (const ReferenceRun& r : runs)
+        if (r.verdict != Verdict::Agree) return false;
+    return true;
+}
+
+LoopComparison compare_loop(const TriMesh& input, const std::string& name, const LoopComparisonRequest& req) {
+    const std::vector<const Implementation*> refs = selected_references(req);
+    LoopComparison out = empty_comparison(input, name, req);
+
+    const auto t0 = std::chrono::steady_clock::now();
+    // [0] = requested options; others are added for classification. A deque, so references to
+    // earlier runs stay valid while later ones are added.
+    std::deque<CoreRun> core;
+    core.push_back(run_core(input, req.options, req.levels));
+    out.core_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    auto core_with = [&](const LoopOptions& o) -> const CoreRun& {
+        for (const CoreRun& c : core)
+            if (c.options == o) return c;
+        core.push_back(run_core(input, o, req.levels));
+        return core.back();
+    };
+
+    // Each matched reference's last level in our vertex order, to report every
+    // implementation's value at the case's worst vertex.
+    std::map<std::string, std::vector<Vec3>> in_our_order;
+    for (const Implementation* ref : refs) {
+        ReferenceRun run;
+        IsolatedTrace iso = run_reference(*ref, input, req, run);
+        if (run.outcome.status != RunStatus::Ok) {
+            run.verdict = verdict_of_failed_run(run.outcome.status);
+            run.explanation = ref->name() + " " + run.outcome.summary();
+            out.runs.push_back(std::move(run));
+            continue;
+        }
+        const adapters::LevelTrace& trace = *iso.trace;
+        const CoreRun& ours = core.front();
+        run.correspondence = match_loop_refinement(ours.origins, input.positions, trace, ours.levels.back().positions);
+        if (req.tier == Tier::Geometric) {
+            const double d = bounding_box_diagonal(ours.levels.back().positions);
+            run.hausdorff_rel = hausdorff_vertex_sets(ours.levels.back().positions, trace.back().positions) / (d > 0 ? d : 1);
+        }
+        if (run.correspondence.method == MatchMethod::None) {
+            const bool same_counts = trace.back().num_vertices() == ours.levels.back().num_vertices() &&
+                                     trace.back().num_faces() == ours.levels.back().num_faces();
+            if (req.tier == Tier::Geometric && run.hausdorff_rel <= req.tolerance) {
+                run.verdict = Verdict::Agree;
+                run.explanation = "vertex-set Hausdorff distance " + sci(run.hausdorff_rel) + " <= " + sci(req.tolerance) +
+                                  " (no vertex correspondence: " + run.correspondence.note + ")";
+            } else {
+                // Without a correspondence only the topology test of the ladder can be run.
+                run.verdict = Verdict::Diverge;
+                DivergenceTests only_topology;
+                only_topology.topology = [&]() -> std::optional<Classification> {
+                    return Classification{same_counts ? DivergenceClass::AmbiguousCorrespondence : DivergenceClass::Topology,
+                                          "no vertex correspondence: " + run.correspondence.note};
+                };
+                const Classification c = classify_divergence(only_topology);
+                run.divergence_class = c.cls;
+                run.explanation = c.explanation;
+            }
+            out.runs.push_back(std::move(run));
+            continue;
+        }
+        run.comparison = compare_meshes(ours.levels.back(), trace.back(), run.correspondence.ref_to_ours);
+        run.level_max_rel = level_errors(ours, trace, run.correspondence);
+        std::vector<Vec3>& mapped = in_our_order[ref->name()];
+        mapped.assign(ours.levels.back().positions.size(), Vec3::Constant(NAN));
+        for (size_t i = 0; i < run.correspondence.ref_to_ours.size(); ++i)
+            mapped[run.correspondence.ref_to_ours[i]] = trace.back().positions[i];
+        if (within(req, run.comparison, run.level_max_rel, run.hausdorff_rel)) {
+            run.verdict = Verdict::Agree;
+            run.explanation = req.tier == Tier::Geometric
+                                  ? "vertex-set Hausdorff distance " + sci(run.hausdorff_rel) + " <= " + sci(req.tolerance)
+                              : req.tier == Tier::Strict ? "bitwise identical"
+                                                         : "max relative error " + sci(run.comparison.max_rel) +
+                                                               " <= " + sci(req.tolerance);
+            out.runs.push_back(std::move(run));
+            continue;
+        }
+        run.verdict = Verdict::Diverge;
+        const std::string worst = run.comparison.worst.empty()
+                                      ? ""
+                                      : " (worst: our vertex " + std::to_string(run.comparison.worst[0].ours_index) +
+                                            ", valence " + std::to_string(run.comparison.worst[0].valence) +
+                                            (run.comparison.worst[0].boundary ? ", boundary" : ", interior") + ")";
+        const bool same_faces = run.comparison.topology_equal();
+        DivergenceTests tests;
+        tests.isolated_vertices = [&]() -> std::optional<Classification> {
+            if (!same_faces || !only_isolated_vertices_differ(ours.levels.back(), trace.back(),
+                                                              run.correspondence.ref_to_ours, req.tolerance))
+                return std::nullopt;
+            return Classification{DivergenceClass::IsolatedVertexHandling,
+                                  "only vertices no face uses differ, by up to " + sci(run.comparison.max_rel) + worst};
+        };
+        tests.rounding = [&]() -> std::optional<Classification> {
+            const double ulps = run.comparison.max_abs / ulp_of_largest_coordinate(ours.levels.back());
+            if (!same_faces || !(ulps <= tolerances::kRoundingUlps)) return std::nullopt;
+            return Classification{DivergenceClass::Rounding, "differs by " + sci(run.comparison.max_rel) +
+                                                                 " of the diagonal, which is " + sci(ulps) +
+                                                                 " ulps of the largest coordinate" + worst};
+        };
+        std::string still;  // what core with the reference's rule still differs by, when it does
+        tests.reference_rule = [&]() -> std::optional<Classification> {
+            if (!same_faces || run.ran_with == req.options) return std::nullopt;
+            // Measured, not assumed: rerun core with the reference's rule; if that agrees, the
+            // rule difference explains the whole divergence. Whatever the tier, the rule
+            // explains the divergence only if core with that rule equals the reference up to
+            // rounding (the weak tier at its tolerance; strict would demand bits, geometric
+            // would accept what the rule itself moves).
+            const CoreRun& same_rule = core_with(run.ran_with);
+            const MeshComparison c2 =
+                compare_meshes(same_rule.levels.back(), trace.back(), run.correspondence.ref_to_ours);
+            const std::vector<double> e2 = level_errors(same_rule, trace, run.correspondence);
+            LoopComparisonRequest up_to_rounding = req;
+            up_to_rounding.tier = Tier::Weak;
+            if (req.tier != Tier::Weak) up_to_rounding.tolerance = tolerances::kAgreementRelative;
+            if (!within(up_to_rounding, c2, e2, NAN)) {
+                still = "; with " + describe(run.ran_with) + " still " + sci(c2.max_rel);
+                return std::nullopt;
+            }
+            SchemeRule applied, requested;
+            applied.loop = run.ran_with;
+            requested.loop = req.options;
+            return Classification{rule_difference_class(Scheme::Loop, applied, requested),
+                                  ref->name() + " has no " + describe(req.options) + "; run with " + describe(run.ran_with) +
+                                      " it agrees with core's " + describe(run.ran_with) + " to " + sci(c2.max_rel) +
+                                      ", and differs from the requested rule by " + sci(run.comparison.max_rel) + worst};
+        };
+        tests.topology = [&]() -> std::optional<Classification> {
+            if (same_faces) return std::nullopt;
+            return Classification{DivergenceClass::Topology,
+                                  "refined topology differs: " + std::to_string(run.comparison.faces_only_in_ref) +
+                                      " faces only in " + ref->name() + ", " +
+                                      std::to_string(run.comparison.faces_only_in_ours) + " only in core"};
+        };
+        tests.unexplained = [&] {
+            return run.ran_with == req.options ? "same rules, differs by " + sci(run.comparison.max_rel) + worst
+                                               : "differs by " + sci(run.comparison.max_rel) + worst + still;
+        };
+        const Classification found = classify_divergence(tests);
+        run.divergence_class = found.cls;
+        run.explanation = found.explanation;
+        if (req.error_field_max_faces > 0) run.error_field = error_field(ours, trace, run.correspondence, run.level_max_rel, req);
+        out.runs.push_back(std::move(run));
+    }
+    const ReferenceRun* worst_run = nullptr;
+    for (const ReferenceRun& r : out.runs)
+        if (r.verdict == Verdict::Diverge && !r.comparison.worst.empty() &&
+            (!worst_run || r.comparison.worst[0].distance > worst_run->comparison.worst[0].distance))
+            worst_run = &r;
+    if (worst_run) {
+        const WorstVertex& w = worst_run->comparison.worst[0];
+        out.worst_vertex = CaseWorstVertex{w.ours_index, w.valence, w.boundary, w.ours, {}};
+        for (const auto& [name, positions] : in_our_order) out.worst_vertex->reference_positions[name] = positions[w.ours_index];
+    }
+    return out;
+}
+
+LoopComparison compare_loop_refused(const TriMesh& input, const std::string& name, const LoopComparisonRequest& req,
+                                    const std::string& core_error) {
+    LoopComparison out = empty_comparison(input, name, req);
+    out.core_error = core_error;
+    // The class names what the input breaks, from the checker's first error.
+    const DivergenceClass handling = input_handling_class(to_poly_mesh(input));
+    for (const Implementation* ref : selected_references(req)) {
+        ReferenceRun run;
+        IsolatedTrace iso = run_reference(*ref, input, req, run);
+        run.verdict = Verdict::OursRejected;
+        if (run.outcome.status == RunStatus::Ok) {
+            run.divergence_class = handling;
+            const PolyMesh& last = iso.trace->back();
+            run.explanation = "core refuses the input (" + core_error + "); " + ref->name() + " refines it to " +
+                              std::to_string(last.num_vertices()) + " vertices, " + std::to_string(last.num_faces()) +
+                              " faces";
+        } else {
+            run.explanation = "core refuses the input (" + core_error + "); so does " + ref->name() + " (" +
+                              run.outcome.summary() + ")";
+        }
+        out.runs.push_back(std::move(run));
+    }
+    return out;
+}
+
+nlohmann::json to_json(const LoopComparison& c) {
+    using nlohmann::json;
+    auto options = [](const LoopOptions& o) {
+        return json{{"weights", std::string(to_string(o.weights))}, {"boundary", std::string(to_string(o.boundary))}};
+    };
+    auto topo = [](const TopologyCounts& t) {
+        return json{{"vertices", t.vertices}, {"edges", t.edges}, {"faces", t.faces}, {"euler", t.euler},
+                    {"boundary_loops", t.boundary_loops}};
+    };
+    auto vec = [](const Vec3& v) { return json::array({v.x(), v.y(), v.z()}); };
+    auto finite = [](double x) { return std::isfinite(x) ? json(x) : json(nullptr); };
+    json worst = nullptr;
+    if (c.worst_vertex) {
+        json at = json::object();
+        for (const auto& [name, p] : c.worst_vertex->reference_positions)
+            at[name] = p.allFinite() ? vec(p) : json(nullptr);
+        worst = {{"ours_index", c.worst_vertex->ours_index}, {"valence", c.worst_vertex->valence},
+                 {"boundary", c.worst_vertex->boundary}, {"core", vec(c.worst_vertex->core)}, {"references", at}};
+    }
+    json runs = json::array();
+    for (const ReferenceRun& r : c.runs) {
+        json worst_list = json::array();
+        for (const WorstVertex& w : r.comparison.worst)
+            worst_list.push_back({{"ours_index", w.ours_index}, {"ref_index", w.ref_index}, {"valence", w.valence},
+                             {"boundary", w.boundary}, {"ours", vec(w.ours)}, {"ref", vec(w.ref)}, {"distance", w.distance}});
+        json run = {{"reference", r.reference},
+                    {"version", r.version},
+                    {"ran_with", options(r.ran_with)},
+                    {"status", to_string(r.outcome.status)},
+                    {"status_message", r.outcome.message},
+                    {"seconds", r.outcome.seconds},
+                    {"verdict", to_string(r.verdict)},
+                    {"divergence_class", to_string(r.divergence_class)},
+                    {"explanation", r.explanation}};
+        if (!std::isnan(r.hausdorff_rel)) run["hausdorff_rel"] = finite(r.hausdorff_rel);
+        if (r.outcome.status == RunStatus::Ok) {
+            run["match"] = {{"method", to_string(r.correspondence.method)}, {"note", r.correspondence.note}};
+            run["topology"] = {{"core", topo(r.comparison.ours)},
+                               {"reference", topo(r.comparison.ref)},
+                               {"face_sets_equal", r.comparison.face_sets_equal},
+                               {"faces_only_in_core", r.comparison.faces_only_in_ours},
+                               {"faces_only_in_reference", r.comparison.faces_only_in_ref}};
+            json levels = json::array();
+            for (double e : r.level_max_rel) levels.push_back(finite(e));
+            run["positions"] = {{"diagonal", r.comparison.diagonal}, {"max_abs", finite(r.comparison.max_abs)},
+                                {"rms_abs", finite(r.comparison.rms_abs)}, {"max_rel", finite(r.comparison.max_rel)},
+                                {"rms_rel", finite(r.comparison.rms_rel)}, {"level_max_rel", levels},
+                                {"worst", worst_list}};
+        }
+        runs.push_back(run);
+    }
+    return {{"input", c.input},      {"input_vertices", c.input_vertices}, {"input_faces", c.input_faces},
+            {"scheme", "loop"},      {"options", options(c.options)},      {"levels", c.levels},
+            {"core_seconds", c.core_seconds}, {"tier", to_string(c.tier)}, {"tolerance_rel", c.tolerance},
+            {"core_error", c.core_error},     {"all_agree", c.all_agree()}, {"runs", runs},
+            {"worst_vertex", worst}};
+}
+
+}  // namespace crossdiv::verification

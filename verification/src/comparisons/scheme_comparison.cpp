@@ -1,0 +1,236 @@
+#include "crossdiv/verification/comparisons/scheme_comparison.h"
+
+#include "crossdiv/verification/harness/mesh_topology.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+
+#include "crossdiv/error.h"
+#include "harness/sci.h"
+#include "crossdiv/mesh/tri_mesh.h"
+#include "crossdiv/verification/comparisons/classification.h"
+#include "crossdiv/verification/implementations/registry.h"
+
+namespace crossdiv::verification {
+namespace {
+
+using detail::sci;
+
+/// What the reference's rule does, for the explanation.
+std::string rule_effect(Scheme scheme, const std::string& ref_name, const std::string& rule, int levels) {
+    switch (scheme) {
+        case Scheme::DooSabin: return ref_name + " drops the faces of border edges and vertices";
+        case Scheme::Sqrt3:
+            return ref_name + (rule == "restart-each-level"
+                                   ? " counts generations per call, and was called once per level, so it never refined the boundary"
+                                   : " counts generations from the input (one call of " + std::to_string(levels) + " levels)");
+        default: return ref_name + " applies the " + rule + " boundary rule";
+    }
+}
+
+/// When the reference's weight table is shorter than the input's largest valence: whether at
+/// level 1 exactly the vertices beyond the table differ (the others agree within `tolerance`);
+/// fills `explanation` with the figures. Later levels inherit the difference from them.
+bool beyond_valence_table(const Implementation& ref, Scheme scheme, const SchemeRule& ref_rule, const PolyMesh& input,
+                          const adapters::LevelTrace& trace, double tolerance, std::string& explanation) {
+    const SchemeSupport* support = ref.support(scheme);
+    if (!support || support->max_valence <= 0 || trace.size() < 2) return false;
+    const int max_valence = support->max_valence;
+    const MeshTopology topo = mesh_topology(input);
+    int beyond = 0, largest = 0;
+    for (int v = 0; v < input.num_vertices(); ++v) {
+        beyond += topo.valence[v] > max_valence;
+        largest = std::max(largest, topo.valence[v]);
+    }
+    if (beyond == 0) return false;
+    const PolyMesh ours = subdivide(scheme, ref_rule, input, 1);
+    const Correspondence c = match_nearest_and_faces(ours, trace[1]);
+    if (c.method == MatchMethod::None) return false;
+    const std::vector<double> d = vertex_distances(ours, trace[1], c.ref_to_ours);
+    const double diagonal = bounding_box_diagonal(ours.positions);
+    int differing = 0;
+    double worst = 0;
+    for (size_t i = 0; i < d.size(); ++i) {
+        if (!(d[i] > tolerance * diagonal)) continue;
+        const int v = c.ref_to_ours[i];  // core keeps old vertices first, in input order
+        if (v >= input.num_vertices() || topo.valence[v] <= max_valence) return false;
+        ++differing;
+        worst = std::max(worst, d[i] / diagonal);
+    }
+    if (differing != beyond) return false;
+    explanation = ref.name() + "'s weight table ends at valence " + std::to_string(max_valence) + " (" +
+                  support->valence_table + "); at level 1 exactly the " + std::to_string(beyond) +
+                  " vertices of larger valence (up to " + std::to_string(largest) + ") differ, by up to " + sci(worst) +
+                  " of the diagonal, and every other vertex agrees";
+    return true;
+}
+
+}  // namespace
+
+PolyMesh subdivide(Scheme scheme, const SchemeRule& rule, const PolyMesh& mesh, int levels) {
+    return core_implementation().refine_last(mesh, {scheme, rule, levels});
+}
+
+bool SchemeComparison::all_agree() const {
+    if (!core_error.empty() || runs.empty()) return false;
+    for (const SchemeReferenceRun& r : runs)
+        if (r.verdict != Verdict::Agree) return false;
+    return true;
+}
+
+SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, const SchemeRequest& req) {
+    SchemeComparison out;
+    out.input = name;
+    out.scheme = req.scheme;
+    out.rule = rule_name(req.scheme, req.rule);
+    out.levels = req.levels;
+    out.input_vertices = input.num_vertices();
+    out.input_faces = input.num_faces();
+
+    const std::vector<const Implementation*> refs = select_references(req.scheme, req.references);
+
+    // Core under the requested rule, and under each reference's rule when it differs.
+    PolyMesh ours;
+    const auto t0 = std::chrono::steady_clock::now();
+    try {
+        ours = subdivide(req.scheme, req.rule, input, req.levels);
+    } catch (const InputError& e) {
+        out.core_error = e.what();
+    }
+    out.core_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+    for (const Implementation* impl : refs) {
+        const Implementation& ref = *impl;
+        SchemeReferenceRun run;
+        run.reference = ref.name();
+        run.version = ref.version();
+        const SchemeRule ref_rule = ref.closest_rule(req.scheme, req.rule);
+        const bool rules_differ = !same_rule(req.scheme, ref_rule, req.rule);
+        run.rule = rule_name(req.scheme, ref_rule);
+        IsolatedTrace it =
+            run_isolated([&] { return ref.refine(input, {req.scheme, req.rule, req.levels}); }, req.timeout_seconds, req.isolate);
+        run.outcome = it.outcome;
+        if (run.outcome.status != RunStatus::Ok) {
+            run.verdict = verdict_of_failed_run(run.outcome.status);
+            run.explanation = run.outcome.failure_explanation();
+            out.runs.push_back(std::move(run));
+            continue;
+        }
+        const PolyMesh& theirs = it.trace->back();
+        if (!out.core_error.empty()) {
+            run.verdict = Verdict::OursRejected;
+            run.explanation = "core refused the input; " + ref.name() + " made a mesh of " +
+                              std::to_string(theirs.num_vertices()) + " vertices and " +
+                              std::to_string(theirs.num_faces()) + " faces";
+            out.runs.push_back(std::move(run));
+            continue;
+        }
+        const PolyMesh same_rule_mesh = rules_differ ? subdivide(req.scheme, ref_rule, input, req.levels) : ours;
+        // Match against core with the reference's rule: positions then coincide up to
+        // rounding, so nearest-neighbour matching is sound even where the requested rule
+        // moves vertices (or makes others).
+        run.correspondence = match_nearest_and_faces(same_rule_mesh, theirs);
+        if (run.correspondence.method == MatchMethod::None) {
+            // Without a correspondence only the topology test of the ladder can be run.
+            run.verdict = Verdict::Diverge;
+            DivergenceTests only_topology;
+            only_topology.topology = [&]() -> std::optional<Classification> {
+                return Classification{DivergenceClass::Topology,
+                                      "no vertex bijection with core's " + run.rule + " refinement (" + run.correspondence.note +
+                                          "); " + std::to_string(theirs.num_faces()) + " faces against core's " +
+                                          std::to_string(ours.num_faces())};
+            };
+            const Classification c = classify_divergence(only_topology);
+            run.divergence_class = c.cls;
+            run.explanation = c.explanation;
+            out.runs.push_back(std::move(run));
+            continue;
+        }
+        // Under the requested rule the same map holds only where the vertex sets coincide;
+        // otherwise compare_meshes reports the counts and no distances.
+        const std::vector<int> no_map;
+        run.comparison = compare_meshes(ours, theirs, rules_differ && ours.num_vertices() != same_rule_mesh.num_vertices()
+                                                          ? no_map
+                                                          : run.correspondence.ref_to_ours);
+        const MeshComparison with_rule = compare_meshes(same_rule_mesh, theirs, run.correspondence.ref_to_ours);
+        run.max_rel_with_reference_rule = with_rule.max_rel;
+        const bool rule_explains = rules_differ && with_rule.topology_equal() && with_rule.max_rel <= req.tolerance;
+        if (run.comparison.topology_equal() && run.comparison.max_rel <= req.tolerance) {
+            run.verdict = Verdict::Agree;
+            run.explanation = "max relative error " + sci(run.comparison.max_rel) + " <= " + sci(req.tolerance);
+        } else {
+            run.verdict = Verdict::Diverge;
+            const bool same_faces = run.comparison.topology_equal();
+            const std::string faces = std::to_string(theirs.num_faces()) + " faces and " +
+                                      std::to_string(theirs.num_vertices()) + " vertices against core's " +
+                                      std::to_string(ours.num_faces()) + " and " + std::to_string(ours.num_vertices());
+            DivergenceTests tests;
+            tests.rounding = [&]() -> std::optional<Classification> {
+                const double ulps = run.comparison.max_abs / ulp_of_largest_coordinate(ours);
+                if (!same_faces || !(ulps <= tolerances::kRoundingUlps)) return std::nullopt;
+                return Classification{DivergenceClass::Rounding, "differs by " + sci(ulps) + " ulps of the largest coordinate"};
+            };
+            tests.reference_rule = [&]() -> std::optional<Classification> {
+                if (!rule_explains) return std::nullopt;
+                return Classification{rule_difference_class(req.scheme, ref_rule, req.rule),
+                                      rule_effect(req.scheme, ref.name(), run.rule, req.levels) + ": core with " + run.rule +
+                                          " agrees to " + sci(with_rule.max_rel) + "; core's " + out.rule +
+                                          (same_faces ? " differs by " + sci(run.comparison.max_rel) + " of the diagonal"
+                                                      : " makes different faces (" + faces + ")")};
+            };
+            tests.valence_table = [&]() -> std::optional<Classification> {
+                std::string why;
+                if (!beyond_valence_table(ref, req.scheme, ref_rule, input, *it.trace, req.tolerance, why)) return std::nullopt;
+                return Classification{DivergenceClass::ValenceLimit, why};
+            };
+            tests.topology = [&]() -> std::optional<Classification> {
+                if (same_faces) return std::nullopt;
+                return Classification{DivergenceClass::Topology,
+                                      faces + "; " + std::to_string(run.comparison.faces_only_in_ref) + " faces only in " +
+                                          ref.name() + ", " + std::to_string(run.comparison.faces_only_in_ours) + " only in core"};
+            };
+            tests.unexplained = [&] {
+                return "differs by " + sci(run.comparison.max_rel) + "; with " + ref.name() + "'s " + run.rule + " rule still " +
+                       sci(with_rule.max_rel);
+            };
+            const Classification found = classify_divergence(tests);
+            run.divergence_class = found.cls;
+            run.explanation = found.explanation;
+        }
+        out.runs.push_back(std::move(run));
+    }
+    return out;
+}
+
+nlohmann::json to_json(const SchemeComparison& c) {
+    using nlohmann::json;
+    const auto finite = [](double x) { return std::isfinite(x) ? json(x) : json(nullptr); };
+    json runs = json::array();
+    for (const SchemeReferenceRun& r : c.runs) {
+        json run = {{"reference", r.reference},
+                    {"version", r.version},
+                    {"rule", r.rule},
+                    {"outcome", r.outcome.summary()},
+                    {"seconds", r.outcome.seconds},
+                    {"verdict", to_string(r.verdict)},
+                    {"divergence_class", to_string(r.divergence_class)},
+                    {"explanation", r.explanation},
+                    {"correspondence", to_string(r.correspondence.method)}};
+        if (r.correspondence.method != MatchMethod::None && r.outcome.status == RunStatus::Ok) {
+            run["faces_only_in_core"] = r.comparison.faces_only_in_ours;
+            run["faces_only_in_reference"] = r.comparison.faces_only_in_ref;
+            run["max_rel"] = finite(r.comparison.max_rel);
+            run["rms_rel"] = finite(r.comparison.rms_rel);
+            run["max_rel_with_reference_rule"] = finite(r.max_rel_with_reference_rule);
+        }
+        runs.push_back(run);
+    }
+    return {{"input", c.input},           {"scheme", to_string(c.scheme)}, {"rule", c.rule},
+            {"levels", c.levels},         {"input_vertices", c.input_vertices}, {"input_faces", c.input_faces},
+            {"core_seconds", c.core_seconds}, {"core_error", c.core_error}, {"all_agree", c.all_agree()},
+            {"runs", runs}};
+}
+
+}  // namespace crossdiv::verification

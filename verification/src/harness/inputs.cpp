@@ -1,0 +1,53 @@
+#include "crossdiv/verification/harness/inputs.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include "crossdiv/datasets/bundled.h"
+#include "crossdiv/datasets/edge_cases.h"
+#include "crossdiv/error.h"
+#include "crossdiv/io/mesh_io.h"
+#if CROSSDIV_HAS_ASSIMP
+#include "crossdiv/adapters/assimp.h"
+#endif
+
+namespace crossdiv::verification {
+
+std::vector<std::string> expand_inputs(const std::vector<std::string>& specs) {
+    std::vector<std::string> out;
+    for (const std::string& s : specs) {
+        if (s == "bundled:all") {
+            for (const auto& b : datasets::bundled_meshes()) out.push_back("bundled:" + b.name);
+        } else if (s == "polygons:all") {
+            for (const auto& b : datasets::polygon_meshes()) out.push_back("bundled:" + b.name);
+        } else if (s == "edgecases:all") {
+            for (const auto& c : datasets::edge_cases()) out.push_back("edgecase:" + c.name);
+        } else if (s == "course:all") {
+            for (const auto& f : datasets::course_mesh_files()) out.push_back(f);
+        } else if (s == "meshedit:all") {
+            for (const auto& f : datasets::meshedit_mesh_files()) out.push_back(f);
+        } else if (s == "cgal:all") {
+            for (const auto& f : datasets::cgal_mesh_files()) out.push_back(f);
+        } else if (s.ends_with(":all")) {
+            throw InputError("unknown collection '" + s + "' (known: bundled:all, polygons:all, edgecases:all, course:all, meshedit:all, cgal:all)");
+        } else {
+            out.push_back(s);
+        }
+    }
+    return out;
+}
+
+PolyMesh load_input(const std::string& spec) {
+    if (spec.starts_with("bundled:")) return datasets::bundled_mesh(spec.substr(8));
+    if (spec.starts_with("edgecase:")) return datasets::edge_case(spec.substr(9)).mesh;
+#if CROSSDIV_HAS_ASSIMP
+    for (const std::string& ext : adapters::assimp::extensions())
+        if (spec.size() > ext.size() && std::equal(ext.rbegin(), ext.rend(), spec.rbegin(), [](char a, char b) {
+                return a == std::tolower(static_cast<unsigned char>(b));
+            }))
+            return adapters::assimp::read_mesh(spec);
+#endif
+    return read_mesh(spec);
+}
+
+}  // namespace crossdiv::verification

@@ -1,0 +1,179 @@
+#include "crossdiv/verification/harness/isolate.h"
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <thread>
+
+namespace crossdiv::verification {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// A minimal binary format for the child's answer: a status byte, a message, then the trace.
+template <class T>
+void put(FILE* f, const T& x) { std::fwrite(&x, sizeof x, 1, f); }
+template <class T>
+bool get(FILE* f, T& x) { return std::fread(&x, sizeof x, 1, f) == 1; }
+template <class T>
+void put_vector(FILE* f, const std::vector<T>& v) {
+    put(f, v.size());
+    if (!v.empty()) std::fwrite(v.data(), sizeof(T), v.size(), f);
+}
+template <class T>
+bool get_vector(FILE* f, std::vector<T>& v) {
+    size_t n = 0;
+    if (!get(f, n) || n > (size_t(1) << 34) / sizeof(T)) return false;
+    v.resize(n);
+    return n == 0 || std::fread(v.data(), sizeof(T), n, f) == n;
+}
+void put_string(FILE* f, const std::string& s) { put_vector(f, std::vector<char>(s.begin(), s.end())); }
+std::string get_string(FILE* f) {
+    std::vector<char> v;
+    get_vector(f, v);
+    return {v.begin(), v.end()};
+}
+
+void write_trace(FILE* f, const adapters::LevelTrace& trace) {
+    put(f, trace.size());
+    for (const PolyMesh& m : trace) {
+        put_vector(f, m.positions);
+        put_vector(f, m.face_start);
+        put_vector(f, m.face_vertices);
+    }
+}
+bool read_trace(FILE* f, adapters::LevelTrace& trace) {
+    size_t n = 0;
+    if (!get(f, n) || n > 64) return false;
+    trace.resize(n);
+    for (PolyMesh& m : trace)
+        if (!get_vector(f, m.positions) || !get_vector(f, m.face_start) || !get_vector(f, m.face_vertices)) return false;
+    return true;
+}
+
+IsolatedTrace run_here(const std::function<adapters::LevelTrace()>& fn) {
+    IsolatedTrace r;
+    const auto t0 = Clock::now();
+    try {
+        r.trace = fn();
+    } catch (const adapters::Rejected& e) {
+        r.outcome = {RunStatus::Rejected, e.what(), 0};
+    } catch (const std::exception& e) {
+        r.outcome = {RunStatus::Threw, e.what(), 0};
+    }
+    r.outcome.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    return r;
+}
+
+/// The last few lines the child wrote to stderr, to explain a crash or a rejection.
+std::string tail_of(FILE* f, size_t max_chars = 400) {
+    std::fflush(f);
+    std::string s;
+    std::rewind(f);
+    char buf[4096];
+    for (size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) s.append(buf, n);
+    while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
+    if (s.size() > max_chars) s = "..." + s.substr(s.size() - max_chars);
+    for (char& c : s)
+        if (c == '\n') c = ' ';
+    return s;
+}
+
+}  // namespace
+
+const char* to_string(RunStatus status) {
+    switch (status) {
+        case RunStatus::Ok: return "ok";
+        case RunStatus::Rejected: return "rejected";
+        case RunStatus::Threw: return "threw";
+        case RunStatus::Crashed: return "crashed";
+        case RunStatus::Timeout: return "timeout";
+    }
+    return "unknown";
+}
+
+std::string RunOutcome::summary() const {
+    if (status == RunStatus::Ok || status == RunStatus::Timeout) return to_string(status);
+    return std::string(to_string(status)) + ": " + message;
+}
+
+IsolatedTrace run_isolated(const std::function<adapters::LevelTrace()>& fn, double timeout_seconds, bool isolate) {
+    if (!isolate) return run_here(fn);
+    FILE* result = std::tmpfile();
+    FILE* errors = std::tmpfile();
+    if (!result || !errors) {
+        if (result) std::fclose(result);
+        if (errors) std::fclose(errors);
+        return run_here(fn);  // no temporary files: better unisolated than not at all
+    }
+    std::fflush(nullptr);
+    const auto t0 = Clock::now();
+    const pid_t pid = fork();
+    if (pid == 0) {
+        // Child: run, write the answer, leave without running the parent's atexit handlers.
+        dup2(fileno(errors), STDERR_FILENO);
+        const IsolatedTrace r = run_here(fn);
+        put(result, static_cast<int>(r.outcome.status));
+        put_string(result, r.outcome.message);
+        if (r.trace) write_trace(result, *r.trace);
+        std::fflush(result);
+        _exit(0);
+    }
+    IsolatedTrace r;
+    if (pid < 0) {
+        std::fclose(result);
+        std::fclose(errors);
+        return run_here(fn);
+    }
+    int status = 0;
+    bool timed_out = false;
+    for (auto pause = std::chrono::microseconds(200);;) {
+        const pid_t done = waitpid(pid, &status, WNOHANG);
+        if (done == pid) break;
+        if (std::chrono::duration<double>(Clock::now() - t0).count() > timeout_seconds) {
+            kill(pid, SIGKILL);
+            waitpid(pid, &status, 0);
+            timed_out = true;
+            break;
+        }
+        std::this_thread::sleep_for(pause);
+        pause = std::min(pause * 2, std::chrono::microseconds(20000));
+    }
+    r.outcome.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    const std::string stderr_tail = tail_of(errors);
+    if (timed_out) {
+        r.outcome.status = RunStatus::Timeout;
+        r.outcome.message = "no answer after " + std::to_string(timeout_seconds) + " s";
+    } else if (WIFSIGNALED(status)) {
+        r.outcome.status = RunStatus::Crashed;
+        r.outcome.message = std::string("signal ") + std::to_string(WTERMSIG(status)) + " (" + strsignal(WTERMSIG(status)) + ")";
+        if (!stderr_tail.empty()) r.outcome.message += "; stderr: " + stderr_tail;
+    } else {
+        std::rewind(result);
+        int code = -1;
+        if (!get(result, code)) {
+            r.outcome.status = RunStatus::Crashed;
+            r.outcome.message = "exited with code " + std::to_string(WEXITSTATUS(status)) + " before answering";
+            if (!stderr_tail.empty()) r.outcome.message += "; stderr: " + stderr_tail;
+        } else {
+            r.outcome.status = static_cast<RunStatus>(code);
+            r.outcome.message = get_string(result);
+            if (r.outcome.status == RunStatus::Ok) {
+                adapters::LevelTrace trace;
+                if (read_trace(result, trace)) r.trace = std::move(trace);
+                else r.outcome = {RunStatus::Crashed, "answer truncated", r.outcome.seconds};
+            } else if (!stderr_tail.empty()) {
+                r.outcome.message += " (stderr: " + stderr_tail + ")";
+            }
+        }
+    }
+    std::fclose(result);
+    std::fclose(errors);
+    return r;
+}
+
+}  // namespace crossdiv::verification

@@ -1,0 +1,144 @@
+#include "crossdiv/verification/harness/mesh_comparison.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "crossdiv/mesh/tri_mesh.h"
+#include "harness/point_cloud.h"
+#include "crossdiv/verification/harness/tolerances.h"
+
+namespace crossdiv::verification {
+namespace {
+
+TopologyCounts counts(const MeshTopology& t) { return {t.vertices, t.edges, t.faces, t.euler, t.boundary_loops}; }
+
+/// Faces as vertex lists rotated to start at their smallest index (orientation kept), mapped
+/// through `map` when given, sorted: equal lists mean equal oriented face sets.
+std::vector<std::vector<int>> canonical_faces(const PolyMesh& m, const std::vector<int>* map) {
+    std::vector<std::vector<int>> faces(static_cast<size_t>(m.num_faces()));
+    for (int f = 0; f < m.num_faces(); ++f) {
+        auto& out = faces[f];
+        out.assign(m.face(f), m.face(f) + m.face_size(f));
+        if (map)
+            for (int& v : out) v = (*map)[v];
+        std::rotate(out.begin(), std::min_element(out.begin(), out.end()), out.end());
+    }
+    std::sort(faces.begin(), faces.end());
+    return faces;
+}
+
+/// Number of faces of sorted `a` not in sorted `b` (a merge, as std::set_difference, counted).
+int count_only_in(const std::vector<std::vector<int>>& a, const std::vector<std::vector<int>>& b) {
+    int n = 0;
+    for (size_t i = 0, j = 0; i < a.size();) {
+        if (j == b.size() || a[i] < b[j]) { ++n; ++i; }
+        else if (b[j] < a[i]) ++j;
+        else { ++i; ++j; }
+    }
+    return n;
+}
+
+}  // namespace
+
+double max_relative_distance(const PolyMesh& ours, const PolyMesh& ref, const std::vector<int>& ref_to_ours) {
+    if (ref_to_ours.size() != static_cast<size_t>(ref.num_vertices()) || ref.num_vertices() != ours.num_vertices())
+        return INFINITY;
+    double max_abs = 0;
+    for (int i = 0; i < ref.num_vertices(); ++i) {
+        const double d = (ref.positions[i] - ours.positions[ref_to_ours[i]]).norm();
+        max_abs = std::isnan(d) ? INFINITY : std::max(max_abs, d);
+    }
+    const double diagonal = bounding_box_diagonal(ours.positions);
+    return max_abs / (diagonal > 0 ? diagonal : 1.0);
+}
+
+std::vector<double> vertex_distances(const PolyMesh& ours, const PolyMesh& ref, const std::vector<int>& ref_to_ours) {
+    std::vector<double> d(static_cast<size_t>(ours.num_vertices()), NAN);
+    for (int i = 0; i < ref.num_vertices() && i < static_cast<int>(ref_to_ours.size()); ++i) {
+        const int o = ref_to_ours[i];
+        if (o >= 0 && o < ours.num_vertices()) d[o] = (ref.positions[i] - ours.positions[o]).norm();
+    }
+    return d;
+}
+
+namespace {
+/// Largest distance from a point of `from` to its nearest point of `to`.
+double directed_hausdorff(const std::vector<Vec3>& from, const std::vector<Vec3>& to) {
+    if (to.empty()) return from.empty() ? 0.0 : INFINITY;
+    PointCloud cloud{to};
+    PointTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+    tree.buildIndex();
+    double worst = 0;
+    for (const Vec3& p : from) {
+        unsigned idx = 0;
+        double d2 = 0;
+        tree.knnSearch(p.data(), 1, &idx, &d2);
+        worst = std::max(worst, std::sqrt(d2));
+    }
+    return worst;
+}
+}  // namespace
+
+double hausdorff_vertex_sets(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+    return std::max(directed_hausdorff(a, b), directed_hausdorff(b, a));
+}
+
+double ulp_of_largest_coordinate(const PolyMesh& m) {
+    double largest = 0;
+    for (const Vec3& p : m.positions) largest = std::max(largest, p.cwiseAbs().maxCoeff());
+    return std::nextafter(largest, INFINITY) - largest;
+}
+
+bool MeshComparison::agree() const { return topology_equal() && max_rel <= tolerances::kAgreementRelative; }
+
+MeshComparison compare_meshes(const PolyMesh& ours, const PolyMesh& ref, const std::vector<int>& ref_to_ours,
+                              int worst_count) {
+    MeshComparison c;
+    const MeshTopology to = mesh_topology(ours), tr = mesh_topology(ref);
+    c.ours = counts(to);
+    c.ref = counts(tr);
+    c.diagonal = bounding_box_diagonal(ours.positions);
+
+    const bool mapped = ref_to_ours.size() == static_cast<size_t>(ref.num_vertices()) &&
+                        ref.num_vertices() == ours.num_vertices();
+    if (mapped) {
+        const auto a = canonical_faces(ours, nullptr), b = canonical_faces(ref, &ref_to_ours);
+        c.face_sets_equal = a == b;
+        if (!c.face_sets_equal) {
+            c.faces_only_in_ours = count_only_in(a, b);
+            c.faces_only_in_ref = count_only_in(b, a);
+        }
+    } else {
+        c.faces_only_in_ours = ours.num_faces();
+        c.faces_only_in_ref = ref.num_faces();
+        c.max_abs = c.rms_abs = c.max_rel = c.rms_rel = INFINITY;
+        return c;
+    }
+
+    std::vector<double> dist(static_cast<size_t>(ref.num_vertices()));
+    double sum2 = 0;
+    for (int i = 0; i < ref.num_vertices(); ++i) {
+        dist[i] = (ref.positions[i] - ours.positions[ref_to_ours[i]]).norm();
+        if (std::isnan(dist[i])) dist[i] = INFINITY;
+        sum2 += dist[i] * dist[i];
+        c.max_abs = std::max(c.max_abs, dist[i]);
+    }
+    c.rms_abs = ref.num_vertices() ? std::sqrt(sum2 / ref.num_vertices()) : 0.0;
+    const double scale = c.diagonal > 0 ? c.diagonal : 1.0;
+    c.max_rel = c.max_abs / scale;
+    c.rms_rel = c.rms_abs / scale;
+
+    std::vector<int> order(dist.size());
+    std::iota(order.begin(), order.end(), 0);
+    const size_t k = std::min(order.size(), static_cast<size_t>(std::max(worst_count, 0)));
+    std::partial_sort(order.begin(), order.begin() + static_cast<long>(k), order.end(),
+                      [&](int a, int b) { return dist[a] > dist[b]; });
+    for (size_t i = 0; i < k; ++i) {
+        const int r = order[i], o = ref_to_ours[r];
+        c.worst.push_back({o, r, to.valence[o], to.boundary_vertex[o] != 0, ours.positions[o], ref.positions[r], dist[r]});
+    }
+    return c;
+}
+
+}  // namespace crossdiv::verification

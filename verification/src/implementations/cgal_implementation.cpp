@@ -1,0 +1,89 @@
+// CGAL as implementations: "cgal" (Subdivision_method_3's Loop, Catmull-Clark, Doo-Sabin and
+// sqrt3 called once per level; Euler flips and splits; PMP vertex normals and the closed-mesh
+// report) and "cgal-one-call" (Sqrt3 asked for every level in one call).
+#include "crossdiv/adapters/cgal.h"
+#include "library_implementations.h"
+
+namespace crossdiv::verification::detail {
+namespace {
+
+namespace cg = adapters::cgal;
+
+class CgalEdit final : public EditSession {
+public:
+    explicit CgalEdit(const TriMesh& base) : mesh_(base) {}
+    std::optional<bool> flip_ok(int, int) const override { return std::nullopt; }  // a precondition, not a query
+    void flip(int a, int b) override { mesh_.flip(a, b); }
+    int split(int a, int b) override { return mesh_.split(a, b); }
+    std::vector<std::string> check() const override { return mesh_.check(); }
+    std::vector<Triangle> faces() const override { return mesh_.faces(); }
+    std::vector<Vec3> positions() const override { return mesh_.positions(); }
+
+private:
+    cg::EditableMesh mesh_;
+};
+
+class Cgal final : public Implementation {
+public:
+    Cgal()
+        : Implementation("cgal", cg::version(), ImplementationKind::Library,
+                         {.schemes = {supports(Scheme::Loop, {loop_rule(LoopWeights::Loop, LoopBoundary::EdgeOnly)}),
+                                      supports(Scheme::CatmullClark, {catmull_clark_rule(CatmullClarkBoundary::EdgeOnly)}),
+                                      supports(Scheme::DooSabin, {doo_sabin_rule(DooSabinBoundary::DropBorderFaces)}),
+                                      supports(Scheme::Sqrt3, {sqrt3_rule(Sqrt3Parity::RestartEachLevel)})},
+                          .edits = true,
+                          .vertex_normals = true,
+                          .closed_mesh_report = true}) {}
+
+    adapters::LevelTrace refine(const PolyMesh& mesh, const RefineRequest& r) const override {
+        check_refinable(r.scheme);
+        switch (r.scheme) {
+            case Scheme::Loop: return cg::loop(triangles_for(mesh, r.scheme), closest_rule(r.scheme, r.rule).loop, r.levels);
+            case Scheme::CatmullClark: return cg::catmull_clark(mesh, r.levels);
+            case Scheme::DooSabin: return cg::doo_sabin(mesh, r.levels);
+            default: return cg::sqrt3(triangles_for(mesh, r.scheme), r.levels, false);
+        }
+    }
+
+    size_t refine_native(const TriMesh& mesh, const RefineRequest& r) const override {
+        if (r.scheme != Scheme::Loop) return Implementation::refine_native(mesh, r);
+        return cg::loop_native(mesh, closest_rule(r.scheme, r.rule).loop, r.levels);
+    }
+
+    std::vector<NamedNormals> vertex_normals(const TriMesh& mesh) const override {
+        NamedNormals n{"cgal", "PMP::compute_vertex_normals", {}, {}};
+        try {
+            n.normals = cg::vertex_normals(mesh);
+        } catch (const std::exception& e) {
+            n.error = e.what();
+        }
+        return {n};
+    }
+
+    std::unique_ptr<EditSession> open_edit(const TriMesh& base) const override { return std::make_unique<CgalEdit>(base); }
+
+    adapters::ClosedMeshReport closed_mesh_report(const TriMesh& mesh) const override { return cg::closed_mesh_report(mesh); }
+};
+
+class CgalOneCall final : public Implementation {
+public:
+    CgalOneCall()
+        : Implementation("cgal-one-call", cg::version(), ImplementationKind::Library,
+                         {.schemes = {supports(Scheme::Sqrt3, {sqrt3_rule(Sqrt3Parity::CountFromInput)})}}) {}
+
+    adapters::LevelTrace refine(const PolyMesh& mesh, const RefineRequest& r) const override {
+        check_refinable(r.scheme);
+        return cg::sqrt3(triangles_for(mesh, r.scheme), r.levels, true);
+    }
+};
+
+}  // namespace
+
+std::vector<std::unique_ptr<Implementation>> make_cgal_implementations() {
+    std::vector<std::unique_ptr<Implementation>> out;
+    out.push_back(std::make_unique<Cgal>());
+    out.push_back(std::make_unique<CgalOneCall>());
+    return out;
+}
+
+}  // namespace crossdiv::verification::detail

@@ -1,0 +1,100 @@
+// Core as an implementation: every scheme under every named rule, with crease tags for Loop
+// and Catmull-Clark, limit positions for both.
+#include "crossdiv/subdiv/butterfly.h"
+#include "crossdiv/subdiv/catmull_clark.h"
+#include "crossdiv/subdiv/doo_sabin.h"
+#include "crossdiv/subdiv/limit.h"
+#include "crossdiv/subdiv/loop.h"
+#include "crossdiv/subdiv/sqrt3.h"
+#include "library_implementations.h"
+
+namespace crossdiv::verification::detail {
+namespace {
+
+/// Every rule of every scheme, as core declares them.
+Capabilities core_capabilities() {
+    Capabilities c;
+    std::vector<SchemeRule> loop;
+    for (LoopWeights w : {LoopWeights::Loop, LoopWeights::Warren})
+        for (LoopBoundary b : {LoopBoundary::EdgeOnly, LoopBoundary::EdgeAndCorner}) loop.push_back(loop_rule(w, b));
+    c.schemes = {supports(Scheme::Loop, loop, true),
+                 supports(Scheme::CatmullClark,
+                          {catmull_clark_rule(CatmullClarkBoundary::EdgeOnly), catmull_clark_rule(CatmullClarkBoundary::EdgeAndCorner),
+                           catmull_clark_rule(CatmullClarkBoundary::MidpointAverage)},
+                          true),
+                 supports(Scheme::DooSabin,
+                          {doo_sabin_rule(DooSabinBoundary::ChaikinBoundary), doo_sabin_rule(DooSabinBoundary::DropBorderFaces)}),
+                 supports(Scheme::Sqrt3, {sqrt3_rule(Sqrt3Parity::CountFromInput), sqrt3_rule(Sqrt3Parity::RestartEachLevel)}),
+                 supports(Scheme::Butterfly, {SchemeRule{}}),
+                 supports(Scheme::ModifiedButterfly, {SchemeRule{}})};
+    c.limit_positions = true;
+    return c;
+}
+
+/// `levels` levels of a polygon scheme in one call (the sqrt3 parity counts from this call's input).
+PolyMesh subdivide(const PolyMesh& mesh, const RefineRequest& r, int levels) {
+    switch (r.scheme) {
+        case Scheme::Loop:
+            if (!mesh.creases.empty()) return loop_subdivide(mesh, r.rule.loop, levels);
+            return to_poly_mesh(loop_subdivide(to_tri_mesh(mesh, "Loop subdivision"), r.rule.loop, levels));
+        case Scheme::CatmullClark: return catmull_clark_subdivide(mesh, r.rule.catmull_clark, levels);
+        case Scheme::DooSabin: return doo_sabin_subdivide(mesh, r.rule.doo_sabin, levels);
+        case Scheme::Sqrt3: return sqrt3_subdivide(mesh, r.rule.sqrt3, levels);
+        case Scheme::Butterfly: return butterfly_subdivide(mesh, ButterflyVariant::Classic, levels);
+        case Scheme::ModifiedButterfly: return butterfly_subdivide(mesh, ButterflyVariant::Modified, levels);
+    }
+    throw InputError("unknown scheme");
+}
+
+class Core final : public Implementation {
+public:
+    Core() : Implementation("core", "crossdiv", ImplementationKind::Core, core_capabilities()) {}
+
+    /// Core refuses bad input with InputError (naming the element), which callers record as
+    /// core's refusal; it is never turned into adapters::Rejected.
+    adapters::LevelTrace refine(const PolyMesh& mesh, const RefineRequest& r) const override {
+        adapters::LevelTrace trace{mesh};
+        if (r.scheme == Scheme::Loop && mesh.creases.empty()) {
+            LoopRefiner refiner(to_tri_mesh(mesh, "Loop subdivision"), r.rule.loop);
+            refiner.refine(r.levels);
+            for (int l = 1; l <= r.levels; ++l) trace.push_back(to_poly_mesh(refiner.mesh(l)));
+            return trace;
+        }
+        // sqrt3 counts its boundary generations from the input: each level is its own call
+        // from the input. The other schemes' levels are the same one step at a time.
+        for (int l = 1; l <= r.levels; ++l)
+            trace.push_back(r.scheme == Scheme::Sqrt3 ? subdivide(mesh, r, l) : subdivide(trace.back(), r, 1));
+        return trace;
+    }
+
+    PolyMesh refine_last(const PolyMesh& mesh, const RefineRequest& r) const override { return subdivide(mesh, r, r.levels); }
+
+    size_t refine_native(const TriMesh& mesh, const RefineRequest& r) const override {
+        if (r.scheme != Scheme::Loop) return Implementation::refine_native(mesh, r);
+        return loop_subdivide(mesh, r.rule.loop, r.levels).triangles.size();
+    }
+
+    adapters::LimitPoints limit_points(const PolyMesh& mesh, const RefineRequest& r) const override {
+        adapters::LimitPoints out;
+        LimitResult limit;
+        if (r.scheme == Scheme::Loop) {
+            const TriMesh level = loop_subdivide(to_tri_mesh(mesh, "Loop subdivision"), r.rule.loop, r.levels);
+            limit = loop_limit(level, r.rule.loop);
+            out.level = to_poly_mesh(level);
+        } else if (r.scheme == Scheme::CatmullClark) {
+            out.level = catmull_clark_subdivide(mesh, r.rule.catmull_clark, r.levels);
+            limit = catmull_clark_limit(out.level, r.rule.catmull_clark);
+        } else {
+            lacks(std::string(to_string(r.scheme)) + " limit positions");
+        }
+        out.position = std::move(limit.position);
+        out.normal = std::move(limit.normal);
+        return out;
+    }
+};
+
+}  // namespace
+
+std::unique_ptr<Implementation> make_core_implementation() { return std::make_unique<Core>(); }
+
+}  // namespace crossdiv::verification::detail

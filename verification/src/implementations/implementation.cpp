@@ -1,0 +1,103 @@
+#include "crossdiv/verification/implementations/implementation.h"
+
+#include <algorithm>
+
+namespace crossdiv::verification {
+namespace {
+
+/// Whether `support` has the variant of `rule` (its boundary rule and weights; the creasing
+/// method is a property of the tags, honoured when `creases` is declared).
+bool has_variant(Scheme scheme, const SchemeSupport& support, const SchemeRule& rule) {
+    return std::any_of(support.rules.begin(), support.rules.end(),
+                       [&](const SchemeRule& r) { return rule_name(scheme, r) == rule_name(scheme, rule); });
+}
+
+/// `requested` with the variant of `from` (the creasing method of `requested` kept).
+SchemeRule with_variant(Scheme scheme, SchemeRule requested, const SchemeRule& from) {
+    switch (scheme) {
+        case Scheme::Loop:
+            requested.loop.weights = from.loop.weights;
+            requested.loop.boundary = from.loop.boundary;
+            break;
+        case Scheme::CatmullClark: requested.catmull_clark.boundary = from.catmull_clark.boundary; break;
+        case Scheme::DooSabin: requested.doo_sabin = from.doo_sabin; break;
+        case Scheme::Sqrt3: requested.sqrt3 = from.sqrt3; break;
+        case Scheme::Butterfly:
+        case Scheme::ModifiedButterfly: break;
+    }
+    return requested;
+}
+
+}  // namespace
+
+const char* to_string(ImplementationKind kind) { return kind == ImplementationKind::Core ? "core" : "library"; }
+const char* to_string(Precision precision) { return precision == Precision::Double ? "double" : "float"; }
+
+Implementation::Implementation(std::string name, std::string version, ImplementationKind kind, Capabilities capabilities)
+    : name_(std::move(name)), version_(std::move(version)), kind_(kind), capabilities_(std::move(capabilities)) {}
+
+const SchemeSupport* Implementation::support(Scheme scheme) const {
+    for (const SchemeSupport& s : capabilities_.schemes)
+        if (s.scheme == scheme) return &s;
+    return nullptr;
+}
+
+SchemeRule Implementation::closest_rule(Scheme scheme, const SchemeRule& requested) const {
+    const SchemeSupport* s = support(scheme);
+    if (!s || s->rules.empty() || has_variant(scheme, *s, requested)) return requested;
+    if (scheme == Scheme::Loop) {
+        // Keep the weight family before the boundary rule: Loop's weights are what every
+        // library has, the corner rule is what some lack.
+        for (const LoopOptions& o : {LoopOptions{LoopWeights::Loop, requested.loop.boundary, requested.loop.creasing},
+                                     LoopOptions{requested.loop.weights, LoopBoundary::EdgeOnly, requested.loop.creasing},
+                                     LoopOptions{LoopWeights::Loop, LoopBoundary::EdgeOnly, requested.loop.creasing}}) {
+            SchemeRule candidate = requested;
+            candidate.loop = o;
+            if (has_variant(scheme, *s, candidate)) return candidate;
+        }
+        return requested;
+    }
+    return with_variant(scheme, requested, s->rules.front());
+}
+
+bool Implementation::applies(Scheme scheme, const SchemeRule& rule) const {
+    const SchemeSupport* s = support(scheme);
+    return s && (s->rules.empty() || has_variant(scheme, *s, rule));
+}
+
+void Implementation::lacks(const std::string& what) const { throw adapters::Rejected(name_ + " has no " + what); }
+
+void Implementation::check_refinable(Scheme scheme) const {
+    if (!support(scheme)) lacks(to_string(scheme));
+}
+
+adapters::LevelTrace Implementation::refine(const PolyMesh&, const RefineRequest& request) const {
+    lacks(to_string(request.scheme));
+}
+
+PolyMesh Implementation::refine_last(const PolyMesh& mesh, const RefineRequest& request) const {
+    return refine(mesh, request).back();
+}
+
+size_t Implementation::refine_native(const TriMesh& mesh, const RefineRequest& request) const {
+    return refine(to_poly_mesh(mesh), request).back().num_faces();
+}
+
+adapters::LimitPoints Implementation::limit_points(const PolyMesh&, const RefineRequest&) const { lacks("limit positions"); }
+
+adapters::LimitEvaluation Implementation::limit_surface(const PolyMesh&, Scheme scheme, int,
+                                                        std::span<const std::array<double, 2>>) const {
+    lacks(std::string(to_string(scheme)) + " limit-surface evaluation");
+}
+
+std::vector<NamedNormals> Implementation::vertex_normals(const TriMesh&) const { lacks("vertex normals"); }
+
+std::unique_ptr<EditSession> Implementation::open_edit(const TriMesh&) const { lacks("edge flips and splits"); }
+
+adapters::SplineSamples Implementation::evaluate_spline(SplineKind, std::span<const Vec3>, std::span<const double>) const {
+    lacks("spline evaluation");
+}
+
+adapters::ClosedMeshReport Implementation::closed_mesh_report(const TriMesh&) const { lacks("closed-mesh report"); }
+
+}  // namespace crossdiv::verification

@@ -1,0 +1,58 @@
+#pragma once
+// The factories of the library implementations. Each is compiled only when its adapter is
+// built (verification/CMakeLists.txt), and called only from registry.cpp, the one place that
+// asks which adapters this binary has.
+
+#include <memory>
+#include <vector>
+
+#include "crossdiv/error.h"
+#include "crossdiv/adapters/reference.h"
+#include "crossdiv/verification/implementations/implementation.h"
+
+namespace crossdiv::verification::detail {
+
+std::unique_ptr<Implementation> make_core_implementation();
+std::unique_ptr<Implementation> make_opensubdiv_implementation();
+std::vector<std::unique_ptr<Implementation>> make_openmesh_implementations();
+std::vector<std::unique_ptr<Implementation>> make_cgal_implementations();
+std::unique_ptr<Implementation> make_eigen_implementation();
+
+/// The scheme support of one rule list, for the declarations below.
+inline SchemeSupport supports(Scheme scheme, std::vector<SchemeRule> rules, bool creases = false, int max_valence = 0,
+                              std::string valence_table = {}) {
+    return {scheme, std::move(rules), creases, max_valence, std::move(valence_table)};
+}
+
+/// A rule of `scheme` given by its variant alone.
+inline SchemeRule loop_rule(LoopWeights w, LoopBoundary b) {
+    SchemeRule r;
+    r.loop = {w, b};
+    return r;
+}
+inline SchemeRule catmull_clark_rule(CatmullClarkBoundary b) {
+    SchemeRule r;
+    r.catmull_clark = {b};
+    return r;
+}
+inline SchemeRule doo_sabin_rule(DooSabinBoundary b) {
+    SchemeRule r;
+    r.doo_sabin = {b};
+    return r;
+}
+inline SchemeRule sqrt3_rule(Sqrt3Parity p) {
+    SchemeRule r;
+    r.sqrt3 = {p};
+    return r;
+}
+
+/// The triangle schemes' adapters take a TriMesh; a polygon is the library's refusal.
+inline TriMesh triangles_for(const PolyMesh& mesh, Scheme scheme) {
+    try {
+        return to_tri_mesh(mesh, to_string(scheme));
+    } catch (const InputError& e) {
+        throw adapters::Rejected(e.what());
+    }
+}
+
+}  // namespace crossdiv::verification::detail

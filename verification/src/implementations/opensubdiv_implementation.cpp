@@ -1,0 +1,58 @@
+// OpenSubdiv (Far, Bfr) as an implementation: Loop and Catmull-Clark with their boundary
+// rules and crease tags, limit positions (PrimvarRefiner::Limit) and Bfr's limit surface.
+#include "crossdiv/adapters/opensubdiv.h"
+#include "library_implementations.h"
+
+namespace crossdiv::verification::detail {
+namespace {
+
+namespace osd = adapters::opensubdiv;
+
+class OpenSubdiv final : public Implementation {
+public:
+    OpenSubdiv()
+        : Implementation("opensubdiv", osd::version(), ImplementationKind::Library,
+                         {.schemes = {supports(Scheme::Loop,
+                                               {loop_rule(LoopWeights::Loop, LoopBoundary::EdgeOnly),
+                                                loop_rule(LoopWeights::Loop, LoopBoundary::EdgeAndCorner)},
+                                               true),
+                                      supports(Scheme::CatmullClark,
+                                               {catmull_clark_rule(CatmullClarkBoundary::EdgeOnly),
+                                                catmull_clark_rule(CatmullClarkBoundary::EdgeAndCorner)},
+                                               true)},
+                          .limit_positions = true,
+                          .limit_surface = true}) {}
+
+    adapters::LevelTrace refine(const PolyMesh& mesh, const RefineRequest& r) const override {
+        check_refinable(r.scheme);
+        const SchemeRule rule = closest_rule(r.scheme, r.rule);
+        if (r.scheme == Scheme::CatmullClark) return osd::catmull_clark(mesh, rule.catmull_clark, r.levels);
+        // Untagged triangle meshes go through Far's triangle path, tagged ones carry their tags.
+        if (!mesh.creases.empty()) return osd::loop(mesh, rule.loop, r.levels);
+        return osd::loop(triangles_for(mesh, r.scheme), rule.loop, r.levels);
+    }
+
+    size_t refine_native(const TriMesh& mesh, const RefineRequest& r) const override {
+        if (r.scheme != Scheme::Loop) return Implementation::refine_native(mesh, r);
+        return osd::loop_native(mesh, closest_rule(r.scheme, r.rule).loop, r.levels);
+    }
+
+    adapters::LimitPoints limit_points(const PolyMesh& mesh, const RefineRequest& r) const override {
+        check_refinable(r.scheme);
+        if (r.scheme == Scheme::Loop) return osd::loop_limit(triangles_for(mesh, r.scheme), r.rule.loop, r.levels);
+        return osd::catmull_clark_limit(mesh, r.rule.catmull_clark, r.levels);
+    }
+
+    adapters::LimitEvaluation limit_surface(const PolyMesh& mesh, Scheme scheme, int face,
+                                            std::span<const std::array<double, 2>> uv) const override {
+        if (scheme == Scheme::Loop) return osd::loop_limit_surface(mesh, face, uv);
+        if (scheme == Scheme::CatmullClark) return osd::catmark_limit(mesh, face, uv);
+        return Implementation::limit_surface(mesh, scheme, face, uv);
+    }
+};
+
+}  // namespace
+
+std::unique_ptr<Implementation> make_opensubdiv_implementation() { return std::make_unique<OpenSubdiv>(); }
+
+}  // namespace crossdiv::verification::detail

@@ -1,0 +1,107 @@
+#include "crossdiv/verification/implementations/registry.h"
+
+#include <algorithm>
+#include <memory>
+
+#include "library_implementations.h"
+
+namespace crossdiv::verification {
+namespace {
+
+std::vector<std::unique_ptr<Implementation>> build() {
+    std::vector<std::unique_ptr<Implementation>> all;
+    all.push_back(detail::make_core_implementation());
+#ifdef CROSSDIV_HAS_OPENSUBDIV
+    all.push_back(detail::make_opensubdiv_implementation());
+#endif
+#ifdef CROSSDIV_HAS_OPENMESH
+    for (auto& i : detail::make_openmesh_implementations()) all.push_back(std::move(i));
+#endif
+#ifdef CROSSDIV_HAS_CGAL
+    for (auto& i : detail::make_cgal_implementations()) all.push_back(std::move(i));
+#endif
+#ifdef CROSSDIV_HAS_EIGEN_SPLINES
+    all.push_back(detail::make_eigen_implementation());
+#endif
+    return all;
+}
+
+const std::vector<std::unique_ptr<Implementation>>& owned() {
+    static const std::vector<std::unique_ptr<Implementation>> all = build();
+    return all;
+}
+
+std::string names(const std::vector<const Implementation*>& list) {
+    std::string s;
+    for (const Implementation* i : list) s += (s.empty() ? "" : ", ") + i->name();
+    return s.empty() ? "none" : s;
+}
+
+template <class Keep>
+std::vector<const Implementation*> references(Keep&& keep) {
+    std::vector<const Implementation*> out;
+    for (const Implementation* i : implementations())
+        if (i->kind() != ImplementationKind::Core && keep(*i)) out.push_back(i);
+    return out;
+}
+
+/// `wanted` looked up in `having` (all of `having` when empty); `unknown(name)` is the error.
+template <class Message>
+std::vector<const Implementation*> pick(const std::vector<const Implementation*>& having,
+                                        const std::vector<std::string>& wanted, Message&& unknown) {
+    if (wanted.empty()) return having;
+    std::vector<const Implementation*> out;
+    for (const std::string& n : wanted) {
+        const auto it = std::find_if(having.begin(), having.end(), [&](const Implementation* i) { return i->name() == n; });
+        if (it == having.end()) throw InputError(unknown(n));
+        out.push_back(*it);
+    }
+    return out;
+}
+
+}  // namespace
+
+const std::vector<const Implementation*>& implementations() {
+    static const std::vector<const Implementation*> all = [] {
+        std::vector<const Implementation*> v;
+        for (const auto& i : owned()) v.push_back(i.get());
+        return v;
+    }();
+    return all;
+}
+
+const Implementation& core_implementation() { return *owned().front(); }
+
+const Implementation& find_implementation(std::string_view name) {
+    for (const Implementation* i : implementations())
+        if (i->name() == name) return *i;
+    throw InputError("unknown or not built implementation '" + std::string(name) + "' (built: " + names(implementations()) + ")");
+}
+
+std::vector<const Implementation*> references_for(Scheme scheme) {
+    return references([&](const Implementation& i) { return i.has(scheme); });
+}
+
+std::vector<const Implementation*> references_with(bool Capabilities::*capability) {
+    return references([&](const Implementation& i) { return i.capabilities().*capability; });
+}
+
+std::vector<const Implementation*> select_references(Scheme scheme, const std::vector<std::string>& wanted) {
+    const std::vector<const Implementation*> having = references_for(scheme);
+    return pick(having, wanted, [&](const std::string& n) {
+        const bool built = std::any_of(implementations().begin(), implementations().end(),
+                                       [&](const Implementation* i) { return i->name() == n; });
+        if (!built) return "unknown or not built reference '" + n + "' (built: " + names(having) + ")";
+        return "reference '" + n + "' has no " + to_string(scheme) + " in this build (those that have it: " + names(having) + ")";
+    });
+}
+
+std::vector<const Implementation*> select_references(bool Capabilities::*capability, const std::vector<std::string>& wanted,
+                                                     const char* what) {
+    const std::vector<const Implementation*> having = references_with(capability);
+    return pick(having, wanted, [&](const std::string& n) {
+        return "unknown or unavailable " + std::string(what) + " reference '" + n + "' (this build has: " + names(having) + ")";
+    });
+}
+
+}  // namespace crossdiv::verification

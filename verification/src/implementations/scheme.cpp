@@ -1,0 +1,83 @@
+#include "crossdiv/verification/implementations/scheme.h"
+
+#include <array>
+
+#include "crossdiv/error.h"
+
+namespace crossdiv::verification {
+
+const char* to_string(Scheme scheme) {
+    switch (scheme) {
+        case Scheme::Loop: return "loop";
+        case Scheme::CatmullClark: return "catmull-clark";
+        case Scheme::DooSabin: return "doo-sabin";
+        case Scheme::Sqrt3: return "sqrt3";
+        case Scheme::Butterfly: return "butterfly";
+        case Scheme::ModifiedButterfly: return "modified-butterfly";
+    }
+    return "?";
+}
+
+std::vector<Scheme> all_schemes() {
+    return {Scheme::Loop, Scheme::CatmullClark, Scheme::DooSabin, Scheme::Sqrt3, Scheme::Butterfly, Scheme::ModifiedButterfly};
+}
+
+std::vector<Scheme> polygon_schemes() {
+    return {Scheme::CatmullClark, Scheme::DooSabin, Scheme::Sqrt3, Scheme::Butterfly, Scheme::ModifiedButterfly};
+}
+
+Scheme scheme_from_string(std::string_view name) {
+    return variant_from_string<Scheme>(name, all_schemes(), "scheme");
+}
+
+std::string rule_name(Scheme scheme, const SchemeRule& rule) {
+    switch (scheme) {
+        case Scheme::Loop:
+            return "weights=" + std::string(to_string(rule.loop.weights)) + " boundary=" + std::string(to_string(rule.loop.boundary));
+        case Scheme::CatmullClark: return std::string(to_string(rule.catmull_clark.boundary));
+        case Scheme::DooSabin: return std::string(to_string(rule.doo_sabin.boundary));
+        case Scheme::Sqrt3: return std::string(to_string(rule.sqrt3.parity));
+        case Scheme::Butterfly:
+        case Scheme::ModifiedButterfly: break;
+    }
+    return "-";
+}
+
+bool same_rule(Scheme scheme, const SchemeRule& a, const SchemeRule& b) {
+    switch (scheme) {
+        case Scheme::Loop: return a.loop == b.loop;
+        case Scheme::CatmullClark:
+            return a.catmull_clark.boundary == b.catmull_clark.boundary && a.catmull_clark.creasing == b.catmull_clark.creasing;
+        default: return rule_name(scheme, a) == rule_name(scheme, b);
+    }
+}
+
+SchemeRule rule_from_boundary_name(Scheme scheme, std::string_view boundary) {
+    SchemeRule rule;
+    if (boundary.empty()) return rule;
+    const auto pick = [&](const auto& all, auto& field) {
+        for (const auto v : all)
+            if (to_string(v) == boundary) {
+                field = v;
+                return rule;
+            }
+        throw InputError(std::string(to_string(scheme)) + " has no boundary rule '" + std::string(boundary) + "' (" +
+                         variant_names(all) + ")");
+    };
+    switch (scheme) {
+        case Scheme::Loop: return pick(std::array{LoopBoundary::EdgeOnly, LoopBoundary::EdgeAndCorner}, rule.loop.boundary);
+        case Scheme::CatmullClark:
+            return pick(std::array{CatmullClarkBoundary::EdgeOnly, CatmullClarkBoundary::EdgeAndCorner,
+                                   CatmullClarkBoundary::MidpointAverage},
+                        rule.catmull_clark.boundary);
+        case Scheme::DooSabin:
+            return pick(std::array{DooSabinBoundary::ChaikinBoundary, DooSabinBoundary::DropBorderFaces}, rule.doo_sabin.boundary);
+        case Scheme::Sqrt3:
+            return pick(std::array{Sqrt3Parity::CountFromInput, Sqrt3Parity::RestartEachLevel}, rule.sqrt3.parity);
+        case Scheme::Butterfly:
+        case Scheme::ModifiedButterfly: break;
+    }
+    throw InputError(std::string(to_string(scheme)) + " has no boundary rule to choose (boundary edges take the four-point rule)");
+}
+
+}  // namespace crossdiv::verification

@@ -1,0 +1,515 @@
+#include "crossdiv/verification/properties/curve_checks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "crossdiv/curves/bezier.h"
+#include "crossdiv/datasets/bundled_curves.h"
+#include "crossdiv/error.h"
+#include "crossdiv/io/curve_io.h"
+#include "crossdiv/mesh/tri_mesh.h"
+#include "crossdiv/verification/harness/tolerances.h"
+#include "harness/check_inputs.h"
+#include "crossdiv/verification/implementations/registry.h"
+
+namespace crossdiv::verification {
+using nlohmann::json;
+
+namespace {
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+/// Parameters per segment at which evaluations are compared: the knots (t = 0, 1) and
+/// interior points that are not binary fractions, so no algorithm is exact by accident.
+constexpr int kSamplesPerSegment = 64;
+
+double sample_t(int i) { return i == 0 ? 0.0 : i == kSamplesPerSegment ? 1.0 : (i - 0.5 * std::sqrt(0.5)) / kSamplesPerSegment; }
+
+/// The rounding bound of kCurveRoundingUlps for degree d, derivative order `order`, scale s.
+double rounding_bound(int d, int order) {
+    double factor = tolerances::kCurveRoundingUlps * (d + 1) * kEps;
+    if (order >= 1) factor *= std::max(d, 1);
+    if (order >= 2) factor *= std::max(d - 1, 1);
+    return factor;
+}
+
+double scale_of(const BezierChain& c) {
+    const double s = bounding_box_diagonal(c.points);
+    return s > 0 ? s : 1.0;  // a curve that is one point: absolute errors
+}
+
+std::vector<double> binomials(int d) {
+    std::vector<double> b(d + 1, 1.0);
+    for (int i = 1; i <= d; ++i) b[i] = b[i - 1] * (d - i + 1) / i;
+    return b;
+}
+
+/// 2D convex hull (Andrew's monotone chain), counterclockwise, collinear points dropped.
+std::vector<Vec3> hull_2d(std::vector<Vec3> p) {
+    std::sort(p.begin(), p.end(), [](const Vec3& a, const Vec3& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
+    p.erase(std::unique(p.begin(), p.end()), p.end());
+    if (p.size() < 3) return p;
+    auto cross = [](const Vec3& o, const Vec3& a, const Vec3& b) {
+        return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
+    };
+    std::vector<Vec3> h(2 * p.size());
+    size_t k = 0;
+    for (size_t i = 0; i < p.size(); ++i) {
+        while (k >= 2 && cross(h[k - 2], h[k - 1], p[i]) <= 0) --k;
+        h[k++] = p[i];
+    }
+    for (size_t i = p.size() - 1, t = k + 1; i-- > 0;) {
+        while (k >= t && cross(h[k - 2], h[k - 1], p[i]) <= 0) --k;
+        h[k++] = p[i];
+    }
+    h.resize(k - 1);
+    return h;
+}
+
+/// How far x lies outside the 2D convex polygon `hull` (0 inside or on it).
+double outside_2d(const std::vector<Vec3>& hull, const Vec3& x) {
+    if (hull.size() == 1) return (x - hull[0]).head<2>().norm();
+    if (hull.size() == 2) return point_segment_distance(Vec3(x.x(), x.y(), 0), hull[0], hull[1]);
+    double out = 0;
+    bool inside = true;
+    for (size_t i = 0; i < hull.size(); ++i) {
+        const Vec3 &a = hull[i], &b = hull[(i + 1) % hull.size()];
+        const double c = (b.x() - a.x()) * (x.y() - a.y()) - (b.y() - a.y()) * (x.x() - a.x());
+        if (c < 0) inside = false;
+    }
+    if (inside) return 0;
+    out = std::numeric_limits<double>::infinity();
+    for (size_t i = 0; i < hull.size(); ++i)
+        out = std::min(out, point_segment_distance(Vec3(x.x(), x.y(), 0), hull[i], hull[(i + 1) % hull.size()]));
+    return out;
+}
+
+class Checker {
+public:
+    explicit Checker(CurveReport& r) : r_(r) {}
+    void add(const std::string& curve, const std::string& check, const std::string& reference, double measured,
+             double tolerance, const std::string& unit, const std::string& note) {
+        r_.checks.push_back({curve, check, reference, measured, tolerance, unit, note});
+    }
+
+private:
+    CurveReport& r_;
+};
+
+/// de Casteljau vs the Bernstein sum on each segment; endpoints; partition of unity and the
+/// convex hull (2D: distance outside the control points' hull; 3D: the point as the convex
+/// combination with the Bernstein weights, which are checked nonnegative and summing to 1).
+void check_bezier_properties(const BezierChain& c, const std::string& label, bool planar, Checker& out) {
+    const double s = scale_of(c);
+    const int d = c.degree;
+    const std::vector<double> binom = binomials(d);
+    double bern = 0, ends = 0, unity = 0, hull = 0, negative = 0, split = 0;
+    for (int k = 0; k < c.num_segments(); ++k) {
+        const auto seg = c.segment(k);
+        ends = std::max({ends, (bezier_point(seg, 0.0) - seg.front()).norm(), (bezier_point(seg, 1.0) - seg.back()).norm()});
+        const std::vector<Vec3> hull2 = planar ? hull_2d({seg.begin(), seg.end()}) : std::vector<Vec3>{};
+        const BezierSplit halves = bezier_split(seg, 0.375);
+        for (int i = 0; i <= kSamplesPerSegment; ++i) {
+            const double t = sample_t(i);
+            const Vec3 p = bezier_point(seg, t);
+            bern = std::max(bern, (p - bernstein_point(seg, t)).norm());
+            double sum = 0;
+            Vec3 combo = Vec3::Zero();
+            for (int j = 0; j <= d; ++j) {
+                const double w = binom[j] * std::pow(t, j) * std::pow(1 - t, d - j);
+                negative = std::max(negative, -w);
+                sum += w;
+                combo += w * seg[j];
+            }
+            unity = std::max(unity, std::abs(sum - 1));
+            hull = std::max(hull, planar ? outside_2d(hull2, p) : (p - combo / sum).norm());
+            const Vec3 q = t <= 0.375 ? bezier_point(halves.left, t / 0.375) : bezier_point(halves.right, (t - 0.375) / 0.625);
+            split = std::max(split, (p - q).norm());
+        }
+    }
+    const double tol = rounding_bound(d, 0);
+    out.add(label, "bernstein-sum", "bernstein", bern / s, tol, "rel", "de Casteljau vs the Bernstein sum at 65 t per segment");
+    out.add(label, "endpoint-interpolation", "analytic", ends / s, 0.0, "rel", "P(0) = p_0 and P(1) = p_d exactly");
+    out.add(label, "partition-of-unity", "analytic", std::max(unity, negative), tol, "abs",
+            "|sum B_i(t) - 1| and max(-B_i(t)) of the Bernstein weights");
+    out.add(label, "convex-hull", "analytic", hull / s, tol, "rel",
+            planar ? "distance outside the 2D convex hull of each segment's control points"
+                   : "distance to the convex combination sum B_i(t) p_i with the checked weights");
+    out.add(label, "split-halves", "analytic", split / s, 2 * tol, "rel",
+            "the halves split at t = 3/8 reproduce the segment (two evaluations, twice the bound)");
+}
+
+/// The curves' reference (Eigen's Splines), or nullptr when this build has none.
+const Implementation* spline_reference() {
+    const std::vector<const Implementation*> refs = references_with(&Capabilities::spline_evaluation);
+    return refs.empty() ? nullptr : refs.front();
+}
+
+/// Our de Casteljau (position, d1, d2 from one pass) against Eigen's Cox-de Boor.
+void check_against_eigen(const Implementation& eigen, const CurveRecord& r, const BezierChain& c, const std::string& label,
+                         Checker& out) {
+    const double s = scale_of(c);
+    double e[3] = {0, 0, 0};
+    auto compare = [&](const adapters::SplineSamples& ref, const std::vector<ChainJet>& ours) {
+        for (size_t i = 0; i < ours.size(); ++i) {
+            e[0] = std::max(e[0], (ours[i].position - ref.position[i]).norm());
+            e[1] = std::max(e[1], (ours[i].d1 - ref.d1[i]).norm());
+            e[2] = std::max(e[2], (ours[i].d2 - ref.d2[i]).norm());
+        }
+    };
+    std::string how;
+    if (r.type == CurveType::BSpline) {
+        // The whole spline at once, in the global parameter.
+        std::vector<double> u;
+        std::vector<ChainJet> ours;
+        for (int k = 0; k < c.num_segments(); ++k)
+            for (int i = 0; i <= kSamplesPerSegment; ++i) {
+                u.push_back(k + sample_t(i));
+                ours.push_back(chain_jet(c, k + sample_t(i)));
+            }
+        compare(eigen.evaluate_spline(SplineKind::UniformCubicBSpline, r.control, u), ours);
+        how = "uniform cubic B-spline vs Eigen::Spline with knots 0..n+3";
+    } else {
+        // Segment by segment, each a clamped B-spline [0^(d+1), 1^(d+1)].
+        for (int k = 0; k < c.num_segments(); ++k) {
+            std::vector<double> t;
+            std::vector<ChainJet> ours;
+            for (int i = 0; i <= kSamplesPerSegment; ++i) {
+                t.push_back(sample_t(i));
+                const BezierJet j = bezier_jet(c.segment(k), sample_t(i));
+                ours.push_back({j.position, j.d1, j.d2});
+            }
+            compare(eigen.evaluate_spline(SplineKind::ClampedBezier, c.segment(k), t), ours);
+        }
+        how = "each Bezier segment vs Eigen::Spline with knots [0^(d+1), 1^(d+1)]";
+    }
+    const char* names[3] = {"position", "d1", "d2"};
+    for (int o = 0; o < 3; ++o)
+        out.add(label, names[o], "eigen", e[o] / s, rounding_bound(c.degree, o), "rel", how + ", 65 samples per segment");
+}
+
+/// Continuity at each joint, measured, against what the representation dictates.
+void check_continuity(const CurveRecord& r, const BezierChain& c, const std::string& label, Checker& out, json& table) {
+    const int n = c.num_segments();
+    const int joints = n - 1 + (r.type == CurveType::CatmullRomClosed ? 1 : 0);
+    if (joints <= 0) return;
+    const double s = scale_of(c);
+    double gap[3] = {0, 0, 0}, predicted_error[3] = {0, 0, 0};
+    for (int j = 0; j < joints; ++j) {
+        const auto a = c.segment(j), b = c.segment((j + 1) % n);
+        const BezierJet ea = bezier_jet(a, 1.0), sb = bezier_jet(b, 0.0);
+        const Vec3 jump[3] = {sb.position - ea.position, sb.d1 - ea.d1, sb.d2 - ea.d2};
+        for (int o = 0; o < 3; ++o) gap[o] = std::max(gap[o], jump[o].norm());
+        if (r.type == CurveType::BezierChain) {
+            // The jump the control points dictate: p = the input points around joint 3(j+1).
+            const auto& p = r.control;
+            const size_t m = 3 * (j + 1);
+            const Vec3 want[3] = {Vec3::Zero(), 3.0 * ((p[m + 1] - p[m]) - (p[m] - p[m - 1])),
+                                  6.0 * ((p[m + 2] - 2.0 * p[m + 1] + p[m]) - (p[m] - 2.0 * p[m - 1] + p[m - 2]))};
+            for (int o = 0; o < 3; ++o) predicted_error[o] = std::max(predicted_error[o], (jump[o] - want[o]).norm());
+        }
+    }
+    table.push_back({{"curve", label}, {"type", to_string(r.type)}, {"joints", joints}, {"c0_gap_rel", gap[0] / s},
+                     {"c1_jump_rel", gap[1] / s}, {"c2_jump_rel", gap[2] / s}});
+    const int d = c.degree;
+    if (r.type == CurveType::BezierChain) {
+        const char* names[3] = {"continuity-c0", "continuity-c1", "continuity-c2"};
+        for (int o = 0; o < 3; ++o)
+            out.add(label, names[o], "analytic", predicted_error[o] / s, o == 0 ? 0.0 : 4 * rounding_bound(d, o), "rel",
+                    "derivative jump at each joint vs the jump its control points dictate");
+        return;
+    }
+    // B-splines are C2, Catmull-Rom C1 (its C2 jump is reported in the table, not required).
+    const int required = r.type == CurveType::BSpline ? 2 : 1;
+    const char* names[3] = {"continuity-c0", "continuity-c1", "continuity-c2"};
+    for (int o = 0; o <= required; ++o)
+        out.add(label, names[o], "analytic", gap[o] / s, 4 * rounding_bound(d, o), "rel",
+                std::string("jump at each joint (") + (required == 2 ? "B-spline: C2" : "Catmull-Rom: C1") + ")");
+}
+
+/// Each basis conversion reproduces the seed's matrix form G B T(t).
+void check_conversion(const CurveRecord& r, const BezierChain& c, const std::string& label, Checker& out) {
+    const CubicBasis basis = r.type == CurveType::BSpline ? CubicBasis::BSpline : CubicBasis::CatmullRom;
+    const size_t n = r.control.size();
+    double e = 0;
+    for (int k = 0; k < c.num_segments(); ++k) {
+        std::vector<Vec3> pts;
+        tessellate_cubic_spline_segment(r.control[k % n], r.control[(k + 1) % n], r.control[(k + 2) % n],
+                                        r.control[(k + 3) % n], basis_matrix(basis), kSamplesPerSegment, true, pts);
+        for (int i = 0; i <= kSamplesPerSegment; ++i)
+            e = std::max(e, (bezier_point(c.segment(k), static_cast<double>(i) / kSamplesPerSegment) - pts[i]).norm());
+    }
+    out.add(label, "basis-conversion", "matrix-form", e / scale_of(c), rounding_bound(3, 0), "rel",
+            std::string(to_string(basis)) + " -> Bezier vs G B T(t) at 65 t per segment");
+    if (r.type == CurveType::BSpline) return;
+    double through = 0;
+    const int segs = c.num_segments();
+    for (int k = 0; k < segs; ++k) {
+        through = std::max(through, (bezier_point(c.segment(k), 0.0) - r.control[(k + 1) % n]).norm());
+        through = std::max(through, (bezier_point(c.segment(k), 1.0) - r.control[(k + 2) % n]).norm());
+    }
+    out.add(label, "interpolation", "analytic", through / scale_of(c), 0.0, "rel",
+            "Catmull-Rom passes exactly through p_1 .. p_{n-2} (closed: every point)");
+}
+
+void check_frames(const CurveRecord& r, const Polyline& p, const std::string& label, Checker& out, json& closure) {
+    for (FrameMethod m : {FrameMethod::Recursive, FrameMethod::DoubleReflection}) {
+        std::vector<Frame> f = curve_frames(p.positions, p.tangents, m);
+        out.add(label, std::string("frames-") + std::string(to_string(m)), "analytic", max_orthonormality_error(f),
+                tolerances::kFrameOrthonormality, "abs", "max deviation of (T, N, B) from orthonormal, right-handed");
+        if (!r.closed()) continue;
+        const double mismatch = closure_angle(f);
+        distribute_closure(p.positions, f, mismatch);
+        closure.push_back({{"curve", label}, {"method", to_string(m)}, {"mismatch_deg", mismatch * 180 / M_PI},
+                           {"after_distribution_deg", closure_angle(f) * 180 / M_PI}});
+        out.add(label, std::string("closure-") + std::string(to_string(m)), "analytic", std::abs(closure_angle(f)), 1e-12,
+                "rad", "frame mismatch after one lap once the measured angle is distributed along arc length");
+    }
+}
+
+/// Uniform steps per segment: the fewest whose measured deviation meets tol.
+int fewest_uniform_steps(const BezierChain& c, double tol) {
+    int hi = 1;
+    while (chordal_deviation(c, tessellate_uniform(c, hi)).max > tol) hi *= 2;
+    int lo = hi / 2;  // fails (or 0)
+    while (hi - lo > 1) {
+        const int mid = (lo + hi) / 2;
+        (chordal_deviation(c, tessellate_uniform(c, mid)).max <= tol ? hi : lo) = mid;
+    }
+    return hi;
+}
+
+}  // namespace
+
+std::vector<TessellationRow> tessellation_study(const CurveRecord& r, const std::string& label, std::span<const double> tols) {
+    std::vector<TessellationRow> rows;
+    if (r.type == CurveType::Primitive) return rows;
+    const BezierChain c = r.chain();
+    for (double tol : tols) {
+        TessellationRow row;
+        row.curve = label;
+        row.tol = tol;
+        row.uniform_steps = fewest_uniform_steps(c, tol);
+        const Polyline u = tessellate_uniform(c, row.uniform_steps);
+        row.uniform_edges = u.size() - 1;
+        row.uniform_dev = chordal_deviation(c, u).max;
+        const Polyline d = tessellate_distance(c, tol);
+        row.distance_edges = d.size() - 1;
+        row.distance_dev = chordal_deviation(c, d).max;
+        const Polyline w = tessellate_uniform(c, wang_intervals(c, tol));
+        row.wang_edges = w.size() - 1;
+        row.wang_dev = chordal_deviation(c, w).max;
+        // The largest angle tolerance that meets tol: halve from 90 degrees until it does,
+        // then bisect between the last failing and the first passing value.
+        double fail = M_PI, pass = 0;
+        for (double a = M_PI / 2; a > 1e-6; a /= 2) {
+            if (chordal_deviation(c, tessellate_angle(c, a)).max <= tol) {
+                pass = a;
+                break;
+            }
+            fail = a;
+        }
+        if (pass > 0) {
+            for (int it = 0; it < 12; ++it) {
+                const double mid = 0.5 * (pass + fail);
+                (chordal_deviation(c, tessellate_angle(c, mid)).max <= tol ? pass : fail) = mid;
+            }
+            const Polyline a = tessellate_angle(c, pass);
+            row.angle_edges = a.size() - 1;
+            row.angle_dev = chordal_deviation(c, a).max;
+            row.angle_tol_deg = pass * 180 / M_PI;
+            row.angle_reached = true;
+        } else {
+            const Polyline a = tessellate_angle(c, 1e-6);  // the 10-level cap: the finest it goes
+            row.angle_edges = a.size() - 1;
+            row.angle_dev = chordal_deviation(c, a).max;
+        }
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+HelixFrameStudy helix_frame_study() {
+    const double b = 1.0 / (2 * M_PI), c = std::sqrt(1 + b * b), tau = b / (c * c);
+    const double end = 4 * M_PI;  // two turns
+    HelixFrameStudy study;
+    for (int steps = 16; steps <= 1024; steps *= 2) {
+        std::vector<Vec3> pos, tan;
+        std::vector<Vec3> exact;
+        for (int i = 0; i <= steps; ++i) {
+            const double s = end * i / steps;
+            pos.emplace_back(std::cos(s), std::sin(s), b * s);
+            tan.push_back(Vec3(-std::sin(s), std::cos(s), b) / c);
+            const Vec3 n(-std::cos(s), -std::sin(s), 0), bn = Vec3(b * std::sin(s), -b * std::cos(s), 1) / c;
+            const double theta = -tau * c * s;  // -tau times arc length
+            exact.push_back(std::cos(theta) * n + std::sin(theta) * bn);
+        }
+        const Vec3 b0 = Vec3(0, -b, 1) / c;  // the exact binormal at s = 0: N_0 = B_0 x T_0 is exact
+        HelixFrameRow row{steps, end / steps, 0, 0};
+        for (FrameMethod m : {FrameMethod::Recursive, FrameMethod::DoubleReflection}) {
+            const std::vector<Frame> f = curve_frames(pos, tan, m, b0);
+            double e = 0;
+            // atan2, not acos: acos of a dot product near 1 cannot resolve angles below ~1e-8.
+            for (int i = 0; i <= steps; ++i) e = std::max(e, std::atan2(f[i].N.cross(exact[i]).norm(), f[i].N.dot(exact[i])));
+            (m == FrameMethod::Recursive ? row.recursive_error : row.rmf_error) = e;
+        }
+        study.rows.push_back(row);
+    }
+    // Least-squares slope of log(error) on log(h) over the rows.
+    auto order = [&](double HelixFrameRow::*err) {
+        double sx = 0, sy = 0, sxx = 0, sxy = 0;
+        const double n = static_cast<double>(study.rows.size());
+        for (const HelixFrameRow& r : study.rows) {
+            const double x = std::log(r.h), y = std::log(r.*err);
+            sx += x, sy += y, sxx += x * x, sxy += x * y;
+        }
+        return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+    };
+    study.recursive_order = order(&HelixFrameRow::recursive_error);
+    study.rmf_order = order(&HelixFrameRow::rmf_error);
+    return study;
+}
+
+CurveReport check_curve_file(const CurveFile& file, const std::string& input) {
+    CurveReport report;
+    report.input = input;
+    Checker out(report);
+    json tess = json::array(), continuity = json::array(), closure = json::array();
+    for (size_t i = 0; i < file.curves.size(); ++i) {
+        const CurveRecord& r = file.curves[i];
+        const std::string label = r.label(static_cast<int>(i));
+        report.curves.push_back(label);
+        const Polyline uniform = tessellate_record(r, {});
+        if (r.type == CurveType::Primitive) {
+            // Against the exact curve: the samples lie on it, and the tangent is the exact one.
+            double on = 0, tangent = 0;
+            for (int k = 0; k < uniform.size(); ++k) {
+                const bool wrapped = r.closed() && k + 1 == uniform.size();  // sampled at s = 0
+                const ChainJet j = r.primitive.jet(wrapped ? 0.0 : uniform.params[k]);
+                on = std::max(on, (uniform.positions[k] - j.position).norm());
+                tangent = std::max(tangent, (uniform.tangents[k] - j.d1.normalized()).norm());
+            }
+            // The closed forms are sums of up to three sines times the size: a few ulps of
+            // the largest coordinate, which is at most 3 sizes (the trefoil).
+            const double size = bounding_box_diagonal(uniform.positions);
+            out.add(label, "samples-on-curve", "exact", on / size, 8 * kEps, "rel",
+                    "uniform samples vs the closed form (the last sample of a closed curve is the first)");
+            out.add(label, "tangent", "exact", tangent, 8 * kEps, "abs", "unit tangent vs the closed-form derivative");
+            check_frames(r, uniform, label, out, closure);
+            continue;
+        }
+        const BezierChain c = r.chain();
+        const bool planar = r.dim == 2;
+        check_bezier_properties(c, label, planar, out);
+        if (const Implementation* eigen = spline_reference()) check_against_eigen(*eigen, r, c, label, out);
+        check_continuity(r, c, label, out, continuity);
+        if (r.type == CurveType::BSpline || r.type == CurveType::CatmullRom || r.type == CurveType::CatmullRomClosed)
+            check_conversion(r, c, label, out);
+        check_frames(r, uniform, label, out, closure);
+        // Tessellation guarantees at one tolerance per curve (1e-3 of its size): the distance
+        // mode and Wang's counts must meet it as measured.
+        const double tol = 1e-3 * scale_of(c);
+        const std::vector<TessellationRow> rows = tessellation_study(r, label, std::span<const double>(&tol, 1));
+        for (const TessellationRow& row : rows) {
+            out.add(label, "distance-mode", "analytic", row.distance_dev, row.tol, "abs",
+                    "measured deviation of the distance-adaptive polyline (" + std::to_string(row.distance_edges) + " edges)");
+            out.add(label, "wang-bound", "analytic", row.wang_dev, row.tol, "abs",
+                    "measured deviation with Wang's per-segment counts (" + std::to_string(row.wang_edges) + " edges)");
+            tess.push_back({{"curve", row.curve}, {"tol", row.tol}, {"uniform_edges", row.uniform_edges},
+                            {"uniform_steps", row.uniform_steps}, {"uniform_dev", row.uniform_dev},
+                            {"angle_edges", row.angle_edges}, {"angle_dev", row.angle_dev},
+                            {"angle_tol_deg", row.angle_tol_deg}, {"angle_reached", row.angle_reached},
+                            {"distance_edges", row.distance_edges}, {"distance_dev", row.distance_dev},
+                            {"wang_edges", row.wang_edges}, {"wang_dev", row.wang_dev}});
+        }
+    }
+    report.tables["tessellation"] = tess;
+    report.tables["continuity"] = continuity;
+    report.tables["closure"] = closure;
+    return report;
+}
+
+CurveReport check_synthetic() {
+    CurveReport report;
+    report.input = "curves:synthetic";
+    Checker out(report);
+    std::mt19937 rng(20261122);
+    std::uniform_real_distribution<double> coord(-1, 1);
+    json degrees = json::array();
+    for (int d = 1; d <= 20; ++d) {
+        std::vector<Vec3> ctrl(d + 1);
+        for (Vec3& p : ctrl) p = Vec3(coord(rng), coord(rng), coord(rng));
+        const BezierChain c = single_bezier(ctrl);
+        const std::string label = "degree " + std::to_string(d);
+        report.curves.push_back(label);
+        const size_t first = report.checks.size();
+        check_bezier_properties(c, label, false, out);
+        json row = {{"degree", d}};
+        for (size_t k = first; k < report.checks.size(); ++k) row[report.checks[k].check] = report.checks[k].measured;
+        if (const Implementation* eigen = spline_reference(); eigen && d <= 10) {
+            CurveRecord r;
+            r.type = CurveType::Bezier;
+            r.control = ctrl;
+            const size_t before = report.checks.size();
+            check_against_eigen(*eigen, r, c, label, out);
+            for (size_t k = before; k < report.checks.size(); ++k) row["eigen_" + report.checks[k].check] = report.checks[k].measured;
+        }
+        row["bound_position"] = rounding_bound(d, 0);
+        degrees.push_back(row);
+    }
+    report.tables["degrees"] = degrees;
+
+    const HelixFrameStudy h = helix_frame_study();
+    json rows = json::array();
+    for (const HelixFrameRow& r : h.rows)
+        rows.push_back({{"steps", r.steps}, {"h", r.h}, {"recursive_error_rad", r.recursive_error}, {"rmf_error_rad", r.rmf_error}});
+    report.tables["frames"] = {{"curve", "helix (cos s, sin s, s / 2 pi), two turns"}, {"rows", rows},
+                               {"recursive_order", h.recursive_order}, {"rmf_order", h.rmf_order}};
+    // Orders as checks: measured is the shortfall below the required order (0 when met).
+    out.add("helix", "rmf-order", "exact", std::max(0.0, tolerances::kDoubleReflectionMinOrder - h.rmf_order), 0.0, "order",
+            "double reflection: fitted order " + std::to_string(h.rmf_order) + ", required >= " +
+                std::to_string(tolerances::kDoubleReflectionMinOrder));
+    return report;
+}
+
+json to_json(const CurveReport& r) {
+    json runs = json::array();
+    for (const CurveCheck& c : r.checks) {
+        json run = {{"reference", c.reference}, {"check", c.check}, {"curve", c.curve}, {"measured", c.measured},
+                    {"tolerance", c.tolerance}, {"unit", c.unit}, {"verdict", c.pass() ? "agree" : "diverge"},
+                    {"explanation", c.note}};
+        if (!c.pass()) run["divergence_class"] = "unexplained";
+        runs.push_back(run);
+    }
+    return {{"input", r.input}, {"scheme", r.scheme}, {r.scheme == "surfaces" ? "surfaces" : "curves", r.curves}, {"runs", runs}, {"tables", r.tables}};
+}
+
+namespace {
+
+std::vector<std::string> bundled_curve_names() {
+    std::vector<std::string> names;
+    for (const auto& b : datasets::bundled_curves()) names.push_back(b.name);
+    return names;
+}
+
+const detail::CheckInputFamily& curve_inputs() {
+    static const detail::CheckInputFamily f{"curves", "curve", {".swp", ".bzc"}, bundled_curve_names, datasets::course_curve_files};
+    return f;
+}
+
+}  // namespace
+
+bool is_curve_input(const std::string& spec) { return detail::is_check_input(curve_inputs(), spec); }
+
+std::vector<std::string> expand_curve_inputs(const std::vector<std::string>& specs) {
+    return detail::expand_check_inputs(curve_inputs(), specs);
+}
+
+CurveFile load_curve_input(const std::string& spec) {
+    if (spec.starts_with("curve:")) return datasets::bundled_curve_file(spec.substr(6));
+    if (spec.starts_with("curves:")) throw InputError("'" + spec + "' is a collection, not one curve file");
+    return read_curve_file(spec);
+}
+
+}  // namespace crossdiv::verification
