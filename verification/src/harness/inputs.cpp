@@ -7,9 +7,7 @@
 #include "crossdiv/datasets/edge_cases.h"
 #include "crossdiv/error.h"
 #include "crossdiv/io/mesh_io.h"
-#if CROSSDIV_HAS_ASSIMP
-#include "crossdiv/adapters/assimp.h"
-#endif
+#include "crossdiv/verification/implementations/registry.h"
 
 namespace crossdiv::verification {
 
@@ -40,13 +38,7 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& specs) {
 PolyMesh load_input(const std::string& spec) {
     if (spec.starts_with("bundled:")) return datasets::bundled_mesh(spec.substr(8));
     if (spec.starts_with("edgecase:")) return datasets::edge_case(spec.substr(9)).mesh;
-#if CROSSDIV_HAS_ASSIMP
-    for (const std::string& ext : adapters::assimp::extensions())
-        if (spec.size() > ext.size() && std::equal(ext.rbegin(), ext.rend(), spec.rbegin(), [](char a, char b) {
-                return a == std::tolower(static_cast<unsigned char>(b));
-            }))
-            return adapters::assimp::read_mesh(spec);
-#endif
+    if (std::optional<PolyMesh> m = read_with_input_adapter(spec)) return std::move(*m);
     return read_mesh(spec);
 }
 

@@ -1,9 +1,13 @@
 #include "crossdiv/verification/implementations/registry.h"
 
 #include <algorithm>
+#include <cctype>
 #include <memory>
 
 #include "library_implementations.h"
+#ifdef CROSSDIV_HAS_ASSIMP
+#include "crossdiv/adapters/assimp.h"
+#endif
 
 namespace crossdiv::verification {
 namespace {
@@ -72,6 +76,11 @@ const std::vector<const Implementation*>& implementations() {
 
 const Implementation& core_implementation() { return *owned().front(); }
 
+bool is_built(std::string_view name) {
+    return std::any_of(implementations().begin(), implementations().end(),
+                       [&](const Implementation* i) { return i->name() == name; });
+}
+
 const Implementation& find_implementation(std::string_view name) {
     for (const Implementation* i : implementations())
         if (i->name() == name) return *i;
@@ -89,9 +98,7 @@ std::vector<const Implementation*> references_with(bool Capabilities::*capabilit
 std::vector<const Implementation*> select_references(Scheme scheme, const std::vector<std::string>& wanted) {
     const std::vector<const Implementation*> having = references_for(scheme);
     return pick(having, wanted, [&](const std::string& n) {
-        const bool built = std::any_of(implementations().begin(), implementations().end(),
-                                       [&](const Implementation* i) { return i->name() == n; });
-        if (!built) return "unknown or not built reference '" + n + "' (built: " + names(having) + ")";
+        if (!is_built(n)) return "unknown or not built reference '" + n + "' (built: " + names(having) + ")";
         return "reference '" + n + "' has no " + to_string(scheme) + " in this build (those that have it: " + names(having) + ")";
     });
 }
@@ -102,6 +109,17 @@ std::vector<const Implementation*> select_references(bool Capabilities::*capabil
     return pick(having, wanted, [&](const std::string& n) {
         return "unknown or unavailable " + std::string(what) + " reference '" + n + "' (this build has: " + names(having) + ")";
     });
+}
+
+std::optional<PolyMesh> read_with_input_adapter([[maybe_unused]] const std::string& path) {
+#ifdef CROSSDIV_HAS_ASSIMP
+    for (const std::string& ext : adapters::assimp::extensions())
+        if (path.size() > ext.size() && std::equal(ext.rbegin(), ext.rend(), path.rbegin(), [](char a, char b) {
+                return a == std::tolower(static_cast<unsigned char>(b));
+            }))
+            return adapters::assimp::read_mesh(path);
+#endif
+    return std::nullopt;
 }
 
 }  // namespace crossdiv::verification

@@ -4,6 +4,8 @@
 /// it was built with (CROSSDIV_WITH_* options), in a fixed order. The only place in the
 /// harness that knows which adapters exist; everything else asks here.
 
+#include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -13,6 +15,9 @@ namespace crossdiv::verification {
 
 /// core, opensubdiv, openmesh, openmesh-one-call, cgal, cgal-one-call, eigen (those built).
 const std::vector<const Implementation*>& implementations();
+
+/// Whether an implementation of that name is built into this binary.
+bool is_built(std::string_view name);
 
 /// Core's implementation (always present).
 const Implementation& core_implementation();
@@ -34,5 +39,9 @@ std::vector<const Implementation*> select_references(Scheme scheme, const std::v
 /// @throws InputError for a name that is not built or lacks it; `what` names the capability.
 std::vector<const Implementation*> select_references(bool Capabilities::*capability, const std::vector<std::string>& names,
                                                      const char* what);
+
+/// Reads `path` through the input adapter built for its extension (Assimp: .dae, .ply, .stl);
+/// nothing when no input adapter of this build takes it. @throws InputError naming the file.
+std::optional<PolyMesh> read_with_input_adapter(const std::string& path);
 
 }  // namespace crossdiv::verification
