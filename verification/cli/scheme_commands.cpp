@@ -268,7 +268,7 @@ int run_spectrum(const SpectrumArgs& a) {
     for (const std::string& s : schemes)
         for (int n = lo; n <= hi; ++n) {
             const SpectrumRow r = local_spectrum(s, n);
-            ok &= r.max_difference <= 1e-12;
+            ok &= r.max_difference <= tolerances::kSpectrumAgreement;
             fmt::print("{:<14} {:>3} {:>10.6f} {:>5} {:>10.6f} {:>10.6f} {:>10.2e} {:>9.1e}  {}\n", s, n, r.subdominant,
                        r.subdominant_multiplicity, r.next, r.vertex_rate, r.max_difference, r.max_imaginary,
                        r.regular_characteristic_map ? "yes" : "NO");

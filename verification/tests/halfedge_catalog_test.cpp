@@ -77,8 +77,8 @@ TEST(HalfedgeCatalog, OpenMeshNormalsAreAreaAndUniformCgalIsClassified) {
         const NormalsComparison c = compare_normals(mesh, NormalWeighting::Area, {"openmesh", "cgal"});
         ASSERT_EQ(c.references.size(), 3u);
         // On symmetric meshes several weightings coincide; the one each method is must match.
-        EXPECT_LE(c.references[0].max_angle[0], kNormalMatchRad) << spec << ": " << c.references[0].classification;
-        EXPECT_LE(c.references[1].max_angle[2], kNormalMatchRad) << spec << ": " << c.references[1].classification;
+        EXPECT_LE(c.references[0].max_angle[0], tolerances::kNormalMatchRad) << spec << ": " << c.references[0].classification;
+        EXPECT_LE(c.references[1].max_angle[2], tolerances::kNormalMatchRad) << spec << ": " << c.references[1].classification;
         EXPECT_EQ(c.references[2].error, "") << spec;
     }
     // Where a vertex's faces are not symmetric the weightings part; CGAL follows none of them.
@@ -93,7 +93,7 @@ TEST(HalfedgeCatalog, OpenMeshNormalsAreAreaAndUniformCgalIsClassified) {
     EXPECT_EQ(cgal.unexplained, 0);
     // On the icosahedron every weighting is the same direction, and CGAL agrees with all.
     const NormalsComparison ico = compare_normals(to_tri_mesh(load_input("bundled:icosahedron")), NormalWeighting::Area, {"cgal"});
-    EXPECT_LT(ico.references[0].max_angle[0], kNormalMatchRad);
+    EXPECT_LT(ico.references[0].max_angle[0], tolerances::kNormalMatchRad);
 }
 
 // The meshedit reference results: the input, and the mesh after one flip and after one split.

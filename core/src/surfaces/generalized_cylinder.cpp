@@ -88,9 +88,4 @@ SweepGrid cylinder_grid(const Polyline& profile, bool closed_profile, const Poly
     return g;
 }
 
-SurfaceMesh sweep_cylinder(const Polyline& profile, bool closed_profile, const Polyline& sweep, bool closed_sweep,
-                           const CylinderOptions& o, std::span<const double> scale) {
-    return mesh_sweep(cylinder_grid(profile, closed_profile, sweep, closed_sweep, o, scale));
-}
-
 }  // namespace crossdiv

@@ -164,12 +164,6 @@ EditRunResult run_edit_differential(const TriMesh& base, const std::vector<EditO
     return run(base, ops, references, flip, nullptr);
 }
 
-std::vector<ResolvedEdit> resolve_edit_ops(const TriMesh& base, const std::vector<EditOp>& ops, const FlipFunction& flip) {
-    std::vector<ResolvedEdit> resolved;
-    run(base, ops, {}, flip, &resolved);
-    return resolved;
-}
-
 ShrunkEdits shrink_edit_sequence(const TriMesh& base, const std::vector<EditOp>& ops,
                                  const std::vector<std::string>& references, const FlipFunction& flip) {
     const EditRunResult first = run(base, ops, references, flip, nullptr);

@@ -266,7 +266,7 @@ SpectrumRow local_spectrum(const std::string& scheme, int n) {
         row.max_difference = std::max(row.max_difference, std::abs(row.eigenvalues[i] - row.closed_form[i]));
     if (row.eigenvalues.size() != row.closed_form.size()) row.max_difference = INFINITY;
 
-    constexpr double kSame = 1e-9;  // eigenvalues of a 2n+1 matrix of O(1) weights: far above rounding
+    constexpr double kSame = tolerances::kEigenvalueMultiplicity;
     const auto below_one = std::find_if(row.eigenvalues.begin(), row.eigenvalues.end(), [](double x) { return x < 1 - kSame; });
     if (below_one != row.eigenvalues.end()) {
         row.subdominant = *below_one;

@@ -59,10 +59,10 @@ void measure(const TriMesh& mesh, const std::vector<std::vector<Vec3>>& ours, co
     for (int w = 1; w < 3; ++w)
         if (r.max_angle[w] < r.max_angle[best]) best = w;
     r.closest = std::string(to_string(kWeightings[best]));
-    if (r.max_angle[best] <= kNormalMatchRad) r.matches = r.closest;
+    if (r.max_angle[best] <= tolerances::kNormalMatchRad) r.matches = r.closest;
     for (int v = 0; v < nv; ++v) {
         if (ours[best][v].norm() == 0 || r.normals[v].norm() == 0) continue;
-        if (angle(ours[best][v], r.normals[v]) > kNormalMatchRad) {
+        if (angle(ours[best][v], r.normals[v]) > tolerances::kNormalMatchRad) {
             ++r.mismatched;
             r.mismatched_boundary += boundary[v];
         }
@@ -71,8 +71,8 @@ void measure(const TriMesh& mesh, const std::vector<std::vector<Vec3>>& ours, co
     const std::vector<Vec3> sine = sine_weighted_normals(mesh);
     for (int v = 0; v < nv; ++v) {
         bool best_visible = true;
-        for (int w = 0; w < 3; ++w) best_visible = best_visible && vis[v] <= ours_visibility[w][v] + kNormalMatchRad;
-        const bool is_sine = sine[v].norm() > 0 && r.normals[v].norm() > 0 && angle(sine[v], r.normals[v]) <= kNormalMatchRad;
+        for (int w = 0; w < 3; ++w) best_visible = best_visible && vis[v] <= ours_visibility[w][v] + tolerances::kNormalMatchRad;
+        const bool is_sine = sine[v].norm() > 0 && r.normals[v].norm() > 0 && angle(sine[v], r.normals[v]) <= tolerances::kNormalMatchRad;
         r.most_visible += best_visible;
         r.sine_weighted += is_sine;
         r.unexplained += !best_visible && !is_sine;

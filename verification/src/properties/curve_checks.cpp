@@ -10,6 +10,7 @@
 #include "crossdiv/error.h"
 #include "crossdiv/io/curve_io.h"
 #include "crossdiv/mesh/tri_mesh.h"
+#include "crossdiv/verification/harness/convergence_order.h"
 #include "crossdiv/verification/harness/tolerances.h"
 #include "harness/check_inputs.h"
 #include "crossdiv/verification/implementations/registry.h"
@@ -263,7 +264,7 @@ void check_frames(const CurveRecord& r, const Polyline& p, const std::string& la
         distribute_closure(p.positions, f, mismatch);
         closure.push_back({{"curve", label}, {"method", to_string(m)}, {"mismatch_deg", mismatch * 180 / M_PI},
                            {"after_distribution_deg", closure_angle(f) * 180 / M_PI}});
-        out.add(label, std::string("closure-") + std::string(to_string(m)), "analytic", std::abs(closure_angle(f)), 1e-12,
+        out.add(label, std::string("closure-") + std::string(to_string(m)), "analytic", std::abs(closure_angle(f)), tolerances::kFrameClosureRad,
                 "rad", "frame mismatch after one lap once the measured angle is distributed along arc length");
     }
 }
@@ -356,18 +357,14 @@ HelixFrameStudy helix_frame_study() {
         }
         study.rows.push_back(row);
     }
-    // Least-squares slope of log(error) on log(h) over the rows.
-    auto order = [&](double HelixFrameRow::*err) {
-        double sx = 0, sy = 0, sxx = 0, sxy = 0;
-        const double n = static_cast<double>(study.rows.size());
-        for (const HelixFrameRow& r : study.rows) {
-            const double x = std::log(r.h), y = std::log(r.*err);
-            sx += x, sy += y, sxx += x * x, sxy += x * y;
-        }
-        return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-    };
-    study.recursive_order = order(&HelixFrameRow::recursive_error);
-    study.rmf_order = order(&HelixFrameRow::rmf_error);
+    std::vector<double> h, recursive, rmf;
+    for (const HelixFrameRow& r : study.rows) {
+        h.push_back(r.h);
+        recursive.push_back(r.recursive_error);
+        rmf.push_back(r.rmf_error);
+    }
+    study.recursive_order = fitted_order(h, recursive);
+    study.rmf_order = fitted_order(h, rmf);
     return study;
 }
 
@@ -499,8 +496,6 @@ const detail::CheckInputFamily& curve_inputs() {
 }
 
 }  // namespace
-
-bool is_curve_input(const std::string& spec) { return detail::is_check_input(curve_inputs(), spec); }
 
 std::vector<std::string> expand_curve_inputs(const std::vector<std::string>& specs) {
     return detail::expand_check_inputs(curve_inputs(), specs);

@@ -13,6 +13,7 @@
 #include "crossdiv/io/patch_io.h"
 #include "crossdiv/mesh/mesh_checks.h"
 #include "crossdiv/surfaces/sweep_surface.h"
+#include "crossdiv/verification/harness/convergence_order.h"
 #include "crossdiv/verification/harness/tolerances.h"
 #include "harness/check_inputs.h"
 #include "crossdiv/verification/implementations/registry.h"
@@ -27,17 +28,6 @@ constexpr double kEps = 2.220446049250313e-16;
 CurveCheck count_check(const std::string& name, const std::string& check, const std::string& reference, double count,
                        const std::string& note) {
     return {name, check, reference, count, 0, "count", note};
-}
-
-/// Least-squares slope of log(error) against log(h), h halving per row.
-double fitted_order(const std::vector<double>& h, const std::vector<double>& err) {
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
-    const double n = static_cast<double>(h.size());
-    for (size_t i = 0; i < h.size(); ++i) {
-        const double x = std::log(h[i]), y = std::log(std::max(err[i], 1e-300));
-        sx += x, sy += y, sxx += x * x, sxy += x * y;
-    }
-    return (n * sxy - sx * sy) / (n * sxx - sx * sx);
 }
 
 /// Largest |signed distance| of the mesh from an implicit surface, sampled on every
@@ -414,8 +404,6 @@ const detail::CheckInputFamily& surface_inputs() {
 }
 
 }  // namespace
-
-bool is_surface_input(const std::string& spec) { return detail::is_check_input(surface_inputs(), spec); }
 
 std::vector<std::string> expand_surface_inputs(const std::vector<std::string>& specs) {
     return detail::expand_check_inputs(surface_inputs(), specs);

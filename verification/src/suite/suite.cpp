@@ -18,6 +18,7 @@
 #include "crossdiv/verification/suite/limit_checks.h"
 #include "crossdiv/verification/properties/surface_checks.h"
 #include "crossdiv/verification/harness/inputs.h"
+#include "crossdiv/verification/harness/process.h"
 #include "crossdiv/verification/implementations/registry.h"
 
 namespace crossdiv::verification {
@@ -571,11 +572,9 @@ json merge_suite_outputs(const std::vector<std::string>& dirs, const std::string
 }
 
 int render_report(const std::string& dir) {
+    // Debian's interpreter has matplotlib; a python3 earlier on PATH may not.
     const std::string python = fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-    const std::string cmd = python + " '" CROSSDIV_REPORTS_DIR "/make_report.py' '" + dir + "'";
-    std::fflush(nullptr);  // our buffered lines first, then the script's
-    const int status = std::system(cmd.c_str());
-    return WIFEXITED(status) ? WEXITSTATUS(status) : 1;
+    return run_process({python, CROSSDIV_REPORTS_DIR "/make_report.py", dir});
 }
 
 }  // namespace crossdiv::verification

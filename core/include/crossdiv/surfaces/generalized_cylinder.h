@@ -40,8 +40,4 @@ SweepFrames sweep_frames(const Polyline& sweep, bool closed_sweep, const Cylinde
 SweepGrid cylinder_grid(const Polyline& profile, bool closed_profile, const Polyline& sweep, bool closed_sweep,
                         const CylinderOptions& options, std::span<const double> scale = {}, double* closure_angle = nullptr);
 
-/// cylinder_grid meshed with mesh_sweep.
-SurfaceMesh sweep_cylinder(const Polyline& profile, bool closed_profile, const Polyline& sweep, bool closed_sweep,
-                           const CylinderOptions& options, std::span<const double> scale = {});
-
 }  // namespace crossdiv

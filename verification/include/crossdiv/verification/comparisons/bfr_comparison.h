@@ -14,14 +14,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "crossdiv/verification/harness/tolerances.h"
 #include "crossdiv/mesh/poly_mesh.h"
-
-namespace crossdiv::tolerances {
-/// Bfr on a regular face (one bicubic or quartic box-spline patch) against core's limit
-/// masks: both are exact, a patch evaluation of 16 or 12 points and a mask of up to 2n+1
-/// terms; 1e-12 of the diagonal is the limit comparison's bar (kLimitAgreementRelative).
-inline constexpr double kBfrRegularRelative = 1e-12;
-}  // namespace crossdiv::tolerances
 
 namespace crossdiv::verification {
 

@@ -98,7 +98,5 @@ struct ShrunkEdits {
 ShrunkEdits shrink_edit_sequence(const TriMesh& base, const std::vector<EditOp>& ops,
                                  const std::vector<std::string>& references, const FlipFunction& flip = our_flip());
 
-/// The operations of a run as applied, by endpoints (stops early if the run disagrees).
-std::vector<ResolvedEdit> resolve_edit_ops(const TriMesh& base, const std::vector<EditOp>& ops, const FlipFunction& flip = our_flip());
 
 }  // namespace crossdiv::verification

@@ -8,23 +8,12 @@
 #include <string>
 #include <vector>
 
+#include "crossdiv/verification/harness/tolerances.h"
 #include "crossdiv/mesh/poly_mesh.h"
 #include "crossdiv/subdiv/catmull_clark_mask.h"
 #include "crossdiv/subdiv/loop_mask.h"
 #include "crossdiv/verification/harness/verdict.h"
 #include "crossdiv/verification/harness/isolate.h"
-
-namespace crossdiv::tolerances {
-/// Core's limit positions agree with OpenSubdiv's when they differ by at most this times the
-/// bounding-box diagonal: both apply one mask of up to 2n+1 terms to positions that already
-/// agree to ~1e-16 of the diagonal after the levels; 1e-12 is the bar and 1e4 times
-/// above what rounding makes.
-inline constexpr double kLimitAgreementRelative = 1e-12;
-/// Interior limit normals agree to this angle (radians): both are cross products of tangent
-/// masks that differ by a scale per tangent (OpenSubdiv normalizes its masks differently),
-/// which moves the direction by rounding only, a few ulps of the tangents' conditioning.
-inline constexpr double kLimitNormalRad = 1e-10;
-}  // namespace crossdiv::tolerances
 
 namespace crossdiv::verification {
 

@@ -8,16 +8,11 @@
 #include <string>
 #include <vector>
 
+#include "crossdiv/verification/harness/tolerances.h"
 #include "crossdiv/mesh/tri_mesh.h"
 #include "crossdiv/mesh/vertex_normals.h"
 
 namespace crossdiv::verification {
-
-/// Two unit normals "match" below this angle. Both are normalized sums of at most a few dozen
-/// products, each a few ulps off, so rounding alone stays near 1e-14 rad; 1e-9 rad leaves room
-/// for sums that nearly cancel, and is still 1e6 times below any weighting difference that
-/// a real mesh shows (those start near 1e-3 rad).
-inline constexpr double kNormalMatchRad = 1e-9;
 
 /// One reference's normals measured against ours.
 struct ReferenceNormals {

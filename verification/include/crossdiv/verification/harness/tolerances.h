@@ -19,9 +19,6 @@ inline constexpr double kAgreementRelative = 1e-12;
 /// a few ulps each; 16 bounds that and is 1e4 times below any rule difference measured.
 inline constexpr double kRoundingUlps = 16;
 
-}  // namespace crossdiv::tolerances
-
-namespace crossdiv::tolerances {
 
 /// Two evaluations of the same polynomial curve (de Casteljau, the Bernstein sum, Eigen's
 /// Cox-de Boor, the seed's matrix form) agree when they differ by at most
@@ -35,6 +32,11 @@ inline constexpr double kCurveRoundingUlps = 64;
 /// Frames are orthonormal to this (absolute): each is built by a cross product and one
 /// normalization of unit vectors, a few ulps of 1.
 inline constexpr double kFrameOrthonormality = 1e-13;
+
+/// After the closure mismatch of a closed curve's frames is distributed along its arc length,
+/// the frames close to this angle (radians): the distribution rotates each frame by a share of
+/// the measured angle, so what is left is the rounding of those rotations.
+inline constexpr double kFrameClosureRad = 1e-12;
 
 /// The order of convergence the double-reflection frame must show on the helix as the step
 /// halves: its global error is O(h^4) (Wang et al. 2008, sec. 4); 3.5 tolerates the
@@ -66,5 +68,57 @@ inline constexpr double kExactNormalRad = 1e-12;
 /// (the rest is the chord sag of the finest level and where the samples fall).
 inline constexpr double kBezierCircleError = 2.7253e-4;
 inline constexpr double kBezierCirclePlateauRelative = 0.1;
+
+
+// ---- Limit behaviour: spectra and convergence rates.
+
+/// A published spectrum and the eigenvalues of core's local matrix agree to this (absolute;
+/// eigenvalues lie in [0, 1]): an eigen-solve of a matrix of size at most 41 with O(1)
+/// entries is accurate to ~1e-15, a wrong weight moves an eigenvalue by 1e-3 and more.
+inline constexpr double kSpectrumAgreement = 1e-12;
+/// The centre of a fan converges at the rate of the largest rotation-invariant eigenvalue
+/// below 1. For Loop that block has one such eigenvalue and the fit is exact; Catmull-Clark's
+/// has two (lambda_v and a smaller one), whose mixture moves the 7-step geometric mean by
+/// up to (lambda_3 / lambda_v)^k-weighted terms: measured below 0.3% for n = 3..12. 1% tells
+/// the governing eigenvalue from the next one (they differ by 20% and more).
+inline constexpr double kConvergenceRateRelative = 0.01;
+/// Two eigenvalues of a local subdivision matrix count as one (a multiplicity) within this:
+/// the matrix has size at most 2n+1 with O(1) weights, so the solver's error is ~1e-15, while
+/// distinct eigenvalues of the published spectra lie 1e-3 and more apart.
+inline constexpr double kEigenvalueMultiplicity = 1e-9;
+
+// ---- Limit positions and normals against OpenSubdiv.
+
+/// Core's limit positions agree with OpenSubdiv's when they differ by at most this times the
+/// bounding-box diagonal: both apply one mask of up to 2n+1 terms to positions that already
+/// agree to ~1e-16 of the diagonal after the levels; 1e-12 is the bar and 1e4 times
+/// above what rounding makes.
+inline constexpr double kLimitAgreementRelative = 1e-12;
+/// Interior limit normals agree to this angle (radians): both are cross products of tangent
+/// masks that differ by a scale per tangent (OpenSubdiv normalizes its masks differently),
+/// which moves the direction by rounding only, a few ulps of the tangents' conditioning.
+inline constexpr double kLimitNormalRad = 1e-10;
+
+// ---- Limit surface evaluation (Bfr).
+
+/// Bfr on a regular face (one bicubic or quartic box-spline patch) against core's limit
+/// masks: both are exact, a patch evaluation of 16 or 12 points and a mask of up to 2n+1
+/// terms; 1e-12 of the diagonal is the limit comparison's bar (kLimitAgreementRelative).
+inline constexpr double kBfrRegularRelative = 1e-12;
+
+// ---- Butterfly properties.
+
+/// Plane residual relative to the diagonal: each level sums at most ~2K+2 terms of O(1)
+/// weights (K the largest valence), a few ulps each; 1e-13 leaves room for three levels of
+/// pole-64 and is ten orders below what a non-affine stencil would leave.
+inline constexpr double kPlaneReproduction = 1e-13;
+
+// ---- Vertex normals.
+
+/// Two unit normals "match" below this angle. Both are normalized sums of at most a few dozen
+/// products, each a few ulps off, so rounding alone stays near 1e-14 rad; 1e-9 rad leaves room
+/// for sums that nearly cancel, and is still 1e6 times below any weighting difference that
+/// a real mesh shows (those start near 1e-3 rad).
+inline constexpr double kNormalMatchRad = 1e-9;
 
 }  // namespace crossdiv::tolerances

@@ -12,15 +12,9 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "crossdiv/verification/harness/tolerances.h"
 #include "crossdiv/mesh/poly_mesh.h"
 #include "crossdiv/subdiv/butterfly_mask.h"
-
-namespace crossdiv::tolerances {
-/// Plane residual relative to the diagonal: each level sums at most ~2K+2 terms of O(1)
-/// weights (K the largest valence), a few ulps each; 1e-13 leaves room for three levels of
-/// pole-64 and is ten orders below what a non-affine stencil would leave.
-inline constexpr double kPlaneReproduction = 1e-13;
-}  // namespace crossdiv::tolerances
 
 namespace crossdiv::verification {
 

@@ -82,7 +82,6 @@ nlohmann::json to_json(const CurveReport& report);
 
 /// Curve input names: a .swp or .bzc file, `curve:NAME` (bundled), or the collections
 /// `curves:bundled`, `curves:course` (../shared/data), `curves:synthetic`.
-bool is_curve_input(const std::string& spec);
 std::vector<std::string> expand_curve_inputs(const std::vector<std::string>& specs);
 /// @throws InputError / ParseError naming file and line. Not for curves:synthetic.
 CurveFile load_curve_input(const std::string& spec);

@@ -55,7 +55,6 @@ CurveReport check_surface_studies();
 /// Surface input names: a .bez file, a .swp file, `surface:NAME` (bundled), or the
 /// collections `surfaces:bundled`, `surfaces:course` (../shared/data: c3100/swp/{srev,gcyl}
 /// and meshedit/bez), `surfaces:synthetic`.
-bool is_surface_input(const std::string& spec);
 std::vector<std::string> expand_surface_inputs(const std::vector<std::string>& specs);
 
 /// Runs the checks one input names. @throws InputError / ParseError naming file and line.

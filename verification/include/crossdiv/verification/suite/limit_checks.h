@@ -17,18 +17,7 @@
 #include <string>
 #include <vector>
 
-namespace crossdiv::tolerances {
-/// A published spectrum and the eigenvalues of core's local matrix agree to this (absolute;
-/// eigenvalues lie in [0, 1]): an eigen-solve of a matrix of size at most 41 with O(1)
-/// entries is accurate to ~1e-15, a wrong weight moves an eigenvalue by 1e-3 and more.
-inline constexpr double kSpectrumAgreement = 1e-12;
-/// The centre of a fan converges at the rate of the largest rotation-invariant eigenvalue
-/// below 1. For Loop that block has one such eigenvalue and the fit is exact; Catmull-Clark's
-/// has two (lambda_v and a smaller one), whose mixture moves the 7-step geometric mean by
-/// up to (lambda_3 / lambda_v)^k-weighted terms: measured below 0.3% for n = 3..12. 1% tells
-/// the governing eigenvalue from the next one (they differ by 20% and more).
-inline constexpr double kConvergenceRateRelative = 0.01;
-}  // namespace crossdiv::tolerances
+#include "crossdiv/verification/harness/tolerances.h"
 
 namespace crossdiv::verification {
 
