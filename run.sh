@@ -8,7 +8,8 @@ cd "$(dirname "$0")"
 
 # Debian packages the build, the references and the tests need.
 PACKAGES="g++ make cmake libeigen3-dev libosd-dev libopenmesh-dev libcgal-dev libgtest-dev \
-libcli11-dev nlohmann-json3-dev libfmt-dev libnanoflann-dev libassimp-dev python3-matplotlib python3-numpy"
+libcli11-dev nlohmann-json3-dev libfmt-dev libnanoflann-dev libassimp-dev python3-matplotlib python3-numpy \
+python3-pytest"
 
 install_missing() {
   local missing=""

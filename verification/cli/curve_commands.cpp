@@ -274,23 +274,23 @@ json run_curve_bench(int repeats) {
     return {{"tessellation", rows}, {"timing", timing}};
 }
 
-void print_curve_tables(const std::vector<json>& records) {
+void print_curve_tables(const std::vector<CaseRecord>& records) {
     bool header = false;
-    for (const json& rec : records) {
-        if (rec.value("scheme", "") != "curves" || !rec.contains("tables")) continue;
+    for (const CaseRecord& rec : records) {
+        if (rec.operation != "curves" || !rec.detail.contains("tables")) continue;
         if (!header) {
             fmt::print("\nCurves (each check: measured <= tolerance; results.json holds every value)\n");
             header = true;
         }
         int pass = 0, fail = 0;
         double eigen = 0;
-        for (const json& r : rec["runs"]) {
-            (r["verdict"] == "agree" ? pass : fail) += 1;
-            if (r["reference"] == "eigen" && r["check"] == "position") eigen = std::max(eigen, r["measured"].get<double>());
+        for (const RunRecord& r : rec.runs) {
+            (r.outcome.verdict == Verdict::Agree ? pass : fail) += 1;
+            if (r.reference == "eigen" && r.check == "position") eigen = std::max(eigen, r.measured);
         }
-        fmt::print("  {:<48} {:>3} checks, {} failed{}\n", rec["input"].get<std::string>(), pass + fail, fail,
+        fmt::print("  {:<48} {:>3} checks, {} failed{}\n", rec.input, pass + fail, fail,
                    eigen > 0 ? fmt::format(", Eigen position max {:.2g} rel", eigen) : "");
-        const json& t = rec["tables"];
+        const json& t = rec.detail["tables"];
         if (t.contains("frames")) {
             fmt::print("    helix frame error vs the exact rotation-minimizing frame (max angle, rad):\n");
             fmt::print("    {:>6} {:>10} {:>12} {:>12}\n", "steps", "h", "recursive", "rmf");

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "crossdiv/verification/suite/case_record.h"
+
 namespace crossdiv::cli {
 
 struct TessellateArgs {
@@ -33,6 +35,6 @@ nlohmann::json run_curve_bench(int repeats);
 
 /// Prints the curve tables of suite records (checks, frame convergence, degree study,
 /// tessellation counts) so the run's output carries the figures, not only results.json.
-void print_curve_tables(const std::vector<nlohmann::json>& records);
+void print_curve_tables(const std::vector<verification::CaseRecord>& records);
 
 }  // namespace crossdiv::cli

@@ -21,7 +21,10 @@
 #include "crossdiv/verification/comparisons/loop_comparison.h"
 #include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/verification/comparisons/shrink.h"
-#include "crossdiv/verification/suite/suite.h"
+#include "crossdiv/verification/suite/manifest.h"
+#include "crossdiv/verification/suite/outputs.h"
+#include "crossdiv/verification/suite/report.h"
+#include "crossdiv/verification/suite/runner.h"
 #include "curve_commands.h"
 #include "edit_commands.h"
 #include "scheme_commands.h"
@@ -270,10 +273,9 @@ std::pair<int, int> parse_shard(const std::string& s) {
     throw InputError("--shard " + s + ": expected I/N, e.g. 2/4");
 }
 
-void print_outcome_summary(const nlohmann::json& summary) {
-    fmt::print("\n{} cases, {} reference runs, {} failure(s)\n", summary["cases"].get<int>(), summary["runs"].get<int>(),
-               summary["failures"].get<int>());
-    for (const auto& [outcome, n] : summary["outcomes"].items()) fmt::print("  {:>5}  {}\n", n.get<int>(), outcome);
+void print_outcome_summary(const SuiteSummary& summary) {
+    fmt::print("\n{} cases, {} reference runs, {} failure(s)\n", summary.cases, summary.runs, summary.failures);
+    for (const auto& [outcome, n] : summary.outcomes) fmt::print("  {:>5}  {}\n", n, outcome);
 }
 
 int finish_outputs(const std::string& dir, bool report) {
@@ -300,14 +302,14 @@ int run_suite(const std::string& manifest_path, const std::string& out, int jobs
                shard_i, shard_n, mine.size(), jobs);
     const bool tty = isatty(STDOUT_FILENO);
     const auto t0 = std::chrono::steady_clock::now();
-    const std::vector<nlohmann::json> records = run_jobs(mine, jobs, out, [&](int done, int total, const nlohmann::json& rec) {
+    const std::vector<CaseRecord> records = run_jobs(mine, jobs, out, [&](int done, int total, const CaseRecord& rec) {
         if (tty) {
             const int width = 30, filled = total ? width * done / total : width;
             fmt::print("\r\033[K[{}{}] {}/{} {}", std::string(filled, '#'), std::string(width - filled, '.'), done, total,
-                       rec["id"].get<std::string>().substr(0, 60));
+                       rec.id.substr(0, 60));
             if (done == total) fmt::print("\n");
         } else {
-            fmt::print("[{}/{}] {}: {}\n", done, total, rec["id"].get<std::string>(), describe_record(rec));
+            fmt::print("[{}/{}] {}: {}\n", done, total, rec.id, describe_record(rec));
         }
         std::fflush(stdout);
     });
@@ -317,25 +319,25 @@ int run_suite(const std::string& manifest_path, const std::string& out, int jobs
     for (const Implementation* r : references_with(&Capabilities::spline_evaluation))
         curve_refs.push_back({{"name", r->name()}, {"version", r->version()}});
     const nlohmann::json header = {
-        {"tool", "crossdiv suite"}, {"schema_version", 2}, {"suite", manifest.name}, {"manifest", manifest.file},
+        {"tool", "crossdiv suite"}, {"schema_version", kResultsSchemaVersion}, {"suite", manifest.name}, {"manifest", manifest.file},
         {"shard", fmt::format("{}/{}", shard_i, shard_n)}, {"jobs_total", all.size()}, {"jobs_run", mine.size()},
         {"workers", jobs}, {"references", refs}, {"curve_references", curve_refs},
         {"seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()}};
-    const nlohmann::json summary = write_suite_outputs(out, header, records);
+    const SuiteSummary summary = write_suite_outputs(out, header, records);
     cli::print_curve_tables(records);
     cli::print_surface_tables(records);
     fmt::print("results: {0}/results.json, {0}/results.csv, {0}/junit.xml\n", out);
     print_outcome_summary(summary);
     const int report_status = finish_outputs(out, report);
-    return summary["failures"].get<int>() ? 1 : report_status;
+    return summary.failures ? 1 : report_status;
 }
 
 int run_merge(const std::vector<std::string>& dirs, const std::string& out, bool report) {
-    const nlohmann::json summary = merge_suite_outputs(dirs, out);
+    const SuiteSummary summary = merge_suite_outputs(dirs, out);
     fmt::print("merged {} folder(s) into {}\n", dirs.size(), out);
     print_outcome_summary(summary);
     const int report_status = finish_outputs(out, report);
-    return summary["failures"].get<int>() ? 1 : report_status;
+    return summary.failures ? 1 : report_status;
 }
 
 int run_diff(const std::string& in, const SchemeArgs& s, const std::string& against, const std::string& out_dir) {

@@ -175,10 +175,10 @@ json run_surface_bench() {
             {"beats_seed", ratio > seed_ratio && adaptive_dev <= uniform_dev}};
 }
 
-void print_surface_tables(const std::vector<json>& records) {
-    for (const json& rec : records) {
-        if (rec.value("scheme", "") != "surfaces" || !rec.contains("tables")) continue;
-        const json& t = rec["tables"];
+void print_surface_tables(const std::vector<verification::CaseRecord>& records) {
+    for (const verification::CaseRecord& rec : records) {
+        if (rec.operation != "surfaces" || !rec.detail.contains("tables")) continue;
+        const json& t = rec.detail["tables"];
         if (t.contains("sphere") || t.contains("torus")) {
             fmt::print("\nsurfaces against exact surfaces (mesh-to-surface distance, normal errors in rad):\n");
             fmt::print("  {:<32} {:>5} {:>8} {:>11} {:>11} {:>11}\n", "surface", "n", "faces", "distance", "vertex-n", "face-n");
@@ -203,14 +203,14 @@ void print_surface_tables(const std::vector<json>& records) {
         }
     }
     bool header = false;
-    for (const json& rec : records) {
-        if (rec.value("scheme", "") != "surfaces" || !rec.contains("tables") || !rec["tables"].contains("surfaces")) continue;
+    for (const verification::CaseRecord& rec : records) {
+        if (rec.operation != "surfaces" || !rec.detail.contains("tables") || !rec.detail["tables"].contains("surfaces")) continue;
         if (!header) {
             fmt::print("\nsurfaces built (closed ones must be watertight and outward):\n");
             fmt::print("  {:<34} {:>5} {:>8} {:>7} {:>9} {:>12} {:>6}\n", "surface", "kind", "faces", "closed", "boundary", "volume", "folds");
             header = true;
         }
-        for (const json& r : rec["tables"]["surfaces"])
+        for (const json& r : rec.detail["tables"]["surfaces"])
             fmt::print("  {:<34} {:>5} {:>8} {:>7} {:>9} {:>12.6g} {:>6}\n", r.value("surface", "").substr(0, 34), r.value("kind", ""),
                        r.value("faces", 0), r.value("closed", false) ? "yes" : "no", r.value("boundary_edges", 0),
                        r.value("signed_volume", 0.0), r.contains("fold") ? r["fold"].value("faces", 0) : 0);

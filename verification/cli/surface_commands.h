@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "crossdiv/verification/suite/case_record.h"
+
 namespace crossdiv::cli {
 
 struct SweepArgs {
@@ -34,6 +36,6 @@ int run_patch(const PatchArgs& a);
 nlohmann::json run_surface_bench();
 
 /// Prints the surface tables of suite records (sphere, torus, Bfr, each surface built).
-void print_surface_tables(const std::vector<nlohmann::json>& records);
+void print_surface_tables(const std::vector<verification::CaseRecord>& records);
 
 }  // namespace crossdiv::cli

@@ -14,10 +14,10 @@ using namespace crossdiv;
 using namespace crossdiv::verification;
 
 namespace {
-void expect_all_pass(const CurveReport& r) {
+void expect_all_pass(const CheckReport& r) {
     ASSERT_FALSE(r.checks.empty()) << r.input;
-    for (const CurveCheck& c : r.checks)
-        EXPECT_TRUE(c.pass()) << r.input << " " << c.curve << " " << c.check << " vs " << c.reference << ": " << c.measured
+    for (const Check& c : r.checks)
+        EXPECT_TRUE(c.pass()) << r.input << " " << c.subject << " " << c.check << " vs " << c.reference << ": " << c.measured
                               << " > " << c.tolerance << " (" << c.note << ")";
 }
 }  // namespace
@@ -40,7 +40,7 @@ TEST(CurveChecks, CourseCurveFilesReadAndPass) {
 }
 
 TEST(CurveChecks, SyntheticStudiesMeetTheirBounds) {
-    const CurveReport r = check_synthetic();
+    const CheckReport r = check_synthetic();
     expect_all_pass(r);
     const auto& frames = r.tables["frames"];
     EXPECT_GE(frames["rmf_order"].get<double>(), tolerances::kDoubleReflectionMinOrder);

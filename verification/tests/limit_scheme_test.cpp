@@ -9,7 +9,7 @@
 #include "crossdiv/error.h"
 #include "crossdiv/mesh/poly_connectivity.h"
 #include "crossdiv/verification/comparisons/bfr_comparison.h"
-#include "crossdiv/verification/suite/limit_checks.h"
+#include "crossdiv/verification/suite/operations.h"
 #include "crossdiv/verification/comparisons/limit_comparison.h"
 #include "crossdiv/verification/comparisons/scheme_comparison.h"
 #include "scheme_test_catalog.h"
@@ -128,8 +128,9 @@ TEST(BfrComparison, ExactAtLevelOneDyadicPointsEvenOnIrregularFaces) {
 }
 
 TEST(LimitChecks, UnknownStudyIsRefused) {
-    EXPECT_THROW(expand_limit_inputs({"limits:eigen"}), InputError);
-    EXPECT_EQ(expand_limit_inputs({"limits:all"}).size(), 6u);
+    EXPECT_THROW(find_operation("eigen"), InputError);
+    const auto& ops = suite_operations();
+    EXPECT_EQ(std::count_if(ops.begin(), ops.end(), [](const SuiteOperation& op) { return op.kind == OperationKind::Study; }), 6);
 }
 
 }  // namespace

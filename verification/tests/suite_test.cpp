@@ -14,7 +14,9 @@
 #include "crossdiv/verification/bench/bench.h"
 #include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/verification/comparisons/shrink.h"
-#include "crossdiv/verification/suite/suite.h"
+#include "crossdiv/verification/suite/manifest.h"
+#include "crossdiv/verification/suite/outputs.h"
+#include "crossdiv/verification/suite/runner.h"
 
 namespace crossdiv::verification {
 namespace {
@@ -115,28 +117,28 @@ TEST(Suite, RunsInWorkersAndRecordsEachOutcome) {
     const Manifest m = small_suite(d);
     const std::vector<SuiteJob> jobs = expand_jobs(m);
     int calls = 0;
-    const std::vector<nlohmann::json> recs = run_jobs(jobs, 2, d.string(), [&](int done, int total, const nlohmann::json&) {
+    const std::vector<CaseRecord> recs = run_jobs(jobs, 2, d.string(), [&](int done, int total, const CaseRecord&) {
         ++calls;
         EXPECT_LE(done, total);
     });
     EXPECT_EQ(calls, 4);
     ASSERT_EQ(recs.size(), 4u);
-    for (size_t i = 0; i < recs.size(); ++i) EXPECT_EQ(recs[i]["job"], i);  // ordered by job
+    for (size_t i = 0; i < recs.size(); ++i) EXPECT_EQ(recs[i].job, static_cast<int>(i));  // ordered by job
     // tetrahedron: closed, every reference agrees.
-    for (const auto& r : recs[0]["runs"]) EXPECT_EQ(run_outcome(recs[0], r), "agree");
+    for (const RunRecord& r : recs[0].runs) EXPECT_EQ(outcome_label(recs[0], r), "agree");
     // open-patch with the corner rule: OpenSubdiv agrees, the two without it diverge by it.
-    for (const auto& r : recs[1]["runs"])
-        EXPECT_EQ(run_outcome(recs[1], r), r["reference"] == "opensubdiv" ? "agree" : "diverge (corner-rule)");
-    ASSERT_EQ(recs[2]["runs"].size(), 1u);
-    EXPECT_EQ(run_outcome(recs[2], recs[2]["runs"][0]), "ref-crashed");  // CGAL 5.5, signal 11
-    ASSERT_EQ(recs[3]["runs"].size(), 1u);
-    EXPECT_EQ(run_outcome(recs[3], recs[3]["runs"][0]), "ours-rejected");  // CGAL refuses it too
-    EXPECT_NE(recs[3]["core_error"].get<std::string>().find("shared by 3 triangles"), std::string::npos);
+    for (const RunRecord& r : recs[1].runs)
+        EXPECT_EQ(outcome_label(recs[1], r), r.reference == "opensubdiv" ? "agree" : "diverge (corner-rule)");
+    ASSERT_EQ(recs[2].runs.size(), 1u);
+    EXPECT_EQ(outcome_label(recs[2], recs[2].runs[0]), "ref-crashed");  // CGAL 5.5, signal 11
+    ASSERT_EQ(recs[3].runs.size(), 1u);
+    EXPECT_EQ(outcome_label(recs[3], recs[3].runs[0]), "ours-rejected");  // CGAL refuses it too
+    EXPECT_NE(recs[3].core_error.find("shared by 3 triangles"), std::string::npos);
     // The corner-rule divergence kept its error field for the report.
-    const auto& om = recs[1]["runs"][1];
-    ASSERT_TRUE(om.contains("error_field"));
-    EXPECT_TRUE(fs::exists(d / om["error_field"].get<std::string>()));
-    EXPECT_EQ(recs[1]["worst_vertex"]["valence"], 2);
+    const RunRecord& om = recs[1].runs[1];
+    ASSERT_TRUE(om.detail.contains("error_field"));
+    EXPECT_TRUE(fs::exists(d / om.detail["error_field"].get<std::string>()));
+    EXPECT_EQ(recs[1].detail["worst_vertex"]["valence"], 2);
 }
 
 TEST(Suite, ShardsMergeIntoTheSameResultsAsOneRun) {
@@ -144,7 +146,7 @@ TEST(Suite, ShardsMergeIntoTheSameResultsAsOneRun) {
     const Manifest m = small_suite(d);
     const std::vector<SuiteJob> jobs = expand_jobs(m);
     const nlohmann::json header = {{"tool", "crossdiv suite"}, {"suite", m.name}, {"jobs_total", jobs.size()}};
-    auto noop = [](int, int, const nlohmann::json&) {};
+    auto noop = [](int, int, const CaseRecord&) {};
     write_suite_outputs((d / "whole").string(), header, run_jobs(jobs, 1, (d / "whole").string(), noop));
     for (int i = 1; i <= 2; ++i) {
         nlohmann::json h = header;

@@ -17,31 +17,31 @@ using namespace crossdiv::verification;
 
 namespace {
 
-const CurveCheck* find(const CurveReport& r, const std::string& surface, const std::string& check, const std::string& ref) {
-    for (const CurveCheck& c : r.checks)
-        if (c.curve == surface && c.check == check && c.reference == ref) return &c;
+const Check* find(const CheckReport& r, const std::string& surface, const std::string& check, const std::string& ref) {
+    for (const Check& c : r.checks)
+        if (c.subject == surface && c.check == check && c.reference == ref) return &c;
     return nullptr;
 }
 
 }  // namespace
 
 TEST(SurfaceChecks, StudiesMatchTheExactSurfacesAndBfr) {
-    const CurveReport r = check_surface_studies();
-    for (const CurveCheck& c : r.checks) EXPECT_TRUE(c.pass()) << c.curve << " " << c.check << " " << c.measured << " > " << c.tolerance;
-    const CurveCheck* order = find(r, "sphere (exact circle profile)", "radial-order", "analytic");
+    const CheckReport r = check_surface_studies();
+    for (const Check& c : r.checks) EXPECT_TRUE(c.pass()) << c.subject << " " << c.check << " " << c.measured << " > " << c.tolerance;
+    const Check* order = find(r, "sphere (exact circle profile)", "radial-order", "analytic");
     ASSERT_NE(order, nullptr);
     EXPECT_NEAR(r.tables["sphere"][5]["fitted_order"].get<double>(), 2.0, 0.05);
     if (!is_built("opensubdiv")) return;
-    const CurveCheck* bfr = find(r, "bfr grid 1", "limit-position", "opensubdiv-bfr");
+    const Check* bfr = find(r, "bfr grid 1", "limit-position", "opensubdiv-bfr");
     ASSERT_NE(bfr, nullptr);
     EXPECT_LT(bfr->measured, 1e-14);
 }
 
 TEST(SurfaceChecks, EveryBundledSurfacePasses) {
     for (const std::string& spec : expand_surface_inputs({"surfaces:bundled"})) {
-        const CurveReport r = check_surface_input(spec);
+        const CheckReport r = check_surface_input(spec);
         EXPECT_FALSE(r.checks.empty()) << spec;
-        for (const CurveCheck& c : r.checks) EXPECT_TRUE(c.pass()) << spec << ": " << c.curve << " " << c.check << " " << c.note;
+        for (const Check& c : r.checks) EXPECT_TRUE(c.pass()) << spec << ": " << c.subject << " " << c.check << " " << c.note;
     }
 }
 
@@ -49,14 +49,14 @@ TEST(SurfaceChecks, ClosedChecksCatchAFlippedFaceAndAHole) {
     std::istringstream in(datasets::bundled_surface("pillow").text);
     const std::vector<BezierPatch> patches = read_bez(in, "pillow");
     SurfaceMesh s = tessellate_patches(patches, 4);
-    std::vector<CurveCheck> good, flipped, holed;
+    std::vector<Check> good, flipped, holed;
     check_surface_mesh("pillow", s, true, good);
-    for (const CurveCheck& c : good) EXPECT_TRUE(c.pass()) << c.check;
+    for (const Check& c : good) EXPECT_TRUE(c.pass()) << c.check;
     SurfaceMesh f = s;
     std::swap(f.mesh.triangles[7][1], f.mesh.triangles[7][2]);
     check_surface_mesh("pillow", f, true, flipped);
-    auto failed = [](const std::vector<CurveCheck>& cs, const std::string& check) {
-        for (const CurveCheck& c : cs)
+    auto failed = [](const std::vector<Check>& cs, const std::string& check) {
+        for (const Check& c : cs)
             if (c.check == check && !c.pass()) return true;
         return false;
     };
@@ -85,8 +85,8 @@ TEST(SurfaceChecks, CourseSurfacesAreFoundExactlyWhenTheSharedDataIsThere) {
     const std::vector<std::string> files = expand_surface_inputs({"surfaces:course"});
     EXPECT_EQ(files.size(), present ? 10u : 0u);
     for (const std::string& f : files) {
-        const CurveReport r = check_surface_input(f);
+        const CheckReport r = check_surface_input(f);
         EXPECT_FALSE(r.checks.empty()) << f;
-        for (const CurveCheck& c : r.checks) EXPECT_TRUE(c.pass()) << f << ": " << c.curve << " " << c.check << " " << c.note;
+        for (const Check& c : r.checks) EXPECT_TRUE(c.pass()) << f << ": " << c.subject << " " << c.check << " " << c.note;
     }
 }

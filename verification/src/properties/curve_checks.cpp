@@ -88,14 +88,14 @@ double outside_2d(const std::vector<Vec3>& hull, const Vec3& x) {
 
 class Checker {
 public:
-    explicit Checker(CurveReport& r) : r_(r) {}
+    explicit Checker(CheckReport& r) : r_(r) {}
     void add(const std::string& curve, const std::string& check, const std::string& reference, double measured,
              double tolerance, const std::string& unit, const std::string& note) {
         r_.checks.push_back({curve, check, reference, measured, tolerance, unit, note});
     }
 
 private:
-    CurveReport& r_;
+    CheckReport& r_;
 };
 
 /// de Casteljau vs the Bernstein sum on each segment; endpoints; partition of unity and the
@@ -368,15 +368,15 @@ HelixFrameStudy helix_frame_study() {
     return study;
 }
 
-CurveReport check_curve_file(const CurveFile& file, const std::string& input) {
-    CurveReport report;
+CheckReport check_curve_file(const CurveFile& file, const std::string& input) {
+    CheckReport report;
     report.input = input;
     Checker out(report);
     json tess = json::array(), continuity = json::array(), closure = json::array();
     for (size_t i = 0; i < file.curves.size(); ++i) {
         const CurveRecord& r = file.curves[i];
         const std::string label = r.label(static_cast<int>(i));
-        report.curves.push_back(label);
+        report.subjects.push_back(label);
         const Polyline uniform = tessellate_record(r, {});
         if (r.type == CurveType::Primitive) {
             // Against the exact curve: the samples lie on it, and the tangent is the exact one.
@@ -427,8 +427,8 @@ CurveReport check_curve_file(const CurveFile& file, const std::string& input) {
     return report;
 }
 
-CurveReport check_synthetic() {
-    CurveReport report;
+CheckReport check_synthetic() {
+    CheckReport report;
     report.input = "curves:synthetic";
     Checker out(report);
     std::mt19937 rng(20261122);
@@ -439,7 +439,7 @@ CurveReport check_synthetic() {
         for (Vec3& p : ctrl) p = Vec3(coord(rng), coord(rng), coord(rng));
         const BezierChain c = single_bezier(ctrl);
         const std::string label = "degree " + std::to_string(d);
-        report.curves.push_back(label);
+        report.subjects.push_back(label);
         const size_t first = report.checks.size();
         check_bezier_properties(c, label, false, out);
         json row = {{"degree", d}};
@@ -468,18 +468,6 @@ CurveReport check_synthetic() {
             "double reflection: fitted order " + std::to_string(h.rmf_order) + ", required >= " +
                 std::to_string(tolerances::kDoubleReflectionMinOrder));
     return report;
-}
-
-json to_json(const CurveReport& r) {
-    json runs = json::array();
-    for (const CurveCheck& c : r.checks) {
-        json run = {{"reference", c.reference}, {"check", c.check}, {"curve", c.curve}, {"measured", c.measured},
-                    {"tolerance", c.tolerance}, {"unit", c.unit}, {"verdict", c.pass() ? "agree" : "diverge"},
-                    {"explanation", c.note}};
-        if (!c.pass()) run["divergence_class"] = "unexplained";
-        runs.push_back(run);
-    }
-    return {{"input", r.input}, {"scheme", r.scheme}, {r.scheme == "surfaces" ? "surfaces" : "curves", r.curves}, {"runs", runs}, {"tables", r.tables}};
 }
 
 namespace {

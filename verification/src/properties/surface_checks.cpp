@@ -25,7 +25,7 @@ namespace {
 
 constexpr double kEps = 2.220446049250313e-16;
 
-CurveCheck count_check(const std::string& name, const std::string& check, const std::string& reference, double count,
+Check count_check(const std::string& name, const std::string& check, const std::string& reference, double count,
                        const std::string& note) {
     return {name, check, reference, count, 0, "count", note};
 }
@@ -64,7 +64,7 @@ std::pair<double, double> normal_errors(const SurfaceMesh& s, Normal&& exact) {
 
 }  // namespace
 
-json check_surface_mesh(const std::string& name, const SurfaceMesh& s, bool closed, std::vector<CurveCheck>& checks,
+json check_surface_mesh(const std::string& name, const SurfaceMesh& s, bool closed, std::vector<Check>& checks,
                         const MeshCheckContext& context) {
     const TriMesh& m = s.mesh;
     int errors = 0, contacts = 0;
@@ -149,10 +149,10 @@ std::vector<char> folded_vertices(const CurveFile& file, const SweepSurface& s) 
 
 }  // namespace
 
-CurveReport check_sweep_file(const CurveFile& file, const std::string& input) {
-    CurveReport r;
+CheckReport check_sweep_file(const CurveFile& file, const std::string& input) {
+    CheckReport r;
     r.input = input;
-    r.scheme = "surfaces";
+    r.operation = "surfaces";
     json rows = json::array();
     for (int k = 0; k < static_cast<int>(file.sweeps.size()); ++k) {
         const bool cylinder = file.sweeps[k].kind == SweepRecord::Kind::Cylinder;
@@ -162,7 +162,7 @@ CurveReport check_sweep_file(const CurveFile& file, const std::string& input) {
             o.frames = frames;
             const SweepSurface s = build_sweep(file, k, o);
             const std::string name = cylinder ? s.name + " (" + std::string(to_string(frames)) + ")" : s.name;
-            r.curves.push_back(name);
+            r.subjects.push_back(name);
             MeshCheckContext context;
             if (cylinder) context.folded_vertex = folded_vertices(file, s);
             json row = check_surface_mesh(name, s.surface, s.closed, r.checks, context);
@@ -182,12 +182,12 @@ CurveReport check_sweep_file(const CurveFile& file, const std::string& input) {
     return r;
 }
 
-CurveReport check_patch_file(std::span<const BezierPatch> patches, const std::string& input) {
-    CurveReport r;
+CheckReport check_patch_file(std::span<const BezierPatch> patches, const std::string& input) {
+    CheckReport r;
     r.input = input;
-    r.scheme = "surfaces";
+    r.operation = "surfaces";
     const std::string name = input;
-    r.curves.push_back(name);
+    r.subjects.push_back(name);
     // Second algorithm: the Bernstein tensor sum, relative to each patch's control diagonal.
     double worst = 0, allowed = 0;
     std::vector<Vec3> all;
@@ -240,7 +240,7 @@ Polyline semicircle(int n, bool bezier) {
     return p;
 }
 
-void sphere_study(CurveReport& r) {
+void sphere_study(CheckReport& r) {
     json rows = json::array();
     for (bool bezier : {false, true}) {
         const std::string name = bezier ? "sphere (cubic Bezier profile)" : "sphere (exact circle profile)";
@@ -272,12 +272,12 @@ void sphere_study(CurveReport& r) {
             r.checks.push_back({name, "radial-plateau", "analytic", off, tolerances::kBezierCirclePlateauRelative, "rel",
                                 "finest radial error " + std::to_string(errs.back()) + " against the Bezier circle's 2.7253e-4"});
         }
-        r.curves.push_back(name);
+        r.subjects.push_back(name);
     }
     r.tables["sphere"] = rows;
 }
 
-void torus_study(CurveReport& r) {
+void torus_study(CheckReport& r) {
     constexpr double R = 2, rr = 0.5;
     json rows = json::array();
     for (FrameMethod frames : {FrameMethod::Recursive, FrameMethod::DoubleReflection}) {
@@ -314,14 +314,14 @@ void torus_study(CurveReport& r) {
                             "fitted order " + std::to_string(order) + " must be >= " + std::to_string(tolerances::kSecondOrderMin)});
         r.checks.push_back({name, "vertex-normal", "analytic", vertex_normal, tolerances::kExactNormalRad, "rad",
                             "vertex normals against the analytic torus normal at the finest level"});
-        r.curves.push_back(name);
+        r.subjects.push_back(name);
     }
     r.tables["torus"] = rows;
 }
 
 /// A 6 x 6 control grid (25 quads) with seeded random heights: its 9 inner faces are
 /// regular, and each is the uniform bicubic B-spline patch of the 4 x 4 window around it.
-void bfr_study(const Implementation& bfr, CurveReport& r) {
+void bfr_study(const Implementation& bfr, CheckReport& r) {
     json rows = json::array();
     std::mt19937 rng(20261122);
     std::uniform_real_distribution<double> jitter(-0.5, 0.5);
@@ -366,7 +366,7 @@ void bfr_study(const Implementation& bfr, CurveReport& r) {
                 }
             }
         const std::string name = "bfr grid " + std::to_string(trial + 1);
-        r.curves.push_back(name);
+        r.subjects.push_back(name);
         r.checks.push_back({name, "limit-position", "opensubdiv-bfr", pos, tolerances::kLimitSurfaceAgreement, "rel",
                             std::to_string(faces) + " regular faces x 121 (u, v): bicubic B-spline as Bezier against Bfr"});
         r.checks.push_back({name, "limit-derivatives", "opensubdiv-bfr", der, tolerances::kLimitSurfaceAgreement, "rel",
@@ -380,10 +380,10 @@ void bfr_study(const Implementation& bfr, CurveReport& r) {
 
 }  // namespace
 
-CurveReport check_surface_studies() {
-    CurveReport r;
+CheckReport check_surface_studies() {
+    CheckReport r;
     r.input = "surfaces:synthetic";
-    r.scheme = "surfaces";
+    r.operation = "surfaces";
     sphere_study(r);
     torus_study(r);
     if (const auto refs = references_with(&Capabilities::limit_surface); !refs.empty()) bfr_study(*refs.front(), r);
@@ -409,7 +409,7 @@ std::vector<std::string> expand_surface_inputs(const std::vector<std::string>& s
     return detail::expand_check_inputs(surface_inputs(), specs);
 }
 
-CurveReport check_surface_input(const std::string& spec) {
+CheckReport check_surface_input(const std::string& spec) {
     if (spec == "surfaces:synthetic") return check_surface_studies();
     if (spec.starts_with("surfaces:")) throw InputError("'" + spec + "' is a collection, not one surface input");
     if (spec.starts_with("surface:")) {

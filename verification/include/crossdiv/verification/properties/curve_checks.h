@@ -12,20 +12,9 @@
 #include <vector>
 
 #include "crossdiv/curves/curve_record.h"
+#include "crossdiv/verification/properties/check.h"
 
 namespace crossdiv::verification {
-
-/// One measured check: `measured` must not exceed `tolerance` (both in the unit `unit`).
-struct CurveCheck {
-    std::string curve;      ///< the curve's label, or the study's name
-    std::string check;      ///< what property: "position", "d1", "continuity-c1", ...
-    std::string reference;  ///< what it is compared with: "eigen", "bernstein", "matrix-form", "exact", "analytic"
-    double measured = 0;
-    double tolerance = 0;
-    std::string unit;       ///< "rel" (of the control points' diagonal), "abs", "rad", "order", "points"
-    std::string note;       ///< one line: how it was measured
-    bool pass() const { return measured <= tolerance; }
-};
 
 /// One row of the tessellation study: for a distance tolerance, the edge count and measured
 /// deviation of each mode (uniform: the fewest equal steps per segment that meet tol, found
@@ -59,26 +48,13 @@ struct HelixFrameStudy {
 /// normal is the Frenet normal rotated by -tau * arc length (tau = b / (1 + b^2)) toward B.
 HelixFrameStudy helix_frame_study();
 
-/// All checks of one input.
-struct CurveReport {
-    std::string input;
-    std::string scheme = "curves";  ///< "curves", or "surfaces" for the surface checks (same shape)
-    std::vector<std::string> curves;  ///< labels, in file order
-    std::vector<CurveCheck> checks;
-    nlohmann::json tables = nlohmann::json::object();  ///< "tessellation", "continuity", "degrees", "frames", "closure"
-};
-
 /// Checks every curve of a file.
-CurveReport check_curve_file(const CurveFile& file, const std::string& input);
+CheckReport check_curve_file(const CurveFile& file, const std::string& input);
 
 /// The synthetic studies: de Casteljau vs Bernstein for degrees 1..20, vs Eigen for degrees
 /// 1..10 (position, first and second derivative), endpoint interpolation and partition of
 /// unity, and the helix frame convergence.
-CurveReport check_synthetic();
-
-/// {"input", "scheme": "curves", "curves", "runs": [...], "tables"}: each check as a run with
-/// "verdict" agree/diverge (a failed check is divergence class "unexplained").
-nlohmann::json to_json(const CurveReport& report);
+CheckReport check_synthetic();
 
 /// Curve input names: a .swp or .bzc file, `curve:NAME` (bundled), or the collections
 /// `curves:bundled`, `curves:course` (../shared/data), `curves:synthetic`.

@@ -34,23 +34,23 @@ struct MeshCheckContext {
 /// volume, and CGAL's is_valid_polygon_mesh / is_closed / is_outward_oriented / volume
 /// agreeing. Returns a table row with the measured values.
 nlohmann::json check_surface_mesh(const std::string& name, const SurfaceMesh& surface, bool closed,
-                                  std::vector<CurveCheck>& checks, const MeshCheckContext& context = {});
+                                  std::vector<Check>& checks, const MeshCheckContext& context = {});
 
 /// Every srev and gcyl record of the file (gcyl with the seed's recursive frames and with
 /// RMF), with check_surface_mesh; srev surfaces also get their measured deviation from the
 /// exact surface of revolution in the table.
-CurveReport check_sweep_file(const CurveFile& file, const std::string& input);
+CheckReport check_sweep_file(const CurveFile& file, const std::string& input);
 
 /// A BEZ model: de Casteljau against the Bernstein tensor sum on an 11 x 11 grid per patch,
 /// the largest gap along shared patch boundaries, and check_surface_mesh of the welded
 /// tessellation (closed when it has no boundary edge).
-CurveReport check_patch_file(std::span<const BezierPatch> patches, const std::string& input);
+CheckReport check_patch_file(std::span<const BezierPatch> patches, const std::string& input);
 
 /// The studies: the sphere of revolution (exact circle profile and cubic Bezier profile)
 /// and the torus (circle along circle, recursive and RMF frames) at five doubling
 /// resolutions against the analytic surfaces, and the Catmull-Clark limit of regular grids
 /// against OpenSubdiv's Bfr (when built with OpenSubdiv).
-CurveReport check_surface_studies();
+CheckReport check_surface_studies();
 
 /// Surface input names: a .bez file, a .swp file, `surface:NAME` (bundled), or the
 /// collections `surfaces:bundled`, `surfaces:course` (../shared/data: c3100/swp/{srev,gcyl}
@@ -58,6 +58,6 @@ CurveReport check_surface_studies();
 std::vector<std::string> expand_surface_inputs(const std::vector<std::string>& specs);
 
 /// Runs the checks one input names. @throws InputError / ParseError naming file and line.
-CurveReport check_surface_input(const std::string& spec);
+CheckReport check_surface_input(const std::string& spec);
 
 }  // namespace crossdiv::verification

@@ -1,4 +1,4 @@
-#include "crossdiv/verification/suite/limit_checks.h"
+#include "suite/studies.h"
 
 #include <cmath>
 
@@ -10,44 +10,38 @@
 #include "crossdiv/subdiv/catmull_clark.h"
 #include "crossdiv/verification/comparisons/limit_comparison.h"
 #include "crossdiv/verification/comparisons/scheme_comparison.h"
+#include "crossdiv/verification/harness/tolerances.h"
 
 namespace crossdiv::verification {
 namespace {
 
 using nlohmann::json;
 
-const std::vector<std::string> kStudies = {"limits:catmull-clark", "limits:schemes", "limits:creases",
-                                           "limits:opensubdiv", "limits:spectrum", "limits:convergence"};
-
-json check(const std::string& reference, const std::string& name, const std::string& subject, double measured,
-           double tolerance, const std::string& unit, const std::string& note) {
-    const bool pass = measured <= tolerance;  // NaN fails
-    json run = {{"reference", reference}, {"check", name}, {"curve", subject},
-                {"measured", std::isfinite(measured) ? json(measured) : json(nullptr)},
-                {"tolerance", tolerance}, {"unit", unit}, {"verdict", pass ? "agree" : "diverge"},
-                {"explanation", note}};
-    if (!pass) run["divergence_class"] = "unexplained";
-    return run;
+Check check(const std::string& reference, const std::string& name, const std::string& subject, double measured,
+            double tolerance, const std::string& unit, const std::string& note) {
+    return {subject, name, reference, measured, tolerance, unit, note, std::nullopt};
 }
 
-/// One check record per reference run of a scheme comparison.
-void add_scheme_runs(const SchemeComparison& c, double tolerance, json& runs) {
-    for (const SchemeReferenceRun& r : c.runs) {
-        json run = {{"reference", r.reference},
-                    {"check", std::string(to_string(c.scheme)) + " " + c.rule + " L" + std::to_string(c.levels)},
-                    {"curve", c.input},
-                    {"measured", std::isfinite(r.comparison.max_rel) ? json(r.comparison.max_rel) : json(nullptr)},
-                    {"tolerance", tolerance},
-                    {"unit", "rel"},
-                    {"verdict", to_string(r.verdict)},
-                    {"explanation", r.rule + " rule: " + r.explanation}};
-        if (r.divergence_class != DivergenceClass::None) run["divergence_class"] = to_string(r.divergence_class);
-        runs.push_back(run);
-    }
+/// A check whose outcome was decided by a comparison (a refusal, a classified divergence).
+Check decided(const std::string& reference, const std::string& name, const std::string& subject, double measured,
+              double tolerance, const std::string& unit, const std::string& note, Outcome outcome) {
+    return {subject, name, reference, measured, tolerance, unit, note, outcome};
 }
 
-json catmull_clark_study() {
-    json runs = json::array(), rows = json::array();
+/// One check per reference run of a scheme comparison, with the run's verdict and class.
+void add_scheme_runs(const SchemeComparison& c, double tolerance, std::vector<Check>& checks) {
+    for (const SchemeReferenceRun& r : c.runs)
+        checks.push_back(decided(r.reference, std::string(to_string(c.scheme)) + " " + c.rule + " L" + std::to_string(c.levels),
+                                 c.input, r.comparison.max_rel, tolerance, "rel", r.rule + " rule: " + r.explanation,
+                                 {r.verdict, r.divergence_class}));
+}
+
+}  // namespace
+
+CheckReport catmull_clark_study() {
+    CheckReport out;
+    std::vector<Check>& runs = out.checks;
+    json rows = json::array();
     const std::vector<datasets::BundledMesh> meshes = datasets::catalog_meshes();
     for (CatmullClarkBoundary rule : {CatmullClarkBoundary::EdgeOnly, CatmullClarkBoundary::EdgeAndCorner}) {
         for (const auto& b : meshes) {
@@ -60,14 +54,17 @@ json catmull_clark_study() {
             add_scheme_runs(c, req.tolerance, runs);
         }
     }
-    return {{"runs", runs}, {"tables", {{"catmull_clark", rows}}}};
+    out.tables = {{"catmull_clark", rows}};
+    return out;
 }
 
 /// Doo-Sabin, sqrt3 and the modified Butterfly against their references (sqrt3 to 3 levels,
 /// so that a boundary step and the step after it are both seen), and the Butterfly
 /// properties of both variants.
-json schemes_study() {
-    json runs = json::array(), rows = json::array(), properties = json::array();
+CheckReport schemes_study() {
+    CheckReport out;
+    std::vector<Check>& runs = out.checks;
+    json rows = json::array(), properties = json::array();
     const std::vector<datasets::BundledMesh> meshes = datasets::catalog_meshes();
     for (const auto& [scheme, levels] : {std::pair{Scheme::DooSabin, 2}, {Scheme::Sqrt3, 3}, {Scheme::ModifiedButterfly, 2}})
         for (const auto& b : meshes) {
@@ -98,18 +95,20 @@ json schemes_study() {
                                  std::to_string(p.regular_edges_published) + " of " + std::to_string(p.regular_edges) +
                                      " regular interior edges have exactly 1/2, 1/2, 1/8, 1/8, 4 x -1/16"));
         }
-    return {{"runs", runs}, {"tables", {{"schemes", rows}, {"butterfly_properties", properties}}}};
+    out.tables = {{"schemes", rows}, {"butterfly_properties", properties}};
+    return out;
 }
 
-json opensubdiv_study() {
-    json runs = json::array(), rows = json::array();
+CheckReport limit_positions_study() {
+    CheckReport out;
+    std::vector<Check>& runs = out.checks;
+    json rows = json::array();
     const auto add = [&](const LimitComparison& c) {
         rows.push_back(to_json(c));
         const std::string what = c.scheme + " " + c.rule + " L" + std::to_string(c.levels);
         if (c.verdict == Verdict::RefRejected || c.verdict == Verdict::RefCrashed || c.verdict == Verdict::OursRejected) {
-            runs.push_back({{"reference", "opensubdiv"}, {"check", "limit position " + what}, {"curve", c.input},
-                            {"measured", nullptr}, {"tolerance", tolerances::kLimitAgreementRelative}, {"unit", "rel"},
-                            {"verdict", to_string(c.verdict)}, {"explanation", c.explanation}});
+            runs.push_back(decided("opensubdiv", "limit position " + what, c.input, NAN, tolerances::kLimitAgreementRelative,
+                                   "rel", c.explanation, {c.verdict, DivergenceClass::None}));
             return;
         }
         runs.push_back(check("opensubdiv", "limit position " + what, c.input, c.max_rel_position,
@@ -134,9 +133,8 @@ json opensubdiv_study() {
             const BfrComparison c = compare_bfr_limit(b.mesh, "bundled:" + b.name, scheme);
             bfr_rows.push_back(to_json(c));
             if (!c.error.empty()) {
-                runs.push_back({{"reference", "opensubdiv-bfr"}, {"check", "bfr " + scheme}, {"curve", c.input},
-                                {"measured", nullptr}, {"tolerance", tolerances::kBfrRegularRelative}, {"unit", "rel"},
-                                {"verdict", "ref-rejected"}, {"explanation", c.error}});
+                runs.push_back(decided("opensubdiv-bfr", "bfr " + scheme, c.input, NAN, tolerances::kBfrRegularRelative, "rel",
+                                       c.error, {Verdict::RefRejected, DivergenceClass::None}));
                 continue;
             }
             if (c.regular_faces > 0)
@@ -144,8 +142,11 @@ json opensubdiv_study() {
                                      tolerances::kBfrRegularRelative, "rel",
                                      std::to_string(c.regular_faces) + " regular faces, dyadic points of level 1"));
         }
-    return {{"runs", runs}, {"tables", {{"limit", rows}, {"bfr", bfr_rows}}}};
+    out.tables = {{"limit", rows}, {"bfr", bfr_rows}};
+    return out;
 }
+
+namespace {
 
 /// A refined mesh as {positions, faces} for the report's figures.
 json mesh_json(const PolyMesh& m) {
@@ -155,20 +156,17 @@ json mesh_json(const PolyMesh& m) {
     return {{"positions", pos}, {"faces", faces}};
 }
 
-json creases_study() {
-    json runs = json::array(), rows = json::array();
+}  // namespace
+
+CheckReport creases_study() {
+    CheckReport out;
+    std::vector<Check>& runs = out.checks;
+    json rows = json::array();
     for (const CreaseComparison& c : compare_crease_catalog()) {
         rows.push_back(to_json(c));
-        json run = {{"reference", "opensubdiv"},
-                    {"check", std::string("creases ") + c.scheme + " " + c.method + " L" + std::to_string(c.levels)},
-                    {"curve", c.input},
-                    {"measured", std::isfinite(c.max_rel) ? json(c.max_rel) : json(nullptr)},
-                    {"tolerance", tolerances::kAgreementRelative},
-                    {"unit", "rel"},
-                    {"verdict", to_string(c.verdict)},
-                    {"explanation", c.explanation}};
-        if (c.divergence_class != DivergenceClass::None) run["divergence_class"] = to_string(c.divergence_class);
-        runs.push_back(run);
+        runs.push_back(decided("opensubdiv", std::string("creases ") + c.scheme + " " + c.method + " L" + std::to_string(c.levels),
+                               c.input, c.max_rel, tolerances::kAgreementRelative, "rel", c.explanation,
+                               {c.verdict, c.divergence_class}));
     }
     // The seed's question, as a figure: the cube refined three times, smooth, with its top
     // edges infinitely sharp, and with every edge of sharpness 2.
@@ -180,11 +178,14 @@ json creases_study() {
         m["name"] = key;
         figure.push_back(m);
     }
-    return {{"runs", runs}, {"tables", {{"creases", rows}, {"crease_cube", figure}}}};
+    out.tables = {{"creases", rows}, {"crease_cube", figure}};
+    return out;
 }
 
-json spectrum_study() {
-    json runs = json::array(), rows = json::array();
+CheckReport spectrum_study() {
+    CheckReport out;
+    std::vector<Check>& runs = out.checks;
+    json rows = json::array();
     for (const std::string s : {"loop", "warren", "catmull-clark"})
         for (int n = 3; n <= 20; ++n) {
             const SpectrumRow r = local_spectrum(s, n);
@@ -199,11 +200,14 @@ json spectrum_study() {
                                  "multiplicity " + std::to_string(r.subdominant_multiplicity) + ", next " +
                                      std::to_string(r.next) + ", max |imag| " + std::to_string(r.max_imaginary)));
         }
-    return {{"runs", runs}, {"tables", {{"spectrum", rows}}}};
+    out.tables = {{"spectrum", rows}};
+    return out;
 }
 
-json convergence_study() {
-    json runs = json::array(), rows = json::array();
+CheckReport convergence_study() {
+    CheckReport out;
+    std::vector<Check>& runs = out.checks;
+    json rows = json::array();
     for (const std::string s : {"loop", "warren", "catmull-clark"})
         for (int n = 3; n <= 12; ++n) {
             const ConvergenceRow r = convergence(s, n, 8);
@@ -214,37 +218,8 @@ json convergence_study() {
                                  "fitted " + std::to_string(r.fitted_rate) + " vs vertex eigenvalue " +
                                      std::to_string(r.vertex_rate) + " (subdominant " + std::to_string(r.subdominant) + ")"));
         }
-    return {{"runs", runs}, {"tables", {{"convergence", rows}}}};
-}
-
-}  // namespace
-
-std::vector<std::string> expand_limit_inputs(const std::vector<std::string>& specs) {
-    std::vector<std::string> out;
-    for (const std::string& s : specs) {
-        if (s == "limits:all") {
-            out.insert(out.end(), kStudies.begin(), kStudies.end());
-        } else if (std::find(kStudies.begin(), kStudies.end(), s) != kStudies.end()) {
-            out.push_back(s);
-        } else {
-            throw InputError("'" + s + "' is not a limits study (limits:all, limits:catmull-clark, limits:schemes, limits:creases, limits:opensubdiv, "
-                             "limits:spectrum, limits:convergence)");
-        }
-    }
+    out.tables = {{"convergence", rows}};
     return out;
-}
-
-json check_limits(const std::string& input) {
-    json rec = input == "limits:catmull-clark" ? catmull_clark_study()
-               : input == "limits:schemes"     ? schemes_study()
-               : input == "limits:creases"     ? creases_study()
-               : input == "limits:opensubdiv"  ? opensubdiv_study()
-               : input == "limits:spectrum"    ? spectrum_study()
-               : input == "limits:convergence" ? convergence_study()
-                                               : throw InputError("unknown limits study '" + input + "'");
-    rec["input"] = input;
-    rec["scheme"] = "limits";
-    return rec;
 }
 
 }  // namespace crossdiv::verification

@@ -1,0 +1,227 @@
+"""The report's figures, drawn with matplotlib (Debian's python3-matplotlib) and saved as PNG
+under figures/; each function returns the path relative to the report folder."""
+import json
+import math
+import os
+from collections import defaultdict
+
+import matplotlib
+
+matplotlib.use("Agg")  # no display on a build machine
+import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.colors import ListedColormap  # noqa: E402
+from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
+
+from .records import CATEGORIES, category, entry_label, short_input  # noqa: E402
+
+MAX_ERROR_PICTURES = 12
+
+
+def save(fig, figdir, name):
+    """Lays out, writes figures/NAME and frees the figure; returns the relative path."""
+    fig.tight_layout()
+    fig.savefig(os.path.join(figdir, name), dpi=110)
+    plt.close(fig)
+    return f"figures/{name}"
+
+
+def summary_matrix(mesh_cases, references, figdir):
+    refs = references or sorted({r["reference"] for c in mesh_cases for r in c["runs"]})
+    inputs = list(dict.fromkeys(c["input"] for c in mesh_cases))
+    entries = list(dict.fromkeys(entry_label(c) for c in mesh_cases))
+    columns = [(e, r) for e in entries for r in refs]
+    index = {name: i for i, (name, _) in enumerate(CATEGORIES)}
+    grid = [[index["not run"]] * len(columns) for _ in inputs]
+    for c in mesh_cases:
+        row = inputs.index(c["input"])
+        for r in c["runs"]:
+            if (entry_label(c), r["reference"]) in columns:
+                grid[row][columns.index((entry_label(c), r["reference"]))] = index[category(c, r)]
+        if not c["runs"]:
+            for ref in refs:
+                grid[row][columns.index((entry_label(c), ref))] = index[category(c)]
+    fig, ax = plt.subplots(figsize=(2.5 + 0.32 * len(columns), 1.5 + 0.19 * len(inputs)))
+    cmap = ListedColormap([colour for _, colour in CATEGORIES])
+    ax.imshow(grid, cmap=cmap, vmin=-0.5, vmax=len(CATEGORIES) - 0.5, aspect="auto", interpolation="nearest")
+    ax.set_yticks(range(len(inputs)), [short_input(i) for i in inputs], fontsize=6)
+    ax.set_xticks(range(len(columns)), [f"{r}  |  {e}" for e, r in columns], rotation=90, fontsize=6)
+    for k in range(1, len(entries)):
+        ax.axvline(k * len(refs) - 0.5, color="black", linewidth=0.8)
+    handles = [plt.Rectangle((0, 0), 1, 1, facecolor=colour, edgecolor="black") for _, colour in CATEGORIES]
+    ax.legend(handles, [n for n, _ in CATEGORIES], loc="upper left", bbox_to_anchor=(1.01, 1), fontsize=7)
+    ax.set_title("Outcome per input (rows) and case x reference (columns)", fontsize=9)
+    return save(fig, figdir, "summary_matrix.png")
+
+
+def error_histogram(mesh_cases, figdir):
+    groups = defaultdict(list)
+    for c in mesh_cases:
+        for r in c["runs"]:
+            m = r.get("positions", {}).get("max_rel")
+            if m is not None:
+                groups["agree" if r["verdict"] == "agree" else r.get("divergence_class") or r["verdict"]].append(
+                    math.log10(max(m, 1e-20)))
+    fig, ax = plt.subplots(figsize=(8, 4))
+    ax.hist(list(groups.values()), bins=[x / 2 for x in range(-40, 2)], stacked=True, label=list(groups.keys()))
+    ax.axvline(math.log10(1e-12), color="red", linestyle="--", label="weak tolerance 1e-12")
+    ax.set_xlabel("log10(max distance / bounding-box diagonal); exact agreement drawn at -20")
+    ax.set_ylabel("reference runs")
+    ax.legend(fontsize=7)
+    ax.set_title("Distribution of the largest vertex error per run", fontsize=9)
+    return save(fig, figdir, "error_histogram.png")
+
+
+def error_by_level(mesh_cases, figdir):
+    """Per-level error of every run with two or more levels, coloured by class."""
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    colours, palette = {}, plt.get_cmap("tab10")
+    for c in mesh_cases:
+        for r in c["runs"]:
+            levels = r.get("positions", {}).get("level_max_rel") or []
+            if len(levels) < 2 or any(v is None for v in levels):
+                continue
+            key = r.get("divergence_class") or "agree"
+            colours.setdefault(key, palette(len(colours) % 10))
+            ax.plot(range(1, len(levels) + 1), [max(v, 1e-20) for v in levels], color=colours[key], alpha=0.35,
+                    linewidth=0.8, marker=".")
+    for key, colour in colours.items():
+        ax.plot([], [], color=colour, label=key)
+    ax.set_yscale("log")
+    ax.set_xlabel("subdivision level")
+    ax.set_ylabel("max distance / diagonal (1e-20 = exact)")
+    ax.set_title("Error by level: rounding stays flat near 1e-16, rule differences persist", fontsize=9)
+    ax.legend(fontsize=7)
+    return save(fig, figdir, "convergence.png")
+
+
+def _draw_mesh(ax, pts, faces, **style):
+    ax.add_collection3d(Poly3DCollection([[pts[v] for v in f] for f in faces], **style))
+
+
+def error_pictures(mesh_cases, folder, figdir):
+    """Meshes coloured by per-vertex distance to the reference, one per divergence class,
+    reference and boundary rule (the first few), so a reader sees where two surfaces part."""
+    pictures, seen = [], set()
+    for c in mesh_cases:
+        for r in c["runs"]:
+            if "error_field" not in r or len(pictures) >= MAX_ERROR_PICTURES:
+                continue
+            key = (r.get("divergence_class"), r["reference"], c.get("options", {}).get("boundary"))
+            if key in seen:
+                continue
+            seen.add(key)
+            with open(os.path.join(folder, r["error_field"])) as f:
+                field = json.load(f)
+            pts, faces = field["positions"], field["faces"]
+            dist = [d if d is not None else float("nan") for d in field["distance"]]
+            face_err = [max(dist[v] for v in face) for face in faces]
+            fig = plt.figure(figsize=(5, 4.4))
+            ax = fig.add_subplot(projection="3d")
+            top = max([e for e in face_err if not math.isnan(e)] + [1e-300])
+            coll = Poly3DCollection([[pts[v] for v in face] for face in faces], cmap="inferno",
+                                    edgecolor=(0, 0, 0, 0.15), linewidths=0.1)
+            coll.set_array([0 if math.isnan(e) else e for e in face_err])
+            coll.set_clim(0, top)
+            ax.add_collection3d(coll)
+            xs, ys, zs = zip(*pts)
+            half = max(max(xs) - min(xs), max(ys) - min(ys), max(zs) - min(zs)) / 2 or 1
+            for setter, values in ((ax.set_xlim, xs), (ax.set_ylim, ys), (ax.set_zlim, zs)):
+                mid = (max(values) + min(values)) / 2
+                setter(mid - half, mid + half)
+            ax.set_axis_off()
+            fig.colorbar(coll, ax=ax, shrink=0.6, label="distance to reference")
+            ax.set_title(f"{short_input(c['input'])} vs {r['reference']}, level {field['level']}\n"
+                         f"{r.get('divergence_class')}, {entry_label(c)}", fontsize=8)
+            name = f"error_job{c['job']}_{r['reference']}.png"
+            fig.savefig(os.path.join(figdir, name), dpi=100)
+            plt.close(fig)
+            pictures.append(f"figures/{name}")
+    return pictures
+
+
+def timing(records, figdir):
+    """Log-log time against output size for every implementation."""
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    for impl in dict.fromkeys(r["impl"] for r in records):
+        rows = sorted((r for r in records if r["impl"] == impl), key=lambda r: r["output_faces"])
+        ax.plot([r["output_faces"] for r in rows], [r["median_ms"] for r in rows], marker="o", label=impl)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("output faces")
+    ax.set_ylabel("median time (ms)")
+    ax.set_title("Loop subdivision time against output size (single thread)", fontsize=9)
+    ax.legend()
+    ax.grid(True, which="both", alpha=0.3)
+    return save(fig, figdir, "timing.png")
+
+
+def surface_convergence(tables, figdir):
+    fig, ax = plt.subplots(figsize=(5, 3.6))
+    for key, err in (("sphere", "radial_error"), ("torus", "distance_error")):
+        series = {}
+        for r in tables.get(key, []):
+            if err in r:
+                series.setdefault(r["surface"], []).append((r["faces"], r[err]))
+        for name, pts in series.items():
+            ax.loglog([p[0] for p in pts], [p[1] for p in pts], marker="o", label=name)
+    ax.set_xlabel("faces")
+    ax.set_ylabel("max distance to the exact surface")
+    ax.set_title("Swept surfaces against exact ones")
+    ax.legend(fontsize=7)
+    return save(fig, figdir, "surface_convergence.png")
+
+
+def crease_cube(cubes, figdir):
+    fig = plt.figure(figsize=(3.2 * len(cubes), 3.4))
+    for i, m in enumerate(cubes):
+        ax = fig.add_subplot(1, len(cubes), i + 1, projection="3d")
+        _draw_mesh(ax, m["positions"], m["faces"], facecolor="#9ecae1", edgecolor="#3182bd", linewidths=0.2)
+        ax.set_xlim(-1, 1)
+        ax.set_ylim(-1, 1)
+        ax.set_zlim(-1, 1)
+        ax.set_box_aspect((1, 1, 1))
+        ax.view_init(elev=25, azim=-60)
+        ax.set_axis_off()
+        ax.set_title(m["name"], fontsize=8)
+    fig.suptitle("The cube after 3 Catmull-Clark levels: what creases keep", fontsize=9)
+    return save(fig, figdir, "crease_cube.png")
+
+
+def limit_convergence(rows, figdir):
+    fig, ax = plt.subplots(figsize=(5, 3.6))
+    for r in rows:
+        if r["valence"] in (3, 5, 8, 12):
+            ax.semilogy(range(1, len(r["distance"]) + 1), r["distance"], marker=".", label=f"{r['scheme']} n={r['valence']}")
+    ax.set_xlabel("level k")
+    ax.set_ylabel("|v_k - v_limit| / diagonal")
+    ax.set_title("Convergence of an extraordinary vertex")
+    ax.legend(fontsize=6)
+    return save(fig, figdir, "limit_convergence.png")
+
+
+def curve_frames(fr, figdir):
+    fig, ax = plt.subplots(figsize=(5, 3.6))
+    h = [r["h"] for r in fr["rows"]]
+    ax.loglog(h, [r["recursive_error_rad"] for r in fr["rows"]], marker="o",
+              label=f"recursive (seed), order {fr['recursive_order']:.2f}")
+    ax.loglog(h, [r["rmf_error_rad"] for r in fr["rows"]], marker="s", label=f"double reflection, order {fr['rmf_order']:.2f}")
+    ax.set_xlabel("parameter step h")
+    ax.set_ylabel("max angle to exact RMF (rad)")
+    ax.set_title("Helix frames")
+    ax.legend(fontsize=8)
+    return save(fig, figdir, "curve_frames.png")
+
+
+def curve_degrees(d, figdir):
+    fig, ax = plt.subplots(figsize=(5, 3.6))
+    deg = [r["degree"] for r in d]
+    ax.semilogy(deg, [max(r.get("bernstein-sum", 0), 1e-18) for r in d], marker="o", label="vs Bernstein sum")
+    ed = [r for r in d if "eigen_position" in r]
+    for key, name in (("eigen_position", "vs Eigen, position"), ("eigen_d1", "vs Eigen, d1"), ("eigen_d2", "vs Eigen, d2")):
+        ax.semilogy([r["degree"] for r in ed], [max(r[key], 1e-18) for r in ed], marker=".", label=name)
+    ax.semilogy(deg, [r["bound_position"] for r in d], "k--", label="position tolerance")
+    ax.set_xlabel("degree")
+    ax.set_ylabel("max error / control diagonal")
+    ax.set_title("de Casteljau against two other algorithms")
+    ax.legend(fontsize=7)
+    return save(fig, figdir, "curve_degrees.png")

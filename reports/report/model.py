@@ -1,0 +1,96 @@
+"""The section model of the report, and its two renderings.
+
+Every table, figure and paragraph is built once, as data; render_markdown and render_html
+turn the same list of sections into report.md and index.html, so the two cannot drift.
+"""
+import html
+from dataclasses import dataclass, field
+
+
+@dataclass
+class Text:
+    """A paragraph (Markdown inline code in backquotes is kept; HTML shows it as code)."""
+    text: str
+
+
+@dataclass
+class Table:
+    header: list
+    rows: list
+
+
+@dataclass
+class Figure:
+    path: str  # relative to the report folder, e.g. "figures/timing.png"
+    alt: str
+
+
+@dataclass
+class Section:
+    title: str
+    blocks: list = field(default_factory=list)
+
+    def add(self, *blocks):
+        self.blocks.extend(b for b in blocks if b is not None)
+        return self
+
+
+def md_cell(value):
+    """A Markdown table cell that never breaks its row: pipes escaped, line breaks joined."""
+    return str(value).replace("\\", "\\\\").replace("|", "\\|").replace("\r", " ").replace("\n", " ")
+
+
+def md_table(table):
+    lines = ["| " + " | ".join(md_cell(h) for h in table.header) + " |", "|" + "---|" * len(table.header)]
+    lines += ["| " + " | ".join(md_cell(v) for v in row) + " |" for row in table.rows]
+    return lines
+
+
+def render_markdown(title, intro, sections):
+    """report.md: a title, intro paragraphs, then each section with its blocks."""
+    out = [f"# {title}", ""]
+    for line in intro:
+        out += [line]
+    out.append("")
+    for s in sections:
+        out += [f"## {s.title}", ""]
+        for b in s.blocks:
+            if isinstance(b, Text):
+                out += [b.text, ""]
+            elif isinstance(b, Table):
+                out += md_table(b) + [""]
+            elif isinstance(b, Figure):
+                out += [f"![{b.alt}]({b.path})", ""]
+    return "\n".join(out).rstrip("\n") + "\n"
+
+
+def _inline_html(text):
+    """Escapes text and shows `code` spans as <code>."""
+    parts = html.escape(text).split("`")
+    return "".join(f"<code>{p}</code>" if i % 2 else p for i, p in enumerate(parts))
+
+
+def html_table(table):
+    out = ["<table><tr>" + "".join(f"<th>{html.escape(str(h))}</th>" for h in table.header) + "</tr>"]
+    out += ["<tr>" + "".join(f"<td>{html.escape(str(v))}</td>" for v in row) + "</tr>" for row in table.rows]
+    return "\n".join(out + ["</table>"])
+
+
+STYLE = ("body{font-family:sans-serif;max-width:1400px;margin:auto}table{border-collapse:collapse;font-size:12px}"
+         "td,th{border:1px solid #ccc;padding:2px 6px;text-align:left}img{max-width:100%}")
+
+
+def render_html(title, intro, sections):
+    """index.html: the same sections as report.md, for a browser."""
+    body = [f"<h1>{html.escape(title)}</h1>"] + [f"<p>{_inline_html(line.lstrip('- '))}</p>" for line in intro]
+    for s in sections:
+        body.append(f"<h2>{html.escape(s.title)}</h2>")
+        for b in s.blocks:
+            if isinstance(b, Text):
+                body.append(f"<p>{_inline_html(b.text)}</p>")
+            elif isinstance(b, Table):
+                body.append(html_table(b))
+            elif isinstance(b, Figure):
+                body.append(f"<img src='{html.escape(b.path)}' alt='{html.escape(b.alt)}'>")
+    return (f"<!DOCTYPE html><html><head><meta charset='utf-8'><title>{html.escape(title)}</title>"
+            f"<style>{STYLE}</style></head><body>\n" + "\n".join(body) + "\n</body></html>\n")

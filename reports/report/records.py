@@ -1,0 +1,73 @@
+"""Reading results.json: which cases belong to which section, and small formatters.
+
+The outcome of every run is written by crossdiv itself (run["outcome"], case["outcome"] for a
+case without runs); nothing here derives it again.
+"""
+import math
+import os
+
+# The study operations of the suite (verification/src/suite/operations.cpp).
+STUDIES = ("catmull-clark", "schemes", "creases", "limit-positions", "spectrum", "convergence")
+
+# Outcome categories of the summary matrix, in legend order, with their colours.
+CATEGORIES = [
+    ("agree", "#4caf50"),
+    ("diverge (classified)", "#ffb300"),
+    ("diverge (unexplained)", "#e53935"),
+    ("ref-crashed", "#212121"),
+    ("ref-rejected", "#9e9e9e"),
+    ("ours-rejected", "#42a5f5"),
+    ("ours-failed", "#8e24aa"),
+    ("not run", "#ffffff"),
+]
+
+
+# The results.json this script reads (verification/include/crossdiv/verification/suite/report.h).
+SCHEMA_VERSION = 3
+
+
+def outcome(case, run=None):
+    """The outcome crossdiv counted the run under (or the case, when it has no runs)."""
+    return (run or case)["outcome"]
+
+
+def category(case, run=None):
+    """The summary matrix's category of an outcome."""
+    o = outcome(case, run)
+    if o == "diverge (unexplained)":
+        return o
+    if o.startswith("diverge"):
+        return "diverge (classified)"
+    if o.startswith("ours-rejected"):
+        return "ours-rejected"
+    if o not in dict(CATEGORIES):
+        raise ValueError(f"unknown outcome '{o}' in {case.get('id')}")
+    return o
+
+
+def is_mesh_case(case):
+    return case.get("operation") == "loop"
+
+
+def split_cases(cases):
+    """(mesh comparisons, curve checks, surface checks, studies) of a results.json."""
+    pick = lambda ops: [c for c in cases if c.get("operation") in ops]  # noqa: E731
+    return pick(("loop",)), pick(("curves",)), pick(("surfaces",)), pick(STUDIES)
+
+
+def entry_label(case):
+    """"loop loop/edge-only L3 weak": a Loop case's rules, for figure columns."""
+    o = case.get("options", {})
+    return f"{case.get('operation', '')} {o.get('weights', '')}/{o.get('boundary', '')} L{case.get('levels', '')} {case.get('tier', '')}"
+
+
+def short_input(name):
+    return os.path.splitext(os.path.basename(name))[0] if "/" in name else name
+
+
+def fmt(x, spec=".3g"):
+    return "-" if x is None or (isinstance(x, float) and math.isnan(x)) else format(x, spec)
+
+
+def vec(v):
+    return "-" if v is None else "(" + ", ".join(f"{c:.9g}" for c in v) + ")"

@@ -1,0 +1,268 @@
+"""The report's sections, each built once from results.json (and bench.json) as data."""
+from collections import Counter
+
+from . import figures
+from .model import Figure, Section, Table, Text
+from .records import fmt, outcome, vec
+
+
+def outcomes_section(summary):
+    return Section("Outcomes").add(
+        Table(["outcome", "runs"], sorted(summary["outcomes"].items())),
+        Text("Failures (JUnit) are `ours-failed` and `diverge (unexplained)`; every other outcome is a measured, "
+             "classified difference."))
+
+
+def catalogue_rows(mesh_cases, check_cases):
+    """Every run that is not plain agreement, with the case's worst vertex for comparisons."""
+    rows = []
+    for c in mesh_cases:
+        w = c.get("worst_vertex")
+        for r in c["runs"]:
+            if r["verdict"] == "agree":
+                continue
+            diverges = w and r["verdict"] == "diverge"
+            values = "-"
+            if diverges:
+                values = f"core {vec(w['core'])}; " + "; ".join(f"{n} {vec(p)}" for n, p in sorted(w["references"].items()))
+            rows.append({"case": c["id"], "reference": r["reference"], "outcome": outcome(c, r),
+                         "class": r.get("divergence_class") or r["verdict"],
+                         "max_rel": r.get("positions", {}).get("max_rel"),
+                         "worst": f"v{w['ours_index']} valence {w['valence']} {'boundary' if w['boundary'] else 'interior'}"
+                         if diverges else "-", "values": values, "explanation": r.get("explanation", "")})
+    for c in check_cases:
+        for r in c["runs"]:
+            if r["verdict"] == "agree":
+                continue
+            rows.append({"case": c["id"], "reference": r["reference"], "outcome": outcome(c, r),
+                         "class": r.get("divergence_class") or r["verdict"], "max_rel": r["measured"],
+                         "worst": r["subject"],
+                         "values": f"{r['check']}: {fmt(r['measured'])} > {fmt(r['tolerance'])} {r['unit']}",
+                         "explanation": r.get("explanation", "")})
+    for c in mesh_cases + check_cases:
+        if not c["runs"]:
+            rows.append({"case": c["id"], "reference": "core", "outcome": outcome(c), "class": outcome(c), "max_rel": None,
+                         "worst": "-", "values": "-", "explanation": c.get("core_error", "")})
+    return rows
+
+
+def catalogue_section(rows):
+    counts = Counter((row["class"], row["reference"]) for row in rows)
+    return Section("Divergence catalogue").add(
+        Text("Classes by reference:"),
+        Table(["class", "reference", "runs"], [(c, r, n) for (c, r), n in sorted(counts.items())]),
+        Text("Every run that is not agreement, with the case's worst vertex (the vertex where some reference parts "
+             "most from core) and each implementation's value there:"),
+        Table(["case", "reference", "outcome", "max rel", "worst vertex", "values at the worst vertex", "explanation"],
+              [(r["case"], r["reference"], r["outcome"], fmt(r["max_rel"]), r["worst"], r["values"], r["explanation"])
+               for r in rows]))
+
+
+def mesh_sections(results, mesh_cases, folder, figdir):
+    """The summary matrix, the error figures and the pictures of where surfaces part."""
+    if not mesh_cases:
+        return [], []
+    refs = [r["name"] for r in results.get("references", [])]
+    matrix = Section("Summary matrix").add(Figure(figures.summary_matrix(mesh_cases, refs, figdir), "summary"))
+    errors = Section("Error by level and its distribution").add(
+        Figure(figures.error_by_level(mesh_cases, figdir), "convergence"),
+        Figure(figures.error_histogram(mesh_cases, figdir), "histogram"))
+    pictures = figures.error_pictures(mesh_cases, folder, figdir)
+    parts = Section("Where surfaces part")
+    parts.add(*[Figure(p, p.split("/")[-1]) for p in pictures] or [Text("No divergence small enough to draw.")])
+    return [matrix], [errors, parts]
+
+
+def curve_section(curve_cases, bench, figdir):
+    if not curve_cases and not (bench and bench.get("curves")):
+        return None
+    s = Section("Curves")
+    rows = []
+    for c in curve_cases:
+        runs = c["runs"]
+        failed = [r for r in runs if r["verdict"] != "agree"]
+        worst = max(runs, key=lambda r: (r["measured"] / r["tolerance"]) if r["tolerance"] else
+                    (0 if r["measured"] == 0 else float("inf")), default=None)
+        eigen = max((r["measured"] for r in runs if r["reference"] == "eigen"), default=None)
+        rows.append((c["input"].split("/")[-1].rsplit(".", 1)[0] if "/" in c["input"] else c["input"],
+                     len(c.get("subjects", [])), len(runs), len(failed), fmt(eigen),
+                     f"{worst['subject']} {worst['check']} ({fmt(worst['measured'])} of {fmt(worst['tolerance'])} "
+                     f"{worst['unit']})" if worst else c.get("core_error", "-")))
+    if rows:
+        s.add(Text("Each check is measured <= tolerance (tolerances.h names and justifies each); Eigen is "
+                   "`unsupported/Eigen/Splines` (Cox-de Boor), compared in position, first and second derivative."),
+              Table(["input", "curves", "checks", "failed", "Eigen max rel", "closest to its tolerance"], rows))
+    for c in curve_cases:
+        t = c.get("tables", {})
+        if "frames" in t:
+            fr = t["frames"]
+            s.add(Text(f"Frames on a helix ({fr['curve']}) against its exact rotation-minimizing frame:"),
+                  Figure(figures.curve_frames(fr, figdir), "frames"),
+                  Table(["steps", "h", "recursive (rad)", "double reflection (rad)"],
+                        [(r["steps"], fmt(r["h"]), fmt(r["recursive_error_rad"]), fmt(r["rmf_error_rad"])) for r in fr["rows"]]))
+        if "degrees" in t:
+            s.add(Figure(figures.curve_degrees(t["degrees"], figdir), "degrees"))
+    tess = (bench or {}).get("curves") or [row for c in curve_cases for row in c.get("tables", {}).get("tessellation", [])]
+    if tess:
+        s.add(Text("Tessellation: edges each mode needs for a distance tolerance, with the measured maximum deviation "
+                   "(uniform: fewest equal steps per segment found by measuring; angle: largest angle tolerance that "
+                   "meets it; distance: the guaranteed adaptive mode; Wang: the guaranteed uniform count per segment)" +
+                   (" from `crossdiv bench`" if (bench or {}).get("curves") else "") + ":"),
+              Table(["curve", "tol", "uniform edges (dev)", "angle edges (dev, tol deg)", "distance edges (dev)",
+                     "Wang edges (dev)"],
+                    [(r["curve"], fmt(r["tol"]), f"{r['uniform_edges']} ({fmt(r['uniform_dev'])})",
+                      f"{r['angle_edges']} ({fmt(r['angle_dev'])}, {fmt(r['angle_tol_deg'])})" if r["angle_reached"]
+                      else f"{r['angle_edges']} (cap: {fmt(r['angle_dev'])})",
+                      f"{r['distance_edges']} ({fmt(r['distance_dev'])})", f"{r['wang_edges']} ({fmt(r['wang_dev'])})")
+                     for r in tess]))
+    closure = [row for c in curve_cases for row in c.get("tables", {}).get("closure", [])]
+    if closure:
+        s.add(Text("Frame mismatch after one lap of each closed curve (before and after distributing it):"),
+              Table(["curve", "method", "mismatch (deg)", "after (deg)"],
+                    [(r["curve"], r["method"], fmt(r["mismatch_deg"]), fmt(r["after_distribution_deg"])) for r in closure]))
+    return s
+
+
+def surface_section(surface_cases, bench, figdir):
+    sweep = (bench or {}).get("adaptive_sweep")
+    if not surface_cases and not sweep:
+        return None
+    s = Section("Surfaces")
+    built = [r for c in surface_cases for r in c.get("tables", {}).get("surfaces", [])]
+    if built:
+        s.add(Text("Every surface built; closed ones must be watertight, manifold and outward (our checks and CGAL's)."),
+              Table(["surface", "kind", "faces", "closed", "boundary edges", "signed volume", "CGAL outward", "fold faces"],
+                    [(r["surface"], r.get("kind", ""), r["faces"], "yes" if r["closed"] else "no", r["boundary_edges"],
+                      fmt(r["signed_volume"]), ("yes" if r["cgal"]["outward"] else "NO") if "cgal" in r else "-",
+                      r.get("fold", {}).get("faces", 0)) for r in built]))
+    for c in surface_cases:
+        t = c.get("tables", {})
+        if "sphere" in t or "torus" in t:
+            s.add(Figure(figures.surface_convergence(t, figdir), "surfaces against exact surfaces"),
+                  Table(["surface", "fitted order"], [(r["surface"], fmt(r["fitted_order"])) for key in ("sphere", "torus")
+                                                      for r in t.get(key, []) if "fitted_order" in r]))
+        if "bfr" in t:
+            s.add(Text("Catmull-Clark limit of regular grids: our bicubic Bezier form against OpenSubdiv's Bfr."),
+                  Table(["grid", "faces", "regular (Bfr)", "samples", "position rel", "derivatives rel"],
+                        [(r["grid"], r["faces"], r["regular"], r["samples"], fmt(r["max_position_rel"]),
+                          fmt(r["max_derivative_rel"])) for r in t["bfr"]]))
+    if sweep:
+        u, a, seed = sweep["uniform"], sweep["adaptive"], sweep["seed"]
+        s.add(Text(f"Adaptive sweep ({sweep['input']}): uniform / adaptive faces {sweep['ratio']:.2f}, the seed's "
+                   f"{seed['uniform_faces']} / {seed['adaptive_faces']} = {seed['ratio']:.2f}."),
+              Table(["wineglass", "faces", "slices", "profile samples", "deviation"],
+                    [("uniform (the record's steps)", u["faces"], u["slices"], u["profile_samples"], fmt(u["deviation"])),
+                     ("adaptive, equal measured deviation", a["faces"], a["slices"], a["profile_samples"],
+                      fmt(a["deviation"]))]))
+    return s
+
+
+def studies_section(study_cases, figdir):
+    """Schemes and limit behaviour, from the study operations' tables."""
+    if not study_cases:
+        return None
+    tables = {}
+    for c in study_cases:
+        for k, v in c.get("tables", {}).items():
+            tables.setdefault(k, []).extend(v)
+    s = Section("Schemes and limit behaviour")
+    comparisons = tables.get("catmull_clark", []) + tables.get("schemes", [])
+    if comparisons:
+        verdicts = Counter()
+        for comp in comparisons:
+            for r in comp["runs"]:
+                verdicts[(comp["scheme"], comp["levels"], comp["rule"], r["reference"], r["rule"], r["verdict"],
+                          r.get("divergence_class") or "")] += 1
+        s.add(Text("Every polygon scheme against every reference that has it, on the bundled and polygon meshes "
+                   "(a divergence's class is measured: core re-run with the reference's rule agrees)."),
+              Table(["scheme", "levels", "requested rule", "reference", "its rule", "verdict", "class", "inputs"],
+                    [k + (n,) for k, n in sorted(verdicts.items())]))
+    if tables.get("butterfly_properties"):
+        rows = []
+        for scheme in sorted({r["scheme"] for r in tables["butterfly_properties"]}):
+            sel = [r for r in tables["butterfly_properties"] if r["scheme"] == scheme]
+            rows.append((scheme, len(sel), fmt(max(r["max_interpolation_move"] for r in sel)),
+                         fmt(max(r["max_plane_residual"] for r in sel)),
+                         f'{sum(r["regular_edges_published"] for r in sel)} / {sum(r["regular_edges"] for r in sel)}'))
+        s.add(Text("Butterfly properties, 2 levels on the bundled triangle meshes (the classic scheme has no reference "
+                   "library):"),
+              Table(["scheme", "meshes", "max move of an old vertex", "max plane residual (rel)",
+                     "regular edges with the published stencil"], rows))
+    if tables.get("limit"):
+        rows = []
+        for key in sorted({(r["scheme"], r["rule"], r["levels"]) for r in tables["limit"]}):
+            sel = [r for r in tables["limit"] if (r["scheme"], r["rule"], r["levels"]) == key]
+            pos = [r["max_rel_position"] for r in sel if r["max_rel_position"] is not None]
+            ang = [r["max_normal_angle"] for r in sel if r["max_normal_angle"] is not None]
+            rows.append(key + (len(sel), len([r for r in sel if r["verdict"] == "agree"]), fmt(max(pos) if pos else None),
+                               fmt(max(ang) if ang else None)))
+        s.add(Text("Limit positions and interior limit normals against OpenSubdiv's `PrimvarRefiner::Limit`:"),
+              Table(["scheme", "rule", "levels", "meshes", "agree", "max position rel", "max normal angle (rad)"], rows))
+    if tables.get("bfr"):
+        rows = []
+        for scheme in sorted({r["scheme"] for r in tables["bfr"]}):
+            sel = [r for r in tables["bfr"] if r["scheme"] == scheme and not r["error"]]
+            rows.append((scheme, len(sel), sum(r["regular_faces"] for r in sel), sum(r["irregular_faces"] for r in sel),
+                         fmt(max(r["max_regular"] for r in sel)), fmt(max(r["max_irregular_corner"] for r in sel)),
+                         fmt(max(r["max_irregular_inner"] for r in sel))))
+        s.add(Text("OpenSubdiv's Bfr at (u, v) against core's exact limit at the dyadic points of level 1 (corners, edge "
+                   "midpoints, quad centres), relative to the diagonal:"),
+              Table(["scheme", "meshes", "regular faces", "irregular faces", "max on regular", "max at irregular corners",
+                     "max at irregular midpoints/centres"], rows))
+    if tables.get("creases"):
+        rows = []
+        for key in sorted({(r["scheme"], r["method"]) for r in tables["creases"]}):
+            sel = [r for r in tables["creases"] if (r["scheme"], r["method"]) == key]
+            dist = [d for r in sel for d in r["max_rel_per_level"] if d is not None]
+            effect = [r["effect_of_tags"] for r in sel if r["effect_of_tags"] is not None]
+            rows.append(key + (len(sel), len([r for r in sel if r["verdict"] == "agree"]), fmt(max(dist) if dist else None),
+                               fmt(min(effect) if effect else None), fmt(max(effect) if effect else None)))
+        s.add(Text("Creases (OpenSubdiv's semi-sharp rules) against OpenSubdiv, the only reference with crease rules, "
+                   "3 levels on the crease-tagged meshes; the last columns say how far the tags move the surface, so "
+                   "the agreement tests the sharp rules:"),
+              Table(["scheme", "decay", "meshes", "agree", "max rel (any level)", "tags move the surface by, min", "max"],
+                    rows))
+    if tables.get("crease_cube"):
+        s.add(Text("What happens to sharp features (the seed's question): the cube refined three times without tags "
+                   "(it shrinks to a rounded blob), with its top edges infinitely sharp (the top face stays flat inside a "
+                   "sharp rim; the rim is the cubic B-spline of the four top corners, since a vertex with two sharp edges "
+                   "is a crease, not a corner -- a corner tag would keep them), and with every edge of sharpness 2 (two "
+                   "sharp levels, then smooth: a box with rounded edges)."),
+              Figure(figures.crease_cube(tables["crease_cube"], figdir), "crease cube"))
+    if tables.get("spectrum"):
+        s.add(Text("Eigen table: the local subdivision matrix of an interior vertex of valence n, taken from core's S, "
+                   "against the published spectrum."),
+              Table(["scheme", "n", "lambda_1", "multiplicity", "next", "vertex eigenvalue", "|core - closed form|", "regular"],
+                    [(r["scheme"], r["valence"], fmt(r["subdominant"], ".6f"), r["subdominant_multiplicity"],
+                      fmt(r["next"], ".6f"), fmt(r["vertex_rate"], ".6f"), fmt(r["max_difference"]),
+                      "yes" if r["regular_characteristic_map"] else "NO") for r in tables["spectrum"]]))
+    if tables.get("convergence"):
+        s.add(Text("Convergence table: the centre of a fan refined k = 1..8 times against its limit position. A vertex "
+                   "converges at the largest rotation-invariant eigenvalue below 1 (the subdominant pair is not rotation "
+                   "invariant and vanishes at the centre)."),
+              Figure(figures.limit_convergence(tables["convergence"], figdir), "convergence"),
+              Table(["scheme", "n", "d_1", "d_8", "fitted rate", "vertex eigenvalue", "lambda_1"],
+                    [(r["scheme"], r["valence"], fmt(r["distance"][0]), fmt(r["distance"][-1]), fmt(r["fitted_rate"], ".6f"),
+                      fmt(r["vertex_rate"], ".6f"), fmt(r["subdominant"], ".6f")) for r in tables["convergence"]]))
+    return s
+
+
+def timing_section(bench, figdir):
+    s = Section("Timing")
+    records = (bench or {}).get("records", [])
+    if not records:
+        return s.add(Text("No bench.json in this folder: run `crossdiv bench --out DIR` to add the timing section."))
+    core = {(r["input"], r["levels"]): r["median_ms"] for r in records if r["impl"] == "core"}
+    s.add(Text(f"`crossdiv bench`: median of {bench.get('repeats', '?')} runs, single thread, ratio = time / core time on "
+               f"the same input (above 1: slower than core). {bench.get('note', '')}"),
+          Figure(figures.timing(records, figdir), "timing"),
+          Table(["input", "levels", "impl", "input faces", "output faces", "median ms", "ratio to core", "peak RSS MB"],
+                [(r["input"], r["levels"], r["impl"], r["input_faces"], r["output_faces"], fmt(r["median_ms"], ".2f"),
+                  fmt(r["median_ms"] / core[(r["input"], r["levels"])], ".2f") if core.get((r["input"], r["levels"])) else "-",
+                  fmt(r.get("peak_rss_mb"), ".0f")) for r in records]))
+    if bench.get("goal"):
+        g = bench["goal"]
+        s.add(Text(f"Goal: core at least {g['target_ratio']}x faster than the fastest reference on {g['input']} at "
+                   f"{g['levels']} levels: measured {fmt(g['ratio'], '.2f')}x (fastest reference "
+                   f"{g['fastest_reference']}) - {'met' if g['met'] else 'NOT met'}."))
+    return s

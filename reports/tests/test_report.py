@@ -1,0 +1,114 @@
+"""Tests of the report: the section model renders the same content to Markdown and HTML, a
+table cell never breaks its row, and a small results.json becomes a report whose every
+section, table and figure is there."""
+import json
+import os
+import re
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+
+import make_report  # noqa: E402
+from report.model import Figure, Section, Table, Text, md_cell, render_html, render_markdown  # noqa: E402
+from report.records import category, split_cases  # noqa: E402
+
+
+def cells(line):
+    """The cells of a Markdown table line, split at unescaped pipes."""
+    return re.split(r"(?<!\\)\|", line.strip())[1:-1]
+
+
+def tables_of(markdown):
+    """Each Markdown table as a list of its lines' cell lists."""
+    tables, current = [], None
+    for line in markdown.split("\n"):
+        if line.startswith("|"):
+            current = current if current is not None else []
+            current.append(cells(line))
+        elif current is not None:
+            tables.append(current)
+            current = None
+    return tables + ([current] if current else [])
+
+
+def test_a_cell_with_a_pipe_or_a_newline_stays_in_its_row():
+    assert md_cell("edgecase:valence-2 | loop") == "edgecase:valence-2 \\| loop"
+    assert md_cell("two\nlines") == "two lines"
+    md = render_markdown("t", [], [Section("s").add(Table(["a", "b"], [("x | y", "z\nw")]))])
+    [table] = tables_of(md)
+    assert [len(row) for row in table] == [2, 2, 2]
+    assert table[2] == [" x \\| y ", " z w "]
+
+
+def test_markdown_and_html_carry_the_same_blocks():
+    body = [Section("One").add(Text("a `code` span"), Table(["h"], [(1,), (2,)]), Figure("figures/f.png", "f")),
+            Section("Two").add(Table(["p", "q"], [("<b>", "&")]))]
+    md, page = render_markdown("T", ["- intro"], body), render_html("T", ["- intro"], body)
+    assert md.count("## ") == page.count("<h2>") == 2
+    assert len(tables_of(md)) == page.count("<table>") == 2
+    assert page.count("<tr>") == sum(len(t) - 1 for t in tables_of(md))  # the Markdown rule line has no <tr>
+    assert "![f](figures/f.png)" in md and "src='figures/f.png'" in page
+    assert "<code>code</code>" in page and "&lt;b&gt;" in page and "&amp;" in page
+
+
+def results_fixture():
+    """One Loop case with an agreement and a classified divergence (its id has a '|'), a case
+    core refused, a curve check that fails, and a study; outcomes as crossdiv writes them."""
+    worst = {"ours_index": 3, "valence": 4, "boundary": True, "core": [0, 0, 0], "references": {"cgal": [0, 0, 1e-3]}}
+    loop = {"input": "bundled:open-patch", "operation": "loop", "scheme": "loop", "job": 0,
+            "id": "bundled:open-patch | loop weights=loop boundary=edge-and-corner L2 weak tol=1e-12",
+            "options": {"weights": "loop", "boundary": "edge-and-corner"}, "levels": 2, "tier": "weak",
+            "tolerance_rel": 1e-12, "worst_vertex": worst, "runs": [
+                {"reference": "opensubdiv", "verdict": "agree", "divergence_class": "", "outcome": "agree",
+                 "explanation": "max relative error 1e-16", "positions": {"max_rel": 1e-16, "level_max_rel": [1e-16, 1e-16]}},
+                {"reference": "cgal", "verdict": "diverge", "divergence_class": "corner-rule",
+                 "outcome": "diverge (corner-rule)", "explanation": "cgal has no edge-and-corner | measured",
+                 "positions": {"max_rel": 1e-3, "level_max_rel": [1e-3, 1e-3]}}]}
+    refused = {"input": "edgecase:bowtie", "operation": "loop", "job": 1, "id": "edgecase:bowtie | loop",
+               "options": {"weights": "loop", "boundary": "edge-only"}, "levels": 1, "tier": "weak",
+               "core_error": "vertex 0 is a bowtie", "runs": [], "outcome": "ours-rejected"}
+    curve = {"input": "curve:s", "operation": "curves", "job": 2, "id": "curve:s | curves", "subjects": ["s"],
+             "tables": {}, "runs": [
+                 {"reference": "eigen", "subject": "s", "check": "position", "measured": 2e-12, "tolerance": 1e-13,
+                  "unit": "rel", "verdict": "diverge", "divergence_class": "unexplained",
+                  "outcome": "diverge (unexplained)", "explanation": "vs Eigen"}]}
+    study = {"input": "fans", "operation": "spectrum", "job": 3, "id": "fans | spectrum", "subjects": [],
+             "tables": {"spectrum": [{"scheme": "loop", "valence": 3, "subdominant": 0.25, "subdominant_multiplicity": 2,
+                                      "next": 0.1, "vertex_rate": 0.2, "max_difference": 1e-16,
+                                      "regular_characteristic_map": True}]},
+             "runs": [{"reference": "closed form", "subject": "loop n=3", "check": "spectrum", "measured": 1e-16,
+                       "tolerance": 1e-12, "unit": "abs", "verdict": "agree", "outcome": "agree", "explanation": ""}]}
+    return {"tool": "crossdiv suite", "schema_version": 3, "suite": "tiny", "manifest": "tiny.suite", "shard": "1/1",
+            "workers": 1, "seconds": 1.0, "references": [{"name": "opensubdiv", "version": "3.5"},
+                                                          {"name": "cgal", "version": "5.5"}],
+            "summary": {"cases": 4, "runs": 5, "failures": 1,
+                        "outcomes": {"agree": 2, "diverge (corner-rule)": 1, "ours-rejected": 1,
+                                     "diverge (unexplained)": 1}},
+            "cases": [loop, refused, curve, study]}
+
+
+def test_a_small_suite_folder_renders_every_section(tmp_path):
+    results = results_fixture()
+    (tmp_path / "results.json").write_text(json.dumps(results))
+    make_report.main(str(tmp_path))
+    md = (tmp_path / "report.md").read_text()
+    page = (tmp_path / "index.html").read_text()
+    for title in ("Outcomes", "Summary matrix", "Divergence catalogue", "Error by level and its distribution",
+                  "Curves", "Schemes and limit behaviour", "Timing"):
+        assert f"## {title}" in md and f"<h2>{title}</h2>" in page
+    for table in tables_of(md):  # every row has its header's cells, ids with '|' included
+        assert len({len(row) for row in table}) == 1, table
+    catalogue = [t for t in tables_of(md) if t[0][0].strip() == "case"][0]
+    outcomes = [row[2].strip() for row in catalogue[2:]]
+    assert sorted(outcomes) == ["diverge (corner-rule)", "diverge (unexplained)", "ours-rejected"]
+    assert "v3 valence 4 boundary" in md
+    for png in ("summary_matrix.png", "convergence.png", "error_histogram.png"):
+        assert (tmp_path / "figures" / png).stat().st_size > 1000
+
+
+def test_cases_are_split_by_operation_and_outcomes_read_not_derived():
+    mesh, curves, surfaces, studies = split_cases(results_fixture()["cases"])
+    assert [len(mesh), len(curves), len(surfaces), len(studies)] == [2, 1, 0, 1]
+    assert category(mesh[0], mesh[0]["runs"][1]) == "diverge (classified)"
+    assert category(curves[0], curves[0]["runs"][0]) == "diverge (unexplained)"
+    assert category(mesh[1]) == "ours-rejected"

@@ -1,0 +1,46 @@
+#pragma once
+/// @file
+/// One measured property check and the checks of one input: the record shape of the curve,
+/// surface and limit-behaviour operations (a value measured against a named tolerance, or a
+/// count that must be zero).
+
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "crossdiv/verification/harness/verdict.h"
+
+namespace crossdiv::verification {
+
+/// One measured check: `measured` must not exceed `tolerance` (both in the unit `unit`).
+struct Check {
+    std::string subject;    ///< what was checked: a curve's label, a surface, a study's row
+    std::string check;      ///< which property: "position", "d1", "continuity-c1", "watertight", ...
+    std::string reference;  ///< what it is compared with: "eigen", "bernstein", "analytic", "cgal", ...
+    double measured = 0;
+    double tolerance = 0;
+    std::string unit;  ///< "rel" (of the relevant diagonal), "abs", "rad", "order", "count"
+    std::string note;  ///< one line: how it was measured
+    /// Set when the outcome is not the measurement's pass or fail: a reference that refused,
+    /// a divergence whose class was measured (a comparison run recorded as a check).
+    std::optional<Outcome> decided;
+
+    bool pass() const { return measured <= tolerance; }  // NaN fails
+    /// `decided`, else agree when it passes and an unexplained divergence when it does not.
+    Outcome outcome() const {
+        if (decided) return *decided;
+        return pass() ? Outcome{Verdict::Agree, DivergenceClass::None} : Outcome{Verdict::Diverge, DivergenceClass::Unexplained};
+    }
+};
+
+/// All checks of one input, and the tables of figures they came from.
+struct CheckReport {
+    std::string input;
+    std::string operation = "curves";   ///< the suite operation: "curves", "surfaces" or a study
+    std::vector<std::string> subjects;  ///< curve labels or surface names, in input order
+    std::vector<Check> checks;
+    nlohmann::json tables = nlohmann::json::object();
+};
+
+}  // namespace crossdiv::verification

@@ -1,0 +1,50 @@
+#pragma once
+/// @file
+/// The suite's operations, by name: what a manifest `case` line may ask for. Each operation
+/// expands its inputs and turns one job into a typed CaseRecord.
+///
+///   loop             core against every reference on a mesh, under the case's rules and tier
+///   curves           a curve file (or the synthetic studies) against Eigen and exact properties
+///   surfaces         a surface file (or the studies) built and checked as closed surfaces
+///   catmull-clark    Catmull-Clark against its references on the catalog, both OpenSubdiv rules
+///   schemes          Doo-Sabin, sqrt3, modified Butterfly against theirs; Butterfly properties
+///   creases          the crease catalog against OpenSubdiv, and the crease-cube figure
+///   limit-positions  limit positions and normals against OpenSubdiv's Limit(), and Bfr at (u, v)
+///   spectrum         the eigen table of the local subdivision matrices, valence 3..20
+///   convergence      the convergence table, valence 3..12, levels 1..8
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "crossdiv/verification/suite/case_record.h"
+#include "crossdiv/verification/suite/manifest.h"
+
+namespace crossdiv::verification {
+
+/// How an operation's records read.
+enum class OperationKind {
+    Comparison,  ///< one run per reference (loop); takes rule keys
+    Checks,      ///< one run per measured check of an input file (curves, surfaces)
+    Study,       ///< one job over a fixed catalog, measured checks and tables
+};
+
+struct SuiteOperation {
+    std::string name;
+    OperationKind kind;
+    std::string description;  ///< one line, for errors and documentation
+    /// The single inputs the specs name, in a stable order.
+    /// @throws InputError for a spec the operation does not take.
+    std::vector<std::string> (*expand)(const std::vector<std::string>& specs);
+    /// Runs one job; core's refusal of an input is recorded, not thrown.
+    /// @param out_dir where side files (error fields) go.
+    CaseRecord (*run)(const SuiteJob& job, const std::string& out_dir);
+};
+
+/// Every operation, in the order above.
+const std::vector<SuiteOperation>& suite_operations();
+
+/// @throws InputError naming the unknown operation and the known ones.
+const SuiteOperation& find_operation(std::string_view name);
+
+}  // namespace crossdiv::verification

@@ -1,0 +1,195 @@
+#include "crossdiv/verification/suite/case_record.h"
+
+#include "crossdiv/error.h"
+
+namespace crossdiv::verification {
+namespace {
+
+using nlohmann::json;
+
+json finite_or_null(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
+
+double number(const json& j, const char* key) {
+    return j.contains(key) && j[key].is_number() ? j[key].get<double>() : NAN;
+}
+
+std::string text(const json& j, const char* key) { return j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : ""; }
+
+json to_json(const RunRecord& r) {
+    json j = r.detail;
+    j["reference"] = r.reference;
+    if (r.is_check()) {
+        j["check"] = r.check;
+        j["subject"] = r.subject;
+        j["measured"] = finite_or_null(r.measured);
+        j["tolerance"] = finite_or_null(r.tolerance);
+        j["unit"] = r.unit;
+    }
+    j["verdict"] = to_string(r.outcome.verdict);
+    if (r.outcome.cls != DivergenceClass::None || !r.is_check()) j["divergence_class"] = to_string(r.outcome.cls);
+    j["explanation"] = r.explanation;
+    return j;
+}
+
+RunRecord run_from_json(const json& j) {
+    RunRecord r;
+    r.detail = j;
+    r.reference = text(j, "reference");
+    r.check = text(j, "check");
+    r.subject = text(j, "subject");
+    r.outcome = {verdict_from_string(text(j, "verdict")), divergence_class_from_string(text(j, "divergence_class"))};
+    r.status = text(j, "status");
+    r.explanation = text(j, "explanation");
+    r.seconds = number(j, "seconds");
+    r.hausdorff = number(j, "hausdorff_rel");
+    if (r.is_check()) {
+        r.measured = number(j, "measured");
+        r.tolerance = number(j, "tolerance");
+        r.unit = text(j, "unit");
+    } else if (j.contains("positions")) {
+        const json& p = j["positions"];
+        r.measured = number(p, "max_rel");
+        r.rms = number(p, "rms_rel");
+        if (p.contains("worst") && !p["worst"].empty()) {
+            r.worst_valence = p["worst"][0].value("valence", -1);
+            r.worst_boundary = p["worst"][0].value("boundary", false) ? 1 : 0;
+        }
+    }
+    return r;
+}
+
+}  // namespace
+
+std::string RunRecord::label() const { return is_check() ? subject + " " + check + " vs " + reference : reference; }
+
+std::string outcome_label(const CaseRecord& c, const RunRecord& r) { return c.ours_failed ? "ours-failed" : to_string(r.outcome); }
+
+std::string outcome_label(const CaseRecord& c) { return c.ours_failed ? "ours-failed" : "ours-rejected"; }
+
+bool is_failure(const CaseRecord& c, const RunRecord& r) { return c.ours_failed || r.outcome.is_failure(); }
+
+CaseRecord case_record(const LoopComparison& comparison) {
+    CaseRecord c;
+    c.detail = to_json(comparison);
+    const json runs = c.detail["runs"];
+    c.detail.erase("runs");
+    c.input = comparison.input;
+    c.operation = "loop";
+    c.weights = to_string(comparison.options.weights);
+    c.boundary = to_string(comparison.options.boundary);
+    c.tier = to_string(comparison.tier);
+    c.levels = comparison.levels;
+    c.tolerance = comparison.tolerance;
+    c.core_seconds = comparison.core_seconds;
+    c.core_error = comparison.core_error;
+    for (size_t i = 0; i < comparison.runs.size(); ++i) {
+        const ReferenceRun& run = comparison.runs[i];
+        RunRecord r;
+        r.detail = runs[i];
+        r.reference = run.reference;
+        r.outcome = {run.verdict, run.divergence_class};
+        r.status = to_string(run.outcome.status);
+        r.seconds = run.outcome.seconds;
+        r.hausdorff = run.hausdorff_rel;
+        r.explanation = run.explanation;
+        if (run.outcome.status == RunStatus::Ok) {
+            r.measured = run.comparison.max_rel;
+            r.rms = run.comparison.rms_rel;
+            if (!run.comparison.worst.empty()) {
+                r.worst_valence = run.comparison.worst[0].valence;
+                r.worst_boundary = run.comparison.worst[0].boundary ? 1 : 0;
+            }
+        }
+        c.runs.push_back(std::move(r));
+    }
+    return c;
+}
+
+CaseRecord case_record(const CheckReport& report) {
+    CaseRecord c;
+    c.input = report.input;
+    c.operation = report.operation;
+    c.detail = {{"subjects", report.subjects}, {"tables", report.tables}};
+    for (const Check& k : report.checks) {
+        RunRecord r;
+        r.reference = k.reference;
+        r.subject = k.subject;
+        r.check = k.check;
+        r.measured = k.measured;
+        r.tolerance = k.tolerance;
+        r.unit = k.unit;
+        r.outcome = k.outcome();
+        r.explanation = k.note;
+        c.runs.push_back(std::move(r));
+    }
+    return c;
+}
+
+CaseRecord failed_case(const std::string& input, const std::string& operation, const std::string& why, bool ours_failed) {
+    CaseRecord c;
+    c.input = input;
+    c.operation = operation;
+    c.core_error = why;
+    c.ours_failed = ours_failed;
+    return c;
+}
+
+json to_json(const CaseRecord& c) {
+    json j = c.detail;
+    j["input"] = c.input;
+    j["operation"] = c.operation;
+    if (!c.weights.empty()) {
+        j["options"] = {{"weights", c.weights}, {"boundary", c.boundary}};
+        j["levels"] = c.levels;
+        j["tier"] = c.tier;
+        j["tolerance_rel"] = finite_or_null(c.tolerance);
+    }
+    if (std::isfinite(c.core_seconds)) j["core_seconds"] = c.core_seconds;
+    if (!c.core_error.empty() || j.contains("core_error")) j["core_error"] = c.core_error;
+    if (c.ours_failed) j["ours_failed"] = true;
+    j["job"] = c.job;
+    j["id"] = c.id;
+    j["manifest_line"] = c.manifest_line;
+    // The outcome each run is counted under, written once here so that readers of results.json
+    // (the report) need not derive it again.
+    json runs = json::array();
+    for (const RunRecord& r : c.runs) {
+        json run = to_json(r);
+        run["outcome"] = outcome_label(c, r);
+        runs.push_back(std::move(run));
+    }
+    j["runs"] = runs;
+    if (c.runs.empty()) j["outcome"] = outcome_label(c);
+    return j;
+}
+
+CaseRecord case_record_from_json(const json& j) {
+    if (!j.is_object() || !j.contains("runs") || !j["runs"].is_array())
+        throw InputError("not a crossdiv case record (no runs)");
+    CaseRecord c;
+    try {
+        c.detail = j;
+        c.detail.erase("runs");
+        c.job = j.value("job", 0);
+        c.id = text(j, "id");
+        c.manifest_line = j.value("manifest_line", 0);
+        c.input = text(j, "input");
+        c.operation = text(j, "operation");
+        if (j.contains("options")) {
+            c.weights = text(j["options"], "weights");
+            c.boundary = text(j["options"], "boundary");
+            c.levels = j.value("levels", 0);
+            c.tier = text(j, "tier");
+            c.tolerance = number(j, "tolerance_rel");
+        }
+        c.core_seconds = number(j, "core_seconds");
+        c.core_error = text(j, "core_error");
+        c.ours_failed = j.value("ours_failed", false);
+        for (const json& r : j["runs"]) c.runs.push_back(run_from_json(r));
+    } catch (const json::exception& e) {
+        throw InputError(std::string("a case record has a field of the wrong type: ") + e.what());
+    }
+    return c;
+}
+
+}  // namespace crossdiv::verification

@@ -1,0 +1,169 @@
+#include "crossdiv/verification/suite/manifest.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "crossdiv/error.h"
+#include "crossdiv/verification/implementations/registry.h"
+#include "crossdiv/verification/suite/operations.h"
+
+namespace crossdiv::verification {
+namespace {
+
+std::vector<std::string> split(const std::string& s, char sep) {
+    std::vector<std::string> out;
+    std::string item;
+    std::istringstream in(s);
+    while (std::getline(in, item, sep))
+        if (!item.empty()) out.push_back(item);
+    return out;
+}
+
+double parse_number(const std::string& file, int line, const std::string& key, const std::string& value) {
+    try {
+        size_t used = 0;
+        const double x = std::stod(value, &used);
+        if (used == value.size() && std::isfinite(x)) return x;
+    } catch (const std::exception&) {
+    }
+    throw ParseError(file, line, key + "=" + value + " is not a finite number");
+}
+
+/// Runs `parse` and turns its InputError into a ParseError at file:line.
+template <class F>
+auto at_line(const std::string& file, int line, F&& parse) {
+    try {
+        return parse();
+    } catch (const ParseError&) {
+        throw;
+    } catch (const InputError& err) {
+        throw ParseError(file, line, err.what());
+    }
+}
+
+/// The keys of a loop case: its rules, levels, references, tier and tolerance.
+void parse_loop_keys(const std::string& file, int line, std::istringstream& words, LoopComparisonRequest& r) {
+    r.options = {LoopWeights::Loop, LoopBoundary::EdgeOnly};
+    for (std::string kv; words >> kv;) {
+        const size_t eq = kv.find('=');
+        if (eq == std::string::npos) throw ParseError(file, line, "expected key=value, got '" + kv + "'");
+        const std::string key = kv.substr(0, eq), value = kv.substr(eq + 1);
+        if (key == "weights") {
+            if (value != "loop" && value != "warren") throw ParseError(file, line, "weights must be loop or warren");
+            r.options.weights = loop_weights_from_string(value);
+        } else if (key == "boundary") {
+            if (value != "edge-only" && value != "edge-and-corner")
+                throw ParseError(file, line, "boundary must be edge-only or edge-and-corner");
+            r.options.boundary = loop_boundary_from_string(value);
+        } else if (key == "levels") {
+            const double l = parse_number(file, line, key, value);
+            if (l != std::floor(l) || l < 1 || l > 6) throw ParseError(file, line, "levels must be an integer 1..6");
+            r.levels = static_cast<int>(l);
+        } else if (key == "against") {
+            r.references = split(value, ',');
+            at_line(file, line, [&] { return select_references(Scheme::Loop, r.references); });
+        } else if (key == "tier") {
+            r.tier = at_line(file, line, [&] { return tier_from_string(value); });
+        } else if (key == "tolerance") {
+            r.tolerance = parse_number(file, line, key, value);
+            if (!(r.tolerance >= 0)) throw ParseError(file, line, "tolerance must be >= 0");
+        } else {
+            throw ParseError(file, line, "unknown key '" + key + "' (known: weights, boundary, levels, against, tier, tolerance)");
+        }
+    }
+}
+
+ManifestEntry parse_case(const std::string& file, int line, std::istringstream& words) {
+    ManifestEntry e;
+    e.line = line;
+    std::string inputs, op;
+    if (!(words >> inputs >> op)) throw ParseError(file, line, "expected: case INPUTS OPERATION [key=value ...]");
+    e.inputs = split(inputs, ',');
+    e.operation = at_line(file, line, [&] { return &find_operation(op); });
+    if (e.operation->kind == OperationKind::Comparison) {
+        parse_loop_keys(file, line, words, e.request);
+    } else if (std::string extra; words >> extra) {
+        // The checks and studies carry their own named tolerances (tolerances.h).
+        throw ParseError(file, line, "the " + op + " operation takes no keys, got '" + extra + "'");
+    }
+    return e;
+}
+
+/// The id's description of an entry: the operation, and a loop case's keys.
+std::string describe_entry(const ManifestEntry& e) {
+    if (e.operation->kind != OperationKind::Comparison) return e.operation->name;
+    const LoopComparisonRequest& r = e.request;
+    std::string s = e.operation->name + " weights=" + std::string(to_string(r.options.weights)) +
+                    " boundary=" + std::string(to_string(r.options.boundary)) + " L" + std::to_string(r.levels) + " " +
+                    to_string(r.tier);
+    if (r.tier != Tier::Strict) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%g", r.tolerance);
+        s += std::string(" tol=") + buf;
+    }
+    return s;
+}
+
+}  // namespace
+
+Manifest read_manifest(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw InputError(path + ": cannot open manifest");
+    Manifest m;
+    m.file = path;
+    std::string text;
+    for (int line = 1; std::getline(in, text); ++line) {
+        if (const size_t hash = text.find('#'); hash != std::string::npos) text.resize(hash);
+        std::istringstream words(text);
+        std::string keyword;
+        if (!(words >> keyword)) continue;
+        if (keyword == "suite") {
+            if (!(words >> m.name)) throw ParseError(path, line, "expected: suite NAME");
+        } else if (keyword == "timeout") {
+            std::string v;
+            if (!(words >> v)) throw ParseError(path, line, "expected: timeout SECONDS");
+            m.timeout_seconds = parse_number(path, line, "timeout", v);
+            if (m.timeout_seconds <= 0) throw ParseError(path, line, "timeout must be positive");
+        } else if (keyword == "case") {
+            m.entries.push_back(parse_case(path, line, words));
+        } else {
+            throw ParseError(path, line, "unknown statement '" + keyword + "' (known: suite, timeout, case)");
+        }
+        if (std::string extra; keyword != "case" && (words >> extra))
+            throw ParseError(path, line, "unexpected '" + extra + "'");
+    }
+    if (m.name.empty()) throw ParseError(path, 1, "the manifest has no 'suite NAME' line");
+    for (ManifestEntry& e : m.entries) e.request.timeout_seconds = m.timeout_seconds;
+    return m;
+}
+
+std::string default_manifest_path() { return CROSSDIV_SUITES_DIR "/default.suite"; }
+
+std::vector<SuiteJob> expand_jobs(const Manifest& manifest) {
+    std::vector<SuiteJob> jobs;
+    for (const ManifestEntry& e : manifest.entries) {
+        const std::vector<std::string> inputs = at_line(manifest.file, e.line, [&] { return e.operation->expand(e.inputs); });
+        for (const std::string& in : inputs) {
+            SuiteJob j;
+            j.index = static_cast<int>(jobs.size());
+            j.input = in;
+            j.entry = &e;
+            j.id = in + " | " + describe_entry(e);
+            jobs.push_back(j);
+        }
+    }
+    return jobs;
+}
+
+std::vector<SuiteJob> shard_jobs(const std::vector<SuiteJob>& jobs, int shard, int count) {
+    if (count < 1 || shard < 1 || shard > count)
+        throw InputError("shard " + std::to_string(shard) + "/" + std::to_string(count) + " is not of the form I/N with 1 <= I <= N");
+    std::vector<SuiteJob> out;
+    for (const SuiteJob& j : jobs)
+        if (j.index % count == shard - 1) out.push_back(j);
+    return out;
+}
+
+}  // namespace crossdiv::verification

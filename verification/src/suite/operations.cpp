@@ -1,0 +1,119 @@
+#include "crossdiv/verification/suite/operations.h"
+
+#include <filesystem>
+#include <fstream>
+
+#include "crossdiv/error.h"
+#include "crossdiv/subdiv/loop.h"
+#include "crossdiv/verification/harness/inputs.h"
+#include "crossdiv/verification/properties/curve_checks.h"
+#include "crossdiv/verification/properties/surface_checks.h"
+#include "suite/studies.h"
+
+namespace crossdiv::verification {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+/// Error fields larger than this are not kept: the report renders them with matplotlib,
+/// which stays interactive-fast up to about this many triangles.
+constexpr int kErrorFieldMaxFaces = 20000;
+
+/// Writes each diverging run's error field as fields/jobN-REF.json and names it in the run.
+void write_error_fields(const LoopComparison& c, const SuiteJob& job, const std::string& out_dir, CaseRecord& rec) {
+    for (size_t i = 0; i < c.runs.size(); ++i) {
+        const auto& field = c.runs[i].error_field;
+        if (!field) continue;
+        const std::string name = "fields/job" + std::to_string(job.index) + "-" + c.runs[i].reference + ".json";
+        json positions = json::array(), faces = json::array(), distance = json::array();
+        for (const Vec3& p : field->mesh.positions) positions.push_back({p.x(), p.y(), p.z()});
+        for (int f = 0; f < field->mesh.num_faces(); ++f)
+            faces.push_back(std::vector<int>(field->mesh.face(f), field->mesh.face(f) + field->mesh.face_size(f)));
+        for (double d : field->distance) distance.push_back(std::isfinite(d) ? json(d) : json(nullptr));
+        fs::create_directories(fs::path(out_dir) / "fields");
+        std::ofstream out(fs::path(out_dir) / name);
+        if (!out) throw InputError((fs::path(out_dir) / name).string() + ": cannot write");
+        out << json{{"level", field->level}, {"positions", positions}, {"faces", faces}, {"distance", distance}}.dump();
+        rec.runs[i].detail["error_field"] = name;
+    }
+}
+
+CaseRecord run_loop(const SuiteJob& job, const std::string& out_dir) {
+    LoopComparisonRequest req = job.entry->request;
+    req.error_field_max_faces = kErrorFieldMaxFaces;
+    const TriMesh mesh = to_tri_mesh(load_input(job.input), "Loop subdivision");
+    std::string refused;
+    try {
+        loop_input_connectivity(mesh);
+    } catch (const InputError& e) {
+        refused = e.what();
+    }
+    const LoopComparison c =
+        refused.empty() ? compare_loop(mesh, job.input, req) : compare_loop_refused(mesh, job.input, req, refused);
+    CaseRecord rec = case_record(c);
+    write_error_fields(c, job, out_dir, rec);
+    return rec;
+}
+
+CaseRecord run_curves(const SuiteJob& job, const std::string&) {
+    return case_record(job.input == "curves:synthetic" ? check_synthetic()
+                                                       : check_curve_file(load_curve_input(job.input), job.input));
+}
+
+CaseRecord run_surfaces(const SuiteJob& job, const std::string&) { return case_record(check_surface_input(job.input)); }
+
+template <const char* Collection>
+std::vector<std::string> one_collection(const std::vector<std::string>& specs) {
+    for (const std::string& s : specs)
+        if (s != Collection) throw InputError("'" + s + "' is not what this operation runs over (it takes '" + Collection + "')");
+    return specs;
+}
+
+constexpr char kCatalog[] = "catalog";
+constexpr char kCreases[] = "creases";
+constexpr char kFans[] = "fans";
+
+template <CheckReport (*Study)()>
+CaseRecord run_study(const SuiteJob& job, const std::string&) {
+    CheckReport r = Study();
+    r.input = job.input;
+    r.operation = job.entry->operation->name;
+    return case_record(r);
+}
+
+}  // namespace
+
+const std::vector<SuiteOperation>& suite_operations() {
+    static const std::vector<SuiteOperation> ops = {
+        {"loop", OperationKind::Comparison, "core against every reference on a mesh, under the case's rules and tier",
+         expand_inputs, run_loop},
+        {"curves", OperationKind::Checks, "curve files against Eigen and exact properties", expand_curve_inputs, run_curves},
+        {"surfaces", OperationKind::Checks, "surface files built and checked as closed surfaces", expand_surface_inputs,
+         run_surfaces},
+        {"catmull-clark", OperationKind::Study, "Catmull-Clark against its references on the catalog",
+         one_collection<kCatalog>, run_study<catmull_clark_study>},
+        {"schemes", OperationKind::Study, "Doo-Sabin, sqrt3 and modified Butterfly against theirs; Butterfly properties",
+         one_collection<kCatalog>, run_study<schemes_study>},
+        {"creases", OperationKind::Study, "the crease catalog against OpenSubdiv", one_collection<kCreases>,
+         run_study<creases_study>},
+        {"limit-positions", OperationKind::Study, "limit positions and normals against OpenSubdiv, Bfr at (u, v)",
+         one_collection<kCatalog>, run_study<limit_positions_study>},
+        {"spectrum", OperationKind::Study, "eigen table of the local subdivision matrices", one_collection<kFans>,
+         run_study<spectrum_study>},
+        {"convergence", OperationKind::Study, "convergence of extraordinary vertices to their limit",
+         one_collection<kFans>, run_study<convergence_study>},
+    };
+    return ops;
+}
+
+const SuiteOperation& find_operation(std::string_view name) {
+    std::string known;
+    for (const SuiteOperation& op : suite_operations()) {
+        if (op.name == name) return op;
+        known += (known.empty() ? "" : ", ") + op.name;
+    }
+    throw InputError("unknown operation '" + std::string(name) + "' (known: " + known + ")");
+}
+
+}  // namespace crossdiv::verification

@@ -1,0 +1,189 @@
+#include "crossdiv/verification/suite/outputs.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "crossdiv/error.h"
+
+namespace crossdiv::verification {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+std::string csv_field(const std::string& s) {
+    if (s.find_first_of(",\"\n") == std::string::npos) return s;
+    std::string q = "\"";
+    for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return q + "\"";
+}
+
+std::string xml_escape(const std::string& s) {
+    std::string out;
+    for (char c : s) {
+        switch (c) {
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            default: out += c;
+        }
+    }
+    return out;
+}
+
+/// "%.6g", or "" for a value not measured (NaN) or not finite.
+std::string number_or_empty(double x) {
+    if (!std::isfinite(x)) return "";
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", x);
+    return buf;
+}
+
+/// "measured 3.1e-16 <= tolerance 1.4e-14 rel" for a check ("measured -" when there is no
+/// figure, e.g. a reference that refused).
+std::string fmt_measured(const RunRecord& r) {
+    const std::string measured = number_or_empty(r.measured);
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "measured %s %s tolerance %.3g %s", measured.empty() ? "-" : measured.c_str(),
+                  r.outcome.verdict == Verdict::Agree ? "<=" : ">", std::isfinite(r.tolerance) ? r.tolerance : 0.0,
+                  r.unit.c_str());
+    return buf;
+}
+
+void write_file(const fs::path& p, const std::string& text) {
+    std::ofstream out(p);
+    if (!out) throw InputError(p.string() + ": cannot write");
+    out << text;
+}
+
+json to_json(const SuiteSummary& s) {
+    return {{"cases", s.cases}, {"runs", s.runs}, {"failures", s.failures}, {"outcomes", s.outcomes}};
+}
+
+std::string csv(const std::vector<CaseRecord>& cases) {
+    std::ostringstream out;
+    out << "job,input,operation,weights,boundary,levels,tier,tolerance,reference,status,outcome,max_rel,rms_rel,"
+           "hausdorff_rel,worst_valence,worst_boundary,core_seconds,reference_seconds,explanation\n";
+    for (const CaseRecord& c : cases) {
+        const auto row = [&](const RunRecord* r) {
+            out << c.job << "," << csv_field(c.input) << "," << c.operation << "," << c.weights << "," << c.boundary << ","
+                << (c.levels > 0 ? std::to_string(c.levels) : "") << "," << c.tier << ","
+                << number_or_empty(!c.weights.empty() ? c.tolerance : r ? r->tolerance : NAN) << ","
+                << csv_field(r ? r->label() : "") << "," << (r ? r->status : "") << ","
+                << csv_field(r ? outcome_label(c, *r) : outcome_label(c)) << "," << number_or_empty(r ? r->measured : NAN)
+                << "," << number_or_empty(r ? r->rms : NAN) << "," << number_or_empty(r ? r->hausdorff : NAN) << ","
+                << (r && r->worst_valence >= 0 ? std::to_string(r->worst_valence) : "") << ","
+                << (r && r->worst_boundary >= 0 ? (r->worst_boundary ? "true" : "false") : "") << ","
+                << number_or_empty(c.core_seconds) << "," << number_or_empty(r ? r->seconds : NAN) << ","
+                << csv_field(r ? r->explanation : c.core_error) << "\n";
+        };
+        if (c.runs.empty()) row(nullptr);
+        for (const RunRecord& r : c.runs) row(&r);
+    }
+    return out.str();
+}
+
+std::string junit(const std::string& suite, const std::vector<CaseRecord>& cases, const SuiteSummary& s) {
+    std::ostringstream xml;
+    const int testcases = s.runs;
+    xml << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"crossdiv\" tests=\"" << testcases
+        << "\" failures=\"" << s.failures << "\">\n  <testsuite name=\"" << xml_escape(suite) << "\" tests=\"" << testcases
+        << "\" failures=\"" << s.failures << "\">\n";
+    for (const CaseRecord& c : cases) {
+        const std::string classname = "crossdiv." + suite + "." + c.operation;
+        const auto testcase = [&](const std::string& who, const std::string& outcome, bool failure, const std::string& text,
+                                  double seconds) {
+            xml << "    <testcase classname=\"" << xml_escape(classname) << "\" name=\"" << xml_escape(c.id + " vs " + who)
+                << "\" time=\"" << (std::isfinite(seconds) ? seconds : 0.0) << "\">\n";
+            if (failure) xml << "      <failure message=\"" << xml_escape(outcome) << "\">" << xml_escape(text) << "</failure>\n";
+            xml << "      <system-out>" << xml_escape(outcome + ": " + text) << "</system-out>\n    </testcase>\n";
+        };
+        if (c.runs.empty()) testcase("core", outcome_label(c), c.ours_failed, c.core_error, 0.0);
+        for (const RunRecord& r : c.runs)
+            testcase(r.label(), outcome_label(c, r), is_failure(c, r),
+                     r.is_check() ? fmt_measured(r) + "; " + r.explanation : r.explanation, r.seconds);
+    }
+    xml << "  </testsuite>\n</testsuites>\n";
+    return xml.str();
+}
+
+}  // namespace
+
+SuiteSummary summarize(const std::vector<CaseRecord>& cases) {
+    SuiteSummary s;
+    s.cases = static_cast<int>(cases.size());
+    for (const CaseRecord& c : cases) {
+        if (c.runs.empty()) {
+            ++s.outcomes[outcome_label(c)];
+            s.failures += c.ours_failed;
+            ++s.runs;
+        }
+        for (const RunRecord& r : c.runs) {
+            ++s.outcomes[outcome_label(c, r)];
+            s.failures += is_failure(c, r);
+            ++s.runs;
+        }
+    }
+    return s;
+}
+
+SuiteSummary write_suite_outputs(const std::string& dir, const json& header, const std::vector<CaseRecord>& cases) {
+    fs::create_directories(dir);
+    const SuiteSummary summary = summarize(cases);
+    json results = header;
+    results["summary"] = to_json(summary);
+    json records = json::array();
+    for (const CaseRecord& c : cases) records.push_back(to_json(c));
+    results["cases"] = std::move(records);
+    write_file(fs::path(dir) / "results.json", results.dump(1) + "\n");
+    write_file(fs::path(dir) / "results.csv", csv(cases));
+    write_file(fs::path(dir) / "junit.xml", junit(header.value("suite", "suite"), cases, summary));
+    return summary;
+}
+
+SuiteSummary merge_suite_outputs(const std::vector<std::string>& dirs, const std::string& out_dir) {
+    json header;
+    std::map<int, CaseRecord> cases;
+    std::vector<std::string> shards;
+    for (const std::string& d : dirs) {
+        const fs::path p = fs::path(d) / "results.json";
+        std::ifstream in(p);
+        if (!in) throw InputError(p.string() + ": no results.json (not a suite output folder)");
+        json r = json::parse(in, nullptr, false);
+        if (r.is_discarded() || !r.contains("cases")) throw InputError(p.string() + ": not a crossdiv suite results file");
+        if (header.is_null()) {
+            header = r;
+            header.erase("cases");
+            header.erase("summary");
+        } else if (r.value("suite", "") != header.value("suite", "") || r.value("jobs_total", -1) != header.value("jobs_total", -1)) {
+            throw InputError(p.string() + ": suite '" + r.value("suite", "") + "' with " +
+                             std::to_string(r.value("jobs_total", -1)) + " jobs does not match '" +
+                             header.value("suite", "") + "' with " + std::to_string(header.value("jobs_total", -1)));
+        }
+        shards.push_back(r.value("shard", "?"));
+        for (const json& record : r["cases"]) {
+            CaseRecord c = case_record_from_json(record);
+            if (cases.count(c.job)) throw InputError(p.string() + ": job " + std::to_string(c.job) + " is in two shards");
+            for (const RunRecord& run : c.runs)
+                if (run.detail.contains("error_field")) {
+                    const std::string field = run.detail["error_field"].get<std::string>();
+                    const fs::path src = fs::path(d) / field, dst = fs::path(out_dir) / field;
+                    fs::create_directories(dst.parent_path());
+                    if (fs::absolute(src) != fs::absolute(dst)) fs::copy_file(src, dst, fs::copy_options::overwrite_existing);
+                }
+            cases.emplace(c.job, std::move(c));
+        }
+    }
+    std::string joined;
+    for (const std::string& s : shards) joined += (joined.empty() ? "" : "+") + s;
+    header["shard"] = "merged " + joined;
+    header["jobs_run"] = cases.size();
+    std::vector<CaseRecord> ordered;
+    for (auto& [job, c] : cases) ordered.push_back(std::move(c));
+    return write_suite_outputs(out_dir, header, ordered);
+}
+
+}  // namespace crossdiv::verification

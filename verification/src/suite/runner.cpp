@@ -1,0 +1,178 @@
+#include "crossdiv/verification/suite/runner.h"
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <csignal>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+#include "crossdiv/error.h"
+#include "crossdiv/verification/suite/operations.h"
+
+namespace crossdiv::verification {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+/// A job that made no record: core refused its input, or failed.
+CaseRecord failed_job(const SuiteJob& job, const std::string& why, bool ours_failed) {
+    CaseRecord c = failed_case(job.input, job.entry->operation->name, why, ours_failed);
+    if (job.entry->operation->kind == OperationKind::Comparison) {
+        const LoopComparisonRequest& r = job.entry->request;
+        c.weights = to_string(r.options.weights);
+        c.boundary = to_string(r.options.boundary);
+        c.levels = r.levels;
+        c.tier = to_string(r.tier);
+        c.tolerance = r.tolerance;
+    }
+    return c;
+}
+
+void identify(const SuiteJob& job, CaseRecord& c) {
+    c.job = job.index;
+    c.id = job.id;
+    c.manifest_line = job.entry->line;
+}
+
+}  // namespace
+
+CaseRecord run_job(const SuiteJob& job, const std::string& out_dir) {
+    CaseRecord c;
+    try {
+        c = job.entry->operation->run(job, out_dir);
+    } catch (const InputError& e) {
+        // A file core refuses: recorded, not a failure of ours; nothing to hand the references either.
+        c = failed_job(job, e.what(), false);
+    } catch (const std::exception& e) {
+        c = failed_job(job, std::string("internal error: ") + e.what(), true);
+    }
+    identify(job, c);
+    return c;
+}
+
+std::vector<CaseRecord> run_jobs(const std::vector<SuiteJob>& jobs, int workers, const std::string& out_dir,
+                                 const std::function<void(int, int, const CaseRecord&)>& progress) {
+    workers = std::max(1, std::min<int>(workers, static_cast<int>(jobs.size())));
+    fs::create_directories(out_dir);
+    int pipe_fd[2];
+    if (pipe(pipe_fd) != 0) throw std::runtime_error("pipe failed");
+    std::vector<pid_t> pids;
+    std::vector<fs::path> parts;
+    std::fflush(nullptr);
+    for (int w = 0; w < workers; ++w) {
+        parts.push_back(fs::path(out_dir) / ("worker" + std::to_string(w) + ".jsonl"));
+        const pid_t pid = fork();
+        if (pid < 0) throw std::runtime_error("fork failed");
+        if (pid == 0) {
+            // Worker w: every workers-th job; one JSON line per record, then a line on the
+            // pipe with the job index (short writes to a pipe are atomic).
+            close(pipe_fd[0]);
+            std::ofstream part(parts.back());
+            for (size_t i = w; i < jobs.size(); i += workers) {
+                part << to_json(run_job(jobs[i], out_dir)).dump() << "\n" << std::flush;
+                const std::string msg = std::to_string(i) + "\n";
+                if (write(pipe_fd[1], msg.data(), msg.size()) < 0) _exit(1);
+            }
+            part.close();
+            _exit(0);
+        }
+        pids.push_back(pid);
+    }
+    close(pipe_fd[1]);
+
+    // Progress: read finished indices as they come; records are read back from the files.
+    std::map<int, CaseRecord> done;
+    std::vector<std::streamoff> offsets(workers, 0);
+    auto collect = [&](int w) {
+        std::ifstream in(parts[w]);
+        in.seekg(offsets[w]);
+        std::string line;
+        while (std::getline(in, line) && !line.empty()) {
+            const json rec = json::parse(line, nullptr, false);
+            if (rec.is_discarded()) break;  // a line still being written
+            offsets[w] = in.tellg();
+            CaseRecord c = case_record_from_json(rec);
+            done.emplace(c.job, std::move(c));
+        }
+    };
+    std::string buffer;
+    char chunk[256];
+    for (ssize_t n; (n = read(pipe_fd[0], chunk, sizeof chunk)) != 0;) {
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            break;
+        }
+        buffer.append(chunk, static_cast<size_t>(n));
+        for (size_t nl; (nl = buffer.find('\n')) != std::string::npos;) {
+            const size_t i = std::stoul(buffer.substr(0, nl));
+            buffer.erase(0, nl + 1);
+            collect(static_cast<int>(i % workers));
+            const auto it = done.find(jobs[i].index);
+            if (it != done.end()) progress(static_cast<int>(done.size()), static_cast<int>(jobs.size()), it->second);
+        }
+    }
+    close(pipe_fd[0]);
+    std::vector<int> died(workers, 0);
+    for (int w = 0; w < workers; ++w) {
+        int status = 0;
+        waitpid(pids[w], &status, 0);
+        if (WIFSIGNALED(status)) died[w] = WTERMSIG(status);
+        collect(w);
+        std::error_code ec;
+        fs::remove(parts[w], ec);
+    }
+    std::vector<CaseRecord> out;
+    for (size_t i = 0; i < jobs.size(); ++i) {
+        auto it = done.find(jobs[i].index);
+        if (it != done.end()) {
+            out.push_back(std::move(it->second));
+            continue;
+        }
+        // The worker died in core (a crash of ours, not of a reference: those are isolated).
+        const int w = static_cast<int>(i % workers);
+        CaseRecord c = failed_job(jobs[i],
+                                  died[w] ? "worker crashed in core: signal " + std::to_string(died[w]) + " (" +
+                                                strsignal(died[w]) + ")"
+                                          : "worker ended without a record",
+                                  true);
+        identify(jobs[i], c);
+        progress(static_cast<int>(out.size() + 1), static_cast<int>(jobs.size()), c);
+        out.push_back(std::move(c));
+    }
+    return out;
+}
+
+std::string describe_record(const CaseRecord& c) {
+    if (c.runs.empty()) return outcome_label(c) + ": " + c.core_error;
+    const OperationKind kind = find_operation(c.operation).kind;
+    if (kind == OperationKind::Comparison) {
+        std::string s;
+        for (const RunRecord& r : c.runs) s += (s.empty() ? "" : ", ") + r.reference + " " + outcome_label(c, r);
+        return s;
+    }
+    int failed = 0, classified = 0;
+    std::string which;
+    for (const RunRecord& r : c.runs) {
+        if (r.outcome.verdict == Verdict::Agree) continue;
+        // A divergence whose cause is measured (a study's boundary-rule, say) is a finding,
+        // not a failure.
+        if (r.outcome.cls != DivergenceClass::None && r.outcome.cls != DivergenceClass::Unexplained) {
+            ++classified;
+            continue;
+        }
+        ++failed;
+        if (which.size() < 200) which += " " + r.subject + "/" + r.check;
+    }
+    const std::string what = c.operation == "curves" ? " curve checks" : c.operation == "surfaces" ? " surface checks" : " checks";
+    return std::to_string(c.runs.size()) + what +
+           (classified ? ", " + std::to_string(classified) + " classified divergences" : "") +
+           (failed ? ", " + std::to_string(failed) + " FAILED:" + which : ", all within tolerance");
+}
+
+}  // namespace crossdiv::verification

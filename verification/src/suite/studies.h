@@ -1,0 +1,25 @@
+#pragma once
+// The studies of schemes and limit behaviour, each a suite operation over a fixed catalog
+// (operations.h): measured checks, each with its named tolerance, and the full tables.
+
+#include "crossdiv/verification/properties/check.h"
+
+namespace crossdiv::verification {
+
+/// Catmull-Clark against OpenSubdiv, OpenMesh and CGAL on the catalog, both OpenSubdiv
+/// boundary rules, 2 levels; every divergence classified.
+CheckReport catmull_clark_study();
+/// Doo-Sabin (CGAL), sqrt3 (OpenMesh, CGAL; per level and in one call, 3 levels), the
+/// modified Butterfly (OpenMesh), and the Butterfly properties of both variants.
+CheckReport schemes_study();
+/// The crease catalog against OpenSubdiv, and the crease-cube figure.
+CheckReport creases_study();
+/// Limit positions and interior normals against OpenSubdiv's Limit(), and Bfr's (u, v)
+/// evaluation against core's exact limit.
+CheckReport limit_positions_study();
+/// The eigen table, valence 3..20, Loop, Warren, Catmull-Clark.
+CheckReport spectrum_study();
+/// The convergence table, valence 3..12, levels 1..8.
+CheckReport convergence_study();
+
+}  // namespace crossdiv::verification
