@@ -12,7 +12,9 @@
 #include "crossdiv/datasets/bundled_curves.h"
 #include "crossdiv/io/curve_io.h"
 #include "crossdiv/mesh/tri_mesh.h"
+#include "command.h"
 #include "crossdiv/error.h"
+#include "crossdiv/verification/bench/bench.h"
 #include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/verification/properties/curve_checks.h"
 
@@ -247,8 +249,7 @@ json run_curve_bench(int repeats) {
                     f();
                     if (rep > 0) ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
                 }
-                std::nth_element(ms.begin(), ms.begin() + ms.size() / 2, ms.end());
-                return ms[ms.size() / 2];
+                return median(ms);
             };
             double sink = 0;
             const double ours = median_ms([&] {
@@ -315,6 +316,13 @@ void print_curve_tables(const std::vector<CaseRecord>& records) {
                            row["curve"].get<std::string>(), row["tol"].get<double>(), row["uniform_edges"].get<int>(),
                            row["angle_edges"].get<int>(), row["distance_edges"].get<int>(), row["wang_edges"].get<int>());
     }
+}
+
+void add_curve_commands(CLI::App& app, int& status) {
+    add_command<TessellateArgs>(app, "tessellate",
+                                "Tessellate every curve of an SWP or BZC file (points, tangents, normals, frames)", status,
+                                run_tessellate);
+    add_command<CasteljauArgs>(app, "casteljau", "Every de Casteljau level of a Bezier curve at t", status, run_casteljau);
 }
 
 }  // namespace crossdiv::cli

@@ -26,6 +26,9 @@ struct CasteljauArgs {
 };
 int run_casteljau(const CasteljauArgs& a);
 
+/// Adds tessellate and casteljau; the one selected stores its exit status in `status`.
+void add_curve_commands(CLI::App& app, int& status);
+
 /// The curve half of `crossdiv bench`: on every bundled spline and the course's wineglass
 /// profile (when ../shared/data is present), the edge counts and measured deviations of each
 /// tessellation mode at tolerances 1e-2, 1e-3, 1e-4 of the curve's size; and the time of our

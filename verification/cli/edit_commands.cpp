@@ -5,6 +5,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "command.h"
 #include "crossdiv/error.h"
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/mesh/halfedge_mesh.h"
@@ -164,6 +165,13 @@ int print_halfedge_report(const PolyMesh& poly) {
                he.num_edges(), he.num_faces(), he.num_boundary_loops(), he.num_vertices() - he.num_edges() + he.num_faces(),
                issues.empty() ? "every invariant holds" : fmt::format("{} broken invariant(s)", issues.size()));
     return static_cast<int>(issues.size());
+}
+
+void add_edit_commands(CLI::App& app, int& status) {
+    add_command<EditArgs>(app, "edit", "Flip and split edges in order on a half-edge mesh (edges as A-B, 0-based)", status,
+                          run_edit);
+    add_command<NormalsArgs>(app, "normals", "Vertex normals (area, angle, uniform) against OpenMesh and CGAL", status,
+                             run_normals);
 }
 
 }  // namespace crossdiv::cli

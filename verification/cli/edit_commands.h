@@ -32,6 +32,9 @@ struct NormalsArgs {
 /// vertex where they differ most. JSON: {"normals": [[x, y, z], ...], "weighting", "references"}.
 int run_normals(const NormalsArgs& a);
 
+/// Adds edit and normals; the one selected stores its exit status in `status`.
+void add_edit_commands(CLI::App& app, int& status);
+
 /// The half-edge view of `mesh` for `crossdiv check`: counts, boundary loops and every broken
 /// invariant, or why no half-edge mesh can be built. Returns the number of errors.
 int print_halfedge_report(const PolyMesh& mesh);

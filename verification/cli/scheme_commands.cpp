@@ -1,5 +1,7 @@
 #include "scheme_commands.h"
 
+#include "command.h"
+
 #include <fmt/core.h>
 
 #include <cmath>
@@ -287,6 +289,33 @@ int run_spectrum(const SpectrumArgs& a) {
     if (!a.json.empty())
         write_json(a.json, {{"tool", "crossdiv spectrum"}, {"spectra", spectra}, {"convergence", conv}});
     return ok ? 0 : 1;
+}
+
+void LimitArgs::add_to(CLI::App& app) {
+    app.add_option("input", input, "Mesh file or bundled:NAME")->required();
+    app.add_option("--scheme", scheme, "loop or catmull-clark")->check(CLI::IsMember({"loop", "catmull-clark"}))->capture_default_str();
+    app.add_option("--weights", weights, "Loop weight family: loop or warren")->capture_default_str();
+    app.add_option("--boundary", boundary, "edge-only or edge-and-corner")->capture_default_str();
+    app.add_option("--levels", levels, "Level whose vertices are moved (0: the input)")->capture_default_str();
+    app.add_option("--against", against, "opensubdiv: compare with PrimvarRefiner::Limit");
+    app.add_option("--json", json, "Write the results as JSON");
+    app.add_option("-o,--output", out, "Write the level with every vertex at its limit position");
+}
+
+void SpectrumArgs::add_to(CLI::App& app) {
+    app.add_option("--scheme", scheme, "loop, warren, catmull-clark or all")
+        ->check(CLI::IsMember({"loop", "warren", "catmull-clark", "all"}))
+        ->capture_default_str();
+    app.add_option("--valence", valence, "N or A..B (3..64)")->capture_default_str();
+    app.add_option("--levels", levels, "Levels of the convergence table")->check(CLI::Range(2, 8))->capture_default_str();
+    app.add_option("--json", json, "Write both tables as JSON");
+}
+
+void add_scheme_commands(CLI::App& app, int& status) {
+    add_command<LimitArgs>(app, "limit", "Limit positions of a level's vertices (Loop, Catmull-Clark), against OpenSubdiv",
+                           status, run_limit);
+    add_command<SpectrumArgs>(app, "spectrum", "Eigen table of the local subdivision matrices and the convergence table",
+                              status, run_spectrum);
 }
 
 }  // namespace crossdiv::cli

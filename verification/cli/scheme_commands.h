@@ -2,6 +2,7 @@
 // The subcommands of the polygon schemes and of limit behaviour: subdivide and compare with
 // --scheme catmull-clark (Loop stays in main.cpp), limit and spectrum.
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -41,6 +42,7 @@ int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeAr
 struct LimitArgs {
     std::string input, scheme = "loop", weights = "loop", boundary = "edge-only", against, json, out;
     int levels = 0;
+    void add_to(CLI::App& app);
 };
 /// `crossdiv limit IN --scheme loop|catmull-clark [--weights] [--boundary] [--levels N]
 /// [--against opensubdiv] [--json F] [-o OUT]`: the level-N mesh with every vertex moved to
@@ -51,10 +53,14 @@ int run_limit(const LimitArgs& a);
 struct SpectrumArgs {
     std::string scheme = "loop", valence = "3..20", json;
     int levels = 8;  ///< of the convergence table
+    void add_to(CLI::App& app);
 };
 /// `crossdiv spectrum --scheme loop|warren|catmull-clark|all --valence A..B [--json F]`: the eigen
 /// table (core's local matrix against the closed form) and the convergence table; exit 1 when
 /// a spectrum departs from its closed form by more than 1e-12.
 int run_spectrum(const SpectrumArgs& a);
+
+/// Adds limit and spectrum; the one selected stores its exit status in `status`.
+void add_scheme_commands(CLI::App& app, int& status);
 
 }  // namespace crossdiv::cli

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "command.h"
 #include "crossdiv/datasets/bundled_surfaces.h"
 #include "crossdiv/error.h"
 #include "crossdiv/io/curve_io.h"
@@ -215,6 +216,13 @@ void print_surface_tables(const std::vector<verification::CaseRecord>& records) 
                        r.value("faces", 0), r.value("closed", false) ? "yes" : "no", r.value("boundary_edges", 0),
                        r.value("signed_volume", 0.0), r.contains("fold") ? r["fold"].value("faces", 0) : 0);
     }
+}
+
+void add_surface_commands(CLI::App& app, int& status) {
+    add_command<SweepArgs>(app, "sweep", "Build every srev and gcyl record of an SWP file into an OBJ with normals", status,
+                           run_sweep);
+    add_command<PatchArgs>(app, "patch", "Tessellate the Bezier patches of a BEZ file into one welded OBJ with normals",
+                           status, run_patch);
 }
 
 }  // namespace crossdiv::cli

@@ -28,6 +28,9 @@ struct PatchArgs {
 /// Tessellates a BEZ file (res x res quads per patch, welded) into an OBJ with normals.
 int run_patch(const PatchArgs& a);
 
+/// Adds sweep and patch; the one selected stores its exit status in `status`.
+void add_surface_commands(CLI::App& app, int& status);
+
 /// The surface half of `crossdiv bench`: the wineglass (../shared/data/c3100/swp/srev, or
 /// the bundled vase when absent) with the seed's uniform steps against the adaptive sweep
 /// at the same measured deviation from the exact surface: both face counts, both

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <csignal>
 #include <cstring>
@@ -82,12 +83,11 @@ BenchRecord time_in_child(const Refine& refine, int repeats, bool cold) {
         return r;
     }
     std::vector<double> ms(rep.ms, rep.ms + rep.repeats);
-    std::sort(ms.begin(), ms.end());
     r.repeats = rep.repeats;
     r.output_faces = rep.output_faces;
-    r.min_ms = ms.front();
-    r.max_ms = ms.back();
-    r.median_ms = ms.size() % 2 ? ms[ms.size() / 2] : (ms[ms.size() / 2 - 1] + ms[ms.size() / 2]) / 2;
+    r.min_ms = *std::min_element(ms.begin(), ms.end());
+    r.max_ms = *std::max_element(ms.begin(), ms.end());
+    r.median_ms = median(ms);
     return r;
 }
 
@@ -131,6 +131,36 @@ nlohmann::json to_json(const BenchRecord& r) {
             {"levels", r.levels},     {"input_faces", r.input_faces}, {"output_faces", r.output_faces},
             {"median_ms", r.median_ms}, {"min_ms", r.min_ms},       {"max_ms", r.max_ms},
             {"repeats", r.repeats},   {"peak_rss_mb", r.peak_rss_mb}, {"status", r.status}};
+}
+
+double median(std::vector<double> v) {
+    if (v.empty()) return NAN;
+    std::sort(v.begin(), v.end());
+    const size_t n = v.size();
+    return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+}
+
+std::optional<BenchGoal> bench_goal(const std::vector<BenchRecord>& records) {
+    std::optional<BenchGoal> goal;
+    for (const BenchRecord& core : records) {
+        if (core.impl != "core" || core.levels != 2 || core.input_faces < 19000 || core.status != "ok") continue;
+        const BenchRecord* fastest = nullptr;
+        for (const BenchRecord& r : records)
+            if (r.impl != "core" && r.input == core.input && r.levels == core.levels && r.status == "ok" &&
+                (!fastest || r.median_ms < fastest->median_ms))
+                fastest = &r;
+        if (!fastest) continue;
+        goal = BenchGoal{core.input,        core.levels,          core.output_faces,
+                         core.median_ms,    fastest->impl,        fastest->median_ms,
+                         fastest->median_ms / core.median_ms,     core.peak_rss_mb};
+    }
+    return goal;
+}
+
+nlohmann::json to_json(const BenchGoal& g) {
+    return {{"input", g.input}, {"levels", g.levels}, {"output_faces", g.output_faces}, {"core_ms", g.core_ms},
+            {"fastest_reference", g.fastest_reference}, {"fastest_reference_ms", g.fastest_reference_ms},
+            {"ratio", g.ratio}, {"target_ratio", kBenchGoalRatio}, {"met", g.met()}, {"core_peak_rss_mb", g.core_peak_rss_mb}};
 }
 
 }  // namespace crossdiv::verification

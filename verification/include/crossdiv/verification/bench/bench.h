@@ -6,6 +6,7 @@
 /// peak resident memory can be read from the kernel (wait4's ru_maxrss).
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,5 +45,32 @@ std::vector<BenchRecord> run_bench(const std::vector<BenchInput>& inputs, const 
 std::vector<BenchInput> default_bench_inputs(bool quick);
 
 nlohmann::json to_json(const BenchRecord& r);
+
+/// The median of timings: the middle one, or the mean of the two middle ones (every timing of
+/// the bench, Loop and curves alike, is summarised by this one definition).
+double median(std::vector<double> samples);
+
+/// The performance goal: core Loop at least this many times faster than the fastest
+/// reference on a closed mesh of about 20k faces refined 2 levels.
+inline constexpr double kBenchGoalRatio = 4.0;
+
+/// How the measured run stands against the goal.
+struct BenchGoal {
+    std::string input;
+    int levels = 0;
+    long long output_faces = 0;
+    double core_ms = 0;
+    std::string fastest_reference;
+    double fastest_reference_ms = 0;
+    double ratio = 0;  ///< fastest reference time / core time
+    double core_peak_rss_mb = 0;
+    bool met() const { return ratio >= kBenchGoalRatio; }
+};
+
+/// The goal's figures from the records (the last 2-level input of at least 19000 faces on
+/// which core and some reference ran); nothing when there is no such input.
+std::optional<BenchGoal> bench_goal(const std::vector<BenchRecord>& records);
+
+nlohmann::json to_json(const BenchGoal& g);
 
 }  // namespace crossdiv::verification

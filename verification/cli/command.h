@@ -1,0 +1,21 @@
+#pragma once
+// How a command group adds its subcommands to the crossdiv CLI: each subcommand keeps its
+// options in an Args struct (with add_to(CLI::App&)) and runs a function of them, whose exit
+// status becomes the program's.
+
+#include <CLI/CLI.hpp>
+#include <memory>
+
+namespace crossdiv::cli {
+
+/// Adds subcommand `name`; when the command line selects it, `run(args)` runs after parsing
+/// and its result is stored in `status`. Exceptions pass through to main.
+template <class Args>
+void add_command(CLI::App& app, const char* name, const char* help, int& status, int (*run)(const Args&)) {
+    auto args = std::make_shared<Args>();
+    CLI::App* sub = app.add_subcommand(name, help);
+    args->add_to(*sub);
+    sub->callback([args, run, &status] { status = run(*args); });
+}
+
+}  // namespace crossdiv::cli

@@ -1,0 +1,357 @@
+// The mesh subcommands of the crossdiv CLI: subdivide, compare, check, datasets, edgecases, diff.
+#include "mesh_commands.h"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+
+#include "command.h"
+#include "crossdiv/datasets/bundled.h"
+#include "crossdiv/datasets/edge_cases.h"
+#include "crossdiv/error.h"
+#include "crossdiv/io/mesh_io.h"
+#include "crossdiv/mesh/mesh_checks.h"
+#include "crossdiv/subdiv/loop.h"
+#include "crossdiv/subdiv/loop_split_flip.h"
+#include "crossdiv/verification/comparisons/loop_comparison.h"
+#include "crossdiv/verification/comparisons/shrink.h"
+#include "crossdiv/verification/harness/inputs.h"
+#include "crossdiv/verification/implementations/registry.h"
+#include "edit_commands.h"
+#include "scheme_commands.h"
+
+namespace crossdiv::cli {
+namespace {
+
+using namespace crossdiv::verification;
+
+struct SchemeArgs {
+    std::string scheme = "loop";
+    std::string weights = "loop";
+    std::string boundary;  ///< empty: the scheme's default (edge-only, chaikin-boundary, count-from-input)
+    int levels = 1;
+    std::string creasing;  ///< empty: the input's t creasemethod tag, else uniform
+
+    void add_scheme_options(CLI::App& app) {
+        app.add_option("--scheme", scheme, "Subdivision scheme")
+            ->check(CLI::IsMember({"loop", "catmull-clark", "doo-sabin", "sqrt3", "butterfly", "modified-butterfly"}))
+            ->capture_default_str();
+        app.add_option("--weights", weights, "Even-vertex weight family: loop (Loop 1987) or warren (3/(8n))")
+            ->check(CLI::IsMember({"loop", "warren"}))
+            ->capture_default_str();
+        app.add_option("--boundary", boundary,
+                       "Boundary rule. loop: edge-only (default) or edge-and-corner; catmull-clark: those and "
+                       "midpoint-average (OpenMesh's); doo-sabin: chaikin-boundary (default) or drop-border-faces "
+                       "(CGAL's); sqrt3, when the boundary is refined: count-from-input (default) or "
+                       "restart-each-level (a library called once per level)")
+            ->check(CLI::IsMember({"edge-only", "edge-and-corner", "midpoint-average", "chaikin-boundary",
+                                   "drop-border-faces", "count-from-input", "restart-each-level"}));
+        app.add_option("--levels", levels, "Number of subdivision levels")->check(CLI::Range(0, 12))->capture_default_str();
+        app.add_option("--crease-method", creasing,
+                       "Decay of semi-sharp crease tags (loop, catmull-clark): uniform (OpenSubdiv's default) or "
+                       "chaikin. Default: the input's 't creasemethod' tag, else uniform")
+            ->check(CLI::IsMember({"uniform", "chaikin"}));
+    }
+    PolySchemeArgs poly() const { return {scheme, boundary, levels, creasing}; }
+    LoopOptions options() const {
+        if (!boundary.empty() && boundary != "edge-only" && boundary != "edge-and-corner")
+            throw InputError("loop has no boundary rule '" + boundary + "' (edge-only, edge-and-corner)");
+        return {weights == "loop" ? LoopWeights::Loop : LoopWeights::Warren,
+                boundary == "edge-and-corner" ? LoopBoundary::EdgeAndCorner : LoopBoundary::EdgeOnly};
+    }
+};
+
+/// Loop output larger than this is refused before any work: core holds ~100 bytes per face
+/// over all levels and a reference several times that, so 64M faces is the most a 24 GB
+/// machine refines with the three references side by side.
+constexpr long long kMaxOutputFaces = 64LL << 20;
+
+void check_output_size(long long faces, int levels, const std::string& name) {
+    for (int l = 0; l < levels; ++l) faces *= 4;
+    if (faces > kMaxOutputFaces)
+        throw InputError(name + ": " + std::to_string(levels) + " levels would produce " + std::to_string(faces) +
+                         " faces, over the limit of " + std::to_string(kMaxOutputFaces) + "; use fewer levels");
+}
+
+void check_output_size(const TriMesh& mesh, int levels, const std::string& name) {
+    check_output_size(mesh.num_faces(), levels, name);
+}
+
+/// Loop on a crease-tagged input: core's generic step, or OpenSubdiv, the one reference with
+/// crease rules; the others (and split-and-flip) have none and refuse.
+int run_loop_subdivide_creased(const std::string& in, const PolyMesh& input, const SchemeArgs& s,
+                               const std::string& impl, const std::string& out) {
+    LoopOptions o = s.options();
+    o.creasing = crease_method(s.creasing, input);
+    check_output_size(input.num_faces(), s.levels, in);
+    PolyMesh result;
+    RefineRequest request{Scheme::Loop, {}, s.levels};
+    request.rule.loop = o;
+    const Implementation& chosen = find_implementation(impl == "split-flip" ? "core" : impl);
+    const SchemeSupport* support = chosen.support(Scheme::Loop);
+    if (impl != "split-flip" && support && support->creases) {
+        if (!chosen.applies(Scheme::Loop, request.rule))
+            throw InputError(impl + " has no Loop with weights=" + std::string(to_string(o.weights)));
+        try {
+            result = chosen.refine_last(input, request);
+        } catch (const adapters::Rejected& e) {
+            throw InputError(impl + " refused " + in + ": " + e.what());
+        }
+    } else {
+        throw InputError(in + " has crease or corner tags; " + impl +
+                         " has no crease rules (core and opensubdiv have; drop the tags to compare the smooth scheme)");
+    }
+    write_mesh(out, result);
+    fmt::print("{}: {} vertices, {} faces, {} crease and {} corner tag(s) -> {} ({} vertices, {} faces, {} level(s), "
+               "{} decay, {})\n",
+               in, input.num_vertices(), input.num_faces(), input.creases.edges.size(), input.creases.vertices.size(),
+               out, result.num_vertices(), result.num_faces(), s.levels, to_string(o.creasing), impl);
+    return 0;
+}
+
+int run_subdivide(const std::string& in, const SchemeArgs& s, const std::string& impl, const std::string& out) {
+    if (s.scheme != "loop") {
+        if (impl == "split-flip") throw InputError("split-flip is Loop's method; " + s.scheme + " has none");
+        return run_scheme_subdivide(in, s.poly(), impl, out);
+    }
+    const PolyMesh input = load_input(in);
+    if (!input.creases.empty()) return run_loop_subdivide_creased(in, input, s, impl, out);
+    const TriMesh mesh = to_tri_mesh(input, "Loop subdivision");
+    check_output_size(mesh, s.levels, in);
+    PolyMesh result;
+    if (impl == "core") {
+        result = to_poly_mesh(loop_subdivide(mesh, s.options(), s.levels));
+    } else if (impl == "split-flip") {
+        TriMesh level = mesh;
+        for (int l = 0; l < s.levels; ++l) level = loop_by_split_and_flip(level, s.options());
+        result = to_poly_mesh(level);
+    } else {
+        const Implementation& ref = *select_references(Scheme::Loop, {impl}).front();
+        RefineRequest request{Scheme::Loop, {}, s.levels};
+        request.rule.loop = s.options();
+        if (!ref.applies(Scheme::Loop, request.rule))
+            throw InputError(impl + " has no Loop with weights=" + s.weights + " boundary=" + std::string(to_string(s.options().boundary)));
+        result = ref.refine(input, request).back();
+    }
+    write_mesh(out, result);
+    fmt::print("{}: {} vertices, {} faces -> {} ({} vertices, {} faces, {} level(s), {})\n", in, mesh.num_vertices(),
+               mesh.num_faces(), out, result.num_vertices(), result.num_faces(), s.levels, impl);
+    return 0;
+}
+
+void print_table(const LoopComparison& c) {
+    fmt::print("\n{} ({} vertices, {} faces) loop weights={} boundary={} levels={} (core {:.3f} s)\n", c.input,
+               c.input_vertices, c.input_faces, to_string(c.options.weights), to_string(c.options.boundary), c.levels,
+               c.core_seconds);
+    fmt::print("  {:<11} {:<9} {:<13} {:<9} {:<8} {:>10} {:>10}  {}\n", "reference", "status", "verdict", "match",
+               "topology", "max rel", "rms rel", "class / explanation");
+    for (const ReferenceRun& r : c.runs) {
+        const bool ok = r.outcome.status == RunStatus::Ok;
+        fmt::print("  {:<11} {:<9} {:<13} {:<9} {:<8} {:>10} {:>10}  {}{}\n", r.reference,
+                   to_string(r.outcome.status), to_string(r.verdict),
+                   ok ? to_string(r.correspondence.method) : "-",
+                   ok ? (r.comparison.topology_equal() ? "equal" : "differs") : "-",
+                   ok ? fmt::format("{:.3g}", r.comparison.max_rel) : "-",
+                   ok ? fmt::format("{:.3g}", r.comparison.rms_rel) : "-",
+                   r.divergence_class == DivergenceClass::None ? "" : std::string(to_string(r.divergence_class)) + ": ",
+                   r.explanation);
+        if (ok && r.verdict == Verdict::Diverge)
+            for (const WorstVertex& w : r.comparison.worst)
+                fmt::print("      vertex {:>6} valence {:>2} {:<8} dist {:.3g}  core ({:.6g}, {:.6g}, {:.6g})  "
+                           "{} ({:.6g}, {:.6g}, {:.6g})\n",
+                           w.ours_index, w.valence, w.boundary ? "boundary" : "interior", w.distance, w.ours.x(),
+                           w.ours.y(), w.ours.z(), r.reference, w.ref.x(), w.ref.y(), w.ref.z());
+    }
+}
+
+int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, const std::string& against,
+                const std::string& json_path, double timeout, bool no_isolate) {
+    if (s.scheme != "loop") return run_scheme_compare(specs, s.poly(), against, json_path, timeout, no_isolate);
+    LoopComparisonRequest req;
+    req.options = s.options();
+    req.levels = s.levels;
+    req.timeout_seconds = timeout;
+    req.isolate = !no_isolate;
+    for (size_t b = 0, e; b < against.size(); b = e + 1) {
+        e = against.find(',', b);
+        if (e == std::string::npos) e = against.size();
+        if (e > b) req.references.push_back(against.substr(b, e - b));
+    }
+    select_references(Scheme::Loop, req.references);  // fail early on a typo
+
+    const std::vector<std::string> inputs = expand_inputs(specs);
+    if (inputs.empty()) throw InputError("no inputs (a collection folder may be absent)");
+    // Load and validate every input before running anything: bad input is exit 2.
+    // Crease-tagged inputs are compared with OpenSubdiv alone, level by level (the Loop
+    // comparison's other references have no crease rules).
+    std::vector<TriMesh> meshes;
+    std::vector<PolyMesh> tagged(inputs.size());
+    for (size_t i = 0; i < inputs.size(); ++i) {
+        PolyMesh m = load_input(inputs[i]);
+        if (!m.creases.empty()) {
+            tagged[i] = std::move(m);
+            meshes.emplace_back();
+            continue;
+        }
+        meshes.push_back(to_tri_mesh(m, "Loop subdivision"));
+        loop_input_connectivity(meshes.back());
+        check_output_size(meshes.back(), s.levels, inputs[i]);
+    }
+    nlohmann::json results = nlohmann::json::array();
+    bool all_agree = true;
+    for (size_t i = 0; i < inputs.size(); ++i) {
+        if (!tagged[i].creases.empty()) {
+            nlohmann::json record;
+            all_agree &= compare_loop_creases(tagged[i], inputs[i], s.weights, s.boundary,
+                                                   crease_method(s.creasing, tagged[i]), s.levels, timeout,
+                                                   !no_isolate, record);
+            results.push_back(record);
+            continue;
+        }
+        const LoopComparison c = compare_loop(meshes[i], inputs[i], req);
+        print_table(c);
+        all_agree &= c.all_agree();
+        results.push_back(to_json(c));
+    }
+    if (!json_path.empty()) write_json(json_path, {{"tool", "crossdiv compare"}, {"comparisons", results}});
+    fmt::print("\n{}\n", all_agree ? "every reference agrees" : "some references disagree (see above)");
+    return all_agree ? 0 : 1;
+}
+
+int run_check(const std::string& in) {
+    const PolyMesh mesh = load_input(in);
+    const auto issues = check_mesh(mesh);
+    int errors = 0;
+    for (const std::string& note : mesh.source.notes) fmt::print("note: {}\n", note);
+    for (const MeshIssue& i : issues) {
+        errors += i.severity == Severity::Error;
+        fmt::print("{} [{}] {}\n", i.severity == Severity::Error ? "error" : "warning", to_string(i.kind), i.message);
+    }
+    if (errors == 0) errors += print_halfedge_report(mesh);
+    fmt::print("{}: {} vertices, {} faces, {} error(s), {} warning(s)\n", in, mesh.num_vertices(), mesh.num_faces(),
+               errors, issues.size() - errors);
+    return errors ? 2 : 0;
+}
+
+int run_datasets(const std::string& dir) {
+    std::filesystem::create_directories(dir);
+    for (const auto& b : datasets::bundled_meshes()) {
+        const std::string path = (std::filesystem::path(dir) / (b.name + ".obj")).string();
+        write_mesh(path, b.mesh);
+        fmt::print("{:<48} {}\n", path, b.description);
+    }
+    return 0;
+}
+
+int run_edgecases(const std::string& dir) {
+    std::filesystem::create_directories(dir);
+    for (const auto& c : datasets::edge_cases()) {
+        const std::string path = (std::filesystem::path(dir) / (c.name + ".obj")).string();
+        write_mesh(path, c.mesh);
+        fmt::print("{:<48} {}{}\n", path, c.description, c.valid_loop_input ? "" : " [invalid Loop input]");
+    }
+    return 0;
+}
+
+int run_diff(const std::string& in, const SchemeArgs& s, const std::string& against, const std::string& out_dir) {
+    const TriMesh mesh = to_tri_mesh(load_input(in), "Loop subdivision");
+    loop_input_connectivity(mesh);
+    check_output_size(mesh, s.levels, in);
+    LoopComparisonRequest req;
+    req.options = s.options();
+    req.levels = s.levels;
+    req.references = {against};
+    select_references(Scheme::Loop, {against});
+    const ShrinkResult r = shrink_divergence(mesh, in, req);
+    const ReferenceRun& orig = r.original.runs[0];
+    fmt::print("{} ({} faces): {} diverges from core, class {}: {}\n", in, mesh.num_faces(), against,
+               to_string(r.divergence_class), orig.explanation);
+    std::filesystem::create_directories(out_dir);
+    const std::string ring = (std::filesystem::path(out_dir) / "neighbourhood.obj").string();
+    const std::string minimal = (std::filesystem::path(out_dir) / "minimal.obj").string();
+    write_mesh(ring, to_poly_mesh(r.neighbourhood));
+    write_mesh(minimal, to_poly_mesh(r.minimal));
+    const ReferenceRun& m = r.minimal_comparison.runs[0];
+    fmt::print("neighbourhood: {} ({} faces, {})\n", ring, r.neighbourhood.num_faces(),
+               r.k ? fmt::format("{}-ring of the worst vertex's coarse ancestors", r.k) : std::string("the whole mesh"));
+    fmt::print("minimal:       {} ({} faces, {} vertices) after {} comparisons: {} ({})\n", minimal, r.minimal.num_faces(),
+               r.minimal.num_vertices(), r.tests, to_string(m.divergence_class), m.explanation);
+    fmt::print("reproduce:     crossdiv compare {} --weights {} --boundary {} --levels {} --against {}\n", minimal,
+               s.weights, to_string(s.options().boundary), s.levels, against);
+    return 0;
+}
+
+struct SubdivideArgs {
+    std::string input, impl = "core", out;
+    SchemeArgs scheme;
+    void add_to(CLI::App& app) {
+        app.add_option("input", input, "Mesh file (.obj, .off) or bundled:NAME")->required();
+        scheme.add_scheme_options(app);
+        app.add_option("--impl", impl, "Implementation (split-flip: our Loop by edge splits and flips)")
+            ->check(CLI::IsMember({"core", "split-flip", "opensubdiv", "openmesh", "cgal"}))
+            ->capture_default_str();
+        app.add_option("-o,--output", out, "Output mesh (.obj, .off)")->required();
+    }
+};
+int subdivide_command(const SubdivideArgs& a) { return run_subdivide(a.input, a.scheme, a.impl, a.out); }
+
+struct CompareArgs {
+    std::vector<std::string> inputs;
+    SchemeArgs scheme;
+    std::string against, json;  // against empty: every reference that has the scheme
+    double timeout = 120;
+    bool no_isolate = false;
+    void add_to(CLI::App& app) {
+        app.add_option("inputs", inputs, "Mesh files, bundled:NAME, bundled:all, course:all, cgal:all")->required();
+        scheme.add_scheme_options(app);
+        app.add_option("--against", against,
+                       "Comma-separated references (default: every one that has the scheme; sqrt3 also has "
+                       "openmesh-one-call and cgal-one-call, all levels in one call)");
+        app.add_option("--json", json, "Write the results as JSON to this file");
+        app.add_option("--timeout", timeout, "Seconds a reference may run before it counts as hung")->capture_default_str();
+        app.add_flag("--no-isolate", no_isolate, "Run references in this process (debugging; a crash ends the run)");
+    }
+};
+int compare_command(const CompareArgs& a) { return run_compare(a.inputs, a.scheme, a.against, a.json, a.timeout, a.no_isolate); }
+
+struct CheckArgs {
+    std::string input;
+    void add_to(CLI::App& app) { app.add_option("input", input, "Mesh file or bundled:NAME")->required(); }
+};
+int check_command(const CheckArgs& a) { return run_check(a.input); }
+
+struct FolderArgs {
+    std::string out;
+    void add_to(CLI::App& app) { app.add_option("--out", out, "Output folder")->required(); }
+};
+int datasets_command(const FolderArgs& a) { return run_datasets(a.out); }
+int edgecases_command(const FolderArgs& a) { return run_edgecases(a.out); }
+
+struct DiffArgs {
+    std::string input, against, out = "diff-out";
+    SchemeArgs scheme;
+    void add_to(CLI::App& app) {
+        app.add_option("input", input, "Mesh file, bundled:NAME or edgecase:NAME")->required();
+        scheme.add_scheme_options(app);
+        app.add_option("--against", against, "The reference that diverges")
+            ->required()
+            ->check(CLI::IsMember({"opensubdiv", "openmesh", "cgal"}));
+        app.add_option("--out", out, "Output folder")->capture_default_str();
+    }
+};
+int diff_command(const DiffArgs& a) { return run_diff(a.input, a.scheme, a.against, a.out); }
+
+}  // namespace
+
+void add_mesh_commands(CLI::App& app, int& status) {
+    add_command<SubdivideArgs>(app, "subdivide", "Subdivide a mesh with core or a reference", status, subdivide_command);
+    add_command<CompareArgs>(app, "compare", "Compare core with reference libraries", status, compare_command);
+    add_command<CheckArgs>(app, "check", "Report every problem of a mesh, by element", status, check_command);
+    add_command<FolderArgs>(app, "datasets", "Write the bundled meshes as OBJ files", status, datasets_command);
+    add_command<FolderArgs>(app, "edgecases", "Write the edge-case catalog as OBJ files (one line each: what it tests)",
+                            status, edgecases_command);
+    add_command<DiffArgs>(app, "diff", "Shrink a divergence to the worst vertex's neighbourhood and a minimal mesh", status,
+                          diff_command);
+}
+
+}  // namespace crossdiv::cli
