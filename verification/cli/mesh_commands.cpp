@@ -53,11 +53,11 @@ struct SchemeArgs {
             ->check(CLI::IsMember({"uniform", "chaikin"}));
     }
     PolySchemeArgs poly() const { return {scheme, boundary, levels, creasing}; }
+    /// The Loop rule named by --weights and --boundary. @throws InputError for a rule Loop lacks.
     LoopOptions options() const {
-        if (!boundary.empty() && boundary != "edge-only" && boundary != "edge-and-corner")
-            throw InputError("loop has no boundary rule '" + boundary + "' (edge-only, edge-and-corner)");
-        return {weights == "loop" ? LoopWeights::Loop : LoopWeights::Warren,
-                boundary == "edge-and-corner" ? LoopBoundary::EdgeAndCorner : LoopBoundary::EdgeOnly};
+        LoopOptions o = rule_from_boundary_name(Scheme::Loop, boundary).loop;
+        o.weights = loop_weights_from_string(weights);
+        return o;
     }
 };
 

@@ -9,20 +9,6 @@ namespace {
 
 namespace cg = adapters::cgal;
 
-class CgalEdit final : public EditSession {
-public:
-    explicit CgalEdit(const TriMesh& base) : mesh_(base) {}
-    std::optional<bool> flip_ok(int, int) const override { return std::nullopt; }  // a precondition, not a query
-    void flip(int a, int b) override { mesh_.flip(a, b); }
-    int split(int a, int b) override { return mesh_.split(a, b); }
-    std::vector<std::string> check() const override { return mesh_.check(); }
-    std::vector<Triangle> faces() const override { return mesh_.faces(); }
-    std::vector<Vec3> positions() const override { return mesh_.positions(); }
-
-private:
-    cg::EditableMesh mesh_;
-};
-
 class Cgal final : public Implementation {
 public:
     Cgal()
@@ -60,7 +46,9 @@ public:
         return {n};
     }
 
-    std::unique_ptr<EditSession> open_edit(const TriMesh& base) const override { return std::make_unique<CgalEdit>(base); }
+    std::unique_ptr<EditSession> open_edit(const TriMesh& base) const override {
+        return std::make_unique<LibraryEditSession<cg::EditableMesh, false>>(base);
+    }
 
     adapters::ClosedMeshReport closed_mesh_report(const TriMesh& mesh) const override { return cg::closed_mesh_report(mesh); }
 };

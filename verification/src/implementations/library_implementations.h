@@ -46,6 +46,27 @@ inline SchemeRule sqrt3_rule(Sqrt3Parity p) {
     return r;
 }
 
+/// A library's editable mesh (the adapters' EditableMesh classes) as an edit session.
+/// `AnswersFlipOk`: whether the library can say if it would flip an edge (OpenMesh's
+/// is_flip_ok); where it cannot (CGAL), flipping a refused edge is a broken precondition.
+template <class Editable, bool AnswersFlipOk>
+class LibraryEditSession final : public EditSession {
+public:
+    explicit LibraryEditSession(const TriMesh& base) : mesh_(base) {}
+    std::optional<bool> flip_ok([[maybe_unused]] int a, [[maybe_unused]] int b) const override {
+        if constexpr (AnswersFlipOk) return mesh_.flip_ok(a, b);
+        else return std::nullopt;
+    }
+    void flip(int a, int b) override { mesh_.flip(a, b); }
+    int split(int a, int b) override { return mesh_.split(a, b); }
+    std::vector<std::string> check() const override { return mesh_.check(); }
+    std::vector<Triangle> faces() const override { return mesh_.faces(); }
+    std::vector<Vec3> positions() const override { return mesh_.positions(); }
+
+private:
+    Editable mesh_;
+};
+
 /// The triangle schemes' adapters take a TriMesh; a polygon is the library's refusal.
 inline TriMesh triangles_for(const PolyMesh& mesh, Scheme scheme) {
     try {

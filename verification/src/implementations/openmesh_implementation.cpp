@@ -14,20 +14,6 @@ namespace om = adapters::openmesh;
 constexpr int kSqrt3MaxValence = 49;
 constexpr const char* kSqrt3Table = "Sqrt3T::init_weights(50)";
 
-class OpenMeshEdit final : public EditSession {
-public:
-    explicit OpenMeshEdit(const TriMesh& base) : mesh_(base) {}
-    std::optional<bool> flip_ok(int a, int b) const override { return mesh_.flip_ok(a, b); }
-    void flip(int a, int b) override { mesh_.flip(a, b); }
-    int split(int a, int b) override { return mesh_.split(a, b); }
-    std::vector<std::string> check() const override { return mesh_.check(); }
-    std::vector<Triangle> faces() const override { return mesh_.faces(); }
-    std::vector<Vec3> positions() const override { return mesh_.positions(); }
-
-private:
-    om::EditableMesh mesh_;
-};
-
 class OpenMesh final : public Implementation {
 public:
     OpenMesh()
@@ -70,7 +56,9 @@ public:
         return out;
     }
 
-    std::unique_ptr<EditSession> open_edit(const TriMesh& base) const override { return std::make_unique<OpenMeshEdit>(base); }
+    std::unique_ptr<EditSession> open_edit(const TriMesh& base) const override {
+        return std::make_unique<LibraryEditSession<om::EditableMesh, true>>(base);
+    }
 };
 
 class OpenMeshOneCall final : public Implementation {
