@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -14,8 +13,7 @@
 #include "crossdiv/mesh/tri_mesh.h"
 #include "command.h"
 #include "crossdiv/error.h"
-#include "crossdiv/verification/bench/bench.h"
-#include "crossdiv/verification/implementations/registry.h"
+#include "crossdiv/verification/bench/curve_timing.h"
 #include "crossdiv/verification/properties/curve_checks.h"
 
 namespace crossdiv::cli {
@@ -214,8 +212,6 @@ json run_curve_bench(int repeats) {
     fmt::print("\nCurve tessellation: edges (measured max deviation) per mode at each distance tolerance\n");
     fmt::print("{:<28} {:>9}  {:>18} {:>18} {:>18} {:>18}\n", "curve", "tol", "uniform", "angle", "distance", "Wang");
     json rows = json::array(), timing = json::array();
-    const std::vector<const Implementation*> spline_refs = references_with(&Capabilities::spline_evaluation);
-    const Implementation* eigen = spline_refs.empty() ? nullptr : spline_refs.front();
     for (const auto& [input, file] : files) {
         for (size_t i = 0; i < file.curves.size(); ++i) {
             const CurveRecord& r = file.curves[i];
@@ -236,32 +232,7 @@ json run_curve_bench(int repeats) {
                                 {"wang_edges", row.wang_edges}, {"wang_dev", row.wang_dev}});
             }
             // Evaluation time: position, d1 and d2 at 1000 parameters per segment, ours vs Eigen.
-            if (!eigen || (r.type != CurveType::BSpline && r.type != CurveType::Bezier)) continue;
-            const BezierChain c = r.chain();
-            constexpr int kPerSegment = 1000;
-            std::vector<double> u;
-            for (int k = 0; k < c.num_segments(); ++k)
-                for (int j = 0; j < kPerSegment; ++j) u.push_back(k + (j + 0.5) / kPerSegment);
-            auto median_ms = [&](auto&& f) {
-                std::vector<double> ms;
-                for (int rep = 0; rep <= repeats; ++rep) {
-                    const auto t0 = std::chrono::steady_clock::now();
-                    f();
-                    if (rep > 0) ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
-                }
-                return median(ms);
-            };
-            double sink = 0;
-            const double ours = median_ms([&] {
-                for (double x : u) sink += chain_jet(c, x).d2.x();
-            });
-            const double theirs = median_ms([&] {
-                const auto s = eigen->evaluate_spline(
-                    r.type == CurveType::BSpline ? SplineKind::UniformCubicBSpline : SplineKind::ClampedBezier, r.control, u);
-                sink += s.d2.back().x();
-            });
-            timing.push_back({{"curve", label}, {"degree", c.degree}, {"evaluations", u.size()}, {"core_ms", ours},
-                              {"eigen_ms", theirs}, {"eigen_over_core", theirs / ours}, {"checksum", sink}});
+            if (const std::optional<CurveTiming> t = time_curve_evaluation(r, label, repeats)) timing.push_back(to_json(*t));
         }
     }
     if (!timing.empty()) {

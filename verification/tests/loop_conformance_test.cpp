@@ -31,9 +31,9 @@ void PrintTo(const Case& c, std::ostream* os) {
 std::string case_name(const Case& c) {
     // Collection first: the course folder and the bundled catalog both have an icosahedron.
     const std::filesystem::path p(c.input);
-    std::string n = c.input.starts_with("bundled:") ? "bundled_" + c.input.substr(8)
+    std::string n = c.input.starts_with("bundled:") ? std::string("bundled_").append(c.input.substr(8))
                                                     : p.parent_path().filename().string() + "_" + p.stem().string();
-    n += "_" + std::string(to_string(c.options.weights)) + "_" + std::string(to_string(c.options.boundary));
+    n.append("_").append(to_string(c.options.weights)).append("_").append(to_string(c.options.boundary));
     for (char& ch : n)
         if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
     return n;

@@ -20,7 +20,7 @@ std::string_view to_string(CurveType t) {
 }
 
 std::string CurveRecord::label(int index) const {
-    return name.empty() ? "#" + std::to_string(index) + " " + keyword : name;
+    return name.empty() ? std::string("#").append(std::to_string(index)).append(" ").append(keyword) : name;
 }
 
 BezierChain CurveRecord::chain() const {

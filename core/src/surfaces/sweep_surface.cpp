@@ -42,7 +42,8 @@ SweepSurface build_sweep(const CurveFile& file, int index, const SweepOptions& o
     const SweepRecord& rec = file.sweeps.at(index);
     SweepSurface out;
     out.record = rec;
-    out.name = rec.name.empty() ? "#" + std::to_string(index) + (rec.kind == SweepRecord::Kind::Revolution ? " srev" : " gcyl") : rec.name;
+    out.name = rec.name.empty() ? std::string("#").append(std::to_string(index)).append(rec.kind == SweepRecord::Kind::Revolution ? " srev" : " gcyl")
+                                : rec.name;
     const CurveRecord& profile = file.curves.at(rec.profile_index);
     try {
         const Polyline p = sample(profile, o);

@@ -70,14 +70,10 @@ CreaseComparison compare_creases(const PolyMesh& mesh, const std::string& name, 
     r.rule.loop = {LoopWeights::Loop, LoopBoundary::EdgeOnly, req.method};
     r.rule.catmull_clark = {CatmullClarkBoundary::EdgeOnly, req.method};
     IsolatedTrace it = run_isolated([&] { return ref->refine(mesh, r); }, req.timeout_seconds, req.isolate);
-    if (it.outcome.status != RunStatus::Ok) {
-        c.verdict = verdict_of_failed_run(it.outcome.status);
-        c.explanation = it.outcome.failure_explanation();
-        return c;
-    }
-    if (!c.core_error.empty()) {
-        c.verdict = Verdict::OursRejected;
-        c.explanation = "core refused the tags; OpenSubdiv refined the mesh (Far only warns about a bad tag)";
+    if (const std::optional<EarlyVerdict> early = verdict_before_comparing(
+            it.outcome, c.core_error, "core refused the tags; OpenSubdiv refined the mesh (Far only warns about a bad tag)")) {
+        c.verdict = early->verdict;
+        c.explanation = early->explanation;
         return c;
     }
     c.faces_equal = true;

@@ -43,14 +43,9 @@ LimitComparison compare(const std::string& name, const std::string& scheme, cons
     }
     const IsolatedTrace it = run_isolated(reference, 300, isolate);
     out.outcome = it.outcome;
-    if (it.outcome.status != RunStatus::Ok) {
-        out.verdict = verdict_of_failed_run(it.outcome.status);
-        out.explanation = it.outcome.failure_explanation();
-        return out;
-    }
-    if (!out.core_error.empty()) {
-        out.verdict = Verdict::OursRejected;
-        out.explanation = out.core_error;
+    if (const std::optional<EarlyVerdict> early = verdict_before_comparing(it.outcome, out.core_error, out.core_error)) {
+        out.verdict = early->verdict;
+        out.explanation = early->explanation;
         return out;
     }
     const adapters::LevelTrace& t = *it.trace;

@@ -112,21 +112,19 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
         IsolatedTrace it =
             run_isolated([&] { return ref.refine(input, {req.scheme, req.rule, req.levels}); }, req.timeout_seconds, req.isolate);
         run.outcome = it.outcome;
-        if (run.outcome.status != RunStatus::Ok) {
-            run.verdict = verdict_of_failed_run(run.outcome.status);
-            run.explanation = run.outcome.failure_explanation();
+        const auto made = [&] {
+            const PolyMesh& m = it.trace->back();
+            return "core refused the input; " + ref.name() + " made a mesh of " + std::to_string(m.num_vertices()) +
+                   " vertices and " + std::to_string(m.num_faces()) + " faces";
+        };
+        if (const std::optional<EarlyVerdict> early =
+                verdict_before_comparing(run.outcome, out.core_error, it.trace ? made() : std::string())) {
+            run.verdict = early->verdict;
+            run.explanation = early->explanation;
             out.runs.push_back(std::move(run));
             continue;
         }
         const PolyMesh& theirs = it.trace->back();
-        if (!out.core_error.empty()) {
-            run.verdict = Verdict::OursRejected;
-            run.explanation = "core refused the input; " + ref.name() + " made a mesh of " +
-                              std::to_string(theirs.num_vertices()) + " vertices and " +
-                              std::to_string(theirs.num_faces()) + " faces";
-            out.runs.push_back(std::move(run));
-            continue;
-        }
         const PolyMesh same_rule_mesh = rules_differ ? subdivide(req.scheme, ref_rule, input, req.levels) : ours;
         // Match against core with the reference's rule: positions then coincide up to
         // rounding, so nearest-neighbour matching is sound even where the requested rule

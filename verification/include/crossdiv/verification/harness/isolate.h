@@ -24,12 +24,6 @@ enum class RunStatus {
 /// "ok", "rejected", "threw", "crashed", "timeout".
 const char* to_string(RunStatus status);
 
-/// The verdict on a reference run that made no result: ref-rejected when it refused,
-/// ref-crashed when it threw, crashed or hung.
-inline Verdict verdict_of_failed_run(RunStatus status) {
-    return status == RunStatus::Rejected ? Verdict::RefRejected : Verdict::RefCrashed;
-}
-
 struct RunOutcome {
     RunStatus status = RunStatus::Ok;
     std::string message;  ///< the library's or exception's words; the signal name when crashed
@@ -39,6 +33,28 @@ struct RunOutcome {
     /// What a failed run's verdict explains: a refusal in the library's words, else summary().
     std::string failure_explanation() const { return status == RunStatus::Rejected ? message : summary(); }
 };
+
+/// The verdict on a reference run that made no result: ref-rejected when it refused,
+/// ref-crashed when it threw, crashed or hung.
+inline Verdict verdict_of_failed_run(RunStatus status) {
+    return status == RunStatus::Rejected ? Verdict::RefRejected : Verdict::RefCrashed;
+}
+
+/// A verdict reached before anything is compared, with its explanation.
+struct EarlyVerdict {
+    Verdict verdict;
+    std::string explanation;
+};
+
+/// The verdict of a comparison that has nothing to compare: the reference made no result
+/// (ref-rejected or ref-crashed, in its words), or core refused the input (`core_error`) while
+/// the reference made one (ours-rejected, explained by `ours_rejected`). Nothing when both made one.
+inline std::optional<EarlyVerdict> verdict_before_comparing(const RunOutcome& reference, const std::string& core_error,
+                                                            const std::string& ours_rejected) {
+    if (reference.status != RunStatus::Ok) return EarlyVerdict{verdict_of_failed_run(reference.status), reference.failure_explanation()};
+    if (!core_error.empty()) return EarlyVerdict{Verdict::OursRejected, ours_rejected};
+    return std::nullopt;
+}
 
 struct IsolatedTrace {
     RunOutcome outcome;

@@ -15,6 +15,11 @@ namespace crossdiv::verification {
 
 /// One measured check: `measured` must not exceed `tolerance` (both in the unit `unit`).
 struct Check {
+    Check(std::string subject, std::string check, std::string reference, double measured, double tolerance,
+          std::string unit, std::string note, std::optional<Outcome> decided = std::nullopt)
+        : subject(std::move(subject)), check(std::move(check)), reference(std::move(reference)), measured(measured),
+          tolerance(tolerance), unit(std::move(unit)), note(std::move(note)), decided(decided) {}
+
     std::string subject;    ///< what was checked: a curve's label, a surface, a study's row
     std::string check;      ///< which property: "position", "d1", "continuity-c1", "watertight", ...
     std::string reference;  ///< what it is compared with: "eigen", "bernstein", "analytic", "cgal", ...
