@@ -3,7 +3,11 @@
 
 #include <fmt/format.h>
 
+#include <fmt/ranges.h>
+
 #include <filesystem>
+#include <map>
+#include <set>
 
 #include "command.h"
 #include "crossdiv/datasets/bundled.h"
@@ -16,6 +20,7 @@
 #include "crossdiv/verification/comparisons/loop_comparison.h"
 #include "crossdiv/verification/comparisons/shrink.h"
 #include "crossdiv/verification/harness/inputs.h"
+#include "crossdiv/verification/implementations/program_implementation.h"
 #include "crossdiv/verification/implementations/registry.h"
 #include "edit_commands.h"
 #include "scheme_commands.h"
@@ -139,10 +144,44 @@ int run_subdivide(const std::string& in, const SchemeArgs& s, const std::string&
     return 0;
 }
 
+/// The subject's run, its match to core and the rule fits of each vertex class.
+void print_subject(const LoopComparison& c) {
+    if (c.subject_outcome.status != RunStatus::Ok) {
+        fmt::print("  subject '{}' failed: {}\n", c.subject, c.subject_outcome.summary());
+        return;
+    }
+    if (!c.subject_unmatched.empty()) {
+        fmt::print("  subject '{}': {}\n", c.subject, c.subject_unmatched);
+        return;
+    }
+    fmt::print("  subject '{}' ran in {:.3f} s; vertices matched to core's by {}\n", c.subject, c.subject_outcome.seconds,
+               to_string(c.subject_match.method));
+    if (!c.rules) return;
+    const std::vector<LoopOptions> rules = loop_named_rules();
+    fmt::print("  {:<22} {:>7}", c.rules->classified_level ? fmt::format("class at level {}", c.rules->classified_level)
+                                                           : std::string("whole mesh"),
+               "count");
+    for (const LoopOptions& o : rules) fmt::print(" {:>16}", fmt::format("{}/{}", to_string(o.weights), to_string(o.boundary)));
+    fmt::print("\n");
+    auto cell = [](const RuleFit& f) { return fmt::format("{}{:.2g}", f.fits ? "= " : "  ", f.max_rel); };
+    for (const VertexClassRow& r : c.rules->rows) {
+        fmt::print("  {:<22} {:>7}", r.valence ? fmt::format("{} (valence {})", to_string(r.cls), r.valence) : to_string(r.cls),
+                   r.count);
+        for (const RuleFit& f : r.fits) fmt::print(" {:>16}", cell(f));
+        fmt::print("\n");
+    }
+    fmt::print("  {:<22} {:>7}", "every compared level", "");
+    for (const RuleFit& f : c.rules->whole) fmt::print(" {:>16}", cell(f));
+    fmt::print("\n  rule: {}\n", c.rules->rule ? "weights=" + std::string(to_string(c.rules->rule->weights)) + " boundary=" +
+                                                     std::string(to_string(c.rules->rule->boundary))
+                                               : std::string("no named rule fits"));
+}
+
 void print_table(const LoopComparison& c) {
     fmt::print("\n{} ({} vertices, {} faces) loop weights={} boundary={} levels={} (core {:.3f} s)\n", c.input,
                c.input_vertices, c.input_faces, to_string(c.options.weights), to_string(c.options.boundary), c.levels,
                c.core_seconds);
+    if (c.subject != "core") print_subject(c);
     fmt::print("  {:<11} {:<9} {:<13} {:<9} {:<8} {:>10} {:>10}  {}\n", "reference", "status", "verdict", "match",
                "topology", "max rel", "rms rel", "class / explanation");
     for (const ReferenceRun& r : c.runs) {
@@ -157,17 +196,55 @@ void print_table(const LoopComparison& c) {
                    r.explanation);
         if (ok && r.verdict == Verdict::Diverge)
             for (const WorstVertex& w : r.comparison.worst)
-                fmt::print("      vertex {:>6} valence {:>2} {:<8} dist {:.3g}  core ({:.6g}, {:.6g}, {:.6g})  "
+                fmt::print("      vertex {:>6} valence {:>2} {:<8} dist {:.3g}  {} ({:.6g}, {:.6g}, {:.6g})  "
                            "{} ({:.6g}, {:.6g}, {:.6g})\n",
-                           w.ours_index, w.valence, w.boundary ? "boundary" : "interior", w.distance, w.ours.x(),
+                           w.ours_index, w.valence, w.boundary ? "boundary" : "interior", w.distance, c.subject, w.ours.x(),
                            w.ours.y(), w.ours.z(), r.reference, w.ref.x(), w.ref.y(), w.ref.z());
     }
 }
 
+/// What the subject's runs over every input say, in one line, and whether it failed.
+struct SubjectVerdict {
+    RuleTally rules;
+    std::map<std::string, std::pair<int, int>> reference_agreement;  ///< agreeing runs, runs
+    std::set<std::string> classes;
+    int inputs = 0, failures = 0, unexplained = 0;
+
+    void add(const LoopComparison& c) {
+        ++inputs;
+        if (c.subject_failed()) {
+            ++failures;
+            return;
+        }
+        if (c.rules) rules.add(*c.rules);
+        for (const ReferenceRun& r : c.runs) {
+            auto& [agree, runs] = reference_agreement[r.reference];
+            ++runs;
+            agree += r.verdict == Verdict::Agree;
+            if (r.verdict == Verdict::Diverge) classes.insert(to_string(r.divergence_class));
+            unexplained += r.verdict == Verdict::Diverge && r.divergence_class == DivergenceClass::Unexplained;
+        }
+    }
+    std::string line(const std::string& name) const {
+        std::vector<std::string> agreeing;
+        for (const auto& [ref, counts] : reference_agreement)
+            if (counts.first == counts.second && counts.second > 0) agreeing.push_back(ref);
+        std::string refs = agreeing.empty() ? "agrees with no reference" : "agrees with " + fmt::format("{}", fmt::join(agreeing, ", "));
+        if (!classes.empty()) refs += fmt::format(" ({})", fmt::join(classes, ", "));
+        std::string s = fmt::format("subject '{}': {}; {}; {}", name, rules.rule_phrase(), refs, rules.core_phrase());
+        if (failures) s += fmt::format("; failed on {} of {} inputs", failures, inputs);
+        return s;
+    }
+};
+
 int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, const std::string& against,
-                const std::string& json_path, double timeout, bool no_isolate) {
-    if (s.scheme != "loop") return run_scheme_compare(specs, s.poly(), against, json_path, timeout, no_isolate);
+                const std::string& json_path, double timeout, bool no_isolate, const Implementation* subject) {
+    if (s.scheme != "loop") {
+        if (subject) throw InputError("a subject is compared under the Loop scheme so far (--scheme loop)");
+        return run_scheme_compare(specs, s.poly(), against, json_path, timeout, no_isolate);
+    }
     LoopComparisonRequest req;
+    req.subject = subject;
     req.options = s.options();
     req.levels = s.levels;
     req.timeout_seconds = timeout;
@@ -199,8 +276,13 @@ int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, cons
     }
     nlohmann::json results = nlohmann::json::array();
     bool all_agree = true;
+    SubjectVerdict verdict;
     for (size_t i = 0; i < inputs.size(); ++i) {
         if (!tagged[i].creases.empty()) {
+            if (subject) {
+                fmt::print("\n{}: crease tags; a subject is compared on untagged meshes so far (skipped)\n", inputs[i]);
+                continue;
+            }
             nlohmann::json record;
             all_agree &= compare_loop_creases(tagged[i], inputs[i], s.weights, s.boundary,
                                                    crease_method(s.creasing, tagged[i]), s.levels, timeout,
@@ -211,9 +293,16 @@ int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, cons
         const LoopComparison c = compare_loop(meshes[i], inputs[i], req);
         print_table(c);
         all_agree &= c.all_agree();
+        if (subject) verdict.add(c);
         results.push_back(to_json(c));
     }
     if (!json_path.empty()) write_json(json_path, {{"tool", "crossdiv compare"}, {"comparisons", results}});
+    if (subject) {
+        // A subject fails when it fails to run or diverges unexplained; a named rule it follows
+        // that a reference lacks is a diagnosis, not a failure.
+        fmt::print("\n{}\n", verdict.line(subject->name()));
+        return verdict.failures || verdict.unexplained ? 1 : 0;
+    }
     fmt::print("\n{}\n", all_agree ? "every reference agrees" : "some references disagree (see above)");
     return all_agree ? 0 : 1;
 }
@@ -301,6 +390,7 @@ struct CompareArgs {
     std::string against, json;  // against empty: every reference that has the scheme
     double timeout = 120;
     bool no_isolate = false;
+    std::string subject, subject_name = "subject", subject_levels = "each", subject_result;
     void add_to(CLI::App& app) {
         app.add_option("inputs", inputs, "Mesh files, bundled:NAME, bundled:all, course:all, cgal:all")->required();
         scheme.add_scheme_options(app);
@@ -310,9 +400,31 @@ struct CompareArgs {
         app.add_option("--json", json, "Write the results as JSON to this file");
         app.add_option("--timeout", timeout, "Seconds a reference may run before it counts as hung")->capture_default_str();
         app.add_flag("--no-isolate", no_isolate, "Run references in this process (debugging; a crash ends the run)");
+        app.add_option("--subject", subject,
+                       "Put a program under test in core's place: a command template such as "
+                       "'python3 loop.py {in} {levels} {out}' ({in} {in.off} {out} {out.off} {levels} {scheme} "
+                       "{weights} {boundary}); run without a shell, in a temporary folder, with --timeout per run");
+        app.add_option("--subject-name", subject_name, "The subject's name in the results")->capture_default_str();
+        app.add_option("--subject-levels", subject_levels,
+                       "each: run the subject once per level 1..N and compare every level; final: once, for level N")
+            ->check(CLI::IsMember({"each", "final"}))
+            ->capture_default_str();
+        app.add_option("--subject-result", subject_result,
+                       "Put a result file under test (OBJ or OFF a program already wrote), compared at --levels")
+            ->excludes("--subject");
     }
 };
-int compare_command(const CompareArgs& a) { return run_compare(a.inputs, a.scheme, a.against, a.json, a.timeout, a.no_isolate); }
+int compare_command(const CompareArgs& a) {
+    std::unique_ptr<Implementation> subject;
+    if (!a.subject.empty())
+        subject = make_program_implementation({a.subject_name, a.subject, {Scheme::Loop}, level_mode_from_string(a.subject_levels),
+                                               Precision::Double, a.timeout});
+    if (!a.subject_result.empty()) {
+        if (a.inputs.size() != 1) throw InputError("--subject-result compares one result file with one input");
+        subject = make_result_file_implementation(a.subject_name, a.subject_result, Scheme::Loop);
+    }
+    return run_compare(a.inputs, a.scheme, a.against, a.json, a.timeout, a.no_isolate, subject.get());
+}
 
 struct CheckArgs {
     std::string input;

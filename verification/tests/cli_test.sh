@@ -183,5 +183,20 @@ if [ -d "$dae" ]; then
   done
 fi
 
+# A program under test in core's place (examples/subjects): its rule named, its failures named.
+root="$(cd "$(dirname "$0")/../.." && pwd)"
+student="python3 $root/examples/subjects/python-loop/loop.py {in} {levels} {out}"
+expect subject-rule 0 "subject 'student': Loop scheme, weights=warren at interior vertices \(valence 5\)" -- \
+  "$crossdiv" compare bundled:icosahedron --levels 2 --subject "$student" --subject-name student
+expect subject-crash 1 "subject 'subject' failed: crashed: signal 11" -- \
+  "$crossdiv" compare bundled:tetrahedron --levels 1 --subject "python3 $root/verification/tests/subjects/misbehaving_subject.py crash {in} {levels} {out}"
+expect subject-bad-template 2 "unknown placeholder \{outfile\}" -- \
+  "$crossdiv" compare bundled:tetrahedron --subject "prog {in} {outfile}"
+"$crossdiv" subdivide bundled:octahedron --levels 2 -o "$tmp/submitted.obj" > /dev/null
+expect subject-result 0 "agrees with opensubdiv" -- \
+  "$crossdiv" compare bundled:octahedron --levels 2 --subject-result "$tmp/submitted.obj" --against opensubdiv
+expect subject-result-wrong-level 1 "wrong-count: .*submitted.obj: 66 vertices, 128 faces; loop makes 18 vertices, 32 faces" -- \
+  "$crossdiv" compare bundled:octahedron --levels 1 --subject-result "$tmp/submitted.obj" --against opensubdiv
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -30,4 +30,11 @@ private:
     int line_;
 };
 
+/// A number in an input file reads as NaN or infinity: a ParseError of its own kind, so
+/// that a harness reading another program's output can name it as a non-finite result.
+class NonFiniteNumber : public ParseError {
+public:
+    using ParseError::ParseError;
+};
+
 }  // namespace crossdiv

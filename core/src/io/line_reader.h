@@ -45,7 +45,8 @@ public:
         auto [p, ec] = std::from_chars(t.data(), t.data() + t.size(), x);
         if (ec != std::errc() || p != t.data() + t.size())
             fail(std::string("'") + std::string(t) + "' is not a number (" + what + ")");
-        if (!std::isfinite(x)) fail(std::string(what) + " is " + std::string(t) + "; numbers must be finite");
+        if (!std::isfinite(x))
+            throw NonFiniteNumber(name_, number_, std::string(what) + " is " + std::string(t) + "; numbers must be finite");
         return x;
     }
     /// Parses a whole token as an integer.

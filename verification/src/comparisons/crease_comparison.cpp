@@ -69,7 +69,7 @@ CreaseComparison compare_creases(const PolyMesh& mesh, const std::string& name, 
     RefineRequest r{scheme, {}, req.levels};
     r.rule.loop = {LoopWeights::Loop, LoopBoundary::EdgeOnly, req.method};
     r.rule.catmull_clark = {CatmullClarkBoundary::EdgeOnly, req.method};
-    IsolatedTrace it = run_isolated([&] { return ref->refine(mesh, r); }, req.timeout_seconds, req.isolate);
+    IsolatedTrace it = refine_isolated(*ref, mesh, r, req.timeout_seconds, req.isolate);
     if (const std::optional<EarlyVerdict> early = verdict_before_comparing(
             it.outcome, c.core_error, "core refused the tags; OpenSubdiv refined the mesh (Far only warns about a bad tag)")) {
         c.verdict = early->verdict;

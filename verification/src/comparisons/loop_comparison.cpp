@@ -45,6 +45,7 @@ CoreRun run_core(const TriMesh& input, const LoopOptions& options, int levels) {
 std::vector<double> level_errors(const CoreRun& core, const adapters::LevelTrace& ref, const Correspondence& c) {
     std::vector<double> e;
     for (size_t l = 1; l < ref.size(); ++l) {
+        if (core.levels[l - 1].num_vertices() == 0) continue;  // a level the subject was not asked for
         if (l < c.level_maps.size())
             e.push_back(max_relative_distance(core.levels[l - 1], ref[l], c.level_maps[l]));
         else if (l + 1 == ref.size())
@@ -96,8 +97,8 @@ std::optional<ErrorField> error_field(const CoreRun& ours, const adapters::Level
         const std::vector<int>* map = l < static_cast<int>(c.level_maps.size()) ? &c.level_maps[l]
                                       : l == levels                             ? &c.ref_to_ours
                                                                                 : nullptr;
-        if (!map) continue;
         const PolyMesh& mesh = ours.levels[l - 1];
+        if (!map || mesh.num_vertices() == 0) continue;
         if (level_max_rel.at(k++) <= req.tolerance && l < levels) continue;
         if (mesh.num_faces() > req.error_field_max_faces) return std::nullopt;
         return ErrorField{l, mesh, vertex_distances(mesh, ref[l], *map)};
@@ -115,7 +116,7 @@ IsolatedTrace run_reference(const Implementation& ref, const TriMesh& input, con
     asked.rule = ref.closest_rule(Scheme::Loop, asked.rule);
     run.ran_with = asked.rule.loop;
     const PolyMesh mesh = to_poly_mesh(input);
-    IsolatedTrace iso = run_isolated([&] { return ref.refine(mesh, asked); }, req.timeout_seconds, req.isolate);
+    IsolatedTrace iso = refine_isolated(ref, mesh, asked, req.timeout_seconds, req.isolate);
     run.outcome = iso.outcome;
     return iso;
 }
@@ -130,6 +131,39 @@ LoopComparison empty_comparison(const TriMesh& input, const std::string& name, c
     out.tier = req.tier;
     out.tolerance = req.tolerance;
     return out;
+}
+
+/// The subject's levels renumbered into core's: level by level through provenance where the
+/// subject keeps old vertices first (as the libraries do), else each level matched by
+/// position to core's level. Levels the subject did not make stay empty. The method is the
+/// weakest one any level needed; None when some level has no bijection (the note says which).
+Correspondence renumber_subject(const CoreRun& core, const PolyMesh& input, const adapters::LevelTrace& trace,
+                                CoreRun& subject) {
+    subject.options = core.options;
+    subject.origins = core.origins;
+    subject.levels.assign(core.levels.size(), PolyMesh{});
+    Correspondence c = match_loop_refinement(core.origins, input.positions, trace, core.levels.back().positions);
+    if (c.method == MatchMethod::Order || c.method == MatchMethod::Topology) {
+        for (size_t l = 1; l < trace.size(); ++l) subject.levels[l - 1] = renumber(trace[l], c.level_maps[l]);
+        return c;
+    }
+    const std::string topological = c.note;
+    c = Correspondence{};
+    c.method = MatchMethod::Nearest;
+    for (size_t l = 1; l < trace.size(); ++l) {
+        if (trace[l].num_vertices() == 0) continue;
+        const Correspondence m = match_nearest_and_faces(core.levels[l - 1], trace[l]);
+        if (m.method == MatchMethod::None) {
+            c.method = MatchMethod::None;
+            c.note = "level " + std::to_string(l) + ": " + m.note + " (" + topological + ")";
+            return c;
+        }
+        if (m.method == MatchMethod::NearestAndFaces) c.method = MatchMethod::NearestAndFaces;
+        subject.levels[l - 1] = renumber(trace[l], m.ref_to_ours);
+        c.ref_to_ours = m.ref_to_ours;
+    }
+    c.note = topological;
+    return c;
 }
 
 std::vector<const Implementation*> selected_references(const LoopComparisonRequest& req) {
@@ -176,6 +210,32 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
         return core.back();
     };
 
+    // The implementation under test: core with the requested rule, or the subject in core's
+    // numbering with the rule it is measured to follow (none when no named rule fits).
+    const CoreRun* under_test = &core.front();
+    CoreRun subject;
+    std::optional<LoopOptions> subject_rule = req.options;
+    const std::string subject_name = req.subject ? req.subject->name() : "core";
+    if (req.subject) {
+        out.subject = subject_name;
+        RefineRequest asked{Scheme::Loop, {}, req.levels};
+        asked.rule.loop = req.options;
+        const PolyMesh mesh = to_poly_mesh(input);
+        IsolatedTrace iso = refine_isolated(*req.subject, mesh, asked, req.timeout_seconds, req.isolate);
+        out.subject_outcome = iso.outcome;
+        if (iso.outcome.status != RunStatus::Ok) return out;
+        out.subject_match = renumber_subject(core.front(), mesh, *iso.trace, subject);
+        if (out.subject_match.method == MatchMethod::None) {
+            out.subject_unmatched = "no vertex correspondence with core's refinement: " + out.subject_match.note;
+            return out;
+        }
+        std::vector<std::vector<PolyMesh>> by_rule;
+        for (const LoopOptions& o : loop_named_rules()) by_rule.push_back(core_with(o).levels);
+        out.rules = identify_loop_rule(mesh, subject.levels, by_rule, core.front().origins, req.options, req.tolerance);
+        subject_rule = out.rules->rule;
+        under_test = &subject;
+    }
+
     // Each matched reference's last level in our vertex order, to report every
     // implementation's value at the case's worst vertex.
     std::map<std::string, std::vector<Vec3>> in_our_order;
@@ -189,8 +249,9 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
             continue;
         }
         const adapters::LevelTrace& trace = *iso.trace;
-        const CoreRun& ours = core.front();
-        run.correspondence = match_loop_refinement(ours.origins, input.positions, trace, ours.levels.back().positions);
+        const CoreRun& ours = *under_test;
+        run.correspondence =
+            match_loop_refinement(ours.origins, input.positions, trace, core.front().levels.back().positions);
         if (req.tier == Tier::Geometric) {
             const double d = bounding_box_diagonal(ours.levels.back().positions);
             run.hausdorff_rel = hausdorff_vertex_sets(ours.levels.back().positions, trace.back().positions) / (d > 0 ? d : 1);
@@ -256,8 +317,13 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
                                                                  " ulps of the largest coordinate" + worst};
         };
         std::string still;  // what core with the reference's rule still differs by, when it does
+        // The rule the implementation under test applies, as seen against this reference: of
+        // the named rules that fit the subject, the one nearest the reference's (on a closed
+        // mesh both boundary rules fit, and only the weights can tell them apart).
+        const std::optional<LoopOptions> applied_rule =
+            req.subject && out.rules ? nearest_fitting_rule(*out.rules, run.ran_with) : subject_rule;
         tests.reference_rule = [&]() -> std::optional<Classification> {
-            if (!same_faces || run.ran_with == req.options) return std::nullopt;
+            if (!same_faces || !applied_rule || run.ran_with == *applied_rule) return std::nullopt;
             // Measured, not assumed: rerun core with the reference's rule; if that agrees, the
             // rule difference explains the whole divergence. Whatever the tier, the rule
             // explains the divergence only if core with that rule equals the reference up to
@@ -276,11 +342,16 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
             }
             SchemeRule applied, requested;
             applied.loop = run.ran_with;
-            requested.loop = req.options;
-            return Classification{rule_difference_class(Scheme::Loop, applied, requested),
-                                  ref->name() + " has no " + describe(req.options) + "; run with " + describe(run.ran_with) +
-                                      " it agrees with core's " + describe(run.ran_with) + " to " + sci(c2.max_rel) +
-                                      ", and differs from the requested rule by " + sci(run.comparison.max_rel) + worst};
+            requested.loop = *applied_rule;
+            const DivergenceClass cls = rule_difference_class(Scheme::Loop, applied, requested);
+            if (req.subject)
+                return Classification{cls, subject_name + " applies " + describe(*applied_rule) + ", " + ref->name() + " " +
+                                               describe(run.ran_with) + " (it agrees with core's " + describe(run.ran_with) +
+                                               " to " + sci(c2.max_rel) + "); they differ by " +
+                                               sci(run.comparison.max_rel) + worst};
+            return Classification{cls, ref->name() + " has no " + describe(req.options) + "; run with " + describe(run.ran_with) +
+                                           " it agrees with core's " + describe(run.ran_with) + " to " + sci(c2.max_rel) +
+                                           ", and differs from the requested rule by " + sci(run.comparison.max_rel) + worst};
         };
         tests.topology = [&]() -> std::optional<Classification> {
             if (same_faces) return std::nullopt;
@@ -290,8 +361,10 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
                                       std::to_string(run.comparison.faces_only_in_ours) + " only in core"};
         };
         tests.unexplained = [&] {
-            return run.ran_with == req.options ? "same rules, differs by " + sci(run.comparison.max_rel) + worst
-                                               : "differs by " + sci(run.comparison.max_rel) + worst + still;
+            if (req.subject && !subject_rule)
+                return subject_name + " follows no named rule; differs by " + sci(run.comparison.max_rel) + worst;
+            return run.ran_with == subject_rule ? "same rules, differs by " + sci(run.comparison.max_rel) + worst
+                                                : "differs by " + sci(run.comparison.max_rel) + worst + still;
         };
         const Classification found = classify_divergence(tests);
         run.divergence_class = found.cls;
@@ -306,7 +379,8 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
             worst_run = &r;
     if (worst_run) {
         const WorstVertex& w = worst_run->comparison.worst[0];
-        out.worst_vertex = CaseWorstVertex{w.ours_index, w.valence, w.boundary, w.ours, {}};
+        out.worst_vertex = CaseWorstVertex{w.ours_index, w.valence, w.boundary, w.ours, std::nullopt, {}};
+        if (req.subject) out.worst_vertex->core_with_requested_rule = core.front().levels.back().positions[w.ours_index];
         for (const auto& [name, positions] : in_our_order) out.worst_vertex->reference_positions[name] = positions[w.ours_index];
     }
     return out;
@@ -337,6 +411,34 @@ LoopComparison compare_loop_refused(const TriMesh& input, const std::string& nam
     return out;
 }
 
+nlohmann::json subject_json(const LoopComparison& c) {
+    using nlohmann::json;
+    auto finite = [](double x) { return std::isfinite(x) ? json(x) : json(nullptr); };
+    auto fits = [&](const std::vector<RuleFit>& list) {
+        json a = json::array();
+        for (const RuleFit& f : list) a.push_back({{"rule", describe(f.rule)}, {"max_rel", finite(f.max_rel)}, {"fits", f.fits}});
+        return a;
+    };
+    json s = {{"name", c.subject},
+              {"status", to_string(c.subject_outcome.status)},
+              {"status_message", c.subject_outcome.message},
+              {"seconds", c.subject_outcome.seconds},
+              {"unmatched", c.subject_unmatched}};
+    if (c.subject_outcome.status == RunStatus::Ok)
+        s["match"] = {{"method", to_string(c.subject_match.method)}, {"note", c.subject_match.note}};
+    if (c.rules) {
+        json rows = json::array();
+        for (const VertexClassRow& r : c.rules->rows)
+            rows.push_back({{"class", to_string(r.cls)}, {"valence", r.valence}, {"count", r.count},
+                            {"worst_vertex", r.worst_vertex}, {"fits", fits(r.fits)}});
+        s["rules"] = {{"classified_level", c.rules->classified_level},
+                      {"rule", c.rules->rule ? json(describe(*c.rules->rule)) : json(nullptr)},
+                      {"whole", fits(c.rules->whole)},
+                      {"classes", rows}};
+    }
+    return s;
+}
+
 nlohmann::json to_json(const LoopComparison& c) {
     using nlohmann::json;
     auto options = [](const LoopOptions& o) {
@@ -355,6 +457,11 @@ nlohmann::json to_json(const LoopComparison& c) {
             at[name] = p.allFinite() ? vec(p) : json(nullptr);
         worst = {{"ours_index", c.worst_vertex->ours_index}, {"valence", c.worst_vertex->valence},
                  {"boundary", c.worst_vertex->boundary}, {"core", vec(c.worst_vertex->core)}, {"references", at}};
+        if (c.worst_vertex->core_with_requested_rule) {
+            // The subject's value under "subject"; "core" is then core's with the requested rule.
+            worst["subject"] = worst["core"];
+            worst["core"] = vec(*c.worst_vertex->core_with_requested_rule);
+        }
     }
     json runs = json::array();
     for (const ReferenceRun& r : c.runs) {
@@ -388,11 +495,13 @@ nlohmann::json to_json(const LoopComparison& c) {
         }
         runs.push_back(run);
     }
-    return {{"input", c.input},      {"input_vertices", c.input_vertices}, {"input_faces", c.input_faces},
+    json out = {{"input", c.input},      {"input_vertices", c.input_vertices}, {"input_faces", c.input_faces},
             {"scheme", "loop"},      {"options", options(c.options)},      {"levels", c.levels},
             {"core_seconds", c.core_seconds}, {"tier", to_string(c.tier)}, {"tolerance_rel", c.tolerance},
             {"core_error", c.core_error},     {"all_agree", c.all_agree()}, {"runs", runs},
             {"worst_vertex", worst}};
+    if (c.subject != "core") out["subject"] = subject_json(c);
+    return out;
 }
 
 }  // namespace crossdiv::verification

@@ -110,7 +110,7 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
         const bool rules_differ = !same_rule(req.scheme, ref_rule, req.rule);
         run.rule = rule_name(req.scheme, ref_rule);
         IsolatedTrace it =
-            run_isolated([&] { return ref.refine(input, {req.scheme, req.rule, req.levels}); }, req.timeout_seconds, req.isolate);
+            refine_isolated(ref, input, {req.scheme, req.rule, req.levels}, req.timeout_seconds, req.isolate);
         run.outcome = it.outcome;
         const auto made = [&] {
             const PolyMesh& m = it.trace->back();

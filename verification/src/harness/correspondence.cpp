@@ -218,4 +218,14 @@ Correspondence match_loop_refinement(const std::vector<std::vector<VertexOrigin>
     return c;
 }
 
+PolyMesh renumber(const PolyMesh& mesh, const std::vector<int>& to_ours) {
+    PolyMesh out = mesh;
+    for (size_t i = 0; i < to_ours.size(); ++i) out.positions[static_cast<size_t>(to_ours[i])] = mesh.positions[i];
+    if (mesh.colors.size() == to_ours.size())
+        for (size_t i = 0; i < to_ours.size(); ++i) out.colors[static_cast<size_t>(to_ours[i])] = mesh.colors[i];
+    for (int& v : out.face_vertices) v = to_ours[static_cast<size_t>(v)];
+    out.source = {};
+    return out;
+}
+
 }  // namespace crossdiv::verification

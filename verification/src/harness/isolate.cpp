@@ -62,6 +62,8 @@ IsolatedTrace run_here(const std::function<adapters::LevelTrace()>& fn) {
         r.trace = fn();
     } catch (const adapters::Rejected& e) {
         r.outcome = {RunStatus::Rejected, e.what(), 0};
+    } catch (const ImplementationFailure& e) {
+        r.outcome = {e.status(), e.what(), 0};
     } catch (const std::exception& e) {
         r.outcome = {RunStatus::Threw, e.what(), 0};
     }
@@ -92,6 +94,12 @@ const char* to_string(RunStatus status) {
         case RunStatus::Threw: return "threw";
         case RunStatus::Crashed: return "crashed";
         case RunStatus::Timeout: return "timeout";
+        case RunStatus::ExitStatus: return "exit-status";
+        case RunStatus::NoOutput: return "no-output";
+        case RunStatus::UnreadableOutput: return "unreadable-output";
+        case RunStatus::NonFiniteOutput: return "non-finite-output";
+        case RunStatus::WrongCount: return "wrong-count";
+        case RunStatus::NotTriangles: return "not-triangles";
     }
     return "unknown";
 }

@@ -1,23 +1,54 @@
 #include "crossdiv/verification/harness/process.h"
 
+#include <fcntl.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
+#include <sstream>
+#include <thread>
 
 #include "crossdiv/error.h"
 
 extern char** environ;
 
 namespace crossdiv::verification {
+namespace {
 
-int run_process(const std::vector<std::string>& argv) {
-    if (argv.empty()) throw InputError("run_process: no program given");
+std::vector<char*> c_argv(const std::vector<std::string>& argv) {
     std::vector<char*> args;
     for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
     args.push_back(nullptr);
+    return args;
+}
+
+/// posix_spawn's file actions and attributes, released on every path.
+struct SpawnSetup {
+    posix_spawn_file_actions_t actions;
+    posix_spawnattr_t attributes;
+    SpawnSetup() {
+        posix_spawn_file_actions_init(&actions);
+        posix_spawnattr_init(&attributes);
+    }
+    ~SpawnSetup() {
+        posix_spawn_file_actions_destroy(&actions);
+        posix_spawnattr_destroy(&attributes);
+    }
+    SpawnSetup(const SpawnSetup&) = delete;
+    SpawnSetup& operator=(const SpawnSetup&) = delete;
+};
+
+}  // namespace
+
+int run_process(const std::vector<std::string>& argv) {
+    if (argv.empty()) throw InputError("run_process: no program given");
+    std::vector<char*> args = c_argv(argv);
     std::fflush(nullptr);  // our buffered lines first, then the program's
     pid_t pid = 0;
     if (const int err = posix_spawnp(&pid, args[0], nullptr, nullptr, args.data(), environ); err != 0)
@@ -26,6 +57,70 @@ int run_process(const std::vector<std::string>& argv) {
     while (waitpid(pid, &status, 0) < 0)
         if (errno != EINTR) throw InputError("waiting for " + argv[0] + ": " + std::strerror(errno));
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+ProcessResult run_confined(const std::vector<std::string>& argv, const ProcessLimits& limits) {
+    ProcessResult r;
+    if (argv.empty()) {
+        r.start_error = "no program given";
+        return r;
+    }
+    SpawnSetup setup;
+    const char* out = limits.stdout_path.empty() ? "/dev/null" : limits.stdout_path.c_str();
+    const char* err = limits.stderr_path.empty() ? "/dev/null" : limits.stderr_path.c_str();
+    posix_spawn_file_actions_addopen(&setup.actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+    posix_spawn_file_actions_addopen(&setup.actions, STDOUT_FILENO, out, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_addopen(&setup.actions, STDERR_FILENO, err, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (!limits.working_dir.empty()) posix_spawn_file_actions_addchdir_np(&setup.actions, limits.working_dir.c_str());
+    // Its own process group: a time-out kills the interpreter and whatever it started.
+    posix_spawnattr_setflags(&setup.attributes, POSIX_SPAWN_SETPGROUP);
+    posix_spawnattr_setpgroup(&setup.attributes, 0);
+
+    std::vector<char*> args = c_argv(argv);
+    std::fflush(nullptr);
+    const auto t0 = std::chrono::steady_clock::now();
+    auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+    pid_t pid = 0;
+    if (const int e = posix_spawnp(&pid, args[0], &setup.actions, &setup.attributes, args.data(), environ); e != 0) {
+        r.start_error = "cannot start " + argv[0] + ": " + std::strerror(e);
+        return r;
+    }
+    r.started = true;
+    int status = 0;
+    for (auto pause = std::chrono::microseconds(200);;) {
+        const pid_t done = waitpid(pid, &status, WNOHANG);
+        if (done == pid) break;
+        if (done < 0 && errno != EINTR) break;
+        if (elapsed() > limits.timeout_seconds) {
+            kill(-pid, SIGKILL);
+            while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
+            r.timed_out = true;
+            break;
+        }
+        std::this_thread::sleep_for(pause);
+        pause = std::min(pause * 2, std::chrono::microseconds(20000));
+    }
+    // Whatever it left running in its group goes with it.
+    kill(-pid, SIGKILL);
+    r.seconds = elapsed();
+    if (!r.timed_out) {
+        if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
+        else r.exit_code = WEXITSTATUS(status);
+    }
+    return r;
+}
+
+std::string tail_of_file(const std::string& path, size_t max_chars) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return "";
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    std::string s = ss.str();
+    while (!s.empty() && (s.back() == '\n' || s.back() == ' ' || s.back() == '\r')) s.pop_back();
+    if (s.size() > max_chars) s = "..." + s.substr(s.size() - max_chars);
+    for (char& c : s)
+        if (c == '\n' || c == '\r') c = ' ';
+    return s;
 }
 
 }  // namespace crossdiv::verification

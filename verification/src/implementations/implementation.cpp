@@ -30,7 +30,14 @@ SchemeRule with_variant(Scheme scheme, SchemeRule requested, const SchemeRule& f
 
 }  // namespace
 
-const char* to_string(ImplementationKind kind) { return kind == ImplementationKind::Core ? "core" : "library"; }
+const char* to_string(ImplementationKind kind) {
+    switch (kind) {
+        case ImplementationKind::Core: return "core";
+        case ImplementationKind::Library: return "library";
+        case ImplementationKind::Program: return "program";
+    }
+    return "unknown";
+}
 const char* to_string(Precision precision) { return precision == Precision::Double ? "double" : "float"; }
 
 Implementation::Implementation(std::string name, std::string version, ImplementationKind kind, Capabilities capabilities)
@@ -99,5 +106,10 @@ adapters::SplineSamples Implementation::evaluate_spline(SplineKind, std::span<co
 }
 
 adapters::ClosedMeshReport Implementation::closed_mesh_report(const TriMesh&) const { lacks("closed-mesh report"); }
+
+IsolatedTrace refine_isolated(const Implementation& impl, const PolyMesh& mesh, const RefineRequest& request,
+                              double timeout_seconds, bool isolate) {
+    return run_isolated([&] { return impl.refine(mesh, request); }, timeout_seconds, isolate && !impl.confines_itself());
+}
 
 }  // namespace crossdiv::verification

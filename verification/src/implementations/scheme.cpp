@@ -43,6 +43,15 @@ std::string rule_name(Scheme scheme, const SchemeRule& rule) {
     return "-";
 }
 
+std::string boundary_name(Scheme scheme, const SchemeRule& rule) {
+    switch (scheme) {
+        case Scheme::Loop: return std::string(to_string(rule.loop.boundary));
+        case Scheme::Butterfly:
+        case Scheme::ModifiedButterfly: return "";
+        default: return rule_name(scheme, rule);
+    }
+}
+
 bool same_rule(Scheme scheme, const SchemeRule& a, const SchemeRule& b) {
     switch (scheme) {
         case Scheme::Loop: return a.loop == b.loop;

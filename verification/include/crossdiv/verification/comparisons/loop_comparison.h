@@ -17,6 +17,8 @@
 #include "crossdiv/verification/harness/correspondence.h"
 #include "crossdiv/verification/harness/isolate.h"
 #include "crossdiv/verification/harness/tolerances.h"
+#include "crossdiv/verification/comparisons/rule_identification.h"
+#include "crossdiv/verification/implementations/implementation.h"
 
 namespace crossdiv::verification {
 
@@ -31,13 +33,17 @@ const char* to_string(Tier tier);
 Tier tier_from_string(const std::string& name);
 
 struct LoopComparisonRequest {
-    LoopOptions options;
+    LoopOptions options{LoopWeights::Loop, LoopBoundary::EdgeOnly};
     int levels = 1;
     std::vector<std::string> references;  ///< names; all built ones when empty
     double timeout_seconds = 120;
     bool isolate = true;
     Tier tier = Tier::Weak;
     double tolerance = tolerances::kAgreementRelative;  ///< relative to the diagonal (Weak, Geometric)
+    /// The implementation under test: core when null, else (a program, result files) its
+    /// refinement is matched to core's, renumbered into core's numbering, and compared with
+    /// each reference in core's place; its rule is identified (rule_identification.h).
+    const Implementation* subject = nullptr;
     /// Keep, for each divergence, our mesh at the first level that diverges with each
     /// vertex's distance to the reference (for pictures), if it has at most this many faces.
     int error_field_max_faces = 0;
@@ -53,7 +59,7 @@ struct ErrorField {
 /// The outcome of one reference on one input.
 struct ReferenceRun {
     std::string reference, version;
-    LoopOptions ran_with;  ///< the options the reference was run with (closest it has)
+    LoopOptions ran_with{LoopWeights::Loop, LoopBoundary::EdgeOnly};  ///< the options the reference was run with (closest it has)
     RunOutcome outcome;
     Correspondence correspondence;
     MeshComparison comparison;             ///< last level
@@ -79,22 +85,34 @@ struct CaseWorstVertex {
     int ours_index = -1;
     int valence = 0;
     bool boundary = false;
-    Vec3 core;
+    Vec3 core;  ///< the implementation under test's value (core's, or the subject's)
+    std::optional<Vec3> core_with_requested_rule;  ///< core's value there, when a subject is under test
     std::map<std::string, Vec3> reference_positions;
 };
 
 struct LoopComparison {
     std::string input;
     int input_vertices = 0, input_faces = 0;
-    LoopOptions options;
+    LoopOptions options{LoopWeights::Loop, LoopBoundary::EdgeOnly};
     int levels = 0;
     double core_seconds = 0;
     Tier tier = Tier::Weak;
     double tolerance = tolerances::kAgreementRelative;
     std::string core_error;  ///< non-empty: core refused the input (the message)
+    /// The implementation under test ("core", or the subject's name) and, for a subject, how
+    /// its run ended (no runs against references when it failed), how its vertices were
+    /// matched to core's, and the rules it follows.
+    std::string subject = "core";
+    RunOutcome subject_outcome;
+    Correspondence subject_match;
+    std::optional<RuleIdentification> rules;
     std::vector<ReferenceRun> runs;
     std::optional<CaseWorstVertex> worst_vertex;  ///< when some reference diverges
     bool all_agree() const;
+    /// The subject failed (crashed, hung, wrote nothing or something that is not a Loop mesh)
+    /// or cannot be matched to core's refinement.
+    bool subject_failed() const { return subject_outcome.status != RunStatus::Ok || !subject_unmatched.empty(); }
+    std::string subject_unmatched;  ///< why the subject's vertices match none of core's, when they do not
 };
 
 /// Runs the comparison. @throws InputError if core cannot refine the input (bad mesh) or a

@@ -58,4 +58,8 @@ Correspondence match_nearest(const std::vector<Vec3>& ours, const std::vector<Ve
 /// Method None unless this gives a bijection.
 Correspondence match_nearest_and_faces(const PolyMesh& ours, const PolyMesh& ref);
 
+/// `mesh` with vertex i renumbered to `to_ours[i]` (a bijection onto 0..n-1): positions
+/// moved, faces rewritten, face order kept.
+PolyMesh renumber(const PolyMesh& mesh, const std::vector<int>& to_ours);
+
 }  // namespace crossdiv::verification

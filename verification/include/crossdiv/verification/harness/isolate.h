@@ -5,6 +5,7 @@
 
 #include <functional>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 #include "crossdiv/adapters/reference.h"
@@ -12,17 +13,42 @@
 
 namespace crossdiv::verification {
 
-/// How a reference run ended.
+/// How a run of an implementation ended. The first five apply to every implementation; the
+/// rest to a program (an external subject or reference), whose result is read from a file.
 enum class RunStatus {
-    Ok,        ///< returned a result
-    Rejected,  ///< refused the input or option (adapters::Rejected)
-    Threw,     ///< threw any other exception
-    Crashed,   ///< died by a signal, or exited without a result
-    Timeout,   ///< still running at the time limit; killed
+    Ok,                ///< returned a result
+    Rejected,          ///< refused the input or option (adapters::Rejected)
+    Threw,             ///< threw any other exception
+    Crashed,           ///< died by a signal, or exited without a result
+    Timeout,           ///< still running at the time limit; killed
+    ExitStatus,        ///< a program exited with a nonzero status
+    NoOutput,          ///< a program exited 0 without writing its output file
+    UnreadableOutput,  ///< its output file does not parse (the message names file:line)
+    NonFiniteOutput,   ///< its output has a NaN or infinite coordinate
+    WrongCount,        ///< its output has another number of vertices or faces than the scheme makes
+    NotTriangles,      ///< its output has a face that is not a triangle where the scheme makes triangles
 };
 
-/// "ok", "rejected", "threw", "crashed", "timeout".
+/// "ok", "rejected", "threw", "crashed", "timeout", "exit-status", "no-output",
+/// "unreadable-output", "non-finite-output", "wrong-count", "not-triangles".
 const char* to_string(RunStatus status);
+
+/// Whether the run made a result that is not a mesh of the scheme (an implementation that lies).
+inline bool is_invalid_output(RunStatus status) {
+    return status == RunStatus::UnreadableOutput || status == RunStatus::NonFiniteOutput ||
+           status == RunStatus::WrongCount || status == RunStatus::NotTriangles;
+}
+
+/// An implementation's run failed in a way it names: thrown by implementations that run a
+/// program, caught by run_isolated and recorded as the run's status.
+class ImplementationFailure : public std::runtime_error {
+public:
+    ImplementationFailure(RunStatus status, const std::string& message) : std::runtime_error(message), status_(status) {}
+    RunStatus status() const { return status_; }
+
+private:
+    RunStatus status_;
+};
 
 struct RunOutcome {
     RunStatus status = RunStatus::Ok;
@@ -34,10 +60,13 @@ struct RunOutcome {
     std::string failure_explanation() const { return status == RunStatus::Rejected ? message : summary(); }
 };
 
-/// The verdict on a reference run that made no result: ref-rejected when it refused,
-/// ref-crashed when it threw, crashed or hung.
+/// The verdict on a reference run that made no usable result: ref-rejected when it refused,
+/// ref-invalid-output when its result is not a mesh of the scheme, ref-crashed when it threw,
+/// crashed, hung or wrote nothing.
 inline Verdict verdict_of_failed_run(RunStatus status) {
-    return status == RunStatus::Rejected ? Verdict::RefRejected : Verdict::RefCrashed;
+    return status == RunStatus::Rejected ? Verdict::RefRejected
+           : is_invalid_output(status)   ? Verdict::RefInvalidOutput
+                                         : Verdict::RefCrashed;
 }
 
 /// A verdict reached before anything is compared, with its explanation.

@@ -14,4 +14,30 @@ namespace crossdiv::verification {
 /// @throws InputError when the program cannot be started (naming it and the reason).
 int run_process(const std::vector<std::string>& argv);
 
+/// How to run a program that is itself under test: confined to a folder and a time limit.
+struct ProcessLimits {
+    std::string working_dir;      ///< its current folder (empty: ours)
+    double timeout_seconds = 120; ///< then its whole process group is killed
+    std::string stdout_path;      ///< where its standard output goes (empty: /dev/null)
+    std::string stderr_path;      ///< where its standard error goes (empty: /dev/null)
+};
+
+/// How a confined run ended.
+struct ProcessResult {
+    bool started = false;    ///< false: the program could not be started (`start_error` says why)
+    std::string start_error;
+    bool timed_out = false;  ///< killed at the time limit
+    int exit_code = 0;       ///< when it exited
+    int signal = 0;          ///< the signal that ended it (0: it exited)
+    double seconds = 0;      ///< wall time
+};
+
+/// Runs argv as run_process does, but in its own process group (so that a time-out kills what
+/// it started too), in `limits.working_dir`, with its output in files, and kills the group at
+/// the time limit. Never throws for what the program does.
+ProcessResult run_confined(const std::vector<std::string>& argv, const ProcessLimits& limits);
+
+/// The last `max_chars` characters of a text file (its stderr), on one line; "" when absent.
+std::string tail_of_file(const std::string& path, size_t max_chars = 400);
+
 }  // namespace crossdiv::verification

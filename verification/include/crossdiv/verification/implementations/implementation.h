@@ -17,6 +17,7 @@
 
 #include "crossdiv/adapters/reference.h"
 #include "crossdiv/mesh/tri_mesh.h"
+#include "crossdiv/verification/harness/isolate.h"
 #include "crossdiv/verification/implementations/scheme.h"
 
 namespace crossdiv::verification {
@@ -25,8 +26,9 @@ namespace crossdiv::verification {
 enum class ImplementationKind {
     Core,     ///< this testbed's own algorithms
     Library,  ///< a reference library compiled in through its adapter
+    Program,  ///< a program run from a command line, or result files it wrote (program_implementation.h)
 };
-/// "core", "library".
+/// "core", "library", "program".
 const char* to_string(ImplementationKind kind);
 
 /// The arithmetic an implementation refines in.
@@ -103,6 +105,9 @@ public:
     const std::string& version() const { return version_; }
     ImplementationKind kind() const { return kind_; }
     const Capabilities& capabilities() const { return capabilities_; }
+    /// Whether it runs its work in child processes with their own time limit (a program), so
+    /// that the harness need not fork around it (refine_isolated).
+    virtual bool confines_itself() const { return false; }
 
     /// Its support of `scheme`, or nullptr when it lacks the scheme.
     const SchemeSupport* support(Scheme scheme) const;
@@ -150,5 +155,11 @@ private:
     ImplementationKind kind_;
     Capabilities capabilities_;
 };
+
+/// `impl.refine(mesh, request)` in a child process with a time limit (run_isolated), so that
+/// a crash, a hang or an exception is recorded as the run's outcome; an implementation that
+/// confines itself runs here. With `isolate` false everything runs here (debugging).
+IsolatedTrace refine_isolated(const Implementation& impl, const PolyMesh& mesh, const RefineRequest& request,
+                              double timeout_seconds, bool isolate);
 
 }  // namespace crossdiv::verification

@@ -38,6 +38,9 @@ struct SchemeRule {
 /// The rule's name for `scheme`: "weights=loop boundary=edge-only" for Loop, "edge-only",
 /// "chaikin-boundary", "count-from-input"; "-" for the Butterflies.
 std::string rule_name(Scheme scheme, const SchemeRule& rule);
+/// The name of the rule's boundary option, as rule_from_boundary_name reads it ("edge-only",
+/// "chaikin-boundary", "count-from-input", ...); "" for the Butterflies.
+std::string boundary_name(Scheme scheme, const SchemeRule& rule);
 /// Whether the two rules are the same variant of `scheme` (the creasing method included).
 bool same_rule(Scheme scheme, const SchemeRule& a, const SchemeRule& b);
 

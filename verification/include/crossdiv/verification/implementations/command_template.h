@@ -1,0 +1,71 @@
+#pragma once
+/// @file
+/// A command line with placeholders, as a user writes it for an implementation that is a
+/// program: `python3 loop.py {in} {levels} {out}`. It is split into words once, the way a
+/// shell would split it for the simple cases (whitespace; '...' and "..." group; a backslash
+/// outside single quotes escapes the next character) and never given to a shell: each word
+/// becomes one argument, so a file name with spaces or `;` is just a name.
+///
+/// The program runs in a temporary folder; words naming files relative to where crossdiv was
+/// started are made absolute first (anchor_relative_paths).
+///
+/// Placeholders, each inside any word:
+///   {in} {in.obj}    the input, written as OBJ with 17 significant digits
+///   {in.off}         the input as OFF
+///   {out} {out.obj}  where the program writes its result as OBJ
+///   {out.off}        ... as OFF
+///   {levels}         the number of levels asked of this run
+///   {scheme}         loop, catmull-clark, doo-sabin, sqrt3, butterfly, modified-butterfly
+///   {weights}        loop | warren (Loop's weight family)
+///   {boundary}       the boundary rule's name (edge-only, edge-and-corner, ...)
+///   {{ and }}        literal braces
+
+#include <string>
+#include <vector>
+
+#include "crossdiv/verification/implementations/scheme.h"
+
+namespace crossdiv::verification {
+
+/// The mesh file formats a program can read or write.
+enum class MeshFormat { Obj, Off };
+/// "obj", "off" (also the file extension).
+const char* to_string(MeshFormat format);
+
+/// The values of one run's placeholders.
+struct TemplateValues {
+    std::string in_obj, in_off;  ///< paths of the input in each format (written only when used)
+    std::string out;             ///< the output path, with the extension of output_format()
+    RefineRequest request;
+};
+
+class CommandTemplate {
+public:
+    /// @throws InputError naming the template and the problem: an unknown placeholder, an
+    ///         unclosed quote or brace, no output placeholder, two output formats, no words.
+    explicit CommandTemplate(std::string text);
+
+    const std::string& text() const { return text_; }
+    /// The formats of the input the command reads (one file is written per format used).
+    bool reads(MeshFormat format) const;
+    MeshFormat output_format() const { return output_format_; }
+    /// Makes each word without placeholders that names an existing file or folder relative
+    /// to the current folder absolute, so that the command means what it means in the user's
+    /// shell although it runs in a folder of its own.
+    void anchor_relative_paths();
+    /// The argument vector for one run.
+    std::vector<std::string> expand(const TemplateValues& values) const;
+
+private:
+    /// A word is a sequence of literal text and placeholders.
+    struct Piece {
+        bool placeholder = false;
+        std::string text;  ///< literal text, or the placeholder's name
+    };
+    std::string text_;
+    std::vector<std::vector<Piece>> words_;
+    bool reads_obj_ = false, reads_off_ = false;
+    MeshFormat output_format_ = MeshFormat::Obj;
+};
+
+}  // namespace crossdiv::verification

@@ -1,0 +1,75 @@
+#pragma once
+/// @file
+/// Implementations that are not compiled into crossdiv: a program run from a command template
+/// (a student's submission, a researcher's new code, a library with only a command-line tool)
+/// and result files that some program already wrote. Both are Implementations like core and
+/// the libraries, so every comparison, classification and report works on them unchanged.
+///
+/// A program runs in its own temporary folder, in its own process group, with a time limit and
+/// its stderr kept; the folder is removed afterwards. Every way it can fail is a RunStatus
+/// (thrown as ImplementationFailure and recorded by refine_isolated): nonzero exit, signal,
+/// time-out, no output file, unreadable output (file:line of the first bad line), NaN or
+/// infinity, a vertex or face count other than the scheme makes, faces that are not triangles
+/// where the scheme makes triangles. Vertex and face order are the program's own: the
+/// comparisons find the correspondence.
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "crossdiv/verification/implementations/command_template.h"
+#include "crossdiv/verification/implementations/implementation.h"
+
+namespace crossdiv::verification {
+
+/// Which levels a program is asked for.
+enum class LevelMode {
+    Each,   ///< run once per level 1..N ({levels} = k), so that every level is compared
+    Final,  ///< run once for level N; the levels before it are not compared
+};
+/// "each", "final".
+const char* to_string(LevelMode mode);
+/// @throws InputError for another name.
+LevelMode level_mode_from_string(std::string_view name);
+
+/// A program as an implementation, as a manifest's `subject` / `reference` statement or the
+/// CLI's --subject names it.
+struct ProgramSpec {
+    std::string name;                 ///< how results name it ("mine", "meshlab")
+    std::string command;              ///< the command template
+    std::vector<Scheme> schemes;      ///< the schemes it implements (empty: every scheme)
+    LevelMode levels = LevelMode::Each;
+    Precision precision = Precision::Double;
+    double timeout_seconds = 120;     ///< per run of the program
+};
+
+/// The vertex and face counts `scheme` makes from `input` after `levels` levels, where they
+/// follow from the input's counts alone (Loop and the Butterflies: V + E, 4F; Catmull-Clark:
+/// V + E + F, one quad per face corner); nothing for the schemes whose counts depend on the
+/// boundary rule (Doo-Sabin, sqrt3).
+std::optional<std::pair<long, long>> expected_counts(Scheme scheme, const PolyMesh& input, int levels);
+
+/// The checks every program result passes before it is compared: finite coordinates,
+/// triangles where the scheme makes them, the counts of expected_counts. `file` names the
+/// result in messages. @throws ImplementationFailure with the status that names the fault.
+void check_program_result(const PolyMesh& result, Scheme scheme, const PolyMesh& input, int levels,
+                          const std::string& file);
+
+/// Reads a result file (OBJ or OFF by extension) as check_program_result wants it.
+/// @throws ImplementationFailure: NoOutput (missing or empty), UnreadableOutput (file:line),
+///         NonFiniteOutput.
+PolyMesh read_program_result(const std::string& path, const std::string& shown_name);
+
+/// A program run from a command template. It declares every named rule of its schemes when
+/// its template passes {weights} or {boundary}, else only each scheme's default rule; what it
+/// really applies is measured (rule_identification.h).
+std::unique_ptr<Implementation> make_program_implementation(const ProgramSpec& spec);
+
+/// Result files already written (a submitted OBJ): refine returns the file as the last level
+/// of the request, the levels before it empty (not compared). The file is read at each call.
+std::unique_ptr<Implementation> make_result_file_implementation(const std::string& name, const std::string& path,
+                                                                Scheme scheme);
+
+}  // namespace crossdiv::verification

@@ -1,0 +1,267 @@
+#include "crossdiv/verification/comparisons/rule_identification.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "crossdiv/mesh/tri_mesh.h"
+#include "crossdiv/verification/harness/mesh_topology.h"
+#include "harness/sci.h"
+
+namespace crossdiv::verification {
+namespace {
+
+using detail::sci;
+
+std::string rule_text(const LoopOptions& o) {
+    return "weights=" + std::string(to_string(o.weights)) + " boundary=" + std::string(to_string(o.boundary));
+}
+
+/// The class of each vertex of level l from its origin and level l-1's topology.
+std::vector<std::pair<VertexClass, int>> classify(const std::vector<VertexOrigin>& origins, const PolyMesh& parent) {
+    const MeshTopology t = mesh_topology(parent);
+    std::vector<int> faces_of(static_cast<size_t>(parent.num_vertices()), 0);
+    for (int v : parent.face_vertices) ++faces_of[static_cast<size_t>(v)];
+    // An edge is on the boundary when both ends are boundary vertices and it has one face:
+    // count each edge's faces by its sorted key.
+    std::vector<std::array<int, 2>> face_edges;
+    for (int f = 0; f < parent.num_faces(); ++f) {
+        const int* fv = parent.face(f);
+        const int n = parent.face_size(f);
+        for (int k = 0; k < n; ++k) {
+            const int a = fv[k], b = fv[(k + 1) % n];
+            face_edges.push_back({std::min(a, b), std::max(a, b)});
+        }
+    }
+    std::sort(face_edges.begin(), face_edges.end());
+    auto edge_faces = [&](int a, int b) {
+        const std::array<int, 2> key{std::min(a, b), std::max(a, b)};
+        const auto range = std::equal_range(face_edges.begin(), face_edges.end(), key);
+        return static_cast<int>(range.second - range.first);
+    };
+    std::vector<std::pair<VertexClass, int>> out;
+    out.reserve(origins.size());
+    for (const VertexOrigin& o : origins) {
+        if (o.is_edge_point()) {
+            out.push_back({edge_faces(o.a, o.b) == 1 ? VertexClass::BoundaryEdgePoint : VertexClass::InteriorEdgePoint, 0});
+            continue;
+        }
+        const size_t v = static_cast<size_t>(o.a);
+        if (faces_of[v] == 0) out.push_back({VertexClass::IsolatedVertex, 0});
+        else if (!t.boundary_vertex[v]) out.push_back({VertexClass::InteriorVertex, t.valence[v]});
+        else if (faces_of[v] == 1) out.push_back({VertexClass::Corner, 0});
+        else out.push_back({VertexClass::BoundaryVertex, 0});
+    }
+    return out;
+}
+
+}  // namespace
+
+const char* to_string(VertexClass cls) {
+    switch (cls) {
+        case VertexClass::InteriorVertex: return "interior-vertex";
+        case VertexClass::BoundaryVertex: return "boundary-vertex";
+        case VertexClass::Corner: return "corner";
+        case VertexClass::InteriorEdgePoint: return "interior-edge-point";
+        case VertexClass::BoundaryEdgePoint: return "boundary-edge-point";
+        case VertexClass::IsolatedVertex: return "isolated-vertex";
+    }
+    return "unknown";
+}
+
+std::vector<LoopOptions> loop_named_rules() {
+    std::vector<LoopOptions> rules;
+    for (LoopWeights w : {LoopWeights::Loop, LoopWeights::Warren})
+        for (LoopBoundary b : {LoopBoundary::EdgeOnly, LoopBoundary::EdgeAndCorner}) rules.push_back({w, b});
+    return rules;
+}
+
+RuleIdentification identify_loop_rule(const PolyMesh& input, const std::vector<PolyMesh>& subject,
+                                      const std::vector<std::vector<PolyMesh>>& core,
+                                      const std::vector<std::vector<VertexOrigin>>& origins, const LoopOptions& requested,
+                                      double tolerance) {
+    const std::vector<LoopOptions> rules = loop_named_rules();
+    RuleIdentification id;
+    // Whole mesh, every compared level.
+    for (size_t r = 0; r < rules.size(); ++r) {
+        RuleFit fit{rules[r], 0, true};
+        for (size_t l = 0; l < subject.size(); ++l) {
+            if (subject[l].num_vertices() == 0) continue;
+            const PolyMesh& c = core[r][l];
+            const double d = bounding_box_diagonal(c.positions);
+            for (size_t v = 0; v < c.positions.size(); ++v) {
+                const double e = (subject[l].positions[v] - c.positions[v]).norm() / (d > 0 ? d : 1);
+                fit.max_rel = std::isnan(e) ? INFINITY : std::max(fit.max_rel, e);
+            }
+        }
+        fit.fits = fit.max_rel <= tolerance;
+        id.whole.push_back(fit);
+    }
+    for (const RuleFit& f : id.whole)
+        if (f.fits && f.rule == requested) id.rule = f.rule;
+    for (const RuleFit& f : id.whole)
+        if (f.fits && !id.rule) id.rule = f.rule;
+
+    // Classes at level 1, the only level whose vertices see the rule of their class alone.
+    if (subject.empty() || subject[0].num_vertices() == 0) return id;
+    id.classified_level = 1;
+    const std::vector<std::pair<VertexClass, int>> cls = classify(origins[0], input);
+    const double d = bounding_box_diagonal(core[0][0].positions);
+    for (size_t v = 0; v < cls.size(); ++v) {
+        auto row = std::find_if(id.rows.begin(), id.rows.end(), [&](const VertexClassRow& x) {
+            return x.cls == cls[v].first && x.valence == cls[v].second;
+        });
+        if (row == id.rows.end()) {
+            VertexClassRow fresh{cls[v].first, cls[v].second, 0, {}, -1};
+            for (const LoopOptions& r : rules) fresh.fits.push_back({r, 0, false});
+            id.rows.push_back(fresh);
+            row = id.rows.end() - 1;
+        }
+        ++row->count;
+        for (size_t r = 0; r < rules.size(); ++r) {
+            const double e = (subject[0].positions[v] - core[r][0].positions[v]).norm() / (d > 0 ? d : 1);
+            row->fits[r].max_rel = std::isnan(e) ? INFINITY : std::max(row->fits[r].max_rel, e);
+        }
+    }
+    for (VertexClassRow& row : id.rows)
+        for (RuleFit& f : row.fits) f.fits = f.max_rel <= tolerance;
+    // Each row's worst vertex under its best rule, for the diagnosis of what no rule fits.
+    for (VertexClassRow& row : id.rows) {
+        const auto best = std::min_element(row.fits.begin(), row.fits.end(),
+                                           [](const RuleFit& a, const RuleFit& b) { return a.max_rel < b.max_rel; });
+        const size_t r = static_cast<size_t>(best - row.fits.begin());
+        double worst = -1;
+        for (size_t v = 0; v < cls.size(); ++v) {
+            if (cls[v].first != row.cls || cls[v].second != row.valence) continue;
+            const double e = (subject[0].positions[v] - core[r][0].positions[v]).norm();
+            if (!(e <= worst)) {
+                worst = e;
+                row.worst_vertex = static_cast<int>(v);
+            }
+        }
+    }
+    std::sort(id.rows.begin(), id.rows.end(), [](const VertexClassRow& a, const VertexClassRow& b) {
+        return std::pair{a.cls, a.valence} < std::pair{b.cls, b.valence};
+    });
+    return id;
+}
+
+std::optional<LoopOptions> nearest_fitting_rule(const RuleIdentification& id, const LoopOptions& other) {
+    std::optional<LoopOptions> best;
+    int best_score = -1;
+    for (const RuleFit& f : id.whole) {
+        if (!f.fits) continue;
+        const int score = f.rule == other ? 3 : f.rule.weights == other.weights ? 2 : f.rule.boundary == other.boundary ? 1 : 0;
+        if (score > best_score) {
+            best = f.rule;
+            best_score = score;
+        }
+    }
+    return best;
+}
+
+void RuleTally::add(const RuleIdentification& id) {
+    const size_t n = loop_named_rules().size();
+    if (whole_fits_.empty()) {
+        whole_fits_.assign(n, 0);
+        whole_max_.assign(n, 0);
+    }
+    ++inputs_;
+    for (size_t r = 0; r < id.whole.size(); ++r) {
+        if (id.whole[r].fits) {
+            ++whole_fits_[r];
+            whole_max_[r] = std::max(whole_max_[r], id.whole[r].max_rel);
+        }
+    }
+    for (const VertexClassRow& row : id.rows) {
+        const Key key{row.cls, row.valence};
+        auto it = std::find_if(rows_.begin(), rows_.end(), [&](const Tally& t) { return t.key == key; });
+        if (it == rows_.end()) {
+            rows_.push_back({key, 0, 0, std::vector<double>(n, 0.0), std::vector<char>(n, 1)});
+            it = rows_.end() - 1;
+        }
+        ++it->inputs;
+        it->count += row.count;
+        for (size_t r = 0; r < row.fits.size(); ++r) {
+            it->max_rel[r] = std::max(it->max_rel[r], row.fits[r].max_rel);
+            it->fits[r] = it->fits[r] && row.fits[r].fits;
+        }
+    }
+}
+
+std::string RuleTally::rule_phrase() const {
+    const std::vector<LoopOptions> rules = loop_named_rules();
+    auto fits_any = [&](const Tally& t, auto&& pred) {
+        for (size_t r = 0; r < rules.size(); ++r)
+            if (t.fits[r] && pred(rules[r])) return true;
+        return false;
+    };
+    auto best = [&](const Tally& t) {
+        return *std::min_element(t.max_rel.begin(), t.max_rel.end());
+    };
+    std::vector<std::string> parts;
+
+    // Interior vertices: the weight family that fits at every valence seen.
+    int lo = 0, hi = 0;
+    bool any_interior = false, loop_all = true, warren_all = true;
+    std::vector<std::string> unfit;
+    for (const Tally& t : rows_) {
+        if (t.key.cls != VertexClass::InteriorVertex) continue;
+        lo = any_interior ? std::min(lo, t.key.valence) : t.key.valence;
+        hi = any_interior ? std::max(hi, t.key.valence) : t.key.valence;
+        any_interior = true;
+        const bool loop = fits_any(t, [](const LoopOptions& o) { return o.weights == LoopWeights::Loop; });
+        const bool warren = fits_any(t, [](const LoopOptions& o) { return o.weights == LoopWeights::Warren; });
+        loop_all &= loop;
+        warren_all &= warren;
+        if (!loop && !warren) unfit.push_back(std::to_string(t.key.valence) + " (off by " + sci(best(t)) + ")");
+    }
+    const std::string valences = " (valence " + std::to_string(lo) + (hi > lo ? ".." + std::to_string(hi) : "") + ")";
+    if (!any_interior) parts.push_back("no interior vertices in the inputs");
+    else if (!unfit.empty()) {
+        std::string s = "no named weights at interior vertices of valence ";
+        for (size_t k = 0; k < unfit.size(); ++k) s += (k ? ", " : "") + unfit[k];
+        parts.push_back(s);
+    } else if (loop_all && warren_all)
+        parts.push_back("weights=loop or warren at interior vertices" + valences + " (they coincide at valence 3 and 6)");
+    else if (loop_all) parts.push_back("weights=loop at interior vertices" + valences);
+    else if (warren_all) parts.push_back("weights=warren at interior vertices" + valences);
+    else parts.push_back("weights=loop at some valences and warren at others" + valences);
+
+    auto class_phrase = [&](VertexClass cls, const std::string& fits, const std::string& none) -> std::optional<std::string> {
+        for (const Tally& t : rows_)
+            if (t.key.cls == cls) return fits_any(t, [](const LoopOptions&) { return true; }) ? fits : none + " (off by " + sci(best(t)) + ")";
+        return std::nullopt;
+    };
+    const auto boundary = class_phrase(VertexClass::BoundaryVertex, "edge-only boundary", "no named rule at boundary vertices");
+    const auto boundary_edges = class_phrase(VertexClass::BoundaryEdgePoint, "", "no named rule at boundary edge points");
+    if (boundary) parts.push_back(*boundary);
+    if (boundary_edges && !boundary_edges->empty()) parts.push_back(*boundary_edges);
+    for (const Tally& t : rows_) {
+        if (t.key.cls != VertexClass::Corner) continue;
+        const bool edge_only = fits_any(t, [](const LoopOptions& o) { return o.boundary == LoopBoundary::EdgeOnly; });
+        const bool corner = fits_any(t, [](const LoopOptions& o) { return o.boundary == LoopBoundary::EdgeAndCorner; });
+        parts.push_back(edge_only && corner ? "corners indistinguishable"
+                        : edge_only        ? "no corner rule"
+                        : corner           ? "corner rule"
+                                           : "no named rule at corners (off by " + sci(best(t)) + ")");
+    }
+    if (!boundary && !boundary_edges) parts.push_back("no boundary in the inputs");
+    if (const auto e = class_phrase(VertexClass::InteriorEdgePoint, "", "no named rule at interior edge points"); e && !e->empty())
+        parts.push_back(*e);
+    if (const auto e = class_phrase(VertexClass::IsolatedVertex, "", "isolated vertices moved"); e && !e->empty())
+        parts.push_back(*e);
+    std::string s = "Loop scheme";
+    for (const std::string& p : parts) s += ", " + p;
+    return s;
+}
+
+std::string RuleTally::core_phrase() const {
+    const std::vector<LoopOptions> rules = loop_named_rules();
+    if (whole_fits_.empty()) return "no input compared";
+    const size_t best = static_cast<size_t>(std::max_element(whole_fits_.begin(), whole_fits_.end()) - whole_fits_.begin());
+    if (whole_fits_[best] == 0) return "agrees with core under no named rule on any input";
+    return "agrees with core " + rule_text(rules[best]) + " to " + sci(whole_max_[best]) + " on " +
+           std::to_string(whole_fits_[best]) + " of " + std::to_string(inputs_) + " meshes";
+}
+
+}  // namespace crossdiv::verification

@@ -1,0 +1,260 @@
+#include "crossdiv/verification/implementations/program_implementation.h"
+
+#include <stdlib.h>
+
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "crossdiv/error.h"
+#include "crossdiv/io/mesh_io.h"
+#include "crossdiv/verification/harness/mesh_topology.h"
+#include "crossdiv/verification/harness/process.h"
+#include "crossdiv/verification/implementations/registry.h"
+
+namespace crossdiv::verification {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool makes_triangles(Scheme scheme) {
+    return scheme == Scheme::Loop || scheme == Scheme::Sqrt3 || scheme == Scheme::Butterfly ||
+           scheme == Scheme::ModifiedButterfly;
+}
+
+bool all_triangles(const PolyMesh& mesh) {
+    for (int f = 0; f < mesh.num_faces(); ++f)
+        if (mesh.face_size(f) != 3) return false;
+    return true;
+}
+
+/// A temporary folder of its own, removed when the run ends (whatever the program left in it).
+class TemporaryFolder {
+public:
+    explicit TemporaryFolder(const std::string& label) {
+        std::string pattern = (fs::temp_directory_path() / ("crossdiv-" + label + "-XXXXXX")).string();
+        if (!mkdtemp(pattern.data())) throw InputError("cannot create a temporary folder in " + fs::temp_directory_path().string());
+        path_ = pattern;
+    }
+    ~TemporaryFolder() {
+        std::error_code ignored;
+        fs::remove_all(path_, ignored);
+    }
+    TemporaryFolder(const TemporaryFolder&) = delete;
+    TemporaryFolder& operator=(const TemporaryFolder&) = delete;
+    const fs::path& path() const { return path_; }
+
+private:
+    fs::path path_;
+};
+
+/// A label safe in a file name: the implementation's name with anything unusual replaced.
+std::string file_label(const std::string& name) {
+    std::string s;
+    for (char c : name) s += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' ? c : '_';
+    return s.empty() ? "program" : s;
+}
+
+Capabilities program_capabilities(const ProgramSpec& spec, bool passes_rule) {
+    Capabilities c;
+    c.precision = spec.precision;
+    const std::vector<Scheme> schemes = spec.schemes.empty() ? all_schemes() : spec.schemes;
+    for (Scheme s : schemes) {
+        SchemeSupport support{s, {}, false, 0, ""};
+        if (passes_rule && core_implementation().has(s)) support.rules = core_implementation().support(s)->rules;
+        else support.rules = {SchemeRule{}};
+        c.schemes.push_back(std::move(support));
+    }
+    return c;
+}
+
+class Program final : public Implementation {
+public:
+    Program(const ProgramSpec& spec, CommandTemplate command)
+        : Implementation(spec.name, "command: " + spec.command, ImplementationKind::Program,
+                         program_capabilities(spec, command.text().find("{weights}") != std::string::npos ||
+                                                        command.text().find("{boundary}") != std::string::npos)),
+          spec_(spec),
+          command_(std::move(command)) {}
+
+    bool confines_itself() const override { return true; }
+
+    adapters::LevelTrace refine(const PolyMesh& mesh, const RefineRequest& request) const override {
+        check_refinable(request.scheme);
+        adapters::LevelTrace trace{mesh};
+        for (int level = 1; level <= request.levels; ++level) {
+            if (spec_.levels == LevelMode::Final && level < request.levels) {
+                trace.emplace_back();  // not asked for: not compared
+                continue;
+            }
+            RefineRequest one = request;
+            one.levels = level;
+            trace.push_back(run_once(mesh, one));
+        }
+        return trace;
+    }
+
+    PolyMesh refine_last(const PolyMesh& mesh, const RefineRequest& request) const override {
+        check_refinable(request.scheme);
+        return run_once(mesh, request);
+    }
+
+private:
+    /// One run of the program for `request.levels` levels of `mesh`.
+    PolyMesh run_once(const PolyMesh& mesh, const RefineRequest& request) const {
+        const TemporaryFolder folder(file_label(name()));
+        TemplateValues values{(folder.path() / "in.obj").string(), (folder.path() / "in.off").string(),
+                              (folder.path() / (std::string("out.") + to_string(command_.output_format()))).string(),
+                              request};
+        PolyMesh input = mesh;
+        input.creases = {};  // tags are not the program's input (OBJ 't' lines are not written)
+        if (command_.reads(MeshFormat::Obj)) write_mesh(values.in_obj, input);
+        if (command_.reads(MeshFormat::Off)) write_mesh(values.in_off, input);
+        const std::string stderr_path = (folder.path() / "stderr.txt").string();
+        const ProcessResult r = run_confined(command_.expand(values), {folder.path().string(), spec_.timeout_seconds,
+                                                                       (folder.path() / "stdout.txt").string(), stderr_path});
+        const std::string err = tail_of_file(stderr_path);
+        const std::string with_err = err.empty() ? "" : "; stderr: " + err;
+        const std::string level = " (level " + std::to_string(request.levels) + ")";
+        const std::string out_name = fs::path(values.out).filename().string();
+        if (!r.started) throw ImplementationFailure(RunStatus::Crashed, r.start_error);
+        if (r.timed_out)
+            throw ImplementationFailure(RunStatus::Timeout, "no result after " + fmt_seconds(spec_.timeout_seconds) + level + with_err);
+        if (r.signal)
+            throw ImplementationFailure(RunStatus::Crashed, "signal " + std::to_string(r.signal) + " (" + strsignal(r.signal) + ")" +
+                                                                level + with_err);
+        if (r.exit_code != 0)
+            throw ImplementationFailure(RunStatus::ExitStatus, "exit status " + std::to_string(r.exit_code) + level + with_err);
+        try {
+            PolyMesh result = read_program_result(values.out, out_name);
+            check_program_result(result, request.scheme, mesh, request.levels, out_name);
+            return result;
+        } catch (const ImplementationFailure& e) {
+            throw ImplementationFailure(e.status(), e.what() + level + with_err);
+        }
+    }
+
+    static std::string fmt_seconds(double s) {
+        std::string t = std::to_string(s);
+        t.erase(t.find_last_not_of('0') + 1);
+        if (!t.empty() && t.back() == '.') t.pop_back();
+        return t + " s";
+    }
+
+    ProgramSpec spec_;
+    CommandTemplate command_;
+};
+
+class ResultFile final : public Implementation {
+public:
+    ResultFile(const std::string& name, std::string path, Scheme scheme)
+        : Implementation(name, "result file: " + path, ImplementationKind::Program,
+                         program_capabilities({name, "", {scheme}, LevelMode::Final, Precision::Double, 0}, true)),
+          path_(std::move(path)) {}
+
+    bool confines_itself() const override { return true; }
+
+    adapters::LevelTrace refine(const PolyMesh& mesh, const RefineRequest& request) const override {
+        check_refinable(request.scheme);
+        adapters::LevelTrace trace{mesh};
+        trace.resize(static_cast<size_t>(request.levels));  // the levels before it: not compared
+        trace.push_back(refine_last(mesh, request));
+        return trace;
+    }
+
+    PolyMesh refine_last(const PolyMesh& mesh, const RefineRequest& request) const override {
+        check_refinable(request.scheme);
+        PolyMesh result = read_program_result(path_, path_);
+        check_program_result(result, request.scheme, mesh, request.levels, path_);
+        return result;
+    }
+
+private:
+    std::string path_;
+};
+
+}  // namespace
+
+const char* to_string(LevelMode mode) { return mode == LevelMode::Each ? "each" : "final"; }
+
+LevelMode level_mode_from_string(std::string_view name) {
+    if (name == "each") return LevelMode::Each;
+    if (name == "final") return LevelMode::Final;
+    throw InputError("unknown level mode '" + std::string(name) + "' (known: each, final)");
+}
+
+std::optional<std::pair<long, long>> expected_counts(Scheme scheme, const PolyMesh& input, int levels) {
+    const MeshTopology t = mesh_topology(input);
+    long v = t.vertices, e = t.edges, f = t.faces, corners = static_cast<long>(input.face_vertices.size());
+    const bool triangles = all_triangles(input);
+    for (int l = 0; l < levels; ++l) {
+        switch (scheme) {
+            case Scheme::Loop:
+            case Scheme::Butterfly:
+            case Scheme::ModifiedButterfly:
+                if (!triangles) return std::nullopt;
+                // Each edge gains a vertex and becomes two; each face gains three interior edges.
+                std::tie(v, e, f) = std::tuple{v + e, 2 * e + 3 * f, 4 * f};
+                corners = 3 * f;
+                break;
+            case Scheme::CatmullClark:
+                // A vertex per face and per edge; one quad and one new edge per face corner.
+                std::tie(v, e, f) = std::tuple{v + e + f, 2 * e + corners, corners};
+                corners = 4 * f;
+                break;
+            case Scheme::DooSabin:
+            case Scheme::Sqrt3: return std::nullopt;
+        }
+    }
+    return std::pair{v, f};
+}
+
+void check_program_result(const PolyMesh& result, Scheme scheme, const PolyMesh& input, int levels, const std::string& file) {
+    for (int v = 0; v < result.num_vertices(); ++v)
+        if (!result.positions[static_cast<size_t>(v)].allFinite())
+            throw ImplementationFailure(RunStatus::NonFiniteOutput, file + ": " + result.source.describe_vertex(v) + " is not finite");
+    if (makes_triangles(scheme) && all_triangles(input))
+        for (int f = 0; f < result.num_faces(); ++f)
+            if (result.face_size(f) != 3)
+                throw ImplementationFailure(RunStatus::NotTriangles, file + ": " + result.source.describe_face(f) + " has " +
+                                                                         std::to_string(result.face_size(f)) + " corners; " +
+                                                                         to_string(scheme) + " makes triangles");
+    if (const auto want = expected_counts(scheme, input, levels))
+        if (result.num_vertices() != want->first || result.num_faces() != want->second)
+            throw ImplementationFailure(RunStatus::WrongCount,
+                                        file + ": " + std::to_string(result.num_vertices()) + " vertices, " +
+                                            std::to_string(result.num_faces()) + " faces; " + to_string(scheme) + " makes " +
+                                            std::to_string(want->first) + " vertices, " + std::to_string(want->second) +
+                                            " faces from this input at level " + std::to_string(levels));
+}
+
+PolyMesh read_program_result(const std::string& path, const std::string& shown_name) {
+    std::error_code ec;
+    if (!fs::exists(path, ec)) throw ImplementationFailure(RunStatus::NoOutput, "no output file " + shown_name);
+    if (fs::file_size(path, ec) == 0 && !ec) throw ImplementationFailure(RunStatus::NoOutput, "empty output file " + shown_name);
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw ImplementationFailure(RunStatus::NoOutput, "cannot open output file " + shown_name);
+    try {
+        const bool off = path.size() >= 4 && path.compare(path.size() - 4, 4, ".off") == 0;
+        return off ? read_off(in, shown_name) : read_obj(in, shown_name);
+    } catch (const NonFiniteNumber& e) {
+        throw ImplementationFailure(RunStatus::NonFiniteOutput, e.what());
+    } catch (const InputError& e) {
+        throw ImplementationFailure(RunStatus::UnreadableOutput, e.what());
+    }
+}
+
+std::unique_ptr<Implementation> make_program_implementation(const ProgramSpec& spec) {
+    if (spec.name.empty()) throw InputError("a program implementation needs a name");
+    if (!(spec.timeout_seconds > 0)) throw InputError("program '" + spec.name + "': the time limit must be positive");
+    CommandTemplate command(spec.command);
+    command.anchor_relative_paths();
+    return std::make_unique<Program>(spec, std::move(command));
+}
+
+std::unique_ptr<Implementation> make_result_file_implementation(const std::string& name, const std::string& path, Scheme scheme) {
+    return std::make_unique<ResultFile>(name, path, scheme);
+}
+
+}  // namespace crossdiv::verification

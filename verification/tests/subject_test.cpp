@@ -1,0 +1,203 @@
+// Programs under test: the command template, every named way a program fails, results in
+// another numbering, result files, and the rule a subject follows, measured per vertex class.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "crossdiv/datasets/bundled.h"
+#include "crossdiv/error.h"
+#include "crossdiv/io/mesh_io.h"
+#include "crossdiv/subdiv/loop.h"
+#include "crossdiv/verification/comparisons/loop_comparison.h"
+#include "crossdiv/verification/implementations/program_implementation.h"
+#include "crossdiv/verification/implementations/registry.h"
+
+namespace crossdiv::verification {
+namespace {
+
+const std::string kSource = CROSSDIV_SOURCE_DIR;
+const std::string kStudent = "python3 " + kSource + "/examples/subjects/python-loop/loop.py {in} {levels} {out}";
+
+std::string misbehaving(const std::string& mode) {
+    return "python3 " + kSource + "/verification/tests/subjects/misbehaving_subject.py " + mode + " {in} {levels} {out}";
+}
+
+TriMesh bundled(const std::string& name) { return to_tri_mesh(datasets::bundled_mesh(name), "test"); }
+
+LoopComparison compare_with(const Implementation& subject, const std::string& mesh, int levels) {
+    LoopComparisonRequest req;
+    req.levels = levels;
+    req.subject = &subject;
+    return compare_loop(bundled(mesh), mesh, req);
+}
+
+std::unique_ptr<Implementation> program(const std::string& command, double timeout = 60,
+                                        LevelMode levels = LevelMode::Each) {
+    return make_program_implementation({"subject", command, {Scheme::Loop}, levels, Precision::Double, timeout});
+}
+
+TEST(CommandTemplate, SplitsLikeAShellWithoutOneAndSubstitutesEachPlaceholder) {
+    const CommandTemplate t("prog 'a b' \"c {levels}\" x\\ y --out={out.off} {{lit}} {scheme} {weights} {boundary} {in}");
+    EXPECT_TRUE(t.reads(MeshFormat::Obj));
+    EXPECT_FALSE(t.reads(MeshFormat::Off));
+    EXPECT_EQ(t.output_format(), MeshFormat::Off);
+    TemplateValues v{"/t/in.obj", "/t/in.off", "/t/out.off", {Scheme::Loop, {}, 3}};
+    v.request.rule.loop = {LoopWeights::Warren, LoopBoundary::EdgeAndCorner};
+    const std::vector<std::string> want = {"prog", "a b", "c 3", "x y", "--out=/t/out.off", "{lit}", "loop",
+                                           "warren", "edge-and-corner", "/t/in.obj"};
+    EXPECT_EQ(t.expand(v), want);
+    // A file name with a shell metacharacter stays one argument.
+    v.in_obj = "/t/a;rm -rf x.obj";
+    EXPECT_EQ(t.expand(v).back(), "/t/a;rm -rf x.obj");
+}
+
+TEST(CommandTemplate, RefusesWhatCannotRun) {
+    EXPECT_THROW(CommandTemplate("prog {in} {levels}"), InputError);            // no output
+    EXPECT_THROW(CommandTemplate("prog {in} {outt}"), InputError);              // unknown placeholder
+    EXPECT_THROW(CommandTemplate("prog {in} {out} {out.off}"), InputError);     // two formats
+    EXPECT_THROW(CommandTemplate("prog 'unclosed {out}"), InputError);
+    EXPECT_THROW(CommandTemplate("prog {in {out}"), InputError);
+    EXPECT_THROW(CommandTemplate("   "), InputError);
+    try {
+        CommandTemplate("prog {input} {out}");
+        FAIL();
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("{input}"), std::string::npos) << e.what();
+    }
+}
+
+TEST(ExpectedCounts, FollowFromTheInputCounts) {
+    const PolyMesh tet = datasets::bundled_mesh("tetrahedron");
+    // Loop: V + E and 4F per level: 4 + 6 = 10, 16; then 10 + (2*6 + 3*4) = 34, 64.
+    EXPECT_EQ(expected_counts(Scheme::Loop, tet, 1), (std::pair<long, long>{10, 16}));
+    EXPECT_EQ(expected_counts(Scheme::Loop, tet, 2), (std::pair<long, long>{34, 64}));
+    // Catmull-Clark on the cube: 8 + 12 + 6 = 26 vertices, one quad per corner: 24.
+    EXPECT_EQ(expected_counts(Scheme::CatmullClark, datasets::polygon_meshes().front().mesh, 1), (std::pair<long, long>{26, 24}));
+    EXPECT_FALSE(expected_counts(Scheme::DooSabin, tet, 1));
+}
+
+struct Failure {
+    const char* mode;
+    RunStatus status;
+    const char* in_message;  ///< a piece of the message that shows the failure was named
+};
+
+class ProgramFailure : public ::testing::TestWithParam<Failure> {};
+
+TEST_P(ProgramFailure, IsNamedAndNothingIsCompared) {
+    const Failure f = GetParam();
+    const auto subject = program(misbehaving(f.mode), 3);
+    const LoopComparison c = compare_with(*subject, "icosahedron", 2);
+    EXPECT_EQ(c.subject_outcome.status, f.status) << c.subject_outcome.summary();
+    EXPECT_NE(c.subject_outcome.message.find(f.in_message), std::string::npos) << c.subject_outcome.message;
+    EXPECT_TRUE(c.subject_failed());
+    EXPECT_TRUE(c.runs.empty());
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Modes, ProgramFailure,
+    ::testing::Values(Failure{"crash", RunStatus::Crashed, "signal 11"}, Failure{"hang", RunStatus::Timeout, "no result after 3 s"},
+                      Failure{"exit", RunStatus::ExitStatus, "half-edge table overflow"},
+                      Failure{"nothing", RunStatus::NoOutput, "no output file out.obj"},
+                      Failure{"nan", RunStatus::NonFiniteOutput, "out.obj:"},
+                      Failure{"garbage", RunStatus::UnreadableOutput, "out.obj:4"},
+                      Failure{"wrong-count", RunStatus::WrongCount, "42 vertices, 80 faces"},
+                      Failure{"quads", RunStatus::NotTriangles, "face 0"}),
+    [](const auto& info) {
+        std::string n = info.param.mode;
+        for (char& ch : n)
+            if (ch == '-') ch = '_';
+        return n;
+    });
+
+TEST(Program, ThatCannotStartIsRecorded) {
+    const auto subject = program("/nonexistent/loop {in} {out}");
+    const LoopComparison c = compare_with(*subject, "tetrahedron", 1);
+    EXPECT_EQ(c.subject_outcome.status, RunStatus::Crashed);
+    EXPECT_NE(c.subject_outcome.message.find("cannot start"), std::string::npos) << c.subject_outcome.message;
+}
+
+TEST(Program, InAnotherNumberingIsMatchedByPositionAndAgrees) {
+    const auto subject = program(misbehaving("shuffle"));
+    const LoopComparison c = compare_with(*subject, "open-patch", 2);
+    ASSERT_FALSE(c.subject_failed()) << c.subject_outcome.summary() << c.subject_unmatched;
+    // Old vertices are not first, so provenance cannot match it: positions do, at every level.
+    EXPECT_EQ(c.subject_match.method, MatchMethod::Nearest);
+    ASSERT_TRUE(c.rules && c.rules->rule);
+    EXPECT_EQ(*c.rules->rule, (LoopOptions{LoopWeights::Loop, LoopBoundary::EdgeOnly}));
+    EXPECT_EQ(c.rules->classified_level, 1);
+    ASSERT_FALSE(c.runs.empty());
+    for (const ReferenceRun& r : c.runs) EXPECT_EQ(r.verdict, Verdict::Agree) << r.reference << ": " << r.explanation;
+}
+
+const RuleFit& fit(const VertexClassRow& row, LoopWeights w, LoopBoundary b) {
+    for (const RuleFit& f : row.fits)
+        if (f.rule == LoopOptions{w, b}) return f;
+    throw std::logic_error("no such rule");
+}
+
+const VertexClassRow& row(const RuleIdentification& id, VertexClass cls, int valence = 0) {
+    for (const VertexClassRow& r : id.rows)
+        if (r.cls == cls && r.valence == valence) return r;
+    throw std::logic_error(std::string("no row ") + to_string(cls));
+}
+
+TEST(RuleIdentification, TheCourseStudentFollowsWarrenAtInteriorVerticesAndHasNoCornerRule) {
+    const auto subject = program(kStudent);
+    // The icosahedron: every vertex of valence 5, where Warren's beta 3/40 differs from Loop's.
+    const LoopComparison ico = compare_with(*subject, "icosahedron", 2);
+    ASSERT_TRUE(ico.rules);
+    const VertexClassRow& v5 = row(*ico.rules, VertexClass::InteriorVertex, 5);
+    EXPECT_EQ(v5.count, 12);
+    EXPECT_TRUE(fit(v5, LoopWeights::Warren, LoopBoundary::EdgeOnly).fits);
+    EXPECT_FALSE(fit(v5, LoopWeights::Loop, LoopBoundary::EdgeOnly).fits);
+    EXPECT_EQ(row(*ico.rules, VertexClass::InteriorEdgePoint).count, 30);
+    ASSERT_TRUE(ico.rules->rule);
+    EXPECT_EQ(ico.rules->rule->weights, LoopWeights::Warren);
+    for (const ReferenceRun& r : ico.runs) {
+        EXPECT_EQ(r.verdict, Verdict::Diverge) << r.reference << ": " << r.explanation;
+        EXPECT_EQ(r.divergence_class, DivergenceClass::WeightFamily) << r.reference << ": " << r.explanation;
+    }
+    // The open patch: its two one-face corners are moved by the boundary mask (no corner rule).
+    const LoopComparison patch = compare_with(*subject, "open-patch", 2);
+    ASSERT_TRUE(patch.rules);
+    const VertexClassRow& corner = row(*patch.rules, VertexClass::Corner);
+    EXPECT_EQ(corner.count, 2);
+    EXPECT_TRUE(fit(corner, LoopWeights::Warren, LoopBoundary::EdgeOnly).fits);
+    EXPECT_FALSE(fit(corner, LoopWeights::Warren, LoopBoundary::EdgeAndCorner).fits);
+
+    RuleTally tally;
+    tally.add(*ico.rules);
+    tally.add(*patch.rules);
+    EXPECT_EQ(tally.rule_phrase(), "Loop scheme, weights=warren at interior vertices (valence 5..6), edge-only boundary, "
+                                   "no corner rule");
+    EXPECT_EQ(tally.core_phrase().rfind("agrees with core weights=warren boundary=edge-only to ", 0), 0u) << tally.core_phrase();
+    EXPECT_NE(tally.core_phrase().find("on 2 of 2 meshes"), std::string::npos) << tally.core_phrase();
+}
+
+TEST(RuleIdentification, FinalLevelOnlyIdentifiesTheWholeMeshRule) {
+    const auto subject = program(kStudent, 60, LevelMode::Final);
+    const LoopComparison c = compare_with(*subject, "icosahedron", 2);
+    ASSERT_TRUE(c.rules);
+    EXPECT_EQ(c.rules->classified_level, 0);
+    EXPECT_TRUE(c.rules->rows.empty());
+    ASSERT_TRUE(c.rules->rule);
+    EXPECT_EQ(c.rules->rule->weights, LoopWeights::Warren);
+}
+
+TEST(ResultFile, ASubmittedResultIsComparedAtItsLevel) {
+    const std::string path = (std::filesystem::temp_directory_path() / "crossdiv_result_file_test.obj").string();
+    write_mesh(path, to_poly_mesh(loop_subdivide(bundled("octahedron"), {LoopWeights::Loop, LoopBoundary::EdgeOnly}, 2)));
+    const auto subject = make_result_file_implementation("submitted", path, Scheme::Loop);
+    const LoopComparison c = compare_with(*subject, "octahedron", 2);
+    ASSERT_FALSE(c.subject_failed()) << c.subject_outcome.summary();
+    for (const ReferenceRun& r : c.runs) EXPECT_EQ(r.verdict, Verdict::Agree) << r.reference << ": " << r.explanation;
+    // At another level its counts are wrong: named, not compared.
+    const LoopComparison wrong = compare_with(*subject, "octahedron", 1);
+    EXPECT_EQ(wrong.subject_outcome.status, RunStatus::WrongCount) << wrong.subject_outcome.summary();
+    std::filesystem::remove(path);
+}
+
+}  // namespace
+}  // namespace crossdiv::verification

@@ -1,0 +1,75 @@
+#!/usr/bin/env python3
+"""A subject that fails in one named way, for the tests of the harness's program runs:
+
+    misbehaving_subject.py MODE IN.obj LEVELS OUT.obj
+
+MODE: crash (SIGSEGV), hang, exit (status 3 with a message on stderr), nothing (exit 0, no
+file), nan, garbage (an unreadable line), wrong-count (one face dropped), quads (two
+triangles written as one quad), shuffle (Loop's own weights, with vertices, faces and each
+face's corners in a random order: a correct result in another numbering).
+"""
+import math
+import os
+import random
+import signal
+import sys
+import time
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "examples", "subjects",
+                                "python-loop"))
+import loop  # noqa: E402
+
+
+def loop_beta(n):
+    """Loop's 1987 weight: (5/8 - (3/8 + cos(2 pi / n) / 4)^2) / n."""
+    return (5.0 / 8.0 - (3.0 / 8.0 + math.cos(2.0 * math.pi / n) / 4.0) ** 2) / n
+
+
+def main():
+    mode, src, levels, out = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4]
+    if mode == "crash":
+        os.kill(os.getpid(), signal.SIGSEGV)
+    if mode == "hang":
+        time.sleep(3600)
+    if mode == "exit":
+        sys.stderr.write("cannot subdivide: half-edge table overflow\n")
+        sys.exit(3)
+    if mode == "nothing":
+        return
+    loop.even_beta = loop_beta
+    verts, faces = loop.read_obj(src)
+    for _ in range(levels):
+        verts, faces = loop.subdivide(verts, faces)
+    if mode == "nan":
+        verts[len(verts) // 2][1] = float("nan")
+    if mode == "wrong-count":
+        faces.pop()
+    if mode == "garbage":
+        with open(out, "w") as f:
+            f.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x\n")
+        return
+    if mode == "quads":
+        with open(out, "w") as f:
+            for v in verts:
+                f.write("v %r %r %r\n" % tuple(v))
+            a, b = faces[0], faces[1]
+            f.write("f %d %d %d %d\n" % (a[0] + 1, a[1] + 1, a[2] + 1, b[0] + 1))
+            for t in faces[2:]:
+                f.write("f %d %d %d\n" % (t[0] + 1, t[1] + 1, t[2] + 1))
+        return
+    if mode == "shuffle":
+        rng = random.Random(17)
+        order = list(range(len(verts)))
+        rng.shuffle(order)  # order[new] = old
+        new_of = [0] * len(verts)
+        for new, old in enumerate(order):
+            new_of[old] = new
+        verts = [verts[old] for old in order]
+        faces = [[new_of[v] for v in t] for t in faces]
+        rng.shuffle(faces)
+        faces = [t[k:] + t[:k] for t, k in ((t, rng.randrange(3)) for t in faces)]
+    loop.write_obj(out, verts, faces)
+
+
+if __name__ == "__main__":
+    main()
