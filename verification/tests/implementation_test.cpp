@@ -3,6 +3,8 @@
 // refusals naming what is lacking; the typed verdicts and the classification ladder.
 #include <gtest/gtest.h>
 
+#include "library_guard.h"
+
 #include <set>
 
 #include "crossdiv/datasets/bundled.h"
@@ -45,7 +47,7 @@ TEST(Registry, CoreFirstNamesUniqueEveryReferenceALibrary) {
 }
 
 TEST(Registry, LibrariesApplyTheirClosestRule) {
-    if (!is_built("opensubdiv") || !is_built("openmesh") || !is_built("cgal")) GTEST_SKIP() << "a library is not built";
+    CROSSDIV_REQUIRE_LIBRARIES("opensubdiv", "openmesh", "cgal");
     const Implementation &osd = find_implementation("opensubdiv"), &om = find_implementation("openmesh"),
                          &cg = find_implementation("cgal");
     // Loop: OpenSubdiv has both boundary rules, the others edge-only; nobody has Warren.
@@ -90,7 +92,7 @@ TEST(Implementation, CoreRefinesThroughTheInterfaceAsItsOwnCallsBitForBit) {
 }
 
 TEST(Implementation, AnOperationItLacksIsARefusalNamingIt) {
-    if (!is_built("eigen")) GTEST_SKIP() << "eigen not built";
+    CROSSDIV_REQUIRE_LIBRARIES("eigen");
     const Implementation& eigen = find_implementation("eigen");
     try {
         eigen.refine(datasets::bundled_mesh("tetrahedron"), {Scheme::Loop, {}, 1});

@@ -2,6 +2,8 @@
 // convergence tables: the measured figures of issue 6 asserted on the catalog.
 #include <gtest/gtest.h>
 
+#include "library_guard.h"
+
 #include <algorithm>
 
 #include "crossdiv/verification/implementations/registry.h"
@@ -102,7 +104,7 @@ TEST(Convergence, AVertexConvergesAtItsRotationInvariantEigenvalue) {
 }
 
 TEST(BfrComparison, ExactAtLevelOneDyadicPointsEvenOnIrregularFaces) {
-    if (!is_built("opensubdiv")) GTEST_SKIP() << "opensubdiv not built";
+    CROSSDIV_REQUIRE_LIBRARIES("opensubdiv");
     // Measured: Bfr's approximation of an irregular face does not reach the level-1 dyadic
     // points (its sub-patches there are exact), so every point agrees with core's limit masks.
     int regular = 0, irregular = 0;

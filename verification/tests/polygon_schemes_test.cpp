@@ -3,6 +3,8 @@
 // figures of issue 6), the Butterfly properties, and the matching that survives a moved vertex.
 #include <gtest/gtest.h>
 
+#include "library_guard.h"
+
 #include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/mesh/poly_connectivity.h"
@@ -26,7 +28,7 @@ int max_valence(const PolyMesh& m) {
 }
 
 TEST(DooSabinComparison, CgalAgreesOnClosedMeshesAndDropsBorderFacesOnOpenOnes) {
-    if (!is_built("cgal")) GTEST_SKIP() << "cgal not built";
+    CROSSDIV_REQUIRE_LIBRARIES("cgal");
     for (const auto& b : catalog()) {
         SchemeRequest req;
         req.scheme = Scheme::DooSabin;
@@ -47,7 +49,7 @@ TEST(DooSabinComparison, CgalAgreesOnClosedMeshesAndDropsBorderFacesOnOpenOnes) 
 }
 
 TEST(Sqrt3Comparison, OneCallAgreesPerLevelCallsNeverRefineTheBoundary) {
-    if (!is_built("cgal") || !is_built("openmesh")) GTEST_SKIP() << "cgal and openmesh not built";
+    CROSSDIV_REQUIRE_LIBRARIES("cgal", "openmesh");
     for (const auto& b : catalog()) {
         if (!b.mesh.all_triangles()) continue;
         SchemeRequest req;
@@ -73,7 +75,7 @@ TEST(Sqrt3Comparison, OneCallAgreesPerLevelCallsNeverRefineTheBoundary) {
 }
 
 TEST(ModifiedButterflyComparison, OpenMeshAgreesOnEveryTriangleMesh) {
-    if (!is_built("openmesh")) GTEST_SKIP() << "openmesh not built";
+    CROSSDIV_REQUIRE_LIBRARIES("openmesh");
     for (const auto& b : datasets::bundled_meshes()) {
         SchemeRequest req;
         req.scheme = Scheme::ModifiedButterfly;
