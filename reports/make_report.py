@@ -42,7 +42,8 @@ def build(results, bench, folder, figdir):
              f"{results.get('workers', 1)} worker(s)",
              f"- references: {refs}"]
     before, after = sections.mesh_sections(results, mesh, folder, figdir)
-    body = [sections.outcomes_section(s), *before,
+    subject = sections.subject_section(mesh)
+    body = [sections.outcomes_section(s), *([subject] if subject else []), *before,
             sections.catalogue_section(sections.catalogue_rows(mesh, curves + surfaces + studies)), *after,
             sections.curve_section(curves, bench, figdir), sections.surface_section(surfaces, bench, figdir),
             sections.studies_section(studies, figdir), sections.timing_section(bench, figdir)]

@@ -226,7 +226,7 @@ TEST(LoopSplitFlip, EqualsIndexBasedLoopBitForBit) {
     TriMesh colored = grid(3);
     for (const Vec3& p : colored.positions) colored.colors.push_back(0.1 * p);
     for (const TriMesh& base : {tetrahedron(), square(), grid(3), colored})
-        for (LoopWeights w : {LoopWeights::Loop, LoopWeights::Warren})
+        for (LoopWeights w : kAllLoopWeights)
             for (LoopBoundary b : {LoopBoundary::EdgeOnly, LoopBoundary::EdgeAndCorner}) {
                 const LoopOptions opt{w, b};
                 const TriMesh index = loop_subdivide(base, opt, 1);

@@ -61,5 +61,50 @@ TEST(LoopMask, BoundaryVertexMasks) {
     EXPECT_EQ(boundary_vertex_mask(LoopBoundary::EdgeAndCorner, 2).self, 0.75);
 }
 
+// The Barthe-Kobbelt families, against the table values (VCG's five decimals) by hand.
+TEST(LoopMask, TunedFamiliesVertexWeightsFromTheTables) {
+    // Regularity, valence 5: 1 - 5 beta = .59549; continuity, valence 8: .67821.
+    EXPECT_NEAR(interior_vertex_mask(LoopWeights::Regularity, 5).self, 0.59549, 1e-15);
+    EXPECT_NEAR(loop_beta(LoopWeights::Regularity, 5), (1 - 0.59549) / 5, 1e-17);
+    EXPECT_NEAR(interior_vertex_mask(LoopWeights::Continuity, 8).self, 0.67821, 1e-15);
+    // Valence 6 is Loop's in every table; outside 3..12 the tuned families take Loop's beta.
+    for (LoopWeights w : {LoopWeights::Regularity, LoopWeights::Continuity}) {
+        EXPECT_NEAR(loop_beta(w, 6), 1.0 / 16.0, 1e-17);
+        EXPECT_EQ(loop_beta(w, 13), loop_beta(LoopWeights::Loop, 13));
+        EXPECT_EQ(loop_beta(w, 64), loop_beta(LoopWeights::Loop, 64));
+    }
+}
+
+TEST(LoopMask, TunedEdgeMaskNextToOneExtraordinaryEnd) {
+    // Regularity, an edge from a valence-4 vertex to a regular one: .25029 on the valence-4
+    // end, .12524 on each opposite vertex, 1 - .25029 - 2 (.12524) = .49923 on the regular end.
+    const TunedEdgeMask m = tuned_edge_mask(LoopWeights::Regularity, 6, 4);
+    EXPECT_NEAR(m.end_a, 0.49923, 1e-15);
+    EXPECT_NEAR(m.end_b, 0.25029, 1e-15);
+    EXPECT_NEAR(m.opposite, 0.12524, 1e-15);
+    const TunedEdgeMask swapped = tuned_edge_mask(LoopWeights::Regularity, 4, 6);
+    EXPECT_EQ(swapped.end_a, m.end_b);
+    EXPECT_EQ(swapped.end_b, m.end_a);
+    // Neither end regular, or the irregular end beyond the table: Loop's 3/8, 1/8.
+    for (auto [a, b] : {std::pair{5, 7}, std::pair{6, 13}, std::pair{4, 4}}) {
+        const TunedEdgeMask p = tuned_edge_mask(LoopWeights::Continuity, a, b);
+        EXPECT_EQ(p.end_a, 0.375);
+        EXPECT_EQ(p.end_b, 0.375);
+        EXPECT_EQ(p.opposite, 0.125);
+    }
+    // Loop's and Warren's families never tune the edge.
+    EXPECT_EQ(tuned_edge_mask(LoopWeights::Warren, 6, 4).end_b, 0.375);
+}
+
+TEST(LoopMask, TunedEdgeValenceOfBoundaryVerticesCountsFaces) {
+    // VCG reads a boundary vertex of f faces as max(2 (f - 1), 3): 1 and 2 faces read 3, a
+    // regular boundary vertex (3 faces) reads 4, 4 faces read 6.
+    EXPECT_EQ(tuned_edge_valence(1, true), 3);
+    EXPECT_EQ(tuned_edge_valence(2, true), 3);
+    EXPECT_EQ(tuned_edge_valence(3, true), 4);
+    EXPECT_EQ(tuned_edge_valence(4, true), 6);
+    EXPECT_EQ(tuned_edge_valence(7, false), 7);
+}
+
 }  // namespace
 }  // namespace crossdiv

@@ -1,9 +1,11 @@
 // Loop subdivision on tiny meshes whose refined positions are computed by hand.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 
 #include "crossdiv/error.h"
+#include "crossdiv/subdiv/limit.h"
 #include "crossdiv/subdiv/loop.h"
 
 namespace crossdiv {
@@ -187,6 +189,62 @@ TEST(Loop, ColorsFollowTheSameStencils) {
     ASSERT_EQ(f.colors.size(), f.positions.size());
     // Vertex 0: 7/16 (1,0,0) + 3/16 ((0,1,0) + (0,0,1) + (1,1,1)) = (10/16, 6/16, 6/16).
     EXPECT_EQ(f.colors[0], Vec3(10.0 / 16, 6.0 / 16, 6.0 / 16));
+}
+
+// Hexagonal bipyramid: poles 0 (z = 1) and 1 (z = -1) of valence 6, equator 2..7 of valence 4.
+TriMesh hexagonal_bipyramid() {
+    TriMesh m;
+    m.positions = {Vec3(0, 0, 1), Vec3(0, 0, -1)};
+    for (int i = 0; i < 6; ++i) m.positions.push_back(Vec3(std::cos(M_PI * i / 3), std::sin(M_PI * i / 3), 0));
+    for (int i = 0; i < 6; ++i) {
+        const int a = 2 + i, b = 2 + (i + 1) % 6;
+        m.triangles.push_back({0, a, b});
+        m.triangles.push_back({1, b, a});
+    }
+    return m;
+}
+
+TEST(Loop, TunedFamilyRowsOnTheHexagonalBipyramid) {
+    // Regularity: the pole-equator edge (valences 6 and 4) takes the tuned row of valence 4
+    // (.49923 on the pole, .25029 on the equator vertex, .12524 on its two equator neighbours);
+    // the equator edge (4 and 4) keeps 3/8, 1/8; an equator vertex keeps .49954 on itself.
+    const TriMesh m = hexagonal_bipyramid();
+    const Eigen::SparseMatrix<double> S = loop_subdivision_matrix(m, {LoopWeights::Regularity, LoopBoundary::EdgeOnly});
+    LoopRefiner r(m, {LoopWeights::Regularity, LoopBoundary::EdgeOnly});
+    r.refine(1);
+    const std::vector<VertexOrigin> o = r.origins(1);
+    for (size_t row = 0; row < o.size(); ++row) {
+        if (!o[row].is_edge_point()) continue;
+        const std::set<int> ends{o[row].a, o[row].b};
+        if (ends == std::set<int>{0, 2}) {
+            EXPECT_NEAR(S.coeff(row, 0), 0.49923, 1e-15);
+            EXPECT_NEAR(S.coeff(row, 2), 0.25029, 1e-15);
+            EXPECT_NEAR(S.coeff(row, 3), 0.12524, 1e-15);
+            EXPECT_NEAR(S.coeff(row, 7), 0.12524, 1e-15);
+            EXPECT_EQ(S.coeff(row, 1), 0.0);
+        }
+        if (ends == std::set<int>{2, 3}) {
+            EXPECT_EQ(S.coeff(row, 2), 0.375);
+            EXPECT_EQ(S.coeff(row, 0), 0.125);
+            EXPECT_EQ(S.coeff(row, 1), 0.125);
+        }
+    }
+    EXPECT_NEAR(S.coeff(2, 2), 0.49954, 1e-15);
+    EXPECT_NEAR(S.coeff(0, 0), 0.625, 1e-15);
+    // The refinement is the matrix applied to the positions.
+    const TriMesh fine = loop_subdivide(m, {LoopWeights::Regularity, LoopBoundary::EdgeOnly}, 1);
+    for (int i = 0; i < S.rows(); ++i) {
+        Vec3 p = Vec3::Zero();
+        for (int v = 0; v < m.num_vertices(); ++v) p += S.coeff(i, v) * m.positions[v];
+        EXPECT_NEAR((p - fine.positions[i]).norm(), 0.0, 1e-15);
+    }
+}
+
+TEST(Loop, TunedFamiliesRefuseCreasesAndLimits) {
+    PolyMesh tagged = to_poly_mesh(hexagonal_bipyramid());
+    tagged.creases.edges.push_back({0, 2, 1.0f});
+    EXPECT_THROW(loop_subdivide(tagged, {LoopWeights::Continuity, LoopBoundary::EdgeOnly}, 1), InputError);
+    EXPECT_THROW(loop_limit(hexagonal_bipyramid(), {LoopWeights::Regularity, LoopBoundary::EdgeOnly}), InputError);
 }
 
 TEST(Loop, RejectsNonFiniteCoordinates) {

@@ -1,6 +1,8 @@
 // OBJ/OFF: order kept, polygons kept, bit-exact round trip, errors with file and line.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
 #include <sstream>
 
@@ -151,6 +153,82 @@ TEST(MeshIo, QuadGivenToATriangleSchemeNamesTheLine) {
                   "face 1 (t.obj:6): has 4 corners; Loop subdivision needs triangles (the mesh is not triangulated "
                   "for you)");
     }
+}
+
+
+/// A binary PLY of one quad and one triangle over five float vertices, in the given byte order.
+std::string binary_ply(bool little_endian) {
+    std::string s = std::string("ply\nformat ") + (little_endian ? "binary_little_endian" : "binary_big_endian") +
+                    " 1.0\ncomment made by hand\nelement vertex 5\nproperty float x\nproperty float y\nproperty float z\n"
+                    "property uchar red\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n";
+    auto put = [&](const void* p, size_t n) {
+        std::string b(static_cast<const char*>(p), n);
+        if (little_endian != (std::endian::native == std::endian::little)) std::reverse(b.begin(), b.end());
+        s += b;
+    };
+    const float coords[5][3] = {{0.1f, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5f, 2, 1.0f / 3}};
+    for (const auto& c : coords) {
+        for (float x : c) put(&x, 4);
+        const unsigned char red = 7;
+        put(&red, 1);
+    }
+    const int quad[4] = {0, 1, 2, 3}, tri[3] = {3, 2, 4};
+    unsigned char n = 4;
+    put(&n, 1);
+    for (int i : quad) put(&i, 4);
+    n = 3;
+    put(&n, 1);
+    for (int i : tri) put(&i, 4);
+    return s;
+}
+
+TEST(MeshIo, PlyBinaryBothByteOrdersReadFloatsExactly) {
+    for (bool little : {true, false}) {
+        std::istringstream in(binary_ply(little));
+        const PolyMesh m = read_ply(in, "b.ply");
+        ASSERT_EQ(m.num_vertices(), 5);
+        ASSERT_EQ(m.num_faces(), 2);
+        EXPECT_EQ(m.positions[0].x(), static_cast<double>(0.1f));  // the float, not 0.1
+        EXPECT_EQ(m.positions[4].z(), static_cast<double>(1.0f / 3));
+        EXPECT_EQ(m.face_size(0), 4);
+        EXPECT_EQ(m.face(1)[2], 4);
+    }
+}
+
+TEST(MeshIo, PlyAsciiRoundTripIsBitExact) {
+    PolyMesh m;
+    m.positions = {Vec3(0.1, 1.0 / 3, -2e-300), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 1)};
+    m.add_face({0, 1, 2});
+    m.add_face({1, 3, 2});
+    std::ostringstream out;
+    write_ply(out, m);
+    std::istringstream in(out.str());
+    const PolyMesh back = read_ply(in, "rt.ply");
+    EXPECT_EQ(back.positions, m.positions);
+    EXPECT_EQ(back.face_vertices, m.face_vertices);
+    EXPECT_EQ(back.source.vertex_line[0], 11);  // after the 10 header lines
+}
+
+TEST(MeshIo, PlyErrorsNameFileAndLine) {
+    auto error = [](const std::string& text) {
+        std::istringstream in(text);
+        try {
+            read_ply(in, "bad.ply");
+        } catch (const ParseError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    const std::string head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                             "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    EXPECT_EQ(error(head + "0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n"), "bad.ply:13: face 0: vertex index 3 out of range [0, 3)");
+    EXPECT_EQ(error(head + "0 0 0\n1 0 nan\n"), "bad.ply:11: z is nan; numbers must be finite");
+    EXPECT_EQ(error(head + "0 0 0\n"), "bad.ply:10: unexpected end of file, expecting vertex 1");
+    EXPECT_EQ(error("ply\nformat ascii 2.0\n"), "bad.ply:2: only PLY version 1.0 is known");
+    EXPECT_EQ(error("ply\nformat ascii 1.0\nproperty float x\n"), "bad.ply:3: a property before any element");
+    std::string truncated = binary_ply(true);
+    truncated.resize(truncated.size() - 3);
+    EXPECT_EQ(error(truncated), "bad.ply:9: unexpected end of the binary data in face 1");
 }
 
 }  // namespace

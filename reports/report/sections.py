@@ -46,6 +46,29 @@ def catalogue_rows(mesh_cases, check_cases):
     return rows
 
 
+def subject_section(mesh_cases):
+    """The implementations under test in core's place (manifest `subject`): per case, how it ran,
+    how its vertices were matched, and the named rule it follows per vertex class. None when
+    every case tested core."""
+    cases = [c for c in mesh_cases if "subject" in c]
+    if not cases:
+        return None
+    rows = []
+    for c in cases:
+        s = c["subject"]
+        rules = s.get("rules") or {}
+        unfit = [f"{k['class']}{' ' + str(k['valence']) if k['valence'] else ''}"
+                 for k in rules.get("classes", []) if not any(f["fits"] for f in k["fits"])]
+        rows.append((c["id"], s["name"], s["status"] if s["status"] != "ok" else s.get("match", {}).get("method", "-"),
+                     rules.get("rule") or ("no named rule" if rules else "-"),
+                     ", ".join(unfit) if unfit else "-", s.get("status_message") or s.get("unmatched") or ""))
+    return Section("Implementations under test").add(
+        Text("Each case whose implementation under test is a subject (a program or result files in core's place): "
+             "its run or match, the named Loop rule that fits every vertex at every compared level, and the vertex "
+             "classes no named rule fits (results.json `subject.rules` has the distance to every rule per class)."),
+        Table(["case", "subject", "run / match", "rule", "classes no rule fits", "message"], rows))
+
+
 def catalogue_section(rows):
     counts = Counter((row["class"], row["reference"]) for row in rows)
     return Section("Divergence catalogue").add(

@@ -22,6 +22,7 @@
 #include "crossdiv/verification/harness/inputs.h"
 #include "crossdiv/verification/implementations/program_implementation.h"
 #include "crossdiv/verification/implementations/registry.h"
+#include "crossdiv/verification/suite/manifest.h"
 #include "edit_commands.h"
 #include "scheme_commands.h"
 
@@ -41,8 +42,10 @@ struct SchemeArgs {
         app.add_option("--scheme", scheme, "Subdivision scheme")
             ->check(CLI::IsMember({"loop", "catmull-clark", "doo-sabin", "sqrt3", "butterfly", "modified-butterfly"}))
             ->capture_default_str();
-        app.add_option("--weights", weights, "Even-vertex weight family: loop (Loop 1987) or warren (3/(8n))")
-            ->check(CLI::IsMember({"loop", "warren"}))
+        app.add_option("--weights", weights,
+                       "Weight family: loop (Loop 1987), warren (3/(8n)), or the Barthe-Kobbelt tunings "
+                       "regularity and continuity (MeshLab's)")
+            ->check(CLI::IsMember({"loop", "warren", "regularity", "continuity"}))
             ->capture_default_str();
         app.add_option("--boundary", boundary,
                        "Boundary rule. loop: edge-only (default) or edge-and-corner; catmull-clark: those and "
@@ -391,6 +394,7 @@ struct CompareArgs {
     double timeout = 120;
     bool no_isolate = false;
     std::string subject, subject_name = "subject", subject_levels = "each", subject_result;
+    std::vector<std::string> references;
     void add_to(CLI::App& app) {
         app.add_option("inputs", inputs, "Mesh files, bundled:NAME, bundled:all, course:all, cgal:all")->required();
         scheme.add_scheme_options(app);
@@ -410,15 +414,39 @@ struct CompareArgs {
             ->check(CLI::IsMember({"each", "final"}))
             ->capture_default_str();
         app.add_option("--subject-result", subject_result,
-                       "Put a result file under test (OBJ or OFF a program already wrote), compared at --levels")
+                       "Put a result file under test (OBJ, OFF or PLY a program already wrote), compared at --levels")
             ->excludes("--subject");
+        app.add_option("--reference", references,
+                       "Add a program as a reference: NAME=CMD, CMD a command template as for --subject; or "
+                       "NAME=command='CMD' [precision=float] [schemes=..] [weights=..] [boundary=..] [setup='CMD'] "
+                       "as a suite manifest's reference statement. Repeatable");
     }
 };
+
+/// Registers each --reference NAME=CMD (or NAME=command='CMD' key=value ...) as a reference.
+void register_cli_references(const std::vector<std::string>& specs, double timeout) {
+    for (const std::string& s : specs) {
+        const size_t eq = s.find('=');
+        if (eq == std::string::npos || eq == 0) throw InputError("--reference '" + s + "': expected NAME=CMD");
+        const std::string name = s.substr(0, eq), rest = s.substr(eq + 1);
+        const std::vector<std::string> keys = rest.starts_with("command=") ? statement_words(rest)
+                                                                            : std::vector<std::string>{"command=" + rest};
+        register_reference(make_program_implementation(program_spec(name, keys, "", timeout)));
+    }
+}
+
 int compare_command(const CompareArgs& a) {
+    register_cli_references(a.references, a.timeout);
     std::unique_ptr<Implementation> subject;
-    if (!a.subject.empty())
-        subject = make_program_implementation({a.subject_name, a.subject, {Scheme::Loop}, level_mode_from_string(a.subject_levels),
-                                               Precision::Double, a.timeout});
+    if (!a.subject.empty()) {
+        ProgramSpec spec;
+        spec.name = a.subject_name;
+        spec.command = a.subject;
+        spec.schemes = {Scheme::Loop};
+        spec.levels = level_mode_from_string(a.subject_levels);
+        spec.timeout_seconds = a.timeout;
+        subject = make_program_implementation(spec);
+    }
     if (!a.subject_result.empty()) {
         if (a.inputs.size() != 1) throw InputError("--subject-result compares one result file with one input");
         subject = make_result_file_implementation(a.subject_name, a.subject_result, Scheme::Loop);

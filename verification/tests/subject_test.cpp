@@ -34,7 +34,13 @@ LoopComparison compare_with(const Implementation& subject, const std::string& me
 
 std::unique_ptr<Implementation> program(const std::string& command, double timeout = 60,
                                         LevelMode levels = LevelMode::Each) {
-    return make_program_implementation({"subject", command, {Scheme::Loop}, levels, Precision::Double, timeout});
+    ProgramSpec spec;
+    spec.name = "subject";
+    spec.command = command;
+    spec.schemes = {Scheme::Loop};
+    spec.levels = levels;
+    spec.timeout_seconds = timeout;
+    return make_program_implementation(spec);
 }
 
 TEST(CommandTemplate, SplitsLikeAShellWithoutOneAndSubstitutesEachPlaceholder) {
@@ -42,7 +48,7 @@ TEST(CommandTemplate, SplitsLikeAShellWithoutOneAndSubstitutesEachPlaceholder) {
     EXPECT_TRUE(t.reads(MeshFormat::Obj));
     EXPECT_FALSE(t.reads(MeshFormat::Off));
     EXPECT_EQ(t.output_format(), MeshFormat::Off);
-    TemplateValues v{"/t/in.obj", "/t/in.off", "/t/out.off", {Scheme::Loop, {}, 3}};
+    TemplateValues v{"/t/in.obj", "/t/in.off", "/t/in.ply", "/t/out.off", {Scheme::Loop, {}, 3}};
     v.request.rule.loop = {LoopWeights::Warren, LoopBoundary::EdgeAndCorner};
     const std::vector<std::string> want = {"prog", "a b", "c 3", "x y", "--out=/t/out.off", "{lit}", "loop",
                                            "warren", "edge-and-corner", "/t/in.obj"};

@@ -14,7 +14,8 @@
 namespace crossdiv::adapters::assimp {
 
 const std::vector<std::string>& extensions() {
-    static const std::vector<std::string> ext = {".dae", ".ply", ".stl"};
+    // PLY is read by core (io/ply.cpp), which keeps the file's vertex order and binary floats exactly.
+    static const std::vector<std::string> ext = {".dae", ".stl"};
     return ext;
 }
 

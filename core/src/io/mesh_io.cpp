@@ -20,21 +20,22 @@ std::string extension(const std::string& path) {
 
 PolyMesh read_mesh(const std::string& path) {
     const std::string ext = extension(path);
-    if (ext != "obj" && ext != "off")
-        throw InputError(path + ": unknown mesh format '." + ext + "' (expected .obj or .off)");
-    std::ifstream in(path);
+    if (ext != "obj" && ext != "off" && ext != "ply")
+        throw InputError(path + ": unknown mesh format '." + ext + "' (expected .obj, .off or .ply)");
+    std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path + ": cannot open file");
-    return ext == "obj" ? read_obj(in, path) : read_off(in, path);
+    return ext == "obj" ? read_obj(in, path) : ext == "off" ? read_off(in, path) : read_ply(in, path);
 }
 
 void write_mesh(const std::string& path, const PolyMesh& mesh) {
     const std::string ext = extension(path);
-    if (ext != "obj" && ext != "off")
-        throw InputError(path + ": unknown mesh format '." + ext + "' (expected .obj or .off)");
+    if (ext != "obj" && ext != "off" && ext != "ply")
+        throw InputError(path + ": unknown mesh format '." + ext + "' (expected .obj, .off or .ply)");
     std::ofstream out(path);
     if (!out) throw InputError(path + ": cannot write file");
     if (ext == "obj") write_obj(out, mesh);
-    else write_off(out, mesh);
+    else if (ext == "off") write_off(out, mesh);
+    else write_ply(out, mesh);
     if (!out) throw InputError(path + ": write failed");
 }
 

@@ -38,6 +38,11 @@ bool boundary_or_isolated_limit(const PolyConnectivity& conn, const std::vector<
 }  // namespace
 
 LimitResult loop_limit(const TriMesh& mesh, const LoopOptions& options) {
+    // The ring weight chi comes from the eigenvectors of the local subdivision matrix whose
+    // edge mask is 3/8, 1/8; the tuned families change that mask, and their limit is not this one.
+    if (has_tuned_edges(options.weights))
+        throw InputError("limit positions are derived for the weight families with Loop's edge mask (loop, warren); " +
+                         std::string(to_string(options.weights)) + " tunes the edge mask too");
     // The polygon connectivity makes the same checks as Loop's (finite coordinates, manifold,
     // oriented) and walks rings in the same order, so one build serves both.
     const PolyMesh poly = to_poly_mesh(mesh);

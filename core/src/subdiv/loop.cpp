@@ -10,15 +10,20 @@
 namespace crossdiv {
 namespace {
 
-/// Walks the coarse mesh once and hands every refined vertex's stencil to `sink` as two
-/// groups of equally weighted sources: emit(row, a, na, wa, b, nb, wb). All Loop masks have
-/// this shape (self + ring, or ends + opposites), so a sink can sum a group before scaling.
+/// Walks the coarse mesh once and hands every refined vertex's stencil to `sink` as groups
+/// of equally weighted sources: emit(row, a, na, wa, b, nb, wb[, c, nc, wc]). Loop's and
+/// Warren's masks have two (self + ring, or ends + opposites), so a sink can sum a group
+/// before scaling; the tuned families' edge mask next to an extraordinary vertex has three
+/// (each end, the opposites).
 template <class Sink>
 void apply_loop_stencils(const TriMesh& mesh, const TriConnectivity& conn, const LoopOptions& opt, Sink& sink) {
     const auto& T = mesh.triangles;
     const int nv = mesh.num_vertices();
     std::vector<int> ring;  // reused for every vertex: no allocation in the loop once grown
     ring.reserve(64);
+    // The valence each vertex reads in the tuned edge mask (only the tuned families need it).
+    const bool tuned = has_tuned_edges(opt.weights);
+    std::vector<int> edge_valence(tuned ? static_cast<size_t>(nv) : 0);
 
     for (int v = 0; v < nv; ++v) {
         const int start = conn.vertex_corner[v];
@@ -40,6 +45,7 @@ void apply_loop_stencils(const TriMesh& mesh, const TriConnectivity& conn, const
             ring.push_back(T[next / 3][(next % 3 + 2) % 3]);
             c = next;
         }
+        if (tuned) edge_valence[v] = tuned_edge_valence(faces, conn.is_boundary_vertex(v));
         if (conn.is_boundary_vertex(v)) {
             const int ends[2] = {ring.front(), T[last / 3][(last % 3 + 1) % 3]};
             const VertexMask m = boundary_vertex_mask(opt.boundary, faces);
@@ -60,8 +66,11 @@ void apply_loop_stencils(const TriMesh& mesh, const TriConnectivity& conn, const
             sink.emit(nv + e, ends, 2, m.end, nullptr, 0, 0.0);
         } else {
             const int opposite[2] = {T[i][(j + 2) % 3], T[nt][(conn.neighbor_edges[i][j] + 2) % 3]};
-            const EdgeMask m = interior_edge_mask();
-            sink.emit(nv + e, ends, 2, m.end, opposite, 2, m.opposite);
+            const TunedEdgeMask m = tuned ? tuned_edge_mask(opt.weights, edge_valence[ends[0]], edge_valence[ends[1]])
+                                          : TunedEdgeMask{interior_edge_mask().end, interior_edge_mask().end,
+                                                          interior_edge_mask().opposite};
+            if (m.end_a == m.end_b) sink.emit(nv + e, ends, 2, m.end_a, opposite, 2, m.opposite);
+            else sink.emit(nv + e, ends, 1, m.end_a, opposite, 2, m.opposite, ends + 1, 1, m.end_b);
         }
     }
 }
@@ -73,18 +82,21 @@ struct PointSink {
     const std::vector<Vec3>* in_colors;
     std::vector<Vec3>* out_colors;
 
-    void emit(int row, const int* a, int na, double wa, const int* b, int nb, double wb) {
-        out[row] = detail::stencil_sum(in, a, na, wa, b, nb, wb);
-        if (out_colors) (*out_colors)[row] = detail::stencil_sum(*in_colors, a, na, wa, b, nb, wb);
+    void emit(int row, const int* a, int na, double wa, const int* b, int nb, double wb, const int* c = nullptr,
+              int nc = 0, double wc = 0.0) {
+        out[row] = detail::stencil_sum(in, a, na, wa, b, nb, wb, c, nc, wc);
+        if (out_colors) (*out_colors)[row] = detail::stencil_sum(*in_colors, a, na, wa, b, nb, wb, c, nc, wc);
     }
 };
 
 /// Collects stencils as matrix triplets.
 struct TripletSink {
     std::vector<Eigen::Triplet<double>> triplets;
-    void emit(int row, const int* a, int na, double wa, const int* b, int nb, double wb) {
+    void emit(int row, const int* a, int na, double wa, const int* b, int nb, double wb, const int* c = nullptr,
+              int nc = 0, double wc = 0.0) {
         for (int k = 0; k < na; ++k) triplets.emplace_back(row, a[k], wa);
         for (int k = 0; k < nb; ++k) triplets.emplace_back(row, b[k], wb);
+        for (int k = 0; k < nc; ++k) triplets.emplace_back(row, c[k], wc);
     }
 };
 

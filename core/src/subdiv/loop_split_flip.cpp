@@ -18,6 +18,8 @@ std::vector<Vec3> loop_points(const HalfedgeMesh& he, const std::vector<Vec3>& p
     std::vector<Vec3> out(static_cast<size_t>(nv + ne));
     std::vector<int> ring;
     ring.reserve(64);
+    const bool tuned = has_tuned_edges(opt.weights);  // the tuned edge mask reads each end's valence
+    std::vector<int> edge_valence(tuned ? static_cast<size_t>(nv) : 0);
     for (int v = 0; v < nv; ++v) {
         HalfedgeId start = he.halfedge(VertexId(v));
         if (!start.valid()) {
@@ -43,6 +45,7 @@ std::vector<Vec3> loop_points(const HalfedgeMesh& he, const std::vector<Vec3>& p
             h = he.next_around_origin(h);
             if (h == start || he.is_boundary(h)) break;
         }
+        if (tuned) edge_valence[v] = tuned_edge_valence(faces, boundary_out.valid());
         if (boundary_out.valid()) {
             const int ends[2] = {ring.front(), he.target(last).idx};
             const VertexMask m = boundary_vertex_mask(opt.boundary, faces);
@@ -60,8 +63,12 @@ std::vector<Vec3> loop_points(const HalfedgeMesh& he, const std::vector<Vec3>& p
             out[nv + e] = detail::stencil_sum(p, ends, 2, m.end, nullptr, 0, 0.0);
         } else {
             const int opposite[2] = {he.origin(he.prev(h)).idx, he.origin(he.prev(t)).idx};
-            const EdgeMask m = interior_edge_mask();
-            out[nv + e] = detail::stencil_sum(p, ends, 2, m.end, opposite, 2, m.opposite);
+            const TunedEdgeMask m = tuned ? tuned_edge_mask(opt.weights, edge_valence[ends[0]], edge_valence[ends[1]])
+                                          : TunedEdgeMask{interior_edge_mask().end, interior_edge_mask().end,
+                                                          interior_edge_mask().opposite};
+            out[nv + e] = m.end_a == m.end_b
+                              ? detail::stencil_sum(p, ends, 2, m.end_a, opposite, 2, m.opposite)
+                              : detail::stencil_sum(p, ends, 1, m.end_a, opposite, 2, m.opposite, ends + 1, 1, m.end_b);
         }
     }
     return out;

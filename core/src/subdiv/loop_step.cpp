@@ -27,6 +27,11 @@ void set_smooth_mask(VertexPointMask& m, LoopWeights weights, int valence) {
 
 RefinementStep loop_step(const PolyMesh& mesh, const PolyConnectivity& conn, const LoopOptions& options) {
     detail::require_triangles(mesh, "Loop subdivision");
+    // The sharp rules (crease_mask.h) blend with the symmetric edge mask of Loop and Warren;
+    // no rule is defined for a crease next to the tuned families' asymmetric one.
+    if (has_tuned_edges(options.weights))
+        throw InputError("crease rules are defined for the weight families with Loop's edge mask (loop, warren), not for " +
+                         std::string(to_string(options.weights)));
     const int nv = mesh.num_vertices(), nf = mesh.num_faces(), ne = conn.num_edges();
     if (4LL * nf > INT_MAX || static_cast<long long>(nv) + ne > INT_MAX)
         throw InputError("the next Loop level would have " + std::to_string(4LL * nf) +

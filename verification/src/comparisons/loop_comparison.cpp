@@ -11,6 +11,7 @@
 #include "crossdiv/verification/comparisons/classification.h"
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/verification/implementations/registry.h"
+#include "crossdiv/verification/harness/mesh_topology.h"
 #include "crossdiv/verification/harness/tolerances.h"
 
 namespace crossdiv::verification {
@@ -236,6 +237,10 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
         under_test = &subject;
     }
 
+    // The input's largest valence, for the float tier's bound.
+    int max_valence = 0;
+    for (int v : mesh_topology(to_poly_mesh(input)).valence) max_valence = std::max(max_valence, v);
+
     // Each matched reference's last level in our vertex order, to report every
     // implementation's value at the case's worst vertex.
     std::map<std::string, std::vector<Vec3>> in_our_order;
@@ -250,6 +255,14 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
         }
         const adapters::LevelTrace& trace = *iso.trace;
         const CoreRun& ours = *under_test;
+        // A reference that computes in float is held to the float tier: the weak tier at the
+        // float bound (tolerances::kFloatAgreementUlps), whatever tier the case asks of doubles.
+        const bool in_float = ref->capabilities().precision == Precision::Float;
+        LoopComparisonRequest tier = req;
+        if (in_float) {
+            tier.tolerance = agreement_tolerance(ours.levels.back(), true, req.tolerance, max_valence, req.levels);
+            if (tier.tier == Tier::Strict) tier.tier = Tier::Weak;
+        }
         run.correspondence =
             match_loop_refinement(ours.origins, input.positions, trace, core.front().levels.back().positions);
         if (req.tier == Tier::Geometric) {
@@ -284,13 +297,13 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
         mapped.assign(ours.levels.back().positions.size(), Vec3::Constant(NAN));
         for (size_t i = 0; i < run.correspondence.ref_to_ours.size(); ++i)
             mapped[run.correspondence.ref_to_ours[i]] = trace.back().positions[i];
-        if (within(req, run.comparison, run.level_max_rel, run.hausdorff_rel)) {
+        if (within(tier, run.comparison, run.level_max_rel, run.hausdorff_rel)) {
             run.verdict = Verdict::Agree;
-            run.explanation = req.tier == Tier::Geometric
-                                  ? "vertex-set Hausdorff distance " + sci(run.hausdorff_rel) + " <= " + sci(req.tolerance)
-                              : req.tier == Tier::Strict ? "bitwise identical"
-                                                         : "max relative error " + sci(run.comparison.max_rel) +
-                                                               " <= " + sci(req.tolerance);
+            run.explanation = tier.tier == Tier::Geometric
+                                  ? "vertex-set Hausdorff distance " + sci(run.hausdorff_rel) + " <= " + sci(tier.tolerance)
+                              : tier.tier == Tier::Strict ? "bitwise identical"
+                                                          : "max relative error " + sci(run.comparison.max_rel) + " <= " +
+                                                                sci(tier.tolerance) + (in_float ? " (float tier)" : "");
             out.runs.push_back(std::move(run));
             continue;
         }
@@ -304,7 +317,7 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
         DivergenceTests tests;
         tests.isolated_vertices = [&]() -> std::optional<Classification> {
             if (!same_faces || !only_isolated_vertices_differ(ours.levels.back(), trace.back(),
-                                                              run.correspondence.ref_to_ours, req.tolerance))
+                                                              run.correspondence.ref_to_ours, tier.tolerance))
                 return std::nullopt;
             return Classification{DivergenceClass::IsolatedVertexHandling,
                                   "only vertices no face uses differ, by up to " + sci(run.comparison.max_rel) + worst};
@@ -333,9 +346,11 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
             const MeshComparison c2 =
                 compare_meshes(same_rule.levels.back(), trace.back(), run.correspondence.ref_to_ours);
             const std::vector<double> e2 = level_errors(same_rule, trace, run.correspondence);
-            LoopComparisonRequest up_to_rounding = req;
+            LoopComparisonRequest up_to_rounding = tier;
             up_to_rounding.tier = Tier::Weak;
-            if (req.tier != Tier::Weak) up_to_rounding.tolerance = tolerances::kAgreementRelative;
+            if (tier.tier != Tier::Weak)
+                up_to_rounding.tolerance = agreement_tolerance(same_rule.levels.back(), in_float, tolerances::kAgreementRelative,
+                                                               max_valence, req.levels);
             if (!within(up_to_rounding, c2, e2, NAN)) {
                 still = "; with " + describe(run.ran_with) + " still " + sci(c2.max_rel);
                 return std::nullopt;
@@ -369,7 +384,7 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
         const Classification found = classify_divergence(tests);
         run.divergence_class = found.cls;
         run.explanation = found.explanation;
-        if (req.error_field_max_faces > 0) run.error_field = error_field(ours, trace, run.correspondence, run.level_max_rel, req);
+        if (req.error_field_max_faces > 0) run.error_field = error_field(ours, trace, run.correspondence, run.level_max_rel, tier);
         out.runs.push_back(std::move(run));
     }
     const ReferenceRun* worst_run = nullptr;

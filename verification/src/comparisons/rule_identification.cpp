@@ -70,7 +70,7 @@ const char* to_string(VertexClass cls) {
 
 std::vector<LoopOptions> loop_named_rules() {
     std::vector<LoopOptions> rules;
-    for (LoopWeights w : {LoopWeights::Loop, LoopWeights::Warren})
+    for (LoopWeights w : kAllLoopWeights)
         for (LoopBoundary b : {LoopBoundary::EdgeOnly, LoopBoundary::EdgeAndCorner}) rules.push_back({w, b});
     return rules;
 }
@@ -201,31 +201,40 @@ std::string RuleTally::rule_phrase() const {
     std::vector<std::string> parts;
 
     // Interior vertices: the weight family that fits at every valence seen.
+    // Interior vertices: the weight families that fit at every valence seen (families coincide
+    // at some valences: Loop and Warren at 3 and 6, every family at 6).
     int lo = 0, hi = 0;
-    bool any_interior = false, loop_all = true, warren_all = true;
+    bool any_interior = false;
+    std::vector<char> family_all(kAllLoopWeights.size(), 1);
     std::vector<std::string> unfit;
     for (const Tally& t : rows_) {
         if (t.key.cls != VertexClass::InteriorVertex) continue;
         lo = any_interior ? std::min(lo, t.key.valence) : t.key.valence;
         hi = any_interior ? std::max(hi, t.key.valence) : t.key.valence;
         any_interior = true;
-        const bool loop = fits_any(t, [](const LoopOptions& o) { return o.weights == LoopWeights::Loop; });
-        const bool warren = fits_any(t, [](const LoopOptions& o) { return o.weights == LoopWeights::Warren; });
-        loop_all &= loop;
-        warren_all &= warren;
-        if (!loop && !warren) unfit.push_back(std::to_string(t.key.valence) + " (off by " + sci(best(t)) + ")");
+        bool any = false;
+        for (size_t w = 0; w < kAllLoopWeights.size(); ++w) {
+            const bool fits = fits_any(t, [&](const LoopOptions& o) { return o.weights == kAllLoopWeights[w]; });
+            family_all[w] &= fits;
+            any |= fits;
+        }
+        if (!any) unfit.push_back(std::to_string(t.key.valence) + " (off by " + sci(best(t)) + ")");
     }
     const std::string valences = " (valence " + std::to_string(lo) + (hi > lo ? ".." + std::to_string(hi) : "") + ")";
+    std::string families;
+    for (size_t w = 0; w < kAllLoopWeights.size(); ++w)
+        if (family_all[w]) families += (families.empty() ? "" : " or ") + std::string(to_string(kAllLoopWeights[w]));
     if (!any_interior) parts.push_back("no interior vertices in the inputs");
     else if (!unfit.empty()) {
         std::string s = "no named weights at interior vertices of valence ";
         for (size_t k = 0; k < unfit.size(); ++k) s += (k ? ", " : "") + unfit[k];
         parts.push_back(s);
-    } else if (loop_all && warren_all)
-        parts.push_back("weights=loop or warren at interior vertices" + valences + " (they coincide at valence 3 and 6)");
-    else if (loop_all) parts.push_back("weights=loop at interior vertices" + valences);
-    else if (warren_all) parts.push_back("weights=warren at interior vertices" + valences);
-    else parts.push_back("weights=loop at some valences and warren at others" + valences);
+    } else if (!families.empty()) {
+        parts.push_back("weights=" + families + " at interior vertices" + valences +
+                        (families.find(" or ") != std::string::npos ? " (they coincide at the valences seen)" : ""));
+    } else {
+        parts.push_back("one named family at each valence but none at all of them" + valences);
+    }
 
     auto class_phrase = [&](VertexClass cls, const std::string& fits, const std::string& none) -> std::optional<std::string> {
         for (const Tally& t : rows_)

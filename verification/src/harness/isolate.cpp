@@ -100,6 +100,7 @@ const char* to_string(RunStatus status) {
         case RunStatus::NonFiniteOutput: return "non-finite-output";
         case RunStatus::WrongCount: return "wrong-count";
         case RunStatus::NotTriangles: return "not-triangles";
+        case RunStatus::Unavailable: return "unavailable";
     }
     return "unknown";
 }

@@ -90,6 +90,16 @@ double ulp_of_largest_coordinate(const PolyMesh& m) {
     return std::nextafter(largest, INFINITY) - largest;
 }
 
+double agreement_tolerance(const PolyMesh& mesh, bool in_float, double tolerance, int max_valence, int levels) {
+    if (!in_float) return tolerance;
+    const double ulps = tolerances::kFloatAgreementUlps + 0.5 * (max_valence + 2) * levels;
+    float largest = 0;
+    for (const Vec3& p : mesh.positions) largest = std::max(largest, static_cast<float>(p.cwiseAbs().maxCoeff()));
+    const double ulp = static_cast<double>(std::nextafter(largest, INFINITY)) - largest;
+    const double diagonal = bounding_box_diagonal(mesh.positions);
+    return std::max(tolerance, ulps * ulp / (diagonal > 0 ? diagonal : 1.0));
+}
+
 bool MeshComparison::agree() const { return topology_equal() && max_rel <= tolerances::kAgreementRelative; }
 
 MeshComparison compare_meshes(const PolyMesh& ours, const PolyMesh& ref, const std::vector<int>& ref_to_ours,

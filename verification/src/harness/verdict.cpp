@@ -14,6 +14,7 @@ constexpr std::array kVerdicts = {
     std::pair{Verdict::RefRejected, "ref-rejected"},
     std::pair{Verdict::RefCrashed, "ref-crashed"},
     std::pair{Verdict::RefInvalidOutput, "ref-invalid-output"},
+    std::pair{Verdict::RefUnavailable, "ref-unavailable"},
     std::pair{Verdict::OursRejected, "ours-rejected"},
 };
 

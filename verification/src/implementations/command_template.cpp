@@ -5,18 +5,27 @@
 #include <filesystem>
 
 #include "crossdiv/error.h"
+#include "crossdiv/verification/harness/install_paths.h"
 
 namespace crossdiv::verification {
 namespace {
 
-constexpr std::array<std::string_view, 10> kPlaceholders = {"in",     "in.obj",  "in.off",  "out",     "out.obj",
-                                                            "out.off", "levels", "scheme", "weights", "boundary"};
+constexpr std::array<std::string_view, 13> kPlaceholders = {"in",      "in.obj", "in.off",  "in.ply",  "out",
+                                                            "out.obj", "out.off", "out.ply", "levels", "scheme",
+                                                            "weights", "boundary", "adapters"};
 
 }  // namespace
 
-const char* to_string(MeshFormat format) { return format == MeshFormat::Obj ? "obj" : "off"; }
+const char* to_string(MeshFormat format) {
+    switch (format) {
+        case MeshFormat::Obj: return "obj";
+        case MeshFormat::Off: return "off";
+        case MeshFormat::Ply: return "ply";
+    }
+    return "obj";
+}
 
-CommandTemplate::CommandTemplate(std::string text) : text_(std::move(text)) {
+CommandTemplate::CommandTemplate(std::string text, bool needs_output) : text_(std::move(text)) {
     auto fail = [&](const std::string& what) { throw InputError("command '" + text_ + "': " + what); };
     std::vector<Piece> word;
     bool in_word = false;
@@ -71,7 +80,8 @@ CommandTemplate::CommandTemplate(std::string text) : text_(std::move(text)) {
             const std::string name = text_.substr(i + 1, close - i - 1);
             if (std::find(kPlaceholders.begin(), kPlaceholders.end(), name) == kPlaceholders.end())
                 fail("unknown placeholder {" + name +
-                     "} (known: {in} {in.obj} {in.off} {out} {out.obj} {out.off} {levels} {scheme} {weights} {boundary})");
+                     "} (known: {in} {in.obj} {in.off} {in.ply} {out} {out.obj} {out.off} {out.ply} {levels} {scheme} "
+                     "{weights} {boundary} {adapters})");
             word.push_back({true, name});
             in_word = true;
             i = close;
@@ -85,30 +95,41 @@ CommandTemplate::CommandTemplate(std::string text) : text_(std::move(text)) {
     if (words_.empty()) fail("no program");
 
     int outputs = 0;
-    bool obj_out = false, off_out = false;
+    bool obj_out = false, off_out = false, ply_out = false;
     for (const auto& w : words_)
         for (const Piece& p : w) {
             if (!p.placeholder) continue;
             reads_obj_ |= p.text == "in" || p.text == "in.obj";
             reads_off_ |= p.text == "in.off";
+            reads_ply_ |= p.text == "in.ply";
             obj_out |= p.text == "out" || p.text == "out.obj";
             off_out |= p.text == "out.off";
+            ply_out |= p.text == "out.ply";
             outputs += p.text.starts_with("out");
         }
-    if (outputs == 0) fail("no {out}: the command must be told where to write its result");
-    if (obj_out && off_out) fail("both an OBJ and an OFF output; name one");
-    output_format_ = off_out ? MeshFormat::Off : MeshFormat::Obj;
+    if (outputs == 0 && needs_output) fail("no {out}: the command must be told where to write its result");
+    if (obj_out + off_out + ply_out > 1) fail("more than one output format; name one of {out} {out.off} {out.ply}");
+    output_format_ = off_out ? MeshFormat::Off : ply_out ? MeshFormat::Ply : MeshFormat::Obj;
 }
 
-void CommandTemplate::anchor_relative_paths() {
+void CommandTemplate::anchor_relative_paths(const std::string& base) {
+    namespace fs = std::filesystem;
     for (auto& w : words_) {
         if (w.size() != 1 || w[0].placeholder || w[0].text.empty() || w[0].text[0] == '/') continue;
         std::error_code ec;
-        if (std::filesystem::exists(w[0].text, ec)) w[0].text = std::filesystem::absolute(w[0].text, ec).lexically_normal().string();
+        const fs::path p = base.empty() ? fs::path(w[0].text) : fs::path(base) / w[0].text;
+        if (fs::exists(p, ec)) w[0].text = fs::absolute(p, ec).lexically_normal().string();
     }
 }
 
-bool CommandTemplate::reads(MeshFormat format) const { return format == MeshFormat::Obj ? reads_obj_ : reads_off_; }
+bool CommandTemplate::reads(MeshFormat format) const {
+    switch (format) {
+        case MeshFormat::Obj: return reads_obj_;
+        case MeshFormat::Off: return reads_off_;
+        case MeshFormat::Ply: return reads_ply_;
+    }
+    return false;
+}
 
 std::vector<std::string> CommandTemplate::expand(const TemplateValues& v) const {
     std::vector<std::string> argv;
@@ -118,6 +139,8 @@ std::vector<std::string> CommandTemplate::expand(const TemplateValues& v) const 
             if (!p.placeholder) arg += p.text;
             else if (p.text == "in" || p.text == "in.obj") arg += v.in_obj;
             else if (p.text == "in.off") arg += v.in_off;
+            else if (p.text == "in.ply") arg += v.in_ply;
+            else if (p.text == "adapters") arg += adapters_dir();
             else if (p.text.starts_with("out")) arg += v.out;
             else if (p.text == "levels") arg += std::to_string(v.request.levels);
             else if (p.text == "scheme") arg += to_string(v.request.scheme);

@@ -15,7 +15,7 @@ namespace {
 Capabilities core_capabilities() {
     Capabilities c;
     std::vector<SchemeRule> loop;
-    for (LoopWeights w : {LoopWeights::Loop, LoopWeights::Warren})
+    for (LoopWeights w : kAllLoopWeights)
         for (LoopBoundary b : {LoopBoundary::EdgeOnly, LoopBoundary::EdgeAndCorner}) loop.push_back(loop_rule(w, b));
     c.schemes = {supports(Scheme::Loop, loop, true),
                  supports(Scheme::CatmullClark,

@@ -35,6 +35,7 @@ const char* to_string(ImplementationKind kind) {
         case ImplementationKind::Core: return "core";
         case ImplementationKind::Library: return "library";
         case ImplementationKind::Program: return "program";
+        case ImplementationKind::Callback: return "callback";
     }
     return "unknown";
 }

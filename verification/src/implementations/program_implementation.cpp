@@ -2,6 +2,7 @@
 
 #include <stdlib.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -56,32 +57,87 @@ std::string file_label(const std::string& name) {
     return s.empty() ? "program" : s;
 }
 
-Capabilities program_capabilities(const ProgramSpec& spec, bool passes_rule) {
+bool contains(const std::vector<std::string>& list, std::string_view name) {
+    return std::find(list.begin(), list.end(), name) != list.end();
+}
+
+/// The rules a program declares for `scheme`: those of core's named rules whose weight family
+/// (Loop) and boundary rule are in the spec's lists; a list that is empty keeps every value
+/// when the template passes its placeholder, else the default rule's.
+std::vector<SchemeRule> program_rules(const ProgramSpec& spec, Scheme scheme, bool passes_weights, bool passes_boundary) {
+    const SchemeRule fallback{};
+    std::vector<SchemeRule> rules;
+    for (const SchemeRule& r : core_implementation().support(scheme)->rules) {
+        const bool weights = scheme != Scheme::Loop ||
+                             (spec.weights.empty() ? passes_weights || r.loop.weights == fallback.loop.weights
+                                                   : contains(spec.weights, to_string(r.loop.weights)));
+        const std::string boundary = boundary_name(scheme, r);
+        const bool bounds = boundary.empty() || (spec.boundaries.empty()
+                                                     ? passes_boundary || boundary == boundary_name(scheme, fallback)
+                                                     : contains(spec.boundaries, boundary));
+        if (weights && bounds) rules.push_back(r);
+    }
+    return rules;
+}
+
+Capabilities program_capabilities(const ProgramSpec& spec, bool passes_weights, bool passes_boundary) {
     Capabilities c;
     c.precision = spec.precision;
     const std::vector<Scheme> schemes = spec.schemes.empty() ? all_schemes() : spec.schemes;
     for (Scheme s : schemes) {
-        SchemeSupport support{s, {}, false, 0, ""};
-        if (passes_rule && core_implementation().has(s)) support.rules = core_implementation().support(s)->rules;
-        else support.rules = {SchemeRule{}};
+        SchemeSupport support{s, program_rules(spec, s, passes_weights, passes_boundary), false, 0, ""};
+        if (support.rules.empty())
+            throw InputError("program '" + spec.name + "': none of its weights and boundary rules is a rule of " + to_string(s));
         c.schemes.push_back(std::move(support));
     }
     return c;
+}
+
+/// Checks the spec's weight and boundary names against every rule of its schemes.
+void check_rule_names(const ProgramSpec& spec) {
+    for (const std::string& w : spec.weights) loop_weights_from_string(w);
+    const std::vector<Scheme> schemes = spec.schemes.empty() ? all_schemes() : spec.schemes;
+    for (const std::string& b : spec.boundaries) {
+        bool known = false;
+        for (Scheme s : schemes)
+            for (const SchemeRule& r : core_implementation().support(s)->rules) known |= boundary_name(s, r) == b;
+        if (!known) throw InputError("program '" + spec.name + "': boundary rule '" + b + "' belongs to none of its schemes");
+    }
+}
+
+/// Runs the setup command once; its failure, in words, or "" when the program is available.
+std::string run_setup(const ProgramSpec& spec) {
+    if (spec.setup.empty()) return "";
+    CommandTemplate setup(spec.setup, false);
+    setup.anchor_relative_paths(spec.base_dir);
+    const TemporaryFolder folder(file_label(spec.name) + "-setup");
+    const std::string err = (folder.path() / "stderr.txt").string();
+    const ProcessResult r = run_confined(setup.expand({}), {folder.path().string(), std::min(spec.timeout_seconds, 60.0),
+                                                            (folder.path() / "stdout.txt").string(), err});
+    const std::string said = tail_of_file(err);
+    const std::string what = "setup '" + spec.setup + "' ";
+    if (!r.started) return what + "could not start: " + r.start_error;
+    if (r.timed_out) return what + "did not finish";
+    if (r.signal) return what + "died by signal " + std::to_string(r.signal);
+    if (r.exit_code != 0) return what + "exited with status " + std::to_string(r.exit_code) + (said.empty() ? "" : ": " + said);
+    return "";
 }
 
 class Program final : public Implementation {
 public:
     Program(const ProgramSpec& spec, CommandTemplate command)
         : Implementation(spec.name, "command: " + spec.command, ImplementationKind::Program,
-                         program_capabilities(spec, command.text().find("{weights}") != std::string::npos ||
-                                                        command.text().find("{boundary}") != std::string::npos)),
+                         program_capabilities(spec, command.text().find("{weights}") != std::string::npos,
+                                              command.text().find("{boundary}") != std::string::npos)),
           spec_(spec),
-          command_(std::move(command)) {}
+          command_(std::move(command)),
+          unavailable_(run_setup(spec)) {}
 
     bool confines_itself() const override { return true; }
 
     adapters::LevelTrace refine(const PolyMesh& mesh, const RefineRequest& request) const override {
         check_refinable(request.scheme);
+        check_available();
         adapters::LevelTrace trace{mesh};
         for (int level = 1; level <= request.levels; ++level) {
             if (spec_.levels == LevelMode::Final && level < request.levels) {
@@ -97,20 +153,27 @@ public:
 
     PolyMesh refine_last(const PolyMesh& mesh, const RefineRequest& request) const override {
         check_refinable(request.scheme);
+        check_available();
         return run_once(mesh, request);
     }
 
 private:
+    void check_available() const {
+        if (!unavailable_.empty()) throw ImplementationFailure(RunStatus::Unavailable, name() + " is not on this machine: " + unavailable_);
+    }
+
     /// One run of the program for `request.levels` levels of `mesh`.
     PolyMesh run_once(const PolyMesh& mesh, const RefineRequest& request) const {
         const TemporaryFolder folder(file_label(name()));
         TemplateValues values{(folder.path() / "in.obj").string(), (folder.path() / "in.off").string(),
+                              (folder.path() / "in.ply").string(),
                               (folder.path() / (std::string("out.") + to_string(command_.output_format()))).string(),
                               request};
         PolyMesh input = mesh;
         input.creases = {};  // tags are not the program's input (OBJ 't' lines are not written)
         if (command_.reads(MeshFormat::Obj)) write_mesh(values.in_obj, input);
         if (command_.reads(MeshFormat::Off)) write_mesh(values.in_off, input);
+        if (command_.reads(MeshFormat::Ply)) write_mesh(values.in_ply, input);
         const std::string stderr_path = (folder.path() / "stderr.txt").string();
         const ProcessResult r = run_confined(command_.expand(values), {folder.path().string(), spec_.timeout_seconds,
                                                                        (folder.path() / "stdout.txt").string(), stderr_path});
@@ -144,13 +207,15 @@ private:
 
     ProgramSpec spec_;
     CommandTemplate command_;
+    std::string unavailable_;  ///< why the setup says the program is not here ("" when it is)
 };
 
 class ResultFile final : public Implementation {
 public:
     ResultFile(const std::string& name, std::string path, Scheme scheme)
         : Implementation(name, "result file: " + path, ImplementationKind::Program,
-                         program_capabilities({name, "", {scheme}, LevelMode::Final, Precision::Double, 0}, true)),
+                         program_capabilities({name, "", {scheme}, LevelMode::Final, Precision::Double, 0, {}, {}, "", ""},
+                                              true, true)),
           path_(std::move(path)) {}
 
     bool confines_itself() const override { return true; }
@@ -236,8 +301,8 @@ PolyMesh read_program_result(const std::string& path, const std::string& shown_n
     std::ifstream in(path, std::ios::binary);
     if (!in) throw ImplementationFailure(RunStatus::NoOutput, "cannot open output file " + shown_name);
     try {
-        const bool off = path.size() >= 4 && path.compare(path.size() - 4, 4, ".off") == 0;
-        return off ? read_off(in, shown_name) : read_obj(in, shown_name);
+        const auto ends_with = [&](const char* ext) { return path.size() >= 4 && path.compare(path.size() - 4, 4, ext) == 0; };
+        return ends_with(".off") ? read_off(in, shown_name) : ends_with(".ply") ? read_ply(in, shown_name) : read_obj(in, shown_name);
     } catch (const NonFiniteNumber& e) {
         throw ImplementationFailure(RunStatus::NonFiniteOutput, e.what());
     } catch (const InputError& e) {
@@ -248,8 +313,9 @@ PolyMesh read_program_result(const std::string& path, const std::string& shown_n
 std::unique_ptr<Implementation> make_program_implementation(const ProgramSpec& spec) {
     if (spec.name.empty()) throw InputError("a program implementation needs a name");
     if (!(spec.timeout_seconds > 0)) throw InputError("program '" + spec.name + "': the time limit must be positive");
+    check_rule_names(spec);
     CommandTemplate command(spec.command);
-    command.anchor_relative_paths();
+    command.anchor_relative_paths(spec.base_dir);
     return std::make_unique<Program>(spec, std::move(command));
 }
 

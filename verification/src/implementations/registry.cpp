@@ -30,8 +30,18 @@ std::vector<std::unique_ptr<Implementation>> build() {
     return all;
 }
 
-const std::vector<std::unique_ptr<Implementation>>& owned() {
-    static const std::vector<std::unique_ptr<Implementation>> all = build();
+std::vector<std::unique_ptr<Implementation>>& owned() {
+    static std::vector<std::unique_ptr<Implementation>> all = build();
+    return all;
+}
+
+/// The list implementations() hands out, remade when a reference is registered.
+std::vector<const Implementation*>& listed() {
+    static std::vector<const Implementation*> all = [] {
+        std::vector<const Implementation*> v;
+        for (const auto& i : owned()) v.push_back(i.get());
+        return v;
+    }();
     return all;
 }
 
@@ -65,13 +75,16 @@ std::vector<const Implementation*> pick(const std::vector<const Implementation*>
 
 }  // namespace
 
-const std::vector<const Implementation*>& implementations() {
-    static const std::vector<const Implementation*> all = [] {
-        std::vector<const Implementation*> v;
-        for (const auto& i : owned()) v.push_back(i.get());
-        return v;
-    }();
-    return all;
+const std::vector<const Implementation*>& implementations() { return listed(); }
+
+void register_reference(std::unique_ptr<Implementation> reference) {
+    // The same program under the same name again (a manifest read twice): already there.
+    for (const Implementation* i : implementations())
+        if (i->name() == reference->name() && i->kind() == reference->kind() && i->version() == reference->version()) return;
+    if (is_built(reference->name()))
+        throw InputError("a reference named '" + reference->name() + "' exists already (" + names(implementations()) + ")");
+    listed().push_back(reference.get());
+    owned().push_back(std::move(reference));
 }
 
 const Implementation& core_implementation() { return *owned().front(); }

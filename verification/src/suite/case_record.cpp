@@ -82,6 +82,13 @@ CaseRecord case_record(const LoopComparison& comparison) {
     c.tolerance = comparison.tolerance;
     c.core_seconds = comparison.core_seconds;
     c.core_error = comparison.core_error;
+    if (comparison.subject != "core" && comparison.subject_failed()) {
+        // The implementation under test failed: the case's failure, as core's would be.
+        c.ours_failed = true;
+        c.core_error = "subject '" + comparison.subject + "' " +
+                       (comparison.subject_outcome.status != RunStatus::Ok ? comparison.subject_outcome.summary()
+                                                                           : comparison.subject_unmatched);
+    }
     for (size_t i = 0; i < comparison.runs.size(); ++i) {
         const ReferenceRun& run = comparison.runs[i];
         RunRecord r;

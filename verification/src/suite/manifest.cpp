@@ -2,10 +2,12 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "crossdiv/error.h"
+#include "crossdiv/verification/harness/install_paths.h"
 #include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/verification/suite/operations.h"
 
@@ -51,8 +53,7 @@ void parse_loop_keys(const std::string& file, int line, std::istringstream& word
         if (eq == std::string::npos) throw ParseError(file, line, "expected key=value, got '" + kv + "'");
         const std::string key = kv.substr(0, eq), value = kv.substr(eq + 1);
         if (key == "weights") {
-            if (value != "loop" && value != "warren") throw ParseError(file, line, "weights must be loop or warren");
-            r.options.weights = loop_weights_from_string(value);
+            r.options.weights = at_line(file, line, [&] { return loop_weights_from_string(value); });
         } else if (key == "boundary") {
             if (value != "edge-only" && value != "edge-and-corner")
                 throw ParseError(file, line, "boundary must be edge-only or edge-and-corner");
@@ -84,6 +85,10 @@ ManifestEntry parse_case(const std::string& file, int line, std::istringstream& 
     e.operation = at_line(file, line, [&] { return &find_operation(op); });
     if (e.operation->kind == OperationKind::Comparison) {
         parse_loop_keys(file, line, words, e.request);
+        // Without against=, the references registered so far: a `reference` statement joins
+        // the cases after it.
+        if (e.request.references.empty())
+            for (const Implementation* r : references_for(Scheme::Loop)) e.request.references.push_back(r->name());
     } else if (std::string extra; words >> extra) {
         // The checks and studies carry their own named tolerances (tolerances.h).
         throw ParseError(file, line, "the " + op + " operation takes no keys, got '" + extra + "'");
@@ -103,22 +108,140 @@ std::string describe_entry(const ManifestEntry& e) {
         std::snprintf(buf, sizeof buf, "%g", r.tolerance);
         s += std::string(" tol=") + buf;
     }
+    if (e.subject) s += " subject=" + e.subject->name;
     return s;
 }
 
 }  // namespace
+
+std::vector<std::string> statement_words(const std::string& text) {
+    std::vector<std::string> out;
+    std::string word;
+    bool in_word = false;
+    char quote = 0;
+    for (char c : text) {
+        if (quote) {
+            if (c == quote) quote = 0;
+            else word += c;
+        } else if (c == '\'' || c == '"') {
+            quote = c;
+            in_word = true;
+        } else if (c == ' ' || c == '\t' || c == '\r') {
+            if (in_word) out.push_back(word);
+            word.clear();
+            in_word = false;
+        } else {
+            word += c;
+            in_word = true;
+        }
+    }
+    if (quote) throw InputError(std::string("unclosed ") + quote);
+    if (in_word) out.push_back(word);
+    return out;
+}
+
+ProgramSpec program_spec(const std::string& name, const std::vector<std::string>& key_values, const std::string& base_dir,
+                         double default_timeout) {
+    ProgramSpec spec;
+    spec.name = name;
+    spec.base_dir = base_dir;
+    spec.timeout_seconds = default_timeout;
+    for (const std::string& kv : key_values) {
+        const size_t eq = kv.find('=');
+        if (eq == std::string::npos) throw InputError("expected key=value, got '" + kv + "'");
+        const std::string key = kv.substr(0, eq), value = kv.substr(eq + 1);
+        if (key == "command") spec.command = value;
+        else if (key == "setup") spec.setup = value;
+        else if (key == "schemes")
+            for (const std::string& s : split(value, ',')) spec.schemes.push_back(scheme_from_string(s));
+        else if (key == "precision") {
+            if (value != "double" && value != "float") throw InputError("precision must be double or float, got '" + value + "'");
+            spec.precision = value == "float" ? Precision::Float : Precision::Double;
+        } else if (key == "weights") spec.weights = split(value, ',');
+        else if (key == "boundary") spec.boundaries = split(value, ',');
+        else if (key == "levels") spec.levels = level_mode_from_string(value);
+        else if (key == "timeout") {
+            size_t used = 0;
+            double t = 0;
+            try {
+                t = std::stod(value, &used);
+            } catch (const std::exception&) {
+            }
+            if (used != value.size() || !(t > 0) || !std::isfinite(t)) throw InputError("timeout must be a positive number of seconds");
+            spec.timeout_seconds = t;
+        } else
+            throw InputError("unknown key '" + key + "' (known: command, schemes, precision, weights, boundary, levels, timeout, setup)");
+    }
+    if (spec.command.empty()) throw InputError("program '" + name + "' has no command='...'");
+    return spec;
+}
+
+std::string ManifestSubject::result_path(const std::string& input, int levels) const {
+    std::string stem = input;
+    if (const size_t colon = stem.find(':'); colon != std::string::npos && stem.find('/') == std::string::npos)
+        stem = stem.substr(colon + 1);
+    stem = std::filesystem::path(stem).stem().string();
+    std::string out;
+    for (size_t i = 0; i < result_pattern.size(); ++i) {
+        if (result_pattern.compare(i, 7, "{input}") == 0) {
+            out += stem;
+            i += 6;
+        } else if (result_pattern.compare(i, 8, "{levels}") == 0) {
+            out += std::to_string(levels);
+            i += 7;
+        } else {
+            out += result_pattern[i];
+        }
+    }
+    return out;
+}
 
 Manifest read_manifest(const std::string& path) {
     std::ifstream in(path);
     if (!in) throw InputError(path + ": cannot open manifest");
     Manifest m;
     m.file = path;
+    const std::string base_dir = std::filesystem::absolute(path).parent_path().string();
+    std::shared_ptr<const ManifestSubject> subject;
     std::string text;
     for (int line = 1; std::getline(in, text); ++line) {
         if (const size_t hash = text.find('#'); hash != std::string::npos) text.resize(hash);
+        const std::vector<std::string> all = at_line(path, line, [&] { return statement_words(text); });
+        if (all.empty()) continue;
+        const std::string& keyword = all[0];
+        if (keyword == "reference" || keyword == "subject") {
+            if (all.size() < 3) throw ParseError(path, line, "expected: " + keyword + " NAME key=value ...");
+            const std::vector<std::string> keys(all.begin() + 2, all.end());
+            if (keyword == "subject" && keys.size() == 1 && keys[0].starts_with("result=")) {
+                auto s = std::make_shared<ManifestSubject>();
+                s->name = all[1];
+                s->result_pattern = keys[0].substr(7);
+                if (!s->result_pattern.empty() && s->result_pattern[0] != '/') s->result_pattern = base_dir + "/" + s->result_pattern;
+                subject = s;
+                continue;
+            }
+            const ProgramSpec spec = at_line(path, line, [&] { return program_spec(all[1], keys, base_dir, m.timeout_seconds); });
+            std::unique_ptr<Implementation> program = at_line(path, line, [&] { return make_program_implementation(spec); });
+            if (keyword == "reference") {
+                at_line(path, line, [&] {
+                    register_reference(std::move(program));
+                    return 0;
+                });
+                m.references.push_back(all[1]);
+            } else {
+                auto s = std::make_shared<ManifestSubject>();
+                s->name = all[1];
+                s->program = std::shared_ptr<const Implementation>(std::move(program));
+                subject = s;
+            }
+            continue;
+        }
         std::istringstream words(text);
-        std::string keyword;
-        if (!(words >> keyword)) continue;
+        words >> std::ws;
+        {
+            std::string skip;
+            words >> skip;  // the keyword, read above
+        }
         if (keyword == "suite") {
             if (!(words >> m.name)) throw ParseError(path, line, "expected: suite NAME");
         } else if (keyword == "timeout") {
@@ -128,8 +251,12 @@ Manifest read_manifest(const std::string& path) {
             if (m.timeout_seconds <= 0) throw ParseError(path, line, "timeout must be positive");
         } else if (keyword == "case") {
             m.entries.push_back(parse_case(path, line, words));
+            m.entries.back().subject = subject;
+            if (subject && m.entries.back().operation->kind != OperationKind::Comparison)
+                throw ParseError(path, line, "a subject is compared in the loop operation only; put the " +
+                                                 m.entries.back().operation->name + " cases before the subject statement");
         } else {
-            throw ParseError(path, line, "unknown statement '" + keyword + "' (known: suite, timeout, case)");
+            throw ParseError(path, line, "unknown statement '" + keyword + "' (known: suite, timeout, reference, subject, case)");
         }
         if (std::string extra; keyword != "case" && (words >> extra))
             throw ParseError(path, line, "unexpected '" + extra + "'");
@@ -139,7 +266,7 @@ Manifest read_manifest(const std::string& path) {
     return m;
 }
 
-std::string default_manifest_path() { return CROSSDIV_SUITES_DIR "/default.suite"; }
+std::string default_manifest_path() { return suites_dir() + "/default.suite"; }
 
 std::vector<SuiteJob> expand_jobs(const Manifest& manifest) {
     std::vector<SuiteJob> jobs;

@@ -6,6 +6,7 @@
 #include "crossdiv/error.h"
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/verification/harness/inputs.h"
+#include "crossdiv/verification/implementations/program_implementation.h"
 #include "crossdiv/verification/properties/curve_checks.h"
 #include "crossdiv/verification/properties/surface_checks.h"
 #include "suite/studies.h"
@@ -42,6 +43,17 @@ void write_error_fields(const LoopComparison& c, const SuiteJob& job, const std:
 CaseRecord run_loop(const SuiteJob& job, const std::string& out_dir) {
     LoopComparisonRequest req = job.entry->request;
     req.error_field_max_faces = kErrorFieldMaxFaces;
+    // The implementation under test: core, the manifest's subject program, or its result file
+    // for this input.
+    std::unique_ptr<Implementation> result_file;
+    if (const auto& s = job.entry->subject) {
+        if (s->program) {
+            req.subject = s->program.get();
+        } else {
+            result_file = make_result_file_implementation(s->name, s->result_path(job.input, req.levels), Scheme::Loop);
+            req.subject = result_file.get();
+        }
+    }
     const TriMesh mesh = to_tri_mesh(load_input(job.input), "Loop subdivision");
     std::string refused;
     try {

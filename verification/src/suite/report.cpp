@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "crossdiv/verification/harness/install_paths.h"
 #include "crossdiv/verification/harness/process.h"
 
 namespace crossdiv::verification {
@@ -9,7 +10,7 @@ namespace crossdiv::verification {
 int render_report(const std::string& dir) {
     // Debian's interpreter has matplotlib; a python3 earlier on PATH may not.
     const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-    return run_process({python, CROSSDIV_REPORTS_DIR "/make_report.py", dir});
+    return run_process({python, reports_dir() + "/make_report.py", dir});
 }
 
 }  // namespace crossdiv::verification

@@ -6,12 +6,15 @@
 MODE: crash (SIGSEGV), hang, exit (status 3 with a message on stderr), nothing (exit 0, no
 file), nan, garbage (an unreadable line), wrong-count (one face dropped), quads (two
 triangles written as one quad), shuffle (Loop's own weights, with vertices, faces and each
-face's corners in a random order: a correct result in another numbering).
+face's corners in a random order: a correct result in another numbering), float (Loop's own
+weights, every coordinate rounded to float32 and written as binary PLY, as MeshLab writes: a
+correct result of a float implementation; OUT names the .ply).
 """
 import math
 import os
 import random
 import signal
+import struct
 import sys
 import time
 
@@ -68,6 +71,16 @@ def main():
         faces = [[new_of[v] for v in t] for t in faces]
         rng.shuffle(faces)
         faces = [t[k:] + t[:k] for t, k in ((t, rng.randrange(3)) for t in faces)]
+    if mode == "float":
+        with open(out, "wb") as f:
+            f.write(("ply\nformat binary_little_endian 1.0\nelement vertex %d\nproperty float x\nproperty float y\n"
+                     "property float z\nelement face %d\nproperty list uchar int vertex_indices\nend_header\n"
+                     % (len(verts), len(faces))).encode())
+            for v in verts:
+                f.write(struct.pack("<3f", *v))
+            for t in faces:
+                f.write(struct.pack("<B3i", 3, *t))
+        return
     loop.write_obj(out, verts, faces)
 
 

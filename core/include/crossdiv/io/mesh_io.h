@@ -29,7 +29,14 @@ PolyMesh read_obj(std::istream& in, const std::string& name);
 /// @throws ParseError with `name:line`, as read_obj.
 PolyMesh read_off(std::istream& in, const std::string& name);
 
-/// Reads a mesh file, choosing the format by extension (.obj, .off).
+/// Reads a PLY file (ASCII, binary little or big endian): the x, y, z of element `vertex` in
+/// file order and the `vertex_indices` (or `vertex_index`) list of element `face`; other
+/// properties and elements are read past. Binary float coordinates read back exactly.
+/// @throws ParseError with `name:line` (in binary data, the line of the element's
+///         declaration and the record's index), NonFiniteNumber for NaN or infinity.
+PolyMesh read_ply(std::istream& in, const std::string& name);
+
+/// Reads a mesh file, choosing the format by extension (.obj, .off, .ply).
 /// @throws InputError if the file cannot be opened or the extension is unknown, ParseError
 ///         on malformed content.
 PolyMesh read_mesh(const std::string& path);
@@ -40,7 +47,9 @@ PolyMesh read_mesh(const std::string& path);
 void write_obj(std::ostream& out, const PolyMesh& mesh, std::span<const Vec3> normals = {});
 /// Writes OFF with 17 significant digits.
 void write_off(std::ostream& out, const PolyMesh& mesh);
-/// Writes by extension (.obj, .off). @throws InputError if the file cannot be written.
+/// Writes ASCII PLY with double coordinates and 17 significant digits.
+void write_ply(std::ostream& out, const PolyMesh& mesh);
+/// Writes by extension (.obj, .off, .ply). @throws InputError if the file cannot be written.
 void write_mesh(const std::string& path, const PolyMesh& mesh);
 
 }  // namespace crossdiv

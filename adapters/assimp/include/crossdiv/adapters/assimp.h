@@ -10,7 +10,7 @@
 
 namespace crossdiv::adapters::assimp {
 
-/// The extensions read through Assimp: ".dae", ".ply", ".stl".
+/// The extensions read through Assimp: ".dae", ".stl" (PLY is read by core).
 const std::vector<std::string>& extensions();
 
 /// Reads every mesh of the scene into one polygon mesh, in world coordinates (node transforms

@@ -27,10 +27,11 @@ enum class RunStatus {
     NonFiniteOutput,   ///< its output has a NaN or infinite coordinate
     WrongCount,        ///< its output has another number of vertices or faces than the scheme makes
     NotTriangles,      ///< its output has a face that is not a triangle where the scheme makes triangles
+    Unavailable,       ///< a program that is not on this machine (its setup command failed); not run
 };
 
 /// "ok", "rejected", "threw", "crashed", "timeout", "exit-status", "no-output",
-/// "unreadable-output", "non-finite-output", "wrong-count", "not-triangles".
+/// "unreadable-output", "non-finite-output", "wrong-count", "not-triangles", "unavailable".
 const char* to_string(RunStatus status);
 
 /// Whether the run made a result that is not a mesh of the scheme (an implementation that lies).
@@ -61,12 +62,14 @@ struct RunOutcome {
 };
 
 /// The verdict on a reference run that made no usable result: ref-rejected when it refused,
+/// ref-unavailable when it is not on this machine,
 /// ref-invalid-output when its result is not a mesh of the scheme, ref-crashed when it threw,
 /// crashed, hung or wrote nothing.
 inline Verdict verdict_of_failed_run(RunStatus status) {
-    return status == RunStatus::Rejected ? Verdict::RefRejected
-           : is_invalid_output(status)   ? Verdict::RefInvalidOutput
-                                         : Verdict::RefCrashed;
+    return status == RunStatus::Rejected      ? Verdict::RefRejected
+           : status == RunStatus::Unavailable ? Verdict::RefUnavailable
+           : is_invalid_output(status)        ? Verdict::RefInvalidOutput
+                                              : Verdict::RefCrashed;
 }
 
 /// A verdict reached before anything is compared, with its explanation.

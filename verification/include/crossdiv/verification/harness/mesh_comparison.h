@@ -50,6 +50,12 @@ std::vector<double> vertex_distances(const PolyMesh& ours, const PolyMesh& ref, 
 /// summation orders of the same stencils part (tolerances::kRoundingUlps).
 double ulp_of_largest_coordinate(const PolyMesh& mesh);
 
+/// The agreement bound relative to `mesh`'s diagonal for an implementation that computes in
+/// float (`in_float`): the larger of `tolerance` and the float tier's bound (tolerances.h:
+/// kFloatAgreementUlps + (max_valence + 2) / 2 * levels float ulps of the mesh's largest
+/// coordinate); `tolerance` itself for double.
+double agreement_tolerance(const PolyMesh& mesh, bool in_float, double tolerance, int max_valence, int levels);
+
 /// Symmetric Hausdorff distance between two vertex sets (no correspondence needed): the
 /// geometric tier's measure of how far two refinements of the same surface lie apart.
 double hausdorff_vertex_sets(const std::vector<Vec3>& a, const std::vector<Vec3>& b);

@@ -19,6 +19,18 @@ inline constexpr double kAgreementRelative = 1e-12;
 /// a few ulps each; 16 bounds that and is 1e4 times below any rule difference measured.
 inline constexpr double kRoundingUlps = 16;
 
+/// The float tier: a reference that computes in float (precision=float; MeshLab's VCG) agrees
+/// when the largest distance is at most B float ulps of the refined mesh's largest coordinate
+/// magnitude, B = kFloatAgreementUlps + (n + 2) / 2 * L for the input's largest valence n and L
+/// levels. It reads the input rounded to float (half an ulp), and each level forms float sums
+/// of up to n + 1 weighted terms, each rounding by at most half an ulp of a partial sum no
+/// larger than the largest coordinate: (n + 2) / 2 ulps a level; its result is read back
+/// exactly (binary PLY) or to 7 digits (another half ulp). The constant term bounds the rest
+/// (the input's rounding carried through the levels) with margin; at valence 12 and 3 levels
+/// B is 85 ulps, at valence 360 and 2 levels 426, 1e2 to 1e4 times below what a rule
+/// difference moves (1e-3 of the diagonal and up).
+inline constexpr double kFloatAgreementUlps = 64;
+
 
 /// Two evaluations of the same polynomial curve (de Casteljau, the Bernstein sum, Eigen's
 /// Cox-de Boor, the seed's matrix form) agree when they differ by at most

@@ -18,10 +18,12 @@ enum class Verdict {
     RefRejected,   ///< the reference refused the input or the rule (adapters::Rejected)
     RefCrashed,    ///< the reference crashed, threw, hung or ended without a result
     RefInvalidOutput,  ///< the reference's result is not a mesh of the scheme (unreadable, NaN, wrong counts)
+    RefUnavailable,    ///< the reference is not on this machine (an external program whose setup failed)
     OursRejected,  ///< core refused the input (the class names the input handling)
 };
 
-/// "agree", "diverge", "ref-rejected", "ref-crashed", "ref-invalid-output", "ours-rejected".
+/// "agree", "diverge", "ref-rejected", "ref-crashed", "ref-invalid-output", "ref-unavailable",
+/// "ours-rejected".
 const char* to_string(Verdict verdict);
 /// @throws InputError naming the unknown verdict and the known ones.
 Verdict verdict_from_string(std::string_view name);

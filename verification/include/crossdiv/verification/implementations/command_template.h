@@ -12,8 +12,11 @@
 /// Placeholders, each inside any word:
 ///   {in} {in.obj}    the input, written as OBJ with 17 significant digits
 ///   {in.off}         the input as OFF
+///   {in.ply}         the input as ASCII PLY
 ///   {out} {out.obj}  where the program writes its result as OBJ
 ///   {out.off}        ... as OFF
+///   {out.ply}        ... as PLY (ASCII or binary; binary floats read back exactly)
+///   {adapters}       the folder of crossdiv's program adapters (install_paths.h)
 ///   {levels}         the number of levels asked of this run
 ///   {scheme}         loop, catmull-clark, doo-sabin, sqrt3, butterfly, modified-butterfly
 ///   {weights}        loop | warren (Loop's weight family)
@@ -28,31 +31,33 @@
 namespace crossdiv::verification {
 
 /// The mesh file formats a program can read or write.
-enum class MeshFormat { Obj, Off };
-/// "obj", "off" (also the file extension).
+enum class MeshFormat { Obj, Off, Ply };
+/// "obj", "off", "ply" (also the file extension).
 const char* to_string(MeshFormat format);
 
 /// The values of one run's placeholders.
 struct TemplateValues {
-    std::string in_obj, in_off;  ///< paths of the input in each format (written only when used)
+    std::string in_obj, in_off, in_ply;  ///< paths of the input in each format (written only when used)
     std::string out;             ///< the output path, with the extension of output_format()
     RefineRequest request;
 };
 
 class CommandTemplate {
 public:
+    /// @param needs_output false for a command that makes no mesh (a program's setup check).
     /// @throws InputError naming the template and the problem: an unknown placeholder, an
     ///         unclosed quote or brace, no output placeholder, two output formats, no words.
-    explicit CommandTemplate(std::string text);
+    explicit CommandTemplate(std::string text, bool needs_output = true);
 
     const std::string& text() const { return text_; }
     /// The formats of the input the command reads (one file is written per format used).
     bool reads(MeshFormat format) const;
     MeshFormat output_format() const { return output_format_; }
     /// Makes each word without placeholders that names an existing file or folder relative
-    /// to the current folder absolute, so that the command means what it means in the user's
-    /// shell although it runs in a folder of its own.
-    void anchor_relative_paths();
+    /// to `base` (the current folder when empty) absolute, so that the command means what it
+    /// means in the user's shell, or beside the manifest that names it, although it runs in a
+    /// folder of its own.
+    void anchor_relative_paths(const std::string& base = "");
     /// The argument vector for one run.
     std::vector<std::string> expand(const TemplateValues& values) const;
 
@@ -64,7 +69,7 @@ private:
     };
     std::string text_;
     std::vector<std::vector<Piece>> words_;
-    bool reads_obj_ = false, reads_off_ = false;
+    bool reads_obj_ = false, reads_off_ = false, reads_ply_ = false;
     MeshFormat output_format_ = MeshFormat::Obj;
 };
 

@@ -27,8 +27,9 @@ enum class ImplementationKind {
     Core,     ///< this testbed's own algorithms
     Library,  ///< a reference library compiled in through its adapter
     Program,  ///< a program run from a command line, or result files it wrote (program_implementation.h)
+    Callback, ///< a C++ function of the user's program (callback_implementation.h)
 };
-/// "core", "library", "program".
+/// "core", "library", "program", "callback".
 const char* to_string(ImplementationKind kind);
 
 /// The arithmetic an implementation refines in.

@@ -43,6 +43,19 @@ struct ProgramSpec {
     LevelMode levels = LevelMode::Each;
     Precision precision = Precision::Double;
     double timeout_seconds = 120;     ///< per run of the program
+    /// The Loop weight families it has, by name (empty: every family when the template passes
+    /// {weights}, else loop).
+    std::vector<std::string> weights;
+    /// The boundary rules it has, by each scheme's names (rule_from_boundary_name; empty:
+    /// every rule when the template passes {boundary}, else the scheme's default).
+    std::vector<std::string> boundaries;
+    /// A command run once, when the implementation is made, to tell whether the program is on
+    /// this machine (say, that an executable exists); when it cannot be started, fails or hangs,
+    /// every run is RunStatus::Unavailable with its words. Empty: none.
+    std::string setup;
+    /// Where relative paths in `command` and `setup` are anchored (empty: the current folder;
+    /// a manifest's statements: the manifest's folder).
+    std::string base_dir;
 };
 
 /// The vertex and face counts `scheme` makes from `input` after `levels` levels, where they
@@ -62,9 +75,11 @@ void check_program_result(const PolyMesh& result, Scheme scheme, const PolyMesh&
 ///         NonFiniteOutput.
 PolyMesh read_program_result(const std::string& path, const std::string& shown_name);
 
-/// A program run from a command template. It declares every named rule of its schemes when
-/// its template passes {weights} or {boundary}, else only each scheme's default rule; what it
-/// really applies is measured (rule_identification.h).
+/// A program run from a command template. It declares the rules of `spec.weights` and
+/// `spec.boundaries`; where those are empty, every named rule of its schemes when its template
+/// passes {weights} or {boundary}, else only each scheme's default rule; what it really
+/// applies is measured (rule_identification.h). Runs `spec.setup` once, here.
+/// @throws InputError for a bad template, an unknown scheme, weight family or boundary name.
 std::unique_ptr<Implementation> make_program_implementation(const ProgramSpec& spec);
 
 /// Result files already written (a submitted OBJ): refine returns the file as the last level

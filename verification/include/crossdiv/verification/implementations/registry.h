@@ -1,9 +1,12 @@
 #pragma once
 /// @file
 /// Every implementation this binary has, by name: core first, then each reference library
-/// it was built with (CROSSDIV_WITH_* options), in a fixed order. The only place in the
-/// harness that knows which adapters exist; everything else asks here.
+/// it was built with (CROSSDIV_WITH_* options), in a fixed order, then the external references
+/// registered at run time (programs, from a manifest's `reference` statement or the CLI's
+/// --reference). The only place in the harness that knows which adapters exist; everything
+/// else asks here.
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -13,8 +16,14 @@
 
 namespace crossdiv::verification {
 
-/// core, opensubdiv, openmesh, openmesh-one-call, cgal, cgal-one-call, eigen (those built).
+/// core, opensubdiv, openmesh, openmesh-one-call, cgal, cgal-one-call, eigen (those built),
+/// then the registered external references in the order registered.
 const std::vector<const Implementation*>& implementations();
+
+/// Adds an external reference (a program) for the rest of the process; worker processes
+/// forked later inherit it. The same program under the same name again is kept once.
+/// @throws InputError when another implementation of that name exists.
+void register_reference(std::unique_ptr<Implementation> reference);
 
 /// Whether an implementation of that name is built into this binary.
 bool is_built(std::string_view name);

@@ -3,14 +3,29 @@
 /// A suite manifest (cases x operations x rules x tolerances; the format is documented in
 /// reports/suite-manifest.md) and its expansion into jobs, whole or one shard of them.
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "crossdiv/verification/comparisons/loop_comparison.h"
+#include "crossdiv/verification/implementations/program_implementation.h"
 
 namespace crossdiv::verification {
 
 struct SuiteOperation;
+
+/// A `subject` statement: the implementation under test of the loop cases after it, in
+/// core's place. A program (command=) is made once; result files (result=) are one file per
+/// input, named by a pattern.
+struct ManifestSubject {
+    std::string name;
+    std::shared_ptr<const Implementation> program;  ///< command=: the program
+    /// result=: the file of each input, with {input} (the input's name: a file's stem, the
+    /// NAME of bundled:NAME) and {levels}; relative to the manifest's folder.
+    std::string result_pattern;
+    /// The result file of `input` at `levels` under the pattern.
+    std::string result_path(const std::string& input, int levels) const;
+};
 
 /// One `case` line of a manifest: inputs x one operation with its rules and tier.
 struct ManifestEntry {
@@ -18,6 +33,8 @@ struct ManifestEntry {
     std::vector<std::string> inputs;   ///< as the operation's expand() accepts them (collections allowed)
     const SuiteOperation* operation = nullptr;
     LoopComparisonRequest request;     ///< loop: rules, levels, references, tier, tolerance
+    /// The implementation under test (the last `subject` statement before the case); none: core.
+    std::shared_ptr<const ManifestSubject> subject;
 };
 
 struct Manifest {
@@ -25,10 +42,24 @@ struct Manifest {
     std::string name;  ///< the `suite` line
     double timeout_seconds = 60;
     std::vector<ManifestEntry> entries;
+    /// The names of the `reference` statements, registered in the registry as they were read.
+    std::vector<std::string> references;
 };
 
-/// Reads a manifest. @throws ParseError naming the file and line of any bad statement.
+/// Reads a manifest, registering each `reference` statement's program in the registry
+/// (registry.h) as it is read. @throws ParseError naming the file and line of any bad statement.
 Manifest read_manifest(const std::string& path);
+
+/// The words of a statement: split at whitespace, a '...' or "..." group kept whole with its
+/// quotes removed (key='a b' is the word key=a b). @throws InputError on an unclosed quote.
+std::vector<std::string> statement_words(const std::string& text);
+
+/// A program implementation from `key=value` words (the `reference` and `subject` statements,
+/// the CLI's --reference): command= (required), schemes=, precision=, weights=, boundary=,
+/// levels=each|final, timeout=, setup=. Relative paths are anchored at `base_dir`.
+/// @throws InputError naming the bad key or value.
+ProgramSpec program_spec(const std::string& name, const std::vector<std::string>& key_values, const std::string& base_dir,
+                         double default_timeout);
 
 /// The manifest `crossdiv suite` runs without an argument (verification/suites/default.suite).
 std::string default_manifest_path();

@@ -1,0 +1,211 @@
+// Programs as references: the float tier, a setup that says the program is not here, the
+// manifest's reference and subject statements, and MeshLab's meshlabserver itself.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "crossdiv/datasets/bundled.h"
+#include "crossdiv/error.h"
+#include "crossdiv/verification/comparisons/loop_comparison.h"
+#include "crossdiv/subdiv/loop.h"
+#include "crossdiv/verification/implementations/callback_implementation.h"
+#include "crossdiv/verification/implementations/program_implementation.h"
+#include "crossdiv/verification/implementations/registry.h"
+#include "crossdiv/verification/suite/manifest.h"
+#include "crossdiv/verification/suite/runner.h"
+
+namespace crossdiv::verification {
+namespace {
+
+namespace fs = std::filesystem;
+const std::string kSource = CROSSDIV_SOURCE_DIR;
+
+TriMesh bundled(const std::string& name) { return to_tri_mesh(datasets::bundled_mesh(name), "test"); }
+
+ProgramSpec float_program(const std::string& name) {
+    ProgramSpec spec;
+    spec.name = name;
+    spec.command = "python3 " + kSource + "/verification/tests/subjects/misbehaving_subject.py float {in} {levels} {out.ply}";
+    spec.schemes = {Scheme::Loop};
+    spec.precision = Precision::Float;
+    return spec;
+}
+
+LoopComparison compare_against(const std::string& reference, const std::string& mesh, int levels) {
+    LoopComparisonRequest req;
+    req.levels = levels;
+    req.references = {reference};
+    return compare_loop(bundled(mesh), mesh, req);
+}
+
+std::string write_manifest(const std::string& name, const std::string& text) {
+    const fs::path dir = fs::temp_directory_path() / "crossdiv-external-reference-test";
+    fs::create_directories(dir);
+    const fs::path p = dir / name;
+    std::ofstream(p) << text;
+    return p.string();
+}
+
+// A correct Loop rounded to float agrees in the float tier, read back exactly from binary PLY;
+// the same output held to the double tier would not (it is 1e-8 off, 1e4 times the bound).
+TEST(ExternalReference, AFloatProgramAgreesInTheFloatTierOnly) {
+    register_reference(make_program_implementation(float_program("float-loop")));
+    const LoopComparison c = compare_against("float-loop", "icosahedron", 2);
+    ASSERT_EQ(c.runs.size(), 1u);
+    const ReferenceRun& r = c.runs[0];
+    EXPECT_EQ(r.verdict, Verdict::Agree) << r.explanation;
+    EXPECT_NE(r.explanation.find("float tier"), std::string::npos) << r.explanation;
+    EXPECT_GT(r.comparison.max_rel, 1e-12);  // float rounding, which the double tier would refuse
+    EXPECT_LT(r.comparison.max_rel, 1e-6);
+
+    ProgramSpec as_double = float_program("float-loop-as-double");
+    as_double.precision = Precision::Double;
+    register_reference(make_program_implementation(as_double));
+    const LoopComparison d = compare_against("float-loop-as-double", "icosahedron", 2);
+    EXPECT_EQ(d.runs[0].verdict, Verdict::Diverge);
+}
+
+TEST(ExternalReference, ASetupThatFailsMakesEveryRunUnavailable) {
+    ProgramSpec spec = float_program("absent-program");
+    spec.setup = "python3 -c 'import sys; sys.stderr.write(\"not installed\\n\"); sys.exit(1)'";
+    register_reference(make_program_implementation(spec));
+    const LoopComparison c = compare_against("absent-program", "tetrahedron", 1);
+    ASSERT_EQ(c.runs.size(), 1u);
+    EXPECT_EQ(c.runs[0].outcome.status, RunStatus::Unavailable);
+    EXPECT_EQ(c.runs[0].verdict, Verdict::RefUnavailable);
+    EXPECT_NE(c.runs[0].explanation.find("not installed"), std::string::npos) << c.runs[0].explanation;
+}
+
+TEST(ExternalReference, DeclaredRulesAreTheOnesItIsAskedFor) {
+    ProgramSpec spec = float_program("two-families");
+    spec.weights = {"loop", "regularity"};
+    spec.boundaries = {"edge-only"};
+    const auto p = make_program_implementation(spec);
+    SchemeRule warren;
+    warren.loop = {LoopWeights::Warren, LoopBoundary::EdgeAndCorner};
+    EXPECT_EQ(p->closest_rule(Scheme::Loop, warren).loop, (LoopOptions{LoopWeights::Loop, LoopBoundary::EdgeOnly}));
+    SchemeRule regularity;
+    regularity.loop = {LoopWeights::Regularity, LoopBoundary::EdgeOnly};
+    EXPECT_TRUE(p->applies(Scheme::Loop, regularity));
+    spec.boundaries = {"drop-border-faces"};  // a Doo-Sabin rule, not Loop's
+    EXPECT_THROW(make_program_implementation(spec), InputError);
+    spec.boundaries = {};
+    spec.weights = {"hexagonal"};
+    EXPECT_THROW(make_program_implementation(spec), InputError);
+}
+
+TEST(Manifest, ReferenceAndSubjectStatementsJoinTheCasesAfterThem) {
+    const std::string script = "python3 " + kSource + "/verification/tests/subjects/misbehaving_subject.py ";
+    const std::string cmd = script + "float {in} {levels} {out.ply}";
+    const std::string shuffled = script + "shuffle {in} {levels} {out}";  // Loop's rule, in another numbering
+    const std::string path = write_manifest("statements.suite", "suite statements\n"
+                                                                "case bundled:tetrahedron loop levels=1\n"
+                                                                "reference late-float command='" + cmd + "' schemes=loop precision=float\n"
+                                                                "case bundled:tetrahedron loop levels=1\n"
+                                                                "subject mine command='" + shuffled + "'\n"
+                                                                "case bundled:octahedron loop levels=2\n");
+    const Manifest m = read_manifest(path);
+    ASSERT_EQ(m.entries.size(), 3u);
+    auto has = [](const ManifestEntry& e, const std::string& n) {
+        return std::find(e.request.references.begin(), e.request.references.end(), n) != e.request.references.end();
+    };
+    EXPECT_FALSE(has(m.entries[0], "late-float"));
+    EXPECT_TRUE(has(m.entries[1], "late-float"));
+    EXPECT_EQ(find_implementation("late-float").capabilities().precision, Precision::Float);
+    EXPECT_EQ(m.entries[1].subject, nullptr);
+    ASSERT_NE(m.entries[2].subject, nullptr);
+    EXPECT_EQ(m.entries[2].subject->name, "mine");
+    // Reading it again keeps one late-float (the same program under the same name).
+    EXPECT_NO_THROW(read_manifest(path));
+
+    // The subject's job: the program in core's place, recorded under its name.
+    const std::vector<SuiteJob> jobs = expand_jobs(m);
+    ASSERT_EQ(jobs.size(), 3u);
+    EXPECT_NE(jobs[2].id.find("subject=mine"), std::string::npos) << jobs[2].id;
+    const CaseRecord rec = run_job(jobs[2], (fs::temp_directory_path() / "crossdiv-external-reference-test").string());
+    EXPECT_FALSE(rec.ours_failed) << rec.core_error;
+    ASSERT_TRUE(rec.detail.contains("subject"));
+    EXPECT_EQ(rec.detail["subject"]["name"], "mine");
+    EXPECT_EQ(rec.detail["subject"]["rules"]["rule"], "weights=loop boundary=edge-only");
+}
+
+TEST(Manifest, BadReferenceAndSubjectStatementsNameTheLine) {
+    auto error = [](const std::string& text) {
+        try {
+            read_manifest(write_manifest("bad.suite", "suite bad\n" + text));
+        } catch (const ParseError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_NE(error("reference x schemes=loop\n").find("bad.suite:2: program 'x' has no command"), std::string::npos);
+    EXPECT_NE(error("reference y command='a {out}' precision=half\n").find(":2: precision must be double or float"),
+              std::string::npos);
+    EXPECT_NE(error("reference z command='a {out}' colour=red\n").find(":2: unknown key 'colour'"), std::string::npos);
+    EXPECT_NE(error("reference w command='a {out}\n").find(":2: unclosed '"), std::string::npos);
+    EXPECT_NE(error("reference opensubdiv command='a {out}'\n").find(":2: a reference named 'opensubdiv' exists already"),
+              std::string::npos);
+    EXPECT_NE(error("subject s command='a {out}'\ncase catalog spectrum\n").find(":3: a subject is compared in the loop operation only"),
+              std::string::npos);
+}
+
+// A C++ function in core's place: its rule is identified like a program's, and a function
+// that crashes is that run's outcome, not the end of the comparison.
+TEST(Callback, IsComparedAndItsRuleNamed) {
+    const auto warren = make_callback_implementation("mine", {Scheme::Loop}, [](const PolyMesh& m, const RefineRequest& r) {
+        return to_poly_mesh(loop_subdivide(to_tri_mesh(m, "mine"), {LoopWeights::Warren, LoopBoundary::EdgeOnly}, r.levels));
+    });
+    LoopComparisonRequest req;
+    req.levels = 2;
+    req.subject = warren.get();
+    const LoopComparison c = compare_loop(bundled("icosahedron"), "icosahedron", req);
+    ASSERT_FALSE(c.subject_failed()) << c.subject_outcome.summary();
+    ASSERT_TRUE(c.rules && c.rules->rule);
+    EXPECT_EQ(*c.rules->rule, (LoopOptions{LoopWeights::Warren, LoopBoundary::EdgeOnly}));
+    for (const ReferenceRun& r : c.runs) EXPECT_EQ(r.divergence_class, DivergenceClass::WeightFamily) << r.reference;
+
+    const auto crashing = make_callback_implementation("crashing", {Scheme::Loop}, [](const PolyMesh&, const RefineRequest&) -> PolyMesh {
+        std::abort();
+    });
+    req.subject = crashing.get();
+    const LoopComparison d = compare_loop(bundled("tetrahedron"), "tetrahedron", req);
+    EXPECT_EQ(d.subject_outcome.status, RunStatus::Crashed);
+    EXPECT_TRUE(d.subject_failed());
+}
+
+// MeshLab as the default suite has it: Loop under each of its weight families and the
+// classic Butterfly, against core in the float tier. Needs Debian's meshlab and xvfb, which
+// run.sh installs.
+TEST(MeshLab, AgreesWithCoreUnderEachOfItsWeightFamilies) {
+    const Manifest m = read_manifest(kSource + "/verification/suites/default.suite");
+    ASSERT_TRUE(is_built("meshlab"));
+    const Implementation& meshlab = find_implementation("meshlab");
+    SchemeRule loop;
+    try {
+        meshlab.refine_last(to_poly_mesh(bundled("tetrahedron")), {Scheme::Loop, loop, 1});
+    } catch (const ImplementationFailure& e) {
+        if (e.status() == RunStatus::Unavailable) GTEST_SKIP() << e.what() << " (apt-get install meshlab xvfb xauth)";
+    }
+    for (LoopWeights w : {LoopWeights::Loop, LoopWeights::Regularity, LoopWeights::Continuity})
+        for (const char* mesh : {"cube-asymmetric", "fan-5", "open-patch"}) {
+            LoopComparisonRequest req;
+            req.levels = 2;
+            req.options = {w, LoopBoundary::EdgeOnly};
+            req.references = {"meshlab"};
+            const LoopComparison c = compare_loop(bundled(mesh), mesh, req);
+            ASSERT_EQ(c.runs.size(), 1u);
+            EXPECT_EQ(c.runs[0].verdict, Verdict::Agree) << to_string(w) << " " << mesh << ": " << c.runs[0].explanation;
+        }
+    // Warren's weights MeshLab lacks: it runs Loop's, and the difference is the weight family.
+    LoopComparisonRequest req;
+    req.levels = 2;
+    req.options = {LoopWeights::Warren, LoopBoundary::EdgeOnly};
+    req.references = {"meshlab"};
+    const LoopComparison c = compare_loop(bundled("icosahedron"), "icosahedron", req);
+    EXPECT_EQ(c.runs[0].divergence_class, DivergenceClass::WeightFamily) << c.runs[0].explanation;
+}
+
+}  // namespace
+}  // namespace crossdiv::verification
