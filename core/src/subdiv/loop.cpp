@@ -66,9 +66,9 @@ void apply_loop_stencils(const TriMesh& mesh, const TriConnectivity& conn, const
             sink.emit(nv + e, ends, 2, m.end, nullptr, 0, 0.0);
         } else {
             const int opposite[2] = {T[i][(j + 2) % 3], T[nt][(conn.neighbor_edges[i][j] + 2) % 3]};
-            const TunedEdgeMask m = tuned ? tuned_edge_mask(opt.weights, edge_valence[ends[0]], edge_valence[ends[1]])
-                                          : TunedEdgeMask{interior_edge_mask().end, interior_edge_mask().end,
-                                                          interior_edge_mask().opposite};
+            // Loop's and Warren's mask reads no valence (tuned_edge_mask gives 3/8, 1/8 for them).
+            const TunedEdgeMask m = tuned_edge_mask(opt.weights, tuned ? edge_valence[ends[0]] : 0,
+                                                    tuned ? edge_valence[ends[1]] : 0);
             if (m.end_a == m.end_b) sink.emit(nv + e, ends, 2, m.end_a, opposite, 2, m.opposite);
             else sink.emit(nv + e, ends, 1, m.end_a, opposite, 2, m.opposite, ends + 1, 1, m.end_b);
         }

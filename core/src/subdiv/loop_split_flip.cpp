@@ -63,9 +63,8 @@ std::vector<Vec3> loop_points(const HalfedgeMesh& he, const std::vector<Vec3>& p
             out[nv + e] = detail::stencil_sum(p, ends, 2, m.end, nullptr, 0, 0.0);
         } else {
             const int opposite[2] = {he.origin(he.prev(h)).idx, he.origin(he.prev(t)).idx};
-            const TunedEdgeMask m = tuned ? tuned_edge_mask(opt.weights, edge_valence[ends[0]], edge_valence[ends[1]])
-                                          : TunedEdgeMask{interior_edge_mask().end, interior_edge_mask().end,
-                                                          interior_edge_mask().opposite};
+            const TunedEdgeMask m = tuned_edge_mask(opt.weights, tuned ? edge_valence[ends[0]] : 0,
+                                                    tuned ? edge_valence[ends[1]] : 0);
             out[nv + e] = m.end_a == m.end_b
                               ? detail::stencil_sum(p, ends, 2, m.end_a, opposite, 2, m.opposite)
                               : detail::stencil_sum(p, ends, 1, m.end_a, opposite, 2, m.opposite, ends + 1, 1, m.end_b);

@@ -237,9 +237,14 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
         under_test = &subject;
     }
 
-    // The input's largest valence, for the float tier's bound.
-    int max_valence = 0;
-    for (int v : mesh_topology(to_poly_mesh(input)).valence) max_valence = std::max(max_valence, v);
+    // The input's largest valence, for the float tier's bound: counted once, when a float
+    // reference first needs it.
+    int max_valence = -1;
+    auto largest_valence = [&] {
+        if (max_valence < 0)
+            for (int v : mesh_topology(to_poly_mesh(input)).valence) max_valence = std::max(max_valence, v);
+        return std::max(max_valence, 0);
+    };
 
     // Each matched reference's last level in our vertex order, to report every
     // implementation's value at the case's worst vertex.
@@ -260,7 +265,7 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
         const bool in_float = ref->capabilities().precision == Precision::Float;
         LoopComparisonRequest tier = req;
         if (in_float) {
-            tier.tolerance = agreement_tolerance(ours.levels.back(), true, req.tolerance, max_valence, req.levels);
+            tier.tolerance = agreement_tolerance(ours.levels.back(), true, req.tolerance, largest_valence(), req.levels);
             if (tier.tier == Tier::Strict) tier.tier = Tier::Weak;
         }
         run.correspondence =
@@ -350,7 +355,7 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
             up_to_rounding.tier = Tier::Weak;
             if (tier.tier != Tier::Weak)
                 up_to_rounding.tolerance = agreement_tolerance(same_rule.levels.back(), in_float, tolerances::kAgreementRelative,
-                                                               max_valence, req.levels);
+                                                               in_float ? largest_valence() : 0, req.levels);
             if (!within(up_to_rounding, c2, e2, NAN)) {
                 still = "; with " + describe(run.ran_with) + " still " + sci(c2.max_rel);
                 return std::nullopt;

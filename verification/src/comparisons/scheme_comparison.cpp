@@ -101,6 +101,14 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
     }
     out.core_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
+    // The input's largest valence, for the float tier's bound (only a float reference reads it).
+    int max_valence = 0;
+    for (const Implementation* r : refs)
+        if (r->capabilities().precision == Precision::Float) {
+            for (int v : mesh_topology(input).valence) max_valence = std::max(max_valence, v);
+            break;
+        }
+
     for (const Implementation* impl : refs) {
         const Implementation& ref = *impl;
         SchemeReferenceRun run;
@@ -156,9 +164,6 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
         run.max_rel_with_reference_rule = with_rule.max_rel;
         // A reference that computes in float is held to the float tier (tolerances::kFloatAgreementUlps).
         const bool in_float = ref.capabilities().precision == Precision::Float;
-        int max_valence = 0;
-        if (in_float)
-            for (int v : mesh_topology(input).valence) max_valence = std::max(max_valence, v);
         const double tolerance = agreement_tolerance(ours, in_float, req.tolerance, max_valence, req.levels);
         const bool rule_explains = rules_differ && with_rule.topology_equal() && with_rule.max_rel <= tolerance;
         if (run.comparison.topology_equal() && run.comparison.max_rel <= tolerance) {

@@ -21,13 +21,7 @@ public:
 
     adapters::LevelTrace refine(const PolyMesh& mesh, const RefineRequest& request) const override {
         check_refinable(request.scheme);
-        adapters::LevelTrace trace{mesh};
-        for (int level = 1; level <= request.levels; ++level) {
-            RefineRequest one = request;
-            one.levels = level;
-            trace.push_back(refine_last(mesh, one));
-        }
-        return trace;
+        return trace_from_input(mesh, request, 1, [&](const RefineRequest& one) { return refine_last(mesh, one); });
     }
 
     PolyMesh refine_last(const PolyMesh& mesh, const RefineRequest& request) const override {

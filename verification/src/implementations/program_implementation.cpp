@@ -138,17 +138,8 @@ public:
     adapters::LevelTrace refine(const PolyMesh& mesh, const RefineRequest& request) const override {
         check_refinable(request.scheme);
         check_available();
-        adapters::LevelTrace trace{mesh};
-        for (int level = 1; level <= request.levels; ++level) {
-            if (spec_.levels == LevelMode::Final && level < request.levels) {
-                trace.emplace_back();  // not asked for: not compared
-                continue;
-            }
-            RefineRequest one = request;
-            one.levels = level;
-            trace.push_back(run_once(mesh, one));
-        }
-        return trace;
+        return trace_from_input(mesh, request, spec_.levels == LevelMode::Final ? request.levels : 1,
+                                [&](const RefineRequest& one) { return run_once(mesh, one); });
     }
 
     PolyMesh refine_last(const PolyMesh& mesh, const RefineRequest& request) const override {
@@ -222,10 +213,7 @@ public:
 
     adapters::LevelTrace refine(const PolyMesh& mesh, const RefineRequest& request) const override {
         check_refinable(request.scheme);
-        adapters::LevelTrace trace{mesh};
-        trace.resize(static_cast<size_t>(request.levels));  // the levels before it: not compared
-        trace.push_back(refine_last(mesh, request));
-        return trace;
+        return trace_from_input(mesh, request, request.levels, [&](const RefineRequest& r) { return refine_last(mesh, r); });
     }
 
     PolyMesh refine_last(const PolyMesh& mesh, const RefineRequest& request) const override {
@@ -247,6 +235,18 @@ LevelMode level_mode_from_string(std::string_view name) {
     if (name == "each") return LevelMode::Each;
     if (name == "final") return LevelMode::Final;
     throw InputError("unknown level mode '" + std::string(name) + "' (known: each, final)");
+}
+
+adapters::LevelTrace trace_from_input(const PolyMesh& mesh, const RefineRequest& request, int first_made,
+                                      const std::function<PolyMesh(const RefineRequest&)>& make_level) {
+    adapters::LevelTrace trace{mesh};
+    trace.resize(static_cast<size_t>(std::max(1, first_made)));  // the levels before first_made: empty
+    for (int level = std::max(1, first_made); level <= request.levels; ++level) {
+        RefineRequest one = request;
+        one.levels = level;
+        trace.push_back(make_level(one));
+    }
+    return trace;
 }
 
 std::optional<std::pair<long, long>> expected_counts(Scheme scheme, const PolyMesh& input, int levels) {

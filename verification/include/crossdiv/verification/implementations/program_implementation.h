@@ -13,6 +13,7 @@
 /// where the scheme makes triangles. Vertex and face order are the program's own: the
 /// comparisons find the correspondence.
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -70,7 +71,13 @@ std::optional<std::pair<long, long>> expected_counts(Scheme scheme, const PolyMe
 void check_program_result(const PolyMesh& result, Scheme scheme, const PolyMesh& input, int levels,
                           const std::string& file);
 
-/// Reads a result file (OBJ or OFF by extension) as check_program_result wants it.
+/// Levels 0..N of `request` for an implementation that makes each level from the input in a
+/// call of its own: level 0 is `mesh`, levels first_made..N are make_level(request with
+/// levels = k), the levels before first_made are empty (not made, not compared).
+adapters::LevelTrace trace_from_input(const PolyMesh& mesh, const RefineRequest& request, int first_made,
+                                      const std::function<PolyMesh(const RefineRequest&)>& make_level);
+
+/// Reads a result file (OBJ, OFF or PLY by extension) as check_program_result wants it.
 /// @throws ImplementationFailure: NoOutput (missing or empty), UnreadableOutput (file:line),
 ///         NonFiniteOutput.
 PolyMesh read_program_result(const std::string& path, const std::string& shown_name);
