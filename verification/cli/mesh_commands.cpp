@@ -240,8 +240,15 @@ struct SubjectVerdict {
     }
 };
 
+/// Whether the subject fails or follows no named rule on this input: what `crossdiv diff
+/// --subject` shrinks.
+bool symptom_of_subject(const LoopComparison& c) { return c.subject_failed() || (c.rules && !c.rules->rule); }
+
+/// `subject_command`: the subject's command template, for the `crossdiv diff` line that shrinks
+/// what no named rule explains (empty for result files, which cannot be rerun).
 int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, const std::string& against,
-                const std::string& json_path, double timeout, bool no_isolate, const Implementation* subject) {
+                const std::string& json_path, double timeout, bool no_isolate, const Implementation* subject,
+                const std::string& subject_command) {
     if (s.scheme != "loop") {
         if (subject) throw InputError("a subject is compared under the Loop scheme so far (--scheme loop)");
         return run_scheme_compare(specs, s.poly(), against, json_path, timeout, no_isolate);
@@ -295,6 +302,9 @@ int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, cons
         }
         const LoopComparison c = compare_loop(meshes[i], inputs[i], req);
         print_table(c);
+        if (!subject_command.empty() && symptom_of_subject(c))
+            fmt::print("  shrink it:   crossdiv diff {} --levels {} --weights {} --boundary {} --subject-name {} --subject '{}'\n",
+                       inputs[i], s.levels, s.weights, to_string(req.options.boundary), subject->name(), subject_command);
         all_agree &= c.all_agree();
         if (subject) verdict.add(c);
         results.push_back(to_json(c));
@@ -345,31 +355,47 @@ int run_edgecases(const std::string& dir) {
     return 0;
 }
 
-int run_diff(const std::string& in, const SchemeArgs& s, const std::string& against, const std::string& out_dir) {
+int run_diff(const std::string& in, const SchemeArgs& s, const std::string& against, const std::string& out_dir,
+             const Implementation* subject, double timeout, const std::string& subject_command) {
     const TriMesh mesh = to_tri_mesh(load_input(in), "Loop subdivision");
     loop_input_connectivity(mesh);
     check_output_size(mesh, s.levels, in);
     LoopComparisonRequest req;
     req.options = s.options();
     req.levels = s.levels;
-    req.references = {against};
-    select_references(Scheme::Loop, {against});
+    req.subject = subject;
+    req.timeout_seconds = timeout;
+    if (against.empty()) {
+        if (!subject) throw InputError("diff: name the diverging reference (--against) or a subject (--subject)");
+        req.without_references = true;
+    } else {
+        req.references = {against};
+        select_references(Scheme::Loop, {against});
+    }
     const ShrinkResult r = shrink_divergence(mesh, in, req);
-    const ReferenceRun& orig = r.original.runs[0];
-    fmt::print("{} ({} faces): {} diverges from core, class {}: {}\n", in, mesh.num_faces(), against,
-               to_string(r.divergence_class), orig.explanation);
+    const std::string under_test = subject ? "subject '" + subject->name() + "'" : std::string("core");
+    if (r.symptom.kind == ShrinkSymptom::Kind::SubjectFails)
+        fmt::print("{} ({} faces): {} failed: {}\n", in, mesh.num_faces(), under_test, r.original.subject_outcome.summary());
+    else
+        fmt::print("{} ({} faces): {}{}\n", in, mesh.num_faces(), describe(r.symptom, under_test, against),
+                   r.original.runs.empty() ? "" : ": " + r.original.runs[0].explanation);
     std::filesystem::create_directories(out_dir);
     const std::string ring = (std::filesystem::path(out_dir) / "neighbourhood.obj").string();
     const std::string minimal = (std::filesystem::path(out_dir) / "minimal.obj").string();
     write_mesh(ring, to_poly_mesh(r.neighbourhood));
     write_mesh(minimal, to_poly_mesh(r.minimal));
-    const ReferenceRun& m = r.minimal_comparison.runs[0];
     fmt::print("neighbourhood: {} ({} faces, {})\n", ring, r.neighbourhood.num_faces(),
                r.k ? fmt::format("{}-ring of the worst vertex's coarse ancestors", r.k) : std::string("the whole mesh"));
-    fmt::print("minimal:       {} ({} faces, {} vertices) after {} comparisons: {} ({})\n", minimal, r.minimal.num_faces(),
-               r.minimal.num_vertices(), r.tests, to_string(m.divergence_class), m.explanation);
-    fmt::print("reproduce:     crossdiv compare {} --weights {} --boundary {} --levels {} --against {}\n", minimal,
-               s.weights, to_string(s.options().boundary), s.levels, against);
+    const std::optional<ShrinkSymptom> minimal_symptom = symptom_of(r.minimal_comparison);
+    fmt::print("minimal:       {} ({} faces, {} vertices) after {} comparisons: {}\n", minimal, r.minimal.num_faces(),
+               r.minimal.num_vertices(), r.tests,
+               minimal_symptom ? describe(*minimal_symptom, under_test, against) : std::string("no symptom"));
+    if (!r.minimal_comparison.runs.empty()) fmt::print("               {}\n", r.minimal_comparison.runs[0].explanation);
+    if (r.minimal_comparison.subject != "core") print_subject(r.minimal_comparison);
+    const std::string subject_args =
+        subject ? fmt::format(" --subject-name {} --subject '{}'", subject->name(), subject_command) : std::string();
+    fmt::print("reproduce:     crossdiv compare {} --weights {} --boundary {} --levels {}{}{}\n", minimal, s.weights,
+               to_string(s.options().boundary), s.levels, against.empty() ? "" : " --against " + against, subject_args);
     return 0;
 }
 
@@ -387,14 +413,59 @@ struct SubdivideArgs {
 };
 int subdivide_command(const SubdivideArgs& a) { return run_subdivide(a.input, a.scheme, a.impl, a.out); }
 
+/// The programs of a run: a subject in core's place and references added to the registry.
+struct ProgramArgs {
+    double timeout = 120;
+    std::string subject, subject_name = "subject", subject_levels = "each";
+    std::vector<std::string> references;
+    void add_to(CLI::App& app) {
+        app.add_option("--timeout", timeout, "Seconds a reference or subject may run before it counts as hung")
+            ->capture_default_str();
+        app.add_option("--subject", subject,
+                       "Put a program under test in core's place: a command template such as "
+                       "'python3 loop.py {in} {levels} {out}' ({in} {in.off} {in.ply} {out} {out.off} {out.ply} "
+                       "{levels} {scheme} {weights} {boundary}); run without a shell, in a temporary folder, with "
+                       "--timeout per run");
+        app.add_option("--subject-name", subject_name, "The subject's name in the results")->capture_default_str();
+        app.add_option("--subject-levels", subject_levels,
+                       "each: run the subject once per level 1..N and compare every level; final: once, for level N")
+            ->check(CLI::IsMember({"each", "final"}))
+            ->capture_default_str();
+        app.add_option("--reference", references,
+                       "Add a program as a reference: NAME=CMD, CMD a command template as for --subject; or "
+                       "NAME=command='CMD' [precision=float] [schemes=..] [weights=..] [boundary=..] [setup='CMD'] "
+                       "as a suite manifest's reference statement. Repeatable");
+    }
+
+    /// Registers each --reference NAME=CMD (or NAME=command='CMD' key=value ...) as a
+    /// reference and returns the subject program, if any.
+    std::unique_ptr<Implementation> setup() const {
+        for (const std::string& s : references) {
+            const size_t eq = s.find('=');
+            if (eq == std::string::npos || eq == 0) throw InputError("--reference '" + s + "': expected NAME=CMD");
+            const std::string name = s.substr(0, eq), rest = s.substr(eq + 1);
+            const std::vector<std::string> keys = rest.starts_with("command=") ? statement_words(rest)
+                                                                                : std::vector<std::string>{"command=" + rest};
+            register_reference(make_program_implementation(program_spec(name, keys, "", timeout)));
+        }
+        if (subject.empty()) return nullptr;
+        ProgramSpec spec;
+        spec.name = subject_name;
+        spec.command = subject;
+        spec.schemes = {Scheme::Loop};
+        spec.levels = level_mode_from_string(subject_levels);
+        spec.timeout_seconds = timeout;
+        return make_program_implementation(spec);
+    }
+};
+
 struct CompareArgs {
     std::vector<std::string> inputs;
     SchemeArgs scheme;
     std::string against, json;  // against empty: every reference that has the scheme
-    double timeout = 120;
     bool no_isolate = false;
-    std::string subject, subject_name = "subject", subject_levels = "each", subject_result;
-    std::vector<std::string> references;
+    ProgramArgs programs;
+    std::string subject_result;
     void add_to(CLI::App& app) {
         app.add_option("inputs", inputs, "Mesh files, bundled:NAME, bundled:all, course:all, cgal:all")->required();
         scheme.add_scheme_options(app);
@@ -402,56 +473,22 @@ struct CompareArgs {
                        "Comma-separated references (default: every one that has the scheme; sqrt3 also has "
                        "openmesh-one-call and cgal-one-call, all levels in one call)");
         app.add_option("--json", json, "Write the results as JSON to this file");
-        app.add_option("--timeout", timeout, "Seconds a reference may run before it counts as hung")->capture_default_str();
         app.add_flag("--no-isolate", no_isolate, "Run references in this process (debugging; a crash ends the run)");
-        app.add_option("--subject", subject,
-                       "Put a program under test in core's place: a command template such as "
-                       "'python3 loop.py {in} {levels} {out}' ({in} {in.off} {out} {out.off} {levels} {scheme} "
-                       "{weights} {boundary}); run without a shell, in a temporary folder, with --timeout per run");
-        app.add_option("--subject-name", subject_name, "The subject's name in the results")->capture_default_str();
-        app.add_option("--subject-levels", subject_levels,
-                       "each: run the subject once per level 1..N and compare every level; final: once, for level N")
-            ->check(CLI::IsMember({"each", "final"}))
-            ->capture_default_str();
+        programs.add_to(app);
         app.add_option("--subject-result", subject_result,
                        "Put a result file under test (OBJ, OFF or PLY a program already wrote), compared at --levels")
             ->excludes("--subject");
-        app.add_option("--reference", references,
-                       "Add a program as a reference: NAME=CMD, CMD a command template as for --subject; or "
-                       "NAME=command='CMD' [precision=float] [schemes=..] [weights=..] [boundary=..] [setup='CMD'] "
-                       "as a suite manifest's reference statement. Repeatable");
     }
 };
 
-/// Registers each --reference NAME=CMD (or NAME=command='CMD' key=value ...) as a reference.
-void register_cli_references(const std::vector<std::string>& specs, double timeout) {
-    for (const std::string& s : specs) {
-        const size_t eq = s.find('=');
-        if (eq == std::string::npos || eq == 0) throw InputError("--reference '" + s + "': expected NAME=CMD");
-        const std::string name = s.substr(0, eq), rest = s.substr(eq + 1);
-        const std::vector<std::string> keys = rest.starts_with("command=") ? statement_words(rest)
-                                                                            : std::vector<std::string>{"command=" + rest};
-        register_reference(make_program_implementation(program_spec(name, keys, "", timeout)));
-    }
-}
-
 int compare_command(const CompareArgs& a) {
-    register_cli_references(a.references, a.timeout);
-    std::unique_ptr<Implementation> subject;
-    if (!a.subject.empty()) {
-        ProgramSpec spec;
-        spec.name = a.subject_name;
-        spec.command = a.subject;
-        spec.schemes = {Scheme::Loop};
-        spec.levels = level_mode_from_string(a.subject_levels);
-        spec.timeout_seconds = a.timeout;
-        subject = make_program_implementation(spec);
-    }
+    std::unique_ptr<Implementation> subject = a.programs.setup();
     if (!a.subject_result.empty()) {
         if (a.inputs.size() != 1) throw InputError("--subject-result compares one result file with one input");
-        subject = make_result_file_implementation(a.subject_name, a.subject_result, Scheme::Loop);
+        subject = make_result_file_implementation(a.programs.subject_name, a.subject_result, Scheme::Loop);
     }
-    return run_compare(a.inputs, a.scheme, a.against, a.json, a.timeout, a.no_isolate, subject.get());
+    return run_compare(a.inputs, a.scheme, a.against, a.json, a.programs.timeout, a.no_isolate, subject.get(),
+                       a.subject_result.empty() ? a.programs.subject : std::string());
 }
 
 struct CheckArgs {
@@ -470,16 +507,21 @@ int edgecases_command(const FolderArgs& a) { return run_edgecases(a.out); }
 struct DiffArgs {
     std::string input, against, out = "diff-out";
     SchemeArgs scheme;
+    ProgramArgs programs;
     void add_to(CLI::App& app) {
         app.add_option("input", input, "Mesh file, bundled:NAME or edgecase:NAME")->required();
         scheme.add_scheme_options(app);
-        app.add_option("--against", against, "The reference that diverges")
-            ->required()
-            ->check(CLI::IsMember({"opensubdiv", "openmesh", "cgal"}));
+        app.add_option("--against", against,
+                       "The reference that diverges (with --subject and no --against: shrink what the subject does "
+                       "that no named rule explains, or its failure)");
+        programs.add_to(app);
         app.add_option("--out", out, "Output folder")->capture_default_str();
     }
 };
-int diff_command(const DiffArgs& a) { return run_diff(a.input, a.scheme, a.against, a.out); }
+int diff_command(const DiffArgs& a) {
+    const std::unique_ptr<Implementation> subject = a.programs.setup();
+    return run_diff(a.input, a.scheme, a.against, a.out, subject.get(), a.programs.timeout, a.programs.subject);
+}
 
 }  // namespace
 

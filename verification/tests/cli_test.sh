@@ -190,6 +190,10 @@ expect subject-rule 0 "subject 'student': Loop scheme, weights=warren at interio
   "$crossdiv" compare bundled:icosahedron --levels 2 --subject "$student" --subject-name student
 expect subject-crash 1 "subject 'subject' failed: crashed: signal 11" -- \
   "$crossdiv" compare bundled:tetrahedron --levels 1 --subject "python3 $root/verification/tests/subjects/misbehaving_subject.py crash {in} {levels} {out}"
+expect subject-unexplained 1 "shrink it: +crossdiv diff bundled:open-patch --levels 1 .*--subject '.*keep-boundary" -- \
+  "$crossdiv" compare bundled:open-patch --subject "python3 $root/verification/tests/subjects/misbehaving_subject.py keep-boundary {in} {levels} {out}"
+expect subject-diff 0 'minimal: .* \(2 faces, 4 vertices\) .*no named rule fits' -- \
+  "$crossdiv" diff bundled:open-patch --levels 2 --out "$tmp/subject-diff" --subject "python3 $root/verification/tests/subjects/misbehaving_subject.py keep-boundary {in} {levels} {out}"
 expect subject-bad-template 2 "unknown placeholder \{outfile\}" -- \
   "$crossdiv" compare bundled:tetrahedron --subject "prog {in} {outfile}"
 "$crossdiv" subdivide bundled:octahedron --levels 2 -o "$tmp/submitted.obj" > /dev/null

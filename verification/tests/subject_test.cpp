@@ -2,6 +2,7 @@
 // another numbering, result files, and the rule a subject follows, measured per vertex class.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -10,6 +11,7 @@
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/verification/comparisons/loop_comparison.h"
+#include "crossdiv/verification/comparisons/shrink.h"
 #include "crossdiv/verification/implementations/program_implementation.h"
 #include "crossdiv/verification/implementations/registry.h"
 
@@ -203,6 +205,62 @@ TEST(ResultFile, ASubmittedResultIsComparedAtItsLevel) {
     const LoopComparison wrong = compare_with(*subject, "octahedron", 1);
     EXPECT_EQ(wrong.subject_outcome.status, RunStatus::WrongCount) << wrong.subject_outcome.summary();
     std::filesystem::remove(path);
+}
+
+// Shrinking driven by a subject: what no named rule explains, or a failure, down to a mesh
+// small enough to read.
+LoopComparisonRequest subject_alone(const Implementation& subject, int levels) {
+    LoopComparisonRequest req;
+    req.levels = levels;
+    req.subject = &subject;
+    req.without_references = true;
+    return req;
+}
+
+TEST(ShrinkSubject, ABoundaryLeftInPlaceShrinksToTwoTriangles) {
+    // No named rule keeps a boundary vertex of two faces in place (a one-face corner kept in
+    // place is the corner rule), so the smallest mesh showing it has a boundary vertex with
+    // two faces: two triangles.
+    const auto subject = program(misbehaving("keep-boundary"));
+    const ShrinkResult r = shrink_divergence(bundled("open-patch"), "open-patch", subject_alone(*subject, 2));
+    EXPECT_EQ(r.symptom.kind, ShrinkSymptom::Kind::SubjectFollowsNoRule);
+    EXPECT_EQ(r.minimal.num_faces(), 2);
+    EXPECT_EQ(r.minimal.num_vertices(), 4);
+    ASSERT_TRUE(r.minimal_comparison.rules);
+    EXPECT_FALSE(r.minimal_comparison.rules->rule);
+    // The classes that fit: interior edge point (one) and boundary edge points (four).
+    for (const VertexClassRow& row : r.minimal_comparison.rules->rows) {
+        const bool some_rule_fits =
+            std::any_of(row.fits.begin(), row.fits.end(), [](const RuleFit& f) { return f.fits; });
+        EXPECT_EQ(some_rule_fits, row.cls != VertexClass::BoundaryVertex) << to_string(row.cls);
+    }
+}
+
+TEST(ShrinkSubject, AFailureShrinksToTheSmallestInputThatStillFailsTheSameWay) {
+    const auto subject = program(misbehaving("closed-only"));
+    const ShrinkResult r = shrink_divergence(bundled("open-patch"), "open-patch", subject_alone(*subject, 1));
+    EXPECT_EQ(r.symptom.kind, ShrinkSymptom::Kind::SubjectFails);
+    EXPECT_EQ(r.symptom.subject_status, RunStatus::ExitStatus);
+    EXPECT_EQ(r.minimal.num_faces(), 1);
+    EXPECT_EQ(r.minimal_comparison.subject_outcome.status, RunStatus::ExitStatus);
+}
+
+TEST(ShrinkSubject, AgainstAReferenceKeepsTheReferencesDivergenceClass) {
+    const auto subject = program(misbehaving("keep-boundary"));
+    LoopComparisonRequest req;
+    req.levels = 1;
+    req.subject = subject.get();
+    req.references = {"opensubdiv"};
+    const ShrinkResult r = shrink_divergence(bundled("open-patch"), "open-patch", req);
+    EXPECT_EQ(r.symptom.kind, ShrinkSymptom::Kind::ReferenceDiverges);
+    EXPECT_EQ(r.symptom.divergence_class, DivergenceClass::Unexplained);
+    EXPECT_EQ(r.minimal.num_faces(), 2);
+    EXPECT_EQ(r.minimal_comparison.runs.at(0).divergence_class, DivergenceClass::Unexplained);
+}
+
+TEST(ShrinkSubject, ASubjectThatFollowsANamedRuleHasNothingToShrink) {
+    const auto student = program(kStudent);
+    EXPECT_THROW(shrink_divergence(bundled("open-patch"), "open-patch", subject_alone(*student, 1)), InputError);
 }
 
 }  // namespace

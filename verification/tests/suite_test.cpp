@@ -210,7 +210,7 @@ TEST(Shrink, CornerRuleOnTheOpenPatchShrinksToOneTriangle) {
     const TriMesh patch = to_tri_mesh(datasets::bundled_mesh("open-patch"), "test");
     const LoopComparisonRequest req = against("openmesh", {LoopWeights::Loop, LoopBoundary::EdgeAndCorner}, 2);
     const ShrinkResult r = shrink_divergence(patch, "open-patch", req);
-    EXPECT_EQ(r.divergence_class, DivergenceClass::CornerRule);
+    EXPECT_EQ(r.symptom.divergence_class, DivergenceClass::CornerRule);
     EXPECT_LE(r.neighbourhood.num_faces(), 4);
     // A one-face corner is what the corner rule moves: a single triangle is all corners.
     EXPECT_EQ(r.minimal.num_faces(), 1);
@@ -221,7 +221,7 @@ TEST(Shrink, WarrenWeightsShrinkToOneIrregularFanAndTheResultIsOneMinimal) {
     const TriMesh ico = to_tri_mesh(datasets::bundled_mesh("icosahedron"), "test");
     const LoopComparisonRequest req = against("opensubdiv", {LoopWeights::Warren, LoopBoundary::EdgeOnly}, 1);
     const ShrinkResult r = shrink_divergence(ico, "icosahedron", req);
-    EXPECT_EQ(r.divergence_class, DivergenceClass::WeightFamily);
+    EXPECT_EQ(r.symptom.divergence_class, DivergenceClass::WeightFamily);
     EXPECT_LE(r.minimal.num_faces(), 5);
     // 1-minimal: dropping any single face loses the divergence.
     for (int f = 0; f < r.minimal.num_faces(); ++f) {

@@ -168,6 +168,7 @@ Correspondence renumber_subject(const CoreRun& core, const PolyMesh& input, cons
 }
 
 std::vector<const Implementation*> selected_references(const LoopComparisonRequest& req) {
+    if (req.without_references) return {};
     return select_references(Scheme::Loop, req.references);
 }
 

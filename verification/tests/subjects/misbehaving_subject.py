@@ -8,7 +8,10 @@ file), nan, garbage (an unreadable line), wrong-count (one face dropped), quads 
 triangles written as one quad), shuffle (Loop's own weights, with vertices, faces and each
 face's corners in a random order: a correct result in another numbering), float (Loop's own
 weights, every coordinate rounded to float32 and written as binary PLY, as MeshLab writes: a
-correct result of a float implementation; OUT names the .ply).
+correct result of a float implementation; OUT names the .ply), keep-boundary (Loop's own
+weights, but every boundary vertex left where it is: a rule no one names), closed-only (exits
+with a traceback on any input with a boundary edge, as a program that assumes two faces per
+edge does).
 """
 import math
 import os
@@ -42,7 +45,18 @@ def main():
     loop.even_beta = loop_beta
     verts, faces = loop.read_obj(src)
     for _ in range(levels):
+        edges = {}
+        for t in faces:
+            for k in range(3):
+                edge = (min(t[k], t[(k + 1) % 3]), max(t[k], t[(k + 1) % 3]))
+                edges[edge] = edges.get(edge, 0) + 1
+        if mode == "closed-only":
+            assert all(n == 2 for n in edges.values()), "an edge without its second face"
+        boundary = {v for edge, n in edges.items() if n == 1 for v in edge} if mode == "keep-boundary" else set()
+        kept = {v: list(verts[v]) for v in boundary}
         verts, faces = loop.subdivide(verts, faces)
+        for v, p in kept.items():
+            verts[v] = p
     if mode == "nan":
         verts[len(verts) // 2][1] = float("nan")
     if mode == "wrong-count":

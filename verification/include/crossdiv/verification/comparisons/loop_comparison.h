@@ -36,6 +36,7 @@ struct LoopComparisonRequest {
     LoopOptions options{LoopWeights::Loop, LoopBoundary::EdgeOnly};
     int levels = 1;
     std::vector<std::string> references;  ///< names; all built ones when empty
+    bool without_references = false;      ///< run none (a subject measured against core's named rules alone)
     double timeout_seconds = 120;
     bool isolate = true;
     Tier tier = Tier::Weak;

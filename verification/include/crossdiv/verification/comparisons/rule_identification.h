@@ -2,7 +2,7 @@
 /// @file
 /// Which named rule an implementation under test follows, measured vertex class by vertex
 /// class. A subject's refinement, renumbered into core's numbering, is compared with core's
-/// refinement under every named Loop rule (weights loop | warren, boundary edge-only |
+/// refinement under every named Loop rule (weights loop | warren | regularity | continuity, boundary edge-only |
 /// edge-and-corner). At the first compared level each vertex depends only on the input and
 /// on the rule for its class, so the fit of a rule can be read class by class:
 ///
@@ -56,7 +56,7 @@ struct RuleIdentification {
     std::optional<LoopOptions> rule; ///< the rule that fits the whole mesh, when one does
 };
 
-/// Loop's named rules: weights loop, warren x boundary edge-only, edge-and-corner.
+/// Loop's named rules: weights loop, warren, regularity, continuity x boundary edge-only, edge-and-corner.
 std::vector<LoopOptions> loop_named_rules();
 
 /// Classifies and measures. `subject[l-1]` and `core[r][l-1]` are level l in core's numbering

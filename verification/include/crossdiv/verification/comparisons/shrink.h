@@ -1,10 +1,15 @@
 #pragma once
 /// @file
 /// Shrinking a disagreement to a small mesh that still shows it: the neighbourhood of the
-/// worst vertex (the smallest k-ring of its coarse ancestors that still diverges), then
-/// delta debugging over faces (Zeller and Hildebrandt, "Simplifying and Isolating
-/// Failure-Inducing Input", IEEE TSE 2002: ddmin, removing complements) while the divergence
-/// persists with the same class.
+/// worst vertex (the smallest k-ring of its coarse ancestors that still shows the symptom),
+/// then delta debugging over faces (Zeller and Hildebrandt, "Simplifying and Isolating
+/// Failure-Inducing Input", IEEE TSE 2002: ddmin, removing complements) while the symptom
+/// persists unchanged.
+///
+/// The symptom is read off the comparison of the whole input: a reference that diverges from
+/// the implementation under test (core, or a subject in core's place) keeps its divergence
+/// class; a subject that fails keeps its way of failing (crash, timeout, wrong count, ...); a
+/// subject compared with no reference keeps following no named rule.
 
 #include <string>
 
@@ -13,18 +18,38 @@
 
 namespace crossdiv::verification {
 
+/// What must persist while faces are removed.
+struct ShrinkSymptom {
+    enum class Kind {
+        ReferenceDiverges,     ///< the one reference diverges with `divergence_class`
+        SubjectFails,          ///< the subject's run ends with `subject_status`
+        SubjectUnmatched,      ///< the subject's vertices match none of core's
+        SubjectFollowsNoRule,  ///< no named rule fits the subject's refinement
+    };
+    Kind kind = Kind::ReferenceDiverges;
+    DivergenceClass divergence_class = DivergenceClass::None;
+    RunStatus subject_status = RunStatus::Ok;
+    bool operator==(const ShrinkSymptom&) const = default;
+};
+/// "opensubdiv diverges (corner-rule)", "the subject crashed", "no named rule fits the subject".
+std::string describe(const ShrinkSymptom& symptom, const std::string& subject, const std::string& reference);
+
+/// The symptom of a comparison, when it has one.
+std::optional<ShrinkSymptom> symptom_of(const LoopComparison& comparison);
+
 struct ShrinkResult {
-    LoopComparison original;      ///< the comparison on the whole input
-    DivergenceClass divergence_class = DivergenceClass::None;  ///< the class that must persist
-    int k = 0;                     ///< ring size of the neighbourhood (0: the whole mesh was needed)
-    TriMesh neighbourhood;         ///< faces within k rings of the worst vertex's coarse ancestors
-    TriMesh minimal;               ///< after delta debugging
+    LoopComparison original;  ///< the comparison on the whole input
+    ShrinkSymptom symptom;    ///< what must persist
+    int k = 0;                ///< ring size of the neighbourhood (0: the whole mesh was needed)
+    TriMesh neighbourhood;    ///< faces within k rings of the worst vertex's coarse ancestors
+    TriMesh minimal;          ///< after delta debugging
     LoopComparison minimal_comparison;
     int tests = 0;  ///< comparisons run while shrinking
 };
 
-/// @param request exactly one reference. @throws InputError if the reference agrees with core
-///        on the input (nothing to shrink), or for bad input.
+/// @param request at most one reference; none only with a subject (whose failure or lack of a
+///        named rule is then shrunk). @throws InputError if the comparison of the input shows
+///        no symptom (nothing to shrink), or for bad input.
 ShrinkResult shrink_divergence(const TriMesh& mesh, const std::string& name, const LoopComparisonRequest& request);
 
 /// The faces of `mesh` listed in `faces`, with unused vertices dropped (order kept).
