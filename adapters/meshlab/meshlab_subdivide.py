@@ -11,7 +11,10 @@ scheme and runs `xvfb-run -a meshlabserver -i IN -o OUT -s SCRIPT`, from an argu
 Filters (the names and parameters of meshlabserver's filter dump):
   loop        "Subdivision Surfaces: Loop", LoopWeight 0 loop | 1 regularity | 2 continuity
               (VCG's LoopWeight, RegularLoopWeight, ContinuityLoopWeight)
-  butterfly   "Subdivision Surfaces: Butterfly Subdivision" (VCG's MidPointButterfly)
+  butterfly   "Subdivision Surfaces: Butterfly Subdivision" (VCG's MidPointButterfly: the
+              eight-point stencil, the four-point rule on boundary edges, and for a wing
+              beyond the boundary the triangle's own opposite vertex, crossdiv's
+              opposite-vertex-wings)
 Both with Iterations = LEVELS, Edge Threshold 0 (split every edge: a positive threshold
 refines only the longer edges) and Selected false.
 

@@ -227,6 +227,31 @@ TEST(Butterfly, RegularPatchHasThePublishedEightPointStencil) {
               butterfly_subdivide(torus, ButterflyVariant::Modified, 2).positions);
 }
 
+TEST(Butterfly, WingsBeyondTheBoundaryAreReflectedOrTheOppositeVertex) {
+    // Square (0,0,0), (1,0,1), (1,1,0), (0,1,1) split along the diagonal 0-2 into (0,1,2) and
+    // (0,2,3). The diagonal's four wing edges are all boundary edges: (1,2) and (0,1) in the
+    // first triangle, (2,3) and (3,0) in the second.
+    // Reflected: wings v1+v2-v0, v0+v1-v2, v2+v3-v0, v3+v0-v2 sum to 2(v1 + v3), so the point
+    // is 1/2 (v0 + v2) + 1/8 (v1 + v3) - 1/16 * 2 (v1 + v3) = (v0 + v2) / 2 = (1/2, 1/2, 0).
+    // Opposite vertex: wings v0, v2, v0, v2, so 3/8 (v0 + v2) + 1/8 (v1 + v3)
+    // = (3/8 + 1/8, 3/8 + 1/8, 1/4) = (1/2, 1/2, 1/4): Loop's edge mask.
+    PolyMesh m;
+    m.positions = {Vec3(0, 0, 0), Vec3(1, 0, 1), Vec3(1, 1, 0), Vec3(0, 1, 1)};
+    m.add_face({0, 1, 2});
+    m.add_face({0, 2, 3});
+    const PolyConnectivity c = build_poly_connectivity(m);
+    const int diagonal = 4 + c.corner_edge[2];  // corner 2 of face 0 runs 2 -> 0
+    for (ButterflyVariant v : {ButterflyVariant::Classic, ButterflyVariant::Modified}) {
+        expect_near(butterfly_subdivide(m, v, 1).positions[diagonal], Vec3(0.5, 0.5, 0));
+        expect_near(butterfly_subdivide(m, v, 1, ButterflyWings::OppositeVertex).positions[diagonal], Vec3(0.5, 0.5, 0.25));
+    }
+    // Boundary edges take the four-point rule under both wing rules.
+    const PolyMesh reflected = butterfly_subdivide(m, ButterflyVariant::Classic, 1);
+    const PolyMesh opposite = butterfly_subdivide(m, ButterflyVariant::Classic, 1, ButterflyWings::OppositeVertex);
+    for (int e = 0; e < c.num_edges(); ++e)
+        if (4 + e != diagonal) EXPECT_EQ(reflected.positions[4 + e], opposite.positions[4 + e]) << e;
+}
+
 TEST(Butterfly, BoundaryEdgeIsTheFourPointRule) {
     // Square split into two triangles: the boundary loop is 0, 1, 2, 3. Edge 0 -> 1 gets
     // 9/16 (v0 + v1) - 1/16 (v3 + v2) = (1/2, -1/8, 0).

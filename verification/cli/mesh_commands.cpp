@@ -51,9 +51,11 @@ struct SchemeArgs {
                        "Boundary rule. loop: edge-only (default) or edge-and-corner; catmull-clark: those and "
                        "midpoint-average (OpenMesh's); doo-sabin: chaikin-boundary (default) or drop-border-faces "
                        "(CGAL's); sqrt3, when the boundary is refined: count-from-input (default) or "
-                       "restart-each-level (a library called once per level)")
+                       "restart-each-level (a library called once per level); the Butterflies, for a wing point "
+                       "beyond the boundary: reflected-wings (default) or opposite-vertex-wings (MeshLab's)")
             ->check(CLI::IsMember({"edge-only", "edge-and-corner", "midpoint-average", "chaikin-boundary",
-                                   "drop-border-faces", "count-from-input", "restart-each-level"}));
+                                   "drop-border-faces", "count-from-input", "restart-each-level", "reflected-wings",
+                                   "opposite-vertex-wings"}));
         app.add_option("--levels", levels, "Number of subdivision levels")->check(CLI::Range(0, 12))->capture_default_str();
         app.add_option("--crease-method", creasing,
                        "Decay of semi-sharp crease tags (loop, catmull-clark): uniform (OpenSubdiv's default) or "

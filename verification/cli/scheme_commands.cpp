@@ -161,9 +161,9 @@ int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeAr
         fmt::print("\n{} ({} vertices, {} faces) {} boundary={} levels={} (core {:.3f} s)\n", c.input, c.input_vertices,
                    c.input_faces, to_string(c.scheme), c.rule, c.levels, c.core_seconds);
         if (!c.core_error.empty()) fmt::print("  core refused: {}\n", c.core_error);
-        fmt::print("  {:<17} {:<18} {:<13} {:>10}  {}\n", "reference", "rule", "verdict", "max rel", "class / explanation");
+        fmt::print("  {:<17} {:<21} {:<13} {:>10}  {}\n", "reference", "rule", "verdict", "max rel", "class / explanation");
         for (const SchemeReferenceRun& r : c.runs)
-            fmt::print("  {:<17} {:<18} {:<13} {:>10}  {}{}\n", r.reference, r.rule, to_string(r.verdict),
+            fmt::print("  {:<17} {:<21} {:<13} {:>10}  {}{}\n", r.reference, r.rule, to_string(r.verdict),
                        !std::isfinite(r.comparison.max_rel) || r.correspondence.method == MatchMethod::None
                            ? "-"
                            : fmt::format("{:.3g}", r.comparison.max_rel),

@@ -12,8 +12,8 @@ namespace {
 /// The stencil terms of one edge point, written into the row being built.
 class EdgeStencil {
 public:
-    EdgeStencil(const PolyConnectivity& conn, const std::vector<int>& valence, StencilTable& st)
-        : conn_(conn), valence_(valence), st_(st) {}
+    EdgeStencil(const PolyConnectivity& conn, const std::vector<int>& valence, ButterflyWings wings, StencilTable& st)
+        : conn_(conn), valence_(valence), wings_(wings), st_(st) {}
 
     /// The four-point rule along the boundary polygon; c is the boundary edge's corner.
     void boundary(int c) {
@@ -54,11 +54,16 @@ public:
 
 private:
     /// The wing point c across the edge of corner w (x -> b), -1/16; when that edge is on the
-    /// boundary, its reflection x + b - opposite, opposite being the edge's third vertex.
+    /// boundary, its stand-in under the wing rule: the reflection x + b - opposite, or
+    /// opposite itself, opposite being the edge's third vertex.
     void wing(int w, int opposite) {
         const int t = conn_.twin[w];
         if (t >= 0) {
             st_.add(conn_.corner_vertex[conn_.prev[t]], kButterflyC);
+            return;
+        }
+        if (wings_ == ButterflyWings::OppositeVertex) {
+            st_.add(opposite, kButterflyC);
             return;
         }
         st_.add(conn_.corner_vertex[w], kButterflyC);
@@ -68,12 +73,14 @@ private:
 
     const PolyConnectivity& conn_;
     const std::vector<int>& valence_;
+    ButterflyWings wings_;
     StencilTable& st_;
 };
 
 }  // namespace
 
-RefinementStep butterfly_step(const PolyMesh& mesh, const PolyConnectivity& conn, ButterflyVariant variant) {
+RefinementStep butterfly_step(const PolyMesh& mesh, const PolyConnectivity& conn, ButterflyVariant variant,
+                              ButterflyWings wings) {
     detail::require_triangles(mesh, to_string(variant).data());
     const int nv = mesh.num_vertices(), nf = mesh.num_faces(), ne = conn.num_edges();
     if (static_cast<long long>(nv) + ne > INT_MAX || 4LL * nf > INT_MAX)
@@ -95,7 +102,7 @@ RefinementStep butterfly_step(const PolyMesh& mesh, const PolyConnectivity& conn
         st.add(v, 1.0);
         st.end_row();
     }
-    EdgeStencil stencil(conn, valence, st);
+    EdgeStencil stencil(conn, valence, wings, st);
     for (int e = 0; e < ne; ++e) {
         const int c = conn.edge_corner[e], t = conn.twin[c];
         const int a0 = conn.corner_vertex[c], a1 = conn.head(c);
@@ -131,11 +138,11 @@ RefinementStep butterfly_step(const PolyMesh& mesh, const PolyConnectivity& conn
     return step;
 }
 
-PolyMesh butterfly_subdivide(const PolyMesh& mesh, ButterflyVariant variant, int levels) {
+PolyMesh butterfly_subdivide(const PolyMesh& mesh, ButterflyVariant variant, int levels, ButterflyWings wings) {
     detail::require_triangles(mesh, to_string(variant).data());  // also for levels = 0
     detail::require_no_creases(mesh, to_string(variant).data());
     return detail::refine_levels(mesh, levels, [&](const PolyMesh& m, const PolyConnectivity& conn, int) {
-        return butterfly_step(m, conn, variant);
+        return butterfly_step(m, conn, variant, wings);
     });
 }
 

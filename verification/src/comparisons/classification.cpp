@@ -34,7 +34,7 @@ DivergenceClass rule_difference_class(Scheme scheme, const SchemeRule& applied, 
                                                                                    : DivergenceClass::BoundaryRule;
         case Scheme::Sqrt3: return DivergenceClass::Parity;
         case Scheme::Butterfly:
-        case Scheme::ModifiedButterfly: break;
+        case Scheme::ModifiedButterfly: return DivergenceClass::WingRule;
     }
     return DivergenceClass::BoundaryRule;
 }

@@ -26,6 +26,11 @@ std::string rule_effect(Scheme scheme, const std::string& ref_name, const std::s
             return ref_name + (rule == "restart-each-level"
                                    ? " counts generations per call, and was called once per level, so it never refined the boundary"
                                    : " counts generations from the input (one call of " + std::to_string(levels) + " levels)");
+        case Scheme::Butterfly:
+        case Scheme::ModifiedButterfly:
+            return ref_name + (rule == "opposite-vertex-wings"
+                                   ? " takes a wing point beyond the boundary to be the triangle's own opposite vertex"
+                                   : " reflects a wing point beyond the boundary across the wing edge");
         default: return ref_name + " applies the " + rule + " boundary rule";
     }
 }
@@ -65,6 +70,11 @@ bool beyond_valence_table(const Implementation& ref, Scheme scheme, const Scheme
                   " vertices of larger valence (up to " + std::to_string(largest) + ") differ, by up to " + sci(worst) +
                   " of the diagonal, and every other vertex agrees";
     return true;
+}
+
+/// Schemes that refine a triangle into four by one new vertex per edge, old vertices first.
+bool splits_triangles(Scheme scheme) {
+    return scheme == Scheme::Butterfly || scheme == Scheme::ModifiedButterfly || scheme == Scheme::Loop;
 }
 
 }  // namespace
@@ -138,6 +148,15 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
         // rounding, so nearest-neighbour matching is sound even where the requested rule
         // moves vertices (or makes others).
         run.correspondence = match_nearest_and_faces(same_rule_mesh, theirs);
+        if (run.correspondence.method == MatchMethod::None && splits_triangles(req.scheme)) {
+            // A reference whose rule moves vertices onto others' places (a boundary rule
+            // of its own) is matched by connectivity, level by level.
+            adapters::LevelTrace our_levels{input};
+            for (int l = 1; l <= req.levels; ++l) our_levels.push_back(subdivide(req.scheme, ref_rule, our_levels.back(), 1));
+            const std::string nearest_failed = run.correspondence.note;
+            run.correspondence = match_split_refinement(our_levels, *it.trace);
+            run.correspondence.note = nearest_failed + (run.correspondence.note.empty() ? "" : "; " + run.correspondence.note);
+        }
         if (run.correspondence.method == MatchMethod::None) {
             // Without a correspondence only the topology test of the ladder can be run.
             run.verdict = Verdict::Diverge;

@@ -228,4 +228,42 @@ PolyMesh renumber(const PolyMesh& mesh, const std::vector<int>& to_ours) {
     return out;
 }
 
+std::vector<VertexOrigin> split_origins(int coarse_vertices, const PolyMesh& fine, std::string& why) {
+    std::vector<VertexOrigin> origins(static_cast<size_t>(fine.num_vertices()), VertexOrigin{-1, -1});
+    std::vector<int> old_count(origins.size(), 0);
+    for (int v = 0; v < std::min(coarse_vertices, fine.num_vertices()); ++v) origins[v].a = v;
+    for (auto [a, b] : mesh_topology(fine).edge_list) {
+        if (a < coarse_vertices && b < coarse_vertices) {
+            why = "old vertices " + std::to_string(a) + " and " + std::to_string(b) + " are adjacent";
+            return {};
+        }
+        for (auto [v, w] : {std::pair{a, b}, std::pair{b, a}}) {
+            if (v < coarse_vertices || w >= coarse_vertices) continue;
+            if (++old_count[v] == 1) origins[v].a = w;
+            else origins[v].b = w;
+        }
+    }
+    for (size_t v = static_cast<size_t>(coarse_vertices); v < origins.size(); ++v)
+        if (old_count[v] != 2) {
+            why = "new vertex " + std::to_string(v) + " has " + std::to_string(old_count[v]) + " old neighbours";
+            return {};
+        }
+    return origins;
+}
+
+Correspondence match_split_refinement(const adapters::LevelTrace& ours, const adapters::LevelTrace& ref) {
+    std::vector<std::vector<VertexOrigin>> origins;
+    for (size_t l = 1; l < ours.size(); ++l) {
+        std::string why;
+        origins.push_back(split_origins(ours[l - 1].num_vertices(), ours[l], why));
+        if (origins.back().empty()) {
+            Correspondence c;
+            c.note = "our level " + std::to_string(l) + " is not a numbered 1-to-4 split: " + why;
+            return c;
+        }
+    }
+    if (ours.empty()) return {};
+    return match_loop_refinement(origins, ours.front().positions, ref, ours.back().positions);
+}
+
 }  // namespace crossdiv::verification

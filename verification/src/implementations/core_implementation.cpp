@@ -25,8 +25,9 @@ Capabilities core_capabilities() {
                  supports(Scheme::DooSabin,
                           {doo_sabin_rule(DooSabinBoundary::ChaikinBoundary), doo_sabin_rule(DooSabinBoundary::DropBorderFaces)}),
                  supports(Scheme::Sqrt3, {sqrt3_rule(Sqrt3Parity::CountFromInput), sqrt3_rule(Sqrt3Parity::RestartEachLevel)}),
-                 supports(Scheme::Butterfly, {SchemeRule{}}),
-                 supports(Scheme::ModifiedButterfly, {SchemeRule{}})};
+                 supports(Scheme::Butterfly, {butterfly_rule(ButterflyWings::Reflected), butterfly_rule(ButterflyWings::OppositeVertex)}),
+                 supports(Scheme::ModifiedButterfly,
+                          {butterfly_rule(ButterflyWings::Reflected), butterfly_rule(ButterflyWings::OppositeVertex)})};
     c.limit_positions = true;
     return c;
 }
@@ -40,8 +41,9 @@ PolyMesh subdivide(const PolyMesh& mesh, const RefineRequest& r, int levels) {
         case Scheme::CatmullClark: return catmull_clark_subdivide(mesh, r.rule.catmull_clark, levels);
         case Scheme::DooSabin: return doo_sabin_subdivide(mesh, r.rule.doo_sabin, levels);
         case Scheme::Sqrt3: return sqrt3_subdivide(mesh, r.rule.sqrt3, levels);
-        case Scheme::Butterfly: return butterfly_subdivide(mesh, ButterflyVariant::Classic, levels);
-        case Scheme::ModifiedButterfly: return butterfly_subdivide(mesh, ButterflyVariant::Modified, levels);
+        case Scheme::Butterfly: return butterfly_subdivide(mesh, ButterflyVariant::Classic, levels, r.rule.butterfly_wings);
+        case Scheme::ModifiedButterfly:
+            return butterfly_subdivide(mesh, ButterflyVariant::Modified, levels, r.rule.butterfly_wings);
     }
     throw InputError("unknown scheme");
 }

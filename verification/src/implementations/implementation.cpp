@@ -23,7 +23,7 @@ SchemeRule with_variant(Scheme scheme, SchemeRule requested, const SchemeRule& f
         case Scheme::DooSabin: requested.doo_sabin = from.doo_sabin; break;
         case Scheme::Sqrt3: requested.sqrt3 = from.sqrt3; break;
         case Scheme::Butterfly:
-        case Scheme::ModifiedButterfly: break;
+        case Scheme::ModifiedButterfly: requested.butterfly_wings = from.butterfly_wings; break;
     }
     return requested;
 }
@@ -110,7 +110,24 @@ adapters::ClosedMeshReport Implementation::closed_mesh_report(const TriMesh&) co
 
 IsolatedTrace refine_isolated(const Implementation& impl, const PolyMesh& mesh, const RefineRequest& request,
                               double timeout_seconds, bool isolate) {
-    return run_isolated([&] { return impl.refine(mesh, request); }, timeout_seconds, isolate && !impl.confines_itself());
+    IsolatedTrace r =
+        run_isolated([&] { return impl.refine(mesh, request); }, timeout_seconds, isolate && !impl.confines_itself());
+    if (r.outcome.status != RunStatus::Ok || !r.trace) return r;
+    // A library that reads past a table (OpenMesh's sqrt3 weights beyond its largest valence)
+    // can return NaN or inf: an answer that is no answer, never a distance to compare.
+    for (size_t level = 1; level < r.trace->size(); ++level) {
+        const std::vector<Vec3>& p = (*r.trace)[level].positions;
+        for (size_t v = 0; v < p.size(); ++v)
+            if (!p[v].allFinite()) {
+                r.outcome.status = RunStatus::NonFiniteOutput;
+                r.outcome.message = "vertex " + std::to_string(v) + " of level " + std::to_string(level) +
+                                    " is not finite (" + std::to_string(p[v].x()) + ", " + std::to_string(p[v].y()) +
+                                    ", " + std::to_string(p[v].z()) + ")";
+                r.trace.reset();
+                return r;
+            }
+    }
+    return r;
 }
 
 }  // namespace crossdiv::verification

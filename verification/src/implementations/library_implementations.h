@@ -45,6 +45,11 @@ inline SchemeRule sqrt3_rule(Sqrt3Parity p) {
     r.sqrt3 = {p};
     return r;
 }
+inline SchemeRule butterfly_rule(ButterflyWings w) {
+    SchemeRule r;
+    r.butterfly_wings = w;
+    return r;
+}
 
 /// A library's editable mesh (the adapters' EditableMesh classes) as an edit session.
 /// `AnswersFlipOk`: whether the library can say if it would flip an edge (OpenMesh's

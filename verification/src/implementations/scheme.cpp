@@ -38,7 +38,7 @@ std::string rule_name(Scheme scheme, const SchemeRule& rule) {
         case Scheme::DooSabin: return std::string(to_string(rule.doo_sabin.boundary));
         case Scheme::Sqrt3: return std::string(to_string(rule.sqrt3.parity));
         case Scheme::Butterfly:
-        case Scheme::ModifiedButterfly: break;
+        case Scheme::ModifiedButterfly: return std::string(to_string(rule.butterfly_wings));
     }
     return "-";
 }
@@ -46,8 +46,6 @@ std::string rule_name(Scheme scheme, const SchemeRule& rule) {
 std::string boundary_name(Scheme scheme, const SchemeRule& rule) {
     switch (scheme) {
         case Scheme::Loop: return std::string(to_string(rule.loop.boundary));
-        case Scheme::Butterfly:
-        case Scheme::ModifiedButterfly: return "";
         default: return rule_name(scheme, rule);
     }
 }
@@ -84,9 +82,9 @@ SchemeRule rule_from_boundary_name(Scheme scheme, std::string_view boundary) {
         case Scheme::Sqrt3:
             return pick(std::array{Sqrt3Parity::CountFromInput, Sqrt3Parity::RestartEachLevel}, rule.sqrt3.parity);
         case Scheme::Butterfly:
-        case Scheme::ModifiedButterfly: break;
+        case Scheme::ModifiedButterfly: return pick(kAllButterflyWings, rule.butterfly_wings);
     }
-    throw InputError(std::string(to_string(scheme)) + " has no boundary rule to choose (boundary edges take the four-point rule)");
+    throw InputError("unknown scheme");
 }
 
 }  // namespace crossdiv::verification

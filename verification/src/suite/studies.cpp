@@ -58,15 +58,17 @@ CheckReport catmull_clark_study() {
     return out;
 }
 
-/// Doo-Sabin, sqrt3 and the modified Butterfly against their references (sqrt3 to 3 levels,
-/// so that a boundary step and the step after it are both seen), and the Butterfly
+/// Doo-Sabin, sqrt3 and both Butterflies against their references (sqrt3 to 3 levels, so
+/// that a boundary step and the step after it are both seen; the classic Butterfly has an
+/// external reference only, MeshLab's, when the manifest registers it), and the Butterfly
 /// properties of both variants.
 CheckReport schemes_study() {
     CheckReport out;
     std::vector<Check>& runs = out.checks;
     json rows = json::array(), properties = json::array();
     const std::vector<datasets::BundledMesh> meshes = datasets::catalog_meshes();
-    for (const auto& [scheme, levels] : {std::pair{Scheme::DooSabin, 2}, {Scheme::Sqrt3, 3}, {Scheme::ModifiedButterfly, 2}})
+    for (const auto& [scheme, levels] : {std::pair{Scheme::DooSabin, 2}, {Scheme::Sqrt3, 3}, {Scheme::ModifiedButterfly, 2},
+                                                 {Scheme::Butterfly, 2}})
         for (const auto& b : meshes) {
             // The triangle schemes' refusal of polygons is tested elsewhere.
             if (scheme != Scheme::DooSabin && !b.mesh.all_triangles())

@@ -15,13 +15,16 @@
 
 namespace crossdiv {
 
-/// One level of `variant` on the triangle mesh `mesh` as data.
+/// One level of `variant` on the triangle mesh `mesh` as data, with `wings` for the wing
+/// points the boundary removes.
 /// @throws InputError naming the face for a face that is not a triangle.
-RefinementStep butterfly_step(const PolyMesh& mesh, const PolyConnectivity& conn, ButterflyVariant variant);
+RefinementStep butterfly_step(const PolyMesh& mesh, const PolyConnectivity& conn, ButterflyVariant variant,
+                              ButterflyWings wings = ButterflyWings::Reflected);
 
 /// `levels` levels of `variant` (colors refined alike).
 /// @throws InputError naming the element for a mesh build_poly_connectivity refuses, a face
 ///         that is not a triangle, or a negative level count.
-PolyMesh butterfly_subdivide(const PolyMesh& mesh, ButterflyVariant variant, int levels);
+PolyMesh butterfly_subdivide(const PolyMesh& mesh, ButterflyVariant variant, int levels,
+                             ButterflyWings wings = ButterflyWings::Reflected);
 
 }  // namespace crossdiv

@@ -32,6 +32,29 @@ enum class ButterflyVariant {
     Modified,
 };
 
+/// Where the eight-point stencil of an interior edge takes a wing point c that is missing
+/// because the wing edge (x, b) of one of its triangles (x, b, o) is on the boundary.
+enum class ButterflyWings {
+    /// The reflection of o across the wing edge, x + b - o: a wing as if the mesh went on
+    /// flat beyond the boundary. This testbed's rule (OpenMesh's and CGAL's modified
+    /// Butterfly agree with it).
+    Reflected,
+    /// o itself, the triangle's own third vertex: what VCG's MidPointButterfly (MeshLab's
+    /// "Butterfly Subdivision") reads when its walk across the wing edge stays in the face.
+    OppositeVertex,
+};
+inline constexpr std::array<ButterflyWings, 2> kAllButterflyWings{ButterflyWings::Reflected, ButterflyWings::OppositeVertex};
+
+/// "reflected-wings", "opposite-vertex-wings".
+constexpr std::string_view to_string(ButterflyWings w) {
+    return w == ButterflyWings::Reflected ? "reflected-wings" : "opposite-vertex-wings";
+}
+
+/// The wing rule named `name`. @throws InputError listing the names.
+inline ButterflyWings butterfly_wings_from_string(std::string_view name) {
+    return variant_from_string<ButterflyWings>(name, kAllButterflyWings, "Butterfly wing rule");
+}
+
 /// The eight-point stencil of an interior edge (a0, a1) with opposite vertices b0, b1 and the
 /// four vertices c beyond the wings: a 1/2 each, b 2w, c -w, with the tension w = 1/16
 /// (the value for which the scheme reproduces cubics on a regular mesh).

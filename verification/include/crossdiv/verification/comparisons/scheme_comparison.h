@@ -47,7 +47,8 @@ struct SchemeReferenceRun {
     /// of the coordinates); the rule the reference applies, when core re-run with it agrees
     /// within the tolerance in faces and positions: "boundary-rule", "corner-rule" (both
     /// Catmull-Clark), "border-faces-dropped" (Doo-Sabin), "parity" (sqrt3's boundary
-    /// generations); "valence-limit" (the reference's weight table is shorter than the input's
+    /// generations), "wing-rule" (the Butterflies' wing points beyond the boundary);
+    /// "valence-limit" (the reference's weight table is shorter than the input's
     /// largest valence, and at level 1 exactly the vertices beyond it differ); "topology" (no
     /// vertex bijection or different faces), or "unexplained".
     DivergenceClass divergence_class = DivergenceClass::None;

@@ -58,6 +58,18 @@ Correspondence match_nearest(const std::vector<Vec3>& ours, const std::vector<Ve
 /// Method None unless this gives a bijection.
 Correspondence match_nearest_and_faces(const PolyMesh& ours, const PolyMesh& ref);
 
+/// The provenance of a 1-to-4 triangle split level (Loop, Butterfly) read off its own
+/// connectivity: the first `coarse_vertices` vertices are the old ones, and each new vertex
+/// is the edge point of the two old vertices it is adjacent to. Empty, with `why` filled, when
+/// `fine` is not numbered that way.
+std::vector<VertexOrigin> split_origins(int coarse_vertices, const PolyMesh& fine, std::string& why);
+
+/// Matches the last level of a reference trace of a 1-to-4 triangle split scheme to ours
+/// level by level from connectivity alone (match_loop_refinement, with our provenance read by
+/// split_origins): positions play no part, so a reference whose rule moves some vertices far
+/// (onto others' places) is still matched. `ours` holds every level 0..N.
+Correspondence match_split_refinement(const adapters::LevelTrace& ours, const adapters::LevelTrace& ref);
+
 /// `mesh` with vertex i renumbered to `to_ours[i]` (a bijection onto 0..n-1): positions
 /// moved, faces rewritten, face order kept.
 PolyMesh renumber(const PolyMesh& mesh, const std::vector<int>& to_ours);

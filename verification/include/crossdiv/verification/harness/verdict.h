@@ -39,6 +39,7 @@ enum class DivergenceClass {
     BoundaryRule,              ///< another boundary rule (OpenMesh's Catmull-Clark midpoint average)
     BorderFacesDropped,        ///< Doo-Sabin: the faces of border edges and vertices are dropped
     Parity,                    ///< sqrt3: the boundary generations are counted per call
+    WingRule,                  ///< Butterfly: another stand-in for a wing point beyond the boundary
     // Something else measured:
     Rounding,                  ///< same faces, within tolerances::kRoundingUlps of the coordinates
     IsolatedVertexHandling,    ///< only vertices without faces differ
@@ -54,7 +55,7 @@ enum class DivergenceClass {
 };
 
 /// "" for None, else the class's name in results.json ("weight-family", "corner-rule",
-/// "weight-family+corner-rule", "boundary-rule", "border-faces-dropped", "parity", "rounding",
+/// "weight-family+corner-rule", "boundary-rule", "border-faces-dropped", "parity", "wing-rule", "rounding",
 /// "isolated-vertex-handling", "valence-limit", "topology", "ambiguous-correspondence",
 /// "unexplained", "non-manifold-handling", "orientation-handling", "degenerate-face-handling",
 /// "invalid-input-handling").

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "crossdiv/subdiv/butterfly_mask.h"
 #include "crossdiv/subdiv/catmull_clark_mask.h"
 #include "crossdiv/subdiv/doo_sabin_mask.h"
 #include "crossdiv/subdiv/loop_mask.h"
@@ -33,21 +34,23 @@ struct SchemeRule {
     CatmullClarkOptions catmull_clark{CatmullClarkBoundary::EdgeOnly};
     DooSabinOptions doo_sabin{DooSabinBoundary::ChaikinBoundary};
     Sqrt3Options sqrt3{Sqrt3Parity::CountFromInput};
+    ButterflyWings butterfly_wings = ButterflyWings::Reflected;  ///< both Butterflies
 };
 
 /// The rule's name for `scheme`: "weights=loop boundary=edge-only" for Loop, "edge-only",
-/// "chaikin-boundary", "count-from-input"; "-" for the Butterflies.
+/// "chaikin-boundary", "count-from-input", "reflected-wings".
 std::string rule_name(Scheme scheme, const SchemeRule& rule);
 /// The name of the rule's boundary option, as rule_from_boundary_name reads it ("edge-only",
-/// "chaikin-boundary", "count-from-input", ...); "" for the Butterflies.
+/// "chaikin-boundary", "count-from-input", "reflected-wings", ...).
 std::string boundary_name(Scheme scheme, const SchemeRule& rule);
 /// Whether the two rules are the same variant of `scheme` (the creasing method included).
 bool same_rule(Scheme scheme, const SchemeRule& a, const SchemeRule& b);
 
 /// The rule whose boundary option is named `boundary` for `scheme` (the default when empty):
 /// Loop edge-only | edge-and-corner, Catmull-Clark those and midpoint-average, Doo-Sabin
-/// chaikin-boundary | drop-border-faces, sqrt3 count-from-input | restart-each-level.
-/// @throws InputError for a name the scheme does not have (the Butterflies have none).
+/// chaikin-boundary | drop-border-faces, sqrt3 count-from-input | restart-each-level, the
+/// Butterflies reflected-wings | opposite-vertex-wings.
+/// @throws InputError for a name the scheme does not have.
 SchemeRule rule_from_boundary_name(Scheme scheme, std::string_view boundary);
 
 /// One refinement asked of an implementation.
