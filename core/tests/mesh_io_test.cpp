@@ -82,6 +82,27 @@ TEST(MeshIo, ObjErrorsNameFileAndLine) {
     EXPECT_EQ(obj_error("v 0 0 0\nf 1 x 1\n"), "t.obj:2: 'x' is not an integer (vertex index)");
 }
 
+TEST(MeshIo, ObjIndicesBeyond32BitsAreRefusedWithTheFilesValue) {
+    // 4294967299 = 2^32 + 3 would wrap to vertex 3 in an int; 2147483649 to a negative one;
+    // 2147483648 = INT_MAX + 1 is the first index an int cannot hold.
+    const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    EXPECT_EQ(obj_error(tri + "f 1 2 4294967299\n"),
+              "t.obj:4: vertex index 4294967299 is out of range: 32-bit indices address at most 2147483647 vertices");
+    EXPECT_EQ(obj_error(tri + "f 1 2 2147483649\n"),
+              "t.obj:4: vertex index 2147483649 is out of range: 32-bit indices address at most 2147483647 vertices");
+    EXPECT_EQ(obj_error(tri + "f 1 2 2147483648\n"),
+              "t.obj:4: vertex index 2147483648 is out of range: 32-bit indices address at most 2147483647 vertices");
+    // INT_MAX itself fits, and is out of this file's range, reported with its value.
+    EXPECT_EQ(obj_error(tri + "f 1 2 2147483647\n"),
+              "t.obj:4: vertex index 2147483647 out of range: the file has 3 vertices");
+    EXPECT_EQ(obj_error(tri + "f 1 2 99999999999999999999\n"),
+              "t.obj:4: '99999999999999999999' is out of the range of a 64-bit integer (vertex index)");
+    EXPECT_EQ(obj_error(tri + "f 1 2 3\nt crease 2/1/0 0 4294967298 1\n"),
+              "t.obj:5: tag vertex index 4294967298 is out of range: 32-bit indices address 0..2147483647");
+    EXPECT_EQ(obj_error(tri + "f 1 2 3\nt corner 1/1/0 -1 1\n"),
+              "t.obj:5: tag vertex index -1 is out of range: 32-bit indices address 0..2147483647");
+}
+
 TEST(MeshIo, ObjSkipsUnknownStatementsWithANote) {
     // The course files are OBJ saved from a browser, wrapped in HTML.
     const PolyMesh m = obj("<html><pre># OBJ\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n</pre></html>\n");
@@ -141,6 +162,14 @@ TEST(MeshIo, OffErrorsNameFileAndLine) {
     EXPECT_EQ(off_error("PLY\n"), "t.off:1: expected 'OFF' or 'COFF' header, got 'PLY'");
     EXPECT_EQ(off_error("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"), "t.off:6: vertex index 7 out of range [0, 3)");
     EXPECT_EQ(off_error("OFF\n3 1 0\n0 0 0\n1 0 0\n"), "t.off:4: unexpected end of file, expecting a vertex");
+    // Counts beyond 32-bit indices are refused at the header; a count that fits but is not
+    // backed by lines fails at the missing line, without allocating for the claim.
+    EXPECT_EQ(off_error("OFF\n4611686018427387904 1 0\n"),
+              "t.off:2: vertex count 4611686018427387904 is out of range: 32-bit indices address 0..2147483647");
+    EXPECT_EQ(off_error("OFF\n2147483648 1 0\n"),
+              "t.off:2: vertex count 2147483648 is out of range: 32-bit indices address 0..2147483647");
+    EXPECT_EQ(off_error("OFF\n3 -1 0\n"), "t.off:2: face count -1 is out of range: 32-bit indices address 0..2147483647");
+    EXPECT_EQ(off_error("OFF\n2147483647 1 0\n0 0 0\n"), "t.off:3: unexpected end of file, expecting a vertex");
 }
 
 TEST(MeshIo, QuadGivenToATriangleSchemeNamesTheLine) {

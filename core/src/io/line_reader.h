@@ -3,6 +3,7 @@
 // std::from_chars (no locale, no silent partial parses) and messages that carry file:line.
 
 #include <charconv>
+#include <limits>
 #include <cmath>
 #include <istream>
 #include <string>
@@ -53,9 +54,19 @@ public:
     long integer(std::string_view t, const char* what) {
         long x = 0;
         auto [p, ec] = std::from_chars(t.data(), t.data() + t.size(), x);
+        if (!t.empty() && ec == std::errc::result_out_of_range && p == t.data() + t.size())
+            fail(std::string("'") + std::string(t) + "' is out of the range of a 64-bit integer (" + what + ")");
         if (t.empty() || ec != std::errc() || p != t.data() + t.size())
             fail(std::string("'") + std::string(t) + "' is not an integer (" + what + ")");
         return x;
+    }
+    /// An element index or count that 32-bit indices address: 0 <= x <= INT_MAX, else the
+    /// failure names the file's value.
+    int index(long x, const char* what) const {
+        if (x < 0 || x > std::numeric_limits<int>::max())
+            fail(std::string(what) + " " + std::to_string(x) + " is out of range: 32-bit indices address 0.." +
+                 std::to_string(std::numeric_limits<int>::max()));
+        return static_cast<int>(x);
     }
     long integer(const char* what) {
         std::string_view t = token();

@@ -1,4 +1,5 @@
 #include <charconv>
+#include <limits>
 #include <ostream>
 #include <span>
 #include <stdexcept>
@@ -53,7 +54,8 @@ bool read_tag(io_detail::LineReader& r, std::string_view name, CreaseTags& tags)
         for (size_t k = 0; k < ints.size(); k += 2) {
             if (ints[k] == ints[k + 1]) r.fail("tag 'crease': edge (" + std::to_string(ints[k]) + ", " +
                                                std::to_string(ints[k]) + ") joins a vertex to itself");
-            tags.edges.push_back({static_cast<int>(ints[k]), static_cast<int>(ints[k + 1]), sharpness(k / 2, ints.size() / 2)});
+            tags.edges.push_back({r.index(ints[k], "tag vertex index"), r.index(ints[k + 1], "tag vertex index"),
+                                  sharpness(k / 2, ints.size() / 2)});
             tags.edge_line.push_back(r.line_number());
         }
         return true;
@@ -61,7 +63,7 @@ bool read_tag(io_detail::LineReader& r, std::string_view name, CreaseTags& tags)
     if (name == "corner") {
         if (ints.empty()) r.fail("tag 'corner': needs at least one vertex index");
         for (size_t k = 0; k < ints.size(); ++k) {
-            tags.vertices.push_back({static_cast<int>(ints[k]), sharpness(k, ints.size())});
+            tags.vertices.push_back({r.index(ints[k], "tag vertex index"), sharpness(k, ints.size())});
             tags.vertex_line.push_back(r.line_number());
         }
         return true;
@@ -126,6 +128,9 @@ PolyMesh read_obj(std::istream& in, const std::string& name) {
                 const long idx = r.integer(t.substr(0, t.find('/')), "vertex index");
                 const long nv = static_cast<long>(mesh.positions.size());
                 if (idx == 0) r.fail("vertex index 0: OBJ indices start at 1");
+                if (idx > std::numeric_limits<int>::max())
+                    r.fail("vertex index " + std::to_string(idx) + " is out of range: 32-bit indices address at most " +
+                           std::to_string(std::numeric_limits<int>::max()) + " vertices");
                 const long v = idx > 0 ? idx - 1 : nv + idx;  // negative: relative to the last vertex
                 if (v < 0) r.fail("relative vertex index " + std::to_string(idx) + " points before the first vertex");
                 corners.push_back(static_cast<int>(v));
@@ -157,7 +162,7 @@ PolyMesh read_obj(std::istream& in, const std::string& name) {
     for (int f = 0; f < mesh.num_faces(); ++f)
         for (int k = 0; k < mesh.face_size(f); ++k)
             if (mesh.face(f)[k] >= nv)
-                r.fail_at(mesh.source.face_line[f], "vertex index " + std::to_string(mesh.face(f)[k] + 1) +
+                r.fail_at(mesh.source.face_line[f], "vertex index " + std::to_string(mesh.face(f)[k] + 1L) +
                                                         " out of range: the file has " + std::to_string(nv) +
                                                         " vertices");
     check_tag_indices(r, mesh);

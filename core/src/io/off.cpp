@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -22,11 +23,14 @@ PolyMesh read_off(std::istream& in, const std::string& name) {
     const bool coff = header == "COFF";
     if (header != "OFF" && !coff) r.fail("expected 'OFF' or 'COFF' header, got '" + std::string(header) + "'");
     if (r.at_end_of_line()) next_content_line("vertex, face and edge counts");
-    const long nv = r.integer("vertex count"), nf = r.integer("face count");
-    if (nv < 0 || nf < 0) r.fail("negative element count");
-
-    mesh.positions.reserve(static_cast<size_t>(nv));
-    for (long v = 0; v < nv; ++v) {
+    const int nv = r.index(r.integer("vertex count"), "vertex count");
+    const int nf = r.index(r.integer("face count"), "face count");
+    // The header's counts are claims until the lines are read: reserve no more than a
+    // modest start, so a header announcing 2^31 vertices fails at its missing line, not in
+    // an allocation.
+    constexpr int kTrustedReserve = 1 << 20;
+    mesh.positions.reserve(static_cast<size_t>(std::min(nv, kTrustedReserve)));
+    for (int v = 0; v < nv; ++v) {
         next_content_line("a vertex");
         Vec3 p;
         p.x() = r.real("x coordinate");
@@ -43,7 +47,7 @@ PolyMesh read_off(std::istream& in, const std::string& name) {
         }
     }
     std::vector<int> corners;
-    for (long f = 0; f < nf; ++f) {
+    for (int f = 0; f < nf; ++f) {
         next_content_line("a face");
         const long n = r.integer("corner count");
         if (n < 3) r.fail("a face needs at least 3 vertices, got " + std::to_string(n));
