@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 #include <sstream>
 
@@ -34,6 +35,23 @@ void expect_points(const std::vector<Vec3>& got, const std::vector<Vec3>& want, 
 TEST(Bezier, CasteljauStepIsTheSeedsEvaluateStep) {
     expect_points(casteljau_step(std::vector<Vec3>{v(0, 0), v(1, 0), v(1, 1)}, 0.5), {v(0.5, 0), v(1, 0.5)});
     EXPECT_TRUE(casteljau_step(std::vector<Vec3>{v(1, 1)}, 0.3).empty());
+}
+
+TEST(Bezier, PointsThatOverflowAreRefusedNamingTheLevelAndPoint) {
+    // (1 - t) a + t b with a = -M, b = M at t = 2 is 3M: not a double. At t = 1/2 it is 0.
+    const double M = std::numeric_limits<double>::max();
+    const std::vector<Vec3> c{Vec3(-M, 0, 0), Vec3(M, 0, 0)};
+    try {
+        casteljau_levels(c, 2.0);
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("de Casteljau level 1, point 0 is not finite"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(casteljau_levels(c, 0.5).back()[0], Vec3(0, 0, 0));
+    // The B-spline basis change sums 1/6, 4/6, 1/6 of neighbours: at 1e308 that overflows.
+    const std::vector<Vec3> bsp{Vec3(1e308, 0, 0), Vec3(1.5e308, 0, 0), Vec3(1.7e308, 0, 0), Vec3(1.7e308, 1, 0)};
+    EXPECT_THROW(bspline_chain(bsp), InputError);
+    EXPECT_NO_THROW(bspline_chain(std::vector<Vec3>{bsp[0] * 1e-2, bsp[1] * 1e-2, bsp[2] * 1e-2, bsp[3] * 1e-2}));
 }
 
 TEST(Bezier, EveryLevelOfACubicAtOneHalf) {

@@ -2,11 +2,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include "crossdiv/error.h"
 #include "crossdiv/subdiv/limit.h"
 #include "crossdiv/subdiv/loop.h"
+#include "crossdiv/subdiv/loop_split_flip.h"
 
 namespace crossdiv {
 namespace {
@@ -256,6 +258,28 @@ TEST(Loop, RejectsNonFiniteCoordinates) {
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("vertex 2"), std::string::npos) << e.what();
     }
+}
+
+TEST(Loop, AFiniteInputWhoseMasksOverflowIsRefusedNamingTheVertex) {
+    // The octahedron's vertices (1,0,0), (0,1,0), ... scaled to DBL_MAX, then the top
+    // pole moved to (M, M, M): the even point of (M, 0, 0) sums neighbours whose x reach 2M.
+    const double M = std::numeric_limits<double>::max();
+    TriMesh m = octahedron();
+    for (Vec3& p : m.positions) p *= M;
+    m.positions[4] = Vec3(M, M, M);
+    for (auto driver : {+[](const TriMesh& t) { return loop_subdivide(t, {LoopWeights::Loop, LoopBoundary::EdgeOnly}, 1); },
+                        +[](const TriMesh& t) { return loop_by_split_and_flip(t, {LoopWeights::Loop, LoopBoundary::EdgeOnly}); }}) {
+        try {
+            driver(m);
+            ADD_FAILURE() << "no error";
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("level 1, vertex "), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("is not finite"), std::string::npos) << e.what();
+        }
+    }
+    // A quarter of that size, the same mesh refines to finite positions.
+    for (Vec3& p : m.positions) p *= 0.25;
+    for (const Vec3& p : loop_subdivide(m, {LoopWeights::Loop, LoopBoundary::EdgeOnly}, 2).positions) EXPECT_TRUE(p.allFinite());
 }
 
 }  // namespace

@@ -66,6 +66,24 @@ TEST(BezierPatch, FlatGridIsTheParameterPlane) {
     EXPECT_EQ(src, NormalSource::Derivatives);
 }
 
+TEST(BezierPatch, AModelLargerThanDoubleCanMeasureIsRefusedNotWeldedIntoOneVertex) {
+    // The flat grid stretched to +-1e308: every position is finite, but the bounding box's
+    // diagonal (about 2.8e308) is not, and a weld tolerance derived from it would join every
+    // vertex. Scaled to 1e307 it tessellates and welds as the unit grid does.
+    BezierPatch p = grid_patch([](int, int) { return 0.0; });
+    for (Vec3& c : p.control) c = (c - Vec3(0.5, 0.5, 0)) * 2.0 * 1e308;
+    try {
+        tessellate_patches(std::vector<BezierPatch>{p}, 4);
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("larger than double can measure"), std::string::npos) << e.what();
+    }
+    for (Vec3& c : p.control) c *= 0.05;
+    const SurfaceMesh s = tessellate_patches(std::vector<BezierPatch>{p}, 4);
+    EXPECT_EQ(s.mesh.num_vertices(), 25);
+    EXPECT_EQ(s.mesh.num_faces(), 32);
+}
+
 TEST(BezierPatch, BumpHeightIsTheProductOfBernsteinValues) {
     // z = 1 at control point (1, 1) only: z(u, v) = B_1(u) B_1(v), B_1(t) = 3 t (1 - t)^2.
     const BezierPatch p = grid_patch([](int r, int c) { return r == 1 && c == 1 ? 1.0 : 0.0; });

@@ -103,7 +103,12 @@ int run_patch(const PatchArgs& a) {
     } else {
         patches = read_bez(a.input);
     }
-    const SurfaceMesh s = tessellate_patches(patches, a.res);
+    SurfaceMesh s;
+    try {
+        s = tessellate_patches(patches, a.res);
+    } catch (const InputError& e) {
+        throw InputError(a.input + ": " + e.what());
+    }
     const int boundary = boundary_edge_count(s.mesh);
     fmt::print("{}: {} patches, {} vertices, {} triangles ({} collapsed at degenerate patch edges), {}\n", a.input, patches.size(),
                s.mesh.num_vertices(), s.mesh.num_faces(), s.collapsed_triangles,

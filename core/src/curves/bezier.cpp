@@ -48,7 +48,14 @@ std::vector<std::vector<Vec3>> casteljau_levels(std::span<const Vec3> control, d
     std::vector<std::vector<Vec3>> levels;
     levels.reserve(control.size());
     levels.emplace_back(control.begin(), control.end());
-    while (levels.back().size() > 1) levels.push_back(casteljau_step(levels.back(), t));
+    while (levels.back().size() > 1) {
+        levels.push_back(casteljau_step(levels.back(), t));
+        for (size_t i = 0; i < levels.back().size(); ++i)
+            if (!levels.back()[i].allFinite())
+                throw InputError("de Casteljau level " + std::to_string(levels.size() - 1) + ", point " + std::to_string(i) +
+                                 " is not finite at t = " + std::to_string(t) +
+                                 ": the control points overflow double in (1 - t) a + t b, so scale the curve down");
+    }
     return levels;
 }
 

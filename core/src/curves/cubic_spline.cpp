@@ -105,6 +105,13 @@ BezierChain sliding_window(std::span<const Vec3> control, CubicBasis basis, bool
         // Closed curves read the window cyclically, so segment k still runs from p_{k+1}.
         const std::array<Vec3, 4> window{control[k % n], control[(k + 1) % n], control[(k + 2) % n], control[(k + 3) % n]};
         const std::array<Vec3, 4> b = to_bezier(basis, window);
+        // The basis change sums control points (B-spline: 1/6, 4/6, 1/6; Catmull-Rom: with
+        // negative weights), which overflows for points near DBL_MAX.
+        for (int i = 0; i < 4; ++i)
+            if (!b[i].allFinite())
+                throw InputError("segment " + std::to_string(k) + ": Bezier control point " + std::to_string(i) +
+                                 " of the basis change is not finite; the control points overflow double in its "
+                                 "sums, so scale the curve down");
         c.points.insert(c.points.end(), b.begin(), b.end());
     }
     return c;

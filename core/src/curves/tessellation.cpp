@@ -38,6 +38,12 @@ std::vector<Vec3> curve_normals(std::span<const Vec3> positions, std::span<const
 
 namespace {
 
+double max_magnitude(std::span<const Vec3> points) {
+    double m = 0;
+    for (const Vec3& p : points) m = std::max(m, p.cwiseAbs().maxCoeff());
+    return m;
+}
+
 void require_segments(const BezierChain& chain) {
     if (chain.num_segments() == 0) throw InputError("the curve has no segments to tessellate");
 }
@@ -48,11 +54,20 @@ void emit(Polyline& out, const BezierPointTangent& pt, double u) {
     out.params.push_back(u);
 }
 
-/// Closes a polyline: the end of the last segment, then the normals.
+/// Closes a polyline: the end of the last segment, then the normals. A finite control
+/// polygon can still overflow in the Bernstein sums and the derivative's differences (points
+/// near DBL_MAX): refused, naming the sample, rather than written as NaN or inf.
 void finish(const BezierChain& chain, Polyline& out) {
     const int last = chain.num_segments() - 1;
     emit(out, bezier_point_tangent(chain.segment(last), 1.0), static_cast<double>(last + 1));
     out.normals = curve_normals(out.positions, out.tangents);
+    for (int i = 0; i < out.size(); ++i)
+        if (!out.positions[i].allFinite() || !out.tangents[i].allFinite() || !out.normals[i].allFinite())
+            throw InputError("sample " + std::to_string(i) + " at u = " + std::to_string(out.params[i]) +
+                             " (segment " + std::to_string(std::min(static_cast<int>(out.params[i]), last)) +
+                             "): its position, tangent or normal is not finite; the control points (up to " +
+                             std::to_string(chain.points.empty() ? 0.0 : max_magnitude(chain.points)) +
+                             " in magnitude) overflow double in the curve's sums, so scale the curve down");
 }
 
 /// Unit tangent at the start of a piece: the first control point that differs from c_0

@@ -45,7 +45,9 @@ double bounding_box_diagonal(const std::vector<Vec3>& positions) {
         lo = lo.cwiseMin(p);
         hi = hi.cwiseMax(p);
     }
-    return (hi - lo).norm();
+    // Halves and a scaled norm: the extent of coordinates near DBL_MAX does not overflow;
+    // the result is inf only when the diagonal itself exceeds the range of double.
+    return 2.0 * (0.5 * hi - 0.5 * lo).stableNorm();
 }
 
 }  // namespace crossdiv

@@ -7,6 +7,7 @@
 #include "crossdiv/error.h"
 #include "crossdiv/mesh/poly_connectivity.h"
 #include "crossdiv/subdiv/refinement.h"
+#include "finite_level.h"
 
 namespace crossdiv::detail {
 
@@ -18,7 +19,9 @@ PolyMesh refine_levels(const PolyMesh& mesh, int levels, const Step& step) {
     PolyMesh current = mesh;
     for (int l = 0; l < levels; ++l) {
         const PolyConnectivity conn = build_poly_connectivity(current);
-        current = apply_step(step(current, conn, l), current);
+        PolyMesh next = apply_step(step(current, conn, l), current);
+        require_finite_level(next.positions, current.positions, l + 1);
+        current = std::move(next);
     }
     if (levels == 0) build_poly_connectivity(current);  // the same checks as a refinement
     current.source = {};

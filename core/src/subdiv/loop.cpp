@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "crossdiv/error.h"
+#include "finite_level.h"
 #include "stencil_sum.h"
 
 namespace crossdiv {
@@ -203,6 +204,7 @@ void LoopRefiner::refine(int levels) {
         const Level& coarse = levels_.back();
         Level fine{loop_refine_once(coarse.mesh, coarse.conn, options_),
                    refine_tri_connectivity(coarse.mesh, coarse.conn)};
+        detail::require_finite_level(fine.mesh.positions, coarse.mesh.positions, static_cast<int>(levels_.size()));
         levels_.push_back(std::move(fine));
     }
 }
@@ -222,6 +224,7 @@ TriMesh loop_subdivide(const TriMesh& mesh, const LoopOptions& options, int leve
     TriConnectivity conn = loop_input_connectivity(current);
     for (int l = 0; l < levels; ++l) {
         TriMesh next = loop_refine_once(current, conn, options);
+        detail::require_finite_level(next.positions, current.positions, l + 1);
         if (l + 1 < levels) conn = refine_tri_connectivity(current, conn);
         current = std::move(next);
     }

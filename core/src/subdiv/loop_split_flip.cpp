@@ -6,6 +6,7 @@
 #include "crossdiv/error.h"
 #include "crossdiv/mesh/halfedge_mesh.h"
 #include "crossdiv/subdiv/loop.h"
+#include "finite_level.h"
 #include "stencil_sum.h"
 
 namespace crossdiv {
@@ -82,6 +83,7 @@ TriMesh loop_by_split_and_flip(const TriMesh& mesh, const LoopOptions& options) 
 
     TriMesh out;
     out.positions = loop_points(he, mesh.positions, options);
+    detail::require_finite_level(out.positions, mesh.positions, 1);
     if (!mesh.colors.empty()) out.colors = loop_points(he, mesh.colors, options);
 
     // Split every old edge. split() numbers its new edges: the other half of the old edge

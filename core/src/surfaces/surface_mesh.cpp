@@ -5,6 +5,9 @@
 #include <cmath>
 #include <cstdint>
 #include <numeric>
+#include <string>
+
+#include "crossdiv/error.h"
 
 namespace crossdiv {
 
@@ -58,7 +61,17 @@ std::vector<int> weld_classes(std::span<const Vec3> points, double tol) {
 
 double weld(SurfaceMesh& s, double tol) {
     TriMesh& m = s.mesh;
+    // Every builder welds last: the one place to refuse a surface whose evaluation overflowed
+    // (control points near DBL_MAX), before a NaN is written or an infinite tolerance welds
+    // the whole model into one vertex.
+    for (int v = 0; v < m.num_vertices(); ++v)
+        if (!m.positions[v].allFinite())
+            throw InputError("surface vertex " + std::to_string(v) + " is not finite: the model's coordinates overflow "
+                             "double in the surface's sums, so scale it down");
     if (tol < 0) tol = kWeldRelative * bounding_box_diagonal(m.positions);
+    if (!std::isfinite(tol))
+        throw InputError("the surface's bounding box is larger than double can measure (its diagonal overflows): "
+                         "scale the model down");
     const std::vector<int> cls = weld_classes(m.positions, tol);
     const int n = m.num_vertices();
     std::vector<int> new_index(n, -1);

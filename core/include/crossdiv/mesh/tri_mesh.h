@@ -33,7 +33,8 @@ TriMesh to_tri_mesh(const PolyMesh& mesh, const char* scheme = "this operation")
 PolyMesh to_poly_mesh(const TriMesh& mesh);
 
 /// Length of the diagonal of the axis-aligned bounding box (0 for an empty mesh). Scales
-/// every relative tolerance in the project.
+/// every relative tolerance in the project. Computed without overflow: inf only when the
+/// diagonal itself exceeds the range of double.
 double bounding_box_diagonal(const std::vector<Vec3>& positions);
 
 }  // namespace crossdiv
