@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "command.h"
+#include "crossdiv/verification/harness/json_text.h"
 #include "crossdiv/verification/bench/bench.h"
 #include "curve_commands.h"
 #include "suite_commands.h"
@@ -60,7 +61,7 @@ int run_bench_command(const std::string& json_path, const std::string& out_dir, 
     for (const std::string& path : paths) {
         const std::filesystem::path p(path);
         if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
-        std::ofstream(path) << doc.dump(1) << "\n";
+        std::ofstream(path) << verification::json_text(doc, 1) << "\n";
         fmt::print("bench results: {}\n", path);
     }
     if (!out_dir.empty() && std::filesystem::exists(std::filesystem::path(out_dir) / "results.json"))

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "crossdiv/verification/harness/json_text.h"
 #include "crossdiv/curves/bezier.h"
 #include "crossdiv/datasets/bundled_curves.h"
 #include "crossdiv/io/curve_io.h"
@@ -161,7 +162,7 @@ int run_tessellate(const TessellateArgs& a) {
             }
             doc["curves"].push_back(c);
         }
-        out << doc.dump(1) << "\n";
+        out << verification::json_text(doc, 1) << "\n";
     }
     fmt::print("wrote {}\n", a.out);
     return 0;
@@ -199,7 +200,7 @@ int run_casteljau(const CasteljauArgs& a) {
     if (!a.json.empty()) {
         std::ofstream out(a.json);
         if (!out) throw InputError(a.json + ": cannot write");
-        out << nlohmann::json{{"t", a.t}, {"levels", jl}}.dump(1) << "\n";
+        out << verification::json_text(nlohmann::json{{"t", a.t}, {"levels", jl}}, 1) << "\n";
     }
     return 0;
 }

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "command.h"
+#include "crossdiv/verification/harness/json_text.h"
 #include "crossdiv/error.h"
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/mesh/halfedge_mesh.h"
@@ -144,7 +145,7 @@ int run_normals(const NormalsArgs& a) {
         }
         std::ofstream out(a.json);
         if (!out) throw InputError(a.json + ": cannot write");
-        out << j.dump(1) << "\n";
+        out << verification::json_text(j, 1) << "\n";
     }
     return 0;
 }

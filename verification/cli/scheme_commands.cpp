@@ -9,6 +9,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "crossdiv/verification/harness/json_text.h"
 #include "crossdiv/error.h"
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/verification/properties/butterfly_properties.h"
@@ -59,7 +60,7 @@ void write_json(const std::string& path, const nlohmann::json& j) {
     if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
     std::ofstream out(path);
     if (!out) throw InputError(path + ": cannot write");
-    out << j.dump(2) << "\n";
+    out << verification::json_text(j, 2) << "\n";
     fmt::print("results written to {}\n", path);
 }
 

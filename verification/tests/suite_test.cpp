@@ -14,6 +14,7 @@
 #include "crossdiv/verification/bench/bench.h"
 #include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/verification/comparisons/shrink.h"
+#include "crossdiv/verification/harness/json_text.h"
 #include "crossdiv/verification/suite/manifest.h"
 #include "crossdiv/verification/suite/outputs.h"
 #include "crossdiv/verification/suite/runner.h"
@@ -139,6 +140,36 @@ TEST(Suite, RunsInWorkersAndRecordsEachOutcome) {
     ASSERT_TRUE(om.detail.contains("error_field"));
     EXPECT_TRUE(fs::exists(d / om.detail["error_field"].get<std::string>()));
     EXPECT_EQ(recs[1].detail["worst_vertex"]["valence"], 2);
+}
+
+TEST(JsonText, BytesThatAreNotUtf8AreShownAsEscapesAndNeverFatal) {
+    EXPECT_EQ(valid_utf8("plain"), "plain");
+    EXPECT_EQ(valid_utf8("caf\xC3\xA9"), "caf\xC3\xA9");                 // U+00E9, well formed
+    EXPECT_EQ(valid_utf8("a\xFE" "b"), "a\\xFEb");                         // never a UTF-8 byte
+    EXPECT_EQ(valid_utf8("\xC0\x80"), "\\xC0\\x80");                     // overlong NUL
+    EXPECT_EQ(valid_utf8("\xED\xA0\x80"), "\\xED\\xA0\\x80");         // a surrogate
+    EXPECT_EQ(valid_utf8("x\xE2\x82"), "x\\xE2\\x82");                   // cut short
+    EXPECT_EQ(valid_utf8("\xF4\x90\x80\x80"), "\\xF4\\x90\\x80\\x80");  // above U+10FFFF
+    const nlohmann::json j = {{"name\xFF", "bad\xFE.obj"}, {"list", {"ok", "\x80"}}};
+    const nlohmann::json back = nlohmann::json::parse(json_text(j));
+    EXPECT_EQ(back["name\\xFF"], "bad\\xFE.obj");
+    EXPECT_EQ(back["list"][1], "\\x80");
+}
+
+TEST(Suite, AnInputNamedWithBytesThatAreNotUtf8IsRecordedAndEveryOutputWritten) {
+    const fs::path d = temp_dir("utf8");
+    const std::string bad_name = (d / "mesh\xFE.obj").string();
+    write(bad_name, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\xFF\n");
+    const Manifest m = read_manifest(write(d / "u.suite", "suite u\ncase " + bad_name + " loop\ncase bundled:tetrahedron loop\n"));
+    const std::vector<SuiteJob> jobs = expand_jobs(m);
+    const std::vector<CaseRecord> recs = run_jobs(jobs, 2, d.string(), [](int, int, const CaseRecord&) {});
+    ASSERT_EQ(recs.size(), 2u);
+    EXPECT_NE(recs[0].core_error.find("is not an integer"), std::string::npos) << recs[0].core_error;
+    write_suite_outputs((d / "out").string(), {{"tool", "crossdiv suite"}, {"suite", "u"}}, recs);
+    const auto results = nlohmann::json::parse(read(d / "out" / "results.json"));
+    EXPECT_EQ(results["cases"][0]["input"], valid_utf8(bad_name));
+    EXPECT_NE(read(d / "out" / "junit.xml").find("mesh\\xFE.obj"), std::string::npos);
+    EXPECT_NE(read(d / "out" / "results.csv").find("mesh\\xFE.obj"), std::string::npos);
 }
 
 TEST(Suite, ShardsMergeIntoTheSameResultsAsOneRun) {

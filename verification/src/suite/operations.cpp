@@ -9,6 +9,7 @@
 #include "crossdiv/verification/implementations/program_implementation.h"
 #include "crossdiv/verification/properties/curve_checks.h"
 #include "crossdiv/verification/properties/surface_checks.h"
+#include "crossdiv/verification/harness/json_text.h"
 #include "suite/studies.h"
 
 namespace crossdiv::verification {
@@ -35,7 +36,7 @@ void write_error_fields(const LoopComparison& c, const SuiteJob& job, const std:
         fs::create_directories(fs::path(out_dir) / "fields");
         std::ofstream out(fs::path(out_dir) / name);
         if (!out) throw InputError((fs::path(out_dir) / name).string() + ": cannot write");
-        out << json{{"level", field->level}, {"positions", positions}, {"faces", faces}, {"distance", distance}}.dump();
+        out << json_text(json{{"level", field->level}, {"positions", positions}, {"faces", faces}, {"distance", distance}});
         rec.runs[i].detail["error_field"] = name;
     }
 }

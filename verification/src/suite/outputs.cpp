@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "crossdiv/error.h"
+#include "crossdiv/verification/harness/json_text.h"
 
 namespace crossdiv::verification {
 namespace {
@@ -13,22 +14,32 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-std::string csv_field(const std::string& s) {
+std::string csv_field(const std::string& text) {
+    const std::string s = valid_utf8(text);
     if (s.find_first_of(",\"\n") == std::string::npos) return s;
     std::string q = "\"";
     for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
     return q + "\"";
 }
 
-std::string xml_escape(const std::string& s) {
+/// Text for an XML attribute or element: valid UTF-8, the markup characters as entities, and
+/// the control characters XML 1.0 forbids shown as \xHH.
+std::string xml_escape(const std::string& text) {
     std::string out;
-    for (char c : s) {
+    for (char c : valid_utf8(text)) {
         switch (c) {
             case '&': out += "&amp;"; break;
             case '<': out += "&lt;"; break;
             case '>': out += "&gt;"; break;
             case '"': out += "&quot;"; break;
-            default: out += c;
+            default:
+                if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') {
+                    char escaped[5];
+                    std::snprintf(escaped, sizeof escaped, "\\x%02X", static_cast<unsigned char>(c));
+                    out += escaped;
+                } else {
+                    out += c;
+                }
         }
     }
     return out;
@@ -138,7 +149,7 @@ SuiteSummary write_suite_outputs(const std::string& dir, const json& header, con
     json records = json::array();
     for (const CaseRecord& c : cases) records.push_back(to_json(c));
     results["cases"] = std::move(records);
-    write_file(fs::path(dir) / "results.json", results.dump(1) + "\n");
+    write_file(fs::path(dir) / "results.json", json_text(results, 1) + "\n");
     write_file(fs::path(dir) / "results.csv", csv(cases));
     write_file(fs::path(dir) / "junit.xml", junit(header.value("suite", "suite"), cases, summary));
     return summary;

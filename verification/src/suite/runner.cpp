@@ -13,6 +13,7 @@
 
 #include "crossdiv/error.h"
 #include "crossdiv/verification/suite/operations.h"
+#include "crossdiv/verification/harness/json_text.h"
 
 namespace crossdiv::verification {
 namespace {
@@ -75,7 +76,7 @@ std::vector<CaseRecord> run_jobs(const std::vector<SuiteJob>& jobs, int workers,
             close(pipe_fd[0]);
             std::ofstream part(parts.back());
             for (size_t i = w; i < jobs.size(); i += workers) {
-                part << to_json(run_job(jobs[i], out_dir)).dump() << "\n" << std::flush;
+                part << json_text(to_json(run_job(jobs[i], out_dir))) << "\n" << std::flush;
                 const std::string msg = std::to_string(i) + "\n";
                 if (write(pipe_fd[1], msg.data(), msg.size()) < 0) _exit(1);
             }
