@@ -337,6 +337,14 @@ TEST(CurveIo, SwpErrorsNameFileAndLine) {
     EXPECT_EQ(swp_error("circ a 10 1\n\nsrev s 10 b\n"), "bad.swp:3: undefined curve 'b' (curves must be defined before use)");
     EXPECT_EQ(swp_error("circ a 10 1\ncirc a 10 2\n"), "bad.swp:2: curve 'a' is already defined on line 1");
     EXPECT_EQ(swp_error("circ a 0 1\n"), "bad.swp:1: STEPS must be at least 1, got 0");
+    // STEPS beyond the documented limit, or beyond 32 and 64 bits, with the file's text (an
+    // int cast made 4294967296 into 0 and 2147483680 into a negative count).
+    EXPECT_EQ(swp_error("circ a 4294967296 1\n"), "bad.swp:1: STEPS 4294967296 is out of range: at most 1000000");
+    EXPECT_EQ(swp_error("\nbsp2 a 2147483680 4 [0 0] [1 0] [1 1] [0 1]\n"),
+              "bad.swp:2: STEPS 2147483680 is out of range: at most 1000000");
+    EXPECT_EQ(swp_error("circ a 99999999999999999999 1\n"),
+              "bad.swp:1: STEPS 99999999999999999999 is out of range: at most 1000000");
+    EXPECT_EQ(swp_error("circ a 1000001 1\n"), "bad.swp:1: STEPS 1000001 is out of range: at most 1000000");
     EXPECT_EQ(swp_error("bez3 . 20 4\n[0 0 0] [1 0 0] [1 1 0]\n"),
               "bad.swp:2: unexpected end of file: expected '[' opening point 4 of 4");
 }

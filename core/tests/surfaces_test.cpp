@@ -272,6 +272,29 @@ TEST(GeneralizedCylinder, ScaleCurveSizesTheProfile) {
     for (int i = 1; i + 1 < g.rings; ++i) EXPECT_NEAR(g.normals[i * g.ring_size].x(), -1 / std::sqrt(10.0), 1e-12) << "ring " << i;
 }
 
+TEST(Sweep, ASurfaceBeyondTheFaceLimitIsRefusedBeforeItIsBuilt) {
+    // 300 x 300 steps: 2 x 300 x 300 = 180,000 triangles (profile and sweep closed, 301
+    // samples each). Refused under a limit of 179,999, built under 180,000.
+    std::istringstream in("circ profile 300 0.5\ncirc sweep 300 2\n\ngcyl tube profile sweep\n");
+    const CurveFile f = read_swp(in, "tube.swp");
+    SweepOptions o;
+    o.max_triangles = 179'999;
+    try {
+        build_sweep(f, 0, o);
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("would have 180000 triangles, more than the limit of 179999"),
+                  std::string::npos)
+            << e.what();
+    }
+    o.max_triangles = 180'000;
+    EXPECT_EQ(build_sweep(f, 0, o).surface.mesh.num_faces(), 180'000);
+    // Patches: 2 res^2 triangles each, counted before any is evaluated.
+    const std::vector<BezierPatch> one{grid_patch([](int, int) { return 0.0; })};
+    EXPECT_THROW(tessellate_patches(one, 8, 127), InputError);
+    EXPECT_EQ(tessellate_patches(one, 8, 128).mesh.num_faces(), 128);
+}
+
 TEST(GeneralizedCylinder, NegativeScaleIsRefusedWithTheRecordLine) {
     std::istringstream in(
         "circ profile 8 1\nbez3 sweep 3 4 [0 0 0] [1 0 0] [2 0 0] [3 0 0]\nbez2 size 3 4 [0 1] [1 0] [2 -1] [3 -2]\n\n"

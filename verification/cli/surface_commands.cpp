@@ -25,12 +25,18 @@ void SweepArgs::add_to(CLI::App& app) {
         ->capture_default_str();
     app.add_flag("--adaptive", adaptive, "Distance-adaptive curves (and srev slices) instead of each record's STEPS");
     app.add_option("--tol", tol, "Adaptive: the largest distance from the exact surface (absolute)");
+    app.add_option("--max-faces", max_faces, "Refuse a surface of more triangles than this, before building it")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
 }
 
 void PatchArgs::add_to(CLI::App& app) {
     app.add_option("input", input, "BEZ file, or surface:NAME (a bundled BEZ model)")->required();
     app.add_option("-o,--out", out, "Output OBJ (v, vn, f a//a)")->required();
     app.add_option("--res", res, "Quads per patch side")->check(CLI::Range(1, 1024))->capture_default_str();
+    app.add_option("--max-faces", max_faces, "Refuse a tessellation of more triangles than this, before making it")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
 }
 
 namespace {
@@ -78,6 +84,7 @@ int run_sweep(const SweepArgs& a) {
     o.frames = a.frames == "rmf" ? FrameMethod::DoubleReflection : FrameMethod::Recursive;
     o.adaptive = a.adaptive;
     o.tol = a.tol;
+    o.max_triangles = a.max_faces;
     SurfaceMesh all;
     for (int k = 0; k < static_cast<int>(file.sweeps.size()); ++k) {
         const SweepSurface s = build_sweep(file, k, o);
@@ -105,7 +112,7 @@ int run_patch(const PatchArgs& a) {
     }
     SurfaceMesh s;
     try {
-        s = tessellate_patches(patches, a.res);
+        s = tessellate_patches(patches, a.res, a.max_faces);
     } catch (const InputError& e) {
         throw InputError(a.input + ": " + e.what());
     }

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "crossdiv/surfaces/surface_mesh.h"
 #include "crossdiv/verification/suite/case_record.h"
 
 namespace crossdiv::cli {
@@ -14,6 +15,7 @@ struct SweepArgs {
     std::string input, out, frames = "recursive";
     bool adaptive = false;
     double tol = 0;
+    long long max_faces = kDefaultMaxSurfaceTriangles;
     void add_to(CLI::App& app);
 };
 /// Builds every srev and gcyl record of the file into one OBJ with normals; prints per
@@ -23,6 +25,7 @@ int run_sweep(const SweepArgs& a);
 struct PatchArgs {
     std::string input, out;
     int res = 8;
+    long long max_faces = kDefaultMaxSurfaceTriangles;
     void add_to(CLI::App& app);
 };
 /// Tessellates a BEZ file (res x res quads per patch, welded) into an OBJ with normals.

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "crossdiv/curves/tessellation.h"
 #include "crossdiv/error.h"
 
 namespace crossdiv {
@@ -38,6 +39,9 @@ ChainJet Primitive::jet(double s) const {
 
 Polyline sample_primitive(const Primitive& p, int steps) {
     if (steps < 1) throw InputError(std::string(to_string(p.kind)) + ": at least 1 step needed, got " + std::to_string(steps));
+    if (steps >= kMaxCurveSamples)
+        throw InputError(std::string(to_string(p.kind)) + ": " + std::to_string(steps) + " steps, more samples than the limit of " +
+                         std::to_string(kMaxCurveSamples));
     Polyline out;
     const double end = p.param_end();
     for (int i = 0; i <= steps; ++i) {

@@ -234,11 +234,15 @@ Polyline tessellate_uniform(const BezierChain& chain, std::span<const int> inter
         throw InputError("uniform tessellation: " + std::to_string(intervals.size()) + " interval counts for " +
                          std::to_string(chain.num_segments()) + " segments");
     Polyline out;
-    size_t total = 1;
+    long long total = 1;
     for (int n : intervals) total += std::max(n, 0);
-    out.positions.reserve(total);
-    out.tangents.reserve(total);
-    out.params.reserve(total);
+    if (total > kMaxCurveSamples)
+        throw InputError("uniform tessellation would make " + std::to_string(total) + " samples (" +
+                         std::to_string(intervals.size()) + " segments), more than the limit of " +
+                         std::to_string(kMaxCurveSamples) + "; use fewer steps");
+    out.positions.reserve(static_cast<size_t>(total));
+    out.tangents.reserve(static_cast<size_t>(total));
+    out.params.reserve(static_cast<size_t>(total));
     for (int k = 0; k < chain.num_segments(); ++k) {
         const int n = intervals[k];
         if (n < 1) throw InputError("segment " + std::to_string(k) + ": at least 1 interval needed, got " + std::to_string(n));

@@ -3,6 +3,7 @@
 // "[ 3 0 ]" read the same; '#' starts a comment. The parser's errors carry file:line.
 
 #include <charconv>
+#include <limits>
 #include <cmath>
 #include <istream>
 #include <string>
@@ -69,13 +70,17 @@ public:
         if (!std::isfinite(x)) fail_at(tok.line, std::string(what) + " is " + tok.text + "; numbers must be finite");
         return x;
     }
-    long integer(const char* what, long min) {
+    /// An integer in [min, max], else a failure at its line naming the file's text.
+    long integer(const char* what, long min, long max = std::numeric_limits<int>::max()) {
         const Token& tok = next(what);
         long x = 0;
         auto [p, ec] = std::from_chars(tok.text.data(), tok.text.data() + tok.text.size(), x);
-        if (ec != std::errc() || p != tok.text.data() + tok.text.size())
-            fail_at(tok.line, "'" + tok.text + "' is not an integer (" + what + ")");
+        const bool whole = p == tok.text.data() + tok.text.size();
+        if (ec == std::errc::result_out_of_range && whole)
+            fail_at(tok.line, std::string(what) + " " + tok.text + " is out of range: at most " + std::to_string(max));
+        if (ec != std::errc() || !whole) fail_at(tok.line, "'" + tok.text + "' is not an integer (" + what + ")");
         if (x < min) fail_at(tok.line, std::string(what) + " must be at least " + std::to_string(min) + ", got " + tok.text);
+        if (x > max) fail_at(tok.line, std::string(what) + " " + tok.text + " is out of range: at most " + std::to_string(max));
         return x;
     }
     /// One bracketed point with `dim` coordinates.

@@ -66,7 +66,7 @@ CurveFile read_swp(std::istream& in, const std::string& name) {
             r.type = spline->type;
             r.dim = spline->dim;
             r.name = p.word("a curve name");
-            r.steps = static_cast<int>(p.integer("STEPS", 1));
+            r.steps = static_cast<int>(p.integer("STEPS", 1, kMaxSteps));
             const long n = p.integer("the point count", 1);
             for (long i = 0; i < n; ++i) r.control.push_back(p.point(r.dim, static_cast<int>(i), n));
             try {
@@ -78,7 +78,7 @@ CurveFile read_swp(std::istream& in, const std::string& name) {
             r.type = CurveType::Primitive;
             r.dim = head.text == "circ" ? 2 : 3;
             r.name = p.word("a curve name");
-            r.steps = static_cast<int>(p.integer("STEPS", 1));
+            r.steps = static_cast<int>(p.integer("STEPS", 1, kMaxSteps));
             Primitive& prim = r.primitive;
             if (head.text == "circ") {
                 prim.kind = PrimitiveKind::Circle;
@@ -100,7 +100,7 @@ CurveFile read_swp(std::istream& in, const std::string& name) {
             s.name = p.word("a surface name");
             if (head.text == "srev") {
                 s.kind = SweepRecord::Kind::Revolution;
-                s.steps = static_cast<int>(p.integer("STEPS", 1));
+                s.steps = static_cast<int>(p.integer("STEPS", 1, kMaxSteps));
                 s.profile = p.word("the profile curve name");
                 s.profile_index = lookup(s.profile, s.line);
             } else {

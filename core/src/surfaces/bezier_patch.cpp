@@ -125,8 +125,11 @@ Vec3 patch_normal(const BezierPatch& p, double u, double v, NormalSource* source
     return normal_from_jet(p, j, u, v, kPatchDegenerateRelative * bounding_box_diagonal(p.control), source);
 }
 
-SurfaceMesh tessellate_patches(std::span<const BezierPatch> patches, int res) {
+SurfaceMesh tessellate_patches(std::span<const BezierPatch> patches, int res, long long max_triangles) {
     if (res < 1) throw InputError("patch resolution must be at least 1, got " + std::to_string(res));
+    require_surface_size(2LL * static_cast<long long>(patches.size()) * res * res, max_triangles,
+                         "the tessellation of " + std::to_string(patches.size()) + " patches at resolution " +
+                             std::to_string(res));
     SurfaceMesh s;
     const int side = res + 1;
     s.mesh.positions.reserve(patches.size() * side * side);

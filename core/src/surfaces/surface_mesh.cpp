@@ -59,6 +59,12 @@ std::vector<int> weld_classes(std::span<const Vec3> points, double tol) {
     return parent;
 }
 
+void require_surface_size(long long triangles, long long limit, const std::string& what) {
+    if (triangles > limit)
+        throw InputError(what + " would have " + std::to_string(triangles) + " triangles, more than the limit of " +
+                         std::to_string(limit) + " (--max-faces); use fewer steps or raise the limit");
+}
+
 double weld(SurfaceMesh& s, double tol) {
     TriMesh& m = s.mesh;
     // Every builder welds last: the one place to refuse a surface whose evaluation overflowed

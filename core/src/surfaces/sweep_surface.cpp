@@ -57,11 +57,15 @@ SweepSurface build_sweep(const CurveFile& file, int index, const SweepOptions& o
                 for (const Vec3& q : p.positions) r = std::max(r, std::abs(q.x()));
                 ro.slices = slices_for(r, o.tol * (1 - o.curve_share));
             }
+            require_surface_size(2LL * std::max(p.size() - 1, 0) * std::max(ro.slices, 3), o.max_triangles,
+                                 "the surface of revolution");
             out.grid = revolution_grid(p, profile_closed, ro);
             out.closed = profile_encloses(p.positions, kWeldRelative * bounding_box_diagonal(p.positions));
         } else {
             const CurveRecord& sweep = file.curves.at(rec.sweep_index);
             const Polyline s = sample(sweep, o);
+            require_surface_size(2LL * std::max(p.size() - 1, 0) * std::max(s.size() - 1, 0), o.max_triangles,
+                                 "the generalized cylinder");
             std::vector<double> scale;
             if (rec.scale_index >= 0) {
                 // The scale curve is read by the sweep's normalized parameter: sweep sample

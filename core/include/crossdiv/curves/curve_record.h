@@ -23,6 +23,11 @@ enum class CurveType {
 };
 std::string_view to_string(CurveType t);
 
+/// The largest STEPS an SWP record may give (intervals per segment, slices of a surface of
+/// revolution): far beyond any course model (they use 8 to 90), small enough that one
+/// segment's samples stay far below kMaxCurveSamples.
+inline constexpr long kMaxSteps = 1'000'000;
+
 /// One curve record.
 struct CurveRecord {
     std::string name;     ///< "" for SWP's anonymous '.'

@@ -33,8 +33,14 @@ struct Polyline {
 enum class TessellationMode { Uniform, Angle, Distance };
 std::string_view to_string(TessellationMode m);
 
+/// The most samples one tessellated curve may have: 3 vectors of 24 bytes and a parameter
+/// each, about 2.6 GB, a tenth of a 24 GB machine, so that the surfaces built from two such
+/// curves are bounded by their own face limit first.
+inline constexpr long long kMaxCurveSamples = 32'000'000;
+
 /// `intervals` equal parameter steps per segment (the SWP file's STEPS): t = i / intervals,
-/// the end of each segment emitted once. @throws InputError if intervals < 1.
+/// the end of each segment emitted once. @throws InputError if intervals < 1, or if the
+/// samples would exceed kMaxCurveSamples.
 Polyline tessellate_uniform(const BezierChain& chain, int intervals);
 
 /// Per-segment step counts (e.g. from wang_intervals). @throws InputError on a count < 1 or

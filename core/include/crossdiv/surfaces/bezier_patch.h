@@ -60,8 +60,10 @@ Vec3 patch_normal(const BezierPatch& patch, double u, double v, NormalSource* so
 
 /// Tessellation of each patch into res x res quads (each split along its (u0,v0)-(u1,v1)
 /// diagonal, counterclockwise seen from the du x dv side), welded across patches with
-/// kWeldRelative. @throws InputError if res < 1 or a patch is malformed.
-SurfaceMesh tessellate_patches(std::span<const BezierPatch> patches, int res);
+/// kWeldRelative. @throws InputError if res < 1, a patch is malformed, or the tessellation would
+/// have more than max_triangles triangles.
+SurfaceMesh tessellate_patches(std::span<const BezierPatch> patches, int res,
+                               long long max_triangles = kDefaultMaxSurfaceTriangles);
 
 /// Largest gap between two patches along boundary curves they share: for each pair of
 /// patch edges with the same control polygon (within kWeldRelative of the model's size,

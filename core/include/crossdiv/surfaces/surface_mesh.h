@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>  // cross products
 #include <span>
+#include <string>
 #include <vector>
 
 #include "crossdiv/mesh/tri_mesh.h"
@@ -21,6 +22,14 @@ struct SurfaceMesh {
     /// edge, a pole of a surface of revolution): counted so that a report can say so.
     int collapsed_triangles = 0;
 };
+
+/// The default bound on the triangles of one built surface (sweeps, patches): about 4 GB of
+/// positions, normals and triangles with the builders' intermediates, a safe share of a
+/// 24 GB machine. Commands take --max-faces to move it.
+inline constexpr long long kDefaultMaxSurfaceTriangles = 50'000'000;
+
+/// @throws InputError when `triangles` exceeds `limit`, naming `what` and both counts.
+void require_surface_size(long long triangles, long long limit, const std::string& what);
 
 /// Welding joins points closer than this times the bounding-box diagonal of the input:
 /// far above the rounding of two evaluations of one boundary curve from either side (a few

@@ -21,6 +21,7 @@ struct SweepOptions {
     bool adaptive = false;
     double tol = 0;            ///< absolute, for adaptive
     double curve_share = 0.5;  ///< adaptive srev: the part of tol given to the profile, in (0, 1)
+    long long max_triangles = kDefaultMaxSurfaceTriangles;  ///< refuse a larger surface before building it
 };
 
 /// One built surface.
