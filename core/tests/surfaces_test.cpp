@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <numbers>
+#include <random>
+#include <numeric>
 #include <sstream>
 
 #include "crossdiv/error.h"
@@ -152,6 +154,34 @@ TEST(Weld, JoinsPointsWithinTheToleranceTransitively) {
     const std::vector<Vec3> pts{{0, 0, 0}, {1e-12, 0, 0}, {1, 0, 0}, {2e-12, 0, 0}, {1, 5e-10, 0}};
     EXPECT_EQ(weld_classes(pts, 1e-9), (std::vector<int>{0, 0, 2, 0, 2}));
     EXPECT_EQ(weld_classes(pts, 0), (std::vector<int>{0, 1, 2, 3, 4}));
+}
+
+TEST(Weld, ClassesAreTheConnectedComponentsOfTheWithinTolGraph) {
+    // Against the definition, all pairs compared: 1500 points in clusters on a lattice of
+    // spacing 1 (points jittered by up to 0.3 per axis), welded at tol 0.5, so some clusters
+    // chain together and some do not; plus a dense clump of 500 points within 1e-3 (one cell).
+    std::mt19937 rng(7);
+    std::uniform_int_distribution<int> site(0, 9);
+    std::uniform_real_distribution<double> jitter(-0.3, 0.3), tiny(0.0, 1e-3);
+    std::vector<Vec3> p;
+    for (int i = 0; i < 1500; ++i) p.emplace_back(site(rng) + jitter(rng), site(rng) + jitter(rng), jitter(rng));
+    for (int i = 0; i < 500; ++i) p.emplace_back(20 + tiny(rng), tiny(rng), tiny(rng));
+    const double tol = 0.5;
+    std::vector<int> expect(p.size());
+    std::iota(expect.begin(), expect.end(), 0);
+    const auto root = [&](int i) {
+        while (expect[i] != i) i = expect[i];
+        return i;
+    };
+    for (size_t i = 0; i < p.size(); ++i)
+        for (size_t j = i + 1; j < p.size(); ++j)
+            if ((p[i] - p[j]).norm() <= tol) {
+                const int a = root(static_cast<int>(i)), b = root(static_cast<int>(j));
+                if (a != b) expect[std::max(a, b)] = std::min(a, b);
+            }
+    for (size_t i = 0; i < p.size(); ++i) expect[i] = root(static_cast<int>(i));
+    EXPECT_EQ(weld_classes(p, tol), expect);
+    EXPECT_EQ(weld_classes(p, tol)[1999], 1500);  // the clump is one class, led by its first point
 }
 
 TEST(Weld, VolumeOfTheUnitTetrahedron) {

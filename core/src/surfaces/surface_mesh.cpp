@@ -32,27 +32,50 @@ std::vector<int> weld_classes(std::span<const Vec3> points, double tol) {
     std::vector<int> parent(n);
     std::iota(parent.begin(), parent.end(), 0);
     if (n == 0 || !(tol > 0)) return parent;
-    // Cells of side tol: two points within tol lie in the same or adjacent cells.
+    const auto join = [&](int a, int b) {
+        a = find(parent, a), b = find(parent, b);
+        if (a != b) parent[std::max(a, b)] = std::min(a, b);
+    };
+    // Cells of side tol / 2: diameter tol * sqrt(3) / 2 < tol, and two points within tol lie
+    // at most two cells apart on each axis.
+    const double side = 0.5 * tol;
     std::vector<Cell> cells(n);
-    for (int i = 0; i < n; ++i) cells[i] = cell_of(points[i], tol);
+    for (int i = 0; i < n; ++i) cells[i] = cell_of(points[i], side);
     std::vector<int> order(n);
     std::iota(order.begin(), order.end(), 0);
     std::sort(order.begin(), order.end(), [&](int a, int b) { return cells[a] < cells[b] || (cells[a] == cells[b] && a < b); });
-    std::vector<Cell> sorted(n);
-    for (int k = 0; k < n; ++k) sorted[k] = cells[order[k]];
+    // The distinct cells in order, each with its range in `order`.
+    std::vector<Cell> cell_keys;
+    std::vector<int> cell_start;
+    for (int k = 0; k < n; ++k)
+        if (k == 0 || cells[order[k]] != cells[order[k - 1]]) {
+            cell_keys.push_back(cells[order[k]]);
+            cell_start.push_back(k);
+        }
+    cell_start.push_back(n);
+    const int num_cells = static_cast<int>(cell_keys.size());
+    for (int c = 0; c < num_cells; ++c)
+        for (int k = cell_start[c] + 1; k < cell_start[c + 1]; ++k) join(order[cell_start[c]], order[k]);
     const double tol2 = tol * tol;
-    for (int i = 0; i < n; ++i) {
-        for (std::int64_t dx = -1; dx <= 1; ++dx)
-            for (std::int64_t dy = -1; dy <= 1; ++dy)
-                for (std::int64_t dz = -1; dz <= 1; ++dz) {
-                    const Cell c{cells[i][0] + dx, cells[i][1] + dy, cells[i][2] + dz};
-                    auto [lo, hi] = std::equal_range(sorted.begin(), sorted.end(), c);
-                    for (auto it = lo; it != hi; ++it) {
-                        const int j = order[it - sorted.begin()];
-                        if (j <= i || (points[i] - points[j]).squaredNorm() > tol2) continue;
-                        const int a = find(parent, i), b = find(parent, j);
-                        if (a != b) parent[std::max(a, b)] = std::min(a, b);
-                    }
+    for (int c = 0; c < num_cells; ++c) {
+        const Cell& key = cell_keys[c];
+        for (std::int64_t dx = -2; dx <= 2; ++dx)
+            for (std::int64_t dy = -2; dy <= 2; ++dy)
+                for (std::int64_t dz = -2; dz <= 2; ++dz) {
+                    const Cell other{key[0] + dx, key[1] + dy, key[2] + dz};
+                    if (!(key < other)) continue;  // each pair of cells once
+                    const auto it = std::lower_bound(cell_keys.begin() + c + 1, cell_keys.end(), other);
+                    if (it == cell_keys.end() || *it != other) continue;
+                    const int d = static_cast<int>(it - cell_keys.begin());
+                    if (find(parent, order[cell_start[c]]) == find(parent, order[cell_start[d]])) continue;
+                    // Each cell is one class: the first pair within tol joins them.
+                    bool joined = false;
+                    for (int a = cell_start[c]; a < cell_start[c + 1] && !joined; ++a)
+                        for (int b = cell_start[d]; b < cell_start[d + 1] && !joined; ++b)
+                            if ((points[order[a]] - points[order[b]]).squaredNorm() <= tol2) {
+                                join(order[a], order[b]);
+                                joined = true;
+                            }
                 }
     }
     for (int i = 0; i < n; ++i) parent[i] = find(parent, i);

@@ -38,8 +38,11 @@ inline constexpr double kWeldRelative = 1e-9;
 
 /// For each point, the index of the first point it is welded to (itself when none is
 /// within `tol`). Points join transitively (a chain of points each within tol of the next is
-/// one class). Sorting by grid cell and searching the 27 neighbouring cells: O(n log n), no
-/// hashing of doubles and no node-based map.
+/// one class). Points are sorted into cells of side tol / 2, whose diameter is below tol, so
+/// the points of one cell are one class at once; two classes in cells at most two apart
+/// join at the first pair found within tol. No pair of points is compared twice within a
+/// cell, so many points in one cell (a model whose size makes tol wide next to its detail)
+/// cost O(n log n), not O(n^2); no hashing of doubles and no node-based map.
 std::vector<int> weld_classes(std::span<const Vec3> points, double tol);
 
 /// Welds the mesh's vertices with weld_classes (tol = kWeldRelative * diagonal unless given),
