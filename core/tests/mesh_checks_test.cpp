@@ -31,6 +31,24 @@ TEST(MeshChecks, CleanMeshHasNoIssues) {
     EXPECT_TRUE(check_mesh(mesh_of(square(), {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}})).empty());
 }
 
+TEST(MeshChecks, ARepeatedVertexInALargePolygonIsReportedOncePerValue) {
+    // A 50,000-gon on a circle whose corners 7 and 49,999 are both vertex 3, and 11, 12, 13
+    // all vertex 20: two repeated values, each reported once.
+    PolyMesh m;
+    const int n = 50'000;
+    for (int i = 0; i < n; ++i) m.positions.emplace_back(std::cos(2 * M_PI * i / n), std::sin(2 * M_PI * i / n), 0);
+    std::vector<int> corners(n);
+    for (int i = 0; i < n; ++i) corners[i] = i;
+    corners[49'999] = 3;
+    corners[7] = 3;
+    corners[11] = corners[12] = corners[13] = 20;
+    m.add_face(corners);
+    std::vector<std::string> repeated;
+    for (const MeshIssue& i : check_mesh(m))
+        if (i.kind == MeshIssueKind::RepeatedVertex) repeated.push_back(i.message);
+    EXPECT_EQ(repeated, (std::vector<std::string>{"face 0: repeated vertex 3", "face 0: repeated vertex 20"}));
+}
+
 TEST(MeshChecks, EachIssueNamesItsElement) {
     EXPECT_EQ(only(check_mesh(mesh_of(square(), {{0, 1, 9}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}})),
                    MeshIssueKind::IndexOutOfRange),
