@@ -3,6 +3,10 @@
 #   ./run.sh main   install what is missing, build, run the benchmark and the default conformance
 #                   suite, and write out/{results.json,results.csv,junit.xml,bench.json,report.md,index.html}
 #   ./run.sh test   install what is missing, build, run every test with CTest
+# and, for reliability (fuzz/README.md):
+#   ./run.sh sanitize [SECONDS]   build with clang, AddressSanitizer and UndefinedBehaviorSanitizer
+#                   into build-sanitize, run every test there, then each libFuzzer target for
+#                   SECONDS (default 30)
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -31,6 +35,9 @@ install_missing() {
   [ -d datasets/cgal ] || datasets/install_cgal_meshes.sh || echo "CGAL demo meshes unavailable; continuing without them"
 }
 
+# The sanitizer build: clang (and its sanitizer and libFuzzer runtimes).
+SANITIZE_PACKAGES="clang libclang-rt-14-dev"
+
 build() {
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
   cmake --build build -j2   # 2 jobs: CGAL translation units need ~1 GB each
@@ -49,8 +56,24 @@ case "${1:-}" in
     build
     ctest --test-dir build --output-on-failure -j2
     ;;
+  sanitize)
+    PACKAGES="$PACKAGES $SANITIZE_PACKAGES"
+    install_missing
+    # -O1 -g: usable stacks at a bearable speed; NDEBUG as in the release build, so the
+    # reference libraries take the same code paths (CGAL's assertions among them).
+    CC=clang CXX=clang++ cmake -S . -B build-sanitize -DCROSSDIV_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g -DNDEBUG"
+    cmake --build build-sanitize -j2
+    # handle_segv=0: a deliberate crash (the isolation tests) dies by its signal, as the
+    # harness expects; any sanitizer report fails the test that caused it.
+    export ASAN_OPTIONS=handle_segv=0:detect_leaks=1:abort_on_error=0
+    export LSAN_OPTIONS="suppressions=$PWD/fuzz/sanitizer-suppressions.txt"
+    export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+    ctest --test-dir build-sanitize --output-on-failure -j2
+    fuzz/run_fuzzers.sh build-sanitize "${2:-30}"
+    ;;
   *)
-    echo "usage: $0 main|test" >&2
+    echo "usage: $0 main|test|sanitize [SECONDS]" >&2
     exit 2
     ;;
 esac

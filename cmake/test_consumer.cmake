@@ -1,11 +1,13 @@
 # The test of `cmake --install` and find_package(crossdiv): installs this build into a staging
 # prefix, builds examples/cmake-consumer against it, runs it, and runs the installed crossdiv.
-# cmake -DSOURCE=<source tree> -DBUILD=<build tree> -DWORK=<scratch folder> -P test_consumer.cmake
+# cmake -DSOURCE=<source tree> -DBUILD=<build tree> -DWORK=<scratch folder> -DCXX=<compiler> [-DFLAGS=<flags>]
+#       -P test_consumer.cmake
 file(REMOVE_RECURSE "${WORK}")
 set(stage "${WORK}/stage")
 execute_process(COMMAND ${CMAKE_COMMAND} --install "${BUILD}" --prefix "${stage}" OUTPUT_QUIET COMMAND_ERROR_IS_FATAL ANY)
 execute_process(COMMAND ${CMAKE_COMMAND} -S "${SOURCE}/examples/cmake-consumer" -B "${WORK}/consumer"
-                        -DCMAKE_PREFIX_PATH=${stage} -DCMAKE_BUILD_TYPE=Release COMMAND_ERROR_IS_FATAL ANY)
+                        -DCMAKE_PREFIX_PATH=${stage} -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=${CXX}
+                        "-DCMAKE_CXX_FLAGS=${FLAGS}" "-DCMAKE_EXE_LINKER_FLAGS=${FLAGS}" COMMAND_ERROR_IS_FATAL ANY)
 execute_process(COMMAND ${CMAKE_COMMAND} --build "${WORK}/consumer" -j2 COMMAND_ERROR_IS_FATAL ANY)
 execute_process(COMMAND "${WORK}/consumer/consumer" COMMAND_ERROR_IS_FATAL ANY)
 # The installed executable finds its files beside itself, not in this source tree.

@@ -5,6 +5,7 @@
 #include <thread>
 
 #include "crossdiv/verification/harness/isolate.h"
+#include "crossdiv/verification/harness/process.h"
 
 namespace crossdiv::verification {
 namespace {
@@ -14,6 +15,23 @@ adapters::LevelTrace small_trace() {
     m.positions = {Vec3(0.1, 0.2, 0.3), Vec3(1, 0, 0), Vec3(0, 1, 1.0 / 3.0)};
     m.add_face({0, 1, 2});
     return {m, m};
+}
+
+TEST(StderrSummary, KeepsASanitizersFirstReportLineBeforeItsLegend) {
+    std::string legend;
+    for (int i = 0; i < 40; ++i) legend += "  Heap left redzone:       fa\n";
+    const std::string report = "==77==ERROR: AddressSanitizer: heap-buffer-overflow on address 0x6020 at pc 0x55";
+    const std::string summary = stderr_summary("some output\n" + report + "\n" + legend, 100);
+    EXPECT_EQ(summary.substr(0, report.size()), report);
+    EXPECT_NE(summary.find(report + " ..."), std::string::npos) << summary;
+    EXPECT_NE(summary.find("Heap left redzone"), std::string::npos) << summary;
+    EXPECT_EQ(summary.find('\n'), std::string::npos);
+    // Short text is kept whole; without a report only the tail is kept.
+    EXPECT_EQ(stderr_summary("a\nb\n", 100), "a b");
+    EXPECT_EQ(stderr_summary(legend, 20).substr(0, 3), "...");
+    // UBSan's form names the file and line.
+    const std::string ub = "core/x.cpp:12:7: runtime error: signed integer overflow";
+    EXPECT_EQ(stderr_summary(ub + "\n" + legend, 50).substr(0, ub.size()), ub);
 }
 
 TEST(Isolate, ResultCrossesTheProcessBoundaryBitExact) {

@@ -142,6 +142,28 @@ TEST(Suite, RunsInWorkersAndRecordsEachOutcome) {
     EXPECT_EQ(recs[1].detail["worst_vertex"]["valence"], 2);
 }
 
+TEST(Suite, AJobLineCountsFailuresAsTheSummaryDoes) {
+    // A study with an agreement, a classified divergence, a crashed reference and an
+    // unexplained divergence: only the last is a failure, in the job line as in JUnit.
+    CaseRecord c;
+    c.operation = "schemes";
+    const auto run = [](Verdict v, DivergenceClass cls, const std::string& check) {
+        RunRecord r;
+        r.reference = "ref";
+        r.subject = "mesh";
+        r.check = check;
+        r.outcome = {v, cls};
+        return r;
+    };
+    c.runs = {run(Verdict::Agree, DivergenceClass::None, "a"), run(Verdict::Diverge, DivergenceClass::WingRule, "b"),
+              run(Verdict::RefCrashed, DivergenceClass::None, "c")};
+    EXPECT_EQ(describe_record(c), "3 checks, 1 classified divergences, 1 ref-crashed");
+    c.runs.push_back(run(Verdict::Diverge, DivergenceClass::Unexplained, "d"));
+    EXPECT_EQ(describe_record(c), "4 checks, 1 classified divergences, 1 ref-crashed, 1 FAILED: mesh/d");
+    c.runs.resize(1);
+    EXPECT_EQ(describe_record(c), "1 checks, all within tolerance");
+}
+
 TEST(JsonText, BytesThatAreNotUtf8AreShownAsEscapesAndNeverFatal) {
     EXPECT_EQ(valid_utf8("plain"), "plain");
     EXPECT_EQ(valid_utf8("caf\xC3\xA9"), "caf\xC3\xA9");                 // U+00E9, well formed

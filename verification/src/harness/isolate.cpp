@@ -1,4 +1,5 @@
 #include "crossdiv/verification/harness/isolate.h"
+#include "crossdiv/verification/harness/process.h"
 
 #include <signal.h>
 #include <sys/wait.h>
@@ -55,34 +56,39 @@ bool read_trace(FILE* f, adapters::LevelTrace& trace) {
     return true;
 }
 
+/// An exception's message on one line (CGAL's assertion messages span several), so that a
+/// record's explanation is one line in every output.
+std::string one_line(std::string s) {
+    while (!s.empty() && (s.back() == '\n' || s.back() == '\r')) s.pop_back();
+    for (char& c : s)
+        if (c == '\n' || c == '\r') c = ' ';
+    return s;
+}
+
 IsolatedTrace run_here(const std::function<adapters::LevelTrace()>& fn) {
     IsolatedTrace r;
     const auto t0 = Clock::now();
     try {
         r.trace = fn();
     } catch (const adapters::Rejected& e) {
-        r.outcome = {RunStatus::Rejected, e.what(), 0};
+        r.outcome = {RunStatus::Rejected, one_line(e.what()), 0};
     } catch (const ImplementationFailure& e) {
-        r.outcome = {e.status(), e.what(), 0};
+        r.outcome = {e.status(), one_line(e.what()), 0};
     } catch (const std::exception& e) {
-        r.outcome = {RunStatus::Threw, e.what(), 0};
+        r.outcome = {RunStatus::Threw, one_line(e.what()), 0};
     }
     r.outcome.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     return r;
 }
 
 /// The last few lines the child wrote to stderr, to explain a crash or a rejection.
-std::string tail_of(FILE* f, size_t max_chars = 400) {
+std::string tail_of(FILE* f) {
     std::fflush(f);
     std::string s;
     std::rewind(f);
     char buf[4096];
     for (size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) s.append(buf, n);
-    while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
-    if (s.size() > max_chars) s = "..." + s.substr(s.size() - max_chars);
-    for (char& c : s)
-        if (c == '\n') c = ' ';
-    return s;
+    return stderr_summary(std::move(s));
 }
 
 }  // namespace

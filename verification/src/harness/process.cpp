@@ -110,17 +110,33 @@ ProcessResult run_confined(const std::vector<std::string>& argv, const ProcessLi
     return r;
 }
 
+std::string stderr_summary(std::string s, size_t max_chars) {
+    while (!s.empty() && (s.back() == '\n' || s.back() == ' ' || s.back() == '\r')) s.pop_back();
+    std::string first_report;
+    if (s.size() > max_chars) {
+        // "==123==ERROR: AddressSanitizer: heap-buffer-overflow ...", "file:line: runtime error: ..."
+        for (const char* marker : {"ERROR: AddressSanitizer", "ERROR: LeakSanitizer", "runtime error:", "Sanitizer:"}) {
+            const size_t at = s.find(marker);
+            if (at == std::string::npos || at >= s.size() - max_chars) continue;
+            const size_t begin = s.rfind('\n', at), end = s.find('\n', at);
+            first_report = s.substr(begin == std::string::npos ? 0 : begin + 1,
+                                    (end == std::string::npos ? s.size() : end) - (begin == std::string::npos ? 0 : begin + 1));
+            break;
+        }
+        s = "..." + s.substr(s.size() - max_chars);
+        if (!first_report.empty()) s = first_report + " " + s;
+    }
+    for (char& c : s)
+        if (c == '\n' || c == '\r') c = ' ';
+    return s;
+}
+
 std::string tail_of_file(const std::string& path, size_t max_chars) {
     std::ifstream in(path, std::ios::binary);
     if (!in) return "";
     std::ostringstream ss;
     ss << in.rdbuf();
-    std::string s = ss.str();
-    while (!s.empty() && (s.back() == '\n' || s.back() == ' ' || s.back() == '\r')) s.pop_back();
-    if (s.size() > max_chars) s = "..." + s.substr(s.size() - max_chars);
-    for (char& c : s)
-        if (c == '\n' || c == '\r') c = ' ';
-    return s;
+    return stderr_summary(ss.str(), max_chars);
 }
 
 }  // namespace crossdiv::verification

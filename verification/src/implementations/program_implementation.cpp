@@ -310,10 +310,18 @@ PolyMesh read_program_result(const std::string& path, const std::string& shown_n
     }
 }
 
-std::unique_ptr<Implementation> make_program_implementation(const ProgramSpec& spec) {
+void check_program_spec(const ProgramSpec& spec) {
     if (spec.name.empty()) throw InputError("a program implementation needs a name");
     if (!(spec.timeout_seconds > 0)) throw InputError("program '" + spec.name + "': the time limit must be positive");
     check_rule_names(spec);
+    CommandTemplate command(spec.command);
+    if (!spec.setup.empty()) CommandTemplate setup(spec.setup, false);
+    program_capabilities(spec, command.text().find("{weights}") != std::string::npos,
+                         command.text().find("{boundary}") != std::string::npos);
+}
+
+std::unique_ptr<Implementation> make_program_implementation(const ProgramSpec& spec) {
+    check_program_spec(spec);
     CommandTemplate command(spec.command);
     command.anchor_relative_paths(spec.base_dir);
     return std::make_unique<Program>(spec, std::move(command));

@@ -199,9 +199,12 @@ std::string ManifestSubject::result_path(const std::string& input, int levels) c
 Manifest read_manifest(const std::string& path) {
     std::ifstream in(path);
     if (!in) throw InputError(path + ": cannot open manifest");
+    return read_manifest(in, path, std::filesystem::absolute(path).parent_path().string(), ProgramStatements::Register);
+}
+
+Manifest read_manifest(std::istream& in, const std::string& path, const std::string& base_dir, ProgramStatements programs) {
     Manifest m;
     m.file = path;
-    const std::string base_dir = std::filesystem::absolute(path).parent_path().string();
     std::shared_ptr<const ManifestSubject> subject;
     std::string text;
     for (int line = 1; std::getline(in, text); ++line) {
@@ -221,6 +224,20 @@ Manifest read_manifest(const std::string& path) {
                 continue;
             }
             const ProgramSpec spec = at_line(path, line, [&] { return program_spec(all[1], keys, base_dir, m.timeout_seconds); });
+            if (programs == ProgramStatements::CheckOnly) {
+                at_line(path, line, [&] {
+                    check_program_spec(spec);
+                    return 0;
+                });
+                if (keyword == "reference") {
+                    m.references.push_back(all[1]);
+                } else {
+                    auto s = std::make_shared<ManifestSubject>();
+                    s->name = all[1];
+                    subject = s;
+                }
+                continue;
+            }
             std::unique_ptr<Implementation> program = at_line(path, line, [&] { return make_program_implementation(spec); });
             if (keyword == "reference") {
                 at_line(path, line, [&] {

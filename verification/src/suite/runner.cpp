@@ -157,23 +157,28 @@ std::string describe_record(const CaseRecord& c) {
         for (const RunRecord& r : c.runs) s += (s.empty() ? "" : ", ") + r.reference + " " + outcome_label(c, r);
         return s;
     }
+    // The same counting as the summary and JUnit (is_failure): an unexplained divergence
+    // fails; a divergence whose cause is measured (a study's boundary-rule, say) is a
+    // finding; a reference that crashed or refused is its own outcome, counted by name.
     int failed = 0, classified = 0;
     std::string which;
+    std::map<std::string, int> other;
     for (const RunRecord& r : c.runs) {
         if (r.outcome.verdict == Verdict::Agree) continue;
-        // A divergence whose cause is measured (a study's boundary-rule, say) is a finding,
-        // not a failure.
-        if (r.outcome.cls != DivergenceClass::None && r.outcome.cls != DivergenceClass::Unexplained) {
+        if (is_failure(c, r)) {
+            ++failed;
+            if (which.size() < 200) which += " " + r.subject + "/" + r.check;
+        } else if (r.outcome.verdict == Verdict::Diverge) {
             ++classified;
-            continue;
+        } else {
+            ++other[outcome_label(c, r)];
         }
-        ++failed;
-        if (which.size() < 200) which += " " + r.subject + "/" + r.check;
     }
     const std::string what = c.operation == "curves" ? " curve checks" : c.operation == "surfaces" ? " surface checks" : " checks";
-    return std::to_string(c.runs.size()) + what +
-           (classified ? ", " + std::to_string(classified) + " classified divergences" : "") +
-           (failed ? ", " + std::to_string(failed) + " FAILED:" + which : ", all within tolerance");
+    std::string s = std::to_string(c.runs.size()) + what;
+    if (classified) s += ", " + std::to_string(classified) + " classified divergences";
+    for (const auto& [label, n] : other) s += ", " + std::to_string(n) + " " + label;
+    return s + (failed ? ", " + std::to_string(failed) + " FAILED:" + which : other.empty() ? ", all within tolerance" : "");
 }
 
 }  // namespace crossdiv::verification

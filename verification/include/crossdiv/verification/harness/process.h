@@ -37,7 +37,12 @@ struct ProcessResult {
 /// the time limit. Never throws for what the program does.
 ProcessResult run_confined(const std::vector<std::string>& argv, const ProcessLimits& limits);
 
-/// The last `max_chars` characters of a text file (its stderr), on one line; "" when absent.
+/// What a process said on stderr, on one line: the last `max_chars` characters, preceded by
+/// the first line of a sanitizer report when there is one before them (ASan's legend fills
+/// the tail and would hide which error it was).
+std::string stderr_summary(std::string text, size_t max_chars = 400);
+
+/// stderr_summary of a text file (a program's stderr); "" when absent.
 std::string tail_of_file(const std::string& path, size_t max_chars = 400);
 
 }  // namespace crossdiv::verification

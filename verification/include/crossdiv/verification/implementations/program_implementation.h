@@ -82,6 +82,11 @@ adapters::LevelTrace trace_from_input(const PolyMesh& mesh, const RefineRequest&
 ///         NonFiniteOutput.
 PolyMesh read_program_result(const std::string& path, const std::string& shown_name);
 
+/// Every check make_program_implementation makes of `spec` (name, time limit, rule names,
+/// command and setup templates, declared rules), without running anything.
+/// @throws InputError as make_program_implementation.
+void check_program_spec(const ProgramSpec& spec);
+
 /// A program run from a command template. It declares the rules of `spec.weights` and
 /// `spec.boundaries`; where those are empty, every named rule of its schemes when its template
 /// passes {weights} or {boundary}, else only each scheme's default rule; what it really

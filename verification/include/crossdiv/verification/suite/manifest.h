@@ -4,6 +4,7 @@
 /// reports/suite-manifest.md) and its expansion into jobs, whole or one shard of them.
 
 #include <memory>
+#include <istream>
 #include <string>
 #include <vector>
 
@@ -46,9 +47,19 @@ struct Manifest {
     std::vector<std::string> references;
 };
 
+/// What reading does with the programs of `reference` and `subject` statements.
+enum class ProgramStatements {
+    Register,   ///< make each program (running its setup) and register the references
+    CheckOnly,  ///< check each statement as Register would, run nothing, register nothing
+};
+
 /// Reads a manifest, registering each `reference` statement's program in the registry
 /// (registry.h) as it is read. @throws ParseError naming the file and line of any bad statement.
 Manifest read_manifest(const std::string& path);
+
+/// Reads manifest text named `name`; relative paths are anchored at `base_dir`. With
+/// CheckOnly (a fuzzer, a check of a manifest from elsewhere) the subjects' programs are null.
+Manifest read_manifest(std::istream& in, const std::string& name, const std::string& base_dir, ProgramStatements programs);
 
 /// The words of a statement: split at whitespace, a '...' or "..." group kept whole with its
 /// quotes removed (key='a b' is the word key=a b). @throws InputError on an unclosed quote.
