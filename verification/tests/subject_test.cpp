@@ -1,6 +1,7 @@
 // Programs under test: the command template, every named way a program fails, results in
 // another numbering, result files, and the rule a subject follows, measured per vertex class.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -17,6 +18,8 @@
 
 namespace crossdiv::verification {
 namespace {
+
+namespace fs = std::filesystem;
 
 const std::string kSource = CROSSDIV_SOURCE_DIR;
 const std::string kStudent = "python3 " + kSource + "/examples/subjects/python-loop/loop.py {in} {levels} {out}";
@@ -58,6 +61,26 @@ TEST(CommandTemplate, SplitsLikeAShellWithoutOneAndSubstitutesEachPlaceholder) {
     // A file name with a shell metacharacter stays one argument.
     v.in_obj = "/t/a;rm -rf x.obj";
     EXPECT_EQ(t.expand(v).back(), "/t/a;rm -rf x.obj");
+}
+
+TEST(Program, RunsFromAFolderWhoseNameAShellWouldInterpret) {
+    // The program lives in a folder named with a space, a command substitution, quotes, a
+    // non-ASCII letter and a byte that is not UTF-8. Run from an argument vector, it is found
+    // and agrees with core, and nothing in the name is executed.
+    const fs::path base = fs::temp_directory_path() / ("crossdiv subject $(touch PWNED) 'q' \xC3\xA9 \xFF " +
+                                                       std::to_string(::getpid()));
+    fs::create_directories(base);
+    fs::copy_file(kSource + "/examples/subjects/python-loop/loop.py", base / "loop.py", fs::copy_options::overwrite_existing);
+    const std::string command = "python3 \"" + (base / "loop.py").string() + "\" {in} {levels} {out}";
+    const auto subject = program(command);
+    const LoopComparison c = compare_with(*subject, "octahedron", 1);
+    EXPECT_EQ(c.subject_outcome.status, RunStatus::Ok) << c.subject_outcome.summary();
+    ASSERT_TRUE(c.rules && c.rules->rule);
+    EXPECT_EQ(c.rules->rule->weights, LoopWeights::Warren);  // the assignment's 3/(8n), 3/32 at valence 4
+    EXPECT_FALSE(fs::exists("PWNED"));
+    EXPECT_FALSE(fs::exists(base / "PWNED"));
+    EXPECT_FALSE(fs::exists(fs::temp_directory_path() / "PWNED"));
+    fs::remove_all(base);
 }
 
 TEST(CommandTemplate, RefusesWhatCannotRun) {
