@@ -69,15 +69,20 @@ TEST(ExternalReference, AFloatProgramAgreesInTheFloatTierOnly) {
     EXPECT_EQ(d.runs[0].verdict, Verdict::Diverge);
 }
 
+/// The single run of `c` ended with `status`, verdict `verdict`, its explanation saying `says`.
+void expect_failed_run(const LoopComparison& c, RunStatus status, Verdict verdict, const std::string& says) {
+    ASSERT_EQ(c.runs.size(), 1u);
+    EXPECT_EQ(c.runs[0].outcome.status, status);
+    EXPECT_EQ(c.runs[0].verdict, verdict);
+    EXPECT_NE(c.runs[0].explanation.find(says), std::string::npos) << c.runs[0].explanation;
+}
+
 TEST(ExternalReference, ASetupThatFailsMakesEveryRunUnavailable) {
     ProgramSpec spec = float_program("absent-program");
     spec.setup = "python3 -c 'import sys; sys.stderr.write(\"not installed\\n\"); sys.exit(1)'";
     register_reference(make_program_implementation(spec));
-    const LoopComparison c = compare_against("absent-program", "tetrahedron", 1);
-    ASSERT_EQ(c.runs.size(), 1u);
-    EXPECT_EQ(c.runs[0].outcome.status, RunStatus::Unavailable);
-    EXPECT_EQ(c.runs[0].verdict, Verdict::RefUnavailable);
-    EXPECT_NE(c.runs[0].explanation.find("not installed"), std::string::npos) << c.runs[0].explanation;
+    expect_failed_run(compare_against("absent-program", "tetrahedron", 1), RunStatus::Unavailable, Verdict::RefUnavailable,
+                      "not installed");
 }
 
 TEST(ExternalReference, DeclaredRulesAreTheOnesItIsAskedFor) {
@@ -198,11 +203,8 @@ public:
 
 TEST(LibraryReference, WithANonFiniteCoordinateIsAnInvalidOutput) {
     register_reference(std::make_unique<NonFiniteLibrary>());
-    const LoopComparison c = compare_against("non-finite", "octahedron", 2);
-    ASSERT_EQ(c.runs.size(), 1u);
-    EXPECT_EQ(c.runs[0].outcome.status, RunStatus::NonFiniteOutput);
-    EXPECT_EQ(c.runs[0].verdict, Verdict::RefInvalidOutput);
-    EXPECT_NE(c.runs[0].explanation.find("vertex 3 of level 2 is not finite"), std::string::npos) << c.runs[0].explanation;
+    expect_failed_run(compare_against("non-finite", "octahedron", 2), RunStatus::NonFiniteOutput, Verdict::RefInvalidOutput,
+                      "vertex 3 of level 2 is not finite");
 }
 
 // MeshLab as the default suite has it: Loop under each of its weight families against core in

@@ -43,8 +43,14 @@ nlohmann::json sanitized(const nlohmann::json& j) {
     return j;
 }
 
+bool is_utf8(std::string_view s) {
+    for (size_t i = 0, n; i < s.size(); i += n)
+        if ((n = sequence_length(s, i)) == 0) return false;
+    return true;
+}
+
 bool has_invalid(const nlohmann::json& j) {
-    const auto bad = [](std::string_view s) { return valid_utf8(s).size() != s.size(); };
+    const auto bad = [](std::string_view s) { return !is_utf8(s); };
     if (j.is_string()) return bad(j.get_ref<const std::string&>());
     if (j.is_array()) {
         for (const auto& x : j)
