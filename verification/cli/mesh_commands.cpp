@@ -20,6 +20,7 @@
 #include "crossdiv/verification/comparisons/loop_comparison.h"
 #include "crossdiv/verification/comparisons/shrink.h"
 #include "crossdiv/verification/harness/inputs.h"
+#include "crossdiv/verification/harness/output_size.h"
 #include "crossdiv/verification/implementations/program_implementation.h"
 #include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/verification/suite/manifest.h"
@@ -37,8 +38,11 @@ struct SchemeArgs {
     std::string boundary;  ///< empty: the scheme's default (edge-only, chaikin-boundary, count-from-input)
     int levels = 1;
     std::string creasing;  ///< empty: the input's t creasemethod tag, else uniform
+    long long max_faces = kMaxRefinedFaces;
 
-    void add_scheme_options(CLI::App& app) {
+    /// The scheme options; `max_faces_default` is the command's --max-faces default
+    /// (harness/output_size.h: one implementation alone, or several side by side).
+    void add_scheme_options(CLI::App& app, long long max_faces_default) {
         app.add_option("--scheme", scheme, "Subdivision scheme")
             ->check(CLI::IsMember({"loop", "catmull-clark", "doo-sabin", "sqrt3", "butterfly", "modified-butterfly"}))
             ->capture_default_str();
@@ -61,8 +65,17 @@ struct SchemeArgs {
                        "Decay of semi-sharp crease tags (loop, catmull-clark): uniform (OpenSubdiv's default) or "
                        "chaikin. Default: the input's 't creasemethod' tag, else uniform")
             ->check(CLI::IsMember({"uniform", "chaikin"}));
+        max_faces = max_faces_default;
+        app.add_option("--max-faces", max_faces,
+                       "Refuse, before any work, a refinement whose final level would have more faces than this")
+            ->check(CLI::PositiveNumber)
+            ->capture_default_str();
     }
-    PolySchemeArgs poly() const { return {scheme, boundary, levels, creasing}; }
+    PolySchemeArgs poly() const { return {scheme, boundary, levels, creasing, max_faces}; }
+    /// @throws InputError when `levels` of this scheme on `mesh` pass --max-faces.
+    void require_size(const PolyMesh& mesh, const std::string& name) const {
+        require_refined_size(mesh, scheme_from_string(scheme), levels, max_faces, name, "--max-faces");
+    }
     /// The Loop rule named by --weights and --boundary. @throws InputError for a rule Loop lacks.
     LoopOptions options() const {
         LoopOptions o = rule_from_boundary_name(Scheme::Loop, boundary).loop;
@@ -71,29 +84,13 @@ struct SchemeArgs {
     }
 };
 
-/// Loop output larger than this is refused before any work: core holds ~100 bytes per face
-/// over all levels and a reference several times that, so 64M faces is the most a 24 GB
-/// machine refines with the three references side by side.
-constexpr long long kMaxOutputFaces = 64LL << 20;
-
-void check_output_size(long long faces, int levels, const std::string& name) {
-    for (int l = 0; l < levels; ++l) faces *= 4;
-    if (faces > kMaxOutputFaces)
-        throw InputError(name + ": " + std::to_string(levels) + " levels would produce " + std::to_string(faces) +
-                         " faces, over the limit of " + std::to_string(kMaxOutputFaces) + "; use fewer levels");
-}
-
-void check_output_size(const TriMesh& mesh, int levels, const std::string& name) {
-    check_output_size(mesh.num_faces(), levels, name);
-}
-
 /// Loop on a crease-tagged input: core's generic step, or OpenSubdiv, the one reference with
 /// crease rules; the others (and split-and-flip) have none and refuse.
 int run_loop_subdivide_creased(const std::string& in, const PolyMesh& input, const SchemeArgs& s,
                                const std::string& impl, const std::string& out) {
     LoopOptions o = s.options();
     o.creasing = crease_method(s.creasing, input);
-    check_output_size(input.num_faces(), s.levels, in);
+    s.require_size(input, in);
     PolyMesh result;
     RefineRequest request{Scheme::Loop, {}, s.levels};
     request.rule.loop = o;
@@ -126,8 +123,8 @@ int run_subdivide(const std::string& in, const SchemeArgs& s, const std::string&
     }
     const PolyMesh input = load_input(in);
     if (!input.creases.empty()) return run_loop_subdivide_creased(in, input, s, impl, out);
+    s.require_size(input, in);
     const TriMesh mesh = to_tri_mesh(input, "Loop subdivision");
-    check_output_size(mesh, s.levels, in);
     PolyMesh result;
     if (impl == "core") {
         result = to_poly_mesh(loop_subdivide(mesh, s.options(), s.levels));
@@ -277,6 +274,7 @@ int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, cons
     std::vector<PolyMesh> tagged(inputs.size());
     for (size_t i = 0; i < inputs.size(); ++i) {
         PolyMesh m = load_input(inputs[i]);
+        s.require_size(m, inputs[i]);
         if (!m.creases.empty()) {
             tagged[i] = std::move(m);
             meshes.emplace_back();
@@ -284,7 +282,6 @@ int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, cons
         }
         meshes.push_back(to_tri_mesh(m, "Loop subdivision"));
         loop_input_connectivity(meshes.back());
-        check_output_size(meshes.back(), s.levels, inputs[i]);
     }
     nlohmann::json results = nlohmann::json::array();
     bool all_agree = true;
@@ -359,9 +356,10 @@ int run_edgecases(const std::string& dir) {
 
 int run_diff(const std::string& in, const SchemeArgs& s, const std::string& against, const std::string& out_dir,
              const Implementation* subject, double timeout, const std::string& subject_command) {
-    const TriMesh mesh = to_tri_mesh(load_input(in), "Loop subdivision");
+    const PolyMesh input = load_input(in);
+    s.require_size(input, in);
+    const TriMesh mesh = to_tri_mesh(input, "Loop subdivision");
     loop_input_connectivity(mesh);
-    check_output_size(mesh, s.levels, in);
     LoopComparisonRequest req;
     req.options = s.options();
     req.levels = s.levels;
@@ -406,7 +404,7 @@ struct SubdivideArgs {
     SchemeArgs scheme;
     void add_to(CLI::App& app) {
         app.add_option("input", input, "Mesh file (.obj, .off) or bundled:NAME")->required();
-        scheme.add_scheme_options(app);
+        scheme.add_scheme_options(app, kMaxRefinedFaces);
         app.add_option("--impl", impl, "Implementation (split-flip: our Loop by edge splits and flips)")
             ->check(CLI::IsMember({"core", "split-flip", "opensubdiv", "openmesh", "cgal"}))
             ->capture_default_str();
@@ -470,7 +468,7 @@ struct CompareArgs {
     std::string subject_result;
     void add_to(CLI::App& app) {
         app.add_option("inputs", inputs, "Mesh files, bundled:NAME, bundled:all, course:all, cgal:all")->required();
-        scheme.add_scheme_options(app);
+        scheme.add_scheme_options(app, kMaxComparedFaces);
         app.add_option("--against", against,
                        "Comma-separated references (default: every one that has the scheme; sqrt3 also has "
                        "openmesh-one-call and cgal-one-call, all levels in one call)");
@@ -512,7 +510,7 @@ struct DiffArgs {
     ProgramArgs programs;
     void add_to(CLI::App& app) {
         app.add_option("input", input, "Mesh file, bundled:NAME or edgecase:NAME")->required();
-        scheme.add_scheme_options(app);
+        scheme.add_scheme_options(app, kMaxComparedFaces);
         app.add_option("--against", against,
                        "The reference that diverges (with --subject and no --against: shrink what the subject does "
                        "that no named rule explains, or its failure)");

@@ -14,6 +14,7 @@
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/verification/properties/butterfly_properties.h"
 #include "crossdiv/verification/harness/inputs.h"
+#include "crossdiv/verification/harness/output_size.h"
 #include "crossdiv/subdiv/limit.h"
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/verification/comparisons/limit_comparison.h"
@@ -25,23 +26,6 @@ namespace crossdiv::cli {
 namespace {
 
 using namespace crossdiv::verification;
-
-/// Refuses before any work an output past the same face limit as Loop. The first level makes
-/// one face per corner (Catmull-Clark), faces + edges + vertices <= 2 corners (Doo-Sabin), two
-/// per edge (sqrt3, at most 3 per face) or 4 per triangle (the Butterflies); later levels
-/// multiply by 3 (sqrt3) or at most 4 (the others).
-void check_output_size(const PolyMesh& mesh, Scheme scheme, int levels, const std::string& name) {
-    const long long corners = static_cast<long long>(mesh.face_vertices.size());
-    long long faces = scheme == Scheme::CatmullClark ? corners
-                      : scheme == Scheme::DooSabin   ? 2 * corners
-                      : scheme == Scheme::Sqrt3      ? 3LL * mesh.num_faces()
-                                                     : 4LL * mesh.num_faces();
-    for (int l = 1; l < levels; ++l) faces *= scheme == Scheme::Sqrt3 ? 3 : 4;
-    constexpr long long kMaxOutputFaces = 64LL << 20;
-    if (levels > 0 && faces > kMaxOutputFaces)
-        throw InputError(name + ": " + std::to_string(levels) + " levels would produce " + std::to_string(faces) +
-                         " faces, over the limit of " + std::to_string(kMaxOutputFaces) + "; use fewer levels");
-}
 
 std::vector<std::string> split_commas(const std::string& s) {
     std::vector<std::string> out;
@@ -103,7 +87,7 @@ int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const s
     SchemeRule rule_asked = rule_from_boundary_name(scheme, s.boundary);
     rule_asked.catmull_clark.creasing = crease_method(s.creasing, mesh);
     const std::string asked = rule_name(scheme, rule_asked);
-    check_output_size(mesh, scheme, s.levels, in);
+    require_refined_size(mesh, scheme, s.levels, s.max_faces, in, "--max-faces");
     PolyMesh result;
     if (impl == "core") {
         result = subdivide(scheme, rule_asked, mesh, s.levels);
@@ -145,7 +129,7 @@ int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeAr
     std::vector<PolyMesh> meshes;
     for (const std::string& in : inputs) {
         meshes.push_back(load_input(in));
-        check_output_size(meshes.back(), req.scheme, s.levels, in);
+        require_refined_size(meshes.back(), req.scheme, s.levels, s.max_faces, in, "--max-faces");
     }
     nlohmann::json results = nlohmann::json::array();
     bool all_agree = true;
@@ -225,7 +209,8 @@ std::pair<int, int> valence_range(const std::string& s) {
 int run_limit(const LimitArgs& a) {
     const PolyMesh mesh = load_input(a.input);
     if (a.levels < 0 || a.levels > 8) throw InputError("--levels must be in 0..8");
-    check_output_size(mesh, Scheme::CatmullClark, a.levels, a.input);  // Loop grows as fast
+    require_refined_size(mesh, Scheme::CatmullClark, a.levels, kMaxRefinedFaces, a.input,
+                         "the limit command's fixed bound");  // Loop grows as fast
     if (!mesh.creases.empty())
         throw InputError(a.input + " has crease or corner tags; limit positions under creases are not implemented "
                          "(the limit masks here are the smooth and boundary ones); use subdivide");

@@ -19,6 +19,7 @@ struct PolySchemeArgs {
     std::string scheme, boundary;
     int levels = 1;
     std::string creasing;  ///< --crease-method; empty: the file's, else uniform
+    long long max_faces = 0;  ///< --max-faces: the final level's face limit
 };
 
 /// The crease decay a run uses: `--crease-method` when given, else the input's

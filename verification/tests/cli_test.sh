@@ -39,6 +39,9 @@ expect quad 2 'face 0 \(.*quad.obj:5\): has 4 corners; Loop subdivision needs tr
 expect non-manifold 2 'edge \(0, 1\) is shared by 3 triangles' -- "$crossdiv" compare "$tmp/nonmanifold.obj" --levels 1
 expect check-lists-issues 2 'error \[non-manifold-edge\]' -- "$crossdiv" check "$tmp/nonmanifold.obj"
 expect too-many-levels 2 'would produce 335544320 faces, over the limit' -- "$crossdiv" subdivide bundled:icosahedron --levels 12 -o "$tmp/x.obj"
+expect compare-max-faces 2 'bundled:icosahedron: 3 levels would produce 1280 faces, over the limit of 1000 \(--max-faces\)' -- "$crossdiv" compare bundled:icosahedron --levels 3 --max-faces 1000
+expect cc-max-faces 2 'would produce 96 faces, over the limit of 95' -- "$crossdiv" subdivide bundled:quad-cube --scheme catmull-clark --levels 2 --max-faces 95 -o "$tmp/x.obj"
+expect mistyped-input 2 "'cgal:fandisk' is neither a file nor a known input name" -- "$crossdiv" check cgal:fandisk
 expect missing-file 2 'cannot open file' -- "$crossdiv" compare "$tmp/none.obj"
 expect unknown-option 2 'weights' -- "$crossdiv" compare bundled:tetrahedron --weights cubic
 expect agree 0 'every reference agrees' -- "$crossdiv" compare bundled:icosahedron --levels 3 --json "$tmp/r.json"

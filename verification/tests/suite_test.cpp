@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <regex>
 #include <unistd.h>
 #include <set>
@@ -14,7 +15,9 @@
 #include "crossdiv/verification/bench/bench.h"
 #include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/verification/comparisons/shrink.h"
+#include "crossdiv/verification/harness/inputs.h"
 #include "crossdiv/verification/harness/json_text.h"
+#include "crossdiv/verification/harness/output_size.h"
 #include "crossdiv/verification/suite/manifest.h"
 #include "crossdiv/verification/suite/outputs.h"
 #include "crossdiv/verification/suite/runner.h"
@@ -72,6 +75,8 @@ TEST(Manifest, ErrorsNameTheFileAndLine) {
         {"suite s\nrun everything\n", ":2: unknown statement 'run'"},
         {"case bundled:all loop\n", ":1: the manifest has no 'suite NAME' line"},
         {"suite s\ncase nope:all loop\n", "unknown collection 'nope:all'"},
+        {"suite s\nmax-faces 0\n", ":2: max-faces 0 is not a positive integer"},
+        {"suite s\nmax-faces 9223372036854775808\n", ":2: max-faces 9223372036854775808 is not a positive integer"},
     };
     for (const auto& [text, message] : bad) {
         const std::string path = write(d / "bad.suite", text);
@@ -140,6 +145,48 @@ TEST(Suite, RunsInWorkersAndRecordsEachOutcome) {
     ASSERT_TRUE(om.detail.contains("error_field"));
     EXPECT_TRUE(fs::exists(d / om.detail["error_field"].get<std::string>()));
     EXPECT_EQ(recs[1].detail["worst_vertex"]["valence"], 2);
+}
+
+TEST(Suite, AJobPastMaxFacesIsRefusedBeforeAnyWorkAndTheOthersRun) {
+    // The tetrahedron makes 4 * 4^2 = 64 faces at level 2, the octahedron 128: a limit of
+    // 100 refuses the second alone, with the count, and every output is still written.
+    const fs::path d = temp_dir("maxfaces");
+    const Manifest m = read_manifest(write(d / "m.suite", "suite m\nmax-faces 100\n"
+                                                          "case bundled:tetrahedron,bundled:octahedron loop levels=2\n"));
+    EXPECT_EQ(m.max_faces, 100);
+    const std::vector<CaseRecord> recs = run_jobs(expand_jobs(m), 1, d.string(), [](int, int, const CaseRecord&) {});
+    ASSERT_EQ(recs.size(), 2u);
+    EXPECT_EQ(recs[0].core_error, "");
+    for (const RunRecord& r : recs[0].runs) EXPECT_EQ(outcome_label(recs[0], r), "agree");
+    EXPECT_EQ(outcome_label(recs[1]), "ours-rejected");
+    EXPECT_EQ(recs[1].core_error, "bundled:octahedron: 2 levels would produce 128 faces, over the limit of 100 "
+                                  "(the manifest's max-faces); use fewer levels or raise the limit");
+    write_suite_outputs((d / "out").string(), {{"tool", "crossdiv suite"}, {"suite", "m"}}, recs);
+    for (const char* f : {"results.json", "results.csv", "junit.xml"}) EXPECT_TRUE(fs::exists(d / "out" / f)) << f;
+}
+
+TEST(Inputs, AMistypedInputNameIsNamedAsSuchNotAsAFileFormat) {
+    try {
+        load_input("cgal:fandisk");
+        ADD_FAILURE() << "accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("'cgal:fandisk' is neither a file nor a known input name"), std::string::npos)
+            << e.what();
+    }
+}
+
+TEST(OutputSize, TheFinalLevelIsCountedBeforeAnyWork) {
+    const PolyMesh tetra = datasets::bundled_mesh("tetrahedron");  // 4 triangles, 12 corners
+    EXPECT_EQ(refined_face_count(tetra, Scheme::Loop, 0), 4);
+    EXPECT_EQ(refined_face_count(tetra, Scheme::Loop, 3), 4 * 64);
+    EXPECT_EQ(refined_face_count(tetra, Scheme::Butterfly, 1), 16);
+    EXPECT_EQ(refined_face_count(tetra, Scheme::CatmullClark, 2), 12 * 4);  // a quad per corner, then 4 per quad
+    EXPECT_EQ(refined_face_count(tetra, Scheme::Sqrt3, 2), 4 * 3 * 3);
+    EXPECT_EQ(refined_face_count(tetra, Scheme::DooSabin, 1), 24);          // an upper bound: F + E + V = 14
+    // Saturates instead of wrapping: 4 * 4^40 faces do not fit in 64 bits.
+    EXPECT_EQ(refined_face_count(tetra, Scheme::Loop, 41), std::numeric_limits<long long>::max());
+    EXPECT_NO_THROW(require_refined_size(tetra, Scheme::Loop, 3, 256, "t", "--max-faces"));
+    EXPECT_THROW(require_refined_size(tetra, Scheme::Loop, 3, 255, "t", "--max-faces"), InputError);
 }
 
 TEST(Suite, AJobLineCountsFailuresAsTheSummaryDoes) {

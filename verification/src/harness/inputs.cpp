@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
 
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/datasets/edge_cases.h"
@@ -39,6 +40,13 @@ PolyMesh load_input(const std::string& spec) {
     if (spec.starts_with("bundled:")) return datasets::bundled_mesh(spec.substr(8));
     if (spec.starts_with("edgecase:")) return datasets::edge_case(spec.substr(9)).mesh;
     if (std::optional<PolyMesh> m = read_with_input_adapter(spec)) return std::move(*m);
+    // A word and a colon that is no file (cgal:fandisk) reads as a mistyped input name, not
+    // as a file of unknown format.
+    if (const size_t colon = spec.find(':'); colon != std::string::npos && colon > 0 &&
+                                             spec.find('/') > colon && !std::filesystem::exists(spec))
+        throw InputError("'" + spec + "' is neither a file nor a known input name (known: bundled:NAME, " +
+                         "edgecase:NAME, and the collections bundled:all, polygons:all, edgecases:all, " +
+                         "course:all, meshedit:all, cgal:all)");
     return read_mesh(spec);
 }
 

@@ -1,5 +1,6 @@
 #include "crossdiv/verification/suite/manifest.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -266,6 +267,12 @@ Manifest read_manifest(std::istream& in, const std::string& path, const std::str
             if (!(words >> v)) throw ParseError(path, line, "expected: timeout SECONDS");
             m.timeout_seconds = parse_number(path, line, "timeout", v);
             if (m.timeout_seconds <= 0) throw ParseError(path, line, "timeout must be positive");
+        } else if (keyword == "max-faces") {
+            std::string v;
+            if (!(words >> v)) throw ParseError(path, line, "expected: max-faces N");
+            const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), m.max_faces);
+            if (ec != std::errc() || end != v.data() + v.size() || m.max_faces <= 0)
+                throw ParseError(path, line, "max-faces " + v + " is not a positive integer below 2^63");
         } else if (keyword == "case") {
             m.entries.push_back(parse_case(path, line, words));
             m.entries.back().subject = subject;
@@ -273,13 +280,16 @@ Manifest read_manifest(std::istream& in, const std::string& path, const std::str
                 throw ParseError(path, line, "a subject is compared in the loop operation only; put the " +
                                                  m.entries.back().operation->name + " cases before the subject statement");
         } else {
-            throw ParseError(path, line, "unknown statement '" + keyword + "' (known: suite, timeout, reference, subject, case)");
+            throw ParseError(path, line, "unknown statement '" + keyword + "' (known: suite, timeout, max-faces, reference, subject, case)");
         }
         if (std::string extra; keyword != "case" && (words >> extra))
             throw ParseError(path, line, "unexpected '" + extra + "'");
     }
     if (m.name.empty()) throw ParseError(path, 1, "the manifest has no 'suite NAME' line");
-    for (ManifestEntry& e : m.entries) e.request.timeout_seconds = m.timeout_seconds;
+    for (ManifestEntry& e : m.entries) {
+        e.request.timeout_seconds = m.timeout_seconds;
+        e.max_faces = m.max_faces;
+    }
     return m;
 }
 

@@ -6,6 +6,7 @@
 #include "crossdiv/error.h"
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/verification/harness/inputs.h"
+#include "crossdiv/verification/harness/output_size.h"
 #include "crossdiv/verification/implementations/program_implementation.h"
 #include "crossdiv/verification/properties/curve_checks.h"
 #include "crossdiv/verification/properties/surface_checks.h"
@@ -55,7 +56,9 @@ CaseRecord run_loop(const SuiteJob& job, const std::string& out_dir) {
             req.subject = result_file.get();
         }
     }
-    const TriMesh mesh = to_tri_mesh(load_input(job.input), "Loop subdivision");
+    const PolyMesh input = load_input(job.input);
+    require_refined_size(input, Scheme::Loop, req.levels, job.entry->max_faces, job.input, "the manifest's max-faces");
+    const TriMesh mesh = to_tri_mesh(input, "Loop subdivision");
     std::string refused;
     try {
         loop_input_connectivity(mesh);

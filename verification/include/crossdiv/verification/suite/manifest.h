@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "crossdiv/verification/comparisons/loop_comparison.h"
+#include "crossdiv/verification/harness/output_size.h"
 #include "crossdiv/verification/implementations/program_implementation.h"
 
 namespace crossdiv::verification {
@@ -36,12 +37,16 @@ struct ManifestEntry {
     LoopComparisonRequest request;     ///< loop: rules, levels, references, tier, tolerance
     /// The implementation under test (the last `subject` statement before the case); none: core.
     std::shared_ptr<const ManifestSubject> subject;
+    /// loop: a job whose final level would have more faces is refused before any work
+    /// (the manifest's `max-faces` statement; harness/output_size.h).
+    long long max_faces = kMaxComparedFaces;
 };
 
 struct Manifest {
     std::string file;  ///< where it was read from
     std::string name;  ///< the `suite` line
     double timeout_seconds = 60;
+    long long max_faces = kMaxComparedFaces;  ///< the `max-faces` statement, given to every case
     std::vector<ManifestEntry> entries;
     /// The names of the `reference` statements, registered in the registry as they were read.
     std::vector<std::string> references;
