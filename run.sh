@@ -70,7 +70,8 @@ case "${1:-}" in
     export LSAN_OPTIONS="suppressions=$PWD/fuzz/sanitizer-suppressions.txt"
     export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
     ctest --test-dir build-sanitize --output-on-failure -j2
-    fuzz/run_fuzzers.sh build-sanitize "${2:-30}"
+    # Two targets at a time: one per core of the 2-core machines this runs on.
+    CROSSDIV_FUZZ_PARALLEL=2 fuzz/run_fuzzers.sh build-sanitize "${2:-30}"
     ;;
   *)
     echo "usage: $0 main|test|sanitize [SECONDS]" >&2
