@@ -183,11 +183,13 @@ void print_table(const LoopComparison& c) {
     fmt::print("\n{} ({} vertices, {} faces) loop weights={} boundary={} levels={} (core {:.3f} s)\n", c.input,
                c.input_vertices, c.input_faces, to_string(c.options.weights), to_string(c.options.boundary), c.levels,
                c.core_seconds);
+    if (!c.core_error.empty()) fmt::print("  core refuses the input: {}\n", c.core_error);
     if (c.subject != "core") print_subject(c);
     fmt::print("  {:<11} {:<9} {:<13} {:<9} {:<8} {:>10} {:>10}  {}\n", "reference", "status", "verdict", "match",
                "topology", "max rel", "rms rel", "class / explanation");
     for (const ReferenceRun& r : c.runs) {
-        const bool ok = r.outcome.status == RunStatus::Ok;
+        // Measured columns only where both refined: not when core refused the input.
+        const bool ok = r.outcome.status == RunStatus::Ok && r.verdict != Verdict::OursRejected;
         fmt::print("  {:<11} {:<9} {:<13} {:<9} {:<8} {:>10} {:>10}  {}{}\n", r.reference,
                    to_string(r.outcome.status), to_string(r.verdict),
                    ok ? to_string(r.correspondence.method) : "-",
@@ -267,11 +269,14 @@ int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, cons
 
     const std::vector<std::string> inputs = expand_inputs(specs);
     if (inputs.empty()) throw InputError("no inputs (a collection folder may be absent)");
-    // Load and validate every input before running anything: bad input is exit 2.
-    // Crease-tagged inputs are compared with OpenSubdiv alone, level by level (the Loop
-    // comparison's other references have no crease rules).
+    // Load every input before running anything: a file that cannot be read, or is not a
+    // triangle mesh, is bad input (exit 2). A triangle mesh whose topology core refuses
+    // (non-manifold, degenerate) is a recorded outcome, as in the suite: the references still
+    // run on it and the batch goes on. Crease-tagged inputs are compared with OpenSubdiv
+    // alone, level by level (the Loop comparison's other references have no crease rules).
     std::vector<TriMesh> meshes;
     std::vector<PolyMesh> tagged(inputs.size());
+    std::vector<std::string> refused(inputs.size());
     for (size_t i = 0; i < inputs.size(); ++i) {
         PolyMesh m = load_input(inputs[i]);
         s.require_size(m, inputs[i]);
@@ -281,7 +286,11 @@ int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, cons
             continue;
         }
         meshes.push_back(to_tri_mesh(m, "Loop subdivision"));
-        loop_input_connectivity(meshes.back());
+        try {
+            loop_input_connectivity(meshes.back());
+        } catch (const InputError& e) {
+            refused[i] = e.what();
+        }
     }
     nlohmann::json results = nlohmann::json::array();
     bool all_agree = true;
@@ -299,7 +308,13 @@ int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, cons
             results.push_back(record);
             continue;
         }
-        const LoopComparison c = compare_loop(meshes[i], inputs[i], req);
+        if (!refused[i].empty() && subject) {
+            fmt::print("\n{}: core refuses it ({}); a subject is measured where core refines (skipped)\n", inputs[i],
+                       refused[i]);
+            continue;
+        }
+        const LoopComparison c = refused[i].empty() ? compare_loop(meshes[i], inputs[i], req)
+                                                    : compare_loop_refused(meshes[i], inputs[i], req, refused[i]);
         print_table(c);
         if (!subject_command.empty() && symptom_of_subject(c))
             fmt::print("  shrink it:   crossdiv diff {} --levels {} --weights {} --boundary {} --subject-name {} --subject '{}'\n",
