@@ -123,9 +123,8 @@ TEST(MeshIo, ObjReadsOpenSubdivCreaseTags) {
     ASSERT_EQ(m.creases.vertices.size(), 2u);
     EXPECT_EQ(m.creases.vertices[1], (SharpVertex{3, 4.0f}));  // one value for all
     EXPECT_EQ(m.creases.method, CreaseMethod::Chaikin);
-    ASSERT_EQ(m.source.notes.size(), 1u);  // interpolateboundary is not ours: said, not dropped silently
-    EXPECT_EQ(m.source.notes[0],
-              "ignored tag 'interpolateboundary' at t.obj:10 (only crease, corner and creasemethod are read)");
+    EXPECT_EQ(m.creases.boundary, BoundaryTag::EdgeOnly);  // 2 is edge-only in OpenSubdiv's reader
+    EXPECT_TRUE(m.source.notes.empty());
 
     // Written back in the same format, they read back equal.
     std::ostringstream out;
@@ -134,6 +133,7 @@ TEST(MeshIo, ObjReadsOpenSubdivCreaseTags) {
     EXPECT_EQ(back.creases.edges, m.creases.edges);
     EXPECT_EQ(back.creases.vertices, m.creases.vertices);
     EXPECT_EQ(back.creases.method, m.creases.method);
+    EXPECT_EQ(back.creases.boundary, m.creases.boundary);
 
     EXPECT_EQ(obj_error(quad + "t crease 2/1/0 0 9 1\n"),
               "t.obj:6: tag vertex index 9 out of range: tags count from 0 and the file has 4 vertices");
@@ -147,6 +147,37 @@ TEST(MeshIo, ObjReadsOpenSubdivCreaseTags) {
               "t.obj:6: tag 'crease': expected counts as nint/nfloat/nstring, got '2-1-0'");
     EXPECT_EQ(obj_error(quad + "t creasemethod 0/0/1 smooth\n"),
               "t.obj:6: tag 'creasemethod': expects one string, 'normal' or 'chaikin'");
+}
+
+TEST(MeshIo, ObjReadsHoleBoundaryAndTriangleTagsAndKeepsUnknownOnesForTheCaller) {
+    const std::string two_quads = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nv 2 1 0\nf 1 2 3 4\nf 2 5 6 3\n";
+    const PolyMesh m = obj(two_quads + "t hole 2/0/0 1 1\nt hole 1/0/0 0\nt interpolateboundary 1/0/0 0\n" +
+                           "t smoothtriangles 0/0/1 smooth\nt facevaryingpropagatecorners 1/0/0 1\n" +
+                           "t vertexedit 1/0/0 3\n");
+    EXPECT_EQ(m.creases.holes, (std::vector<int>{0, 1}));  // sorted, each once
+    EXPECT_FALSE(m.creases.empty());                       // holes need the tagged refinement
+    EXPECT_EQ(m.creases.describe(), "0 crease, 0 corner and 2 hole tag(s)");
+    EXPECT_EQ(m.creases.boundary, BoundaryTag::None);
+    EXPECT_EQ(m.creases.smooth_triangles, true);
+    ASSERT_EQ(m.source.notes.size(), 1u);  // the face-varying tag: read, said to change nothing here
+    EXPECT_NE(m.source.notes[0].find("'facevaryingpropagatecorners' at t.obj:13 concerns face-varying data"),
+              std::string::npos);
+    EXPECT_EQ(m.source.unknown_tags, std::vector<std::string>{"'vertexedit' at t.obj:14"});
+
+    std::ostringstream out;
+    write_obj(out, m);
+    const PolyMesh back = obj(out.str());
+    EXPECT_EQ(back.creases.holes, m.creases.holes);
+    EXPECT_EQ(back.creases.boundary, m.creases.boundary);
+    EXPECT_EQ(back.creases.smooth_triangles, m.creases.smooth_triangles);
+
+    EXPECT_EQ(obj_error(two_quads + "t hole 1/0/0 2\n"),
+              "t.obj:9: tag face index 2 out of range: tags count from 0 and the file has 2 faces");
+    EXPECT_EQ(obj_error(two_quads + "t hole 0/0/0\n"), "t.obj:9: tag 'hole': needs at least one face index");
+    EXPECT_EQ(obj_error(two_quads + "t interpolateboundary 1/0/0 3\n"),
+              "t.obj:9: tag 'interpolateboundary': expects one integer, 0 (none), 1 (edge-and-corner) or 2 (edge-only)");
+    EXPECT_EQ(obj_error(two_quads + "t smoothtriangles 0/0/1 loop\n"),
+              "t.obj:9: tag 'smoothtriangles': expects one string, 'smooth' or 'catmark'");
 }
 
 TEST(MeshIo, OffErrorsNameFileAndLine) {

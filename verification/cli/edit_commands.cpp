@@ -61,7 +61,7 @@ int print_issues(const HalfedgeMesh& he, const std::string& after) {
 }  // namespace
 
 int run_edit(const EditArgs& a) {
-    const TriMesh mesh = to_tri_mesh(verification::load_input(a.input), "edit");
+    const TriMesh mesh = to_tri_mesh(verification::load_input(a.input, verification::UnknownTags::Ignore), "edit");
     HalfedgeMesh he = HalfedgeMesh::from_triangles(mesh);
     std::vector<Vec3> pos = mesh.positions;
     int refused = 0, invalid = 0;
@@ -102,7 +102,7 @@ void NormalsArgs::add_to(CLI::App& app) {
 }
 
 int run_normals(const NormalsArgs& a) {
-    const TriMesh mesh = to_tri_mesh(verification::load_input(a.input), "vertex normals");
+    const TriMesh mesh = to_tri_mesh(verification::load_input(a.input, verification::UnknownTags::Ignore), "vertex normals");
     std::vector<std::string> refs;
     for (size_t start = 0; start < a.against.size();) {
         const size_t comma = std::min(a.against.find(',', start), a.against.size());

@@ -21,6 +21,8 @@
 #include "crossdiv/verification/comparisons/shrink.h"
 #include "crossdiv/verification/harness/inputs.h"
 #include "crossdiv/verification/harness/output_size.h"
+#include "crossdiv/verification/implementations/tag_rules.h"
+#include "crossdiv/subdiv/hole_faces.h"
 #include "crossdiv/verification/implementations/program_implementation.h"
 #include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/verification/suite/manifest.h"
@@ -39,6 +41,7 @@ struct SchemeArgs {
     int levels = 1;
     std::string creasing;  ///< empty: the input's t creasemethod tag, else uniform
     long long max_faces = kMaxRefinedFaces;
+    bool ignore_unknown_tags = false;
 
     /// The scheme options; `max_faces_default` is the command's --max-faces default
     /// (harness/output_size.h: one implementation alone, or several side by side).
@@ -56,22 +59,27 @@ struct SchemeArgs {
                        "midpoint-average (OpenMesh's); doo-sabin: chaikin-boundary (default) or drop-border-faces "
                        "(CGAL's); sqrt3, when the boundary is refined: count-from-input (default) or "
                        "restart-each-level (a library called once per level); the Butterflies, for a wing point "
-                       "beyond the boundary: reflected-wings (default) or opposite-vertex-wings (MeshLab's)")
+                       "beyond the boundary: reflected-wings (default) or opposite-vertex-wings (MeshLab's); loop and "
+                       "catmull-clark also none (OpenSubdiv's VTX_BOUNDARY_NONE: edge-only, the faces at the boundary "
+                       "not emitted). Default: the file's 't interpolateboundary' tag, else the scheme's default")
             ->check(CLI::IsMember({"edge-only", "edge-and-corner", "midpoint-average", "chaikin-boundary",
                                    "drop-border-faces", "count-from-input", "restart-each-level", "reflected-wings",
-                                   "opposite-vertex-wings"}));
+                                   "opposite-vertex-wings", "none"}));
         app.add_option("--levels", levels, "Number of subdivision levels")->check(CLI::Range(0, 12))->capture_default_str();
         app.add_option("--crease-method", creasing,
                        "Decay of semi-sharp crease tags (loop, catmull-clark): uniform (OpenSubdiv's default) or "
                        "chaikin. Default: the input's 't creasemethod' tag, else uniform")
             ->check(CLI::IsMember({"uniform", "chaikin"}));
+        app.add_flag("--ignore-unknown-tags", ignore_unknown_tags,
+                     "Refine a shape file whose tags include one crossdiv does not know, without it (each is noted)");
         max_faces = max_faces_default;
         app.add_option("--max-faces", max_faces,
                        "Refuse, before any work, a refinement whose final level would have more faces than this")
             ->check(CLI::PositiveNumber)
             ->capture_default_str();
     }
-    PolySchemeArgs poly() const { return {scheme, boundary, levels, creasing, max_faces}; }
+    PolySchemeArgs poly() const { return {scheme, boundary, levels, creasing, max_faces, tag_policy()}; }
+    UnknownTags tag_policy() const { return ignore_unknown_tags ? UnknownTags::Ignore : UnknownTags::Refuse; }
     /// @throws InputError when `levels` of this scheme on `mesh` pass --max-faces.
     void require_size(const PolyMesh& mesh, const std::string& name) const {
         require_refined_size(mesh, scheme_from_string(scheme), levels, max_faces, name, "--max-faces");
@@ -105,23 +113,35 @@ int run_loop_subdivide_creased(const std::string& in, const PolyMesh& input, con
             throw InputError(impl + " refused " + in + ": " + e.what());
         }
     } else {
-        throw InputError(in + " has crease or corner tags; " + impl +
-                         " has no crease rules (core and opensubdiv have; drop the tags to compare the smooth scheme)");
+        throw InputError(in + " has " + input.creases.describe() + "; " + impl +
+                         " has no crease or hole rules (core and opensubdiv have; drop the tags to compare the smooth "
+                         "scheme)");
     }
-    write_mesh(out, result);
-    fmt::print("{}: {} vertices, {} faces, {} crease and {} corner tag(s) -> {} ({} vertices, {} faces, {} level(s), "
-               "{} decay, {})\n",
-               in, input.num_vertices(), input.num_faces(), input.creases.edges.size(), input.creases.vertices.size(),
-               out, result.num_vertices(), result.num_faces(), s.levels, to_string(o.creasing), impl);
+    // Hole faces were refined around; they are not emitted (OpenSubdiv's convention).
+    const PolyMesh emitted = without_hole_faces(result);
+    write_mesh(out, emitted);
+    fmt::print("{}: {} vertices, {} faces, {} -> {} ({} vertices, {} faces, {} level(s), {} decay, {})\n", in,
+               input.num_vertices(), input.num_faces(), input.creases.describe(), out, emitted.num_vertices(),
+               emitted.num_faces(), s.levels, to_string(o.creasing), impl);
     return 0;
 }
 
-int run_subdivide(const std::string& in, const SchemeArgs& s, const std::string& impl, const std::string& out) {
-    if (s.scheme != "loop") {
-        if (impl == "split-flip") throw InputError("split-flip is Loop's method; " + s.scheme + " has none");
-        return run_scheme_subdivide(in, s.poly(), impl, out);
+/// `flags` with the boundary rule `input`'s tags ask for (tag_rules.h), the notes printed.
+SchemeArgs with_tag_rules(const SchemeArgs& flags, PolyMesh& input) {
+    SchemeArgs s = flags;
+    const TagRules tags = resolve_tag_rules(Scheme::Loop, flags.boundary, input);
+    for (const std::string& note : tags.notes) fmt::print("note: {}\n", note);
+    s.boundary = tags.boundary;
+    return s;
+}
+
+int run_subdivide(const std::string& in, const SchemeArgs& flags, const std::string& impl, const std::string& out) {
+    if (flags.scheme != "loop") {
+        if (impl == "split-flip") throw InputError("split-flip is Loop's method; " + flags.scheme + " has none");
+        return run_scheme_subdivide(in, flags.poly(), impl, out);
     }
-    const PolyMesh input = load_input(in);
+    PolyMesh input = load_input(in, flags.tag_policy());
+    const SchemeArgs s = with_tag_rules(flags, input);
     if (!input.creases.empty()) return run_loop_subdivide_creased(in, input, s, impl, out);
     s.require_size(input, in);
     const TriMesh mesh = to_tri_mesh(input, "Loop subdivision");
@@ -277,9 +297,11 @@ int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, cons
     std::vector<TriMesh> meshes;
     std::vector<PolyMesh> tagged(inputs.size());
     std::vector<std::string> refused(inputs.size());
+    std::vector<SchemeArgs> rules(inputs.size(), s);  // each input's, its tags resolved
     for (size_t i = 0; i < inputs.size(); ++i) {
-        PolyMesh m = load_input(inputs[i]);
+        PolyMesh m = load_input(inputs[i], s.tag_policy());
         s.require_size(m, inputs[i]);
+        rules[i] = with_tag_rules(s, m);
         if (!m.creases.empty()) {
             tagged[i] = std::move(m);
             meshes.emplace_back();
@@ -298,11 +320,12 @@ int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, cons
     for (size_t i = 0; i < inputs.size(); ++i) {
         if (!tagged[i].creases.empty()) {
             if (subject) {
-                fmt::print("\n{}: crease tags; a subject is compared on untagged meshes so far (skipped)\n", inputs[i]);
+                fmt::print("\n{}: {}; a subject is compared on untagged meshes so far (skipped)\n", inputs[i],
+                           tagged[i].creases.describe());
                 continue;
             }
             nlohmann::json record;
-            all_agree &= compare_loop_creases(tagged[i], inputs[i], s.weights, s.boundary,
+            all_agree &= compare_loop_creases(tagged[i], inputs[i], s.weights, rules[i].boundary,
                                                    crease_method(s.creasing, tagged[i]), s.levels, timeout,
                                                    !no_isolate, record);
             results.push_back(record);
@@ -313,8 +336,10 @@ int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, cons
                        refused[i]);
             continue;
         }
-        const LoopComparison c = refused[i].empty() ? compare_loop(meshes[i], inputs[i], req)
-                                                    : compare_loop_refused(meshes[i], inputs[i], req, refused[i]);
+        LoopComparisonRequest this_req = req;
+        this_req.options = rules[i].options();
+        const LoopComparison c = refused[i].empty() ? compare_loop(meshes[i], inputs[i], this_req)
+                                                    : compare_loop_refused(meshes[i], inputs[i], this_req, refused[i]);
         print_table(c);
         if (!subject_command.empty() && symptom_of_subject(c))
             fmt::print("  shrink it:   crossdiv diff {} --levels {} --weights {} --boundary {} --subject-name {} --subject '{}'\n",
@@ -335,7 +360,8 @@ int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, cons
 }
 
 int run_check(const std::string& in) {
-    const PolyMesh mesh = load_input(in);
+    // Every problem is listed, an unknown tag among them (as a note), rather than stopping at it.
+    const PolyMesh mesh = load_input(in, UnknownTags::Ignore);
     const auto issues = check_mesh(mesh);
     int errors = 0;
     for (const std::string& note : mesh.source.notes) fmt::print("note: {}\n", note);
@@ -369,9 +395,10 @@ int run_edgecases(const std::string& dir) {
     return 0;
 }
 
-int run_diff(const std::string& in, const SchemeArgs& s, const std::string& against, const std::string& out_dir,
+int run_diff(const std::string& in, const SchemeArgs& flags, const std::string& against, const std::string& out_dir,
              const Implementation* subject, double timeout, const std::string& subject_command) {
-    const PolyMesh input = load_input(in);
+    PolyMesh input = load_input(in, flags.tag_policy());
+    const SchemeArgs s = with_tag_rules(flags, input);
     s.require_size(input, in);
     const TriMesh mesh = to_tri_mesh(input, "Loop subdivision");
     loop_input_connectivity(mesh);

@@ -15,6 +15,8 @@
 #include "crossdiv/verification/properties/butterfly_properties.h"
 #include "crossdiv/verification/harness/inputs.h"
 #include "crossdiv/verification/harness/output_size.h"
+#include "crossdiv/verification/implementations/tag_rules.h"
+#include "crossdiv/subdiv/hole_faces.h"
 #include "crossdiv/subdiv/limit.h"
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/verification/comparisons/limit_comparison.h"
@@ -26,6 +28,17 @@ namespace crossdiv::cli {
 namespace {
 
 using namespace crossdiv::verification;
+
+/// The rule a run uses on `mesh`: the flags, the file's tags where no flag is given
+/// (tag_rules.h; `none` tags the boundary faces of `mesh` as holes), the notes printed.
+SchemeRule rule_with_tags(Scheme scheme, const PolySchemeArgs& s, PolyMesh& mesh) {
+    const TagRules tags = resolve_tag_rules(scheme, s.boundary, mesh);
+    for (const std::string& note : tags.notes) fmt::print("note: {}\n", note);
+    SchemeRule rule = rule_from_boundary_name(scheme, tags.boundary);
+    rule.catmull_clark.creasing = crease_method(s.creasing, mesh);
+    rule.catmull_clark.smooth_triangles = tags.smooth_triangles;
+    return rule;
+}
 
 std::vector<std::string> split_commas(const std::string& s) {
     std::vector<std::string> out;
@@ -58,17 +71,19 @@ CreaseMethod crease_method(const std::string& flag, const PolyMesh& mesh) {
 bool compare_loop_creases(const PolyMesh& mesh, const std::string& name, const std::string& weights,
                           const std::string& boundary, CreaseMethod method, int levels, double timeout, bool isolate,
                           nlohmann::json& record) {
-    if (weights != "loop" || (!boundary.empty() && boundary != "edge-only"))
-        throw InputError(name + ": creases are compared with Loop weights and the edge-only boundary (OpenSubdiv's)");
+    if (weights != "loop")
+        throw InputError(name + ": crease and hole tags are compared with Loop's weights (OpenSubdiv's)");
     CreaseRequest req;
     req.loop = true;
     req.method = method;
+    req.edge_and_corner = boundary == "edge-and-corner";
     req.levels = levels;
     req.timeout_seconds = timeout;
     req.isolate = isolate;
     const CreaseComparison c = compare_creases(mesh, name, req);
-    fmt::print("\n{} ({} vertices, {} faces) loop with {} crease and {} corner tag(s), {} decay, levels={}\n", name,
-               mesh.num_vertices(), mesh.num_faces(), c.edge_tags, c.vertex_tags, c.method, levels);
+    fmt::print("\n{} ({} vertices, {} faces) loop with {}, {} decay, boundary={}, levels={}\n", name,
+               mesh.num_vertices(), mesh.num_faces(), mesh.creases.describe(), c.method,
+               req.edge_and_corner ? "edge-and-corner" : "edge-only", levels);
     if (!c.core_error.empty()) fmt::print("  core refused: {}\n", c.core_error);
     fmt::print("  {:<11} {:<13} {:>10}  {}\n", "reference", "verdict", "max rel", "per level / explanation");
     std::string per_level;
@@ -83,9 +98,8 @@ bool compare_loop_creases(const PolyMesh& mesh, const std::string& name, const s
 
 int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const std::string& impl, const std::string& out) {
     const Scheme scheme = scheme_from_string(s.scheme);
-    const PolyMesh mesh = load_input(in);
-    SchemeRule rule_asked = rule_from_boundary_name(scheme, s.boundary);
-    rule_asked.catmull_clark.creasing = crease_method(s.creasing, mesh);
+    PolyMesh mesh = load_input(in, s.unknown_tags);
+    const SchemeRule rule_asked = rule_with_tags(scheme, s, mesh);
     const std::string asked = rule_name(scheme, rule_asked);
     require_refined_size(mesh, scheme, s.levels, s.max_faces, in, "--max-faces");
     PolyMesh result;
@@ -101,14 +115,14 @@ int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const s
         }
         if (rule != asked) fmt::print("note: {} applies the {} boundary rule, not {}\n", impl, rule, asked);
     }
-    write_mesh(out, result);
-    const std::string tags = mesh.creases.empty() ? ""
-                             : fmt::format(", {} crease and {} corner tag(s)", mesh.creases.edges.size(),
-                                           mesh.creases.vertices.size());
+    // Hole faces were refined around; they are not emitted (OpenSubdiv's convention).
+    const PolyMesh emitted = without_hole_faces(result);
+    write_mesh(out, emitted);
+    const std::string tags = mesh.creases.empty() ? "" : ", " + mesh.creases.describe();
     const std::string decay =
         mesh.creases.empty() ? "" : fmt::format(", {} decay", to_string(rule_asked.catmull_clark.creasing));
     fmt::print("{}: {} vertices, {} faces{} -> {} ({} vertices, {} faces, {} level(s){}, {} {} {})\n", in,
-               mesh.num_vertices(), mesh.num_faces(), tags, out, result.num_vertices(), result.num_faces(), s.levels,
+               mesh.num_vertices(), mesh.num_faces(), tags, out, emitted.num_vertices(), emitted.num_faces(), s.levels,
                decay, s.scheme, asked, impl);
     return 0;
 }
@@ -127,20 +141,22 @@ int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeAr
     const std::vector<std::string> inputs = expand_inputs(specs);
     if (inputs.empty()) throw InputError("no inputs (a collection folder may be absent)");
     std::vector<PolyMesh> meshes;
+    std::vector<SchemeRule> rules;  // each input's, its tags resolved
     for (const std::string& in : inputs) {
-        meshes.push_back(load_input(in));
+        meshes.push_back(load_input(in, s.unknown_tags));
         require_refined_size(meshes.back(), req.scheme, s.levels, s.max_faces, in, "--max-faces");
+        rules.push_back(rule_with_tags(req.scheme, s, meshes.back()));
     }
     nlohmann::json results = nlohmann::json::array();
     bool all_agree = true;
     for (size_t i = 0; i < inputs.size(); ++i) {
         SchemeRequest this_req = req;
-        this_req.rule.catmull_clark.creasing = crease_method(s.creasing, meshes[i]);
+        this_req.rule = rules[i];
         if (!meshes[i].creases.empty() && req.references.empty()) {
-            // Only OpenSubdiv has crease rules; the others would refuse the tags.
+            // Only OpenSubdiv has crease and hole rules; the others would refuse the tags.
             this_req.references = {"opensubdiv"};
-            fmt::print("\nnote: {} has crease tags; compared with opensubdiv, the one reference with crease rules\n",
-                       inputs[i]);
+            fmt::print("\nnote: {} has {}; compared with opensubdiv, the one reference with crease and hole rules\n",
+                       inputs[i], meshes[i].creases.describe());
         }
         const SchemeComparison c = compare_scheme(meshes[i], inputs[i], this_req);
         fmt::print("\n{} ({} vertices, {} faces) {} boundary={} levels={} (core {:.3f} s)\n", c.input, c.input_vertices,

@@ -44,6 +44,15 @@ expect too-many-levels 2 'would produce 335544320 faces, over the limit' -- "$cr
 expect compare-max-faces 2 'bundled:icosahedron: 3 levels would produce 1280 faces, over the limit of 1000 \(--max-faces\)' -- "$crossdiv" compare bundled:icosahedron --levels 3 --max-faces 1000
 expect cc-max-faces 2 'would produce 96 faces, over the limit of 95' -- "$crossdiv" subdivide bundled:quad-cube --scheme catmull-clark --levels 2 --max-faces 95 -o "$tmp/x.obj"
 expect mistyped-input 2 "'cgal:fandisk' is neither a file nor a known input name" -- "$crossdiv" check cgal:fandisk
+# Shape-file tags: an unknown one refuses (naming the line) unless told; holes are not emitted;
+# a --boundary flag wins over the file's interpolateboundary and says so.
+printf 'v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 0\nv 2 1 0\nf 1 2 5 4\nf 2 3 6 5\nt hole 1/0/0 1\nt interpolateboundary 1/0/0 1\n' > "$tmp/tagged.obj"
+cp "$tmp/tagged.obj" "$tmp/vertexedit.obj"; printf 't vertexedit 1/0/0 3\n' >> "$tmp/vertexedit.obj"
+expect unknown-tag 2 "unknown tag 'vertexedit' at .*vertexedit.obj:11" -- "$crossdiv" subdivide "$tmp/vertexedit.obj" --scheme catmull-clark -o "$tmp/x.obj"
+expect unknown-tag-ignored 0 '-> .*x.obj \(15 vertices, 4 faces' -- "$crossdiv" subdivide "$tmp/vertexedit.obj" --scheme catmull-clark --ignore-unknown-tags -o "$tmp/x.obj"
+expect hole-not-emitted 0 '1 hole tag\(s\) -> .*x.obj \(15 vertices, 4 faces, 1 level\(s\), uniform decay, catmull-clark edge-and-corner opensubdiv\)' -- "$crossdiv" subdivide "$tmp/tagged.obj" --scheme catmull-clark --impl opensubdiv -o "$tmp/x.obj"
+expect boundary-flag-wins 0 "note: --boundary edge-only wins over .*tagged.obj's 't interpolateboundary' \(edge-and-corner\)" -- "$crossdiv" compare "$tmp/tagged.obj" --scheme catmull-clark --boundary edge-only
+expect tagged-compare 0 'opensubdiv +edge-and-corner +agree' -- "$crossdiv" compare "$tmp/tagged.obj" --scheme catmull-clark --levels 2
 expect missing-file 2 'cannot open file' -- "$crossdiv" compare "$tmp/none.obj"
 expect unknown-option 2 'weights' -- "$crossdiv" compare bundled:tetrahedron --weights cubic
 expect agree 0 'every reference agrees' -- "$crossdiv" compare bundled:icosahedron --levels 3 --json "$tmp/r.json"
@@ -181,8 +190,8 @@ expect crease-compare-cc 0 'opensubdiv +edge-only +agree' -- "$crossdiv" compare
 printf 'v 1 0 0\nv -1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nv 0 0 -1\nf 1 3 5\nf 3 2 5\nf 2 4 5\nf 4 1 5\nf 3 1 6\nf 2 3 6\nf 4 2 6\nf 1 4 6\nt crease 2/1/0 0 2 1.5\nt crease 2/1/0 2 1 10\nt corner 1/1/0 4 0.5\n' > "$tmp/creased_oct.obj"
 expect crease-compare-loop 0 'opensubdiv +agree .*2 edge and 1 vertex tags, uniform decay' -- "$crossdiv" compare "$tmp/creased_oct.obj" --levels 3
 expect crease-loop-opensubdiv 0 'uniform decay, opensubdiv' -- "$crossdiv" subdivide "$tmp/creased_oct.obj" --levels 2 --impl opensubdiv -o "$tmp/x.obj"
-expect crease-loop-openmesh 2 'openmesh has no crease rules' -- "$crossdiv" subdivide "$tmp/creased_oct.obj" --levels 2 --impl openmesh -o "$tmp/x.obj"
-expect crease-sqrt3 2 'sqrt3 has no crease rules' -- "$crossdiv" subdivide "$tmp/creased_oct.obj" --scheme sqrt3 -o "$tmp/x.obj"
+expect crease-loop-openmesh 2 'openmesh has no crease or hole rules' -- "$crossdiv" subdivide "$tmp/creased_oct.obj" --levels 2 --impl openmesh -o "$tmp/x.obj"
+expect crease-sqrt3 2 'sqrt3 has no crease or hole rules' -- "$crossdiv" subdivide "$tmp/creased_oct.obj" --scheme sqrt3 -o "$tmp/x.obj"
 expect crease-limit 2 'limit positions under creases are not implemented' -- "$crossdiv" limit "$tmp/creased_oct.obj" --scheme loop
 printf 'v 1 0 0\nv -1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nv 0 0 -1\nf 1 3 5\nf 3 2 5\nf 2 4 5\nf 4 1 5\nf 3 1 6\nf 2 3 6\nf 4 2 6\nf 1 4 6\nt crease 2/1/0 4 5 2\n' > "$tmp/bad_crease.obj"
 expect crease-no-edge 2 'crease tag \(4, 5\) \(.*bad_crease.obj:15\): vertices 4 and 5 share no edge' -- "$crossdiv" subdivide "$tmp/bad_crease.obj" -o "$tmp/x.obj"

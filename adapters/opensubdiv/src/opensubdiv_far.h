@@ -75,6 +75,8 @@ inline std::unique_ptr<Far::TopologyRefiner> make_refiner(int num_vertices, cons
     desc.numCorners = static_cast<int>(corner_weights.size());
     desc.cornerVertexIndices = corner_vertices.data();
     desc.cornerWeights = corner_weights.data();
+    desc.numHoles = static_cast<int>(tags.holes.size());
+    desc.holeIndices = tags.holes.data();
     g_far_errors.clear();
     Far::SetErrorCallback(collect_far_error);
     using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
@@ -106,7 +108,7 @@ inline std::vector<Point3> base_points(const Far::TopologyRefiner& refiner, cons
     return points;
 }
 
-/// One level as a PolyMesh (Far's vertex and face order).
+/// One level as a PolyMesh (Far's vertex and face order), its hole faces as hole tags.
 inline PolyMesh level_mesh(const Far::TopologyLevel& level, const Point3* points) {
     PolyMesh m;
     m.positions.reserve(static_cast<size_t>(level.GetNumVertices()));
@@ -115,6 +117,7 @@ inline PolyMesh level_mesh(const Far::TopologyLevel& level, const Point3* points
         Far::ConstIndexArray fv = level.GetFaceVertices(f);
         for (int k = 0; k < fv.size(); ++k) m.face_vertices.push_back(fv[k]);
         m.face_start.push_back(static_cast<int>(m.face_vertices.size()));
+        if (level.IsFaceHole(f)) m.creases.holes.push_back(f);
     }
     return m;
 }

@@ -19,7 +19,9 @@ namespace {
 Sdc::Options catmark_options(const CatmullClarkOptions& options) {
     if (!supports(options))
         throw Rejected("OpenSubdiv's Catmull-Clark has no midpoint-average boundary rule (OpenMesh's)");
-    return sdc_options(options.boundary == CatmullClarkBoundary::EdgeAndCorner, options.creasing);
+    Sdc::Options sdc = sdc_options(options.boundary == CatmullClarkBoundary::EdgeAndCorner, options.creasing);
+    if (options.smooth_triangles) sdc.SetTriangleSubdivision(Sdc::Options::TRI_SUB_SMOOTH);
+    return sdc;
 }
 
 Sdc::Options loop_options(const LoopOptions& options) {
@@ -61,6 +63,18 @@ LevelTrace catmull_clark(const PolyMesh& mesh, const CatmullClarkOptions& option
     std::unique_ptr<Far::TopologyRefiner> refiner = make_refiner(mesh, Sdc::SCHEME_CATMARK, catmark_options(options));
     refine_uniform(*refiner, levels, true);
     return interpolate_trace(*refiner, mesh.positions);
+}
+
+std::vector<int> boundary_none_holes(const PolyMesh& mesh, bool loop) {
+    Sdc::Options sdc = sdc_options(false, mesh.creases.method.value_or(CreaseMethod::Uniform));
+    sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_NONE);
+    const std::unique_ptr<Far::TopologyRefiner> refiner =
+        make_refiner(mesh, loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK, sdc);
+    std::vector<int> holes;
+    const Far::TopologyLevel& base = refiner->GetLevel(0);
+    for (int f = 0; f < base.GetNumFaces(); ++f)
+        if (base.IsFaceHole(f)) holes.push_back(f);
+    return holes;
 }
 
 LevelTrace loop(const PolyMesh& mesh, const LoopOptions& options, int levels) {

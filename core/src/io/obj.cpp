@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <charconv>
 #include <limits>
 #include <ostream>
@@ -12,10 +13,19 @@
 namespace crossdiv {
 namespace {
 
+/// A hole tag's face index and its line, range-checked once every face is read.
+struct HoleTag {
+    long face;
+    int line;
+};
+
 /// Reads the arguments of a tag line after its name, `t NAME nint/nfloat/nstring ints floats
 /// strings` (the shape-file tag format of OpenSubdiv's regression suite), and stores the
-/// crease, corner and creasemethod tags. Returns false for a tag name it does not know.
-bool read_tag(io_detail::LineReader& r, std::string_view name, CreaseTags& tags) {
+/// crease, corner, hole, creasemethod, interpolateboundary and smoothtriangles tags; the
+/// face-varying tags are read and noted (they concern texture coordinates, which no scheme
+/// here refines). Returns false for a tag name it does not know.
+bool read_tag(io_detail::LineReader& r, std::string_view name, CreaseTags& tags, std::vector<HoleTag>& holes,
+              std::vector<std::string>& notes) {
     const std::string_view counts = r.token();
     const size_t s1 = counts.find('/'), s2 = s1 == std::string_view::npos ? s1 : counts.find('/', s1 + 1);
     if (s2 == std::string_view::npos)
@@ -74,7 +84,46 @@ bool read_tag(io_detail::LineReader& r, std::string_view name, CreaseTags& tags)
         tags.method = strings[0] == "normal" ? CreaseMethod::Uniform : CreaseMethod::Chaikin;
         return true;
     }
+    if (name == "hole") {
+        if (ints.empty()) r.fail("tag 'hole': needs at least one face index");
+        for (long f : ints) holes.push_back({f, r.line_number()});
+        return true;
+    }
+    if (name == "interpolateboundary") {
+        if (ints.size() != 1 || ints[0] < 0 || ints[0] > 2)
+            r.fail("tag 'interpolateboundary': expects one integer, 0 (none), 1 (edge-and-corner) or 2 (edge-only)");
+        tags.boundary = ints[0] == 0 ? BoundaryTag::None : ints[0] == 1 ? BoundaryTag::EdgeAndCorner : BoundaryTag::EdgeOnly;
+        return true;
+    }
+    if (name == "smoothtriangles") {
+        if (strings.size() != 1 || (strings[0] != "smooth" && strings[0] != "catmark"))
+            r.fail("tag 'smoothtriangles': expects one string, 'smooth' or 'catmark'");
+        tags.smooth_triangles = strings[0] == "smooth";
+        return true;
+    }
+    if (name == "facevaryinginterpolateboundary" || name == "facevaryingpropagatecorners") {
+        notes.push_back("tag '" + std::string(name) + "' at " + r.name() + ":" + std::to_string(r.line_number()) +
+                        " concerns face-varying data (texture coordinates), which is not refined here; positions "
+                        "do not depend on it");
+        return true;
+    }
     return false;
+}
+
+/// Hole tags name faces from 0; sorted and made unique once every face is read.
+std::vector<int> checked_holes(const io_detail::LineReader& r, std::vector<HoleTag>& holes, int num_faces) {
+    std::vector<int> out;
+    out.reserve(holes.size());
+    for (const HoleTag& h : holes) {
+        if (h.face < 0 || h.face >= num_faces)
+            r.fail_at(h.line, "tag face index " + std::to_string(h.face) +
+                                  " out of range: tags count from 0 and the file has " + std::to_string(num_faces) +
+                                  " faces");
+        out.push_back(static_cast<int>(h.face));
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
 }
 
 /// Tag indices are 0-based vertex indices; checked once every vertex is read.
@@ -103,6 +152,7 @@ PolyMesh read_obj(std::istream& in, const std::string& name) {
     std::vector<int> corners;
     int unknown_lines = 0, first_unknown = 0;
     std::string first_unknown_word;
+    std::vector<HoleTag> holes;
     while (r.next()) {
         const std::string_view kw = r.token();
         if (kw.empty()) continue;
@@ -144,10 +194,9 @@ PolyMesh read_obj(std::istream& in, const std::string& name) {
         } else if (kw == "t") {
             const std::string name(r.token());
             if (name.empty()) r.fail("a tag line needs a tag name");
-            if (!read_tag(r, name, mesh.creases))
-                mesh.source.notes.push_back("ignored tag '" + name + "' at " + r.name() + ":" +
-                                            std::to_string(r.line_number()) +
-                                            " (only crease, corner and creasemethod are read)");
+            if (!read_tag(r, name, mesh.creases, holes, mesh.source.notes))
+                mesh.source.unknown_tags.push_back("'" + name.substr(0, 40) + "' at " + r.name() + ":" +
+                                                   std::to_string(r.line_number()));
         } else if (unknown_lines++ == 0) {
             first_unknown = r.line_number();
             first_unknown_word = std::string(kw.substr(0, 40));
@@ -166,6 +215,7 @@ PolyMesh read_obj(std::istream& in, const std::string& name) {
                                                         " out of range: the file has " + std::to_string(nv) +
                                                         " vertices");
     check_tag_indices(r, mesh);
+    mesh.creases.holes = checked_holes(r, holes, mesh.num_faces());
     if (!any_color) mesh.colors.clear();
     return mesh;
 }
@@ -232,6 +282,22 @@ void write_obj(std::ostream& out, const PolyMesh& mesh, std::span<const Vec3> no
         buf += *mesh.creases.method == CreaseMethod::Uniform ? "normal" : "chaikin";
         buf += '\n';
     }
+    if (!mesh.creases.holes.empty()) {
+        buf += "t hole ";
+        append_int(buf, static_cast<long>(mesh.creases.holes.size()));
+        buf += "/0/0";
+        for (int f : mesh.creases.holes) {
+            buf += ' ';
+            append_int(buf, f);
+        }
+        buf += '\n';
+    }
+    if (const auto& b = mesh.creases.boundary) {
+        buf += "t interpolateboundary 1/0/0 ";
+        buf += *b == BoundaryTag::None ? '0' : *b == BoundaryTag::EdgeAndCorner ? '1' : '2';
+        buf += '\n';
+    }
+    if (const auto& t = mesh.creases.smooth_triangles) buf += *t ? "t smoothtriangles 0/0/1 smooth\n" : "t smoothtriangles 0/0/1 catmark\n";
     out.write(buf.data(), static_cast<std::streamsize>(buf.size()));
 }
 

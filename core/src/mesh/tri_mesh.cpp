@@ -9,7 +9,7 @@ namespace crossdiv {
 TriMesh to_tri_mesh(const PolyMesh& mesh, const char* scheme) {
     if (!mesh.creases.empty())
         throw InputError((mesh.source.file.empty() ? std::string("the mesh") : mesh.source.file) +
-                         " has crease or corner tags; " + scheme +
+                         " has " + mesh.creases.describe() + "; " + scheme +
                          " works on a triangle mesh, which has no tags (only Loop and Catmull-Clark on the "
                          "polygon mesh honour them)");
     TriMesh tri;

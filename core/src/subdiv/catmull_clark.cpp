@@ -6,6 +6,7 @@
 
 #include "crossdiv/error.h"
 #include "crossdiv/subdiv/crease_level.h"
+#include "crossdiv/subdiv/hole_faces.h"
 #include "level_loop.h"
 
 namespace crossdiv {
@@ -37,10 +38,12 @@ RefinementStep catmull_clark_step(const PolyMesh& mesh, const PolyConnectivity& 
     std::optional<CreaseLevel> crease;
     if (!mesh.creases.empty()) {
         if (options.boundary == CatmullClarkBoundary::MidpointAverage)
-            throw InputError("crease tags follow OpenSubdiv's rules, whose boundary is edge-only or edge-and-corner; "
-                             "the midpoint-average boundary rule has no creases");
+            throw InputError("crease and hole tags follow OpenSubdiv's rules, whose boundary is edge-only or "
+                             "edge-and-corner; the midpoint-average boundary rule has no tags");
         crease.emplace(mesh, conn, options.creasing, options.boundary == CatmullClarkBoundary::EdgeAndCorner);
         step.creases = crease->child_tags(edge_point);
+        // One quad per corner, in corner order (below): face f's children are its corners.
+        step.creases.holes = child_holes(mesh.creases.holes, [&](int f) { return mesh.face_start[f]; });
     }
     VertexPointMask mask, child_mask;  // reused: no allocation per vertex once grown
 
@@ -98,7 +101,11 @@ RefinementStep catmull_clark_step(const PolyMesh& mesh, const PolyConnectivity& 
     for (int e = 0; e < ne; ++e) {
         const int c = conn.edge_corner[e], t = conn.twin[c];
         const auto& ends = conn.edge_vertices[e];
-        EdgePointWeights w{kCatmullClarkEdgeEnd, kCatmullClarkEdgeFace};
+        const CatmullClarkEdgeWeights smooth =
+            t < 0 ? CatmullClarkEdgeWeights{kCatmullClarkEdgeEnd, kCatmullClarkEdgeFace}
+                  : catmull_clark_edge_weights(options.smooth_triangles, mesh.face_size(conn.corner_face[c]) == 3,
+                                               mesh.face_size(conn.corner_face[t]) == 3);
+        EdgePointWeights w{smooth.end, smooth.face};
         if (t < 0 || (crease && crease->edge_child_is_crease(e))) {
             w = {0.5, 0.0};  // the crease mask: the midpoint
         } else if (crease && is_sharp(crease->edge_sharpness(e))) {

@@ -37,15 +37,14 @@ inline void require_triangles(const PolyMesh& mesh, const char* scheme) {
                              " corners; " + scheme + " refines triangles only");
 }
 
-/// @throws InputError for a mesh with crease or corner tags, for the schemes without crease
-///         rules (sqrt3, Doo-Sabin, the Butterflies): dropping the tags would be a silent
+/// @throws InputError for a mesh with crease, corner or hole tags, for the schemes without
+///         those rules (sqrt3, Doo-Sabin, the Butterflies): dropping the tags would be a silent
 ///         wrong answer.
 inline void require_no_creases(const PolyMesh& mesh, const char* scheme) {
     if (!mesh.creases.empty())
         throw InputError((mesh.source.file.empty() ? std::string("the mesh") : mesh.source.file) + " has " +
-                         std::to_string(mesh.creases.edges.size()) + " crease and " +
-                         std::to_string(mesh.creases.vertices.size()) + " corner tag(s); " + scheme +
-                         " has no crease rules (Loop and Catmull-Clark have)");
+                         mesh.creases.describe() + "; " + scheme +
+                         " has no crease or hole rules (Loop and Catmull-Clark have)");
 }
 
 }  // namespace crossdiv::detail

@@ -8,6 +8,7 @@
 
 #include "crossdiv/error.h"
 #include "crossdiv/subdiv/crease_level.h"
+#include "crossdiv/subdiv/hole_faces.h"
 #include "crossdiv/subdiv/loop.h"
 #include "level_loop.h"
 
@@ -44,6 +45,7 @@ RefinementStep loop_step(const PolyMesh& mesh, const PolyConnectivity& conn, con
     if (!mesh.creases.empty()) {
         crease.emplace(mesh, conn, options.creasing, options.boundary == LoopBoundary::EdgeAndCorner);
         step.creases = crease->child_tags(nv);
+        step.creases.holes = child_holes(mesh.creases.holes, [](int f) { return 4 * f; });  // 4 per triangle, below
     }
     VertexPointMask mask, child;  // reused: no allocation per vertex once grown
 

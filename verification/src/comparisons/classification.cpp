@@ -22,6 +22,9 @@ DivergenceClass rule_difference_class(Scheme scheme, const SchemeRule& applied, 
                                        : DivergenceClass::CornerRule;
         }
         case Scheme::CatmullClark: {
+            if (applied.catmull_clark.smooth_triangles != requested.catmull_clark.smooth_triangles &&
+                applied.catmull_clark.boundary == requested.catmull_clark.boundary)
+                return DivergenceClass::TriangleRule;
             const auto corner_only = [](CatmullClarkBoundary x) {
                 return x == CatmullClarkBoundary::EdgeOnly || x == CatmullClarkBoundary::EdgeAndCorner;
             };

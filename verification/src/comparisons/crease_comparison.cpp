@@ -15,13 +15,21 @@
 namespace crossdiv::verification {
 namespace {
 
+LoopOptions loop_options(const CreaseRequest& req) {
+    return {LoopWeights::Loop, req.edge_and_corner ? LoopBoundary::EdgeAndCorner : LoopBoundary::EdgeOnly, req.method};
+}
+
+CatmullClarkOptions catmull_clark_options(const CreaseRequest& req) {
+    return {req.edge_and_corner ? CatmullClarkBoundary::EdgeAndCorner : CatmullClarkBoundary::EdgeOnly, req.method};
+}
+
 /// Core's levels 1..N (each level refines the previous one, tags and all).
 std::vector<PolyMesh> core_levels(const PolyMesh& mesh, const CreaseRequest& req) {
     std::vector<PolyMesh> out;
     PolyMesh current = mesh;
     for (int l = 0; l < req.levels; ++l) {
-        current = req.loop ? loop_subdivide(current, {LoopWeights::Loop, LoopBoundary::EdgeOnly, req.method}, 1)
-                           : catmull_clark_subdivide(current, {CatmullClarkBoundary::EdgeOnly, req.method}, 1);
+        current = req.loop ? loop_subdivide(current, loop_options(req), 1)
+                           : catmull_clark_subdivide(current, catmull_clark_options(req), 1);
         out.push_back(current);
     }
     return out;
@@ -37,6 +45,7 @@ CreaseComparison compare_creases(const PolyMesh& mesh, const std::string& name, 
     c.levels = req.levels;
     c.edge_tags = static_cast<int>(mesh.creases.edges.size());
     c.vertex_tags = static_cast<int>(mesh.creases.vertices.size());
+    c.hole_tags = static_cast<int>(mesh.creases.holes.size());
 
     std::vector<PolyMesh> ours;
     try {
@@ -67,8 +76,8 @@ CreaseComparison compare_creases(const PolyMesh& mesh, const std::string& name, 
         return c;
     }
     RefineRequest r{scheme, {}, req.levels};
-    r.rule.loop = {LoopWeights::Loop, LoopBoundary::EdgeOnly, req.method};
-    r.rule.catmull_clark = {CatmullClarkBoundary::EdgeOnly, req.method};
+    r.rule.loop = loop_options(req);
+    r.rule.catmull_clark = catmull_clark_options(req);
     IsolatedTrace it = refine_isolated(*ref, mesh, r, req.timeout_seconds, req.isolate);
     if (const std::optional<EarlyVerdict> early = verdict_before_comparing(
             it.outcome, c.core_error, "core refused the tags; OpenSubdiv refined the mesh (Far only warns about a bad tag)")) {
@@ -97,8 +106,10 @@ CreaseComparison compare_creases(const PolyMesh& mesh, const std::string& name, 
     c.verdict = agree ? Verdict::Agree : Verdict::Diverge;
     if (!agree) c.divergence_class = c.faces_equal ? DivergenceClass::Unexplained : DivergenceClass::Topology;
     char buf[200];
-    std::snprintf(buf, sizeof buf, "%d edge and %d vertex tags, %s decay; worst level %.2e of the diagonal; the tags "
-                  "move the surface by %.2e", c.edge_tags, c.vertex_tags, c.method.c_str(), worst, c.effect_of_tags);
+    const std::string holes = c.hole_tags ? ", " + std::to_string(c.hole_tags) + " hole" : std::string();
+    std::snprintf(buf, sizeof buf, "%d edge and %d vertex%s tags, %s decay; worst level %.2e of the diagonal; the tags "
+                  "move the surface by %.2e", c.edge_tags, c.vertex_tags, holes.c_str(), c.method.c_str(), worst,
+                  c.effect_of_tags);
     c.explanation = buf;
     return c;
 }
@@ -123,7 +134,7 @@ nlohmann::json to_json(const CreaseComparison& c) {
     nlohmann::json levels = nlohmann::json::array();
     for (double x : c.max_rel_per_level) levels.push_back(num(x));
     nlohmann::json j = {{"input", c.input},          {"scheme", c.scheme},           {"method", c.method},
-                        {"levels", c.levels},        {"edge_tags", c.edge_tags},     {"vertex_tags", c.vertex_tags},
+                        {"levels", c.levels},        {"edge_tags", c.edge_tags},     {"vertex_tags", c.vertex_tags}, {"hole_tags", c.hole_tags},
                         {"verdict", to_string(c.verdict)},      {"max_rel", num(c.max_rel)},    {"max_rel_per_level", levels},
                         {"faces_equal", c.faces_equal}, {"effect_of_tags", num(c.effect_of_tags)},
                         {"explanation", c.explanation}};

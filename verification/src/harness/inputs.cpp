@@ -36,7 +36,9 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& specs) {
     return out;
 }
 
-PolyMesh load_input(const std::string& spec) {
+namespace {
+
+PolyMesh read_input(const std::string& spec) {
     if (spec.starts_with("bundled:")) return datasets::bundled_mesh(spec.substr(8));
     if (spec.starts_with("edgecase:")) return datasets::edge_case(spec.substr(9)).mesh;
     if (std::optional<PolyMesh> m = read_with_input_adapter(spec)) return std::move(*m);
@@ -48,6 +50,21 @@ PolyMesh load_input(const std::string& spec) {
                          "edgecase:NAME, and the collections bundled:all, polygons:all, edgecases:all, " +
                          "course:all, meshedit:all, cgal:all)");
     return read_mesh(spec);
+}
+
+}  // namespace
+
+PolyMesh load_input(const std::string& spec, UnknownTags unknown_tags) {
+    PolyMesh mesh = read_input(spec);
+    std::vector<std::string>& unknown = mesh.source.unknown_tags;
+    if (!unknown.empty() && unknown_tags == UnknownTags::Refuse)
+        throw InputError("unknown tag " + unknown.front() + (unknown.size() > 1 ? " (and " + std::to_string(unknown.size() - 1) + " more)" : std::string()) +
+                         ": refining without it would follow other rules than the file states (known: crease, "
+                         "corner, hole, creasemethod, interpolateboundary, smoothtriangles, and the face-varying "
+                         "tags); --ignore-unknown-tags refines without it");
+    for (const std::string& t : unknown) mesh.source.notes.push_back("ignored unknown tag " + t);
+    unknown.clear();
+    return mesh;
 }
 
 }  // namespace crossdiv::verification

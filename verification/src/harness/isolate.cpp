@@ -45,6 +45,7 @@ void write_trace(FILE* f, const adapters::LevelTrace& trace) {
         put_vector(f, m.positions);
         put_vector(f, m.face_start);
         put_vector(f, m.face_vertices);
+        put_vector(f, m.creases.holes);  // faces the library does not emit
     }
 }
 bool read_trace(FILE* f, adapters::LevelTrace& trace) {
@@ -52,7 +53,9 @@ bool read_trace(FILE* f, adapters::LevelTrace& trace) {
     if (!get(f, n) || n > 64) return false;
     trace.resize(n);
     for (PolyMesh& m : trace)
-        if (!get_vector(f, m.positions) || !get_vector(f, m.face_start) || !get_vector(f, m.face_vertices)) return false;
+        if (!get_vector(f, m.positions) || !get_vector(f, m.face_start) || !get_vector(f, m.face_vertices) ||
+            !get_vector(f, m.creases.holes))
+            return false;
     return true;
 }
 

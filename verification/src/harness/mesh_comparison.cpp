@@ -13,12 +13,20 @@ namespace {
 
 TopologyCounts counts(const MeshTopology& t) { return {t.vertices, t.edges, t.faces, t.euler, t.boundary_loops}; }
 
-/// Faces as vertex lists rotated to start at their smallest index (orientation kept), mapped
-/// through `map` when given, sorted: equal lists mean equal oriented face sets.
+/// The faces `m` emits as vertex lists rotated to start at their smallest index (orientation
+/// kept), mapped through `map` when given, sorted: equal lists mean equal oriented face sets.
+/// Hole faces are refined but not emitted, so a reference that drops or keeps other holes
+/// than core shows as faces only in one of the two.
 std::vector<std::vector<int>> canonical_faces(const PolyMesh& m, const std::vector<int>* map) {
-    std::vector<std::vector<int>> faces(static_cast<size_t>(m.num_faces()));
+    std::vector<std::vector<int>> faces;
+    faces.reserve(static_cast<size_t>(m.num_faces()) - m.creases.holes.size());
+    size_t next_hole = 0;  // holes are sorted
     for (int f = 0; f < m.num_faces(); ++f) {
-        auto& out = faces[f];
+        if (next_hole < m.creases.holes.size() && m.creases.holes[next_hole] == f) {
+            ++next_hole;
+            continue;
+        }
+        auto& out = faces.emplace_back();
         out.assign(m.face(f), m.face(f) + m.face_size(f));
         if (map)
             for (int& v : out) v = (*map)[v];

@@ -19,7 +19,10 @@ SchemeRule with_variant(Scheme scheme, SchemeRule requested, const SchemeRule& f
             requested.loop.weights = from.loop.weights;
             requested.loop.boundary = from.loop.boundary;
             break;
-        case Scheme::CatmullClark: requested.catmull_clark.boundary = from.catmull_clark.boundary; break;
+        case Scheme::CatmullClark:
+            requested.catmull_clark.boundary = from.catmull_clark.boundary;
+            requested.catmull_clark.smooth_triangles = from.catmull_clark.smooth_triangles;
+            break;
         case Scheme::DooSabin: requested.doo_sabin = from.doo_sabin; break;
         case Scheme::Sqrt3: requested.sqrt3 = from.sqrt3; break;
         case Scheme::Butterfly:

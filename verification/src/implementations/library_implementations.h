@@ -30,9 +30,10 @@ inline SchemeRule loop_rule(LoopWeights w, LoopBoundary b) {
     r.loop = {w, b};
     return r;
 }
-inline SchemeRule catmull_clark_rule(CatmullClarkBoundary b) {
+inline SchemeRule catmull_clark_rule(CatmullClarkBoundary b, bool smooth_triangles = false) {
     SchemeRule r;
-    r.catmull_clark = {b};
+    r.catmull_clark.boundary = b;
+    r.catmull_clark.smooth_triangles = smooth_triangles;
     return r;
 }
 inline SchemeRule doo_sabin_rule(DooSabinBoundary b) {

@@ -18,7 +18,9 @@ public:
                                                true),
                                       supports(Scheme::CatmullClark,
                                                {catmull_clark_rule(CatmullClarkBoundary::EdgeOnly),
-                                                catmull_clark_rule(CatmullClarkBoundary::EdgeAndCorner)},
+                                                catmull_clark_rule(CatmullClarkBoundary::EdgeAndCorner),
+                                                catmull_clark_rule(CatmullClarkBoundary::EdgeOnly, true),
+                                                catmull_clark_rule(CatmullClarkBoundary::EdgeAndCorner, true)},
                                                true)},
                           .limit_positions = true,
                           .limit_surface = true}) {}

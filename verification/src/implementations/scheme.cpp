@@ -34,7 +34,9 @@ std::string rule_name(Scheme scheme, const SchemeRule& rule) {
     switch (scheme) {
         case Scheme::Loop:
             return "weights=" + std::string(to_string(rule.loop.weights)) + " boundary=" + std::string(to_string(rule.loop.boundary));
-        case Scheme::CatmullClark: return std::string(to_string(rule.catmull_clark.boundary));
+        case Scheme::CatmullClark:
+            return std::string(to_string(rule.catmull_clark.boundary)) +
+                   (rule.catmull_clark.smooth_triangles ? " smooth-triangles" : "");
         case Scheme::DooSabin: return std::string(to_string(rule.doo_sabin.boundary));
         case Scheme::Sqrt3: return std::string(to_string(rule.sqrt3.parity));
         case Scheme::Butterfly:
@@ -54,7 +56,8 @@ bool same_rule(Scheme scheme, const SchemeRule& a, const SchemeRule& b) {
     switch (scheme) {
         case Scheme::Loop: return a.loop == b.loop;
         case Scheme::CatmullClark:
-            return a.catmull_clark.boundary == b.catmull_clark.boundary && a.catmull_clark.creasing == b.catmull_clark.creasing;
+            return a.catmull_clark.boundary == b.catmull_clark.boundary && a.catmull_clark.creasing == b.catmull_clark.creasing &&
+                   a.catmull_clark.smooth_triangles == b.catmull_clark.smooth_triangles;
         default: return rule_name(scheme, a) == rule_name(scheme, b);
     }
 }

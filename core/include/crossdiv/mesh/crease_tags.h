@@ -1,13 +1,17 @@
 #pragma once
 /// @file
-/// Sharpness tags of a polygon mesh, as OpenSubdiv takes them (Far::TopologyDescriptor's
-/// creaseVertexIndexPairs/creaseWeights and cornerVertexIndices/cornerWeights) and as its
-/// shape files write them in OBJ (`t crease 2/1/0 a b s`, `t corner 1/1/0 v s`, vertex
-/// indices from 0). Tags name vertices, not edges, so they survive any renumbering of edges
-/// and a refined mesh can carry its own (decayed) tags.
+/// The shape-file tags of a polygon mesh, as OpenSubdiv takes them: sharpness
+/// (Far::TopologyDescriptor's creaseVertexIndexPairs/creaseWeights and
+/// cornerVertexIndices/cornerWeights), holes (holeIndices), and the scheme options a shape
+/// file may state (creasemethod, interpolateboundary, smoothtriangles). In OBJ they are
+/// OpenSubdiv's regression-suite lines `t crease 2/1/0 a b s`, `t corner 1/1/0 v s`,
+/// `t hole n/0/0 f...` (vertex and face indices from 0). Sharpness tags name vertices, not
+/// edges, so they survive any renumbering of edges and a refined mesh can carry its own
+/// (decayed) tags.
 
 #include <array>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -49,6 +53,23 @@ struct SharpVertex {
     friend bool operator==(const SharpVertex&, const SharpVertex&) = default;
 };
 
+/// The boundary rule a shape file asks for (`t interpolateboundary 1/0/0 k`, the integer of
+/// OpenSubdiv's regression reader, far_utils.h GetSdcOptions).
+enum class BoundaryTag {
+    /// k = 0, Sdc VTX_BOUNDARY_NONE: Far sharpens boundary edges as always (positions as
+    /// EdgeOnly) and makes every face at a boundary vertex a hole
+    /// (TopologyRefinerFactoryBase::prepareComponentTagsAndSharpness), so no surface is
+    /// emitted over the boundary faces.
+    None,
+    EdgeAndCorner,  ///< k = 1, VTX_BOUNDARY_EDGE_AND_CORNER
+    EdgeOnly,       ///< k = 2, VTX_BOUNDARY_EDGE_ONLY
+};
+
+/// "none" / "edge-and-corner" / "edge-only".
+constexpr std::string_view to_string(BoundaryTag b) {
+    return b == BoundaryTag::None ? "none" : b == BoundaryTag::EdgeAndCorner ? "edge-and-corner" : "edge-only";
+}
+
 /// The tags of one mesh. A later tag of the same edge or vertex replaces an earlier one
 /// (as repeated calls of Far's setBaseEdgeSharpness do).
 struct CreaseTags {
@@ -56,10 +77,27 @@ struct CreaseTags {
     std::vector<SharpVertex> vertices;
     std::vector<int> edge_line;    ///< 1-based source line of each edge tag, or empty
     std::vector<int> vertex_line;  ///< 1-based source line of each vertex tag, or empty
+    /// Faces that are holes (Far's setBaseFaceHole): refined around like any face, their
+    /// children are holes too, and they are not emitted (without_hole_faces). Sorted, each once.
+    std::vector<int> holes;
     /// The method a file asks for (`t creasemethod 0/0/1 normal|chaikin`), if it does.
     std::optional<CreaseMethod> method;
+    /// The boundary rule a file asks for (`t interpolateboundary`), if it does.
+    std::optional<BoundaryTag> boundary;
+    /// `t smoothtriangles 0/0/1 smooth|catmark`: Catmull-Clark's edge points next to
+    /// triangles use OpenSubdiv's TRI_SUB_SMOOTH weights (true) or the plain ones.
+    std::optional<bool> smooth_triangles;
 
-    bool empty() const { return edges.empty() && vertices.empty(); }
+    /// No sharpness and no holes: nothing that needs the rules of a tagged mesh. (The
+    /// options above change a rule, which the commands resolve, not the mesh's refinement.)
+    bool empty() const { return edges.empty() && vertices.empty() && holes.empty(); }
+    /// "2 crease and 1 corner tag(s)", or with holes "2 crease, 1 corner and 3 hole tag(s)".
+    std::string describe() const {
+        const std::string sharp = std::to_string(edges.size()) + " crease";
+        const std::string corner = std::to_string(vertices.size()) + " corner";
+        if (holes.empty()) return sharp + " and " + corner + " tag(s)";
+        return sharp + ", " + corner + " and " + std::to_string(holes.size()) + " hole tag(s)";
+    }
 };
 
 }  // namespace crossdiv

@@ -16,6 +16,10 @@ struct MeshSource {
     /// What the reader skipped or assumed, one sentence each with the line (e.g. lines of
     /// HTML around an OBJ saved from a browser, as in the course files).
     std::vector<std::string> notes;
+    /// Tags the reader does not know, each as "'name' at file:line": refining without them
+    /// would follow other rules than the file states, so the commands that refine refuse
+    /// such a mesh unless told to ignore them (--ignore-unknown-tags).
+    std::vector<std::string> unknown_tags;
 
     /// "vertex 12 (bunny.obj:17)" or "vertex 12" when the line is unknown.
     std::string describe_vertex(int v) const { return describe("vertex", v, vertex_line); }

@@ -35,6 +35,10 @@ struct CatmullClarkOptions {
     CatmullClarkBoundary boundary;
     /// How semi-sharp crease tags decay (crease_mask.h); without tags it changes nothing.
     CreaseMethod creasing = CreaseMethod::Uniform;
+    /// OpenSubdiv's TRI_SUB_SMOOTH (`t smoothtriangles 0/0/1 smooth`): a smooth edge point
+    /// next to triangles weighs their face points more (catmull_clark_edge_weights). Only
+    /// the first level has triangles, so only it changes.
+    bool smooth_triangles = false;
     friend bool operator==(const CatmullClarkOptions&, const CatmullClarkOptions&) = default;
 };
 
@@ -52,6 +56,28 @@ inline CatmullClarkVertexMask catmull_clark_interior_vertex_mask(int valence) {
 
 /// Interior edge point: 1/4 on each endpoint and 1/4 on each of the two new face points.
 inline constexpr double kCatmullClarkEdgeEnd = 0.25, kCatmullClarkEdgeFace = 0.25;
+
+/// The weight OpenSubdiv's TRI_SUB_SMOOTH gives a triangle's face point in an edge point
+/// (Sdc::Scheme<SCHEME_CATMARK>::assignSmoothMaskForEdge, CATMARK_SMOOTH_TRI_EDGE_WEIGHT,
+/// after Hbr).
+inline constexpr double kSmoothTriangleEdgeFace = 0.470;
+
+/// Weights of a smooth interior edge point, {on each endpoint, on each face point}: 1/4 and
+/// 1/4, or under TRI_SUB_SMOOTH with a triangle on either side, the two faces' weights
+/// (0.47 for a triangle, 1/4 otherwise) averaged for each face point and the endpoints taking
+/// the rest: {1/2 (1 - 2 f), f}, i.e. {0.03, 0.47} between two triangles, {0.14, 0.36}
+/// between a triangle and a quad. Computed in the library's order of operations.
+struct CatmullClarkEdgeWeights {
+    double end, face;
+};
+inline CatmullClarkEdgeWeights catmull_clark_edge_weights(bool smooth_triangles, bool face0_is_triangle,
+                                                          bool face1_is_triangle) {
+    if (!smooth_triangles || !(face0_is_triangle || face1_is_triangle)) return {kCatmullClarkEdgeEnd, kCatmullClarkEdgeFace};
+    const double f0 = face0_is_triangle ? kSmoothTriangleEdgeFace : 0.25;
+    const double f1 = face1_is_triangle ? kSmoothTriangleEdgeFace : 0.25;
+    const double f = 0.5 * (f0 + f1);
+    return {0.5 * (1.0 - 2.0 * f), f};
+}
 
 /// Weights of a boundary vertex-point mask: `self` on the vertex, `neighbor` on each of its
 /// two boundary neighbours (none at a corner).

@@ -23,9 +23,7 @@ public:
 ///         refining it smooth would answer a different question.
 inline void reject_crease_tags(const PolyMesh& mesh, const char* library) {
     if (!mesh.creases.empty())
-        throw Rejected(std::string(library) + " has no crease rules; the mesh has " +
-                       std::to_string(mesh.creases.edges.size()) + " crease and " +
-                       std::to_string(mesh.creases.vertices.size()) + " corner tag(s)");
+        throw Rejected(std::string(library) + " has no crease or hole rules; the mesh has " + mesh.creases.describe());
 }
 
 /// Each level of a refinement as the library holds it: levels[0] is the input as the

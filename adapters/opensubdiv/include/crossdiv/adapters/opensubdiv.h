@@ -70,6 +70,11 @@ LimitPoints loop_limit(const TriMesh& mesh, const LoopOptions& options, int leve
 /// Catmull-Clark, as loop_limit. @throws Rejected for the midpoint-average rule.
 LimitPoints catmull_clark_limit(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels);
 
+/// The base faces Far makes holes under Sdc VTX_BOUNDARY_NONE (the mesh's own hole and
+/// sharpness tags given too), sorted: the reference for core's reading of that rule
+/// (tag_boundary_faces_as_holes). @throws Rejected when Far's factory refuses the mesh.
+std::vector<int> boundary_none_holes(const PolyMesh& mesh, bool loop);
+
 /// "OpenSubdiv 3.5.0" (from opensubdiv/version.h).
 std::string version();
 

@@ -19,6 +19,7 @@ namespace crossdiv::verification {
 struct CreaseRequest {
     bool loop = false;  ///< Loop, else Catmull-Clark
     CreaseMethod method = CreaseMethod::Uniform;
+    bool edge_and_corner = false;  ///< the boundary rule: edge-and-corner, else edge-only
     int levels = 3;
     double timeout_seconds = 60;
     bool isolate = true;
@@ -28,7 +29,7 @@ struct CreaseRequest {
 struct CreaseComparison {
     std::string input, scheme, method;
     int levels = 0;
-    int edge_tags = 0, vertex_tags = 0;
+    int edge_tags = 0, vertex_tags = 0, hole_tags = 0;
     std::string core_error;  ///< non-empty: core refused the mesh (the message)
     /// "agree", "diverge", "ours-rejected", "ref-rejected", "ref-crashed".
     Verdict verdict = Verdict::Agree;

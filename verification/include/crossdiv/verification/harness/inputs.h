@@ -15,7 +15,14 @@ namespace crossdiv::verification {
 /// absent expands to nothing. @throws InputError for an unknown collection.
 std::vector<std::string> expand_inputs(const std::vector<std::string>& specs);
 
-/// Loads one input. @throws InputError / ParseError naming the file and line.
-PolyMesh load_input(const std::string& spec);
+/// What loading does with a shape-file tag the reader does not know (MeshSource::unknown_tags).
+enum class UnknownTags {
+    Refuse,  ///< InputError naming the tag and its line: refining without it would follow other rules
+    Ignore,  ///< keep the mesh, each tag turned into a note (--ignore-unknown-tags)
+};
+
+/// Loads one input. @throws InputError / ParseError naming the file and line, also for an
+/// unknown tag unless `unknown_tags` is Ignore.
+PolyMesh load_input(const std::string& spec, UnknownTags unknown_tags = UnknownTags::Refuse);
 
 }  // namespace crossdiv::verification

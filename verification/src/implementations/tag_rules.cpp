@@ -1,0 +1,46 @@
+#include "crossdiv/verification/implementations/tag_rules.h"
+
+#include "crossdiv/error.h"
+#include "crossdiv/mesh/poly_connectivity.h"
+#include "crossdiv/subdiv/hole_faces.h"
+
+namespace crossdiv::verification {
+
+TagRules resolve_tag_rules(Scheme scheme, const std::string& boundary_flag, PolyMesh& mesh) {
+    TagRules out;
+    const bool osd_rules = scheme == Scheme::Loop || scheme == Scheme::CatmullClark;
+    const std::string file = mesh.source.file.empty() ? std::string("the mesh") : mesh.source.file;
+    const std::optional<BoundaryTag>& tag = mesh.creases.boundary;
+    std::string asked = boundary_flag;
+    if (tag) {
+        const std::string tagged(to_string(*tag));
+        if (!boundary_flag.empty()) {
+            if (boundary_flag != tagged)
+                out.notes.push_back("--boundary " + boundary_flag + " wins over " + file +
+                                    "'s 't interpolateboundary' (" + tagged + ")");
+        } else if (!osd_rules) {
+            throw InputError(file + " asks for OpenSubdiv's boundary rule " + tagged +
+                             " ('t interpolateboundary'); " + std::string(to_string(scheme)) +
+                             " has its own boundary rules: name one with --boundary");
+        } else {
+            asked = tagged;
+        }
+    }
+    if (asked == "none") {
+        if (!osd_rules)
+            throw InputError("the boundary rule 'none' (OpenSubdiv's VTX_BOUNDARY_NONE) is Loop's and Catmull-Clark's");
+        tag_boundary_faces_as_holes(mesh, build_poly_connectivity(mesh));
+        asked = "edge-only";
+    }
+    out.boundary = asked;
+    if (const std::optional<bool>& t = mesh.creases.smooth_triangles) {
+        if (scheme == Scheme::CatmullClark)
+            out.smooth_triangles = *t;
+        else if (*t)
+            out.notes.push_back(file + "'s 't smoothtriangles smooth' applies to Catmull-Clark only; " +
+                                std::string(to_string(scheme)) + " refines without it");
+    }
+    return out;
+}
+
+}  // namespace crossdiv::verification
