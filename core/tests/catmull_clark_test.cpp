@@ -146,14 +146,20 @@ TEST(CatmullClark, ColorsAreRefinedWithTheSameStencils) {
     expect_near(fine.colors[4], Vec3(0.5, 0.5, 0.5));
 }
 
-TEST(CatmullClark, RefusesANegativeLevelCountAndANonManifoldEdge) {
+TEST(CatmullClark, RefusesANegativeLevelCountAndANonManifoldEdgeWhenToldTo) {
     EXPECT_THROW(catmull_clark_subdivide(cube(), kEdgeOnly, -1), InputError);
     PolyMesh fin = square();
     fin.positions.emplace_back(0.5, 0.5, 1);
     fin.positions.emplace_back(0.5, 0.5, -1);
     fin.add_face({1, 0, 4});
     fin.add_face({0, 1, 5});  // three faces on edge (0, 1)
-    EXPECT_THROW(catmull_clark_subdivide(fin, kEdgeOnly, 1), InputError);
+    CatmullClarkOptions refuse = kEdgeOnly;
+    refuse.nonmanifold = NonManifoldRule::Refuse;
+    EXPECT_THROW(catmull_clark_subdivide(fin, refuse, 1), NonManifoldInput);
+    // By default OpenSubdiv's rules refine it (nonmanifold_test.cpp): the edge's ends stay.
+    const PolyMesh r = catmull_clark_subdivide(fin, kEdgeOnly, 1);
+    EXPECT_EQ(r.positions[0], fin.positions[0]);
+    EXPECT_EQ(r.positions[1], fin.positions[1]);
 }
 
 }  // namespace

@@ -50,6 +50,43 @@ PolyMesh book(int pages) {
     return make(p, f);
 }
 
+/// `fans` fans of two triangles each, joined only at vertex 0 (the origin), each in its own
+/// vertical plane around the z axis: a non-manifold vertex with `fans` fans.
+PolyMesh bowtie(int fans) {
+    std::vector<Vec3> p = {Vec3(0, 0, 0)};
+    std::vector<std::vector<int>> f;
+    for (int k = 0; k < fans; ++k) {
+        const double a = 2 * M_PI * k / fans;
+        const Vec3 out(std::cos(a), std::sin(a), 0);
+        const int b = static_cast<int>(p.size());
+        p.push_back(out + Vec3(0, 0, -0.5));
+        p.push_back(out * 1.2);
+        p.push_back(out + Vec3(0, 0, 0.5));
+        f.push_back({0, b, b + 1});
+        f.push_back({0, b + 1, b + 2});
+    }
+    return make(p, f);
+}
+
+/// `sheets` strips of four triangles meeting along the bent seam p0-p1-p2: the two seam
+/// edges are non-manifold, and p1 -- with more faces than edges and no boundary edge -- sits
+/// on an interior non-manifold crease, which OpenSubdiv refines by the crease rule.
+PolyMesh seam(int sheets) {
+    std::vector<Vec3> p = {Vec3(0, 0, -1), Vec3(0.2, 0.1, 0), Vec3(0, 0, 1.3)};  // bent: crease and corner differ
+    std::vector<std::vector<int>> f;
+    for (int k = 0; k < sheets; ++k) {
+        const double a = 2 * M_PI * k / sheets;
+        const Vec3 d(std::cos(a), std::sin(a), 0);
+        const int q = static_cast<int>(p.size());
+        for (int i = 0; i < 3; ++i) p.push_back(p[static_cast<size_t>(i)] + d * (1.0 + 0.1 * i));
+        f.push_back({0, 1, q + 1});
+        f.push_back({0, q + 1, q});
+        f.push_back({1, 2, q + 2});
+        f.push_back({1, q + 2, q + 1});
+    }
+    return make(p, f);
+}
+
 PolyMesh with_faces_removed(const PolyMesh& m, const std::vector<int>& remove) {
     std::vector<std::vector<int>> f = faces_of(m);
     std::vector<std::vector<int>> kept;
@@ -68,6 +105,7 @@ std::vector<EdgeCase> edge_cases() {
     };
     for (int n = 3; n <= 16; ++n)
         add("interior-fan-" + std::to_string(n), "one interior vertex of valence " + std::to_string(n), true, fan(n));
+    add("interior-fan-360", "one interior vertex of valence 360", true, fan(360));
     for (int n : {8, 64, 360})
         add("pole-" + std::to_string(n), "closed, two poles of valence " + std::to_string(n), true, pole(n, 4));
     for (int k = 1; k <= 8; ++k)
@@ -112,9 +150,16 @@ std::vector<EdgeCase> edge_cases() {
         const Vec3 offset = a.positions[0] - b.positions[3] + Vec3(1e-12, 0, 0);  // b's vertex 3 next to a's vertex 0
         return disjoint_union({{a, Vec3::Zero()}, {b, offset}});
     }());
-    // Invalid Loop inputs: core must refuse them, naming the element.
-    add("nonmanifold-edge-3", "three triangles on one edge", false, book(3));
-    add("nonmanifold-edge-100", "a hundred triangles on one edge", false, book(100));
+    // Not manifold: core refines them by OpenSubdiv's non-manifold rules (nonmanifold.h), and
+    // refuses, naming the element, what those rules do not refine here (a face naming a vertex
+    // twice, a duplicate face) or under NonManifoldRule::Refuse.
+    for (int pages : {3, 4, 10, 100})
+        add("nonmanifold-edge-" + std::to_string(pages), std::to_string(pages) + " triangles on one edge", false,
+            book(pages));
+    for (int fans : {3, 5})
+        add("bowtie-" + std::to_string(fans), std::to_string(fans) + " fans of two triangles joined at one vertex", false,
+            bowtie(fans));
+    add("nonmanifold-seam", "three strips meeting along a two-edge seam: an interior non-manifold crease", false, seam(3));
     add("bowtie", "two fans joined at one vertex: a non-manifold vertex", false, [] {
         PolyMesh m = make({Vec3(0, 0, 0), Vec3(1, 0.5, 0), Vec3(1, -0.5, 0), Vec3(-1, 0.5, 0), Vec3(-1, -0.5, 0)},
                           {{0, 2, 1}, {0, 3, 4}});

@@ -42,6 +42,7 @@ struct SchemeArgs {
     std::string creasing;  ///< empty: the input's t creasemethod tag, else uniform
     long long max_faces = kMaxRefinedFaces;
     bool ignore_unknown_tags = false;
+    std::string nonmanifold = "opensubdiv";
 
     /// The scheme options; `max_faces_default` is the command's --max-faces default
     /// (harness/output_size.h: one implementation alone, or several side by side).
@@ -70,6 +71,12 @@ struct SchemeArgs {
                        "Decay of semi-sharp crease tags (loop, catmull-clark): uniform (OpenSubdiv's default) or "
                        "chaikin. Default: the input's 't creasemethod' tag, else uniform")
             ->check(CLI::IsMember({"uniform", "chaikin"}));
+        app.add_option("--nonmanifold", nonmanifold,
+                       "Loop and Catmull-Clark on a mesh that is not a manifold (an edge of 3+ faces, a bowtie "
+                       "vertex, two faces traversing an edge the same way): opensubdiv refines it by OpenSubdiv's "
+                       "rules, refuse refuses it")
+            ->check(CLI::IsMember({"opensubdiv", "refuse"}))
+            ->capture_default_str();
         app.add_flag("--ignore-unknown-tags", ignore_unknown_tags,
                      "Refine a shape file whose tags include one crossdiv does not know, without it (each is noted)");
         max_faces = max_faces_default;
@@ -78,7 +85,9 @@ struct SchemeArgs {
             ->check(CLI::PositiveNumber)
             ->capture_default_str();
     }
-    PolySchemeArgs poly() const { return {scheme, boundary, levels, creasing, max_faces, tag_policy()}; }
+    PolySchemeArgs poly() const {
+        return {scheme, boundary, levels, creasing, max_faces, tag_policy(), nonmanifold_rule_from_string(nonmanifold)};
+    }
     UnknownTags tag_policy() const { return ignore_unknown_tags ? UnknownTags::Ignore : UnknownTags::Refuse; }
     /// @throws InputError when `levels` of this scheme on `mesh` pass --max-faces.
     void require_size(const PolyMesh& mesh, const std::string& name) const {
@@ -88,6 +97,7 @@ struct SchemeArgs {
     LoopOptions options() const {
         LoopOptions o = rule_from_boundary_name(Scheme::Loop, boundary).loop;
         o.weights = loop_weights_from_string(weights);
+        o.nonmanifold = nonmanifold_rule_from_string(nonmanifold);
         return o;
     }
 };
@@ -309,7 +319,7 @@ int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, cons
         }
         meshes.push_back(to_tri_mesh(m, "Loop subdivision"));
         try {
-            loop_input_connectivity(meshes.back());
+            check_loop_input(meshes.back(), rules[i].options());
         } catch (const InputError& e) {
             refused[i] = e.what();
         }
@@ -401,7 +411,7 @@ int run_diff(const std::string& in, const SchemeArgs& flags, const std::string& 
     const SchemeArgs s = with_tag_rules(flags, input);
     s.require_size(input, in);
     const TriMesh mesh = to_tri_mesh(input, "Loop subdivision");
-    loop_input_connectivity(mesh);
+    check_loop_input(mesh, s.options());
     LoopComparisonRequest req;
     req.options = s.options();
     req.levels = s.levels;

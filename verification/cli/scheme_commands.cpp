@@ -37,6 +37,7 @@ SchemeRule rule_with_tags(Scheme scheme, const PolySchemeArgs& s, PolyMesh& mesh
     SchemeRule rule = rule_from_boundary_name(scheme, tags.boundary);
     rule.catmull_clark.creasing = crease_method(s.creasing, mesh);
     rule.catmull_clark.smooth_triangles = tags.smooth_triangles;
+    rule.catmull_clark.nonmanifold = s.nonmanifold;
     return rule;
 }
 

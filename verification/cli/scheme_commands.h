@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "crossdiv/mesh/poly_mesh.h"
+#include "crossdiv/subdiv/nonmanifold_rule.h"
 #include "crossdiv/verification/harness/inputs.h"
 
 namespace crossdiv::cli {
@@ -22,6 +23,7 @@ struct PolySchemeArgs {
     std::string creasing;  ///< --crease-method; empty: the file's, else uniform
     long long max_faces = 0;  ///< --max-faces: the final level's face limit
     verification::UnknownTags unknown_tags = verification::UnknownTags::Refuse;  ///< --ignore-unknown-tags
+    NonManifoldRule nonmanifold = NonManifoldRule::OpenSubdiv;                      ///< --nonmanifold
 };
 
 /// The crease decay a run uses: `--crease-method` when given, else the input's

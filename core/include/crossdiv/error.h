@@ -17,6 +17,15 @@ public:
     explicit InputError(const std::string& message) : std::runtime_error(message) {}
 };
 
+/// A mesh that is not a manifold, consistently oriented one, in a way OpenSubdiv's
+/// non-manifold rules refine (nonmanifold.h): an edge of more than two faces, two faces
+/// traversing an edge in the same direction, a vertex whose faces form several fans. The
+/// manifold refinements throw it; Loop and Catmull-Clark then take those rules when asked to.
+class NonManifoldInput : public InputError {
+public:
+    using InputError::InputError;
+};
+
 /// An input file could not be parsed; the message is prefixed with `file:line: `.
 class ParseError : public InputError {
 public:

@@ -39,7 +39,7 @@ void find_one_ring_starts(Connectivity& conn, const std::vector<int>& out_start,
             if (conn.next_around_vertex(c) == start) break;
         }
         if (boundary_fans > 1 || visited != end - begin)
-            throw InputError(src.describe_vertex(v) + " is non-manifold: its " + std::to_string(end - begin) + " " +
+            throw NonManifoldInput(src.describe_vertex(v) + " is non-manifold: its " + std::to_string(end - begin) + " " +
                              faces_word + " form more than one fan (bowtie vertex)");
         conn.vertex_corner[v] = start;
     }

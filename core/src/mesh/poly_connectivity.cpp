@@ -68,10 +68,10 @@ PolyConnectivity build_poly_connectivity(const PolyMesh& mesh) {
                 ++opposite;
             }
         if (same + opposite > 2)
-            throw InputError(edge_name(a, b) + " is shared by " + std::to_string(same + opposite) +
+            throw NonManifoldInput(edge_name(a, b) + " is shared by " + std::to_string(same + opposite) +
                              " faces (non-manifold edge; first seen in " + src.describe_face(conn.corner_face[c]) + ")");
         if (same == 2)
-            throw InputError(edge_name(a, b) + ": two faces traverse it in the same direction "
+            throw NonManifoldInput(edge_name(a, b) + ": two faces traverse it in the same direction "
                              "(inconsistent orientation; one of them is " + src.describe_face(conn.corner_face[c]) + ")");
         conn.twin[c] = twin;
         if (twin < 0 || twin > c) {

@@ -65,10 +65,10 @@ TriConnectivity build_tri_connectivity(const TriMesh& mesh) {
         for (int k = out_start[b]; k < out_start[b + 1]; ++k)
             if (head(out_corners[k]) == a) { twin = out_corners[k]; ++opposite; }
         if (same + opposite > 2)
-            throw InputError(edge_name(a, b) + " is shared by " + std::to_string(same + opposite) +
+            throw NonManifoldInput(edge_name(a, b) + " is shared by " + std::to_string(same + opposite) +
                              " triangles (non-manifold edge; first seen in " + src.describe_face(c / 3) + ")");
         if (same == 2)
-            throw InputError(edge_name(a, b) + ": two triangles traverse it in the same direction "
+            throw NonManifoldInput(edge_name(a, b) + ": two triangles traverse it in the same direction "
                              "(inconsistent orientation; one of them is " + src.describe_face(c / 3) + ")");
         if (twin >= 0) {
             conn.neighbor_tris[c / 3][c % 3] = twin / 3;

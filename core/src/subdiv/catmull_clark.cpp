@@ -7,6 +7,7 @@
 #include "crossdiv/error.h"
 #include "crossdiv/subdiv/crease_level.h"
 #include "crossdiv/subdiv/hole_faces.h"
+#include "crossdiv/subdiv/nonmanifold.h"
 #include "level_loop.h"
 
 namespace crossdiv {
@@ -129,9 +130,14 @@ RefinementStep catmull_clark_step(const PolyMesh& mesh, const PolyConnectivity& 
 }
 
 PolyMesh catmull_clark_subdivide(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels) {
-    return detail::refine_levels(mesh, levels, [&](const PolyMesh& m, const PolyConnectivity& conn, int) {
-        return catmull_clark_step(m, conn, options);
-    });
+    try {
+        return detail::refine_levels(mesh, levels, [&](const PolyMesh& m, const PolyConnectivity& conn, int) {
+            return catmull_clark_step(m, conn, options);
+        });
+    } catch (const NonManifoldInput&) {
+        if (options.nonmanifold == NonManifoldRule::Refuse) throw;
+        return catmull_clark_subdivide_nonmanifold(mesh, options, levels);
+    }
 }
 
 Eigen::SparseMatrix<double> catmull_clark_subdivision_matrix(const PolyMesh& mesh, const CatmullClarkOptions& options) {

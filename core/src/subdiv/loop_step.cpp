@@ -10,6 +10,7 @@
 #include "crossdiv/subdiv/crease_level.h"
 #include "crossdiv/subdiv/hole_faces.h"
 #include "crossdiv/subdiv/loop.h"
+#include "crossdiv/subdiv/nonmanifold.h"
 #include "level_loop.h"
 
 namespace crossdiv {
@@ -108,14 +109,28 @@ RefinementStep loop_step(const PolyMesh& mesh, const PolyConnectivity& conn, con
     return step;
 }
 
-PolyMesh loop_subdivide(const PolyMesh& mesh, const LoopOptions& options, int levels) {
-    if (mesh.creases.empty()) {  // the fast path; the result is the same
-        detail::require_triangles(mesh, "Loop subdivision");
-        return to_poly_mesh(loop_subdivide(to_tri_mesh(mesh, "Loop subdivision"), options, levels));
+void check_loop_input(const TriMesh& mesh, const LoopOptions& options) {
+    try {
+        loop_input_connectivity(mesh);
+    } catch (const NonManifoldInput&) {
+        if (options.nonmanifold == NonManifoldRule::Refuse) throw;
+        loop_nonmanifold_step(to_poly_mesh(mesh), options);  // refuses what those rules do not refine
     }
-    return detail::refine_levels(mesh, levels, [&](const PolyMesh& m, const PolyConnectivity& conn, int) {
-        return loop_step(m, conn, options);
-    });
+}
+
+PolyMesh loop_subdivide(const PolyMesh& mesh, const LoopOptions& options, int levels) {
+    try {
+        if (mesh.creases.empty()) {  // the fast path; the result is the same
+            detail::require_triangles(mesh, "Loop subdivision");
+            return to_poly_mesh(loop_subdivide(to_tri_mesh(mesh, "Loop subdivision"), options, levels));
+        }
+        return detail::refine_levels(mesh, levels, [&](const PolyMesh& m, const PolyConnectivity& conn, int) {
+            return loop_step(m, conn, options);
+        });
+    } catch (const NonManifoldInput&) {
+        if (options.nonmanifold == NonManifoldRule::Refuse) throw;
+        return loop_subdivide_nonmanifold(mesh, options, levels);
+    }
 }
 
 }  // namespace crossdiv

@@ -1,4 +1,5 @@
 #include "crossdiv/verification/comparisons/loop_comparison.h"
+#include "crossdiv/subdiv/nonmanifold.h"
 
 #include <chrono>
 #include <deque>
@@ -26,19 +27,61 @@ using detail::sci;
 /// Our refinement of the input under one set of options, kept for classification.
 struct CoreRun {
     LoopOptions options;
-    std::unique_ptr<LoopRefiner> refiner;
     std::vector<PolyMesh> levels;  ///< levels 1..N as polygon meshes (index 0 = level 1)
     std::vector<std::vector<VertexOrigin>> origins;
 };
 
 CoreRun run_core(const TriMesh& input, const LoopOptions& options, int levels) {
-    CoreRun run{options, std::make_unique<LoopRefiner>(input, options), {}, {}};
-    run.refiner->refine(levels);
+    CoreRun run{options, {}, {}};
+    try {
+        LoopRefiner refiner(input, options);
+        refiner.refine(levels);
+        for (int l = 1; l <= levels; ++l) {
+            run.levels.push_back(to_poly_mesh(refiner.mesh(l)));
+            run.origins.push_back(refiner.origins(l));
+        }
+        return run;
+    } catch (const NonManifoldInput&) {
+        if (options.nonmanifold == NonManifoldRule::Refuse) throw;
+    }
+    // Not a manifold: OpenSubdiv's rules (nonmanifold.h), level by level, with the same
+    // provenance (old vertices, then one edge point per edge).
+    PolyMesh current = to_poly_mesh(input);
     for (int l = 1; l <= levels; ++l) {
-        run.levels.push_back(to_poly_mesh(run.refiner->mesh(l)));
-        run.origins.push_back(run.refiner->origins(l));
+        std::vector<VertexOrigin> origins;
+        for (int v = 0; v < current.num_vertices(); ++v) origins.push_back({v, -1});
+        for (const auto& [a, b] : nonmanifold_edges(current)) origins.push_back({a, b});
+        current = loop_subdivide_nonmanifold(current, options, 1);
+        run.levels.push_back(current);
+        run.origins.push_back(std::move(origins));
     }
     return run;
+}
+
+/// The vertices of core's last level that the non-manifold vertices of the input can reach:
+/// at each level, a vertex point is reached when its parent or a neighbour of it is, an edge
+/// point when an end or a neighbour of an end is (a superset of the Loop stencils' support).
+/// Empty when the input is a manifold.
+std::vector<char> nonmanifold_reach(const TriMesh& input, const CoreRun& core) {
+    PolyMesh level = to_poly_mesh(input);
+    const std::vector<int> seeds = nonmanifold_vertices(level);
+    if (seeds.empty()) return {};
+    std::vector<char> reached(static_cast<size_t>(level.num_vertices()), 0);
+    for (int v : seeds) reached[static_cast<size_t>(v)] = 1;
+    for (size_t l = 0; l < core.levels.size(); ++l) {
+        std::vector<char> near = reached;  // reached, or next to a reached vertex
+        for (const auto& [a, b] : nonmanifold_edges(level)) {
+            if (reached[static_cast<size_t>(a)]) near[static_cast<size_t>(b)] = 1;
+            if (reached[static_cast<size_t>(b)]) near[static_cast<size_t>(a)] = 1;
+        }
+        std::vector<char> next;
+        next.reserve(core.origins[l].size());
+        for (const VertexOrigin& o : core.origins[l])
+            next.push_back(near[static_cast<size_t>(o.a)] || (o.is_edge_point() && near[static_cast<size_t>(o.b)]));
+        reached = std::move(next);
+        level = core.levels[l];
+    }
+    return reached;
 }
 
 /// Max relative error at each level 1..N under the level maps (or the last level only, when
@@ -373,6 +416,28 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
             return Classification{cls, ref->name() + " has no " + describe(req.options) + "; run with " + describe(run.ran_with) +
                                            " it agrees with core's " + describe(run.ran_with) + " to " + sci(c2.max_rel) +
                                            ", and differs from the requested rule by " + sci(run.comparison.max_rel) + worst};
+        };
+        tests.nonmanifold = [&]() -> std::optional<Classification> {
+            // Measured: core took OpenSubdiv's non-manifold rules here, and every vertex that
+            // differs by more than the tolerance lies where the non-manifold vertices reach.
+            if (!same_faces || req.options.nonmanifold != NonManifoldRule::OpenSubdiv) return std::nullopt;
+            const std::vector<char> reach = nonmanifold_reach(input, ours);
+            if (reach.empty()) return std::nullopt;
+            const PolyMesh& last = ours.levels.back();
+            int differing = 0, reached = 0;
+            for (int v = 0; v < last.num_vertices(); ++v) {
+                reached += reach[static_cast<size_t>(v)];
+                const double d = (last.positions[v] - mapped[static_cast<size_t>(v)]).norm() / run.comparison.diagonal;
+                if (!(d <= tier.tolerance)) {
+                    if (!reach[static_cast<size_t>(v)]) return std::nullopt;
+                    ++differing;
+                }
+            }
+            return Classification{DivergenceClass::NonManifoldHandling,
+                                  ref->name() + " refines the non-manifold vertices by another rule than OpenSubdiv's, "
+                                  "which core follows: all " + std::to_string(differing) + " vertices that differ (by up "
+                                  "to " + sci(run.comparison.max_rel) + ") lie where they reach (" + std::to_string(reached) +
+                                  " of " + std::to_string(last.num_vertices()) + " vertices)" + worst};
         };
         tests.topology = [&]() -> std::optional<Classification> {
             if (same_faces) return std::nullopt;

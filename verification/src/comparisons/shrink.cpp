@@ -9,13 +9,13 @@
 namespace crossdiv::verification {
 namespace {
 
-/// Whether `m` still shows `symptom`. A candidate core refuses (it became non-manifold)
-/// does not count.
+/// Whether `m` still shows `symptom`. A candidate core refuses (under the request's
+/// non-manifold rule) does not count.
 bool still_shows(const TriMesh& m, const LoopComparisonRequest& req, const ShrinkSymptom& symptom, int& tests) {
     if (m.num_faces() == 0) return false;
     ++tests;
     try {
-        loop_input_connectivity(m);
+        check_loop_input(m, req.options);
     } catch (const InputError&) {
         return false;
     }

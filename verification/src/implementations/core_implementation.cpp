@@ -38,9 +38,7 @@ Capabilities core_capabilities() {
 /// `levels` levels of a polygon scheme in one call (the sqrt3 parity counts from this call's input).
 PolyMesh subdivide(const PolyMesh& mesh, const RefineRequest& r, int levels) {
     switch (r.scheme) {
-        case Scheme::Loop:
-            if (!mesh.creases.empty()) return loop_subdivide(mesh, r.rule.loop, levels);
-            return to_poly_mesh(loop_subdivide(to_tri_mesh(mesh, "Loop subdivision"), r.rule.loop, levels));
+        case Scheme::Loop: return loop_subdivide(mesh, r.rule.loop, levels);
         case Scheme::CatmullClark: return catmull_clark_subdivide(mesh, r.rule.catmull_clark, levels);
         case Scheme::DooSabin: return doo_sabin_subdivide(mesh, r.rule.doo_sabin, levels);
         case Scheme::Sqrt3: return sqrt3_subdivide(mesh, r.rule.sqrt3, levels);
@@ -60,10 +58,15 @@ public:
     adapters::LevelTrace refine(const PolyMesh& mesh, const RefineRequest& r) const override {
         adapters::LevelTrace trace{mesh};
         if (r.scheme == Scheme::Loop && mesh.creases.empty()) {
-            LoopRefiner refiner(to_tri_mesh(mesh, "Loop subdivision"), r.rule.loop);
-            refiner.refine(r.levels);
-            for (int l = 1; l <= r.levels; ++l) trace.push_back(to_poly_mesh(refiner.mesh(l)));
-            return trace;
+            try {
+                LoopRefiner refiner(to_tri_mesh(mesh, "Loop subdivision"), r.rule.loop);
+                refiner.refine(r.levels);
+                for (int l = 1; l <= r.levels; ++l) trace.push_back(to_poly_mesh(refiner.mesh(l)));
+                return trace;
+            } catch (const NonManifoldInput&) {
+                // Not a manifold: loop_subdivide takes OpenSubdiv's rules level by level below
+                // (or refuses, under NonManifoldRule::Refuse).
+            }
         }
         // sqrt3 counts its boundary generations from the input: each level is its own call
         // from the input. The other schemes' levels are the same one step at a time.

@@ -61,7 +61,7 @@ CaseRecord run_loop(const SuiteJob& job, const std::string& out_dir) {
     const TriMesh mesh = to_tri_mesh(input, "Loop subdivision");
     std::string refused;
     try {
-        loop_input_connectivity(mesh);
+        check_loop_input(mesh, req.options);
     } catch (const InputError& e) {
         refused = e.what();
     }

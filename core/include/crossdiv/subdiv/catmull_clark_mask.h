@@ -13,6 +13,7 @@
 
 #include "crossdiv/named_variant.h"
 #include "crossdiv/mesh/crease_tags.h"
+#include "crossdiv/subdiv/nonmanifold_rule.h"
 
 namespace crossdiv {
 
@@ -39,6 +40,8 @@ struct CatmullClarkOptions {
     /// next to triangles weighs their face points more (catmull_clark_edge_weights). Only
     /// the first level has triangles, so only it changes.
     bool smooth_triangles = false;
+    /// A mesh that is not a manifold: OpenSubdiv's rules (nonmanifold.h) or refused.
+    NonManifoldRule nonmanifold = NonManifoldRule::OpenSubdiv;
     friend bool operator==(const CatmullClarkOptions&, const CatmullClarkOptions&) = default;
 };
 

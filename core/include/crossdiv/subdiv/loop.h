@@ -58,6 +58,12 @@ private:
     LoopOptions options_;
 };
 
+/// Checks that Loop refines `mesh` under `options`: a manifold triangle mesh
+/// (loop_input_connectivity), or, under NonManifoldRule::OpenSubdiv, one whose non-manifold
+/// edges and vertices OpenSubdiv's rules refine (nonmanifold.h).
+/// @throws InputError naming the element otherwise.
+void check_loop_input(const TriMesh& mesh, const LoopOptions& options);
+
 /// `levels` levels of Loop subdivision, keeping only the last one (the fast path).
 /// @throws InputError as LoopRefiner.
 TriMesh loop_subdivide(const TriMesh& mesh, const LoopOptions& options, int levels);

@@ -18,6 +18,7 @@
 
 #include "crossdiv/named_variant.h"
 #include "crossdiv/mesh/crease_tags.h"
+#include "crossdiv/subdiv/nonmanifold_rule.h"
 
 namespace crossdiv {
 
@@ -58,6 +59,8 @@ struct LoopOptions {
     LoopBoundary boundary;
     /// How semi-sharp crease tags decay (crease_mask.h); without tags it changes nothing.
     CreaseMethod creasing = CreaseMethod::Uniform;
+    /// A mesh that is not a manifold: OpenSubdiv's rules (nonmanifold.h) or refused.
+    NonManifoldRule nonmanifold = NonManifoldRule::OpenSubdiv;
     friend bool operator==(const LoopOptions&, const LoopOptions&) = default;
 };
 

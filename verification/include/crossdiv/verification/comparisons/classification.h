@@ -45,6 +45,7 @@ struct DivergenceTests {
     DivergenceTest rounding;
     DivergenceTest reference_rule;
     DivergenceTest valence_table;
+    DivergenceTest nonmanifold;  ///< core took OpenSubdiv's non-manifold rules; the reference differs only where they apply
     DivergenceTest topology;
     /// The sentence for an unexplained divergence (its class is always Unexplained).
     std::function<std::string()> unexplained;

@@ -48,7 +48,9 @@ enum class DivergenceClass {
     Topology,                  ///< the refined connectivity differs
     AmbiguousCorrespondence,   ///< same counts, but no one-to-one vertex match
     Unexplained,               ///< none of the above: a failure
-    // For OursRejected, the input handling the reference shows:
+    // For OursRejected, the input handling the reference shows; NonManifoldHandling also for
+    // a divergence confined to where the non-manifold vertices reach, when core refined them
+    // by OpenSubdiv's rules (nonmanifold.h):
     NonManifoldHandling,
     OrientationHandling,
     DegenerateFaceHandling,

@@ -1,0 +1,62 @@
+#pragma once
+/// @file
+/// Topology that is not a manifold, refined as OpenSubdiv refines it, for Loop and
+/// Catmull-Clark: a named rule (NonManifoldRule::OpenSubdiv, the default) beside refusing
+/// the mesh (NonManifoldRule::Refuse). The manifold refinements (loop.h, catmull_clark.h)
+/// throw NonManifoldInput on such a mesh; under the OpenSubdiv rule they refine it here.
+///
+/// The rules, each from the OpenSubdiv function it mirrors:
+/// - Vtr::internal::Level::completeTopologyFromFaceVertices: edges are the vertex pairs the
+///   faces name. An edge is non-manifold when more than two faces use it, or two faces
+///   traverse it in the same direction; a vertex is non-manifold when it ends a non-manifold
+///   edge, or its faces form more than one fan (a bowtie).
+/// - Far::TopologyRefinerFactoryBase::prepareComponentTagsAndSharpness: boundary and
+///   non-manifold edges are infinitely sharp; a non-manifold vertex is infinitely sharp,
+///   except on an interior non-manifold crease (exactly two non-manifold edges, no boundary
+///   edge, more faces than edges: a fin along a seam), which keeps the crease rule; a
+///   topological corner (one face, two edges) is sharp under the edge-and-corner rule.
+/// - Sdc::Crease::DetermineVertexVertexRule (vertex_rule, crease_mask.h): a sharp vertex or
+///   more than two sharp edges is a corner (it stays), two sharp edges a crease (3/4 on the
+///   vertex, 1/8 on the other ends of the two), none or one the smooth mask.
+/// - The masks of the schemes (Sdc::Scheme<...>): a sharp edge's point is its midpoint; a
+///   smooth edge has two faces and the scheme's smooth edge mask.
+/// The same tags are recomputed at every level from that level's topology: the children of
+/// a non-manifold edge or vertex are non-manifold in the same way, so this equals Far's
+/// propagation of the infinitely sharp tags. Semi-sharp crease tags on a non-manifold mesh
+/// and faces that name a vertex twice are refused (InputError).
+
+#include <array>
+#include <vector>
+
+#include "crossdiv/mesh/poly_mesh.h"
+#include "crossdiv/subdiv/catmull_clark_mask.h"
+#include "crossdiv/subdiv/loop_mask.h"
+#include "crossdiv/subdiv/refinement.h"
+
+namespace crossdiv {
+
+/// One Loop level of a triangle mesh under the rules above: vertex points first, then one
+/// edge point per edge (numbered at its first corner in face order), four triangles per
+/// triangle in loop_step's order; hole tags carried to the children.
+/// @throws InputError for a face that is not a triangle or names a vertex twice, for
+///         semi-sharp tags, and for the tuned weight families (no rule next to a sharp edge).
+RefinementStep loop_nonmanifold_step(const PolyMesh& mesh, const LoopOptions& options);
+
+/// One Catmull-Clark level likewise: vertex points, face points, edge points; one quad per
+/// corner. @throws InputError as loop_nonmanifold_step, and for the midpoint-average rule.
+RefinementStep catmull_clark_nonmanifold_step(const PolyMesh& mesh, const CatmullClarkOptions& options);
+
+/// The ends of each edge of `mesh`, in the order the steps number their edge points (the
+/// provenance of a refined level's edge points). @throws InputError as the steps.
+std::vector<std::array<int, 2>> nonmanifold_edges(const PolyMesh& mesh);
+
+/// The vertices of `mesh` that are not manifold (they end a non-manifold edge, or their faces
+/// form several fans), ascending: where the rules above differ from a manifold refinement.
+/// @throws InputError as the steps.
+std::vector<int> nonmanifold_vertices(const PolyMesh& mesh);
+
+/// `levels` levels of either, each level's topology completed afresh.
+PolyMesh loop_subdivide_nonmanifold(const PolyMesh& mesh, const LoopOptions& options, int levels);
+PolyMesh catmull_clark_subdivide_nonmanifold(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels);
+
+}  // namespace crossdiv

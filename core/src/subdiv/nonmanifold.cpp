@@ -1,0 +1,389 @@
+// Loop and Catmull-Clark on topology that is not a manifold, with OpenSubdiv's rules
+// (nonmanifold.h). The topology is completed from the face-vertices with flat arrays and one
+// sort of the corners by edge, so the cost is O(n log n) in the corners and linear in valence.
+#include "crossdiv/subdiv/nonmanifold.h"
+
+#include <algorithm>
+#include <climits>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "crossdiv/error.h"
+#include "crossdiv/subdiv/crease_mask.h"
+#include "crossdiv/subdiv/hole_faces.h"
+#include "finite_level.h"
+
+namespace crossdiv {
+namespace {
+
+/// One level's topology as Far completes it from face-vertices (Vtr::internal::Level), with
+/// the vertex rules of prepareComponentTagsAndSharpness. Corner c is entry c of
+/// face_vertices and the half-edge leaving its vertex along its face.
+struct GeneralTopology {
+    std::vector<int> corner_face, corner_edge;
+    std::vector<int> edge_first;                  ///< the corner that numbered each edge
+    std::vector<char> edge_sharp;                 ///< boundary or non-manifold: infinitely sharp
+    std::vector<int> edge_corner_start, edge_corners;      ///< CSR: the half-edges on each edge
+    std::vector<int> vertex_corner_start, vertex_corners;  ///< CSR: the corners at each vertex
+    std::vector<int> vertex_edge_start, vertex_edges;      ///< CSR: the edges at each vertex
+    std::vector<VertexRule> rule;
+    std::vector<std::array<int, 2>> crease_ends;  ///< Crease: the other ends of its two sharp edges
+    std::vector<char> nonmanifold_vertex;
+    const PolyMesh* mesh = nullptr;
+
+    int num_edges() const { return static_cast<int>(edge_first.size()); }
+    int vertex(int c) const { return mesh->face_vertices[static_cast<size_t>(c)]; }
+    int next(int c) const {
+        const int f = corner_face[static_cast<size_t>(c)];
+        return c + 1 == mesh->face_start[f + 1] ? mesh->face_start[f] : c + 1;
+    }
+    int prev(int c) const {
+        const int f = corner_face[static_cast<size_t>(c)];
+        return c == mesh->face_start[f] ? mesh->face_start[f + 1] - 1 : c - 1;
+    }
+    int other_end(int e, int v) const {
+        const int c = edge_first[static_cast<size_t>(e)];
+        return vertex(c) == v ? vertex(next(c)) : vertex(c);
+    }
+};
+
+int find(std::vector<int>& parent, int x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+}
+
+/// CSR from (key, value) pairs with keys in [0, n): values grouped by key, in input order.
+void group(int n, const std::vector<std::pair<int, int>>& items, std::vector<int>& start, std::vector<int>& values) {
+    start.assign(static_cast<size_t>(n) + 1, 0);
+    for (const auto& [k, v] : items) ++start[static_cast<size_t>(k) + 1];
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    values.resize(items.size());
+    std::vector<int> fill(start.begin(), start.end() - 1);
+    for (const auto& [k, v] : items) values[static_cast<size_t>(fill[static_cast<size_t>(k)]++)] = v;
+}
+
+/// Two faces on the same vertices in the same cyclic order: Far keeps the edges inside each
+/// apart when it refines them (its child topology is derived per face, not from vertex
+/// pairs), which a level given by face-vertices cannot state; refused rather than refined
+/// into a different topology. Faces compared by their sequence rotated to its smallest vertex.
+void refuse_duplicate_faces(const PolyMesh& mesh) {
+    const int nf = mesh.num_faces();
+    std::vector<int> rotation(static_cast<size_t>(nf));  // offset of each face's smallest vertex
+    for (int f = 0; f < nf; ++f) {
+        const int* v = mesh.face(f);
+        rotation[static_cast<size_t>(f)] = static_cast<int>(std::min_element(v, v + mesh.face_size(f)) - v);
+    }
+    auto at = [&](int f, int k) { return mesh.face(f)[(rotation[static_cast<size_t>(f)] + k) % mesh.face_size(f)]; };
+    auto less = [&](int x, int y) {
+        if (mesh.face_size(x) != mesh.face_size(y)) return mesh.face_size(x) < mesh.face_size(y);
+        for (int k = 0; k < mesh.face_size(x); ++k)
+            if (at(x, k) != at(y, k)) return at(x, k) < at(y, k);
+        return false;
+    };
+    std::vector<int> faces(static_cast<size_t>(nf));
+    std::iota(faces.begin(), faces.end(), 0);
+    std::sort(faces.begin(), faces.end(), [&](int x, int y) { return less(x, y) || (!less(y, x) && x < y); });
+    for (size_t k = 1; k < faces.size(); ++k)
+        if (!less(faces[k - 1], faces[k]))
+            throw InputError(mesh.source.describe_face(faces[k]) + " repeats " + mesh.source.describe_face(faces[k - 1]) +
+                             " (a duplicate face: OpenSubdiv keeps the edges inside the two apart, which a refined "
+                             "mesh of face-vertices cannot state; not refined)");
+}
+
+GeneralTopology complete_topology(const PolyMesh& mesh, bool sharpen_corners) {
+    GeneralTopology t;
+    t.mesh = &mesh;
+    const int nv = mesh.num_vertices(), nf = mesh.num_faces();
+    const int nc = static_cast<int>(mesh.face_vertices.size());
+    t.corner_face.resize(static_cast<size_t>(nc));
+    std::vector<int> seen_in_face(static_cast<size_t>(nv), -1);
+    for (int f = 0; f < nf; ++f) {
+        if (mesh.face_size(f) < 3)
+            throw InputError(mesh.source.describe_face(f) + ": has " + std::to_string(mesh.face_size(f)) +
+                             " corners, needs at least 3");
+        for (int c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
+            const int v = mesh.face_vertices[static_cast<size_t>(c)];
+            if (v < 0 || v >= nv)
+                throw InputError(mesh.source.describe_face(f) + ": vertex index " + std::to_string(v) + " out of range");
+            if (seen_in_face[static_cast<size_t>(v)] == f)
+                throw InputError(mesh.source.describe_face(f) + ": repeated vertex " + std::to_string(v) +
+                                 " (a degenerate face: not refined under the non-manifold rules either)");
+            seen_in_face[static_cast<size_t>(v)] = f;
+            t.corner_face[static_cast<size_t>(c)] = f;
+        }
+    }
+
+    refuse_duplicate_faces(mesh);
+
+    // Edges: the corners sorted by their unordered vertex pair; numbered at first corner.
+    std::vector<int> order(static_cast<size_t>(nc));
+    std::iota(order.begin(), order.end(), 0);
+    auto key = [&](int c) {
+        const int a = t.vertex(c), b = t.vertex(t.next(c));
+        return std::pair{std::min(a, b), std::max(a, b)};
+    };
+    std::sort(order.begin(), order.end(), [&](int x, int y) { return std::pair{key(x), x} < std::pair{key(y), y}; });
+    std::vector<int> group_first;  // per run of equal keys, its smallest corner
+    std::vector<int> corner_group(static_cast<size_t>(nc));
+    for (size_t k = 0; k < order.size(); ++k) {
+        if (k == 0 || key(order[k]) != key(order[k - 1])) group_first.push_back(order[k]);
+        corner_group[static_cast<size_t>(order[k])] = static_cast<int>(group_first.size()) - 1;
+    }
+    std::vector<int> by_first(group_first.size());
+    std::iota(by_first.begin(), by_first.end(), 0);
+    std::sort(by_first.begin(), by_first.end(), [&](int x, int y) { return group_first[x] < group_first[y]; });
+    std::vector<int> edge_of_group(group_first.size());
+    for (size_t e = 0; e < by_first.size(); ++e) {
+        edge_of_group[static_cast<size_t>(by_first[e])] = static_cast<int>(e);
+        t.edge_first.push_back(group_first[static_cast<size_t>(by_first[e])]);
+    }
+    const int ne = t.num_edges();
+    t.corner_edge.resize(static_cast<size_t>(nc));
+    std::vector<std::pair<int, int>> items;
+    items.reserve(static_cast<size_t>(nc));
+    for (int c = 0; c < nc; ++c) {
+        t.corner_edge[static_cast<size_t>(c)] = edge_of_group[static_cast<size_t>(corner_group[static_cast<size_t>(c)])];
+        items.emplace_back(t.corner_edge[static_cast<size_t>(c)], c);
+    }
+    group(ne, items, t.edge_corner_start, t.edge_corners);
+
+    // Edge tags: boundary (one face), non-manifold (more than two, or two the same way).
+    std::vector<char> boundary(static_cast<size_t>(ne)), nonmanifold(static_cast<size_t>(ne));
+    t.edge_sharp.resize(static_cast<size_t>(ne));
+    std::vector<int> parent(static_cast<size_t>(nc));  // fans: corners at a vertex joined across manifold edges
+    std::iota(parent.begin(), parent.end(), 0);
+    for (int e = 0; e < ne; ++e) {
+        const int b = t.edge_corner_start[e], n = t.edge_corner_start[e + 1] - b;
+        const int h1 = t.edge_corners[static_cast<size_t>(b)];
+        const int h2 = n == 2 ? t.edge_corners[static_cast<size_t>(b) + 1] : -1;
+        boundary[static_cast<size_t>(e)] = n == 1;
+        nonmanifold[static_cast<size_t>(e)] = n > 2 || (n == 2 && t.vertex(h1) == t.vertex(h2));
+        t.edge_sharp[static_cast<size_t>(e)] = boundary[static_cast<size_t>(e)] || nonmanifold[static_cast<size_t>(e)];
+        if (n == 2 && !nonmanifold[static_cast<size_t>(e)]) {
+            parent[static_cast<size_t>(find(parent, h1))] = find(parent, t.next(h2));  // both at h1's vertex
+            parent[static_cast<size_t>(find(parent, t.next(h1)))] = find(parent, h2);  // both at h2's vertex
+        }
+    }
+
+    items.clear();
+    for (int c = 0; c < nc; ++c) items.emplace_back(t.vertex(c), c);
+    group(nv, items, t.vertex_corner_start, t.vertex_corners);
+    items.clear();
+    for (int e = 0; e < ne; ++e) {
+        const int c = t.edge_first[static_cast<size_t>(e)];
+        items.emplace_back(t.vertex(c), e);
+        items.emplace_back(t.vertex(t.next(c)), e);
+    }
+    group(nv, items, t.vertex_edge_start, t.vertex_edges);
+
+    // Vertex tags and rules (prepareComponentTagsAndSharpness, DetermineVertexVertexRule).
+    t.rule.assign(static_cast<size_t>(nv), VertexRule::Smooth);
+    t.crease_ends.assign(static_cast<size_t>(nv), {-1, -1});
+    t.nonmanifold_vertex.assign(static_cast<size_t>(nv), 0);
+    std::vector<int> root_seen(static_cast<size_t>(nc), -1);
+    for (int v = 0; v < nv; ++v) {
+        const int faces = t.vertex_corner_start[v + 1] - t.vertex_corner_start[v];
+        const int edges = t.vertex_edge_start[v + 1] - t.vertex_edge_start[v];
+        if (faces == 0) {  // isolated: it stays
+            t.rule[static_cast<size_t>(v)] = VertexRule::Corner;
+            continue;
+        }
+        int fans = 0;
+        for (int k = t.vertex_corner_start[v]; k < t.vertex_corner_start[v + 1]; ++k) {
+            const int r = find(parent, t.vertex_corners[static_cast<size_t>(k)]);
+            if (root_seen[static_cast<size_t>(r)] != v) {
+                root_seen[static_cast<size_t>(r)] = v;
+                ++fans;
+            }
+        }
+        int boundary_edges = 0, nonmanifold_edges = 0, sharp_edges = 0;
+        std::array<int, 2> ends{-1, -1};
+        for (int k = t.vertex_edge_start[v]; k < t.vertex_edge_start[v + 1]; ++k) {
+            const int e = t.vertex_edges[static_cast<size_t>(k)];
+            boundary_edges += boundary[static_cast<size_t>(e)];
+            nonmanifold_edges += nonmanifold[static_cast<size_t>(e)];
+            if (t.edge_sharp[static_cast<size_t>(e)]) {
+                if (sharp_edges < 2) ends[static_cast<size_t>(sharp_edges)] = t.other_end(e, v);
+                ++sharp_edges;
+            }
+        }
+        // A manifold boundary vertex has one fan that ends at two boundary edges.
+        const bool nonmanifold_vertex = nonmanifold_edges > 0 || fans > 1;
+        t.nonmanifold_vertex[static_cast<size_t>(v)] = nonmanifold_vertex;
+        const bool interior_crease = nonmanifold_edges == 2 && boundary_edges == 0 && faces > edges;
+        const bool sharp = (nonmanifold_vertex && !interior_crease) || (sharpen_corners && faces == 1 && edges == 2);
+        t.rule[static_cast<size_t>(v)] = vertex_rule(sharp ? kSharpnessInfinite : 0.0f, sharp_edges);
+        t.crease_ends[static_cast<size_t>(v)] = ends;
+    }
+    return t;
+}
+
+void require_untagged(const PolyMesh& mesh) {
+    if (!mesh.creases.edges.empty() || !mesh.creases.vertices.empty())
+        throw InputError((mesh.source.file.empty() ? std::string("the mesh") : mesh.source.file) +
+                         " is not a manifold and has crease or corner tags; sharpness tags on a non-manifold mesh "
+                         "are not implemented (refine it without the tags, or fix the topology)");
+}
+
+/// Corner and crease rows, shared by both schemes; false for the smooth rule.
+bool add_sharp_vertex_row(StencilTable& st, const GeneralTopology& t, int v) {
+    switch (t.rule[static_cast<size_t>(v)]) {
+        case VertexRule::Corner: st.add(v, 1.0); return true;
+        case VertexRule::Crease:
+            st.add(v, 0.75);
+            st.add(t.crease_ends[static_cast<size_t>(v)][0], 0.125);
+            st.add(t.crease_ends[static_cast<size_t>(v)][1], 0.125);
+            return true;
+        default: return false;
+    }
+}
+
+template <class Step>
+PolyMesh refine_general(const PolyMesh& mesh, int levels, const Step& step) {
+    if (levels < 0) throw InputError("number of levels must be >= 0, got " + std::to_string(levels));
+    PolyMesh current = mesh;
+    for (int l = 0; l < levels; ++l) {
+        PolyMesh next = apply_step(step(current), current);
+        detail::require_finite_level(next.positions, current.positions, l + 1);
+        current = std::move(next);
+    }
+    current.source = {};
+    return current;
+}
+
+}  // namespace
+
+RefinementStep loop_nonmanifold_step(const PolyMesh& mesh, const LoopOptions& options) {
+    for (int f = 0; f < mesh.num_faces(); ++f)
+        if (mesh.face_size(f) != 3)
+            throw InputError(mesh.source.describe_face(f) + ": has " + std::to_string(mesh.face_size(f)) +
+                             " corners; Loop subdivision refines triangles only");
+    require_untagged(mesh);
+    if (has_tuned_edges(options.weights))
+        throw InputError("the non-manifold rules are defined for the weight families with Loop's edge mask (loop, "
+                         "warren), not for " + std::string(to_string(options.weights)));
+    const int nv = mesh.num_vertices(), nf = mesh.num_faces();
+    if (4LL * nf > INT_MAX) throw InputError("the next Loop level would have more than 2^31 faces; use fewer levels");
+    const GeneralTopology t = complete_topology(mesh, options.boundary == LoopBoundary::EdgeAndCorner);
+    const int ne = t.num_edges();
+    RefinementStep step(nv);
+    StencilTable& st = step.stencils;
+    st.reserve(static_cast<size_t>(nv) + ne, 7 * static_cast<size_t>(nv) + 4 * static_cast<size_t>(ne));
+    for (int v = 0; v < nv; ++v) {
+        if (!add_sharp_vertex_row(st, t, v)) {
+            const int n = t.vertex_edge_start[v + 1] - t.vertex_edge_start[v];
+            const VertexMask m = interior_vertex_mask(options.weights, n);
+            for (int k = t.vertex_edge_start[v]; k < t.vertex_edge_start[v + 1]; ++k)
+                st.add(t.other_end(t.vertex_edges[static_cast<size_t>(k)], v), m.neighbor);
+            st.add(v, m.self);
+        }
+        st.end_row();
+    }
+    for (int e = 0; e < ne; ++e) {
+        const int h = t.edge_first[static_cast<size_t>(e)];
+        st.add(t.vertex(h), t.edge_sharp[static_cast<size_t>(e)] ? 0.5 : interior_edge_mask().end);
+        st.add(t.vertex(t.next(h)), t.edge_sharp[static_cast<size_t>(e)] ? 0.5 : interior_edge_mask().end);
+        if (!t.edge_sharp[static_cast<size_t>(e)])  // two triangles: their vertices opposite the edge
+            for (int k = t.edge_corner_start[e]; k < t.edge_corner_start[e + 1]; ++k)
+                st.add(t.vertex(t.prev(t.edge_corners[static_cast<size_t>(k)])), interior_edge_mask().opposite);
+        st.end_row();
+    }
+    step.face_vertices.reserve(12 * static_cast<size_t>(nf));
+    for (int f = 0; f < nf; ++f) {
+        const int c = mesh.face_start[f];
+        const int* v = mesh.face(f);
+        const int m0 = nv + t.corner_edge[static_cast<size_t>(c)], m1 = nv + t.corner_edge[static_cast<size_t>(c) + 1],
+                  m2 = nv + t.corner_edge[static_cast<size_t>(c) + 2];
+        step.add_face({v[0], m0, m2});
+        step.add_face({v[1], m1, m0});
+        step.add_face({v[2], m2, m1});
+        step.add_face({m0, m1, m2});
+    }
+    step.creases.holes = child_holes(mesh.creases.holes, [](int f) { return 4 * f; });
+    return step;
+}
+
+RefinementStep catmull_clark_nonmanifold_step(const PolyMesh& mesh, const CatmullClarkOptions& options) {
+    require_untagged(mesh);
+    if (options.boundary == CatmullClarkBoundary::MidpointAverage)
+        throw InputError("the non-manifold rules are OpenSubdiv's, whose boundary is edge-only or edge-and-corner; the "
+                         "midpoint-average boundary rule has none");
+    const int nv = mesh.num_vertices(), nf = mesh.num_faces();
+    const int nc = static_cast<int>(mesh.face_vertices.size());
+    if (4LL * nc > INT_MAX)
+        throw InputError("the next Catmull-Clark level would have more than 2^31 indices; use fewer levels");
+    const GeneralTopology t = complete_topology(mesh, options.boundary == CatmullClarkBoundary::EdgeAndCorner);
+    const int ne = t.num_edges(), face_point = nv, edge_point = nv + nf;
+    RefinementStep step(nv);
+    StencilTable& st = step.stencils;
+    st.reserve(static_cast<size_t>(nv) + nf + ne, 8 * static_cast<size_t>(nc) + nv);
+    for (int v = 0; v < nv; ++v) {
+        if (!add_sharp_vertex_row(st, t, v)) {
+            // Smooth or dart: a manifold interior vertex, as many faces as edges.
+            const int n = t.vertex_edge_start[v + 1] - t.vertex_edge_start[v];
+            const CatmullClarkVertexMask m = catmull_clark_interior_vertex_mask(n);
+            for (int k = t.vertex_corner_start[v]; k < t.vertex_corner_start[v + 1]; ++k)
+                st.add_refined(face_point + t.corner_face[static_cast<size_t>(t.vertex_corners[static_cast<size_t>(k)])], m.face);
+            for (int k = t.vertex_edge_start[v]; k < t.vertex_edge_start[v + 1]; ++k)
+                st.add(t.other_end(t.vertex_edges[static_cast<size_t>(k)], v), m.ring);
+            st.add(v, m.self);
+        }
+        st.end_row();
+    }
+    for (int f = 0; f < nf; ++f) {
+        const double w = 1.0 / mesh.face_size(f);
+        for (int c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) st.add(t.vertex(c), w);
+        st.end_row();
+    }
+    for (int e = 0; e < ne; ++e) {
+        const int h = t.edge_first[static_cast<size_t>(e)];
+        if (t.edge_sharp[static_cast<size_t>(e)]) {
+            st.add(t.vertex(h), 0.5);
+            st.add(t.vertex(t.next(h)), 0.5);
+        } else {
+            const int f0 = t.corner_face[static_cast<size_t>(t.edge_corners[static_cast<size_t>(t.edge_corner_start[e])])];
+            const int f1 = t.corner_face[static_cast<size_t>(t.edge_corners[static_cast<size_t>(t.edge_corner_start[e]) + 1])];
+            const CatmullClarkEdgeWeights w =
+                catmull_clark_edge_weights(options.smooth_triangles, mesh.face_size(f0) == 3, mesh.face_size(f1) == 3);
+            st.add(t.vertex(h), w.end);
+            st.add(t.vertex(t.next(h)), w.end);
+            st.add_refined(face_point + f0, w.face);
+            st.add_refined(face_point + f1, w.face);
+        }
+        st.end_row();
+    }
+    step.face_vertices.reserve(4 * static_cast<size_t>(nc));
+    for (int c = 0; c < nc; ++c)
+        step.add_face({t.vertex(c), edge_point + t.corner_edge[static_cast<size_t>(c)],
+                       face_point + t.corner_face[static_cast<size_t>(c)],
+                       edge_point + t.corner_edge[static_cast<size_t>(t.prev(c))]});
+    step.creases.holes = child_holes(mesh.creases.holes, [&](int f) { return mesh.face_start[f]; });
+    return step;
+}
+
+std::vector<std::array<int, 2>> nonmanifold_edges(const PolyMesh& mesh) {
+    const GeneralTopology t = complete_topology(mesh, false);
+    std::vector<std::array<int, 2>> ends;
+    ends.reserve(static_cast<size_t>(t.num_edges()));
+    for (int h : t.edge_first) ends.push_back({t.vertex(h), t.vertex(t.next(h))});
+    return ends;
+}
+
+std::vector<int> nonmanifold_vertices(const PolyMesh& mesh) {
+    const GeneralTopology t = complete_topology(mesh, false);
+    std::vector<int> out;
+    for (int v = 0; v < mesh.num_vertices(); ++v)
+        if (t.nonmanifold_vertex[static_cast<size_t>(v)]) out.push_back(v);
+    return out;
+}
+
+PolyMesh loop_subdivide_nonmanifold(const PolyMesh& mesh, const LoopOptions& options, int levels) {
+    return refine_general(mesh, levels, [&](const PolyMesh& m) { return loop_nonmanifold_step(m, options); });
+}
+
+PolyMesh catmull_clark_subdivide_nonmanifold(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels) {
+    return refine_general(mesh, levels, [&](const PolyMesh& m) { return catmull_clark_nonmanifold_step(m, options); });
+}
+
+}  // namespace crossdiv

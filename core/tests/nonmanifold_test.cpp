@@ -1,0 +1,100 @@
+// OpenSubdiv's non-manifold rules in core (nonmanifold.h), computed by hand on the smallest
+// meshes that show each: an edge of three faces, a bowtie vertex, an interior non-manifold
+// crease; and what is refused.
+#include <gtest/gtest.h>
+
+#include "crossdiv/error.h"
+#include "crossdiv/subdiv/catmull_clark.h"
+#include "crossdiv/subdiv/loop.h"
+#include "crossdiv/subdiv/nonmanifold.h"
+
+namespace crossdiv {
+namespace {
+
+const LoopOptions kLoop{LoopWeights::Loop, LoopBoundary::EdgeOnly};
+
+/// Three triangles on the edge (0, 1): vertices 2, 3, 4 are their tips.
+PolyMesh book3() {
+    PolyMesh m;
+    m.positions = {Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(1, 0, 0.5), Vec3(-0.5, 0.8, 0.5), Vec3(-0.5, -0.8, 0.3)};
+    m.add_face({1, 0, 2});
+    m.add_face({0, 1, 3});
+    m.add_face({1, 0, 4});
+    return m;
+}
+
+TEST(NonManifold, AnEdgeOfThreeFacesIsSharpAndItsEndsAreCorners) {
+    const PolyMesh m = book3();
+    EXPECT_EQ(nonmanifold_vertices(m), (std::vector<int>{0, 1}));
+    EXPECT_THROW(loop_subdivide(m, {LoopWeights::Loop, LoopBoundary::EdgeOnly, CreaseMethod::Uniform,
+                                    NonManifoldRule::Refuse}, 1),
+                 NonManifoldInput);
+    const PolyMesh r = loop_subdivide(m, kLoop, 1);
+    ASSERT_EQ(r.num_vertices(), 5 + 7);  // 7 edges: the shared one and two per page
+    ASSERT_EQ(r.num_faces(), 12);
+    // Ends of the non-manifold edge: corners, they stay.
+    EXPECT_EQ(r.positions[0], m.positions[0]);
+    EXPECT_EQ(r.positions[1], m.positions[1]);
+    // A tip has two boundary edges: the crease rule 3/4, 1/8, 1/8.
+    EXPECT_TRUE(r.positions[2].isApprox(0.75 * m.positions[2] + 0.125 * (m.positions[0] + m.positions[1])));
+    // The shared edge (numbered first, at corner 0) is sharp: its midpoint.
+    const std::vector<std::array<int, 2>> edges = nonmanifold_edges(m);
+    ASSERT_EQ(edges.size(), 7u);
+    EXPECT_EQ(edges[0], (std::array<int, 2>{1, 0}));
+    EXPECT_TRUE(r.positions[5].isApprox(0.5 * (m.positions[0] + m.positions[1])));
+
+    // Catmull-Clark on the same pages: the same corners and crease tips, face points the centroids.
+    const PolyMesh cc = catmull_clark_subdivide(m, {CatmullClarkBoundary::EdgeOnly}, 1);
+    EXPECT_EQ(cc.positions[0], m.positions[0]);
+    EXPECT_TRUE(cc.positions[5].isApprox((m.positions[1] + m.positions[0] + m.positions[2]) / 3.0));
+}
+
+TEST(NonManifold, ABowtieVertexIsACornerAndTheFansAreRefinedApart) {
+    // Two triangles meeting only at vertex 0.
+    PolyMesh m;
+    m.positions = {Vec3(0, 0, 0), Vec3(1, 0.5, 0.2), Vec3(1, -0.5, 0), Vec3(-1, 0.5, 0), Vec3(-1, -0.5, 0.3)};
+    m.add_face({0, 2, 1});
+    m.add_face({0, 3, 4});
+    EXPECT_EQ(nonmanifold_vertices(m), std::vector<int>{0});
+    const PolyMesh r = loop_subdivide(m, kLoop, 1);
+    EXPECT_EQ(r.positions[0], m.positions[0]);
+    // Vertex 1 is an ordinary boundary corner of its triangle: crease rule on its two edges.
+    EXPECT_TRUE(r.positions[1].isApprox(0.75 * m.positions[1] + 0.125 * (m.positions[0] + m.positions[2])));
+}
+
+TEST(NonManifold, AnInteriorNonManifoldCreaseKeepsTheCreaseRule) {
+    // Three strips of two triangles on each side of p1 along the seam p0-p1-p2: p1 has two
+    // non-manifold edges, no boundary edge and 9 faces on 8 edges, so Far does not sharpen it.
+    PolyMesh m;
+    m.positions = {Vec3(0, 0, -1), Vec3(0.2, 0.1, 0), Vec3(0, 0, 1.3)};
+    for (int k = 0; k < 3; ++k) {
+        const Vec3 d(std::cos(2 * M_PI * k / 3), std::sin(2 * M_PI * k / 3), 0);
+        const int q = m.num_vertices();
+        for (int i = 0; i < 3; ++i) m.positions.push_back(m.positions[static_cast<size_t>(i)] + d);
+        m.add_face({0, 1, q + 1});
+        m.add_face({0, q + 1, q});
+        m.add_face({1, 2, q + 2});
+        m.add_face({1, q + 2, q + 1});
+    }
+    const PolyMesh r = loop_subdivide(m, kLoop, 1);
+    EXPECT_TRUE(r.positions[1].isApprox(0.75 * m.positions[1] + 0.125 * (m.positions[0] + m.positions[2])));
+    EXPECT_FALSE(r.positions[1].isApprox(m.positions[1]));  // not a corner
+    EXPECT_EQ(r.positions[0], m.positions[0]);              // p0 ends the seam: sharpened
+}
+
+TEST(NonManifold, WhatTheRulesDoNotRefineIsRefusedNamingTheFace) {
+    PolyMesh dup = book3();
+    dup.add_face({1, 0, 2});  // face 0 again
+    try {
+        loop_subdivide(dup, kLoop, 1);
+        ADD_FAILURE() << "accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("face 3 repeats face 0"), std::string::npos) << e.what();
+    }
+    PolyMesh tagged = book3();
+    tagged.creases.edges.push_back({0, 2, 2.0f});
+    EXPECT_THROW(loop_subdivide(tagged, kLoop, 1), InputError);
+}
+
+}  // namespace
+}  // namespace crossdiv
