@@ -359,5 +359,7 @@ TEST(CurveIo, ReadsBzcAndNamesItsErrors) {
     EXPECT_EQ(bzc_error("3\n0 0 1 1 2\n"), "bad.bzc:2: unexpected end of file: expected y of point 3 of 3");
     EXPECT_EQ(bzc_error("2\n0 0 1 1 2 2\n"), "bad.bzc:2: unexpected '2' after 2 points");
     EXPECT_EQ(bzc_error("0\n"), "bad.bzc:1: the control point count must be at least 1, got 0");
+    // Degree 256 is the most (kMaxBezierDegree: the adaptive tessellations grow as its square).
+    EXPECT_EQ(bzc_error("258\n0 0\n"), "bad.bzc:1: the control point count 258 is out of range: at most 257");
     EXPECT_EQ(bzc_error("2\n0 0\n1 inf\n"), "bad.bzc:3: y of point 2 of 2 is inf; numbers must be finite");
 }

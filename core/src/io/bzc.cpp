@@ -3,6 +3,7 @@
 #include <fstream>
 #include <string>
 
+#include "crossdiv/curves/bezier.h"
 #include "crossdiv/error.h"
 #include "crossdiv/io/curve_io.h"
 #include "curve_tokens.h"
@@ -18,7 +19,7 @@ CurveFile read_bzc(std::istream& in, const std::string& name) {
     r.type = CurveType::Bezier;
     r.dim = 2;
     r.line = p.line();
-    const long n = p.integer("the control point count", 1);
+    const long n = p.integer("the control point count", 1, kMaxBezierDegree + 1);
     // STEPS is not in the format; 16 intervals draw any of the course curves smoothly.
     r.steps = 16;
     for (long i = 0; i < n; ++i) {

@@ -16,6 +16,13 @@
 
 namespace crossdiv {
 
+/// The highest degree a curve file may give one Bezier segment (BZC's control point count
+/// less one). De Casteljau's subdivision costs d^2 / 2 interpolations, and the adaptive
+/// tessellations split a segment up to 1024 times, so the work grows as the square of the
+/// degree: at 256 a segment's tessellation is about 1e8 interpolations (0.1 s), at degree
+/// 1000 it took 6.5 s and a 50 KB file would take hours. Any degree up to this is exact.
+inline constexpr int kMaxBezierDegree = 256;
+
 /// One de Casteljau step: n points in, n - 1 points out (the seed's `evaluateStep`).
 /// @pre points.size() >= 1; a single point returns an empty vector.
 std::vector<Vec3> casteljau_step(std::span<const Vec3> points, double t);
