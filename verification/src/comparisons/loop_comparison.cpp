@@ -419,11 +419,13 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
         };
         tests.nonmanifold = [&]() -> std::optional<Classification> {
             // Measured: core took OpenSubdiv's non-manifold rules here, and every vertex that
-            // differs by more than the tolerance lies where the non-manifold vertices reach.
+            // differs by more than the tolerance from core under the reference's own rule
+            // (the corner rule it may lack) lies where the non-manifold vertices reach.
             if (!same_faces || req.options.nonmanifold != NonManifoldRule::OpenSubdiv) return std::nullopt;
             const std::vector<char> reach = nonmanifold_reach(input, ours);
             if (reach.empty()) return std::nullopt;
-            const PolyMesh& last = ours.levels.back();
+            const bool own_rule = !applied_rule || run.ran_with == *applied_rule;
+            const PolyMesh& last = own_rule ? ours.levels.back() : core_with(run.ran_with).levels.back();
             int differing = 0, reached = 0;
             for (int v = 0; v < last.num_vertices(); ++v) {
                 reached += reach[static_cast<size_t>(v)];
@@ -435,8 +437,9 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
             }
             return Classification{DivergenceClass::NonManifoldHandling,
                                   ref->name() + " refines the non-manifold vertices by another rule than OpenSubdiv's, "
-                                  "which core follows: all " + std::to_string(differing) + " vertices that differ (by up "
-                                  "to " + sci(run.comparison.max_rel) + ") lie where they reach (" + std::to_string(reached) +
+                                  "which core follows: all " + std::to_string(differing) + " vertices that differ" +
+                                  (own_rule ? "" : " from core with " + describe(run.ran_with)) + " (by up to " +
+                                  sci(run.comparison.max_rel) + ") lie where they reach (" + std::to_string(reached) +
                                   " of " + std::to_string(last.num_vertices()) + " vertices)" + worst};
         };
         tests.topology = [&]() -> std::optional<Classification> {
