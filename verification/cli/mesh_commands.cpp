@@ -400,7 +400,7 @@ int run_edgecases(const std::string& dir) {
     for (const auto& c : datasets::edge_cases()) {
         const std::string path = (std::filesystem::path(dir) / (c.name + ".obj")).string();
         write_mesh(path, c.mesh);
-        fmt::print("{:<48} {}{}\n", path, c.description, c.valid_loop_input ? "" : " [invalid Loop input]");
+        fmt::print("{:<48} {}{}\n", path, c.description, c.valid_loop_input ? "" : " [not a manifold]");
     }
     return 0;
 }

@@ -17,7 +17,7 @@ namespace crossdiv::datasets {
 struct EdgeCase {
     std::string name;
     std::string description;  ///< one line: the topology or numeric trap it sets
-    bool valid_loop_input;    ///< a manifold, consistently oriented triangle mesh
+    bool valid_loop_input;    ///< a manifold, consistently oriented triangle mesh (else core refines it by OpenSubdiv's non-manifold rules, or refuses it)
     PolyMesh mesh;
 };
 
