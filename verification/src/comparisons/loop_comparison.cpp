@@ -84,6 +84,13 @@ std::vector<char> nonmanifold_reach(const TriMesh& input, const CoreRun& core) {
     return reached;
 }
 
+/// Levels 0..N of a core run whose level 0 is `input`.
+std::vector<const PolyMesh*> levels_of(const CoreRun& run, const PolyMesh& input) {
+    std::vector<const PolyMesh*> view{&input};
+    for (const PolyMesh& m : run.levels) view.push_back(&m);
+    return view;
+}
+
 /// Max relative error at each level 1..N under the level maps (or the last level only, when
 /// the match was by nearest neighbour). Positions only: topology is compared once, at the end.
 std::vector<double> level_errors(const CoreRun& core, const adapters::LevelTrace& ref, const Correspondence& c) {
@@ -186,7 +193,7 @@ Correspondence renumber_subject(const CoreRun& core, const PolyMesh& input, cons
     subject.options = core.options;
     subject.origins = core.origins;
     subject.levels.assign(core.levels.size(), PolyMesh{});
-    Correspondence c = match_loop_refinement(core.origins, input.positions, trace, core.levels.back().positions);
+    Correspondence c = match_by_provenance(levels_of(core, input), trace);
     if (c.method == MatchMethod::Order || c.method == MatchMethod::Topology) {
         for (size_t l = 1; l < trace.size(); ++l) subject.levels[l - 1] = renumber(trace[l], c.level_maps[l]);
         return c;
@@ -245,6 +252,7 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
     const auto t0 = std::chrono::steady_clock::now();
     // [0] = requested options; others are added for classification. A deque, so references to
     // earlier runs stay valid while later ones are added.
+    const PolyMesh input_mesh = to_poly_mesh(input);
     std::deque<CoreRun> core;
     core.push_back(run_core(input, req.options, req.levels));
     out.core_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -265,7 +273,7 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
         out.subject = subject_name;
         RefineRequest asked{Scheme::Loop, {}, req.levels};
         asked.rule.loop = req.options;
-        const PolyMesh mesh = to_poly_mesh(input);
+        const PolyMesh& mesh = input_mesh;
         IsolatedTrace iso = refine_isolated(*req.subject, mesh, asked, req.timeout_seconds, req.isolate);
         out.subject_outcome = iso.outcome;
         if (iso.outcome.status != RunStatus::Ok) return out;
@@ -286,7 +294,7 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
     int max_valence = -1;
     auto largest_valence = [&] {
         if (max_valence < 0)
-            for (int v : mesh_topology(to_poly_mesh(input)).valence) max_valence = std::max(max_valence, v);
+            for (int v : mesh_topology(input_mesh).valence) max_valence = std::max(max_valence, v);
         return std::max(max_valence, 0);
     };
 
@@ -312,8 +320,8 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
             tier.tolerance = agreement_tolerance(ours.levels.back(), true, req.tolerance, largest_valence(), req.levels);
             if (tier.tier == Tier::Strict) tier.tier = Tier::Weak;
         }
-        run.correspondence =
-            match_loop_refinement(ours.origins, input.positions, trace, core.front().levels.back().positions);
+        // Against core's own levels: a subject renumbered into core's order has the same.
+        run.correspondence = match_refinement(levels_of(core.front(), input_mesh), trace);
         if (req.tier == Tier::Geometric) {
             const double d = bounding_box_diagonal(ours.levels.back().positions);
             run.hausdorff_rel = hausdorff_vertex_sets(ours.levels.back().positions, trace.back().positions) / (d > 0 ? d : 1);

@@ -74,7 +74,6 @@ bool beyond_valence_table(const Implementation& ref, Scheme scheme, const Scheme
     return true;
 }
 
-/// Schemes that refine a triangle into four by one new vertex per edge, old vertices first.
 /// The vertices of Catmull-Clark's level `levels` that the input's non-manifold vertices can
 /// reach: at each level a vertex is near when it shares a face with a reached one; a vertex
 /// point is reached when its parent is near, a face point when a vertex of its face is, an
@@ -103,8 +102,11 @@ std::vector<char> catmull_clark_nonmanifold_reach(const PolyMesh& input, const C
     return reached;
 }
 
-bool splits_triangles(Scheme scheme) {
-    return scheme == Scheme::Butterfly || scheme == Scheme::ModifiedButterfly || scheme == Scheme::Loop;
+/// Schemes whose levels are matched by provenance (match_by_provenance): a triangle split
+/// into four, an n-gon into n quads, old vertices kept.
+bool primal(Scheme scheme) {
+    return scheme == Scheme::Butterfly || scheme == Scheme::ModifiedButterfly || scheme == Scheme::Loop ||
+           scheme == Scheme::CatmullClark;
 }
 
 }  // namespace
@@ -133,9 +135,15 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
 
     // Core under the requested rule, and under each reference's rule when it differs.
     PolyMesh ours;
+    adapters::LevelTrace our_levels;  // every level, for a primal scheme (matched by provenance)
     const auto t0 = std::chrono::steady_clock::now();
     try {
-        ours = subdivide(req.scheme, req.rule, input, req.levels);
+        if (primal(req.scheme)) {
+            our_levels = core_implementation().refine(input, {req.scheme, req.rule, req.levels});
+            ours = our_levels.back();
+        } else {
+            ours = subdivide(req.scheme, req.rule, input, req.levels);
+        }
     } catch (const InputError& e) {
         out.core_error = e.what();
     }
@@ -175,28 +183,29 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
         const PolyMesh& theirs = it.trace->back();
         // Core with the reference's rule, to measure what the rule explains; a rule core has
         // only for manifold meshes (OpenMesh's midpoint-average on a bowtie) is not measured.
+        // Every level of it for a primal scheme, to match by provenance.
         std::string no_same_rule;
+        adapters::LevelTrace same_rule_levels;
         PolyMesh same_rule_mesh = ours;
         if (rules_differ) {
             try {
-                same_rule_mesh = subdivide(req.scheme, ref_rule, input, req.levels);
+                if (primal(req.scheme)) {
+                    same_rule_levels = core_implementation().refine(input, {req.scheme, ref_rule, req.levels});
+                    same_rule_mesh = same_rule_levels.back();
+                } else {
+                    same_rule_mesh = subdivide(req.scheme, ref_rule, input, req.levels);
+                }
             } catch (const InputError& e) {
                 no_same_rule = "; core cannot apply " + ref.name() + "'s " + run.rule + " rule here (" + e.what() + ")";
             }
         }
-        // Match against core with the reference's rule: positions then coincide up to
-        // rounding, so nearest-neighbour matching is sound even where the requested rule
-        // moves vertices (or makes others).
-        run.correspondence = match_nearest_and_faces(same_rule_mesh, theirs);
-        if (run.correspondence.method == MatchMethod::None && splits_triangles(req.scheme)) {
-            // A reference whose rule moves vertices onto others' places (a boundary rule
-            // of its own) is matched by connectivity, level by level.
-            adapters::LevelTrace our_levels{input};
-            for (int l = 1; l <= req.levels; ++l) our_levels.push_back(subdivide(req.scheme, ref_rule, our_levels.back(), 1));
-            const std::string nearest_failed = run.correspondence.note;
-            run.correspondence = match_split_refinement(our_levels, *it.trace);
-            run.correspondence.note = nearest_failed + (run.correspondence.note.empty() ? "" : "; " + run.correspondence.note);
-        }
+        // Match against core with the reference's rule: by provenance where the scheme and the
+        // reference's numbering give it, else by position, which then coincide up to rounding
+        // even where the requested rule moves vertices (or makes others).
+        if (primal(req.scheme))
+            run.correspondence = match_refinement(level_view(same_rule_levels.empty() ? our_levels : same_rule_levels), *it.trace);
+        else
+            run.correspondence = match_nearest_and_faces(same_rule_mesh, theirs);
         if (run.correspondence.method == MatchMethod::None) {
             // Without a correspondence only the topology test of the ladder can be run.
             run.verdict = Verdict::Diverge;

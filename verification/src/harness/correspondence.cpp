@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <numeric>
+#include <span>
 #include <string>
 #include <unordered_map>
 
@@ -13,47 +15,221 @@
 namespace crossdiv::verification {
 namespace {
 
-uint64_t pair_key(int a, int b) {
-    const uint64_t lo = static_cast<uint32_t>(std::min(a, b)), hi = static_cast<uint32_t>(std::max(a, b));
-    return lo << 32 | hi;
+/// Where a refined vertex of a primal scheme comes from, named in our coarse numbering: an
+/// old vertex {-1, v, -1}; a face point {face, -1, -1}; an edge point {face, a, b}, a < b, with
+/// `face` the lowest-numbered of our coarse faces around its edge. The face tells apart two
+/// edges with the same ends (a pillow's refined levels have them) and the face points of two
+/// faces with the same corners in opposite orders (polygons back to back).
+struct Provenance {
+    int face, a, b;
+    bool operator==(const Provenance&) const = default;
+};
+
+struct ProvenanceHash {
+    size_t operator()(const Provenance& p) const {
+        uint64_t h = static_cast<uint32_t>(p.face) * 0x9E3779B97F4A7C15ull;
+        h ^= (static_cast<uint64_t>(static_cast<uint32_t>(p.a)) << 32 | static_cast<uint32_t>(p.b)) + 0x7F4A7C15u + (h << 6) + (h >> 2);
+        return static_cast<size_t>(h);
+    }
+};
+
+struct CycleHash {
+    size_t operator()(const std::vector<int>& c) const {
+        uint64_t h = c.size();
+        for (int v : c) h = (h ^ static_cast<uint32_t>(v)) * 0x100000001B3ull;
+        return static_cast<size_t>(h);
+    }
+};
+
+/// A face's corners rotated to start at its least rotation, orientation kept: the same key for
+/// the same oriented face whatever corner it was listed from.
+std::vector<int> canonical_cycle(std::vector<int> cycle) {
+    if (cycle.empty()) return cycle;
+    const int least = *std::min_element(cycle.begin(), cycle.end());
+    const size_t n = cycle.size();
+    size_t best = n;
+    for (size_t s = 0; s < n; ++s) {
+        if (cycle[s] != least) continue;
+        if (best == n) { best = s; continue; }
+        for (size_t k = 1; k < n; ++k) {  // only for a face that repeats its least vertex
+            const int x = cycle[(s + k) % n], y = cycle[(best + k) % n];
+            if (x != y) { if (x < y) best = s; break; }
+        }
+    }
+    std::rotate(cycle.begin(), cycle.begin() + static_cast<std::ptrdiff_t>(best), cycle.end());
+    return cycle;
 }
 
-/// Recovers level k+1 of the reference from level k's map; returns a reason on failure.
-std::string match_next_level(const std::vector<int>& prev, const std::vector<VertexOrigin>& origins,
-                             const PolyMesh& ref_fine, std::vector<int>& next) {
-    const int n_old = static_cast<int>(prev.size());
-    if (ref_fine.num_vertices() != static_cast<int>(origins.size()))
-        return "reference has " + std::to_string(ref_fine.num_vertices()) + " vertices, ours " +
-               std::to_string(origins.size());
-    std::unordered_map<uint64_t, int> our_edge_point;  // verification, not a kernel: a hash is fine here
-    our_edge_point.reserve(origins.size());
-    for (size_t i = 0; i < origins.size(); ++i)
-        if (origins[i].is_edge_point()) our_edge_point.emplace(pair_key(origins[i].a, origins[i].b), static_cast<int>(i));
+/// Our coarse faces by their oriented corner cycle; a cycle listed twice maps to -1 (its
+/// children cannot be told apart by provenance).
+using FaceIndex = std::unordered_map<std::vector<int>, int, CycleHash>;  // verification, not a kernel
 
-    const MeshTopology topo = mesh_topology(ref_fine);
-    std::vector<std::array<int, 2>> old_neighbors(ref_fine.num_vertices(), {-1, -1});
-    std::vector<int> old_count(ref_fine.num_vertices(), 0);
-    for (auto [a, b] : topo.edge_list) {
-        if (a < n_old && b < n_old) return "old vertices " + std::to_string(a) + " and " + std::to_string(b) + " are adjacent";
+FaceIndex index_faces(const PolyMesh& coarse) {
+    FaceIndex index;
+    index.reserve(static_cast<size_t>(coarse.num_faces()));
+    for (int f = 0; f < coarse.num_faces(); ++f) {
+        const int* c = coarse.face(f);
+        auto [it, fresh] = index.emplace(canonical_cycle(std::vector<int>(c, c + coarse.face_size(f))), f);
+        if (!fresh) it->second = -1;
+    }
+    return index;
+}
+
+std::string cycle_text(const std::vector<int>& cycle) {
+    std::string s = "(";
+    for (size_t i = 0; i < cycle.size(); ++i) s.append(i ? " " : "").append(std::to_string(cycle[i]));
+    return s.append(")");
+}
+
+/// The provenance of every vertex of `fine`, a primal refinement (each triangle split into
+/// four, or each n-gon into n quads around a face point) whose first to_ours.size() vertices
+/// are the coarse ones, named through `to_ours`. Each child face holding one coarse vertex
+/// names its parent: a corner triangle (a, e_ab, e_ca) the face (a, b, c); the quads around
+/// a face point the face of their coarse corners, in order. Empty, with `why`, when `fine`
+/// is not such a refinement of faces we have.
+std::vector<Provenance> read_provenance(const PolyMesh& fine, const std::vector<int>& to_ours,
+                                        const FaceIndex& our_faces, std::string& why) {
+    const int n_old = static_cast<int>(to_ours.size()), n = fine.num_vertices();
+    if (n < n_old) {
+        why = std::to_string(n) + " vertices, fewer than the " + std::to_string(n_old) + " of the level before";
+        return {};
+    }
+    // The coarse neighbours of each new vertex: two for an edge point, none for a face point.
+    std::vector<std::array<int, 2>> old_neighbors(static_cast<size_t>(n), {-1, -1});
+    std::vector<int> old_count(static_cast<size_t>(n), 0);
+    for (auto [a, b] : mesh_topology(fine).edge_list) {
+        if (a < n_old && b < n_old) {
+            why = "old vertices " + std::to_string(a) + " and " + std::to_string(b) + " are adjacent";
+            return {};
+        }
         for (auto [v, w] : {std::pair{a, b}, std::pair{b, a}})
             if (v >= n_old && w < n_old && old_count[v]++ < 2) old_neighbors[v][old_count[v] - 1] = w;
     }
-    next.assign(ref_fine.num_vertices(), -1);
-    std::vector<char> used(origins.size(), 0);
-    for (int v = 0; v < ref_fine.num_vertices(); ++v) {
-        int ours = -1;
-        if (v < n_old) {
-            ours = prev[v];  // old vertices keep their index in our numbering too
-        } else {
-            if (old_count[v] != 2)
-                return "new vertex " + std::to_string(v) + " has " + std::to_string(old_count[v]) + " old neighbours";
-            auto it = our_edge_point.find(pair_key(prev[old_neighbors[v][0]], prev[old_neighbors[v][1]]));
-            if (it == our_edge_point.end()) return "new vertex " + std::to_string(v) + " sits on an edge we do not have";
-            ours = it->second;
+    const auto other_end = [&](int edge_point, int end) {
+        const auto& ab = old_neighbors[static_cast<size_t>(edge_point)];
+        return old_count[static_cast<size_t>(edge_point)] == 2 ? (ab[0] == end ? ab[1] : ab[1] == end ? ab[0] : -1) : -1;
+    };
+    const auto parent_of = [&](std::vector<int> cycle, int child) {
+        for (int& v : cycle) v = to_ours[static_cast<size_t>(v)];
+        const auto it = our_faces.find(canonical_cycle(cycle));
+        if (it == our_faces.end()) why = "face " + std::to_string(child) + " is a child of " + cycle_text(cycle) + ", not a face of ours";
+        else if (it->second < 0) why = "face " + std::to_string(child) + " is a child of " + cycle_text(cycle) + ", which we list twice";
+        else return it->second;
+        return -1;
+    };
+
+    constexpr int kNone = std::numeric_limits<int>::max();
+    std::vector<int> parent(static_cast<size_t>(n), kNone);
+    struct Corner { int face_point, a, next, prev, child; };  // quad (a, next, face_point, prev)
+    std::vector<Corner> quads;
+    for (int f = 0; f < fine.num_faces(); ++f) {
+        const int* c = fine.face(f);
+        const int m = fine.face_size(f);
+        int corner = -1, corners = 0;
+        for (int k = 0; k < m; ++k)
+            if (c[k] < n_old) corner = k, ++corners;
+        if (corners == 0) continue;  // a Loop centre triangle: its vertices are in corner ones too
+        if (corners > 1 || (m != 3 && m != 4)) {
+            why = "face " + std::to_string(f) + " has " + std::to_string(m) + " corners, " + std::to_string(corners) +
+                  " of them old: not a child of a triangle or quad split";
+            return {};
         }
-        if (used[ours]) return "two reference vertices map to our vertex " + std::to_string(ours);
-        used[ours] = 1;
-        next[v] = ours;
+        const int a = c[corner], x = c[(corner + 1) % m], y = c[(corner + m - 1) % m];
+        if (m == 4) {
+            quads.push_back({c[(corner + 2) % m], a, x, y, f});
+            continue;
+        }
+        const int b = other_end(x, a), cc = other_end(y, a);
+        if (b < 0 || cc < 0) {
+            why = "triangle " + std::to_string(f) + " at old vertex " + std::to_string(a) + " is not a corner child";
+            return {};
+        }
+        const int p = parent_of({a, b, cc}, f);
+        if (p < 0) return {};
+        parent[x] = std::min(parent[x], p);
+        parent[y] = std::min(parent[y], p);
+    }
+    // Quads by face point, each group chained around it: quad i's next edge point is quad
+    // i+1's previous one.
+    std::sort(quads.begin(), quads.end(), [](const Corner& l, const Corner& r) {
+        return l.face_point != r.face_point ? l.face_point < r.face_point : l.prev < r.prev;
+    });
+    for (size_t s = 0, e = 0; s < quads.size(); s = e) {
+        while (e < quads.size() && quads[e].face_point == quads[s].face_point) ++e;
+        const auto group = std::span(quads).subspan(s, e - s);
+        std::vector<int> cycle;
+        cycle.reserve(group.size());
+        for (size_t at = 0, steps = 0; steps < group.size(); ++steps) {
+            cycle.push_back(group[at].a);
+            const int next_edge_point = group[at].next;
+            const auto it = std::lower_bound(group.begin(), group.end(), next_edge_point,
+                                             [](const Corner& q, int v) { return q.prev < v; });
+            at = static_cast<size_t>(it - group.begin());
+            // One ring: back at the first quad after exactly group.size() steps, not before.
+            if (it == group.end() || it->prev != next_edge_point || (at == 0) != (steps + 1 == group.size())) {
+                why = "the quads around face point " + std::to_string(group[0].face_point) + " do not make one ring";
+                return {};
+            }
+        }
+        const int p = parent_of(cycle, group[0].child);
+        if (p < 0) return {};
+        parent[group[0].face_point] = p;
+        for (const Corner& q : group) {
+            parent[q.next] = std::min(parent[q.next], p);
+            parent[q.prev] = std::min(parent[q.prev], p);
+        }
+    }
+
+    std::vector<Provenance> out(static_cast<size_t>(n));
+    for (int v = 0; v < n; ++v) {
+        if (v < n_old) {
+            out[v] = {-1, to_ours[v], -1};
+            continue;
+        }
+        if (parent[v] == kNone || (old_count[v] != 2 && old_count[v] != 0)) {
+            why = "new vertex " + std::to_string(v) + " has " + std::to_string(old_count[v]) + " old neighbours" +
+                  (parent[v] == kNone ? " and is in no corner face" : "");
+            return {};
+        }
+        if (old_count[v] == 0) {
+            out[v] = {parent[v], -1, -1};
+            continue;
+        }
+        const int a = to_ours[old_neighbors[v][0]], b = to_ours[old_neighbors[v][1]];
+        out[v] = {parent[v], std::min(a, b), std::max(a, b)};
+    }
+    return out;
+}
+
+/// Recovers level k+1 of the reference from level k's map by provenance; returns a reason on
+/// failure.
+std::string match_next_level(const std::vector<int>& prev, const PolyMesh& our_coarse, const PolyMesh& our_fine,
+                             const PolyMesh& ref_fine, std::vector<int>& next) {
+    if (ref_fine.num_vertices() != our_fine.num_vertices())
+        return "reference has " + std::to_string(ref_fine.num_vertices()) + " vertices, ours " +
+               std::to_string(our_fine.num_vertices());
+    const FaceIndex faces = index_faces(our_coarse);
+    std::vector<int> identity(static_cast<size_t>(our_coarse.num_vertices()));
+    std::iota(identity.begin(), identity.end(), 0);
+    std::string why;
+    const std::vector<Provenance> ours = read_provenance(our_fine, identity, faces, why);
+    if (ours.empty()) return "our level: " + why;
+    std::unordered_map<Provenance, int, ProvenanceHash> ours_by_provenance;  // verification, not a kernel
+    ours_by_provenance.reserve(ours.size());
+    for (size_t i = 0; i < ours.size(); ++i)
+        if (!ours_by_provenance.emplace(ours[i], static_cast<int>(i)).second)
+            return "our vertices " + std::to_string(ours_by_provenance[ours[i]]) + " and " + std::to_string(i) +
+                   " have the same provenance";
+    const std::vector<Provenance> theirs = read_provenance(ref_fine, prev, faces, why);
+    if (theirs.empty()) return why;
+    next.assign(theirs.size(), -1);
+    std::vector<char> used(ours.size(), 0);
+    for (size_t v = 0; v < theirs.size(); ++v) {
+        const auto it = ours_by_provenance.find(theirs[v]);
+        if (it == ours_by_provenance.end()) return "new vertex " + std::to_string(v) + " sits on an edge or face we do not have";
+        if (used[it->second]) return "two reference vertices map to our vertex " + std::to_string(it->second);
+        used[it->second] = 1;
+        next[v] = it->second;
     }
     return "";
 }
@@ -182,40 +358,49 @@ Correspondence match_nearest_and_faces(const PolyMesh& ours, const PolyMesh& ref
     return c;
 }
 
-Correspondence match_loop_refinement(const std::vector<std::vector<VertexOrigin>>& our_origins,
-                                     const std::vector<Vec3>& our_input, const adapters::LevelTrace& ref,
-                                     const std::vector<Vec3>& our_last) {
+Correspondence match_by_provenance(const std::vector<const PolyMesh*>& ours, const adapters::LevelTrace& ref) {
+    Correspondence c;
     std::string why;
-    std::vector<int> map;
-    std::vector<std::vector<int>> level_maps;
-    if (ref.empty() || ref.size() != our_origins.size() + 1) {
-        why = "reference returned " + std::to_string(ref.size()) + " levels";
-    } else if (ref[0].positions != our_input) {
+    if (ours.empty() || ref.size() != ours.size()) {
+        why = "reference returned " + std::to_string(ref.size()) + " levels, we made " + std::to_string(ours.size());
+    } else if (ref[0].positions != ours[0]->positions) {
         why = "reference's level 0 is not our input in our order";
     } else {
-        map.resize(our_input.size());
-        for (size_t i = 0; i < map.size(); ++i) map[i] = static_cast<int>(i);
-        level_maps.push_back(map);
+        std::vector<int> map(ours[0]->positions.size());
+        std::iota(map.begin(), map.end(), 0);
+        c.level_maps.push_back(map);
         for (size_t k = 0; k + 1 < ref.size() && why.empty(); ++k) {
             std::vector<int> next;
-            why = match_next_level(map, our_origins[k], ref[k + 1], next);
+            why = match_next_level(map, *ours[k], *ours[k + 1], ref[k + 1], next);
             if (!why.empty()) why = "level " + std::to_string(k + 1) + ": " + why;
             map = std::move(next);
-            level_maps.push_back(map);
+            c.level_maps.push_back(map);
+        }
+        if (why.empty()) {
+            bool identity = true;
+            for (size_t i = 0; i < map.size() && identity; ++i) identity = map[i] == static_cast<int>(i);
+            c.method = identity ? MatchMethod::Order : MatchMethod::Topology;
+            c.ref_to_ours = std::move(map);
+            return c;
         }
     }
-    if (why.empty()) {
-        Correspondence c;
-        bool identity = true;
-        for (size_t i = 0; i < map.size() && identity; ++i) identity = map[i] == static_cast<int>(i);
-        c.method = identity ? MatchMethod::Order : MatchMethod::Topology;
-        c.ref_to_ours = std::move(map);
-        c.level_maps = std::move(level_maps);
-        return c;
-    }
-    Correspondence c = match_nearest(our_last, ref.empty() ? std::vector<Vec3>{} : ref.back().positions);
-    c.note = "topological matching failed (" + why + ")" + (c.note.empty() ? "" : "; " + c.note);
+    c.level_maps.clear();
+    c.note = "matching by provenance failed (" + why + ")";
     return c;
+}
+
+Correspondence match_refinement(const std::vector<const PolyMesh*>& ours, const adapters::LevelTrace& ref) {
+    Correspondence by_provenance = match_by_provenance(ours, ref);
+    if (by_provenance.method != MatchMethod::None || ours.empty() || ref.empty()) return by_provenance;
+    Correspondence c = match_nearest_and_faces(*ours.back(), ref.back());
+    c.note = by_provenance.note + (c.note.empty() ? "" : "; " + c.note);
+    return c;
+}
+
+std::vector<const PolyMesh*> level_view(const adapters::LevelTrace& levels) {
+    std::vector<const PolyMesh*> view;
+    for (const PolyMesh& m : levels) view.push_back(&m);
+    return view;
 }
 
 PolyMesh renumber(const PolyMesh& mesh, const std::vector<int>& to_ours) {
@@ -226,44 +411,6 @@ PolyMesh renumber(const PolyMesh& mesh, const std::vector<int>& to_ours) {
     for (int& v : out.face_vertices) v = to_ours[static_cast<size_t>(v)];
     out.source = {};
     return out;
-}
-
-std::vector<VertexOrigin> split_origins(int coarse_vertices, const PolyMesh& fine, std::string& why) {
-    std::vector<VertexOrigin> origins(static_cast<size_t>(fine.num_vertices()), VertexOrigin{-1, -1});
-    std::vector<int> old_count(origins.size(), 0);
-    for (int v = 0; v < std::min(coarse_vertices, fine.num_vertices()); ++v) origins[v].a = v;
-    for (auto [a, b] : mesh_topology(fine).edge_list) {
-        if (a < coarse_vertices && b < coarse_vertices) {
-            why = "old vertices " + std::to_string(a) + " and " + std::to_string(b) + " are adjacent";
-            return {};
-        }
-        for (auto [v, w] : {std::pair{a, b}, std::pair{b, a}}) {
-            if (v < coarse_vertices || w >= coarse_vertices) continue;
-            if (++old_count[v] == 1) origins[v].a = w;
-            else origins[v].b = w;
-        }
-    }
-    for (size_t v = static_cast<size_t>(coarse_vertices); v < origins.size(); ++v)
-        if (old_count[v] != 2) {
-            why = "new vertex " + std::to_string(v) + " has " + std::to_string(old_count[v]) + " old neighbours";
-            return {};
-        }
-    return origins;
-}
-
-Correspondence match_split_refinement(const adapters::LevelTrace& ours, const adapters::LevelTrace& ref) {
-    std::vector<std::vector<VertexOrigin>> origins;
-    for (size_t l = 1; l < ours.size(); ++l) {
-        std::string why;
-        origins.push_back(split_origins(ours[l - 1].num_vertices(), ours[l], why));
-        if (origins.back().empty()) {
-            Correspondence c;
-            c.note = "our level " + std::to_string(l) + " is not a numbered 1-to-4 split: " + why;
-            return c;
-        }
-    }
-    if (ours.empty()) return {};
-    return match_loop_refinement(origins, ours.front().positions, ref, ours.back().positions);
 }
 
 }  // namespace crossdiv::verification

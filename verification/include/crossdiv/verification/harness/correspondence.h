@@ -7,14 +7,14 @@
 #include <vector>
 
 #include "crossdiv/adapters/reference.h"
-#include "crossdiv/subdiv/loop.h"
+#include "crossdiv/mesh/poly_mesh.h"
 
 namespace crossdiv::verification {
 
 /// How a correspondence was found, strongest first.
 enum class MatchMethod {
     Order,     ///< the library numbered every vertex as we do
-    Topology,  ///< recovered level by level from connectivity alone
+    Topology,  ///< recovered level by level from provenance (parent vertex, edge, face) alone
     Nearest,   ///< nearest neighbour of positions (k-d tree), a bijection
     /// Nearest neighbours, closest pairs first, and the vertices left over (a reference vertex
     /// far from where it should be) placed by the faces around them.
@@ -34,19 +34,6 @@ struct Correspondence {
     std::string note;              ///< why a stronger method failed, when it did
 };
 
-/// Matches the last level of a reference Loop trace to ours.
-///
-/// Level by level: the reference's level 0 is our input (same order, checked bit for bit);
-/// at level k+1 the library keeps its level-k vertices first (all three do; it is checked,
-/// not assumed: old vertices must be pairwise non-adjacent), and each new vertex is adjacent
-/// to exactly the two old endpoints of its parent edge, which names our edge point. When
-/// this fails at any level, positions of the last level are matched by nearest neighbour.
-/// @param our_origins our_origins[k] is the provenance of our level k+1 vertices.
-/// @param our_last our last level's positions (for the nearest-neighbour fallback).
-Correspondence match_loop_refinement(const std::vector<std::vector<VertexOrigin>>& our_origins,
-                                     const std::vector<Vec3>& our_input, const adapters::LevelTrace& ref,
-                                     const std::vector<Vec3>& our_last);
-
 /// Nearest-neighbour matching of `ref` onto `ours` (k-d tree); method None unless bijective.
 Correspondence match_nearest(const std::vector<Vec3>& ours, const std::vector<Vec3>& ref);
 
@@ -58,17 +45,29 @@ Correspondence match_nearest(const std::vector<Vec3>& ours, const std::vector<Ve
 /// Method None unless this gives a bijection.
 Correspondence match_nearest_and_faces(const PolyMesh& ours, const PolyMesh& ref);
 
-/// The provenance of a 1-to-4 triangle split level (Loop, Butterfly) read off its own
-/// connectivity: the first `coarse_vertices` vertices are the old ones, and each new vertex
-/// is the edge point of the two old vertices it is adjacent to. Empty, with `why` filled, when
-/// `fine` is not numbered that way.
-std::vector<VertexOrigin> split_origins(int coarse_vertices, const PolyMesh& fine, std::string& why);
+/// Matches a reference's levels to ours level by level from provenance alone, for the
+/// primal schemes (a triangle split into four: Loop, the Butterflies; an n-gon into n quads:
+/// Catmull-Clark). `ours` is levels 0..N, `ref` the reference's.
+///
+/// The reference's level 0 must be our input (same order, checked bit for bit). At level
+/// k+1 the reference keeps its level-k vertices first (all three libraries do; it is checked,
+/// not assumed: old vertices must be pairwise non-adjacent). Each child face holding one old
+/// vertex names its parent face (a corner triangle (a, e_ab, e_ca) the face (a, b, c); the
+/// quads around a face point the polygon of their old corners, in order); a new vertex is
+/// then named by its parent face and, for an edge point, its two old neighbours. So
+/// coincident vertices (polygons back to back) and two edges with the same ends (a pillow's
+/// refined levels) match exactly, and positions play no part: a reference whose rule moves
+/// vertices far, onto others' places, is matched too. Method None, with the level and the
+/// reason in the note, when this fails.
+Correspondence match_by_provenance(const std::vector<const PolyMesh*>& ours, const adapters::LevelTrace& ref);
 
-/// Matches the last level of a reference trace of a 1-to-4 triangle split scheme to ours
-/// level by level from connectivity alone (match_loop_refinement, with our provenance read by
-/// split_origins): positions play no part, so a reference whose rule moves some vertices far
-/// (onto others' places) is still matched. `ours` holds every level 0..N.
-Correspondence match_split_refinement(const adapters::LevelTrace& ours, const adapters::LevelTrace& ref);
+/// match_by_provenance, and when the reference's order cannot be derived, positions of the
+/// last level (match_nearest_and_faces: faces as the tie-breaker); the note says why
+/// provenance failed.
+Correspondence match_refinement(const std::vector<const PolyMesh*>& ours, const adapters::LevelTrace& ref);
+
+/// Pointers to every level of `levels`, for match_refinement.
+std::vector<const PolyMesh*> level_view(const adapters::LevelTrace& levels);
 
 /// `mesh` with vertex i renumbered to `to_ours[i]` (a bijection onto 0..n-1): positions
 /// moved, faces rewritten, face order kept.
