@@ -3,6 +3,9 @@
 // crease; and what is refused.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+
 #include "crossdiv/error.h"
 #include "crossdiv/subdiv/catmull_clark.h"
 #include "crossdiv/subdiv/loop.h"
@@ -82,15 +85,64 @@ TEST(NonManifold, AnInteriorNonManifoldCreaseKeepsTheCreaseRule) {
     EXPECT_EQ(r.positions[0], m.positions[0]);              // p0 ends the seam: sharpened
 }
 
-TEST(NonManifold, WhatTheRulesDoNotRefineIsRefusedNamingTheFace) {
+/// Pairs of vertices of `m` at exactly the same place.
+int coincident_pairs(const PolyMesh& m) {
+    std::vector<std::array<double, 3>> p;
+    for (const Vec3& x : m.positions) p.push_back({x.x(), x.y(), x.z()});
+    std::sort(p.begin(), p.end());
+    int pairs = 0;
+    for (size_t i = 1; i < p.size(); ++i) pairs += p[i] == p[i - 1];
+    return pairs;
+}
+
+TEST(NonManifold, ADuplicateFaceSharesItsEdgesAndKeepsTheEdgesInsideItsCopiesApart) {
     PolyMesh dup = book3();
-    dup.add_face({1, 0, 2});  // face 0 again
-    try {
-        loop_subdivide(dup, kLoop, 1);
-        ADD_FAILURE() << "accepted";
-    } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("face 3 repeats face 0"), std::string::npos) << e.what();
-    }
+    dup.add_face({0, 2, 1});  // face 0 again, from another corner
+    // Level 1: the copy joins face 0's three edges (same direction: non-manifold, sharp), so
+    // there are still 7 edges; vertex 2 ends two non-manifold edges and is a corner.
+    const PolyMesh l1 = loop_subdivide(dup, kLoop, 1);
+    ASSERT_EQ(l1.num_vertices(), 5 + 7);
+    ASSERT_EQ(l1.num_faces(), 16);
+    EXPECT_EQ(l1.positions[2], dup.positions[2]);
+    EXPECT_EQ(coincident_pairs(l1), 0);
+    // Level 2: 2 x 7 halves and 3 edges inside each of the 4 faces: 26 edges, 38 vertices.
+    // The 3 edges inside the copy have the same ends as those inside face 0 but are other
+    // edges (OpenSubdiv derives child edges per face): 3 pairs of coincident points, where
+    // completing the level from its face-vertices would have made 35 vertices.
+    const PolyMesh l2 = loop_subdivide(dup, kLoop, 2);
+    EXPECT_EQ(l2.num_vertices(), 12 + 26);
+    EXPECT_EQ(coincident_pairs(l2), 3);
+    // Catmull-Clark: the two copies' face points coincide at level 1 (16 = 5 + 4 + 7
+    // vertices); level 2 has 16 + 12 face points + (2 x 7 + 12) edge points.
+    const CatmullClarkOptions cc{CatmullClarkBoundary::EdgeOnly};
+    EXPECT_EQ(coincident_pairs(catmull_clark_subdivide(dup, cc, 1)), 1);
+    EXPECT_EQ(catmull_clark_subdivide(dup, cc, 2).num_vertices(), 16 + 12 + 26);
+}
+
+TEST(NonManifold, AFaceNamingAVertexTwiceHasADegenerateEdgeAndTwoInstancesOfAPair) {
+    PolyMesh m = book3();
+    m.add_face({0, 0, 2});
+    // Edges as completeTopologyFromFaceVertices makes them: (0, 0) is a new, degenerate edge;
+    // 0 -> 2 joins face 0's edge (the same direction: non-manifold); 2 -> 0 is a pair the
+    // edge's last face already uses, so a second instance. 7 + 2 edges, all three sharp.
+    const std::vector<std::array<int, 2>> edges = nonmanifold_edges(m);
+    ASSERT_EQ(edges.size(), 9u);
+    EXPECT_EQ(std::count(edges.begin(), edges.end(), std::array<int, 2>{0, 0}), 1);
+    EXPECT_EQ(std::count(edges.begin(), edges.end(), std::array<int, 2>{2, 0}), 1);
+    EXPECT_EQ(std::count(edges.begin(), edges.end(), std::array<int, 2>{0, 2}), 1);
+    const PolyMesh r = loop_subdivide(m, kLoop, 1);
+    ASSERT_EQ(r.num_vertices(), 5 + 9);
+    // Vertex 0 (a corner) stays, the degenerate edge's point is at it, and both instances
+    // of {0, 2} have their point at the midpoint.
+    const Vec3 mid = 0.5 * (m.positions[0] + m.positions[2]);
+    EXPECT_EQ(std::count(r.positions.begin(), r.positions.end(), m.positions[0]), 2);
+    EXPECT_EQ(std::count_if(r.positions.begin(), r.positions.end(), [&](const Vec3& p) { return p.isApprox(mid); }), 2);
+    EXPECT_THROW(loop_subdivide(m, {LoopWeights::Loop, LoopBoundary::EdgeOnly, CreaseMethod::Uniform,
+                                    NonManifoldRule::Refuse}, 1),
+                 NonManifoldInput);
+}
+
+TEST(NonManifold, SharpnessTagsOnANonManifoldMeshAreRefused) {
     PolyMesh tagged = book3();
     tagged.creases.edges.push_back({0, 2, 2.0f});
     EXPECT_THROW(loop_subdivide(tagged, kLoop, 1), InputError);

@@ -94,16 +94,23 @@ TEST(Correspondence, BackToBackQuadsAreMatchedByOrientation) {
     for (unsigned seed : {4u, 5u}) expect_recovered(ours, seed);
 }
 
-TEST(Correspondence, AFaceListedTwiceIsNotMatchedByProvenance) {
-    PolyMesh m = datasets::bundled_mesh("cube-asymmetric");
-    m.add_face(std::vector<int>(m.face(0), m.face(0) + m.face_size(0)));
-    adapters::LevelTrace t{m};
-    // Not core's refinement (core refuses the duplicate): one made by hand is enough here,
-    // since matching reads only the connectivity of level 0.
-    t.push_back(refine(Scheme::CatmullClark, datasets::bundled_mesh("cube-asymmetric"), 1)[1]);
-    const Correspondence c = match_by_provenance(level_view(t), t);
-    EXPECT_EQ(c.method, MatchMethod::None);
-    EXPECT_NE(c.note.find("which we list twice"), std::string::npos) << c.note;
+// A face listed twice: the copies share their edges, so at level 1 every vertex has its own
+// provenance; from level 2 on the edges inside each copy are apart (as OpenSubdiv keeps
+// them) and their points are told apart only by the symmetry that swaps the copies, which
+// also makes them coincide: paired in order, and the positions agree exactly.
+TEST(Correspondence, TheCopiesOfADuplicateFaceArePairedBySymmetry) {
+    for (auto [scheme, name] : {std::pair{Scheme::CatmullClark, "cube-asymmetric"}, std::pair{Scheme::Loop, "icosahedron"}}) {
+        PolyMesh m = datasets::bundled_mesh(name);
+        m.add_face(std::vector<int>(m.face(0), m.face(0) + m.face_size(0)));
+        const adapters::LevelTrace ours = refine(scheme, m, 3);
+        std::vector<int> perm;
+        const adapters::LevelTrace ref = shuffle_new_vertices(ours, 11, perm);
+        const Correspondence c = match_by_provenance(level_view(ours), ref);
+        ASSERT_EQ(c.method, MatchMethod::Topology) << c.note;
+        EXPECT_NE(c.note.find("paired in order"), std::string::npos) << c.note;
+        for (size_t v = 0; v < c.ref_to_ours.size(); ++v)
+            EXPECT_EQ(ref.back().positions[v], ours.back().positions[c.ref_to_ours[v]]) << "reference vertex " << v;
+    }
 }
 
 TEST(Correspondence, FallsBackToPositionsWhenOldVerticesAreMoved) {

@@ -25,6 +25,7 @@ PolyConnectivity build_poly_connectivity(const PolyMesh& mesh) {
     conn.corner_face.resize(nc);
     conn.next.resize(nc);
     conn.prev.resize(nc);
+    std::vector<int> seen_in_face(static_cast<size_t>(nv), -1);
     for (int f = 0; f < nf; ++f) {
         const int b = mesh.face_start[f], e = mesh.face_start[f + 1], n = e - b;
         if (n < 3) throw InputError(src.describe_face(f) + ": has " + std::to_string(n) + " corners, needs at least 3");
@@ -33,9 +34,9 @@ PolyConnectivity build_poly_connectivity(const PolyMesh& mesh) {
             if (v < 0 || v >= nv)
                 throw InputError(src.describe_face(f) + ": vertex index " + std::to_string(v) + " out of range [0, " +
                                  std::to_string(nv) + ")");
-            for (int j = b; j < c; ++j)
-                if (conn.corner_vertex[j] == v)
-                    throw InputError(src.describe_face(f) + ": repeated vertex " + std::to_string(v));
+            if (seen_in_face[static_cast<size_t>(v)] == f)  // a stamp per vertex: linear in the face's size
+                throw NonManifoldInput(src.describe_face(f) + ": repeated vertex " + std::to_string(v));
+            seen_in_face[static_cast<size_t>(v)] = f;
             conn.corner_face[c] = f;
             conn.next[c] = k + 1 < n ? c + 1 : b;
             conn.prev[c] = k > 0 ? c - 1 : e - 1;

@@ -25,7 +25,7 @@ TriConnectivity build_tri_connectivity(const TriMesh& mesh) {
                                  " out of range [0, " + std::to_string(nv) + ")");
         }
         if (T[i][0] == T[i][1] || T[i][1] == T[i][2] || T[i][2] == T[i][0])
-            throw InputError(src.describe_face(i) + ": repeated vertex in triangle (" + std::to_string(T[i][0]) +
+            throw NonManifoldInput(src.describe_face(i) + ": repeated vertex in triangle (" + std::to_string(T[i][0]) +
                              ", " + std::to_string(T[i][1]) + ", " + std::to_string(T[i][2]) + ")");
     }
 

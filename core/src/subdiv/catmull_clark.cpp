@@ -130,6 +130,8 @@ RefinementStep catmull_clark_step(const PolyMesh& mesh, const PolyConnectivity& 
 }
 
 PolyMesh catmull_clark_subdivide(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels) {
+    // A level the non-manifold rules refined, whose edges are stated per corner.
+    if (!mesh.corner_edges.empty()) return catmull_clark_subdivide_nonmanifold(mesh, options, levels);
     try {
         return detail::refine_levels(mesh, levels, [&](const PolyMesh& m, const PolyConnectivity& conn, int) {
             return catmull_clark_step(m, conn, options);

@@ -119,6 +119,8 @@ void check_loop_input(const TriMesh& mesh, const LoopOptions& options) {
 }
 
 PolyMesh loop_subdivide(const PolyMesh& mesh, const LoopOptions& options, int levels) {
+    // A level the non-manifold rules refined, whose edges are stated per corner.
+    if (!mesh.corner_edges.empty()) return loop_subdivide_nonmanifold(mesh, options, levels);
     try {
         if (mesh.creases.empty()) {  // the fast path; the result is the same
             detail::require_triangles(mesh, "Loop subdivision");

@@ -42,6 +42,14 @@ struct GeneralTopology {
         const int f = corner_face[static_cast<size_t>(c)];
         return c == mesh->face_start[f] ? mesh->face_start[f + 1] - 1 : c - 1;
     }
+    /// The child edge (a label, PolyMesh::corner_edges) of corner c's edge that ends at c's
+    /// vertex (`at_start`) or at the next corner's: 2e for the half at the edge's first end,
+    /// 2e + 1 at its second. Two faces that traverse the edge the same way share its halves.
+    int child_half(int c, bool at_start) const {
+        const int e = corner_edge[static_cast<size_t>(c)];
+        const int start_end = vertex(c) == vertex(edge_first[static_cast<size_t>(e)]) ? 0 : 1;
+        return 2 * e + (at_start ? start_end : 1 - start_end);
+    }
     int other_end(int e, int v) const {
         const int c = edge_first[static_cast<size_t>(e)];
         return vertex(c) == v ? vertex(next(c)) : vertex(c);
@@ -63,41 +71,12 @@ void group(int n, const std::vector<std::pair<int, int>>& items, std::vector<int
     for (const auto& [k, v] : items) values[static_cast<size_t>(fill[static_cast<size_t>(k)]++)] = v;
 }
 
-/// Two faces on the same vertices in the same cyclic order: Far keeps the edges inside each
-/// apart when it refines them (its child topology is derived per face, not from vertex
-/// pairs), which a level given by face-vertices cannot state; refused rather than refined
-/// into a different topology. Faces compared by their sequence rotated to its smallest vertex.
-void refuse_duplicate_faces(const PolyMesh& mesh) {
-    const int nf = mesh.num_faces();
-    std::vector<int> rotation(static_cast<size_t>(nf));  // offset of each face's smallest vertex
-    for (int f = 0; f < nf; ++f) {
-        const int* v = mesh.face(f);
-        rotation[static_cast<size_t>(f)] = static_cast<int>(std::min_element(v, v + mesh.face_size(f)) - v);
-    }
-    auto at = [&](int f, int k) { return mesh.face(f)[(rotation[static_cast<size_t>(f)] + k) % mesh.face_size(f)]; };
-    auto less = [&](int x, int y) {
-        if (mesh.face_size(x) != mesh.face_size(y)) return mesh.face_size(x) < mesh.face_size(y);
-        for (int k = 0; k < mesh.face_size(x); ++k)
-            if (at(x, k) != at(y, k)) return at(x, k) < at(y, k);
-        return false;
-    };
-    std::vector<int> faces(static_cast<size_t>(nf));
-    std::iota(faces.begin(), faces.end(), 0);
-    std::sort(faces.begin(), faces.end(), [&](int x, int y) { return less(x, y) || (!less(y, x) && x < y); });
-    for (size_t k = 1; k < faces.size(); ++k)
-        if (!less(faces[k - 1], faces[k]))
-            throw InputError(mesh.source.describe_face(faces[k]) + " repeats " + mesh.source.describe_face(faces[k - 1]) +
-                             " (a duplicate face: OpenSubdiv keeps the edges inside the two apart, which a refined "
-                             "mesh of face-vertices cannot state; not refined)");
-}
-
 GeneralTopology complete_topology(const PolyMesh& mesh, bool sharpen_corners) {
     GeneralTopology t;
     t.mesh = &mesh;
     const int nv = mesh.num_vertices(), nf = mesh.num_faces();
     const int nc = static_cast<int>(mesh.face_vertices.size());
     t.corner_face.resize(static_cast<size_t>(nc));
-    std::vector<int> seen_in_face(static_cast<size_t>(nv), -1);
     for (int f = 0; f < nf; ++f) {
         if (mesh.face_size(f) < 3)
             throw InputError(mesh.source.describe_face(f) + ": has " + std::to_string(mesh.face_size(f)) +
@@ -106,37 +85,60 @@ GeneralTopology complete_topology(const PolyMesh& mesh, bool sharpen_corners) {
             const int v = mesh.face_vertices[static_cast<size_t>(c)];
             if (v < 0 || v >= nv)
                 throw InputError(mesh.source.describe_face(f) + ": vertex index " + std::to_string(v) + " out of range");
-            if (seen_in_face[static_cast<size_t>(v)] == f)
-                throw InputError(mesh.source.describe_face(f) + ": repeated vertex " + std::to_string(v) +
-                                 " (a degenerate face: not refined under the non-manifold rules either)");
-            seen_in_face[static_cast<size_t>(v)] = f;
             t.corner_face[static_cast<size_t>(c)] = f;
         }
     }
 
-    refuse_duplicate_faces(mesh);
-
-    // Edges: the corners sorted by their unordered vertex pair; numbered at first corner.
-    std::vector<int> order(static_cast<size_t>(nc));
-    std::iota(order.begin(), order.end(), 0);
+    // Edges, numbered at their first corner. Given explicitly (a refined level), the corners
+    // with one label; otherwise as completeTopologyFromFaceVertices makes them, corners in
+    // face order: a vertex pair is one edge, except that a degenerate pair (a, a) is a new
+    // edge at every corner, and so is a pair the edge's last face already uses (a face that
+    // names it twice); those are non-manifold.
+    const bool labelled = !mesh.corner_edges.empty();
+    if (labelled && mesh.corner_edges.size() != static_cast<size_t>(nc))
+        throw InputError("the mesh states " + std::to_string(mesh.corner_edges.size()) + " corner edges for " +
+                         std::to_string(nc) + " corners");
     auto key = [&](int c) {
+        if (labelled) return std::pair{mesh.corner_edges[static_cast<size_t>(c)], 0};
         const int a = t.vertex(c), b = t.vertex(t.next(c));
         return std::pair{std::min(a, b), std::max(a, b)};
     };
+    std::vector<int> order(static_cast<size_t>(nc));
+    std::iota(order.begin(), order.end(), 0);
     std::sort(order.begin(), order.end(), [&](int x, int y) { return std::pair{key(x), x} < std::pair{key(y), y}; });
-    std::vector<int> group_first;  // per run of equal keys, its smallest corner
+    std::vector<int> group_first;   // per edge found, its first corner
+    std::vector<char> group_forced;  // made non-manifold by the rules above
     std::vector<int> corner_group(static_cast<size_t>(nc));
+    int run_group = -1, run_last_face = -1;  // the pair's first edge, and the last face that joined it
     for (size_t k = 0; k < order.size(); ++k) {
-        if (k == 0 || key(order[k]) != key(order[k - 1])) group_first.push_back(order[k]);
-        corner_group[static_cast<size_t>(order[k])] = static_cast<int>(group_first.size()) - 1;
+        const int c = order[k];
+        const bool new_run = k == 0 || key(c) != key(order[k - 1]);
+        const int face = t.corner_face[static_cast<size_t>(c)];
+        const bool degenerate = !labelled && t.vertex(c) == t.vertex(t.next(c));
+        if (!new_run && (labelled || (!degenerate && face != run_last_face))) {
+            corner_group[static_cast<size_t>(c)] = run_group;
+            run_last_face = face;
+            continue;
+        }
+        const bool repeated = !labelled && !new_run && !degenerate;  // in the face that last joined
+        if (repeated) group_forced[static_cast<size_t>(run_group)] = 1;
+        group_first.push_back(c);
+        group_forced.push_back(degenerate || repeated);
+        corner_group[static_cast<size_t>(c)] = static_cast<int>(group_first.size()) - 1;
+        if (new_run) {
+            run_group = corner_group[static_cast<size_t>(c)];
+            run_last_face = face;
+        }
     }
     std::vector<int> by_first(group_first.size());
     std::iota(by_first.begin(), by_first.end(), 0);
     std::sort(by_first.begin(), by_first.end(), [&](int x, int y) { return group_first[x] < group_first[y]; });
     std::vector<int> edge_of_group(group_first.size());
+    std::vector<char> forced(group_first.size());
     for (size_t e = 0; e < by_first.size(); ++e) {
         edge_of_group[static_cast<size_t>(by_first[e])] = static_cast<int>(e);
         t.edge_first.push_back(group_first[static_cast<size_t>(by_first[e])]);
+        forced[e] = group_forced[static_cast<size_t>(by_first[e])];
     }
     const int ne = t.num_edges();
     t.corner_edge.resize(static_cast<size_t>(nc));
@@ -158,7 +160,7 @@ GeneralTopology complete_topology(const PolyMesh& mesh, bool sharpen_corners) {
         const int h1 = t.edge_corners[static_cast<size_t>(b)];
         const int h2 = n == 2 ? t.edge_corners[static_cast<size_t>(b) + 1] : -1;
         boundary[static_cast<size_t>(e)] = n == 1;
-        nonmanifold[static_cast<size_t>(e)] = n > 2 || (n == 2 && t.vertex(h1) == t.vertex(h2));
+        nonmanifold[static_cast<size_t>(e)] = forced[static_cast<size_t>(e)] || n > 2 || (n == 2 && t.vertex(h1) == t.vertex(h2));
         t.edge_sharp[static_cast<size_t>(e)] = boundary[static_cast<size_t>(e)] || nonmanifold[static_cast<size_t>(e)];
         if (n == 2 && !nonmanifold[static_cast<size_t>(e)]) {
             parent[static_cast<size_t>(find(parent, h1))] = find(parent, t.next(h2));  // both at h1's vertex
@@ -264,7 +266,7 @@ RefinementStep loop_nonmanifold_step(const PolyMesh& mesh, const LoopOptions& op
         throw InputError("the non-manifold rules are defined for the weight families with Loop's edge mask (loop, "
                          "warren), not for " + std::string(to_string(options.weights)));
     const int nv = mesh.num_vertices(), nf = mesh.num_faces();
-    if (4LL * nf > INT_MAX) throw InputError("the next Loop level would have more than 2^31 faces; use fewer levels");
+    if (12LL * nf > INT_MAX) throw InputError("the next Loop level would have more than 2^31 corners; use fewer levels");
     const GeneralTopology t = complete_topology(mesh, options.boundary == LoopBoundary::EdgeAndCorner);
     const int ne = t.num_edges();
     RefinementStep step(nv);
@@ -290,6 +292,7 @@ RefinementStep loop_nonmanifold_step(const PolyMesh& mesh, const LoopOptions& op
         st.end_row();
     }
     step.face_vertices.reserve(12 * static_cast<size_t>(nf));
+    step.corner_edges.reserve(12 * static_cast<size_t>(nf));
     for (int f = 0; f < nf; ++f) {
         const int c = mesh.face_start[f];
         const int* v = mesh.face(f);
@@ -299,6 +302,14 @@ RefinementStep loop_nonmanifold_step(const PolyMesh& mesh, const LoopOptions& op
         step.add_face({v[1], m1, m0});
         step.add_face({v[2], m2, m1});
         step.add_face({m0, m1, m2});
+        // The child edges: two halves per edge, three inside the face (i_k opposite corner k's
+        // child), so that edges of different faces with the same ends stay apart.
+        const int i0 = 2 * ne + 3 * f, i1 = i0 + 1, i2 = i0 + 2;
+        step.corner_edges.insert(step.corner_edges.end(),
+                                 {t.child_half(c, true), i0, t.child_half(c + 2, false),      // v0 m0 m2
+                                  t.child_half(c + 1, true), i1, t.child_half(c, false),      // v1 m1 m0
+                                  t.child_half(c + 2, true), i2, t.child_half(c + 1, false),  // v2 m2 m1
+                                  i1, i2, i0});                                               // m0 m1 m2
     }
     step.creases.holes = child_holes(mesh.creases.holes, [](int f) { return 4 * f; });
     return step;
@@ -354,10 +365,16 @@ RefinementStep catmull_clark_nonmanifold_step(const PolyMesh& mesh, const Catmul
         st.end_row();
     }
     step.face_vertices.reserve(4 * static_cast<size_t>(nc));
-    for (int c = 0; c < nc; ++c)
+    step.corner_edges.reserve(4 * static_cast<size_t>(nc));
+    for (int c = 0; c < nc; ++c) {
+        const int p = t.prev(c);
         step.add_face({t.vertex(c), edge_point + t.corner_edge[static_cast<size_t>(c)],
-                       face_point + t.corner_face[static_cast<size_t>(c)],
-                       edge_point + t.corner_edge[static_cast<size_t>(t.prev(c))]});
+                       face_point + t.corner_face[static_cast<size_t>(c)], edge_point + t.corner_edge[static_cast<size_t>(p)]});
+        // The child edges: two halves per edge, and per corner the one from its edge's point
+        // to the face point (shared with the next corner's quad).
+        step.corner_edges.insert(step.corner_edges.end(),
+                                 {t.child_half(c, true), 2 * ne + c, 2 * ne + p, t.child_half(p, false)});
+    }
     step.creases.holes = child_holes(mesh.creases.holes, [&](int f) { return mesh.face_start[f]; });
     return step;
 }

@@ -16,20 +16,21 @@ namespace crossdiv::verification {
 namespace {
 
 /// Where a refined vertex of a primal scheme comes from, named in our coarse numbering: an
-/// old vertex {-1, v, -1}; a face point {face, -1, -1}; an edge point {face, a, b}, a < b, with
-/// `face` the lowest-numbered of our coarse faces around its edge. The face tells apart two
-/// edges with the same ends (a pillow's refined levels have them) and the face points of two
-/// faces with the same corners in opposite orders (polygons back to back).
+/// old vertex {-1, v}; a face point {face, -1}; an edge point {face, k}, k the edge's place
+/// in the face (counted from its canonical first corner, canonical_cycle), `face` the
+/// lowest-numbered of our coarse faces around the edge. The face tells apart two edges with
+/// the same ends (a pillow's refined levels have them, and a face that names a pair twice)
+/// and the face points of two faces with the same corners in opposite orders (polygons back
+/// to back).
 struct Provenance {
-    int face, a, b;
+    int face, local;
     bool operator==(const Provenance&) const = default;
 };
 
 struct ProvenanceHash {
     size_t operator()(const Provenance& p) const {
-        uint64_t h = static_cast<uint32_t>(p.face) * 0x9E3779B97F4A7C15ull;
-        h ^= (static_cast<uint64_t>(static_cast<uint32_t>(p.a)) << 32 | static_cast<uint32_t>(p.b)) + 0x7F4A7C15u + (h << 6) + (h >> 2);
-        return static_cast<size_t>(h);
+        const uint64_t h = (static_cast<uint64_t>(static_cast<uint32_t>(p.face)) << 32) | static_cast<uint32_t>(p.local);
+        return static_cast<size_t>(h * 0x9E3779B97F4A7C15ull ^ (h >> 29));
     }
 };
 
@@ -41,12 +42,12 @@ struct CycleHash {
     }
 };
 
-/// A face's corners rotated to start at its least rotation, orientation kept: the same key for
-/// the same oriented face whatever corner it was listed from.
-std::vector<int> canonical_cycle(std::vector<int> cycle) {
-    if (cycle.empty()) return cycle;
-    const int least = *std::min_element(cycle.begin(), cycle.end());
+/// Where a face's canonical listing starts: at its least rotation (the same for the same
+/// oriented face whatever corner it was listed from).
+size_t canonical_start(const std::vector<int>& cycle) {
     const size_t n = cycle.size();
+    if (n == 0) return 0;
+    const int least = *std::min_element(cycle.begin(), cycle.end());
     size_t best = n;
     for (size_t s = 0; s < n; ++s) {
         if (cycle[s] != least) continue;
@@ -56,21 +57,25 @@ std::vector<int> canonical_cycle(std::vector<int> cycle) {
             if (x != y) { if (x < y) best = s; break; }
         }
     }
-    std::rotate(cycle.begin(), cycle.begin() + static_cast<std::ptrdiff_t>(best), cycle.end());
+    return best;
+}
+
+std::vector<int> rotated(std::vector<int> cycle, size_t start) {
+    std::rotate(cycle.begin(), cycle.begin() + static_cast<std::ptrdiff_t>(start), cycle.end());
     return cycle;
 }
 
-/// Our coarse faces by their oriented corner cycle; a cycle listed twice maps to -1 (its
-/// children cannot be told apart by provenance).
+/// Our coarse faces by their canonical oriented corner cycle. Of a cycle listed twice (a
+/// duplicate face) the first: the copies' edges are the same edges, and their children are
+/// told apart only by symmetry (match_next_level pairs them in order).
 using FaceIndex = std::unordered_map<std::vector<int>, int, CycleHash>;  // verification, not a kernel
 
 FaceIndex index_faces(const PolyMesh& coarse) {
     FaceIndex index;
     index.reserve(static_cast<size_t>(coarse.num_faces()));
     for (int f = 0; f < coarse.num_faces(); ++f) {
-        const int* c = coarse.face(f);
-        auto [it, fresh] = index.emplace(canonical_cycle(std::vector<int>(c, c + coarse.face_size(f))), f);
-        if (!fresh) it->second = -1;
+        std::vector<int> cycle(coarse.face(f), coarse.face(f) + coarse.face_size(f));
+        index.emplace(rotated(cycle, canonical_start(cycle)), f);
     }
     return index;
 }
@@ -85,8 +90,9 @@ std::string cycle_text(const std::vector<int>& cycle) {
 /// four, or each n-gon into n quads around a face point) whose first to_ours.size() vertices
 /// are the coarse ones, named through `to_ours`. Each child face holding one coarse vertex
 /// names its parent: a corner triangle (a, e_ab, e_ca) the face (a, b, c); the quads around
-/// a face point the face of their coarse corners, in order. Empty, with `why`, when `fine`
-/// is not such a refinement of faces we have.
+/// a face point the face of their coarse corners, in order. An edge point has two coarse
+/// neighbours, or one when its edge is degenerate (a face naming a vertex twice in a row).
+/// Empty, with `why`, when `fine` is not such a refinement of faces we have.
 std::vector<Provenance> read_provenance(const PolyMesh& fine, const std::vector<int>& to_ours,
                                         const FaceIndex& our_faces, std::string& why) {
     const int n_old = static_cast<int>(to_ours.size()), n = fine.num_vertices();
@@ -94,7 +100,7 @@ std::vector<Provenance> read_provenance(const PolyMesh& fine, const std::vector<
         why = std::to_string(n) + " vertices, fewer than the " + std::to_string(n_old) + " of the level before";
         return {};
     }
-    // The coarse neighbours of each new vertex: two for an edge point, none for a face point.
+    // The coarse neighbours of each new vertex: two (or one) for an edge point, none for a face point.
     std::vector<std::array<int, 2>> old_neighbors(static_cast<size_t>(n), {-1, -1});
     std::vector<int> old_count(static_cast<size_t>(n), 0);
     for (auto [a, b] : mesh_topology(fine).edge_list) {
@@ -107,19 +113,37 @@ std::vector<Provenance> read_provenance(const PolyMesh& fine, const std::vector<
     }
     const auto other_end = [&](int edge_point, int end) {
         const auto& ab = old_neighbors[static_cast<size_t>(edge_point)];
-        return old_count[static_cast<size_t>(edge_point)] == 2 ? (ab[0] == end ? ab[1] : ab[1] == end ? ab[0] : -1) : -1;
-    };
-    const auto parent_of = [&](std::vector<int> cycle, int child) {
-        for (int& v : cycle) v = to_ours[static_cast<size_t>(v)];
-        const auto it = our_faces.find(canonical_cycle(cycle));
-        if (it == our_faces.end()) why = "face " + std::to_string(child) + " is a child of " + cycle_text(cycle) + ", not a face of ours";
-        else if (it->second < 0) why = "face " + std::to_string(child) + " is a child of " + cycle_text(cycle) + ", which we list twice";
-        else return it->second;
-        return -1;
+        switch (old_count[static_cast<size_t>(edge_point)]) {
+            case 1: return ab[0] == end ? end : -1;  // a degenerate edge (end, end)
+            case 2: return ab[0] == end ? ab[1] : ab[1] == end ? ab[0] : -1;
+            default: return -1;
+        }
     };
 
     constexpr int kNone = std::numeric_limits<int>::max();
-    std::vector<int> parent(static_cast<size_t>(n), kNone);
+    std::vector<Provenance> edge_of(static_cast<size_t>(n), {kNone, -1});
+    std::vector<int> face_of(static_cast<size_t>(n), kNone);
+    // Names parent `listing` (coarse corners in fine numbering) and puts each edge point
+    // given as (vertex, place in the listing) on its edge.
+    const auto name_parent = [&](std::vector<int> listing, int child, std::initializer_list<std::pair<int, int>> points,
+                                 int face_point) {
+        for (int& v : listing) v = to_ours[static_cast<size_t>(v)];
+        const size_t start = canonical_start(listing);
+        const auto it = our_faces.find(rotated(listing, start));
+        if (it == our_faces.end()) {
+            why = "face " + std::to_string(child) + " is a child of " + cycle_text(listing) + ", not a face of ours";
+            return false;
+        }
+        const int m = static_cast<int>(listing.size()), p = it->second;
+        for (auto [v, place] : points) {
+            const Provenance here{p, (place - static_cast<int>(start) + m) % m};
+            Provenance& e = edge_of[static_cast<size_t>(v)];
+            if (p < e.face) e = here;
+        }
+        if (face_point >= 0) face_of[static_cast<size_t>(face_point)] = p;
+        return true;
+    };
+
     struct Corner { int face_point, a, next, prev, child; };  // quad (a, next, face_point, prev)
     std::vector<Corner> quads;
     for (int f = 0; f < fine.num_faces(); ++f) {
@@ -144,10 +168,7 @@ std::vector<Provenance> read_provenance(const PolyMesh& fine, const std::vector<
             why = "triangle " + std::to_string(f) + " at old vertex " + std::to_string(a) + " is not a corner child";
             return {};
         }
-        const int p = parent_of({a, b, cc}, f);
-        if (p < 0) return {};
-        parent[x] = std::min(parent[x], p);
-        parent[y] = std::min(parent[y], p);
+        if (!name_parent({a, b, cc}, f, {{x, 0}, {y, 2}}, -1)) return {};
     }
     // Quads by face point, each group chained around it: quad i's next edge point is quad
     // i+1's previous one.
@@ -157,10 +178,12 @@ std::vector<Provenance> read_provenance(const PolyMesh& fine, const std::vector<
     for (size_t s = 0, e = 0; s < quads.size(); s = e) {
         while (e < quads.size() && quads[e].face_point == quads[s].face_point) ++e;
         const auto group = std::span(quads).subspan(s, e - s);
-        std::vector<int> cycle;
-        cycle.reserve(group.size());
+        std::vector<int> listing;
+        std::vector<size_t> ring;
+        listing.reserve(group.size());
         for (size_t at = 0, steps = 0; steps < group.size(); ++steps) {
-            cycle.push_back(group[at].a);
+            listing.push_back(group[at].a);
+            ring.push_back(at);
             const int next_edge_point = group[at].next;
             const auto it = std::lower_bound(group.begin(), group.end(), next_edge_point,
                                              [](const Corner& q, int v) { return q.prev < v; });
@@ -171,40 +194,80 @@ std::vector<Provenance> read_provenance(const PolyMesh& fine, const std::vector<
                 return {};
             }
         }
-        const int p = parent_of(cycle, group[0].child);
-        if (p < 0) return {};
-        parent[group[0].face_point] = p;
-        for (const Corner& q : group) {
-            parent[q.next] = std::min(parent[q.next], p);
-            parent[q.prev] = std::min(parent[q.prev], p);
-        }
+        if (!name_parent(listing, group[0].child, {}, group[0].face_point)) return {};
+        for (size_t i = 0; i < ring.size(); ++i)  // quad i's next edge point is on the listing's edge i
+            if (!name_parent(listing, group[0].child, {{group[ring[i]].next, static_cast<int>(i)}}, -1)) return {};
     }
 
     std::vector<Provenance> out(static_cast<size_t>(n));
     for (int v = 0; v < n; ++v) {
         if (v < n_old) {
-            out[v] = {-1, to_ours[v], -1};
-            continue;
-        }
-        if (parent[v] == kNone || (old_count[v] != 2 && old_count[v] != 0)) {
-            why = "new vertex " + std::to_string(v) + " has " + std::to_string(old_count[v]) + " old neighbours" +
-                  (parent[v] == kNone ? " and is in no corner face" : "");
+            out[v] = {-1, to_ours[v]};
+        } else if (old_count[v] == 0 && face_of[v] != kNone) {
+            out[v] = {face_of[v], -1};
+        } else if ((old_count[v] == 1 || old_count[v] == 2) && edge_of[v].face != kNone) {
+            out[v] = edge_of[v];
+        } else {
+            why = "new vertex " + std::to_string(v) + " has " + std::to_string(old_count[v]) +
+                  " old neighbours and is in no corner face that names it";
             return {};
         }
-        if (old_count[v] == 0) {
-            out[v] = {parent[v], -1, -1};
-            continue;
-        }
-        const int a = to_ours[old_neighbors[v][0]], b = to_ours[old_neighbors[v][1]];
-        out[v] = {parent[v], std::min(a, b), std::max(a, b)};
     }
     return out;
 }
 
+/// The copies that vertices sharing their provenance with others belong to: such vertices
+/// are joined when they share a face. Per vertex, its copy as a list of its members sorted by
+/// (provenance, index); -1 for a vertex whose provenance is its own.
+struct Copies {
+    std::vector<int> of;                   ///< per vertex: its copy, or -1
+    std::vector<std::vector<int>> members;  ///< per copy, ordered by its smallest vertex
+};
+
+Copies group_copies(const PolyMesh& fine, const std::vector<Provenance>& provenance, const std::vector<char>& shared) {
+    const size_t n = provenance.size();
+    std::vector<int> root(n);
+    std::iota(root.begin(), root.end(), 0);
+    const auto find = [&](int x) {
+        while (root[static_cast<size_t>(x)] != x) x = root[static_cast<size_t>(x)] = root[static_cast<size_t>(root[static_cast<size_t>(x)])];
+        return x;
+    };
+    for (int f = 0; f < fine.num_faces(); ++f) {
+        int last = -1;
+        for (int k = 0; k < fine.face_size(f); ++k) {
+            const int v = fine.face(f)[k];
+            if (!shared[static_cast<size_t>(v)]) continue;
+            if (last >= 0) root[static_cast<size_t>(find(v))] = find(last);
+            last = v;
+        }
+    }
+    Copies c;
+    c.of.assign(n, -1);
+    std::vector<int> copy_of_root(n, -1);
+    for (size_t v = 0; v < n; ++v) {
+        if (!shared[v]) continue;
+        int& id = copy_of_root[static_cast<size_t>(find(static_cast<int>(v)))];
+        if (id < 0) {
+            id = static_cast<int>(c.members.size());
+            c.members.emplace_back();
+        }
+        c.of[v] = id;
+        c.members[static_cast<size_t>(id)].push_back(static_cast<int>(v));
+    }
+    for (std::vector<int>& m : c.members)
+        std::stable_sort(m.begin(), m.end(), [&](int x, int y) {
+            return std::pair{provenance[x].face, provenance[x].local} < std::pair{provenance[y].face, provenance[y].local};
+        });
+    return c;
+}
+
 /// Recovers level k+1 of the reference from level k's map by provenance; returns a reason on
-/// failure.
+/// failure. Vertices that share their provenance (the children of a duplicate face's copies,
+/// which only the symmetry swapping the copies tells apart) are matched copy by copy: a
+/// reference copy takes the first of ours with the same provenances, so that the map stays
+/// one symmetry; `symmetric` counts them.
 std::string match_next_level(const std::vector<int>& prev, const PolyMesh& our_coarse, const PolyMesh& our_fine,
-                             const PolyMesh& ref_fine, std::vector<int>& next) {
+                             const PolyMesh& ref_fine, std::vector<int>& next, int& symmetric) {
     if (ref_fine.num_vertices() != our_fine.num_vertices())
         return "reference has " + std::to_string(ref_fine.num_vertices()) + " vertices, ours " +
                std::to_string(our_fine.num_vertices());
@@ -214,22 +277,49 @@ std::string match_next_level(const std::vector<int>& prev, const PolyMesh& our_c
     std::string why;
     const std::vector<Provenance> ours = read_provenance(our_fine, identity, faces, why);
     if (ours.empty()) return "our level: " + why;
-    std::unordered_map<Provenance, int, ProvenanceHash> ours_by_provenance;  // verification, not a kernel
-    ours_by_provenance.reserve(ours.size());
-    for (size_t i = 0; i < ours.size(); ++i)
-        if (!ours_by_provenance.emplace(ours[i], static_cast<int>(i)).second)
-            return "our vertices " + std::to_string(ours_by_provenance[ours[i]]) + " and " + std::to_string(i) +
-                   " have the same provenance";
     const std::vector<Provenance> theirs = read_provenance(ref_fine, prev, faces, why);
     if (theirs.empty()) return why;
+
+    std::unordered_map<Provenance, int, ProvenanceHash> our_vertex;  // -1: shared by several; verification, not a kernel
+    our_vertex.reserve(ours.size());
+    for (size_t i = 0; i < ours.size(); ++i) {
+        auto [it, fresh] = our_vertex.emplace(ours[i], static_cast<int>(i));
+        if (!fresh) it->second = -1;
+    }
+    std::vector<char> our_shared(ours.size()), their_shared(theirs.size());
+    for (size_t i = 0; i < ours.size(); ++i) our_shared[i] = our_vertex.at(ours[i]) < 0;
     next.assign(theirs.size(), -1);
-    std::vector<char> used(ours.size(), 0);
     for (size_t v = 0; v < theirs.size(); ++v) {
-        const auto it = ours_by_provenance.find(theirs[v]);
-        if (it == ours_by_provenance.end()) return "new vertex " + std::to_string(v) + " sits on an edge or face we do not have";
-        if (used[it->second]) return "two reference vertices map to our vertex " + std::to_string(it->second);
-        used[it->second] = 1;
-        next[v] = it->second;
+        const auto it = our_vertex.find(theirs[v]);
+        if (it == our_vertex.end()) return "new vertex " + std::to_string(v) + " sits on an edge or face we do not have";
+        their_shared[v] = it->second < 0;
+        if (!their_shared[v]) next[v] = it->second;
+    }
+    if (std::find(our_shared.begin(), our_shared.end(), 1) != our_shared.end()) {
+        const Copies our_copies = group_copies(our_fine, ours, our_shared);
+        const Copies their_copies = group_copies(ref_fine, theirs, their_shared);
+        const auto same = [&](const std::vector<int>& mine, const std::vector<int>& other) {
+            if (mine.size() != other.size()) return false;
+            for (size_t k = 0; k < mine.size(); ++k)
+                if (!(ours[static_cast<size_t>(mine[k])] == theirs[static_cast<size_t>(other[k])])) return false;
+            return true;
+        };
+        std::vector<char> taken(our_copies.members.size(), 0);
+        for (const std::vector<int>& copy : their_copies.members) {
+            size_t match = 0;
+            while (match < taken.size() && (taken[match] || !same(our_copies.members[match], copy))) ++match;
+            if (match == taken.size())
+                return "reference vertex " + std::to_string(copy.front()) +
+                       " shares its provenance with others, in a group none of ours matches";
+            taken[match] = 1;
+            for (size_t k = 0; k < copy.size(); ++k) next[static_cast<size_t>(copy[k])] = our_copies.members[match][k];
+            symmetric += static_cast<int>(copy.size());
+        }
+    }
+    std::vector<char> used(ours.size(), 0);
+    for (size_t v = 0; v < next.size(); ++v) {
+        if (next[v] < 0) return "reference vertex " + std::to_string(v) + " is left without a match";
+        if (used[static_cast<size_t>(next[v])]++) return "two reference vertices map to our vertex " + std::to_string(next[v]);
     }
     return "";
 }
@@ -369,9 +459,10 @@ Correspondence match_by_provenance(const std::vector<const PolyMesh*>& ours, con
         std::vector<int> map(ours[0]->positions.size());
         std::iota(map.begin(), map.end(), 0);
         c.level_maps.push_back(map);
+        int symmetric = 0;
         for (size_t k = 0; k + 1 < ref.size() && why.empty(); ++k) {
             std::vector<int> next;
-            why = match_next_level(map, *ours[k], *ours[k + 1], ref[k + 1], next);
+            why = match_next_level(map, *ours[k], *ours[k + 1], ref[k + 1], next, symmetric);
             if (!why.empty()) why = "level " + std::to_string(k + 1) + ": " + why;
             map = std::move(next);
             c.level_maps.push_back(map);
@@ -381,6 +472,9 @@ Correspondence match_by_provenance(const std::vector<const PolyMesh*>& ours, con
             for (size_t i = 0; i < map.size() && identity; ++i) identity = map[i] == static_cast<int>(i);
             c.method = identity ? MatchMethod::Order : MatchMethod::Topology;
             c.ref_to_ours = std::move(map);
+            if (symmetric > 0)
+                c.note = std::to_string(symmetric) + " vertices with the same provenance (children of a duplicate "
+                         "face's copies) paired in order";
             return c;
         }
     }

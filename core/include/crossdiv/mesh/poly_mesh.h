@@ -24,6 +24,13 @@ struct PolyMesh {
     /// Crease and corner sharpness (Loop and Catmull-Clark honour them; the schemes without
     /// crease rules refuse a tagged mesh rather than drop the tags).
     CreaseTags creases;
+    /// Empty, or the edge each corner's half-edge lies on (corner c: the one leaving
+    /// face_vertices[c] along its face): a refined level whose edges are not told apart by
+    /// their end vertices (the children of a duplicate face, of a face that names a vertex
+    /// twice) states them here, as OpenSubdiv derives child edges per face. Only the
+    /// non-manifold refinement (subdiv/nonmanifold.h) makes and reads it; any label values,
+    /// equal labels meaning one edge.
+    std::vector<int> corner_edges;
     MeshSource source;
 
     int num_vertices() const { return static_cast<int>(positions.size()); }

@@ -7,9 +7,16 @@
 ///
 /// The rules, each from the OpenSubdiv function it mirrors:
 /// - Vtr::internal::Level::completeTopologyFromFaceVertices: edges are the vertex pairs the
-///   faces name. An edge is non-manifold when more than two faces use it, or two faces
-///   traverse it in the same direction; a vertex is non-manifold when it ends a non-manifold
-///   edge, or its faces form more than one fan (a bowtie).
+///   faces name, corners taken in face order, except that a degenerate pair (a face naming a
+///   vertex twice in a row) is a new edge at every corner, and so is a pair that the edge's
+///   last face already uses (a face naming the pair twice). An edge is non-manifold when it
+///   is one of those, when more than two faces use it, or two faces traverse it in the same
+///   direction (a duplicate face's edges); a vertex is non-manifold when it ends a
+///   non-manifold edge, or its faces form more than one fan (a bowtie).
+/// - Vtr::internal::Refinement (child topology): a refined level's edges are derived per
+///   face, never from vertex pairs: two halves per edge, and the edges inside each face.
+///   The steps state them in PolyMesh::corner_edges, so that the edges inside two copies of
+///   a face stay two edges, as in Far.
 /// - Far::TopologyRefinerFactoryBase::prepareComponentTagsAndSharpness: boundary and
 ///   non-manifold edges are infinitely sharp; a non-manifold vertex is infinitely sharp,
 ///   except on an interior non-manifold crease (exactly two non-manifold edges, no boundary
@@ -23,7 +30,7 @@
 /// The same tags are recomputed at every level from that level's topology: the children of
 /// a non-manifold edge or vertex are non-manifold in the same way, so this equals Far's
 /// propagation of the infinitely sharp tags. Semi-sharp crease tags on a non-manifold mesh
-/// and faces that name a vertex twice are refused (InputError).
+/// are refused (InputError).
 
 #include <array>
 #include <vector>
@@ -38,8 +45,8 @@ namespace crossdiv {
 /// One Loop level of a triangle mesh under the rules above: vertex points first, then one
 /// edge point per edge (numbered at its first corner in face order), four triangles per
 /// triangle in loop_step's order; hole tags carried to the children.
-/// @throws InputError for a face that is not a triangle or names a vertex twice, for
-///         semi-sharp tags, and for the tuned weight families (no rule next to a sharp edge).
+/// @throws InputError for a face that is not a triangle, for semi-sharp tags, and for the
+///         tuned weight families (no rule next to a sharp edge).
 RefinementStep loop_nonmanifold_step(const PolyMesh& mesh, const LoopOptions& options);
 
 /// One Catmull-Clark level likewise: vertex points, face points, edge points; one quad per
