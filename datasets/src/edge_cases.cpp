@@ -151,8 +151,7 @@ std::vector<EdgeCase> edge_cases() {
         return disjoint_union({{a, Vec3::Zero()}, {b, offset}});
     }());
     // Not manifold: core refines them by OpenSubdiv's non-manifold rules (nonmanifold.h), and
-    // refuses, naming the element, what those rules do not refine here (a face naming a vertex
-    // twice, a duplicate face) or under NonManifoldRule::Refuse.
+    // refuses them, naming the element, under NonManifoldRule::Refuse.
     for (int pages : {3, 4, 10, 100})
         add("nonmanifold-edge-" + std::to_string(pages), std::to_string(pages) + " triangles on one edge", false,
             book(pages));
@@ -183,9 +182,49 @@ std::vector<EdgeCase> edge_cases() {
     return all;
 }
 
+std::vector<EdgeCase> polygon_edge_cases() {
+    std::vector<EdgeCase> all;
+    auto add = [&all](std::string name, std::string description, bool manifold, PolyMesh mesh) {
+        mesh.source.file = "edgecase:" + name;
+        all.push_back({std::move(name), std::move(description), manifold, std::move(mesh)});
+    };
+    add("back-to-back-quads", "two quads on the same four vertices, opposite orders: closed, face points coincide", true,
+        make({Vec3(0, 0, 0), Vec3(1, 0, 0.1), Vec3(1, 1, 0), Vec3(0, 1, 0.2)}, {{0, 1, 2, 3}, {3, 2, 1, 0}}));
+    add("back-to-back-pentagons", "two pentagons on the same five vertices, opposite orders", true, [] {
+        std::vector<Vec3> p;
+        for (int k = 0; k < 5; ++k) p.emplace_back(std::cos(2 * M_PI * k / 5), std::sin(2 * M_PI * k / 5), 0.1 * k);
+        return make(p, {{0, 1, 2, 3, 4}, {4, 3, 2, 1, 0}});
+    }());
+    add("holes-beside-creases", "4x4 quads, an interior hole whose edges carry creases of 1.5, 3 and infinite "
+                                "sharpness, and a crease of 2 from it to the boundary", true, [] {
+        PolyMesh m = quad_grid(4, 0.6);  // vertex (i, j) = 5j + i; face 5 = (6, 7, 12, 11)
+        m.creases.holes = {5};
+        m.creases.edges = {{6, 7, 1.5f}, {7, 12, 3.0f}, {12, 11, 10.0f}, {11, 6, 1.5f}, {12, 13, 2.0f}, {13, 14, 2.0f}};
+        return m;
+    }());
+    add("nonmanifold-quad-edge-3", "three quads on one edge", false,
+        make({Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(1, 0, 1), Vec3(1, 0, 0), Vec3(-0.5, 0.8, 1), Vec3(-0.5, 0.8, 0),
+              Vec3(-0.5, -0.8, 1), Vec3(-0.5, -0.8, 0)},
+             {{1, 0, 3, 2}, {0, 1, 4, 5}, {1, 0, 7, 6}}));
+    add("duplicate-quad", "quad cube with one face listed twice", false, [] {
+        PolyMesh m = quad_cube();
+        m.add_face(std::vector<int>(m.face(0), m.face(0) + m.face_size(0)));
+        return m;
+    }());
+    add("repeated-vertex-quad", "2x2 quads plus a quad naming a corner twice in a row (a degenerate edge)", false, [] {
+        PolyMesh m = quad_grid(2, 0.3);  // vertex (i, j) = 3j + i
+        m.positions.emplace_back(0.0, -1.0, 0.0);
+        m.add_face({1, 0, 0, 9});
+        return m;
+    }());
+    return all;
+}
+
 EdgeCase edge_case(const std::string& name) {
     std::string known;
-    for (EdgeCase& c : edge_cases()) {
+    std::vector<EdgeCase> all = edge_cases();
+    for (EdgeCase& c : polygon_edge_cases()) all.push_back(std::move(c));
+    for (EdgeCase& c : all) {
         if (c.name == name) return std::move(c);
         known += (known.empty() ? "" : ", ") + c.name;
     }

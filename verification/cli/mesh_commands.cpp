@@ -397,11 +397,13 @@ int run_datasets(const std::string& dir) {
 
 int run_edgecases(const std::string& dir) {
     std::filesystem::create_directories(dir);
-    for (const auto& c : datasets::edge_cases()) {
-        const std::string path = (std::filesystem::path(dir) / (c.name + ".obj")).string();
-        write_mesh(path, c.mesh);
-        fmt::print("{:<48} {}{}\n", path, c.description, c.valid_loop_input ? "" : " [not a manifold]");
-    }
+    for (const bool polygons : {false, true})
+        for (const auto& c : polygons ? datasets::polygon_edge_cases() : datasets::edge_cases()) {
+            const std::string path = (std::filesystem::path(dir) / (c.name + ".obj")).string();
+            write_mesh(path, c.mesh);
+            fmt::print("{:<48} {}{}{}\n", path, c.description, c.valid_loop_input ? "" : " [not a manifold]",
+                       polygons ? " [polygons: Catmull-Clark]" : "");
+        }
     return 0;
 }
 

@@ -120,23 +120,6 @@ bool within(const LoopComparisonRequest& req, const MeshComparison& c, const std
     return false;
 }
 
-/// Whether every vertex farther than `tolerance` x diagonal from its match has no face.
-bool only_isolated_vertices_differ(const PolyMesh& ours, const PolyMesh& ref, const std::vector<int>& ref_to_ours,
-                                   double tolerance) {
-    const std::vector<double> d = vertex_distances(ours, ref, ref_to_ours);
-    const double limit = tolerance * bounding_box_diagonal(ours.positions);
-    std::vector<char> used(d.size(), 0);
-    for (int v : ours.face_vertices) used[v] = 1;
-    bool any = false;
-    for (size_t v = 0; v < d.size(); ++v)
-        if (!(d[v] <= limit)) {
-            if (used[v]) return false;
-            any = true;
-        }
-    return any;
-}
-
-
 /// Our mesh at the first level that diverges, with per-vertex distances (the last level's
 /// map when matched by nearest neighbour); empty when larger than the request allows.
 std::optional<ErrorField> error_field(const CoreRun& ours, const adapters::LevelTrace& ref, const Correspondence& c,

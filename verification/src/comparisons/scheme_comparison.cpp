@@ -245,6 +245,13 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
                                       std::to_string(theirs.num_vertices()) + " vertices against core's " +
                                       std::to_string(ours.num_faces()) + " and " + std::to_string(ours.num_vertices());
             DivergenceTests tests;
+            tests.isolated_vertices = [&]() -> std::optional<Classification> {
+                if (!same_faces || !only_isolated_vertices_differ(ours, theirs, run.correspondence.ref_to_ours, tolerance))
+                    return std::nullopt;
+                return Classification{DivergenceClass::IsolatedVertexHandling,
+                                      "only vertices no face uses differ, by up to " + sci(run.comparison.max_rel) +
+                                          " of the diagonal"};
+            };
             tests.rounding = [&]() -> std::optional<Classification> {
                 const double ulps = run.comparison.max_abs / ulp_of_largest_coordinate(ours);
                 if (!same_faces || !(ulps <= tolerances::kRoundingUlps)) return std::nullopt;

@@ -70,6 +70,21 @@ std::vector<double> vertex_distances(const PolyMesh& ours, const PolyMesh& ref, 
     return d;
 }
 
+bool only_isolated_vertices_differ(const PolyMesh& ours, const PolyMesh& ref, const std::vector<int>& ref_to_ours,
+                                   double tolerance) {
+    const std::vector<double> d = vertex_distances(ours, ref, ref_to_ours);
+    const double limit = tolerance * bounding_box_diagonal(ours.positions);
+    std::vector<char> used(d.size(), 0);
+    for (int v : ours.face_vertices) used[v] = 1;
+    bool any = false;
+    for (size_t v = 0; v < d.size(); ++v)
+        if (!(d[v] <= limit)) {
+            if (used[v]) return false;
+            any = true;
+        }
+    return any;
+}
+
 namespace {
 /// Largest distance from a point of `from` to its nearest point of `to`.
 double directed_hausdorff(const std::vector<Vec3>& from, const std::vector<Vec3>& to) {

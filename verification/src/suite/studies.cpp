@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "crossdiv/datasets/bundled.h"
+#include "crossdiv/datasets/edge_cases.h"
 #include "crossdiv/error.h"
 #include "crossdiv/verification/comparisons/bfr_comparison.h"
 #include "crossdiv/verification/properties/butterfly_properties.h"
@@ -42,14 +43,18 @@ CheckReport catmull_clark_study() {
     CheckReport out;
     std::vector<Check>& runs = out.checks;
     json rows = json::array();
-    const std::vector<datasets::BundledMesh> meshes = datasets::catalog_meshes();
+    // The catalog, then every edge case (triangles and polygons): Catmull-Clark refines them all.
+    std::vector<std::pair<std::string, PolyMesh>> meshes;
+    for (auto& b : datasets::catalog_meshes()) meshes.emplace_back("bundled:" + b.name, std::move(b.mesh));
+    for (auto& e : datasets::edge_cases()) meshes.emplace_back("edgecase:" + e.name, std::move(e.mesh));
+    for (auto& e : datasets::polygon_edge_cases()) meshes.emplace_back("edgecase:" + e.name, std::move(e.mesh));
     for (CatmullClarkBoundary rule : {CatmullClarkBoundary::EdgeOnly, CatmullClarkBoundary::EdgeAndCorner}) {
-        for (const auto& b : meshes) {
+        for (const auto& [name, mesh] : meshes) {
             SchemeRequest req;
             req.rule.catmull_clark = {rule};
             req.levels = 2;
             req.timeout_seconds = 60;
-            const SchemeComparison c = compare_scheme(b.mesh, "bundled:" + b.name, req);
+            const SchemeComparison c = compare_scheme(mesh, name, req);
             rows.push_back(to_json(c));
             add_scheme_runs(c, req.tolerance, runs);
         }

@@ -24,7 +24,12 @@ struct EdgeCase {
 /// Every case, in a fixed order (about 60). Source file of each mesh: "edgecase:NAME".
 std::vector<EdgeCase> edge_cases();
 
-/// One case by name. @throws InputError naming the unknown name.
+/// The cases of polygons (Catmull-Clark's; not Loop input): polygons back to back, a hole
+/// beside creases, a non-manifold quad edge, a duplicate quad, a quad naming a vertex twice.
+/// `valid_loop_input` says here whether the mesh is a manifold, consistently oriented.
+std::vector<EdgeCase> polygon_edge_cases();
+
+/// One case by name, of either list. @throws InputError naming the unknown name.
 EdgeCase edge_case(const std::string& name);
 
 /// The closed benchmark mesh: an irregular torus (valences 4..8) with 2 nu nv faces,

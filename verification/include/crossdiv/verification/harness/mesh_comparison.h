@@ -46,6 +46,11 @@ double max_relative_distance(const PolyMesh& ours, const PolyMesh& ref, const st
 /// Distance of each of our vertices to its reference vertex under the map (NaN: unmatched).
 std::vector<double> vertex_distances(const PolyMesh& ours, const PolyMesh& ref, const std::vector<int>& ref_to_ours);
 
+/// Whether some vertex lies farther than `tolerance` x our diagonal from its match and every
+/// such vertex is one no face of ours uses (isolated-vertex-handling).
+bool only_isolated_vertices_differ(const PolyMesh& ours, const PolyMesh& ref, const std::vector<int>& ref_to_ours,
+                                   double tolerance);
+
 /// The spacing of doubles at the mesh's largest coordinate magnitude: the unit in which two
 /// summation orders of the same stencils part (tolerances::kRoundingUlps).
 double ulp_of_largest_coordinate(const PolyMesh& mesh);
