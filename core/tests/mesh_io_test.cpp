@@ -18,6 +18,19 @@ PolyMesh obj(const std::string& text) {
     return read_obj(in, "t.obj");
 }
 
+/// Written back in the same format, every tag reads back equal (their lines aside).
+void expect_tags_written_back(const PolyMesh& m) {
+    std::ostringstream out;
+    write_obj(out, m);
+    const CreaseTags back = obj(out.str()).creases;
+    EXPECT_EQ(back.edges, m.creases.edges);
+    EXPECT_EQ(back.vertices, m.creases.vertices);
+    EXPECT_EQ(back.holes, m.creases.holes);
+    EXPECT_EQ(back.method, m.creases.method);
+    EXPECT_EQ(back.boundary, m.creases.boundary);
+    EXPECT_EQ(back.smooth_triangles, m.creases.smooth_triangles);
+}
+
 std::string obj_error(const std::string& text) {
     try {
         obj(text);
@@ -126,14 +139,7 @@ TEST(MeshIo, ObjReadsOpenSubdivCreaseTags) {
     EXPECT_EQ(m.creases.boundary, BoundaryTag::EdgeOnly);  // 2 is edge-only in OpenSubdiv's reader
     EXPECT_TRUE(m.source.notes.empty());
 
-    // Written back in the same format, they read back equal.
-    std::ostringstream out;
-    write_obj(out, m);
-    const PolyMesh back = obj(out.str());
-    EXPECT_EQ(back.creases.edges, m.creases.edges);
-    EXPECT_EQ(back.creases.vertices, m.creases.vertices);
-    EXPECT_EQ(back.creases.method, m.creases.method);
-    EXPECT_EQ(back.creases.boundary, m.creases.boundary);
+    expect_tags_written_back(m);
 
     EXPECT_EQ(obj_error(quad + "t crease 2/1/0 0 9 1\n"),
               "t.obj:6: tag vertex index 9 out of range: tags count from 0 and the file has 4 vertices");
@@ -164,12 +170,7 @@ TEST(MeshIo, ObjReadsHoleBoundaryAndTriangleTagsAndKeepsUnknownOnesForTheCaller)
               std::string::npos);
     EXPECT_EQ(m.source.unknown_tags, std::vector<std::string>{"'vertexedit' at t.obj:14"});
 
-    std::ostringstream out;
-    write_obj(out, m);
-    const PolyMesh back = obj(out.str());
-    EXPECT_EQ(back.creases.holes, m.creases.holes);
-    EXPECT_EQ(back.creases.boundary, m.creases.boundary);
-    EXPECT_EQ(back.creases.smooth_triangles, m.creases.smooth_triangles);
+    expect_tags_written_back(m);
 
     EXPECT_EQ(obj_error(two_quads + "t hole 1/0/0 2\n"),
               "t.obj:9: tag face index 2 out of range: tags count from 0 and the file has 2 faces");

@@ -3,7 +3,11 @@
 
 #include <cmath>
 
+#include "crossdiv/datasets/edge_cases.h"
+#include "crossdiv/verification/comparisons/classification.h"
+#include "crossdiv/verification/harness/correspondence.h"
 #include "crossdiv/verification/harness/mesh_comparison.h"
+#include "crossdiv/verification/implementations/registry.h"
 
 namespace crossdiv::verification {
 namespace {
@@ -61,6 +65,39 @@ TEST(Compare, NanPositionNeverAgrees) {
     PolyMesh ref = ours;
     ref.positions[1].x() = std::nan("");
     EXPECT_FALSE(compare_meshes(ours, ref, {0, 1, 2, 3}).agree());
+}
+
+}  // namespace
+}  // namespace crossdiv::verification
+
+namespace crossdiv::verification {
+namespace {
+
+// The reach of non-manifold vertices bounds where OpenSubdiv's non-manifold rules can move a
+// vertex: a 4x4 grid with one triangle reversed, refined by those rules, keeps every old
+// vertex outside the reach exactly where Loop puts it on the grid as it should be (Loop's
+// positions do not depend on orientation); inside, some move.
+TEST(Compare, NonManifoldRulesMoveOnlyVerticesTheirReachMarks) {
+    const PolyMesh reversed = datasets::edge_case("inconsistent-orientation").mesh;
+    PolyMesh fixed = reversed;
+    std::swap(fixed.face_vertices[static_cast<size_t>(fixed.face_start[10]) + 1],
+              fixed.face_vertices[static_cast<size_t>(fixed.face_start[10]) + 2]);
+    const adapters::LevelTrace levels = core_implementation().refine(reversed, {Scheme::Loop, SchemeRule{}, 2});
+    const PolyMesh manifold = core_implementation().refine_last(fixed, {Scheme::Loop, SchemeRule{}, 2});
+    const std::vector<char> reach = nonmanifold_reach(level_view(levels));
+    ASSERT_EQ(reach.size(), levels.back().positions.size());
+    int outside = 0, moved_inside = 0;
+    for (int v = 0; v < reversed.num_vertices(); ++v) {  // old vertices keep their index in both
+        if (!reach[static_cast<size_t>(v)]) {
+            ++outside;
+            EXPECT_EQ(levels.back().positions[v], manifold.positions[v]) << "vertex " << v;
+        } else {
+            moved_inside += levels.back().positions[v] != manifold.positions[v];
+        }
+    }
+    EXPECT_GT(outside, 0);
+    EXPECT_GT(moved_inside, 0);
+    EXPECT_TRUE(nonmanifold_reach(level_view(core_implementation().refine(fixed, {Scheme::Loop, SchemeRule{}, 2}))).empty());
 }
 
 }  // namespace

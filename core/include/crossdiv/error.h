@@ -19,7 +19,8 @@ public:
 
 /// A mesh that is not a manifold, consistently oriented one, in a way OpenSubdiv's
 /// non-manifold rules refine (nonmanifold.h): an edge of more than two faces, two faces
-/// traversing an edge in the same direction, a vertex whose faces form several fans. The
+/// traversing an edge in the same direction (a duplicate face), a vertex whose faces form
+/// several fans, a face naming a vertex twice. The
 /// manifold refinements throw it; Loop and Catmull-Clark then take those rules when asked to.
 class NonManifoldInput : public InputError {
 public:

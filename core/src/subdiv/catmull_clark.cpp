@@ -130,16 +130,14 @@ RefinementStep catmull_clark_step(const PolyMesh& mesh, const PolyConnectivity& 
 }
 
 PolyMesh catmull_clark_subdivide(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels) {
-    // A level the non-manifold rules refined, whose edges are stated per corner.
-    if (!mesh.corner_edges.empty()) return catmull_clark_subdivide_nonmanifold(mesh, options, levels);
-    try {
-        return detail::refine_levels(mesh, levels, [&](const PolyMesh& m, const PolyConnectivity& conn, int) {
-            return catmull_clark_step(m, conn, options);
-        });
-    } catch (const NonManifoldInput&) {
-        if (options.nonmanifold == NonManifoldRule::Refuse) throw;
-        return catmull_clark_subdivide_nonmanifold(mesh, options, levels);
-    }
+    return detail::with_nonmanifold_rules(
+        mesh, options.nonmanifold,
+        [&] {
+            return detail::refine_levels(mesh, levels, [&](const PolyMesh& m, const PolyConnectivity& conn, int) {
+                return catmull_clark_step(m, conn, options);
+            });
+        },
+        [&] { return catmull_clark_subdivide_nonmanifold(mesh, options, levels); });
 }
 
 Eigen::SparseMatrix<double> catmull_clark_subdivision_matrix(const PolyMesh& mesh, const CatmullClarkOptions& options) {

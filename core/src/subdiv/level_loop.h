@@ -6,26 +6,49 @@
 
 #include "crossdiv/error.h"
 #include "crossdiv/mesh/poly_connectivity.h"
+#include "crossdiv/subdiv/nonmanifold_rule.h"
 #include "crossdiv/subdiv/refinement.h"
 #include "finite_level.h"
 
 namespace crossdiv::detail {
 
+/// `levels` levels of `step(mesh, level)` (a RefinementStep; level 0 = the first), each
+/// level's positions required finite; the source (file lines) is not carried over.
+template <class Step>
+PolyMesh apply_levels(const PolyMesh& mesh, int levels, const Step& step) {
+    if (levels < 0) throw InputError("number of levels must be >= 0, got " + std::to_string(levels));
+    PolyMesh current = mesh;
+    for (int l = 0; l < levels; ++l) {
+        PolyMesh next = apply_step(step(current, l), current);
+        require_finite_level(next.positions, current.positions, l + 1);
+        current = std::move(next);
+    }
+    current.source = {};
+    return current;
+}
+
 /// `step(mesh, conn, level)` returns the RefinementStep of level `level` (0 = the first); build_poly_connectivity checks
 /// the input (and throws InputError naming the element) before the first step.
 template <class Step>
 PolyMesh refine_levels(const PolyMesh& mesh, int levels, const Step& step) {
-    if (levels < 0) throw InputError("number of levels must be >= 0, got " + std::to_string(levels));
-    PolyMesh current = mesh;
-    for (int l = 0; l < levels; ++l) {
-        const PolyConnectivity conn = build_poly_connectivity(current);
-        PolyMesh next = apply_step(step(current, conn, l), current);
-        require_finite_level(next.positions, current.positions, l + 1);
-        current = std::move(next);
+    if (levels == 0) build_poly_connectivity(mesh);  // the same checks as a refinement
+    return apply_levels(mesh, levels, [&](const PolyMesh& m, int l) { return step(m, build_poly_connectivity(m), l); });
+}
+
+/// A refinement of Loop or Catmull-Clark that takes OpenSubdiv's non-manifold rules
+/// (nonmanifold.h) where they apply: `manifold()`, or `nonmanifold()` for a level whose edges
+/// are stated per corner (one those rules refined) and, unless `rule` refuses, for a mesh
+/// the manifold refinement finds is not a manifold (NonManifoldInput).
+template <class Manifold, class NonManifold>
+PolyMesh with_nonmanifold_rules(const PolyMesh& mesh, NonManifoldRule rule, const Manifold& manifold,
+                                const NonManifold& nonmanifold) {
+    if (!mesh.corner_edges.empty()) return nonmanifold();
+    try {
+        return manifold();
+    } catch (const NonManifoldInput&) {
+        if (rule == NonManifoldRule::Refuse) throw;
+        return nonmanifold();
     }
-    if (levels == 0) build_poly_connectivity(current);  // the same checks as a refinement
-    current.source = {};
-    return current;
 }
 
 /// @throws InputError naming the first face that is not a triangle, for the schemes that

@@ -119,20 +119,18 @@ void check_loop_input(const TriMesh& mesh, const LoopOptions& options) {
 }
 
 PolyMesh loop_subdivide(const PolyMesh& mesh, const LoopOptions& options, int levels) {
-    // A level the non-manifold rules refined, whose edges are stated per corner.
-    if (!mesh.corner_edges.empty()) return loop_subdivide_nonmanifold(mesh, options, levels);
-    try {
-        if (mesh.creases.empty()) {  // the fast path; the result is the same
-            detail::require_triangles(mesh, "Loop subdivision");
-            return to_poly_mesh(loop_subdivide(to_tri_mesh(mesh, "Loop subdivision"), options, levels));
-        }
-        return detail::refine_levels(mesh, levels, [&](const PolyMesh& m, const PolyConnectivity& conn, int) {
-            return loop_step(m, conn, options);
-        });
-    } catch (const NonManifoldInput&) {
-        if (options.nonmanifold == NonManifoldRule::Refuse) throw;
-        return loop_subdivide_nonmanifold(mesh, options, levels);
-    }
+    return detail::with_nonmanifold_rules(
+        mesh, options.nonmanifold,
+        [&] {
+            if (mesh.creases.empty()) {  // the fast path; the result is the same
+                detail::require_triangles(mesh, "Loop subdivision");
+                return to_poly_mesh(loop_subdivide(to_tri_mesh(mesh, "Loop subdivision"), options, levels));
+            }
+            return detail::refine_levels(mesh, levels, [&](const PolyMesh& m, const PolyConnectivity& conn, int) {
+                return loop_step(m, conn, options);
+            });
+        },
+        [&] { return loop_subdivide_nonmanifold(mesh, options, levels); });
 }
 
 }  // namespace crossdiv

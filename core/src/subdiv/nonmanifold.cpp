@@ -12,7 +12,7 @@
 #include "crossdiv/error.h"
 #include "crossdiv/subdiv/crease_mask.h"
 #include "crossdiv/subdiv/hole_faces.h"
-#include "finite_level.h"
+#include "level_loop.h"
 
 namespace crossdiv {
 namespace {
@@ -241,19 +241,6 @@ bool add_sharp_vertex_row(StencilTable& st, const GeneralTopology& t, int v) {
     }
 }
 
-template <class Step>
-PolyMesh refine_general(const PolyMesh& mesh, int levels, const Step& step) {
-    if (levels < 0) throw InputError("number of levels must be >= 0, got " + std::to_string(levels));
-    PolyMesh current = mesh;
-    for (int l = 0; l < levels; ++l) {
-        PolyMesh next = apply_step(step(current), current);
-        detail::require_finite_level(next.positions, current.positions, l + 1);
-        current = std::move(next);
-    }
-    current.source = {};
-    return current;
-}
-
 }  // namespace
 
 RefinementStep loop_nonmanifold_step(const PolyMesh& mesh, const LoopOptions& options) {
@@ -396,11 +383,12 @@ std::vector<int> nonmanifold_vertices(const PolyMesh& mesh) {
 }
 
 PolyMesh loop_subdivide_nonmanifold(const PolyMesh& mesh, const LoopOptions& options, int levels) {
-    return refine_general(mesh, levels, [&](const PolyMesh& m) { return loop_nonmanifold_step(m, options); });
+    return detail::apply_levels(mesh, levels, [&](const PolyMesh& m, int) { return loop_nonmanifold_step(m, options); });
 }
 
 PolyMesh catmull_clark_subdivide_nonmanifold(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels) {
-    return refine_general(mesh, levels, [&](const PolyMesh& m) { return catmull_clark_nonmanifold_step(m, options); });
+    return detail::apply_levels(mesh, levels,
+                                [&](const PolyMesh& m, int) { return catmull_clark_nonmanifold_step(m, options); });
 }
 
 }  // namespace crossdiv

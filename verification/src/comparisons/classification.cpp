@@ -1,6 +1,11 @@
 #include "crossdiv/verification/comparisons/classification.h"
 
+#include <algorithm>
+
 #include "crossdiv/mesh/mesh_checks.h"
+#include "crossdiv/subdiv/nonmanifold.h"
+#include "crossdiv/mesh/tri_mesh.h"
+#include "harness/sci.h"
 
 namespace crossdiv::verification {
 
@@ -40,6 +45,62 @@ DivergenceClass rule_difference_class(Scheme scheme, const SchemeRule& applied, 
         case Scheme::ModifiedButterfly: return DivergenceClass::WingRule;
     }
     return DivergenceClass::BoundaryRule;
+}
+
+std::vector<char> nonmanifold_reach(const std::vector<const PolyMesh*>& levels) {
+    if (levels.empty()) return {};
+    PolyMesh base = *levels[0];
+    base.creases = {};  // the topology alone
+    const std::vector<int> seeds = nonmanifold_vertices(base);
+    if (seeds.empty()) return {};
+    std::vector<char> reached(static_cast<size_t>(base.num_vertices()), 0);
+    for (int v : seeds) reached[static_cast<size_t>(v)] = 1;
+    for (size_t l = 0; l + 1 < levels.size(); ++l) {
+        const PolyMesh& coarse = *levels[l];
+        const PolyMesh& fine = *levels[l + 1];
+        std::vector<char> near = reached;  // reached, or sharing a face with a reached vertex
+        for (int f = 0; f < coarse.num_faces(); ++f) {
+            const int* c = coarse.face(f);
+            const int n = coarse.face_size(f);
+            if (std::any_of(c, c + n, [&](int v) { return reached[static_cast<size_t>(v)]; }))
+                for (int k = 0; k < n; ++k) near[static_cast<size_t>(c[k])] = 1;
+        }
+        const int n_old = coarse.num_vertices();
+        std::vector<char> next(static_cast<size_t>(fine.num_vertices()), 0);
+        for (int v = 0; v < n_old; ++v) next[static_cast<size_t>(v)] = near[static_cast<size_t>(v)];
+        for (int f = 0; f < fine.num_faces(); ++f) {
+            const int* c = fine.face(f);
+            const int n = fine.face_size(f);
+            if (std::any_of(c, c + n, [&](int v) { return v < n_old && near[static_cast<size_t>(v)]; }))
+                for (int k = 0; k < n; ++k)
+                    if (c[k] >= n_old) next[static_cast<size_t>(c[k])] = 1;
+        }
+        reached = std::move(next);
+    }
+    return reached;
+}
+
+std::optional<Classification> nonmanifold_handling(const std::vector<char>& reach, const PolyMesh& ours,
+                                                   const PolyMesh& ref, const std::vector<int>& ref_to_ours,
+                                                   double tolerance, const std::string& reference, double max_rel,
+                                                   const std::string& against) {
+    if (reach.size() != static_cast<size_t>(ours.num_vertices()) ||
+        ref_to_ours.size() != static_cast<size_t>(ref.num_vertices()))
+        return std::nullopt;
+    const double diagonal = bounding_box_diagonal(ours.positions);
+    int differing = 0;
+    for (size_t i = 0; i < ref_to_ours.size(); ++i) {
+        const int v = ref_to_ours[i];
+        if ((ours.positions[static_cast<size_t>(v)] - ref.positions[i]).norm() / diagonal <= tolerance) continue;
+        if (!reach[static_cast<size_t>(v)]) return std::nullopt;
+        ++differing;
+    }
+    const auto reached = std::count(reach.begin(), reach.end(), 1);
+    return Classification{DivergenceClass::NonManifoldHandling,
+                          reference + " refines the non-manifold vertices by another rule than OpenSubdiv's, which core "
+                          "follows: all " + std::to_string(differing) + " vertices that differ" + against + " (by up to " +
+                          detail::sci(max_rel) + ") lie where they reach (" + std::to_string(reached) + " of " +
+                          std::to_string(ours.num_vertices()) + " vertices)"};
 }
 
 DivergenceClass input_handling_class(const PolyMesh& input) {

@@ -58,32 +58,6 @@ CoreRun run_core(const TriMesh& input, const LoopOptions& options, int levels) {
     return run;
 }
 
-/// The vertices of core's last level that the non-manifold vertices of the input can reach:
-/// at each level, a vertex point is reached when its parent or a neighbour of it is, an edge
-/// point when an end or a neighbour of an end is (a superset of the Loop stencils' support).
-/// Empty when the input is a manifold.
-std::vector<char> nonmanifold_reach(const TriMesh& input, const CoreRun& core) {
-    PolyMesh level = to_poly_mesh(input);
-    const std::vector<int> seeds = nonmanifold_vertices(level);
-    if (seeds.empty()) return {};
-    std::vector<char> reached(static_cast<size_t>(level.num_vertices()), 0);
-    for (int v : seeds) reached[static_cast<size_t>(v)] = 1;
-    for (size_t l = 0; l < core.levels.size(); ++l) {
-        std::vector<char> near = reached;  // reached, or next to a reached vertex
-        for (const auto& [a, b] : nonmanifold_edges(level)) {
-            if (reached[static_cast<size_t>(a)]) near[static_cast<size_t>(b)] = 1;
-            if (reached[static_cast<size_t>(b)]) near[static_cast<size_t>(a)] = 1;
-        }
-        std::vector<char> next;
-        next.reserve(core.origins[l].size());
-        for (const VertexOrigin& o : core.origins[l])
-            next.push_back(near[static_cast<size_t>(o.a)] || (o.is_edge_point() && near[static_cast<size_t>(o.b)]));
-        reached = std::move(next);
-        level = core.levels[l];
-    }
-    return reached;
-}
-
 /// Levels 0..N of a core run whose level 0 is `input`.
 std::vector<const PolyMesh*> levels_of(const CoreRun& run, const PolyMesh& input) {
     std::vector<const PolyMesh*> view{&input};
@@ -413,25 +387,14 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
             // differs by more than the tolerance from core under the reference's own rule
             // (the corner rule it may lack) lies where the non-manifold vertices reach.
             if (!same_faces || req.options.nonmanifold != NonManifoldRule::OpenSubdiv) return std::nullopt;
-            const std::vector<char> reach = nonmanifold_reach(input, ours);
-            if (reach.empty()) return std::nullopt;
             const bool own_rule = !applied_rule || run.ran_with == *applied_rule;
-            const PolyMesh& last = own_rule ? ours.levels.back() : core_with(run.ran_with).levels.back();
-            int differing = 0, reached = 0;
-            for (int v = 0; v < last.num_vertices(); ++v) {
-                reached += reach[static_cast<size_t>(v)];
-                const double d = (last.positions[v] - mapped[static_cast<size_t>(v)]).norm() / run.comparison.diagonal;
-                if (!(d <= tier.tolerance)) {
-                    if (!reach[static_cast<size_t>(v)]) return std::nullopt;
-                    ++differing;
-                }
-            }
-            return Classification{DivergenceClass::NonManifoldHandling,
-                                  ref->name() + " refines the non-manifold vertices by another rule than OpenSubdiv's, "
-                                  "which core follows: all " + std::to_string(differing) + " vertices that differ" +
-                                  (own_rule ? "" : " from core with " + describe(run.ran_with)) + " (by up to " +
-                                  sci(run.comparison.max_rel) + ") lie where they reach (" + std::to_string(reached) +
-                                  " of " + std::to_string(last.num_vertices()) + " vertices)" + worst};
+            const CoreRun& core_rule = own_rule ? ours : core_with(run.ran_with);
+            std::optional<Classification> c =
+                nonmanifold_handling(nonmanifold_reach(levels_of(core.front(), input_mesh)), core_rule.levels.back(),
+                                     trace.back(), run.correspondence.ref_to_ours, tier.tolerance, ref->name(),
+                                     run.comparison.max_rel, own_rule ? "" : " from core with " + describe(run.ran_with));
+            if (c) c->explanation += worst;
+            return c;
         };
         tests.topology = [&]() -> std::optional<Classification> {
             if (same_faces) return std::nullopt;

@@ -12,8 +12,6 @@
 #include "crossdiv/mesh/tri_mesh.h"
 #include "crossdiv/verification/comparisons/classification.h"
 #include "crossdiv/verification/implementations/registry.h"
-#include "crossdiv/subdiv/nonmanifold.h"
-#include "crossdiv/subdiv/catmull_clark.h"
 
 namespace crossdiv::verification {
 namespace {
@@ -72,34 +70,6 @@ bool beyond_valence_table(const Implementation& ref, Scheme scheme, const Scheme
                   " vertices of larger valence (up to " + std::to_string(largest) + ") differ, by up to " + sci(worst) +
                   " of the diagonal, and every other vertex agrees";
     return true;
-}
-
-/// The vertices of Catmull-Clark's level `levels` that the input's non-manifold vertices can
-/// reach: at each level a vertex is near when it shares a face with a reached one; a vertex
-/// point is reached when its parent is near, a face point when a vertex of its face is, an
-/// edge point when an end is (a superset of the stencils' support). Empty for a manifold.
-std::vector<char> catmull_clark_nonmanifold_reach(const PolyMesh& input, const CatmullClarkOptions& options, int levels) {
-    PolyMesh level = input;
-    level.creases = {};
-    const std::vector<int> seeds = nonmanifold_vertices(level);
-    if (seeds.empty()) return {};
-    std::vector<char> reached(static_cast<size_t>(level.num_vertices()), 0);
-    for (int v : seeds) reached[static_cast<size_t>(v)] = 1;
-    for (int l = 0; l < levels; ++l) {
-        std::vector<char> near = reached, face_near(static_cast<size_t>(level.num_faces()), 0);
-        for (int f = 0; f < level.num_faces(); ++f)
-            for (int k = 0; k < level.face_size(f); ++k) face_near[static_cast<size_t>(f)] |= reached[static_cast<size_t>(level.face(f)[k])];
-        for (int f = 0; f < level.num_faces(); ++f)
-            if (face_near[static_cast<size_t>(f)])
-                for (int k = 0; k < level.face_size(f); ++k) near[static_cast<size_t>(level.face(f)[k])] = 1;
-        std::vector<char> next(near.begin(), near.end());  // vertex points: their parents
-        for (int f = 0; f < level.num_faces(); ++f) next.push_back(face_near[static_cast<size_t>(f)]);
-        for (const auto& [a, b] : nonmanifold_edges(level))
-            next.push_back(near[static_cast<size_t>(a)] || near[static_cast<size_t>(b)]);
-        reached = std::move(next);
-        level = catmull_clark_subdivide_nonmanifold(level, options, 1);
-    }
-    return reached;
 }
 
 /// Schemes whose levels are matched by provenance (match_by_provenance): a triangle split
@@ -269,32 +239,10 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
                 // Measured: core took OpenSubdiv's non-manifold rules here, and every vertex
                 // that differs by more than the tolerance lies where the non-manifold vertices reach.
                 if (!same_faces || req.scheme != Scheme::CatmullClark ||
-                    req.rule.catmull_clark.nonmanifold != NonManifoldRule::OpenSubdiv ||
-                    run.correspondence.ref_to_ours.size() != static_cast<size_t>(theirs.num_vertices()))
+                    req.rule.catmull_clark.nonmanifold != NonManifoldRule::OpenSubdiv)
                     return std::nullopt;
-                std::vector<char> reach;
-                try {
-                    reach = catmull_clark_nonmanifold_reach(input, req.rule.catmull_clark, req.levels);
-                } catch (const InputError&) {
-                    return std::nullopt;
-                }
-                if (reach.size() != static_cast<size_t>(ours.num_vertices())) return std::nullopt;
-                const double diagonal = bounding_box_diagonal(ours.positions);
-                int differing = 0, reached = 0;
-                for (char r : reach) reached += r;
-                for (size_t i = 0; i < run.correspondence.ref_to_ours.size(); ++i) {
-                    const int v = run.correspondence.ref_to_ours[i];
-                    const double d = (ours.positions[v] - theirs.positions[i]).norm() / diagonal;
-                    if (!(d <= tolerance)) {
-                        if (!reach[static_cast<size_t>(v)]) return std::nullopt;
-                        ++differing;
-                    }
-                }
-                return Classification{DivergenceClass::NonManifoldHandling,
-                                      ref.name() + " refines the non-manifold vertices by another rule than OpenSubdiv's, "
-                                      "which core follows: all " + std::to_string(differing) + " vertices that differ (by up "
-                                      "to " + sci(run.comparison.max_rel) + ") lie where they reach (" +
-                                      std::to_string(reached) + " of " + std::to_string(ours.num_vertices()) + " vertices)"};
+                return nonmanifold_handling(nonmanifold_reach(level_view(our_levels)), ours, theirs,
+                                            run.correspondence.ref_to_ours, tolerance, ref.name(), run.comparison.max_rel);
             };
             tests.valence_table = [&]() -> std::optional<Classification> {
                 std::string why;

@@ -27,9 +27,11 @@
 ///   vertex, 1/8 on the other ends of the two), none or one the smooth mask.
 /// - The masks of the schemes (Sdc::Scheme<...>): a sharp edge's point is its midpoint; a
 ///   smooth edge has two faces and the scheme's smooth edge mask.
-/// The same tags are recomputed at every level from that level's topology: the children of
-/// a non-manifold edge or vertex are non-manifold in the same way, so this equals Far's
-/// propagation of the infinitely sharp tags. Semi-sharp crease tags on a non-manifold mesh
+/// The tags are recomputed at every level from that level's topology (its edges as stated
+/// per corner) rather than inherited as Far does: the children of a non-manifold edge or
+/// vertex are non-manifold in the same way, or (the second edge of a pair a face names twice)
+/// boundary with the same sharp rule, so the rules match; OpenSubdiv agrees to 1e-16 on every
+/// non-manifold case of the edge-case catalog. Semi-sharp crease tags on a non-manifold mesh
 /// are refused (InputError).
 
 #include <array>
@@ -62,7 +64,7 @@ std::vector<std::array<int, 2>> nonmanifold_edges(const PolyMesh& mesh);
 /// @throws InputError as the steps.
 std::vector<int> nonmanifold_vertices(const PolyMesh& mesh);
 
-/// `levels` levels of either, each level's topology completed afresh.
+/// `levels` levels of either; each refined level states its edges per corner.
 PolyMesh loop_subdivide_nonmanifold(const PolyMesh& mesh, const LoopOptions& options, int levels);
 PolyMesh catmull_clark_subdivide_nonmanifold(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels);
 

@@ -12,9 +12,11 @@
 ///                                border-faces-dropped, parity: rule_difference_class)
 ///   4. valence-limit             at level 1 exactly the vertices beyond the reference's weight
 ///                                table differ
-///   5. topology                  the refined connectivity differs (or, with equal counts, no
+///   5. non-manifold-handling     core took OpenSubdiv's non-manifold rules, and every vertex
+///                                that differs lies where the non-manifold vertices reach
+///   6. topology                  the refined connectivity differs (or, with equal counts, no
 ///                                one-to-one vertex match: ambiguous-correspondence)
-///   6. unexplained               none of the above: a failure
+///   7. unexplained               none of the above: a failure
 ///
 /// A test a comparison cannot run (no weight table, no vertex correspondence) is left empty.
 /// Cheap tests come first; a test is run only when every one before it failed, so core is
@@ -23,6 +25,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "crossdiv/mesh/poly_mesh.h"
 #include "crossdiv/verification/harness/verdict.h"
@@ -58,6 +61,23 @@ Classification classify_divergence(const DivergenceTests& tests);
 /// `requested`: Loop weight-family, corner-rule or both; Catmull-Clark corner-rule between
 /// edge-only and edge-and-corner, else boundary-rule; Doo-Sabin border-faces-dropped; sqrt3 parity.
 DivergenceClass rule_difference_class(Scheme scheme, const SchemeRule& applied, const SchemeRule& requested);
+
+/// The vertices of the last of `levels` (0..N of a primal refinement that keeps old vertices
+/// first, as core's Loop and Catmull-Clark do) that the non-manifold vertices of level 0 can
+/// reach: at each level a vertex is near when it shares a face with a reached one; a child
+/// of a vertex is reached when its parent is near, a new vertex when an old one sharing a
+/// child face with it is (an edge point's ends, a face point's corners): a superset of the
+/// stencils' support. Empty when level 0 is a manifold.
+std::vector<char> nonmanifold_reach(const std::vector<const PolyMesh*>& levels);
+
+/// Test 5 of the ladder: non-manifold-handling when every vertex of `ours` farther than
+/// `tolerance` x its diagonal from its match in `ref` lies where `reach` marks (the sentence
+/// says how many, by up to `max_rel`; `against` names core's rule when it is not the
+/// requested one); nothing otherwise.
+std::optional<Classification> nonmanifold_handling(const std::vector<char>& reach, const PolyMesh& ours,
+                                                   const PolyMesh& ref, const std::vector<int>& ref_to_ours,
+                                                   double tolerance, const std::string& reference, double max_rel,
+                                                   const std::string& against = "");
 
 /// The input handling a reference shows on an input core refuses, from the first error of
 /// core's mesh checks: non-manifold-handling, orientation-handling, degenerate-face-handling,
