@@ -1,12 +1,14 @@
 // The comparison's figures on meshes where they are known by hand.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "crossdiv/datasets/edge_cases.h"
 #include "crossdiv/verification/comparisons/classification.h"
 #include "crossdiv/verification/harness/correspondence.h"
 #include "crossdiv/verification/harness/mesh_comparison.h"
+#include "crossdiv/verification/harness/mesh_topology.h"
 #include "crossdiv/verification/implementations/registry.h"
 
 namespace crossdiv::verification {
@@ -98,6 +100,27 @@ TEST(Compare, NonManifoldRulesMoveOnlyVerticesTheirReachMarks) {
     EXPECT_GT(outside, 0);
     EXPECT_GT(moved_inside, 0);
     EXPECT_TRUE(nonmanifold_reach(level_view(core_implementation().refine(fixed, {Scheme::Loop, SchemeRule{}, 2}))).empty());
+}
+
+}  // namespace
+}  // namespace crossdiv::verification
+
+namespace crossdiv::verification {
+namespace {
+
+// A face listed from any corner has one canonical start, also when it names its least
+// vertex twice: (0 0 1) from each corner, and (0 2 0 1) whose two 0s start different lists.
+TEST(Compare, AFaceHasOneLeastRotationFromEveryCorner) {
+    for (const std::vector<int>& face : {std::vector<int>{0, 0, 1}, std::vector<int>{0, 2, 0, 1}, std::vector<int>{5, 3, 9}})
+        for (size_t r = 0; r < face.size(); ++r) {
+            std::vector<int> listed = face;
+            std::rotate(listed.begin(), listed.begin() + static_cast<std::ptrdiff_t>(r), listed.end());
+            std::rotate(listed.begin(), listed.begin() + static_cast<std::ptrdiff_t>(least_rotation(listed)), listed.end());
+            std::vector<int> least = face;
+            std::rotate(least.begin(), least.begin() + static_cast<std::ptrdiff_t>(least_rotation(least)), least.end());
+            EXPECT_EQ(listed, least);
+        }
+    EXPECT_EQ(least_rotation(std::vector<int>{0, 2, 0, 1}), 2u);  // (0 1 0 2) < (0 2 0 1)
 }
 
 }  // namespace

@@ -16,17 +16,11 @@ PolyMesh without_hole_faces(const PolyMesh& mesh) {
     out.source.file = mesh.source.file;
     out.source.vertex_line = mesh.source.vertex_line;
     out.source.notes = mesh.source.notes;
-    const std::vector<int>& holes = mesh.creases.holes;
-    size_t next_hole = 0;  // holes are sorted: one merge pass
-    for (int f = 0; f < mesh.num_faces(); ++f) {
-        if (next_hole < holes.size() && holes[next_hole] == f) {
-            ++next_hole;
-            continue;
-        }
+    for_each_emitted_face(mesh, [&](int f) {
         out.face_vertices.insert(out.face_vertices.end(), mesh.face(f), mesh.face(f) + mesh.face_size(f));
         out.face_start.push_back(static_cast<int>(out.face_vertices.size()));
         if (static_cast<size_t>(f) < mesh.source.face_line.size()) out.source.face_line.push_back(mesh.source.face_line[f]);
-    }
+    });
     return out;
 }
 

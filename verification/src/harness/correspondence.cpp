@@ -17,7 +17,7 @@ namespace {
 
 /// Where a refined vertex of a primal scheme comes from, named in our coarse numbering: an
 /// old vertex {-1, v}; a face point {face, -1}; an edge point {face, k}, k the edge's place
-/// in the face (counted from its canonical first corner, canonical_cycle), `face` the
+/// in the face (counted from its canonical first corner, least_rotation), `face` the
 /// lowest-numbered of our coarse faces around the edge. The face tells apart two edges with
 /// the same ends (a pillow's refined levels have them, and a face that names a pair twice)
 /// and the face points of two faces with the same corners in opposite orders (polygons back
@@ -42,24 +42,6 @@ struct CycleHash {
     }
 };
 
-/// Where a face's canonical listing starts: at its least rotation (the same for the same
-/// oriented face whatever corner it was listed from).
-size_t canonical_start(const std::vector<int>& cycle) {
-    const size_t n = cycle.size();
-    if (n == 0) return 0;
-    const int least = *std::min_element(cycle.begin(), cycle.end());
-    size_t best = n;
-    for (size_t s = 0; s < n; ++s) {
-        if (cycle[s] != least) continue;
-        if (best == n) { best = s; continue; }
-        for (size_t k = 1; k < n; ++k) {  // only for a face that repeats its least vertex
-            const int x = cycle[(s + k) % n], y = cycle[(best + k) % n];
-            if (x != y) { if (x < y) best = s; break; }
-        }
-    }
-    return best;
-}
-
 std::vector<int> rotated(std::vector<int> cycle, size_t start) {
     std::rotate(cycle.begin(), cycle.begin() + static_cast<std::ptrdiff_t>(start), cycle.end());
     return cycle;
@@ -75,7 +57,7 @@ FaceIndex index_faces(const PolyMesh& coarse) {
     index.reserve(static_cast<size_t>(coarse.num_faces()));
     for (int f = 0; f < coarse.num_faces(); ++f) {
         std::vector<int> cycle(coarse.face(f), coarse.face(f) + coarse.face_size(f));
-        index.emplace(rotated(cycle, canonical_start(cycle)), f);
+        index.emplace(rotated(cycle, least_rotation(cycle)), f);
     }
     return index;
 }
@@ -128,7 +110,7 @@ std::vector<Provenance> read_provenance(const PolyMesh& fine, const std::vector<
     const auto name_parent = [&](std::vector<int> listing, int child, std::initializer_list<std::pair<int, int>> points,
                                  int face_point) {
         for (int& v : listing) v = to_ours[static_cast<size_t>(v)];
-        const size_t start = canonical_start(listing);
+        const size_t start = least_rotation(listing);
         const auto it = our_faces.find(rotated(listing, start));
         if (it == our_faces.end()) {
             why = "face " + std::to_string(child) + " is a child of " + cycle_text(listing) + ", not a face of ours";

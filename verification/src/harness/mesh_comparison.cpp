@@ -5,6 +5,8 @@
 #include <numeric>
 
 #include "crossdiv/mesh/tri_mesh.h"
+#include "crossdiv/subdiv/hole_faces.h"
+#include "crossdiv/verification/harness/mesh_topology.h"
 #include "harness/point_cloud.h"
 #include "crossdiv/verification/harness/tolerances.h"
 
@@ -20,18 +22,13 @@ TopologyCounts counts(const MeshTopology& t) { return {t.vertices, t.edges, t.fa
 std::vector<std::vector<int>> canonical_faces(const PolyMesh& m, const std::vector<int>* map) {
     std::vector<std::vector<int>> faces;
     faces.reserve(static_cast<size_t>(m.num_faces()) - m.creases.holes.size());
-    size_t next_hole = 0;  // holes are sorted
-    for (int f = 0; f < m.num_faces(); ++f) {
-        if (next_hole < m.creases.holes.size() && m.creases.holes[next_hole] == f) {
-            ++next_hole;
-            continue;
-        }
+    for_each_emitted_face(m, [&](int f) {
         auto& out = faces.emplace_back();
         out.assign(m.face(f), m.face(f) + m.face_size(f));
         if (map)
             for (int& v : out) v = (*map)[v];
-        std::rotate(out.begin(), std::min_element(out.begin(), out.end()), out.end());
-    }
+        std::rotate(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(least_rotation(out)), out.end());
+    });
     std::sort(faces.begin(), faces.end());
     return faces;
 }

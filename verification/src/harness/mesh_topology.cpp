@@ -48,4 +48,26 @@ MeshTopology mesh_topology(const PolyMesh& mesh) {
     return t;
 }
 
+size_t least_rotation(std::span<const int> cycle) {
+    const size_t n = cycle.size();
+    if (n == 0) return 0;
+    const int least = *std::min_element(cycle.begin(), cycle.end());
+    size_t best = n;
+    for (size_t s = 0; s < n; ++s) {
+        if (cycle[s] != least) continue;
+        if (best == n) {
+            best = s;
+            continue;
+        }
+        for (size_t k = 1; k < n; ++k) {  // only for a face that repeats its least vertex
+            const int x = cycle[(s + k) % n], y = cycle[(best + k) % n];
+            if (x != y) {
+                if (x < y) best = s;
+                break;
+            }
+        }
+    }
+    return best;
+}
+
 }  // namespace crossdiv::verification

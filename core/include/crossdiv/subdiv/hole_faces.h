@@ -12,6 +12,21 @@
 
 namespace crossdiv {
 
+/// Calls `fn(f)` for every face of `mesh` that is not a hole, in order (the holes are sorted:
+/// one merge pass).
+template <class Fn>
+void for_each_emitted_face(const PolyMesh& mesh, const Fn& fn) {
+    const std::vector<int>& holes = mesh.creases.holes;
+    size_t next_hole = 0;
+    for (int f = 0; f < mesh.num_faces(); ++f) {
+        if (next_hole < holes.size() && holes[next_hole] == f) {
+            ++next_hole;
+            continue;
+        }
+        fn(f);
+    }
+}
+
 /// The mesh as emitted: every face that is not a hole, in order, with its source line;
 /// every vertex kept, as Far keeps them, so that vertex numbers stay those of the refinement
 /// (a vertex only holes use is then unreferenced). The hole tags are dropped.

@@ -4,6 +4,8 @@
 /// characteristic, boundary loops, and each vertex's valence and boundary flag.
 
 #include <array>
+#include <cstddef>
+#include <span>
 #include <vector>
 
 #include "crossdiv/mesh/poly_mesh.h"
@@ -22,5 +24,10 @@ struct MeshTopology {
 
 /// Computes the topology by sorting edge keys (no maps).
 MeshTopology mesh_topology(const PolyMesh& mesh);
+
+/// Where a face's canonical listing starts: its lexicographically least rotation, orientation
+/// kept, so the same oriented face listed from any corner has one key (also when it names its
+/// least vertex twice). Linear unless the least vertex repeats.
+size_t least_rotation(std::span<const int> cycle);
 
 }  // namespace crossdiv::verification
