@@ -114,7 +114,8 @@ void check_loop_input(const TriMesh& mesh, const LoopOptions& options) {
         loop_input_connectivity(mesh);
     } catch (const NonManifoldInput&) {
         if (options.nonmanifold == NonManifoldRule::Refuse) throw;
-        loop_nonmanifold_step(to_poly_mesh(mesh), options);  // refuses what those rules do not refine
+        // A triangle mesh without tags: the rules refine its every topology, but not every weight family.
+        require_loop_nonmanifold_rule(options);
     }
 }
 

@@ -243,15 +243,19 @@ bool add_sharp_vertex_row(StencilTable& st, const GeneralTopology& t, int v) {
 
 }  // namespace
 
+void require_loop_nonmanifold_rule(const LoopOptions& options) {
+    if (has_tuned_edges(options.weights))
+        throw InputError("the non-manifold rules are defined for the weight families with Loop's edge mask (loop, "
+                         "warren), not for " + std::string(to_string(options.weights)));
+}
+
 RefinementStep loop_nonmanifold_step(const PolyMesh& mesh, const LoopOptions& options) {
     for (int f = 0; f < mesh.num_faces(); ++f)
         if (mesh.face_size(f) != 3)
             throw InputError(mesh.source.describe_face(f) + ": has " + std::to_string(mesh.face_size(f)) +
                              " corners; Loop subdivision refines triangles only");
     require_untagged(mesh);
-    if (has_tuned_edges(options.weights))
-        throw InputError("the non-manifold rules are defined for the weight families with Loop's edge mask (loop, "
-                         "warren), not for " + std::string(to_string(options.weights)));
+    require_loop_nonmanifold_rule(options);
     const int nv = mesh.num_vertices(), nf = mesh.num_faces();
     if (12LL * nf > INT_MAX) throw InputError("the next Loop level would have more than 2^31 corners; use fewer levels");
     const GeneralTopology t = complete_topology(mesh, options.boundary == LoopBoundary::EdgeAndCorner);

@@ -44,6 +44,10 @@
 
 namespace crossdiv {
 
+/// @throws InputError for Loop options these rules have no version of: the tuned weight
+///         families (their edge mask has no rule next to a sharp edge).
+void require_loop_nonmanifold_rule(const LoopOptions& options);
+
 /// One Loop level of a triangle mesh under the rules above: vertex points first, then one
 /// edge point per edge (numbered at its first corner in face order), four triangles per
 /// triangle in loop_step's order; hole tags carried to the children.
