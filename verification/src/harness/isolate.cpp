@@ -2,6 +2,7 @@
 #include "crossdiv/verification/harness/process.h"
 
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -14,6 +15,30 @@ namespace crossdiv::verification {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define CROSSDIV_ADDRESS_SANITIZER 1
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__)
+#define CROSSDIV_ADDRESS_SANITIZER 1
+#endif
+
+/// Caps this (child) process's address space at what it maps now plus kIsolatedMemoryBytes.
+void limit_memory() {
+#ifndef CROSSDIV_ADDRESS_SANITIZER
+    long long pages = 0;
+    if (FILE* statm = std::fopen("/proc/self/statm", "r")) {
+        if (std::fscanf(statm, "%lld", &pages) != 1) pages = 0;
+        std::fclose(statm);
+    }
+    if (pages <= 0) return;  // unknown size: no cap rather than a wrong one
+    const rlim_t cap = static_cast<rlim_t>(pages * sysconf(_SC_PAGESIZE) + kIsolatedMemoryBytes);
+    const rlimit limit{cap, cap};
+    setrlimit(RLIMIT_AS, &limit);
+#endif
+}
 
 // A minimal binary format for the child's answer: a status byte, a message, then the trace.
 template <class T>
@@ -134,6 +159,7 @@ IsolatedTrace run_isolated(const std::function<adapters::LevelTrace()>& fn, doub
     if (pid == 0) {
         // Child: run, write the answer, leave without running the parent's atexit handlers.
         dup2(fileno(errors), STDERR_FILENO);
+        limit_memory();
         const IsolatedTrace r = run_here(fn);
         put(result, static_cast<int>(r.outcome.status));
         put_string(result, r.outcome.message);

@@ -93,9 +93,18 @@ struct IsolatedTrace {
     std::optional<adapters::LevelTrace> trace;  ///< present when outcome.status == Ok
 };
 
-/// Runs `fn` in a forked child with a time limit of `timeout_seconds` and ships its result
-/// back through a temporary file; the child's stderr is captured into the outcome's message
-/// when the run fails. With `isolate` false it runs in this process (for debugging; a crash
+/// Memory an isolated run may take beyond what this process already holds (RLIMIT_AS in the
+/// child): a reference that allocates without bound on hostile input (OpenMesh 9's
+/// Catmull-Clark on a quad naming a vertex twice grew to 16.8 GB in 55 s before throwing
+/// std::bad_alloc) fails fast and is recorded, instead of taking the machine's memory. 6 GiB
+/// is 15x what the largest comparison a reference is given (16M faces, about 150 bytes per
+/// face each) needs. Not applied under the address sanitizer, which reserves its shadow
+/// memory as address space.
+inline constexpr long long kIsolatedMemoryBytes = 6LL << 30;
+
+/// Runs `fn` in a forked child with a time limit of `timeout_seconds` and a memory limit of
+/// kIsolatedMemoryBytes, and ships its result back through a temporary file; the child's
+/// stderr is captured into the outcome's message when the run fails. With `isolate` false it runs in this process (for debugging; a crash
 /// then takes the process down).
 IsolatedTrace run_isolated(const std::function<adapters::LevelTrace()>& fn, double timeout_seconds, bool isolate = true);
 
