@@ -66,7 +66,10 @@ case "${1:-}" in
     cmake --build build-sanitize -j2
     # handle_segv=0: a deliberate crash (the isolation tests) dies by its signal, as the
     # harness expects; any sanitizer report fails the test that caused it.
-    export ASAN_OPTIONS=handle_segv=0:detect_leaks=1:abort_on_error=0
+    # max_allocation_size_mb: the isolation's memory cap (kIsolatedMemoryBytes, an address-space
+    # limit the sanitizer's shadow memory rules out) as a cap per allocation, so a reference
+    # that allocates without bound stops at its first 6 GiB request.
+    export ASAN_OPTIONS=handle_segv=0:detect_leaks=1:abort_on_error=0:max_allocation_size_mb=6144
     export LSAN_OPTIONS="suppressions=$PWD/fuzz/sanitizer-suppressions.txt"
     export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
     ctest --test-dir build-sanitize --output-on-failure -j2
