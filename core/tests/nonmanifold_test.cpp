@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 #include "crossdiv/error.h"
 #include "crossdiv/subdiv/catmull_clark.h"
@@ -63,6 +64,47 @@ TEST(NonManifold, ABowtieVertexIsACornerAndTheFansAreRefinedApart) {
     EXPECT_EQ(r.positions[0], m.positions[0]);
     // Vertex 1 is an ordinary boundary corner of its triangle: crease rule on its two edges.
     EXPECT_TRUE(r.positions[1].isApprox(0.75 * m.positions[1] + 0.125 * (m.positions[0] + m.positions[2])));
+}
+
+/// An open fan of four triangles around vertex 0 (spokes 1..5 on a half circle, lifted), and
+/// the same fan turned and shifted: vertices 6..10, joined at vertex 0 in a bowtie.
+PolyMesh fan4(bool bowtie) {
+    PolyMesh m;
+    m.positions = {Vec3(0, 0, 0)};
+    for (int k = 0; k <= 4; ++k)
+        m.positions.push_back(Vec3(std::cos(k * M_PI / 4), std::sin(k * M_PI / 4), 0.1 * k * k));
+    for (int k = 1; k <= 4; ++k) m.add_face({0, k, k + 1});
+    if (!bowtie) return m;
+    for (int k = 0; k <= 4; ++k)
+        m.positions.push_back(Vec3(-std::cos(k * M_PI / 4), -std::sin(k * M_PI / 4), -0.2 * k));
+    for (int k = 6; k <= 9; ++k) m.add_face({0, k, k + 1});
+    return m;
+}
+
+TEST(NonManifold, TheTunedEdgeMaskReadsTheFanThatHoldsTheEdge) {
+    // Vertex 0's open fan of 4 faces reads 2 (4 - 1) = 6, as a manifold boundary vertex of 4
+    // faces; spoke 2 has 2 faces, boundary: it reads max(2, 3) = 3. So the edge (0, 2) takes
+    // the regularity table's row of valence 3: .15658 on spoke 2, .14427 on each opposite
+    // vertex (spokes 1 and 3), 1 - .15658 - 2 (.14427) = .55488 on vertex 0. In the bowtie
+    // vertex 0 has 8 faces and 10 edges in two fans; each fan reads 6 as if alone.
+    const LoopOptions regularity{LoopWeights::Regularity, LoopBoundary::EdgeOnly};
+    for (bool bowtie : {false, true}) {
+        SCOPED_TRACE(bowtie ? "bowtie" : "one fan");
+        const PolyMesh m = fan4(bowtie);
+        const PolyMesh r = loop_subdivide(m, regularity, 1);
+        const std::vector<std::array<int, 2>> edges = nonmanifold_edges(m);
+        const auto it = std::find_if(edges.begin(), edges.end(), [](const std::array<int, 2>& e) {
+            return std::min(e[0], e[1]) == 0 && std::max(e[0], e[1]) == 2;
+        });
+        ASSERT_NE(it, edges.end());
+        // Face order numbers the edges the same in both refinements (manifold and not).
+        const Vec3& p = r.positions[static_cast<size_t>(m.num_vertices() + (it - edges.begin()))];
+        const Vec3 expected = (1 - .15658 - 2 * .14427) * m.positions[0] + .15658 * m.positions[2] +
+                              .14427 * (m.positions[1] + m.positions[3]);
+        EXPECT_LE((p - expected).norm(), 1e-15) << p.transpose() << " against " << expected.transpose();
+    }
+    // The bowtie's vertex 0 is a corner; in the fan alone, a boundary vertex (3/4, 1/8, 1/8).
+    EXPECT_EQ(loop_subdivide(fan4(true), regularity, 1).positions[0], Vec3(0, 0, 0));
 }
 
 TEST(NonManifold, AnInteriorNonManifoldCreaseKeepsTheCreaseRule) {

@@ -68,6 +68,26 @@ PolyMesh bowtie(int fans) {
     return make(p, f);
 }
 
+/// Two open fans of four triangles, half discs on either side of the z axis with their
+/// spokes bent alternately off the plane, joined only at vertex 0. Each fan's vertex 0 reads
+/// as a boundary vertex of 4 faces, where the tuned Loop edge mask (loop_mask.h) departs
+/// from Loop's on the middle spokes.
+PolyMesh bowtie_of_open_fans() {
+    std::vector<Vec3> p = {Vec3(0, 0, 0)};
+    std::vector<std::vector<int>> f;
+    for (const double side : {1.0, -1.0}) {
+        const int b = static_cast<int>(p.size());
+        for (int j = 0; j <= 4; ++j) {
+            const double t = M_PI * (j / 4.0 - 0.5);
+            // Unequal fans: no symmetry puts vertex 0 where another rule would.
+            p.push_back(side > 0 ? Vec3(std::cos(t), 0.3 * (j % 2) + 0.1, std::sin(t))
+                                 : Vec3(-0.8 * std::cos(t), 0.3 * (j % 2) - 0.25, 0.7 * std::sin(t) + 0.1));
+        }
+        for (int j = 0; j < 4; ++j) f.push_back({0, b + j, b + j + 1});
+    }
+    return make(p, f);
+}
+
 /// `sheets` strips of four triangles meeting along the bent seam p0-p1-p2: the two seam
 /// edges are non-manifold, and p1 -- with more faces than edges and no boundary edge -- sits
 /// on an interior non-manifold crease, which OpenSubdiv refines by the crease rule.
@@ -158,6 +178,8 @@ std::vector<EdgeCase> edge_cases() {
     for (int fans : {3, 5})
         add("bowtie-" + std::to_string(fans), std::to_string(fans) + " fans of two triangles joined at one vertex", false,
             bowtie(fans));
+    add("bowtie-open-fans", "two open fans of four triangles joined at one vertex: each fan read alone by the tuned edge mask",
+        false, bowtie_of_open_fans());
     add("nonmanifold-seam", "three strips meeting along a two-edge seam: an interior non-manifold crease", false, seam(3));
     add("bowtie", "two fans joined at one vertex: a non-manifold vertex", false, [] {
         PolyMesh m = make({Vec3(0, 0, 0), Vec3(1, 0.5, 0), Vec3(1, -0.5, 0), Vec3(-1, 0.5, 0), Vec3(-1, -0.5, 0)},

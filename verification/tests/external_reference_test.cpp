@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "crossdiv/datasets/bundled.h"
+#include "crossdiv/datasets/edge_cases.h"
 #include "crossdiv/error.h"
 #include "crossdiv/verification/comparisons/loop_comparison.h"
 #include "crossdiv/verification/comparisons/scheme_comparison.h"
@@ -233,6 +234,40 @@ TEST(MeshLab, AgreesWithCoreUnderEachOfItsWeightFamilies) {
     req.references = {"meshlab"};
     const LoopComparison c = compare_loop(bundled("icosahedron"), "icosahedron", req);
     EXPECT_EQ(c.runs[0].divergence_class, DivergenceClass::WeightFamily) << c.runs[0].explanation;
+}
+
+// The tuned families at a bowtie (nonmanifold.h): core reads each fan alone in the tuned edge
+// mask, and so does VCG's walk around a vertex. One level, so that only the bowtie vertex's
+// own rule can differ: MeshLab moves it by the boundary rule within one fan, OpenSubdiv's rule
+// (core's) keeps it as a corner; every other vertex agrees in float, the edge points where
+// the tuned mask departs from Loop's among them.
+TEST(MeshLab, ReadsEachFanOfABowtieAloneInTheTunedEdgeMask) {
+    const Manifest m = read_manifest(kSource + "/verification/suites/default.suite");
+    ASSERT_TRUE(is_built("meshlab"));
+    const PolyMesh bowtie = datasets::edge_case("bowtie-open-fans").mesh;
+    const TriMesh tri = to_tri_mesh(bowtie, "test");
+    for (LoopWeights w : {LoopWeights::Regularity, LoopWeights::Continuity}) {
+        SCOPED_TRACE(to_string(w));
+        LoopComparisonRequest req;
+        req.levels = 1;
+        req.options = {w, LoopBoundary::EdgeOnly};
+        req.references = {"meshlab"};
+        const LoopComparison c = compare_loop(tri, "bowtie-open-fans", req);
+        ASSERT_EQ(c.runs.size(), 1u);
+        const MeshComparison& mc = c.runs[0].comparison;
+        ASSERT_TRUE(mc.topology_equal()) << c.runs[0].explanation;
+        ASSERT_GE(mc.worst.size(), 2u);
+        EXPECT_EQ(mc.worst[0].ours_index, 0);
+        EXPECT_GT(mc.worst[0].distance, 0.01 * mc.diagonal);  // measured: 0.062 of the diagonal
+        // Float rounding (measured: 3e-8 of the diagonal), far below the tuned mask's effect.
+        EXPECT_LE(mc.worst[1].distance, 1e-6 * mc.diagonal);
+        const PolyMesh tuned = loop_subdivide(bowtie, req.options, 1);
+        const PolyMesh plain = loop_subdivide(bowtie, {LoopWeights::Loop, LoopBoundary::EdgeOnly}, 1);
+        double moved = 0.0;
+        for (int v = bowtie.num_vertices(); v < tuned.num_vertices(); ++v)
+            moved = std::max(moved, (tuned.positions[v] - plain.positions[v]).norm());
+        EXPECT_GT(moved, 0.01 * mc.diagonal);  // the tuned edge mask acts on these edge points
+    }
 }
 
 // MeshLab's classic Butterfly (VCG's MidPointButterfly): on a closed mesh the eight-point

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <limits>
+#include <numeric>
 
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/datasets/edge_cases.h"
@@ -15,6 +17,7 @@
 #include "crossdiv/verification/harness/mesh_topology.h"
 #include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/verification/harness/tolerances.h"
+#include "crossdiv/subdiv/nonmanifold.h"
 
 namespace crossdiv::verification {
 namespace {
@@ -158,9 +161,58 @@ TEST(LoopConformance, NonManifoldCatalogAgreesWithOpenSubdivAndTheOthersAreClass
             ++compared;
         }
     }
-    // edges of 3, 4, 10, 100 faces; bowties of 2, 3, 5 fans; the seam; the reversed triangle;
-    // the duplicate face; the triangle naming a vertex twice
-    EXPECT_EQ(compared, 2 * 11);
+    // edges of 3, 4, 10, 100 faces; bowties of 2, 3, 5 fans and of two open fans of four; the
+    // seam; the reversed triangle; the duplicate face; the triangle naming a vertex twice
+    EXPECT_EQ(compared, 2 * 12);
+}
+
+TEST(LoopConformance, TheNonManifoldRulesRefineEveryManifoldMeshAsTheManifoldRefinement) {
+    // The non-manifold rules (nonmanifold.h) on a manifold mesh are the manifold refinement,
+    // for every weight family (the tuned edge mask reads each end's fan, which on a manifold
+    // is the vertex) and both boundary rules: same vertex count, same positions up to the
+    // order of a stencil's terms: kAgreementRelative of the diagonal, or kRoundingUlps of the
+    // largest coordinate far from the origin (measured: at most 0.12 of it). The two number
+    // edge points apart but lay out the child faces alike (four per triangle, in face order),
+    // so the faces pair the vertices; the pairing must be one to one.
+    std::vector<std::pair<std::string, PolyMesh>> meshes;
+    for (datasets::BundledMesh& m : datasets::bundled_meshes()) meshes.emplace_back(m.name, std::move(m.mesh));
+    for (datasets::EdgeCase& c : datasets::edge_cases())
+        if (c.valid_loop_input) meshes.emplace_back(c.name, std::move(c.mesh));
+    double worst = 0.0;
+    for (const auto& [name, mesh] : meshes)
+        for (LoopWeights w : kAllLoopWeights)
+            for (LoopBoundary b : {LoopBoundary::EdgeOnly, LoopBoundary::EdgeAndCorner}) {
+                SCOPED_TRACE(name + " " + std::string(to_string(w)) + " " + std::string(to_string(b)));
+                const LoopOptions options{w, b};
+                const PolyMesh manifold = loop_subdivide(mesh, options, 2);
+                const PolyMesh general = loop_subdivide_nonmanifold(mesh, options, 2);
+                ASSERT_EQ(general.num_vertices(), manifold.num_vertices());
+                ASSERT_EQ(general.face_vertices.size(), manifold.face_vertices.size());
+                std::vector<int> to_manifold(static_cast<size_t>(general.num_vertices()), -1);
+                // Vertex points come first in both, at every level: the input's vertices keep
+                // their numbers (an isolated vertex too, which no face names).
+                std::iota(to_manifold.begin(), to_manifold.begin() + mesh.num_vertices(), 0);
+                for (size_t i = 0; i < general.face_vertices.size(); ++i) {
+                    int& m = to_manifold[static_cast<size_t>(general.face_vertices[i])];
+                    ASSERT_TRUE(m < 0 || m == manifold.face_vertices[i]) << "corner " << i;
+                    m = manifold.face_vertices[i];
+                }
+                std::vector<int> sorted = to_manifold;
+                std::sort(sorted.begin(), sorted.end());
+                ASSERT_TRUE(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end() && sorted.front() >= 0);
+                double magnitude = 0.0;
+                for (const Vec3& p : manifold.positions) magnitude = std::max(magnitude, p.cwiseAbs().maxCoeff());
+                const double bound =
+                    std::max(tolerances::kAgreementRelative * bounding_box_diagonal(mesh.positions),
+                             tolerances::kRoundingUlps * std::numeric_limits<double>::epsilon() * magnitude);
+                for (int v = 0; v < general.num_vertices(); ++v) {
+                    const Vec3& p = manifold.positions[static_cast<size_t>(to_manifold[static_cast<size_t>(v)])];
+                    const double d = (general.positions[v] - p).norm();
+                    worst = std::max(worst, d / bound);
+                    ASSERT_LE(d, bound) << "vertex " << v;
+                }
+            }
+    RecordProperty("worst_fraction_of_bound", std::to_string(worst));
 }
 
 TEST(LoopConformance, CatmullClarkOnEveryNonManifoldAndPolygonEdgeCaseAgreesWithOpenSubdiv) {

