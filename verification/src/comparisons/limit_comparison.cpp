@@ -1,4 +1,5 @@
 #include "crossdiv/verification/comparisons/limit_comparison.h"
+#include "crossdiv/verification/harness/fans.h"
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
@@ -145,29 +146,6 @@ nlohmann::json to_json(const LimitComparison& c) {
 
 namespace {
 
-/// Loop fan: centre 0, ring 1..n (slightly irregular so that no eigen-direction is missed).
-TriMesh loop_fan(int n) {
-    TriMesh m;
-    m.positions.emplace_back(0.1, -0.2, 0.7);
-    for (int k = 0; k < n; ++k)
-        m.positions.emplace_back(std::cos(2 * M_PI * k / n) * (1 + 0.1 * k), std::sin(2 * M_PI * k / n), 0.05 * k);
-    for (int k = 0; k < n; ++k) m.triangles.push_back({0, 1 + k, 1 + (k + 1) % n});
-    return m;
-}
-
-/// Quad fan: centre 0, spoke ends 1 + 2k, face-opposite vertices 2 + 2k, quads (0, s_k, r_k, s_k+1).
-PolyMesh quad_fan(int n) {
-    PolyMesh m;
-    m.positions.emplace_back(0.1, -0.2, 0.7);
-    for (int k = 0; k < n; ++k) {
-        const double a = 2 * M_PI * k / n, b = a + M_PI / n;
-        m.positions.emplace_back(std::cos(a) * (1 + 0.1 * k), std::sin(a), 0.05 * k);
-        m.positions.emplace_back(1.6 * std::cos(b), 1.5 * std::sin(b), -0.04 * k);
-    }
-    for (int k = 0; k < n; ++k) m.add_face({0, 1 + 2 * k, 2 + 2 * k, 1 + 2 * ((k + 1) % n)});
-    return m;
-}
-
 bool is_loop_family(const std::string& s) { return s == "loop" || s == "warren"; }
 
 /// The local matrix: rows of the refined 1-ring of the centre in core's S, columns of the
@@ -229,9 +207,12 @@ SpectrumRow local_spectrum(const std::string& scheme, int n) {
     std::vector<double> cf{1.0};
     if (is_loop_family(scheme)) {
         // Loop 1987 sec. 3.3: the rotation-invariant block gives 1 and 5/8 - n beta, Fourier
-        // mode k the edge-part eigenvalue 3/8 + cos(2 pi k / n) / 4.
-        const double beta = loop_beta(scheme == "loop" ? LoopWeights::Loop : LoopWeights::Warren, n);
-        row.vertex_rate = 0.625 - n * beta;
+        // mode k the edge-part eigenvalue 3/8 + cos(2 pi k / n) / 4. The published values of
+        // 5/8 - n beta, written out here rather than read from core's masks (loop_mask.h), so
+        // that a wrong beta there shows: Loop's (3/8 + cos(2 pi / n) / 4)^2, Warren's
+        // 5/8 - 3/8 = 1/4, and 5/8 - 3 (3/16) = 1/16 at n = 3.
+        const double loop_rate = std::pow(0.375 + 0.25 * std::cos(2 * M_PI / n), 2);
+        row.vertex_rate = scheme == "loop" ? loop_rate : n == 3 ? 1.0 / 16.0 : 0.25;
         cf.push_back(row.vertex_rate);
         for (int k = 1; k < n; ++k) cf.push_back(0.375 + 0.25 * std::cos(2 * M_PI * k / n));
     } else {

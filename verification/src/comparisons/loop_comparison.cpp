@@ -1,6 +1,7 @@
 #include "crossdiv/verification/comparisons/loop_comparison.h"
 #include "crossdiv/subdiv/nonmanifold.h"
 
+#include <algorithm>
 #include <chrono>
 #include <deque>
 #include <map>
@@ -13,6 +14,7 @@
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/verification/harness/mesh_topology.h"
+#include "crossdiv/verification/properties/loop_rule_oracle.h"
 #include "crossdiv/verification/harness/tolerances.h"
 
 namespace crossdiv::verification {
@@ -255,6 +257,22 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
         return std::max(max_valence, 0);
     };
 
+    // The valences of the input's interior vertices, where a rule's vertex mask is used.
+    std::vector<int> interior_valence_list;
+    bool interior_valences_counted = false;
+    auto interior_valences = [&]() -> const std::vector<int>& {
+        if (!interior_valences_counted) {
+            const MeshTopology t = mesh_topology(input_mesh);
+            for (size_t v = 0; v < t.valence.size(); ++v)
+                if (!t.boundary_vertex[v] && t.valence[v] >= 3) interior_valence_list.push_back(t.valence[v]);
+            std::sort(interior_valence_list.begin(), interior_valence_list.end());
+            interior_valence_list.erase(std::unique(interior_valence_list.begin(), interior_valence_list.end()),
+                                        interior_valence_list.end());
+            interior_valences_counted = true;
+        }
+        return interior_valence_list;
+    };
+
     // Each matched reference's last level in our vertex order, to report every
     // implementation's value at the case's worst vertex.
     std::map<std::string, std::vector<Vec3>> in_our_order;
@@ -367,6 +385,14 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
                                                                in_float ? largest_valence() : 0, req.levels);
             if (!within(up_to_rounding, c2, e2, NAN)) {
                 still = "; with " + describe(run.ran_with) + " still " + sci(c2.max_rel);
+                return std::nullopt;
+            }
+            // A rule difference explains the divergence only if the rule under test is the
+            // published one: core's version of it must pass the oracle that does not read its
+            // masks, at the input's interior valences too (loop_rule_oracle.h).
+            const LoopRuleVerdict oracle = check_core_loop_rule(*applied_rule, interior_valences());
+            if (oracle.known && !oracle.passed) {
+                still = "; " + describe(*applied_rule) + " fails its oracle: " + oracle.detail;
                 return std::nullopt;
             }
             SchemeRule applied, requested;

@@ -12,6 +12,7 @@
 #include "crossdiv/verification/comparisons/limit_comparison.h"
 #include "crossdiv/verification/comparisons/scheme_comparison.h"
 #include "crossdiv/verification/harness/tolerances.h"
+#include "crossdiv/verification/properties/loop_rule_oracle.h"
 
 namespace crossdiv::verification {
 namespace {
@@ -206,6 +207,15 @@ CheckReport spectrum_study() {
                                  r.regular_characteristic_map ? 0.0 : 1.0, 0.0, "",
                                  "multiplicity " + std::to_string(r.subdominant_multiplicity) + ", next " +
                                      std::to_string(r.next) + ", max |imag| " + std::to_string(r.max_imaginary)));
+        }
+    // The Loop rules no reference has in full (Warren's weights; the corner rule CGAL and
+    // OpenMesh lack) checked against the stencils as published, not against core's masks.
+    for (LoopWeights w : {LoopWeights::Loop, LoopWeights::Warren})
+        for (LoopBoundary b : {LoopBoundary::EdgeOnly, LoopBoundary::EdgeAndCorner}) {
+            const LoopRuleVerdict v = check_core_loop_rule({w, b}, {13, 14, 15, 16, 17, 18, 19, 20, 64, 360});
+            runs.push_back(check("published stencils", "loop rule oracle",
+                                 std::string(to_string(w)) + " " + std::string(to_string(b)), v.worst_rel,
+                                 tolerances::kAgreementRelative, "rel", v.detail));
         }
     out.tables = {{"spectrum", rows}};
     return out;

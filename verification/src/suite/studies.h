@@ -17,7 +17,8 @@ CheckReport creases_study();
 /// Limit positions and interior normals against OpenSubdiv's Limit(), and Bfr's (u, v)
 /// evaluation against core's exact limit.
 CheckReport limit_positions_study();
-/// The eigen table, valence 3..20, Loop, Warren, Catmull-Clark.
+/// The eigen table, valence 3..20, Loop, Warren, Catmull-Clark, each against its published
+/// closed form; and the Loop rule oracle (loop_rule_oracle.h) of each Loop rule it knows.
 CheckReport spectrum_study();
 /// The convergence table, valence 3..12, levels 1..8.
 CheckReport convergence_study();
