@@ -6,6 +6,7 @@
 #include "library_guard.h"
 
 #include "crossdiv/verification/implementations/registry.h"
+#include "crossdiv/verification/implementations/callback_implementation.h"
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/mesh/poly_connectivity.h"
 #include "crossdiv/subdiv/sqrt3.h"
@@ -25,6 +26,40 @@ int max_valence(const PolyMesh& m) {
     int largest = 0;
     for (int v = 0; v < m.num_vertices(); ++v) largest = std::max(largest, c.fan(v).faces + c.is_boundary_vertex(v));
     return largest;
+}
+
+// A topology class needs a measured topology difference. Doo-Sabin is matched by position
+// (a dual scheme has no old vertices to derive provenance from), so a reference whose vertices
+// sit on one another's places (here every pair's positions swapped, as a wrong weight that
+// moves vertices far can do) breaks the match with every count equal: unexplained, a failure.
+// A reference that drops a face changes the counts: topology.
+TEST(DooSabinComparison, OnlyAMeasuredTopologyDifferenceIsClassifiedTopology) {
+    register_reference(make_callback_implementation("swapped-doo-sabin", {Scheme::DooSabin},
+                                                    [](const PolyMesh& mesh, const RefineRequest& request) {
+                                                        PolyMesh r = core_implementation().refine_last(mesh, request);
+                                                        for (size_t i = 0; i + 1 < r.positions.size(); i += 2)
+                                                            std::swap(r.positions[i], r.positions[i + 1]);
+                                                        return r;
+                                                    }));
+    register_reference(make_callback_implementation("face-dropping-doo-sabin", {Scheme::DooSabin},
+                                                    [](const PolyMesh& mesh, const RefineRequest& request) {
+                                                        const PolyMesh full = core_implementation().refine_last(mesh, request);
+                                                        PolyMesh r;
+                                                        r.positions = full.positions;
+                                                        for (int f = 1; f < full.num_faces(); ++f)
+                                                            r.add_face(std::vector<int>(full.face(f), full.face(f) + full.face_size(f)));
+                                                        return r;
+                                                    }));
+    SchemeRequest req;
+    req.scheme = Scheme::DooSabin;
+    req.levels = 1;
+    req.references = {"swapped-doo-sabin", "face-dropping-doo-sabin"};
+    const SchemeComparison c = compare_scheme(datasets::bundled_mesh("cube-asymmetric"), "cube-asymmetric", req);
+    ASSERT_EQ(c.runs.size(), 2u);
+    EXPECT_EQ(c.runs[0].verdict, Verdict::Diverge);
+    EXPECT_EQ(c.runs[0].divergence_class, DivergenceClass::Unexplained) << c.runs[0].explanation;
+    EXPECT_NE(c.runs[0].explanation.find("not a topology difference"), std::string::npos) << c.runs[0].explanation;
+    EXPECT_EQ(c.runs[1].divergence_class, DivergenceClass::Topology) << c.runs[1].explanation;
 }
 
 TEST(DooSabinComparison, CgalAgreesOnClosedMeshesAndDropsBorderFacesOnOpenOnes) {

@@ -103,6 +103,12 @@ std::optional<Classification> nonmanifold_handling(const std::vector<char>& reac
                           std::to_string(ours.num_vertices()) + " vertices)"};
 }
 
+bool measured_topology_difference(const TopologyCounts& ours, const TopologyCounts& ref, bool face_sets_equal,
+                                  MatchMethod method) {
+    if (!(ours == ref)) return true;
+    return !face_sets_equal && (method == MatchMethod::Order || method == MatchMethod::Topology);
+}
+
 DivergenceClass input_handling_class(const PolyMesh& input) {
     for (const MeshIssue& issue : check_mesh(input)) {
         if (issue.severity != Severity::Error) continue;

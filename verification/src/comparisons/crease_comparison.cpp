@@ -1,4 +1,5 @@
 #include "crossdiv/verification/comparisons/crease_comparison.h"
+#include "crossdiv/verification/comparisons/classification.h"
 
 #include <algorithm>
 #include <cmath>
@@ -85,26 +86,39 @@ CreaseComparison compare_creases(const PolyMesh& mesh, const std::string& name, 
         c.explanation = early->explanation;
         return c;
     }
+    // Matched level by level from provenance (positions play no part), else by position at
+    // each level; only the first can show a topology difference with equal counts.
+    std::vector<const PolyMesh*> our_levels{&mesh};
+    for (const PolyMesh& m : ours) our_levels.push_back(&m);
+    const Correspondence by_provenance = match_by_provenance(our_levels, *it.trace);
+    const bool provenance = by_provenance.method != MatchMethod::None;
     c.faces_equal = true;
+    bool topology_differs = false;
     for (int l = 1; l <= req.levels; ++l) {
         const PolyMesh& theirs = (*it.trace)[static_cast<size_t>(l)];
-        const Correspondence m = match_nearest_and_faces(ours[static_cast<size_t>(l - 1)], theirs);
+        const PolyMesh& level = ours[static_cast<size_t>(l - 1)];
+        const Correspondence m = provenance ? Correspondence{by_provenance.method, by_provenance.level_maps[static_cast<size_t>(l)], {}, ""}
+                                            : match_nearest_and_faces(level, theirs);
         if (m.method == MatchMethod::None) {
             c.verdict = Verdict::Diverge;
-            c.divergence_class = DivergenceClass::Topology;
             c.faces_equal = false;
-            c.explanation = "level " + std::to_string(l) + ": no vertex bijection (" + m.note + ")";
+            const bool counts_differ = !(topology_counts(level) == topology_counts(theirs));
+            c.divergence_class = counts_differ ? DivergenceClass::Topology : DivergenceClass::Unexplained;
+            c.explanation = "level " + std::to_string(l) + ": no vertex bijection (" + m.note + ")" +
+                            (counts_differ ? "; the counts differ" : "; the same counts, so not a topology difference");
             return c;
         }
-        const MeshComparison mc = compare_meshes(ours[static_cast<size_t>(l - 1)], theirs, m.ref_to_ours, 1);
+        const MeshComparison mc = compare_meshes(level, theirs, m.ref_to_ours, 1);
         c.faces_equal = c.faces_equal && mc.topology_equal();
+        topology_differs = topology_differs || (!mc.topology_equal() && measured_topology_difference(
+                                                                             mc.ours, mc.ref, false, m.method));
         c.max_rel_per_level.push_back(mc.max_rel);
     }
     c.max_rel = c.max_rel_per_level.back();
     const double worst = *std::max_element(c.max_rel_per_level.begin(), c.max_rel_per_level.end());
     const bool agree = c.faces_equal && worst <= req.tolerance;
     c.verdict = agree ? Verdict::Agree : Verdict::Diverge;
-    if (!agree) c.divergence_class = c.faces_equal ? DivergenceClass::Unexplained : DivergenceClass::Topology;
+    if (!agree) c.divergence_class = topology_differs ? DivergenceClass::Topology : DivergenceClass::Unexplained;
     char buf[200];
     const std::string holes = c.hole_tags ? ", " + std::to_string(c.hole_tags) + " hole" : std::string();
     std::snprintf(buf, sizeof buf, "%d edge and %d vertex%s tags, %s decay; worst level %.2e of the diagonal; the tags "

@@ -423,13 +423,19 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
             return c;
         };
         tests.topology = [&]() -> std::optional<Classification> {
-            if (same_faces) return std::nullopt;
+            if (same_faces || !measured_topology_difference(run.comparison.ours, run.comparison.ref, false,
+                                                            run.correspondence.method))
+                return std::nullopt;
             return Classification{DivergenceClass::Topology,
                                   "refined topology differs: " + std::to_string(run.comparison.faces_only_in_ref) +
                                       " faces only in " + ref->name() + ", " +
                                       std::to_string(run.comparison.faces_only_in_ours) + " only in core"};
         };
         tests.unexplained = [&] {
+            if (!same_faces)
+                return "the face sets differ only under a match by position (" + std::string(to_string(run.correspondence.method)) +
+                       "), which a vertex moved far breaks: not a topology difference; differs by " +
+                       sci(run.comparison.max_rel) + worst;
             if (req.subject && !subject_rule)
                 return subject_name + " follows no named rule; differs by " + sci(run.comparison.max_rel) + worst;
             return run.ran_with == subject_rule ? "same rules, differs by " + sci(run.comparison.max_rel) + worst

@@ -179,13 +179,21 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
         if (run.correspondence.method == MatchMethod::None) {
             // Without a correspondence only the topology test of the ladder can be run.
             run.verdict = Verdict::Diverge;
+            // With equal counts that is no measured topology difference: a rule that moves
+            // vertices far (a wrong weight) breaks a match by position too.
+            const std::string unmatched = "no vertex bijection with core's " + run.rule + " refinement (" +
+                                          run.correspondence.note + "); " + std::to_string(theirs.num_faces()) +
+                                          " faces and " + std::to_string(theirs.num_vertices()) + " vertices against core's " +
+                                          std::to_string(same_rule_mesh.num_faces()) + " and " +
+                                          std::to_string(same_rule_mesh.num_vertices());
             DivergenceTests only_topology;
             only_topology.topology = [&]() -> std::optional<Classification> {
-                return Classification{DivergenceClass::Topology,
-                                      "no vertex bijection with core's " + run.rule + " refinement (" + run.correspondence.note +
-                                          "); " + std::to_string(theirs.num_faces()) + " faces against core's " +
-                                          std::to_string(ours.num_faces())};
+                if (!measured_topology_difference(topology_counts(same_rule_mesh), topology_counts(theirs), false,
+                                                  MatchMethod::None))
+                    return std::nullopt;
+                return Classification{DivergenceClass::Topology, unmatched};
             };
+            only_topology.unexplained = [&] { return unmatched + ": the same counts, so not a topology difference"; };
             const Classification c = classify_divergence(only_topology);
             run.divergence_class = c.cls;
             run.explanation = c.explanation;
@@ -250,12 +258,17 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
                 return Classification{DivergenceClass::ValenceLimit, why};
             };
             tests.topology = [&]() -> std::optional<Classification> {
-                if (same_faces) return std::nullopt;
+                if (same_faces || !measured_topology_difference(run.comparison.ours, run.comparison.ref, false,
+                                                                run.correspondence.method))
+                    return std::nullopt;
                 return Classification{DivergenceClass::Topology,
                                       faces + "; " + std::to_string(run.comparison.faces_only_in_ref) + " faces only in " +
                                           ref.name() + ", " + std::to_string(run.comparison.faces_only_in_ours) + " only in core"};
             };
             tests.unexplained = [&] {
+                if (!same_faces)
+                    return faces + "; the face sets differ only under a match by position (" +
+                           to_string(run.correspondence.method) + "), which a vertex moved far breaks: not a topology difference";
                 if (!no_same_rule.empty()) return "differs by " + sci(run.comparison.max_rel) + no_same_rule;
                 return "differs by " + sci(run.comparison.max_rel) + "; with " + ref.name() + "'s " + run.rule + " rule still " +
                        sci(with_rule.max_rel);

@@ -13,8 +13,6 @@
 namespace crossdiv::verification {
 namespace {
 
-TopologyCounts counts(const MeshTopology& t) { return {t.vertices, t.edges, t.faces, t.euler, t.boundary_loops}; }
-
 /// The faces `m` emits as vertex lists rotated to start at their smallest index (orientation
 /// kept), mapped through `map` when given, sorted: equal lists mean equal oriented face sets.
 /// Hole faces are refined but not emitted, so a reference that drops or keeps other holes
@@ -120,14 +118,20 @@ double agreement_tolerance(const PolyMesh& mesh, bool in_float, double tolerance
     return std::max(tolerance, ulps * ulp / (diagonal > 0 ? diagonal : 1.0));
 }
 
+TopologyCounts topology_counts(const MeshTopology& t) {
+    return {t.vertices, t.edges, t.faces, t.euler, t.boundary_loops};
+}
+
+TopologyCounts topology_counts(const PolyMesh& mesh) { return topology_counts(mesh_topology(mesh)); }
+
 bool MeshComparison::agree() const { return topology_equal() && max_rel <= tolerances::kAgreementRelative; }
 
 MeshComparison compare_meshes(const PolyMesh& ours, const PolyMesh& ref, const std::vector<int>& ref_to_ours,
                               int worst_count) {
     MeshComparison c;
     const MeshTopology to = mesh_topology(ours), tr = mesh_topology(ref);
-    c.ours = counts(to);
-    c.ref = counts(tr);
+    c.ours = topology_counts(to);
+    c.ref = topology_counts(tr);
     c.diagonal = bounding_box_diagonal(ours.positions);
 
     const bool mapped = ref_to_ours.size() == static_cast<size_t>(ref.num_vertices()) &&

@@ -14,8 +14,11 @@
 ///                                table differ
 ///   5. non-manifold-handling     core took OpenSubdiv's non-manifold rules, and every vertex
 ///                                that differs lies where the non-manifold vertices reach
-///   6. topology                  the refined connectivity differs (or, with equal counts, no
-///                                one-to-one vertex match: ambiguous-correspondence)
+///   6. topology                  a measured difference of the refined connectivity: the
+///                                counts differ, or the face sets differ under a correspondence
+///                                derived from provenance (measured_topology_difference). Face
+///                                sets that differ only under a match by position are not one: a
+///                                wrong weight that moves vertices far breaks such a match.
 ///   7. unexplained               none of the above: a failure
 ///
 /// A test a comparison cannot run (no weight table, no vertex correspondence) is left empty.
@@ -28,6 +31,8 @@
 #include <vector>
 
 #include "crossdiv/mesh/poly_mesh.h"
+#include "crossdiv/verification/harness/correspondence.h"
+#include "crossdiv/verification/harness/mesh_comparison.h"
 #include "crossdiv/verification/harness/verdict.h"
 #include "crossdiv/verification/implementations/scheme.h"
 
@@ -78,6 +83,12 @@ std::optional<Classification> nonmanifold_handling(const std::vector<char>& reac
                                                    const PolyMesh& ref, const std::vector<int>& ref_to_ours,
                                                    double tolerance, const std::string& reference, double max_rel,
                                                    const std::string& against = "");
+
+/// Whether a comparison measured a difference of topology (test 6): the counts differ, or
+/// the face sets differ under a correspondence found by `method` Order or Topology (from
+/// provenance, independent of positions).
+bool measured_topology_difference(const TopologyCounts& ours, const TopologyCounts& ref, bool face_sets_equal,
+                                  MatchMethod method);
 
 /// The input handling a reference shows on an input core refuses, from the first error of
 /// core's mesh checks: non-manifold-handling, orientation-handling, degenerate-face-handling,

@@ -16,6 +16,10 @@ struct TopologyCounts {
     friend bool operator==(const TopologyCounts&, const TopologyCounts&) = default;
 };
 
+/// The counts of a mesh's topology, as compare_meshes measures them.
+TopologyCounts topology_counts(const MeshTopology& topology);
+TopologyCounts topology_counts(const PolyMesh& mesh);
+
 /// One of the vertices that differ most, described so a reader can find it.
 struct WorstVertex {
     int ours_index = -1;
