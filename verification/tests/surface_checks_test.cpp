@@ -11,7 +11,9 @@
 #include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/datasets/bundled_surfaces.h"
 #include "crossdiv/error.h"
+#include "crossdiv/io/curve_io.h"
 #include "crossdiv/io/patch_io.h"
+#include "crossdiv/surfaces/sweep_mesh.h"
 #include "crossdiv/verification/properties/surface_checks.h"
 
 using namespace crossdiv;
@@ -76,6 +78,43 @@ TEST(SurfaceChecks, ClosedChecksCatchAFlippedFaceAndAHole) {
     if (test::configured_with("cgal")) {
         EXPECT_TRUE(failed(holed, "valid-closed"));
     }
+}
+
+// A tessellation that drops a profile's last point leaves the vase open at one pole, and a
+// construction that judges closedness from its own samples then calls it open. The records
+// say closed (the profile's exact ends are on the axis), so the closed checks run and fail.
+TEST(SurfaceChecks, ASurfaceTheInputClosesFailsWhenItComesOutOpen) {
+    std::istringstream in(datasets::bundled_surface("vase").text);
+    const CurveFile file = read_swp(in, "vase");
+    const auto drops_last_point = [](const CurveFile& f, int k, const SweepOptions& o) {
+        SweepSurface s = build_sweep(f, k, o);
+        SweepGrid g = s.grid;
+        const int n = g.ring_size - 1;
+        std::vector<Vec3> p, nrm;
+        for (int i = 0; i < g.rings; ++i)
+            for (int j = 0; j < n; ++j) {
+                p.push_back(g.at(i, j));
+                nrm.push_back(g.normals[static_cast<size_t>(i) * g.ring_size + j]);
+            }
+        g.positions = std::move(p);
+        g.normals = std::move(nrm);
+        g.ring_size = n;
+        g.profile_params.pop_back();
+        s.grid = g;
+        s.surface = mesh_sweep(g);
+        s.closed = false;  // judged from the samples, whose last no longer reaches the axis
+        return s;
+    };
+    const auto failed = [](const CheckReport& r, const std::string& check) {
+        for (const Check& c : r.checks)
+            if (c.check == check && !c.pass()) return true;
+        return false;
+    };
+    const CheckReport good = check_sweep_file(file, "vase");
+    for (const Check& c : good.checks) EXPECT_TRUE(c.pass()) << c.check << ": " << c.note;
+    const CheckReport broken = check_sweep_file(file, "vase", drops_last_point);
+    EXPECT_TRUE(failed(broken, "closed-as-input"));
+    EXPECT_TRUE(failed(broken, "watertight"));
 }
 
 TEST(SurfaceChecks, InputNamesAreValidated) {

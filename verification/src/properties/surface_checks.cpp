@@ -124,6 +124,22 @@ json check_surface_mesh(const std::string& name, const SurfaceMesh& s, bool clos
 
 namespace {
 
+/// Whether the input says a sweep encloses a volume, read from its records alone and not from
+/// the tessellation under test (a tessellation that drops a profile's last point must fail the
+/// closed-surface checks, not skip them): a revolution whose profile is closed or whose exact
+/// end points lie on the axis; a generalized cylinder whose profile and sweep are closed and
+/// whose frames are closed up.
+bool input_says_closed(const CurveFile& file, const SweepRecord& rec, const SweepOptions& o) {
+    const CurveRecord& profile = file.curves.at(rec.profile_index);
+    if (rec.kind == SweepRecord::Kind::Cylinder)
+        return profile.closed() && file.curves.at(rec.sweep_index).closed() && o.close_frames;
+    if (profile.closed()) return true;
+    const auto at = record_evaluator(profile);
+    const Vec3 first = at(0).position, last = at(record_param_end(profile)).position;
+    const double tol = kWeldRelative * bounding_box_diagonal(profile.control);
+    return (first - last).norm() <= tol || (std::abs(first.x()) <= tol && std::abs(last.x()) <= tol);
+}
+
 std::vector<char> folded_vertices(const CurveFile& file, const SweepSurface& s) {
     const SweepGrid& g = s.grid;
     // Welding a tube joins nothing unless the surface touches itself at a grid point; the
@@ -149,7 +165,7 @@ std::vector<char> folded_vertices(const CurveFile& file, const SweepSurface& s) 
 
 }  // namespace
 
-CheckReport check_sweep_file(const CurveFile& file, const std::string& input) {
+CheckReport check_sweep_file(const CurveFile& file, const std::string& input, const SweepBuilder& build) {
     CheckReport r;
     r.input = input;
     r.operation = "surfaces";
@@ -160,12 +176,18 @@ CheckReport check_sweep_file(const CurveFile& file, const std::string& input) {
             if (!cylinder && frames != FrameMethod::Recursive) continue;  // revolution has no frames
             SweepOptions o;
             o.frames = frames;
-            const SweepSurface s = build_sweep(file, k, o);
+            const SweepSurface s = build(file, k, o);
             const std::string name = cylinder ? s.name + " (" + std::string(to_string(frames)) + ")" : s.name;
             r.subjects.push_back(name);
             MeshCheckContext context;
             if (cylinder) context.folded_vertex = folded_vertices(file, s);
-            json row = check_surface_mesh(name, s.surface, s.closed, r.checks, context);
+            const bool closed = input_says_closed(file, file.sweeps[k], o);
+            // The construction's own claim must match the input's (a surface it calls open
+            // would otherwise be built and checked as open).
+            r.checks.push_back(count_check(name, "closed-as-input", "input", closed != s.closed ? 1 : 0,
+                                           std::string("the records say ") + (closed ? "closed" : "open") +
+                                               ", the construction " + (s.closed ? "closed" : "open")));
+            json row = check_surface_mesh(name, s.surface, closed, r.checks, context);
             row["kind"] = cylinder ? "gcyl" : "srev";
             row["line"] = s.record.line;
             if (cylinder) {

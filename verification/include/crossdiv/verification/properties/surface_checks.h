@@ -8,11 +8,13 @@
 /// as its `surfaces` operation; records have the curve checks' shape (scheme "surfaces").
 
 #include <span>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "crossdiv/curves/curve_record.h"
 #include "crossdiv/surfaces/bezier_patch.h"
+#include "crossdiv/surfaces/sweep_surface.h"
 #include "crossdiv/verification/properties/curve_checks.h"
 
 namespace crossdiv::verification {
@@ -36,10 +38,15 @@ struct MeshCheckContext {
 nlohmann::json check_surface_mesh(const std::string& name, const SurfaceMesh& surface, bool closed,
                                   std::vector<Check>& checks, const MeshCheckContext& context = {});
 
+/// How check_sweep_file builds a surface: build_sweep; tests substitute a deliberately broken one.
+using SweepBuilder = std::function<SweepSurface(const CurveFile&, int, const SweepOptions&)>;
+
 /// Every srev and gcyl record of the file (gcyl with the seed's recursive frames and with
 /// RMF), with check_surface_mesh; srev surfaces also get their measured deviation from the
-/// exact surface of revolution in the table.
-CheckReport check_sweep_file(const CurveFile& file, const std::string& input);
+/// exact surface of revolution in the table. Whether a surface must be closed is read from
+/// the records (the exact curve ends), never from the tessellation checked, and the
+/// construction's own claim is checked against it ("closed-as-input").
+CheckReport check_sweep_file(const CurveFile& file, const std::string& input, const SweepBuilder& build = build_sweep);
 
 /// A BEZ model: de Casteljau against the Bernstein tensor sum on an 11 x 11 grid per patch,
 /// the largest gap along shared patch boundaries, and check_surface_mesh of the welded
