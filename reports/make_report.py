@@ -14,7 +14,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 from report import sections  # noqa: E402
 from report.model import render_html, render_markdown  # noqa: E402
-from report.records import split_cases  # noqa: E402
+from report.records import halfedge_cases, split_cases  # noqa: E402
 from report.records import SCHEMA_VERSION, fmt  # noqa: E402
 
 
@@ -44,8 +44,10 @@ def build(results, bench, folder, figdir):
     before, after = sections.mesh_sections(results, mesh, folder, figdir)
     subject = sections.subject_section(mesh)
     body = [sections.outcomes_section(s), *([subject] if subject else []), *before,
-            sections.catalogue_section(sections.catalogue_rows(mesh, curves + surfaces + studies)), *after,
+            sections.catalogue_section(sections.catalogue_rows(mesh, curves + surfaces + studies +
+                                                              halfedge_cases(results["cases"]))), *after,
             sections.curve_section(curves, bench, figdir), sections.surface_section(surfaces, bench, figdir),
+            sections.halfedge_section(halfedge_cases(results["cases"])),
             sections.studies_section(studies, figdir), sections.timing_section(bench, figdir)]
     return f"crossdiv conformance report: suite {results.get('suite')}", intro, [b for b in body if b is not None]
 

@@ -51,10 +51,19 @@ def is_mesh_case(case):
     return case.get("operation") == "loop"
 
 
+# The operations that check the half-edge work of a mesh.
+HALFEDGE = ("edits", "normals")
+
+
 def split_cases(cases):
     """(mesh comparisons, curve checks, surface checks, studies) of a results.json."""
     pick = lambda ops: [c for c in cases if c.get("operation") in ops]  # noqa: E731
     return pick(("loop",)), pick(("curves",)), pick(("surfaces",)), pick(STUDIES)
+
+
+def halfedge_cases(cases):
+    """The edits and normals records of a results.json."""
+    return [c for c in cases if c.get("operation") in HALFEDGE]
 
 
 def entry_label(case):

@@ -53,8 +53,9 @@ INSTANTIATE_TEST_SUITE_P(Catalog, EditDifferential,
 
 // The test double: a flip that, once one endpoint has valence 7 or more, leaves that vertex's
 // half-edge pointing at the flipped edge, which no longer leaves it.
-FlipFunction broken_flip() {
-    return [](HalfedgeMesh& m, EdgeId e) {
+OurEdits broken_flip() {
+    OurEdits ours;
+    ours.flip = [](HalfedgeMesh& m, EdgeId e) {
         const HalfedgeId h = HalfedgeMesh::halfedge(e);
         const VertexId a = m.origin(h);
         const bool trigger = m.valence(a) >= 7;
@@ -62,6 +63,7 @@ FlipFunction broken_flip() {
         if (r == FlipRefusal::None && trigger) m.set_vertex_halfedge(a, h);
         return r;
     };
+    return ours;
 }
 
 TEST(EditDifferential, BrokenFlipIsCaughtAndShrunk) {

@@ -7,29 +7,17 @@
 #include "crossdiv/verification/implementations/callback_implementation.h"
 #include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/verification/properties/loop_rule_oracle.h"
+#include "fault_doubles.h"
 
 namespace crossdiv::verification {
 namespace {
 
-/// Core's Loop with Warren's beta mistyped as 3 / (9 n): each level refined by core, then each
-/// interior vertex of valence n > 3 moved by (3 / (9 n) - 3 / (8 n)) times the sum of its
-/// neighbours' offsets, which is what the slip does to the vertex mask.
+/// Core's Loop with Warren's beta mistyped as 3 / (9 n), level by level.
 PolyMesh warren_slip(const PolyMesh& mesh, const RefineRequest& request) {
     PolyMesh current = mesh;
     for (int l = 0; l < request.levels; ++l) {
         PolyMesh next = loop_subdivide(current, request.rule.loop, 1);
-        if (request.rule.loop.weights == LoopWeights::Warren) {
-            const MeshTopology t = mesh_topology(current);
-            std::vector<Vec3> offsets(current.positions.size(), Vec3::Zero());
-            for (const auto& [a, b] : t.edge_list) {
-                offsets[a] += current.positions[b] - current.positions[a];
-                offsets[b] += current.positions[a] - current.positions[b];
-            }
-            for (size_t v = 0; v < offsets.size(); ++v) {
-                const int n = t.valence[v];
-                if (!t.boundary_vertex[v] && n > 3) next.positions[v] += (3.0 / (9.0 * n) - 3.0 / (8.0 * n)) * offsets[v];
-            }
-        }
+        if (request.rule.loop.weights == LoopWeights::Warren) test::warren_beta_slip(current, next);
         current = std::move(next);
     }
     return current;

@@ -13,7 +13,7 @@
 #include "crossdiv/error.h"
 #include "crossdiv/io/curve_io.h"
 #include "crossdiv/io/patch_io.h"
-#include "crossdiv/surfaces/sweep_mesh.h"
+#include "fault_doubles.h"
 #include "crossdiv/verification/properties/surface_checks.h"
 
 using namespace crossdiv;
@@ -86,25 +86,6 @@ TEST(SurfaceChecks, ClosedChecksCatchAFlippedFaceAndAHole) {
 TEST(SurfaceChecks, ASurfaceTheInputClosesFailsWhenItComesOutOpen) {
     std::istringstream in(datasets::bundled_surface("vase").text);
     const CurveFile file = read_swp(in, "vase");
-    const auto drops_last_point = [](const CurveFile& f, int k, const SweepOptions& o) {
-        SweepSurface s = build_sweep(f, k, o);
-        SweepGrid g = s.grid;
-        const int n = g.ring_size - 1;
-        std::vector<Vec3> p, nrm;
-        for (int i = 0; i < g.rings; ++i)
-            for (int j = 0; j < n; ++j) {
-                p.push_back(g.at(i, j));
-                nrm.push_back(g.normals[static_cast<size_t>(i) * g.ring_size + j]);
-            }
-        g.positions = std::move(p);
-        g.normals = std::move(nrm);
-        g.ring_size = n;
-        g.profile_params.pop_back();
-        s.grid = g;
-        s.surface = mesh_sweep(g);
-        s.closed = false;  // judged from the samples, whose last no longer reaches the axis
-        return s;
-    };
     const auto failed = [](const CheckReport& r, const std::string& check) {
         for (const Check& c : r.checks)
             if (c.check == check && !c.pass()) return true;
@@ -112,7 +93,7 @@ TEST(SurfaceChecks, ASurfaceTheInputClosesFailsWhenItComesOutOpen) {
     };
     const CheckReport good = check_sweep_file(file, "vase");
     for (const Check& c : good.checks) EXPECT_TRUE(c.pass()) << c.check << ": " << c.note;
-    const CheckReport broken = check_sweep_file(file, "vase", drops_last_point);
+    const CheckReport broken = check_sweep_file(file, "vase", test::sweep_dropping_last_point);
     EXPECT_TRUE(failed(broken, "closed-as-input"));
     EXPECT_TRUE(failed(broken, "watertight"));
 }

@@ -36,6 +36,10 @@ FlipFunction our_flip() {
     return [](HalfedgeMesh& m, EdgeId e) { return m.flip(e); };
 }
 
+SplitFunction our_split() {
+    return [](HalfedgeMesh& m, std::vector<Vec3>& positions, EdgeId e) { return split_at_midpoint(m, positions, e); };
+}
+
 namespace {
 
 std::string face_name(const Triangle& t) {
@@ -57,7 +61,7 @@ std::string face_difference(const std::vector<Triangle>& ours, const std::vector
 }
 
 EditRunResult run(const TriMesh& base, const std::vector<EditOp>& ops, const std::vector<std::string>& references,
-                  const FlipFunction& flip, std::vector<ResolvedEdit>* resolved) {
+                  const OurEdits& our, std::vector<ResolvedEdit>* resolved) {
     HalfedgeMesh he = HalfedgeMesh::from_triangles(base);
     std::vector<Vec3> pos = base.positions;
     const long chi = he.num_vertices() - he.num_edges() + he.num_faces();
@@ -79,12 +83,12 @@ EditRunResult run(const TriMesh& base, const std::vector<EditOp>& ops, const std
         int new_vertex = -1;
         bool flipped = false;
         if (op.kind == EditKind::Flip) {
-            const FlipRefusal why = flip(he, e);
+            const FlipRefusal why = our.flip(he, e);
             flipped = why == FlipRefusal::None;
             ++(flipped ? r.flips : r.refused_flips);
             if (!flipped && he.triangles() != before) stop(i, res, "ours", "refusal", "refused (" + std::string(to_string(why)) + ") but changed the faces");
         } else {
-            new_vertex = split_at_midpoint(he, pos, e).idx;
+            new_vertex = our.split(he, pos, e).idx;
             ++r.splits;
         }
         for (auto& ref : refs) {
@@ -160,23 +164,23 @@ std::vector<EditReference> make_edit_references(const TriMesh& base, const std::
 }
 
 EditRunResult run_edit_differential(const TriMesh& base, const std::vector<EditOp>& ops,
-                                    const std::vector<std::string>& references, const FlipFunction& flip) {
-    return run(base, ops, references, flip, nullptr);
+                                    const std::vector<std::string>& references, const OurEdits& ours) {
+    return run(base, ops, references, ours, nullptr);
 }
 
 ShrunkEdits shrink_edit_sequence(const TriMesh& base, const std::vector<EditOp>& ops,
-                                 const std::vector<std::string>& references, const FlipFunction& flip) {
-    const EditRunResult first = run(base, ops, references, flip, nullptr);
+                                 const std::vector<std::string>& references, const OurEdits& ours) {
+    const EditRunResult first = run(base, ops, references, ours, nullptr);
     if (!first.disagreement) throw InputError("the sequence of " + std::to_string(ops.size()) + " operations does not fail: nothing to shrink");
     const EditDisagreement target = *first.disagreement;
     ShrunkEdits s;
     std::vector<EditOp> prefix(ops.begin(), ops.begin() + target.op_index + 1);
     s.ops = ddmin(std::move(prefix), [&](const std::vector<EditOp>& candidate) {
         ++s.runs;
-        const EditRunResult r = run(base, candidate, references, flip, nullptr);
+        const EditRunResult r = run(base, candidate, references, ours, nullptr);
         return r.disagreement && r.disagreement->subject == target.subject && r.disagreement->kind == target.kind;
     });
-    const EditRunResult last = run(base, s.ops, references, flip, &s.resolved);
+    const EditRunResult last = run(base, s.ops, references, ours, &s.resolved);
     s.disagreement = *last.disagreement;
     return s;
 }

@@ -100,12 +100,13 @@ void measure(const TriMesh& mesh, const std::vector<std::vector<Vec3>>& ours, co
 
 }  // namespace
 
-NormalsComparison compare_normals(const TriMesh& mesh, NormalWeighting weighting, const std::vector<std::string>& references) {
+NormalsComparison compare_normals(const TriMesh& mesh, NormalWeighting weighting, const std::vector<std::string>& references,
+                                  const NormalsFunction& our_normals) {
     // Each weighting once; the requested one is handed out from the same computation.
     std::vector<std::vector<Vec3>> ours;
     std::vector<std::vector<double>> visibility;
     for (NormalWeighting w : kWeightings) {
-        ours.push_back(vertex_normals(mesh, w));
+        ours.push_back(our_normals(mesh, w));
         visibility.push_back(largest_face_angle(mesh, ours.back()));
     }
     NormalsComparison c{weighting, ours[static_cast<size_t>(weighting)], mesh.num_vertices(), 0, {}};

@@ -87,7 +87,24 @@ void register_reference(std::unique_ptr<Implementation> reference) {
     owned().push_back(std::move(reference));
 }
 
-const Implementation& core_implementation() { return *owned().front(); }
+namespace {
+
+/// The stand-in for core, when a ScopedCoreImplementation is alive.
+const Implementation*& core_stand_in() {
+    static const Implementation* stand_in = nullptr;
+    return stand_in;
+}
+
+}  // namespace
+
+const Implementation& core_implementation() { return core_stand_in() ? *core_stand_in() : *owned().front(); }
+
+ScopedCoreImplementation::ScopedCoreImplementation(std::unique_ptr<Implementation> stand_in)
+    : stand_in_(std::move(stand_in)), previous_(core_stand_in()) {
+    core_stand_in() = stand_in_.get();
+}
+
+ScopedCoreImplementation::~ScopedCoreImplementation() { core_stand_in() = previous_; }
 
 bool is_built(std::string_view name) {
     return std::any_of(implementations().begin(), implementations().end(),

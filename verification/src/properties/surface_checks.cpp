@@ -431,17 +431,17 @@ std::vector<std::string> expand_surface_inputs(const std::vector<std::string>& s
     return detail::expand_check_inputs(surface_inputs(), specs);
 }
 
-CheckReport check_surface_input(const std::string& spec) {
+CheckReport check_surface_input(const std::string& spec, const SweepBuilder& build) {
     if (spec == "surfaces:synthetic") return check_surface_studies();
     if (spec.starts_with("surfaces:")) throw InputError("'" + spec + "' is a collection, not one surface input");
     if (spec.starts_with("surface:")) {
         const datasets::BundledCurve& b = datasets::bundled_surface(spec.substr(8));
         std::istringstream in(b.text);
         if (b.format == "bez") return check_patch_file(read_bez(in, spec), spec);
-        return check_sweep_file(read_swp(in, spec), spec);
+        return check_sweep_file(read_swp(in, spec), spec, build);
     }
     if (spec.ends_with(".bez") || spec.ends_with(".BEZ")) return check_patch_file(read_bez(spec), spec);
-    return check_sweep_file(read_swp(spec), spec);
+    return check_sweep_file(read_swp(spec), spec, build);
 }
 
 }  // namespace crossdiv::verification

@@ -9,8 +9,10 @@
 #include "crossdiv/verification/harness/output_size.h"
 #include "crossdiv/verification/implementations/program_implementation.h"
 #include "crossdiv/verification/properties/curve_checks.h"
+#include "crossdiv/verification/properties/halfedge_checks.h"
 #include "crossdiv/verification/properties/surface_checks.h"
 #include "crossdiv/verification/harness/json_text.h"
+#include "crossdiv/verification/suite/features_under_test.h"
 #include "suite/studies.h"
 
 namespace crossdiv::verification {
@@ -77,7 +79,17 @@ CaseRecord run_curves(const SuiteJob& job, const std::string&) {
                                                        : check_curve_file(load_curve_input(job.input), job.input));
 }
 
-CaseRecord run_surfaces(const SuiteJob& job, const std::string&) { return case_record(check_surface_input(job.input)); }
+CaseRecord run_surfaces(const SuiteJob& job, const std::string&) {
+    return case_record(check_surface_input(job.input, features_under_test().sweep));
+}
+
+CaseRecord run_edits(const SuiteJob& job, const std::string&) {
+    return case_record(check_edits(job.input, features_under_test().edits));
+}
+
+CaseRecord run_normals(const SuiteJob& job, const std::string&) {
+    return case_record(check_normals(job.input, features_under_test().normals));
+}
 
 template <const char* Collection>
 std::vector<std::string> one_collection(const std::vector<std::string>& specs) {
@@ -107,6 +119,10 @@ const std::vector<SuiteOperation>& suite_operations() {
         {"curves", OperationKind::Checks, "curve files against Eigen and exact properties", expand_curve_inputs, run_curves},
         {"surfaces", OperationKind::Checks, "surface files built and checked as closed surfaces", expand_surface_inputs,
          run_surfaces},
+        {"edits", OperationKind::Checks, "seeded flip and split sequences against OpenMesh and CGAL, valid after each",
+         expand_inputs, run_edits},
+        {"normals", OperationKind::Checks, "vertex normals against OpenMesh's and CGAL's calls and the angle oracle",
+         expand_inputs, run_normals},
         {"catmull-clark", OperationKind::Study, "Catmull-Clark against its references on the catalog",
          one_collection<kCatalog>, run_study<catmull_clark_study>},
         {"schemes", OperationKind::Study, "Doo-Sabin, sqrt3 and modified Butterfly against theirs; Butterfly properties",

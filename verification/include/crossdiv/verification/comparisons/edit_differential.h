@@ -62,6 +62,16 @@ std::vector<std::string> available_edit_references();
 using FlipFunction = std::function<FlipRefusal(HalfedgeMesh&, EdgeId)>;
 /// HalfedgeMesh::flip.
 FlipFunction our_flip();
+/// Our split likewise: splits the edge, appends the new vertex's position, returns it.
+using SplitFunction = std::function<VertexId(HalfedgeMesh&, std::vector<Vec3>&, EdgeId)>;
+/// split_at_midpoint.
+SplitFunction our_split();
+
+/// The operations under test: ours unless a test stands a double in.
+struct OurEdits {
+    FlipFunction flip = our_flip();
+    SplitFunction split = our_split();
+};
 
 /// The first disagreement of a run.
 struct EditDisagreement {
@@ -83,7 +93,7 @@ struct EditRunResult {
 /// to fresh copies in each reference named, checking after every operation; stops at the
 /// first disagreement. @throws InputError when a side cannot take `base`.
 EditRunResult run_edit_differential(const TriMesh& base, const std::vector<EditOp>& ops,
-                                    const std::vector<std::string>& references, const FlipFunction& flip = our_flip());
+                                    const std::vector<std::string>& references, const OurEdits& ours = {});
 
 /// A failing sequence shrunk to a minimal one that fails in the same way.
 struct ShrunkEdits {
@@ -96,7 +106,7 @@ struct ShrunkEdits {
 /// Cuts `ops` after the first disagreement, then runs ddmin while the run still disagrees
 /// with the same subject and kind. @throws InputError when `ops` does not fail.
 ShrunkEdits shrink_edit_sequence(const TriMesh& base, const std::vector<EditOp>& ops,
-                                 const std::vector<std::string>& references, const FlipFunction& flip = our_flip());
+                                 const std::vector<std::string>& references, const OurEdits& ours = {});
 
 
 }  // namespace crossdiv::verification

@@ -5,6 +5,7 @@
 /// each reference classified by measurement: which of our weightings it matches and where it
 /// does not, instead of one tolerance that would hide the difference.
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -49,8 +50,13 @@ struct NormalsComparison {
     std::vector<ReferenceNormals> references;
 };
 
+/// Our vertex normals as the harness calls them; tests substitute a deliberately broken one.
+using NormalsFunction = std::function<std::vector<Vec3>(const TriMesh&, NormalWeighting)>;
+
 /// `references`: any of "openmesh" (both of its methods) and "cgal"; unknown or unavailable
 /// names throw InputError. A reference that throws on the mesh is recorded, not fatal.
-NormalsComparison compare_normals(const TriMesh& mesh, NormalWeighting weighting, const std::vector<std::string>& references);
+/// `ours` computes our normals (vertex_normals).
+NormalsComparison compare_normals(const TriMesh& mesh, NormalWeighting weighting, const std::vector<std::string>& references,
+                                  const NormalsFunction& ours = vertex_normals);
 
 }  // namespace crossdiv::verification

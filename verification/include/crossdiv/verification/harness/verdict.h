@@ -41,6 +41,7 @@ enum class DivergenceClass {
     Parity,                    ///< sqrt3: the boundary generations are counted per call
     WingRule,                  ///< Butterfly: another stand-in for a wing point beyond the boundary
     TriangleRule,              ///< Catmull-Clark: OpenSubdiv's smooth-triangle edge weights, or not
+    NormalRule,                ///< vertex normals by a rule that is none of our weightings (CGAL's most visible normal)
     // Something else measured:
     Rounding,                  ///< same faces, within tolerances::kRoundingUlps of the coordinates
     IsolatedVertexHandling,    ///< only vertices without faces differ
@@ -58,7 +59,7 @@ enum class DivergenceClass {
 };
 
 /// "" for None, else the class's name in results.json ("weight-family", "corner-rule",
-/// "weight-family+corner-rule", "boundary-rule", "border-faces-dropped", "parity", "wing-rule", "triangle-rule", "rounding",
+/// "weight-family+corner-rule", "boundary-rule", "border-faces-dropped", "parity", "wing-rule", "triangle-rule", "normal-rule", "rounding",
 /// "isolated-vertex-handling", "valence-limit", "topology", "ambiguous-correspondence",
 /// "unexplained", "non-manifold-handling", "orientation-handling", "degenerate-face-handling",
 /// "invalid-input-handling").

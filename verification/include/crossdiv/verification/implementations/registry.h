@@ -28,8 +28,24 @@ void register_reference(std::unique_ptr<Implementation> reference);
 /// Whether an implementation of that name is built into this binary.
 bool is_built(std::string_view name);
 
-/// Core's implementation (always present).
+/// Core's implementation (always present), or the double a ScopedCoreImplementation put in
+/// its place.
 const Implementation& core_implementation();
+
+/// Stands `stand_in` in for core's implementation for its lifetime (core_implementation()
+/// returns it): how a test seeds a bug into what the comparisons and oracles call "core"
+/// without editing core. Worker processes forked meanwhile inherit it.
+class ScopedCoreImplementation {
+public:
+    explicit ScopedCoreImplementation(std::unique_ptr<Implementation> stand_in);
+    ~ScopedCoreImplementation();
+    ScopedCoreImplementation(const ScopedCoreImplementation&) = delete;
+    ScopedCoreImplementation& operator=(const ScopedCoreImplementation&) = delete;
+
+private:
+    std::unique_ptr<Implementation> stand_in_;
+    const Implementation* previous_;
+};
 
 /// @throws InputError naming the unknown or unbuilt implementation and listing those built.
 const Implementation& find_implementation(std::string_view name);

@@ -64,7 +64,8 @@ CheckReport check_surface_studies();
 /// and meshedit/bez), `surfaces:synthetic`.
 std::vector<std::string> expand_surface_inputs(const std::vector<std::string>& specs);
 
-/// Runs the checks one input names. @throws InputError / ParseError naming file and line.
-CheckReport check_surface_input(const std::string& spec);
+/// Runs the checks one input names, sweeps built by `build`.
+/// @throws InputError / ParseError naming file and line.
+CheckReport check_surface_input(const std::string& spec, const SweepBuilder& build = build_sweep);
 
 }  // namespace crossdiv::verification

@@ -6,6 +6,8 @@
 ///   loop             core against every reference on a mesh, under the case's rules and tier
 ///   curves           a curve file (or the synthetic studies) against Eigen and exact properties
 ///   surfaces         a surface file (or the studies) built and checked as closed surfaces
+///   edits            a mesh: seeded flip and split sequences against OpenMesh and CGAL
+///   normals          a mesh: vertex normals against OpenMesh's and CGAL's, the angle oracle
 ///   catmull-clark    Catmull-Clark against its references on the catalog, both OpenSubdiv rules
 ///   schemes          Doo-Sabin, sqrt3, modified Butterfly against theirs; Butterfly properties
 ///   creases          the crease catalog against OpenSubdiv, and the crease-cube figure
