@@ -112,3 +112,18 @@ def test_cases_are_split_by_operation_and_outcomes_read_not_derived():
     assert category(mesh[0], mesh[0]["runs"][1]) == "diverge (classified)"
     assert category(curves[0], curves[0]["runs"][0]) == "diverge (unexplained)"
     assert category(mesh[1]) == "ours-rejected"
+
+
+def test_the_coverage_table_is_the_same_in_readme_and_reports():
+    root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+
+    def table(path):
+        with open(os.path.join(root, path)) as f:
+            return [line for line in f.read().splitlines() if line.startswith("| ") and line.count("|") == 5]
+
+    readme, reports = table("README.md"), table("reports/coverage.md")
+    start = readme.index(reports[0])
+    assert readme[start:start + len(reports)] == reports
+    # every core header directory has a row
+    for part in ("subdiv/", "mesh/", "curves/", "surfaces/", "io/"):
+        assert any(part in row for row in reports), part

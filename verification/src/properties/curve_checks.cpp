@@ -463,10 +463,16 @@ CheckReport check_synthetic() {
         rows.push_back({{"steps", r.steps}, {"h", r.h}, {"recursive_error_rad", r.recursive_error}, {"rmf_error_rad", r.rmf_error}});
     report.tables["frames"] = {{"curve", "helix (cos s, sin s, s / 2 pi), two turns"}, {"rows", rows},
                                {"recursive_order", h.recursive_order}, {"rmf_order", h.rmf_order}};
-    // Orders as checks: measured is the shortfall below the required order (0 when met).
-    out.add("helix", "rmf-order", "exact", std::max(0.0, tolerances::kDoubleReflectionMinOrder - h.rmf_order), 0.0, "order",
+    // Orders as checks: measured is the shortfall below the required order (0 when met; NaN,
+    // which fails, when no order could be fitted).
+    const auto shortfall = [](double required, double order) { return order >= required ? 0.0 : required - order; };
+    out.add("helix", "rmf-order", "exact", shortfall(tolerances::kDoubleReflectionMinOrder, h.rmf_order), 0.0, "order",
             "double reflection: fitted order " + std::to_string(h.rmf_order) + ", required >= " +
                 std::to_string(tolerances::kDoubleReflectionMinOrder));
+    out.add("helix", "recursive-order", "exact",
+            shortfall(tolerances::kRecursiveFrameMinOrder, h.recursive_order), 0.0, "order",
+            "recursive frame: fitted order " + std::to_string(h.recursive_order) + ", required >= " +
+                std::to_string(tolerances::kRecursiveFrameMinOrder));
     return report;
 }
 

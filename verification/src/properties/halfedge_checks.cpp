@@ -6,6 +6,8 @@
 #include <Eigen/Geometry>
 
 #include "crossdiv/error.h"
+#include "crossdiv/subdiv/loop.h"
+#include "crossdiv/subdiv/loop_split_flip.h"
 #include "crossdiv/verification/harness/inputs.h"
 #include "crossdiv/verification/harness/tolerances.h"
 #include "crossdiv/verification/implementations/registry.h"
@@ -61,6 +63,26 @@ CheckReport check_edits(const std::string& input, const OurEdits& ours) {
         r.subjects.push_back(input);
         r.checks.push_back(count_of(input, "edit-differential", joined(refs), 1, e.what()));
         return r;
+    }
+    // Loop by local operations (split every edge, flip the new edges that join an old and a
+    // new vertex) against the index-based refinement: the same vertices bit for bit, the same
+    // faces, under each weight family.
+    for (LoopWeights w : {LoopWeights::Loop, LoopWeights::Warren}) {
+        const LoopOptions o{w, LoopBoundary::EdgeOnly};
+        const std::string subject = input + " loop " + std::string(to_string(w));
+        r.subjects.push_back(subject);
+        try {
+            const TriMesh local = loop_by_split_and_flip(base, o), index = loop_subdivide(base, o, 1);
+            int differing = local.num_vertices() == index.num_vertices() ? 0 : 1;
+            for (int v = 0; differing == 0 && v < local.num_vertices(); ++v)
+                differing += local.positions[static_cast<size_t>(v)] != index.positions[static_cast<size_t>(v)];
+            const bool same_faces = canonical_faces(local.triangles) == canonical_faces(index.triangles);
+            r.checks.push_back(count_of(subject, "loop-by-split-and-flip", "index-based loop", differing + !same_faces,
+                                        std::to_string(differing) + " vertices differ in bits, faces " +
+                                            (same_faces ? "equal" : "differ")));
+        } catch (const InputError& e) {
+            r.checks.push_back(count_of(subject, "loop-by-split-and-flip", "index-based loop", 1, e.what()));
+        }
     }
     for (int seed = 1; seed <= kSuiteEditSeeds; ++seed) {
         const std::string subject = input + " seed " + std::to_string(seed);

@@ -20,7 +20,9 @@ inline constexpr int kSuiteEditOps = 60;
 /// to ours and in lockstep to OpenMesh and CGAL, validity and faces checked after every
 /// operation (run_edit_differential): one check per sequence, a count of disagreements that
 /// must be zero; a failing sequence is shrunk and named in the check's note, in the syntax of
-/// `crossdiv edit`. An input that is not a manifold, oriented triangle mesh fails, named.
+/// `crossdiv edit`. And Loop by split and flip (loop_split_flip.h) against the index-based
+/// Loop, bit for bit, under Loop's and Warren's weights. An input that is not a manifold,
+/// oriented triangle mesh fails, named.
 CheckReport check_edits(const std::string& input, const OurEdits& ours = {});
 
 /// Our vertex normals on `input` against the library calls that implement a weighting
