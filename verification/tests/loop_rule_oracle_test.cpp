@@ -7,6 +7,7 @@
 #include "crossdiv/verification/implementations/callback_implementation.h"
 #include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/verification/properties/loop_rule_oracle.h"
+#include "crossdiv/verification/properties/rule_oracle.h"
 #include "fault_doubles.h"
 
 namespace crossdiv::verification {
@@ -33,7 +34,7 @@ PolyMesh no_corner_rule(const PolyMesh& mesh, const RefineRequest& request) {
 TEST(LoopRuleOracle, CorePassesUnderLoopsAndWarrensWeightsWithBothBoundaryRules) {
     for (LoopWeights w : {LoopWeights::Loop, LoopWeights::Warren})
         for (LoopBoundary b : {LoopBoundary::EdgeOnly, LoopBoundary::EdgeAndCorner}) {
-            const LoopRuleVerdict v = check_loop_rule(core_implementation(), {w, b}, {16, 64, 360});
+            const RuleVerdict v = check_loop_rule(core_implementation(), {w, b}, {16, 64, 360});
             EXPECT_TRUE(v.known);
             EXPECT_TRUE(v.passed) << v.detail;
             // Sums of up to n + 1 terms: rounding, far below kAgreementRelative (measured 7.2e-17).
@@ -43,7 +44,7 @@ TEST(LoopRuleOracle, CorePassesUnderLoopsAndWarrensWeightsWithBothBoundaryRules)
 }
 
 TEST(LoopRuleOracle, TheTunedFamiliesHaveNoClosedFormToCheck) {
-    const LoopRuleVerdict v = check_loop_rule(core_implementation(), {LoopWeights::Regularity, LoopBoundary::EdgeOnly});
+    const RuleVerdict v = check_loop_rule(core_implementation(), {LoopWeights::Regularity, LoopBoundary::EdgeOnly});
     EXPECT_FALSE(v.known);
     EXPECT_FALSE(v.passed);
     EXPECT_NE(v.detail.find("regularity"), std::string::npos) << v.detail;
@@ -51,7 +52,7 @@ TEST(LoopRuleOracle, TheTunedFamiliesHaveNoClosedFormToCheck) {
 
 TEST(LoopRuleOracle, WarrensBetaAsThreeOverNineNFailsAtTheFirstValenceItChanges) {
     const auto slip = make_callback_implementation("warren-slip", {Scheme::Loop}, warren_slip);
-    const LoopRuleVerdict warren = check_loop_rule(*slip, {LoopWeights::Warren, LoopBoundary::EdgeOnly});
+    const RuleVerdict warren = check_loop_rule(*slip, {LoopWeights::Warren, LoopBoundary::EdgeOnly});
     EXPECT_TRUE(warren.known);
     EXPECT_FALSE(warren.passed);
     // n = 3 keeps 3/16; n = 4 is the first fan the slip moves (by 1/96 of the ring's offsets).
@@ -65,7 +66,7 @@ TEST(LoopRuleOracle, WarrensBetaAsThreeOverNineNFailsAtTheFirstValenceItChanges)
 TEST(LoopRuleOracle, AMissingCornerRuleFailsOnTheOneFaceCorners) {
     const auto slip = make_callback_implementation("no-corner-rule", {Scheme::Loop}, no_corner_rule);
     EXPECT_TRUE(check_loop_rule(*slip, {LoopWeights::Loop, LoopBoundary::EdgeOnly}).passed);
-    const LoopRuleVerdict v = check_loop_rule(*slip, {LoopWeights::Loop, LoopBoundary::EdgeAndCorner});
+    const RuleVerdict v = check_loop_rule(*slip, {LoopWeights::Loop, LoopBoundary::EdgeAndCorner});
     EXPECT_FALSE(v.passed);
     EXPECT_NE(v.detail.find("open fan of 1 faces"), std::string::npos) << v.detail;
 }
@@ -73,11 +74,45 @@ TEST(LoopRuleOracle, AMissingCornerRuleFailsOnTheOneFaceCorners) {
 TEST(LoopRuleOracle, CoresVerdictIsRememberedPerRule) {
     const LoopOptions warren{LoopWeights::Warren, LoopBoundary::EdgeOnly};
     // Valences no other test asks for: the second call refines only the fan of 101.
-    const LoopRuleVerdict first = check_core_loop_rule(warren, {97});
-    const LoopRuleVerdict again = check_core_loop_rule(warren, {97, 101});
+    const RuleVerdict first = check_core_loop_rule(warren, {97});
+    const RuleVerdict again = check_core_loop_rule(warren, {97, 101});
     EXPECT_TRUE(first.passed && again.passed) << first.detail << again.detail;
-    EXPECT_EQ(again.fans, first.fans + 1);
-    EXPECT_NE(again.detail.find(std::to_string(again.fans) + " fans"), std::string::npos) << again.detail;
+    EXPECT_EQ(again.meshes, first.meshes + 1);
+    EXPECT_NE(again.detail.find(std::to_string(again.meshes) + " fans"), std::string::npos) << again.detail;
+}
+
+TEST(DooSabinRuleOracle, CorePassesUnderBothBoundaryRules) {
+    for (DooSabinBoundary b : {DooSabinBoundary::ChaikinBoundary, DooSabinBoundary::DropBorderFaces}) {
+        const RuleVerdict v = check_doo_sabin_rule(core_implementation(), {b});
+        EXPECT_TRUE(v.known && v.passed) << v.detail;
+        EXPECT_EQ(v.meshes, 2);
+        EXPECT_LE(v.worst_rel, 1e-14) << v.detail;  // sums of n terms: rounding
+    }
+}
+
+TEST(DooSabinRuleOracle, AWeightSlipAndAMissingChaikinBoundaryFail) {
+    // Every mask's weights scaled by 0.97 (a normalization slipped, so they sum to 0.97): each
+    // point is 0.97 of the rule's.
+    const Implementation& core = core_implementation();
+    const auto slip = make_callback_implementation("doo-sabin-slip", {Scheme::DooSabin}, [&core](const PolyMesh& m, const RefineRequest& r) {
+        PolyMesh out = core.refine_last(m, r);
+        for (Vec3& p : out.positions) p *= 0.97;
+        return out;
+    });
+    const RuleVerdict v = check_doo_sabin_rule(*slip, {DooSabinBoundary::ChaikinBoundary});
+    EXPECT_FALSE(v.passed);
+    EXPECT_NE(v.detail.find("open strip"), std::string::npos) << v.detail;
+    // Asked for the Chaikin boundary, refining as CGAL does (border faces dropped): the
+    // boundary's points are missing.
+    const auto drops = make_callback_implementation("drops-border-faces", {Scheme::DooSabin}, [&core](const PolyMesh& m, const RefineRequest& r) {
+        RefineRequest dropping = r;
+        dropping.rule.doo_sabin.boundary = DooSabinBoundary::DropBorderFaces;
+        return core.refine_last(m, dropping);
+    });
+    const RuleVerdict d = check_doo_sabin_rule(*drops, {DooSabinBoundary::ChaikinBoundary});
+    EXPECT_FALSE(d.passed);
+    EXPECT_NE(d.detail.find("vertices where the rule makes"), std::string::npos) << d.detail;
+    EXPECT_TRUE(check_doo_sabin_rule(*drops, {DooSabinBoundary::DropBorderFaces}).passed);
 }
 
 }  // namespace

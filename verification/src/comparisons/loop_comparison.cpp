@@ -390,7 +390,7 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
             // A rule difference explains the divergence only if the rule under test is the
             // published one: core's version of it must pass the oracle that does not read its
             // masks, at the input's interior valences too (loop_rule_oracle.h).
-            const LoopRuleVerdict oracle = check_core_loop_rule(*applied_rule, interior_valences());
+            const RuleVerdict oracle = check_core_loop_rule(*applied_rule, interior_valences());
             if (oracle.known && !oracle.passed) {
                 still = "; " + describe(*applied_rule) + " fails its oracle: " + oracle.detail;
                 return std::nullopt;

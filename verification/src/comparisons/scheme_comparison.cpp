@@ -11,6 +11,7 @@
 #include "harness/sci.h"
 #include "crossdiv/mesh/tri_mesh.h"
 #include "crossdiv/verification/comparisons/classification.h"
+#include "crossdiv/verification/properties/rule_oracle.h"
 #include "crossdiv/verification/implementations/registry.h"
 
 namespace crossdiv::verification {
@@ -235,8 +236,16 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
                 if (!same_faces || !(ulps <= tolerances::kRoundingUlps)) return std::nullopt;
                 return Classification{DivergenceClass::Rounding, "differs by " + sci(ulps) + " ulps of the largest coordinate"};
             };
+            std::string oracle_failed;  // the requested rule's oracle, when it fails
             tests.reference_rule = [&]() -> std::optional<Classification> {
                 if (!rule_explains) return std::nullopt;
+                // A rule difference explains the divergence only if core's requested rule is
+                // the published one (rule_oracle.h).
+                const RuleVerdict oracle = check_core_rule(req.scheme, req.rule);
+                if (oracle.known && !oracle.passed) {
+                    oracle_failed = "; " + out.rule + " fails its oracle: " + oracle.detail;
+                    return std::nullopt;
+                }
                 return Classification{rule_difference_class(req.scheme, ref_rule, req.rule),
                                       rule_effect(req.scheme, ref.name(), run.rule, req.levels) + ": core with " + run.rule +
                                           " agrees to " + sci(with_rule.max_rel) + "; core's " + out.rule +
@@ -270,6 +279,7 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
                     return faces + "; the face sets differ only under a match by position (" +
                            to_string(run.correspondence.method) + "), which a vertex moved far breaks: not a topology difference";
                 if (!no_same_rule.empty()) return "differs by " + sci(run.comparison.max_rel) + no_same_rule;
+                if (!oracle_failed.empty()) return "differs by " + sci(run.comparison.max_rel) + oracle_failed;
                 return "differs by " + sci(run.comparison.max_rel) + "; with " + ref.name() + "'s " + run.rule + " rule still " +
                        sci(with_rule.max_rel);
             };

@@ -157,8 +157,8 @@ bool fan_passes(double worst, const std::string& reason) {
 
 }  // namespace
 
-LoopRuleVerdict check_loop_rule(const Implementation& impl, const LoopOptions& rule, const std::vector<int>& valences) {
-    LoopRuleVerdict v;
+RuleVerdict check_loop_rule(const Implementation& impl, const LoopOptions& rule, const std::vector<int>& valences) {
+    RuleVerdict v;
     if (rule.weights != LoopWeights::Loop && rule.weights != LoopWeights::Warren) {
         v.detail = "no published closed form for the " + std::string(to_string(rule.weights)) + " weights";
         return v;
@@ -176,24 +176,24 @@ LoopRuleVerdict check_loop_rule(const Implementation& impl, const LoopOptions& r
     for (const auto& [name, fan] : fans) {
         const auto [worst, reason] = measure(impl, fan, rule);
         v.worst_rel = std::max(v.worst_rel, worst);
-        ++v.fans;
+        ++v.meshes;
         if (!fan_passes(worst, reason)) {
             v.detail = failed_detail(impl, rule, name, worst, reason);
             return v;
         }
     }
     v.passed = true;
-    v.detail = passed_detail(impl, rule, v.fans, v.worst_rel);
+    v.detail = passed_detail(impl, rule, v.meshes, v.worst_rel);
     return v;
 }
 
-LoopRuleVerdict check_core_loop_rule(const LoopOptions& rule, const std::vector<int>& valences) {
+RuleVerdict check_core_loop_rule(const LoopOptions& rule, const std::vector<int>& valences) {
     // Per rule, the valences already checked and the first failure: a suite asks once per run.
     struct Entry {
         const Implementation* core;  // a test may stand a double in core's place
         LoopOptions rule;
         std::vector<int> checked;
-        LoopRuleVerdict verdict;
+        RuleVerdict verdict;
     };
     static std::mutex mutex;
     static std::vector<Entry> cache;
@@ -215,18 +215,18 @@ LoopRuleVerdict check_core_loop_rule(const LoopOptions& rule, const std::vector<
         if (n > 12 && std::find(it->checked.begin(), it->checked.end(), n) == it->checked.end()) fresh.push_back(n);
     std::sort(fresh.begin(), fresh.end());
     fresh.erase(std::unique(fresh.begin(), fresh.end()), fresh.end());
-    LoopRuleVerdict& v = it->verdict;
+    RuleVerdict& v = it->verdict;
     for (int n : fresh) {
         if (!v.passed) break;
         it->checked.push_back(n);
         const auto [worst, reason] = measure(*core, to_poly_mesh(loop_fan(n)), rule);
         v.worst_rel = std::max(v.worst_rel, worst);
-        ++v.fans;
+        ++v.meshes;
         if (!fan_passes(worst, reason)) {
             v.passed = false;
             v.detail = failed_detail(*core, rule, "closed fan of valence " + std::to_string(n), worst, reason);
         } else {
-            v.detail = passed_detail(*core, rule, v.fans, v.worst_rel);
+            v.detail = passed_detail(*core, rule, v.meshes, v.worst_rel);
         }
     }
     return v;

@@ -25,28 +25,18 @@
 
 #include "crossdiv/subdiv/loop_mask.h"
 #include "crossdiv/verification/implementations/implementation.h"
+#include "crossdiv/verification/properties/rule_oracle.h"
 
 namespace crossdiv::verification {
-
-/// What the oracle found for one rule.
-struct LoopRuleVerdict {
-    bool known = false;   ///< the oracle has the rule's stencils (not the tuned families)
-    bool passed = false;  ///< every fan within tolerances::kAgreementRelative of the oracle
-    double worst_rel = 0;  ///< largest distance / the fan's diagonal
-    int fans = 0;          ///< fans refined and compared
-    /// The fans tried, or the first that failed and where ("closed fan of valence 5: the
-    /// centre differs by 1.2e-3 of the diagonal").
-    std::string detail;
-};
 
 /// The fans of the oracle: closed-centre discs of valence 3..12 and of each of `valences`
 /// (interior valences of an input, so that a rule is checked where it is used), and open fans
 /// of 1..4 faces (their end spokes make the one-face corners of the edge-and-corner rule).
 /// One level of `impl` under `rule` on each, against the stencils above. A refusal, an
 /// exception or a result whose order cannot be derived fails, with the reason.
-LoopRuleVerdict check_loop_rule(const Implementation& impl, const LoopOptions& rule, const std::vector<int>& valences = {});
+RuleVerdict check_loop_rule(const Implementation& impl, const LoopOptions& rule, const std::vector<int>& valences = {});
 
 /// check_loop_rule of core's implementation, remembered per rule and valence for the process.
-LoopRuleVerdict check_core_loop_rule(const LoopOptions& rule, const std::vector<int>& valences = {});
+RuleVerdict check_core_loop_rule(const LoopOptions& rule, const std::vector<int>& valences = {});
 
 }  // namespace crossdiv::verification

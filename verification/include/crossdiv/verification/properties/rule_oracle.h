@@ -1,0 +1,42 @@
+#pragma once
+/// @file
+/// Oracles of the named rules that no reference has in full, each written out from its
+/// source and applied by hand to small meshes, never read from core's masks: a rule
+/// difference (weight-family, corner-rule, border-faces-dropped, ...) explains a divergence
+/// only when the rule under test passes its oracle (comparisons/classification.h).
+///
+/// - Loop: Loop's and Warren's weights, both boundary rules (loop_rule_oracle.h).
+/// - Doo-Sabin: the corner points (Doo and Sabin 1978: alpha_0 = 1/4 + 5/(4n),
+///   alpha_k = (3 + 2 cos(2 pi k / n)) / (4n)) and, under chaikin-boundary, Chaikin's points
+///   3/4 a + 1/4 b, 1/4 a + 3/4 b on each boundary edge (a, b): the refined level's vertices
+///   are exactly those, compared as a set (one to one, by position).
+/// Other rules have no oracle yet (`known` false): their classes rest on the references.
+
+#include <string>
+#include <vector>
+
+#include "crossdiv/subdiv/doo_sabin_mask.h"
+#include "crossdiv/verification/implementations/implementation.h"
+
+namespace crossdiv::verification {
+
+/// What an oracle found for one rule.
+struct RuleVerdict {
+    bool known = false;    ///< an oracle exists for the rule
+    bool passed = false;   ///< every mesh within tolerances::kAgreementRelative of the oracle
+    double worst_rel = 0;  ///< largest distance / the mesh's diagonal
+    int meshes = 0;        ///< meshes refined and compared
+    /// What was tried, or the first mesh that failed and how ("closed fan of valence 5:
+    /// differs from the published stencils by 1.2e-3 of the diagonal").
+    std::string detail;
+};
+
+/// One level of `impl`'s Doo-Sabin under `rule` on an open mesh of a triangle, quads and a
+/// pentagon and on a closed triangular prism, against the vertex set written out above.
+RuleVerdict check_doo_sabin_rule(const Implementation& impl, const DooSabinOptions& rule);
+
+/// The oracle of `scheme` under `rule` applied to core's implementation (the Loop one at the
+/// input's interior `valences` too); `known` false for a rule without one.
+RuleVerdict check_core_rule(Scheme scheme, const SchemeRule& rule, const std::vector<int>& valences = {});
+
+}  // namespace crossdiv::verification
