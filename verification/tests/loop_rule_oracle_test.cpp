@@ -81,6 +81,17 @@ TEST(LoopRuleOracle, CoresVerdictIsRememberedPerRule) {
     EXPECT_NE(again.detail.find(std::to_string(again.meshes) + " fans"), std::string::npos) << again.detail;
 }
 
+/// Core's `scheme` under another rule than the one asked for: `change` turns the request's
+/// rule into the one applied.
+std::unique_ptr<Implementation> core_applying(const std::string& name, Scheme scheme, std::function<void(SchemeRule&)> change) {
+    const Implementation& core = core_implementation();
+    return make_callback_implementation(name, {scheme}, [&core, change](const PolyMesh& m, const RefineRequest& r) {
+        RefineRequest applied = r;
+        change(applied.rule);
+        return core.refine_last(m, applied);
+    });
+}
+
 TEST(DooSabinRuleOracle, CorePassesUnderBothBoundaryRules) {
     for (DooSabinBoundary b : {DooSabinBoundary::ChaikinBoundary, DooSabinBoundary::DropBorderFaces}) {
         const RuleVerdict v = check_doo_sabin_rule(core_implementation(), {b});
@@ -104,15 +115,27 @@ TEST(DooSabinRuleOracle, AWeightSlipAndAMissingChaikinBoundaryFail) {
     EXPECT_NE(v.detail.find("open strip"), std::string::npos) << v.detail;
     // Asked for the Chaikin boundary, refining as CGAL does (border faces dropped): the
     // boundary's points are missing.
-    const auto drops = make_callback_implementation("drops-border-faces", {Scheme::DooSabin}, [&core](const PolyMesh& m, const RefineRequest& r) {
-        RefineRequest dropping = r;
-        dropping.rule.doo_sabin.boundary = DooSabinBoundary::DropBorderFaces;
-        return core.refine_last(m, dropping);
-    });
+    const auto drops = core_applying("drops-border-faces", Scheme::DooSabin,
+                                     [](SchemeRule& r) { r.doo_sabin.boundary = DooSabinBoundary::DropBorderFaces; });
     const RuleVerdict d = check_doo_sabin_rule(*drops, {DooSabinBoundary::ChaikinBoundary});
     EXPECT_FALSE(d.passed);
     EXPECT_NE(d.detail.find("vertices where the rule makes"), std::string::npos) << d.detail;
     EXPECT_TRUE(check_doo_sabin_rule(*drops, {DooSabinBoundary::DropBorderFaces}).passed);
+}
+
+TEST(Sqrt3RuleOracle, CorePassesUnderBothParitiesAndCountingPerCallFailsCountFromInput) {
+    for (Sqrt3Parity p : {Sqrt3Parity::CountFromInput, Sqrt3Parity::RestartEachLevel}) {
+        const RuleVerdict v = check_sqrt3_rule(core_implementation(), {p});
+        EXPECT_TRUE(v.known && v.passed) << v.detail;
+        EXPECT_LE(v.worst_rel, 1e-14) << v.detail;
+    }
+    // An implementation that counts generations per call, asked to count from the input,
+    // never trisects the boundary: 6 boundary vertices at level 2 where the rule makes 18.
+    const auto per_call =
+        core_applying("per-call", Scheme::Sqrt3, [](SchemeRule& r) { r.sqrt3.parity = Sqrt3Parity::RestartEachLevel; });
+    const RuleVerdict v = check_sqrt3_rule(*per_call, {Sqrt3Parity::CountFromInput});
+    EXPECT_FALSE(v.passed);
+    EXPECT_NE(v.detail.find("boundary: 6 vertices where the rule makes 18"), std::string::npos) << v.detail;
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "crossdiv/verification/harness/correspondence.h"
+#include "crossdiv/verification/harness/fans.h"
 #include "crossdiv/verification/harness/mesh_topology.h"
 #include "crossdiv/verification/harness/tolerances.h"
 #include "crossdiv/verification/implementations/registry.h"
@@ -73,41 +74,98 @@ std::vector<Vec3> doo_sabin_vertices(const PolyMesh& m, const DooSabinOptions& r
     return out;
 }
 
+/// Largest distance from each of `got` to its one-to-one match in `expected`, or a reason
+/// there is no such match.
+std::pair<double, std::string> set_distance(const std::vector<Vec3>& expected, const std::vector<Vec3>& got) {
+    if (got.size() != expected.size())
+        return {INFINITY, std::to_string(got.size()) + " vertices where the rule makes " + std::to_string(expected.size())};
+    const Correspondence c = match_nearest(expected, got);
+    if (c.method == MatchMethod::None) return {INFINITY, "its vertices are not the rule's, one to one"};
+    double worst = 0;
+    for (size_t i = 0; i < c.ref_to_ours.size(); ++i)
+        worst = std::max(worst, (got[i] - expected[static_cast<size_t>(c.ref_to_ours[i])]).norm());
+    return {worst, ""};
+}
+
+/// Counts one mesh into `v`: true when it passes; else false, with the failure's sentence.
+bool record(RuleVerdict& v, const std::string& who, const std::string& where, double worst_rel, const std::string& reason) {
+    ++v.meshes;
+    if (reason.empty()) v.worst_rel = std::max(v.worst_rel, worst_rel);
+    if (reason.empty() && worst_rel <= tolerances::kAgreementRelative) return true;
+    v.detail = who + " on " + where + ": " +
+               (reason.empty() ? "differs from the published points by " + detail::sci(worst_rel) + " of the diagonal" : reason);
+    return false;
+}
+
 }  // namespace
+
+RuleVerdict check_sqrt3_rule(const Implementation& impl, const Sqrt3Options& rule) {
+    RuleVerdict v;
+    v.known = true;
+    const std::string who = impl.name() + "'s sqrt3, " + std::string(to_string(rule.parity));
+    // A disc of six triangles: the centre interior (valence 6), the ring its boundary loop.
+    const PolyMesh disc = to_poly_mesh(loop_fan(6));
+    const int n = 6;
+    const double diagonal = bounding_box_diagonal(disc.positions);
+    adapters::LevelTrace trace;
+    try {
+        trace = impl.refine(disc, {Scheme::Sqrt3, SchemeRule{.sqrt3 = rule}, 2});
+    } catch (const std::exception& e) {
+        record(v, who, "a disc of six triangles", INFINITY, std::string("refused: ") + e.what());
+        return v;
+    }
+    const auto& p = disc.positions;
+    // Level 1, generation 0: the centre smoothed with Kobbelt's alpha_6 = (4 - 2 cos(pi/3)) / 9
+    // = 1/3, the boundary kept, a centroid per triangle.
+    std::vector<Vec3> level1;
+    Vec3 centre = (2.0 / 3.0) * p[0];
+    for (int k = 1; k <= n; ++k) centre += (1.0 / 18.0) * p[static_cast<size_t>(k)];
+    level1.push_back(centre);
+    for (int k = 1; k <= n; ++k) level1.push_back(p[static_cast<size_t>(k)]);
+    for (int k = 0; k < n; ++k) level1.push_back((p[0] + p[static_cast<size_t>(1 + k)] + p[static_cast<size_t>(1 + (k + 1) % n)]) / 3.0);
+    const auto [d1, r1] = set_distance(level1, trace[1].positions);
+    if (!record(v, who, "level 1 of a disc of six triangles", d1 / diagonal, r1)) return v;
+    // Level 2's boundary: generation 1 trisects the ring (Kobbelt, section 4) when counted
+    // from the input; restarted at each level it is generation 0 again and the ring stays.
+    std::vector<Vec3> boundary;
+    for (int k = 0; k < n; ++k) {
+        const Vec3 &prev = p[static_cast<size_t>(1 + (k + n - 1) % n)], &a = p[static_cast<size_t>(1 + k)],
+                   &b = p[static_cast<size_t>(1 + (k + 1) % n)], &next = p[static_cast<size_t>(1 + (k + 2) % n)];
+        if (rule.parity == Sqrt3Parity::RestartEachLevel) {
+            boundary.push_back(a);
+            continue;
+        }
+        boundary.push_back((4.0 * prev + 19.0 * a + 4.0 * b) / 27.0);
+        boundary.push_back((prev + 16.0 * a + 10.0 * b) / 27.0);
+        boundary.push_back((10.0 * a + 16.0 * b + next) / 27.0);
+    }
+    const MeshTopology t = mesh_topology(trace[2]);
+    std::vector<Vec3> got;
+    for (int i = 0; i < trace[2].num_vertices(); ++i)
+        if (t.boundary_vertex[static_cast<size_t>(i)]) got.push_back(trace[2].positions[static_cast<size_t>(i)]);
+    const auto [d2, r2] = set_distance(boundary, got);
+    if (!record(v, who, "the boundary of level 2 of a disc of six triangles", d2 / diagonal,
+                r2.empty() ? r2 : "boundary: " + r2))
+        return v;
+    v.passed = true;
+    v.detail = who + " makes the published points at both levels of a disc to " + detail::sci(v.worst_rel);
+    return v;
+}
 
 RuleVerdict check_doo_sabin_rule(const Implementation& impl, const DooSabinOptions& rule) {
     RuleVerdict v;
     v.known = true;
     const std::string who = impl.name() + "'s Doo-Sabin, " + std::string(to_string(rule.boundary));
-    for (const auto& [name, mesh] : {std::pair{std::string("open strip of a triangle, quads and a pentagon"), open_polygons()},
-                                     std::pair{std::string("closed triangular prism"), closed_prism()}}) {
-        ++v.meshes;
-        std::string reason;
-        double worst = INFINITY;
+    for (const auto& [name, mesh] : {std::pair{std::string("an open strip of a triangle, quads and a pentagon"), open_polygons()},
+                                     std::pair{std::string("a closed triangular prism"), closed_prism()}}) {
+        std::pair<double, std::string> d;
         try {
             const PolyMesh got = impl.refine_last(mesh, {Scheme::DooSabin, SchemeRule{.doo_sabin = rule}, 1});
-            const std::vector<Vec3> expected = doo_sabin_vertices(mesh, rule);
-            const Correspondence c = match_nearest(expected, got.positions);
-            if (got.num_vertices() != static_cast<int>(expected.size()))
-                reason = std::to_string(got.num_vertices()) + " vertices where the rule makes " + std::to_string(expected.size());
-            else if (c.method == MatchMethod::None)
-                reason = "its vertices are not the rule's, one to one";
-            else {
-                worst = 0;
-                for (size_t i = 0; i < c.ref_to_ours.size(); ++i)
-                    worst = std::max(worst, (got.positions[i] - expected[static_cast<size_t>(c.ref_to_ours[i])]).norm());
-                worst /= bounding_box_diagonal(mesh.positions);
-            }
+            d = set_distance(doo_sabin_vertices(mesh, rule), got.positions);
         } catch (const std::exception& e) {
-            reason = std::string("refused: ") + e.what();
+            d = {INFINITY, std::string("refused: ") + e.what()};
         }
-        if (reason.empty()) v.worst_rel = std::max(v.worst_rel, worst);
-        if (!reason.empty() || !(worst <= tolerances::kAgreementRelative)) {
-            v.detail = who + " on a " + name + ": " +
-                       (reason.empty() ? "differs from the published points by " + detail::sci(worst) + " of the diagonal"
-                                       : reason);
-            return v;
-        }
+        if (!record(v, who, name, d.first / bounding_box_diagonal(mesh.positions), d.second)) return v;
     }
     v.passed = true;
     v.detail = who + " makes the published points on " + std::to_string(v.meshes) + " meshes to " + detail::sci(v.worst_rel);
@@ -118,6 +176,7 @@ RuleVerdict check_core_rule(Scheme scheme, const SchemeRule& rule, const std::ve
     switch (scheme) {
         case Scheme::Loop: return check_core_loop_rule(rule.loop, valences);
         case Scheme::DooSabin: return check_doo_sabin_rule(core_implementation(), rule.doo_sabin);
+        case Scheme::Sqrt3: return check_sqrt3_rule(core_implementation(), rule.sqrt3);
         default: {
             RuleVerdict v;
             v.detail = "no oracle for " + rule_name(scheme, rule);

@@ -112,6 +112,12 @@ CheckReport schemes_study() {
         runs.push_back(check("published points", "doo-sabin rule oracle", std::string(to_string(b)), v.worst_rel,
                              tolerances::kAgreementRelative, "rel", v.detail));
     }
+    // sqrt3's parities: which generations refine the boundary, against Kobbelt's rules.
+    for (Sqrt3Parity parity : {Sqrt3Parity::CountFromInput, Sqrt3Parity::RestartEachLevel}) {
+        const RuleVerdict v = check_sqrt3_rule(core_implementation(), {parity});
+        runs.push_back(check("published points", "sqrt3 rule oracle", std::string(to_string(parity)), v.worst_rel,
+                             tolerances::kAgreementRelative, "rel", v.detail));
+    }
     out.tables = {{"schemes", rows}, {"butterfly_properties", properties}};
     return out;
 }

@@ -10,12 +10,19 @@
 ///   alpha_k = (3 + 2 cos(2 pi k / n)) / (4n)) and, under chaikin-boundary, Chaikin's points
 ///   3/4 a + 1/4 b, 1/4 a + 3/4 b on each boundary edge (a, b): the refined level's vertices
 ///   are exactly those, compared as a set (one to one, by position).
+/// - sqrt3: on a disc of six triangles, level 1 (generation 0) smooths the interior vertex
+///   with Kobbelt's alpha_n = (4 - 2 cos(2 pi / n)) / 9, keeps the boundary and adds the
+///   centroids; at level 2 the boundary is trisected by Kobbelt's ternary rule (old vertex
+///   (4 p_prev + 19 p + 4 q) / 27, edge points (p_prev + 16 p + 10 q) / 27 and
+///   (10 p + 16 q + q_next) / 27) when generations count from the input, and kept when they
+///   restart at each level. Vertex sets compared, one to one.
 /// Other rules have no oracle yet (`known` false): their classes rest on the references.
 
 #include <string>
 #include <vector>
 
 #include "crossdiv/subdiv/doo_sabin_mask.h"
+#include "crossdiv/subdiv/sqrt3_mask.h"
 #include "crossdiv/verification/implementations/implementation.h"
 
 namespace crossdiv::verification {
@@ -34,6 +41,10 @@ struct RuleVerdict {
 /// One level of `impl`'s Doo-Sabin under `rule` on an open mesh of a triangle, quads and a
 /// pentagon and on a closed triangular prism, against the vertex set written out above.
 RuleVerdict check_doo_sabin_rule(const Implementation& impl, const DooSabinOptions& rule);
+
+/// Two levels of `impl`'s sqrt3 under `rule` on a disc of six triangles, against the points
+/// written out above.
+RuleVerdict check_sqrt3_rule(const Implementation& impl, const Sqrt3Options& rule);
 
 /// The oracle of `scheme` under `rule` applied to core's implementation (the Loop one at the
 /// input's interior `valences` too); `known` false for a rule without one.
