@@ -1,5 +1,5 @@
-// The Loop rule oracle (loop_rule_oracle.h): core passes it under every rule it knows, and
-// implementations with a seeded weight or boundary slip fail it, naming the fan.
+// The rule oracles (loop_rule_oracle.h, rule_oracle.h): core passes each under every rule it
+// has, and implementations with a seeded weight, boundary or parity slip fail, naming the mesh.
 #include <gtest/gtest.h>
 
 #include "crossdiv/subdiv/loop.h"
