@@ -138,5 +138,19 @@ TEST(Sqrt3RuleOracle, CorePassesUnderBothParitiesAndCountingPerCallFailsCountFro
     EXPECT_NE(v.detail.find("boundary: 6 vertices where the rule makes 18"), std::string::npos) << v.detail;
 }
 
+TEST(ButterflyRuleOracle, CorePassesUnderBothWingRulesAndEachFailsAsTheOther) {
+    for (ButterflyWings w : kAllButterflyWings) {
+        const RuleVerdict v = check_butterfly_rule(core_implementation(), w);
+        EXPECT_TRUE(v.known && v.passed) << v.detail;
+        EXPECT_LE(v.worst_rel, 1e-14) << v.detail;
+        // Asked for one wing rule, applying the other: the spokes' points move.
+        const ButterflyWings other = w == ButterflyWings::Reflected ? ButterflyWings::OppositeVertex : ButterflyWings::Reflected;
+        const auto swapped = core_applying("other-wings", Scheme::Butterfly, [other](SchemeRule& r) { r.butterfly_wings = other; });
+        const RuleVerdict s = check_butterfly_rule(*swapped, w);
+        EXPECT_FALSE(s.passed) << s.detail;
+        EXPECT_GT(s.worst_rel, 1e-3) << s.detail;
+    }
+}
+
 }  // namespace
 }  // namespace crossdiv::verification

@@ -87,6 +87,19 @@ std::pair<double, std::string> set_distance(const std::vector<Vec3>& expected, c
     return {worst, ""};
 }
 
+/// One level of `impl` on `mesh` under `request`, its vertex set against `expected`: the
+/// largest distance over the mesh's diagonal, or why it could not be measured.
+std::pair<double, std::string> level_against(const Implementation& impl, const PolyMesh& mesh, const RefineRequest& request,
+                                             const std::vector<Vec3>& expected) {
+    try {
+        const PolyMesh got = impl.refine_last(mesh, request);
+        const auto [worst, reason] = set_distance(expected, got.positions);
+        return {worst / bounding_box_diagonal(mesh.positions), reason};
+    } catch (const std::exception& e) {
+        return {INFINITY, std::string("refused: ") + e.what()};
+    }
+}
+
 /// Counts one mesh into `v`: true when it passes; else false, with the failure's sentence.
 bool record(RuleVerdict& v, const std::string& who, const std::string& where, double worst_rel, const std::string& reason) {
     ++v.meshes;
@@ -97,7 +110,66 @@ bool record(RuleVerdict& v, const std::string& who, const std::string& where, do
     return false;
 }
 
+/// The classic Butterfly's level-1 vertices on a triangle mesh, as a set: the old vertices
+/// (it interpolates), the eight-point stencil on each interior edge with each missing wing
+/// taken by `wings`, the four-point rule on each boundary edge.
+std::vector<Vec3> butterfly_vertices(const PolyMesh& m, ButterflyWings wings) {
+    struct Half {
+        int from, to, third;
+    };
+    std::vector<Half> halves;
+    for (int f = 0; f < m.num_faces(); ++f)
+        for (int k = 0; k < 3; ++k) halves.push_back({m.face(f)[k], m.face(f)[(k + 1) % 3], m.face(f)[(k + 2) % 3]});
+    std::sort(halves.begin(), halves.end(), [](const Half& x, const Half& y) { return std::pair{x.from, x.to} < std::pair{y.from, y.to}; });
+    const auto find = [&](int from, int to) -> const Half* {
+        const auto it = std::lower_bound(halves.begin(), halves.end(), std::pair{from, to},
+                                         [](const Half& h, const std::pair<int, int>& k) { return std::pair{h.from, h.to} < k; });
+        return it != halves.end() && it->from == from && it->to == to ? &*it : nullptr;
+    };
+    const auto& p = m.positions;
+    const auto at = [&](int v) -> const Vec3& { return p[static_cast<size_t>(v)]; };
+    // The wing beyond edge (x, y) of the triangle whose third vertex is t.
+    const auto wing = [&](int x, int y, int t) -> Vec3 {
+        if (const Half* across = find(y, x)) return at(across->third);
+        return wings == ButterflyWings::Reflected ? Vec3(at(x) + at(y) - at(t)) : at(t);
+    };
+    std::vector<Vec3> out(p.begin(), p.end());
+    for (const Half& h : halves) {
+        const Half* twin = find(h.to, h.from);
+        if (twin && h.from > h.to) continue;  // each interior edge once
+        const int a = h.from, b = h.to;
+        if (!twin) {
+            // Boundary polygon: p -> a -> b -> q, each step a boundary half-edge.
+            int before = -1, after = -1;
+            for (const Half& g : halves) {
+                if (g.to == a && !find(a, g.from)) before = g.from;
+                if (g.from == b && !find(g.to, b)) after = g.to;
+            }
+            out.push_back(9.0 / 16.0 * (at(a) + at(b)) - 1.0 / 16.0 * (at(before) + at(after)));
+            continue;
+        }
+        const int o1 = h.third, o2 = twin->third;
+        out.push_back(0.5 * (at(a) + at(b)) + 0.125 * (at(o1) + at(o2)) -
+                      0.0625 * (wing(b, o1, a) + wing(o1, a, b) + wing(a, o2, b) + wing(o2, b, a)));
+    }
+    return out;
+}
+
 }  // namespace
+
+RuleVerdict check_butterfly_rule(const Implementation& impl, ButterflyWings wings) {
+    RuleVerdict v;
+    v.known = true;
+    const std::string who = impl.name() + "'s Butterfly, " + std::string(to_string(wings));
+    // A disc of seven triangles: every spoke has two wings beyond the boundary.
+    const PolyMesh disc = to_poly_mesh(loop_fan(7));
+    const auto [worst, reason] = level_against(impl, disc, {Scheme::Butterfly, SchemeRule{.butterfly_wings = wings}, 1},
+                                               butterfly_vertices(disc, wings));
+    if (!record(v, who, "a disc of seven triangles", worst, reason)) return v;
+    v.passed = true;
+    v.detail = who + " makes the published points on a disc to " + detail::sci(v.worst_rel);
+    return v;
+}
 
 RuleVerdict check_sqrt3_rule(const Implementation& impl, const Sqrt3Options& rule) {
     RuleVerdict v;
@@ -158,14 +230,9 @@ RuleVerdict check_doo_sabin_rule(const Implementation& impl, const DooSabinOptio
     const std::string who = impl.name() + "'s Doo-Sabin, " + std::string(to_string(rule.boundary));
     for (const auto& [name, mesh] : {std::pair{std::string("an open strip of a triangle, quads and a pentagon"), open_polygons()},
                                      std::pair{std::string("a closed triangular prism"), closed_prism()}}) {
-        std::pair<double, std::string> d;
-        try {
-            const PolyMesh got = impl.refine_last(mesh, {Scheme::DooSabin, SchemeRule{.doo_sabin = rule}, 1});
-            d = set_distance(doo_sabin_vertices(mesh, rule), got.positions);
-        } catch (const std::exception& e) {
-            d = {INFINITY, std::string("refused: ") + e.what()};
-        }
-        if (!record(v, who, name, d.first / bounding_box_diagonal(mesh.positions), d.second)) return v;
+        const auto [worst, reason] =
+            level_against(impl, mesh, {Scheme::DooSabin, SchemeRule{.doo_sabin = rule}, 1}, doo_sabin_vertices(mesh, rule));
+        if (!record(v, who, name, worst, reason)) return v;
     }
     v.passed = true;
     v.detail = who + " makes the published points on " + std::to_string(v.meshes) + " meshes to " + detail::sci(v.worst_rel);
@@ -177,6 +244,7 @@ RuleVerdict check_core_rule(Scheme scheme, const SchemeRule& rule, const std::ve
         case Scheme::Loop: return check_core_loop_rule(rule.loop, valences);
         case Scheme::DooSabin: return check_doo_sabin_rule(core_implementation(), rule.doo_sabin);
         case Scheme::Sqrt3: return check_sqrt3_rule(core_implementation(), rule.sqrt3);
+        case Scheme::Butterfly: return check_butterfly_rule(core_implementation(), rule.butterfly_wings);
         default: {
             RuleVerdict v;
             v.detail = "no oracle for " + rule_name(scheme, rule);

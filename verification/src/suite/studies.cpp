@@ -118,6 +118,13 @@ CheckReport schemes_study() {
         runs.push_back(check("published points", "sqrt3 rule oracle", std::string(to_string(parity)), v.worst_rel,
                              tolerances::kAgreementRelative, "rel", v.detail));
     }
+    // The classic Butterfly's wing rules: MeshLab's is the one reference, and only when the
+    // manifest registers it.
+    for (ButterflyWings w : kAllButterflyWings) {
+        const RuleVerdict v = check_butterfly_rule(core_implementation(), w);
+        runs.push_back(check("published points", "butterfly rule oracle", std::string(to_string(w)), v.worst_rel,
+                             tolerances::kAgreementRelative, "rel", v.detail));
+    }
     out.tables = {{"schemes", rows}, {"butterfly_properties", properties}};
     return out;
 }

@@ -16,11 +16,17 @@
 ///   (4 p_prev + 19 p + 4 q) / 27, edge points (p_prev + 16 p + 10 q) / 27 and
 ///   (10 p + 16 q + q_next) / 27) when generations count from the input, and kept when they
 ///   restart at each level. Vertex sets compared, one to one.
+/// - The classic Butterfly (Dyn, Levin, Gregory 1990): old vertices kept; on an interior
+///   edge a 1/2, b 1/8, the four wings -1/16, a wing beyond the boundary across edge (x, y)
+///   of a triangle with third vertex t taken as x + y - t (reflected-wings) or t
+///   (opposite-vertex-wings); a boundary edge by the four-point rule 9/16, -1/16. On a disc
+///   of seven triangles, whose every spoke has two wings beyond the boundary.
 /// Other rules have no oracle yet (`known` false): their classes rest on the references.
 
 #include <string>
 #include <vector>
 
+#include "crossdiv/subdiv/butterfly_mask.h"
 #include "crossdiv/subdiv/doo_sabin_mask.h"
 #include "crossdiv/subdiv/sqrt3_mask.h"
 #include "crossdiv/verification/implementations/implementation.h"
@@ -45,6 +51,10 @@ RuleVerdict check_doo_sabin_rule(const Implementation& impl, const DooSabinOptio
 /// Two levels of `impl`'s sqrt3 under `rule` on a disc of six triangles, against the points
 /// written out above.
 RuleVerdict check_sqrt3_rule(const Implementation& impl, const Sqrt3Options& rule);
+
+/// One level of `impl`'s classic Butterfly under `wings` on the disc, against the points
+/// written out above.
+RuleVerdict check_butterfly_rule(const Implementation& impl, ButterflyWings wings);
 
 /// The oracle of `scheme` under `rule` applied to core's implementation (the Loop one at the
 /// input's interior `valences` too); `known` false for a rule without one.
