@@ -1,4 +1,5 @@
 #include "crossdiv/verification/comparisons/normals_comparison.h"
+#include "crossdiv/verification/harness/vector_angle.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -15,7 +16,6 @@ constexpr NormalWeighting kWeightings[3] = {NormalWeighting::Area, NormalWeighti
 static_assert(static_cast<int>(NormalWeighting::Area) == 0 && static_cast<int>(NormalWeighting::Angle) == 1 &&
               static_cast<int>(NormalWeighting::Uniform) == 2, "kWeightings is indexed by the enum");
 
-double angle(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
 
 /// Per vertex, the largest angle between `n` and the unit normals of its faces (0 without faces).
 std::vector<double> largest_face_angle(const TriMesh& mesh, const std::vector<Vec3>& n) {
@@ -25,7 +25,7 @@ std::vector<double> largest_face_angle(const TriMesh& mesh, const std::vector<Ve
         const Vec3 c = (P[t[1]] - P[t[0]]).cross(P[t[2]] - P[t[0]]);
         if (c.norm() == 0.0) continue;
         for (int v : t)
-            if (n[v].norm() > 0) out[v] = std::max(out[v], angle(n[v], c.normalized()));
+            if (n[v].norm() > 0) out[v] = std::max(out[v], vector_angle(n[v], c.normalized()));
     }
     return out;
 }
@@ -52,7 +52,7 @@ void measure(const TriMesh& mesh, const std::vector<std::vector<Vec3>>& ours, co
     for (int w = 0; w < 3; ++w)
         for (int v = 0; v < nv; ++v) {
             if (ours[w][v].norm() == 0 || r.normals[v].norm() == 0) continue;
-            const double a = angle(ours[w][v], r.normals[v]);
+            const double a = vector_angle(ours[w][v], r.normals[v]);
             if (a > r.max_angle[w] || r.worst_vertex[w] < 0) r.max_angle[w] = a, r.worst_vertex[w] = v;
         }
     int best = 0;
@@ -62,7 +62,7 @@ void measure(const TriMesh& mesh, const std::vector<std::vector<Vec3>>& ours, co
     if (r.max_angle[best] <= tolerances::kNormalMatchRad) r.matches = r.closest;
     for (int v = 0; v < nv; ++v) {
         if (ours[best][v].norm() == 0 || r.normals[v].norm() == 0) continue;
-        if (angle(ours[best][v], r.normals[v]) > tolerances::kNormalMatchRad) {
+        if (vector_angle(ours[best][v], r.normals[v]) > tolerances::kNormalMatchRad) {
             ++r.mismatched;
             r.mismatched_boundary += boundary[v];
         }
@@ -72,7 +72,7 @@ void measure(const TriMesh& mesh, const std::vector<std::vector<Vec3>>& ours, co
     for (int v = 0; v < nv; ++v) {
         bool best_visible = true;
         for (int w = 0; w < 3; ++w) best_visible = best_visible && vis[v] <= ours_visibility[w][v] + tolerances::kNormalMatchRad;
-        const bool is_sine = sine[v].norm() > 0 && r.normals[v].norm() > 0 && angle(sine[v], r.normals[v]) <= tolerances::kNormalMatchRad;
+        const bool is_sine = sine[v].norm() > 0 && r.normals[v].norm() > 0 && vector_angle(sine[v], r.normals[v]) <= tolerances::kNormalMatchRad;
         r.most_visible += best_visible;
         r.sine_weighted += is_sine;
         r.unexplained += !best_visible && !is_sine;

@@ -10,17 +10,12 @@
 #include "crossdiv/subdiv/loop_split_flip.h"
 #include "crossdiv/verification/harness/inputs.h"
 #include "crossdiv/verification/harness/tolerances.h"
+#include "crossdiv/verification/harness/vector_angle.h"
 #include "crossdiv/verification/implementations/registry.h"
 #include "harness/sci.h"
 
 namespace crossdiv::verification {
 namespace {
-
-/// A count check: `count` must be 0.
-Check count_of(const std::string& subject, const std::string& check, const std::string& reference, int count,
-               const std::string& note) {
-    return {subject, check, reference, static_cast<double>(count), 0.0, "count", note};
-}
 
 std::string joined(const std::vector<std::string>& names) {
     std::string s;
@@ -47,8 +42,6 @@ std::vector<Vec3> angle_weighted_normals(const TriMesh& m) {
     return n;
 }
 
-double angle_between(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
-
 }  // namespace
 
 CheckReport check_edits(const std::string& input, const OurEdits& ours) {
@@ -61,7 +54,7 @@ CheckReport check_edits(const std::string& input, const OurEdits& ours) {
         base = to_tri_mesh(load_input(input), "the edit differential");
     } catch (const InputError& e) {
         r.subjects.push_back(input);
-        r.checks.push_back(count_of(input, "edit-differential", joined(refs), 1, e.what()));
+        r.checks.push_back(count_check(input, "edit-differential", joined(refs), 1, e.what()));
         return r;
     }
     // Loop by local operations (split every edge, flip the new edges that join an old and a
@@ -77,11 +70,11 @@ CheckReport check_edits(const std::string& input, const OurEdits& ours) {
             for (int v = 0; differing == 0 && v < local.num_vertices(); ++v)
                 differing += local.positions[static_cast<size_t>(v)] != index.positions[static_cast<size_t>(v)];
             const bool same_faces = canonical_faces(local.triangles) == canonical_faces(index.triangles);
-            r.checks.push_back(count_of(subject, "loop-by-split-and-flip", "index-based loop", differing + !same_faces,
+            r.checks.push_back(count_check(subject, "loop-by-split-and-flip", "index-based loop", differing + !same_faces,
                                         std::to_string(differing) + " vertices differ in bits, faces " +
                                             (same_faces ? "equal" : "differ")));
         } catch (const InputError& e) {
-            r.checks.push_back(count_of(subject, "loop-by-split-and-flip", "index-based loop", 1, e.what()));
+            r.checks.push_back(count_check(subject, "loop-by-split-and-flip", "index-based loop", 1, e.what()));
         }
     }
     for (int seed = 1; seed <= kSuiteEditSeeds; ++seed) {
@@ -91,7 +84,7 @@ CheckReport check_edits(const std::string& input, const OurEdits& ours) {
         try {
             const EditRunResult run = run_edit_differential(base, ops, refs, ours);
             if (!run.disagreement) {
-                r.checks.push_back(count_of(subject, "edit-differential", joined(refs), 0,
+                r.checks.push_back(count_check(subject, "edit-differential", joined(refs), 0,
                                             std::to_string(run.ops_run) + " operations (" + std::to_string(run.flips) +
                                                 " flips, " + std::to_string(run.refused_flips) + " refused, " +
                                                 std::to_string(run.splits) + " splits), valid and equal after each"));
@@ -101,12 +94,12 @@ CheckReport check_edits(const std::string& input, const OurEdits& ours) {
             std::string sequence;
             for (const ResolvedEdit& e : s.resolved) sequence += (sequence.empty() ? "" : ", ") + to_string(e);
             const EditDisagreement& d = s.disagreement;
-            r.checks.push_back(count_of(subject, "edit-differential", joined(refs), 1,
+            r.checks.push_back(count_check(subject, "edit-differential", joined(refs), 1,
                                         "operation " + std::to_string(run.disagreement->op_index + 1) + " of " +
                                             std::to_string(ops.size()) + ": " + d.subject + " " + d.kind + " (" + d.detail +
                                             "); shrunk to " + std::to_string(s.ops.size()) + ": " + sequence));
         } catch (const InputError& e) {
-            r.checks.push_back(count_of(subject, "edit-differential", joined(refs), 1, e.what()));
+            r.checks.push_back(count_check(subject, "edit-differential", joined(refs), 1, e.what()));
         }
     }
     return r;
@@ -121,7 +114,7 @@ CheckReport check_normals(const std::string& input, const NormalsFunction& ours)
     try {
         mesh = to_tri_mesh(load_input(input), "vertex normals");
     } catch (const InputError& e) {
-        r.checks.push_back(count_of(input, "normals", "input", 1, e.what()));
+        r.checks.push_back(count_check(input, "normals", "input", 1, e.what()));
         return r;
     }
     std::vector<std::string> refs;
@@ -163,7 +156,7 @@ CheckReport check_normals(const std::string& input, const NormalsFunction& ours)
     int worst_vertex = -1;
     for (size_t v = 0; v < angle.size() && v < oracle.size(); ++v) {
         const bool both_zero = angle[v].norm() == 0 && oracle[v].norm() == 0;
-        const double a = both_zero ? 0.0 : angle_between(angle[v], oracle[v]);
+        const double a = both_zero ? 0.0 : vector_angle(angle[v], oracle[v]);
         if (!(a <= worst)) {
             worst = a;
             worst_vertex = static_cast<int>(v);

@@ -15,6 +15,7 @@
 #include "crossdiv/surfaces/sweep_surface.h"
 #include "crossdiv/verification/harness/convergence_order.h"
 #include "crossdiv/verification/harness/tolerances.h"
+#include "crossdiv/verification/harness/vector_angle.h"
 #include "harness/check_inputs.h"
 #include "crossdiv/verification/implementations/registry.h"
 
@@ -25,10 +26,6 @@ namespace {
 
 constexpr double kEps = 2.220446049250313e-16;
 
-Check count_check(const std::string& name, const std::string& check, const std::string& reference, double count,
-                       const std::string& note) {
-    return {name, check, reference, count, 0, "count", note};
-}
 
 /// Largest |signed distance| of the mesh from an implicit surface, sampled on every
 /// triangle at the barycentric points (i, j, k) / 6: the mesh-to-surface distance.
@@ -46,18 +43,17 @@ double mesh_to_surface(const TriMesh& m, Distance&& dist) {
     return worst;
 }
 
-double angle(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
 
 /// Largest angle between each vertex normal / each face normal and the exact normal there
 /// (the face's at its centroid).
 template <class Normal>
 std::pair<double, double> normal_errors(const SurfaceMesh& s, Normal&& exact) {
     double vertex = 0, face = 0;
-    for (int v = 0; v < s.mesh.num_vertices(); ++v) vertex = std::max(vertex, angle(s.normals[v], exact(s.mesh.positions[v])));
+    for (int v = 0; v < s.mesh.num_vertices(); ++v) vertex = std::max(vertex, vector_angle(s.normals[v], exact(s.mesh.positions[v])));
     const std::vector<Vec3> fn = face_normals(s.mesh);
     for (int f = 0; f < s.mesh.num_faces(); ++f) {
         const Triangle& t = s.mesh.triangles[f];
-        face = std::max(face, angle(fn[f], exact((s.mesh.positions[t[0]] + s.mesh.positions[t[1]] + s.mesh.positions[t[2]]) / 3)));
+        face = std::max(face, vector_angle(fn[f], exact((s.mesh.positions[t[0]] + s.mesh.positions[t[1]] + s.mesh.positions[t[2]]) / 3)));
     }
     return {vertex, face};
 }

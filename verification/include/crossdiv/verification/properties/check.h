@@ -39,6 +39,12 @@ struct Check {
     }
 };
 
+/// A check of a count that must be zero (unit "count").
+inline Check count_check(const std::string& subject, const std::string& check, const std::string& reference, double count,
+                         const std::string& note) {
+    return {subject, check, reference, count, 0, "count", note};
+}
+
 /// All checks of one input, and the tables of figures they came from.
 struct CheckReport {
     std::string input;
