@@ -13,6 +13,7 @@
 
 #include "crossdiv/error.h"
 #include "crossdiv/verification/suite/operations.h"
+#include "crossdiv/verification/harness/appended_lines.h"
 #include "crossdiv/verification/harness/json_text.h"
 
 namespace crossdiv::verification {
@@ -76,7 +77,7 @@ std::vector<CaseRecord> run_jobs(const std::vector<SuiteJob>& jobs, int workers,
             close(pipe_fd[0]);
             std::ofstream part(parts.back());
             for (size_t i = w; i < jobs.size(); i += workers) {
-                part << json_text(to_json(run_job(jobs[i], out_dir))) << "\n" << std::flush;
+                part << json_text(to_json(run_job(jobs[i], out_dir))) + "\n" << std::flush;
                 const std::string msg = std::to_string(i) + "\n";
                 if (write(pipe_fd[1], msg.data(), msg.size()) < 0) _exit(1);
             }
@@ -87,17 +88,15 @@ std::vector<CaseRecord> run_jobs(const std::vector<SuiteJob>& jobs, int workers,
     }
     close(pipe_fd[1]);
 
-    // Progress: read finished indices as they come; records are read back from the files.
+    // Progress: read finished indices as they come; records are read back from the files,
+    // whole lines only: a worker may be writing its next record while this one is read.
     std::map<int, CaseRecord> done;
-    std::vector<std::streamoff> offsets(workers, 0);
+    std::vector<AppendedLines> records;
+    for (const fs::path& p : parts) records.emplace_back(p.string());
     auto collect = [&](int w) {
-        std::ifstream in(parts[w]);
-        in.seekg(offsets[w]);
-        std::string line;
-        while (std::getline(in, line) && !line.empty()) {
+        for (const std::string& line : records[w].take_complete()) {
             const json rec = json::parse(line, nullptr, false);
-            if (rec.is_discarded()) break;  // a line still being written
-            offsets[w] = in.tellg();
+            if (rec.is_discarded()) continue;  // its job is reported as ended without a record
             CaseRecord c = case_record_from_json(rec);
             done.emplace(c.job, std::move(c));
         }
