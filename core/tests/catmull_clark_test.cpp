@@ -48,6 +48,28 @@ TEST(PolyConnectivity, SquareBoundaryWalkStartsWhereTheBoundaryComesIn) {
     }
 }
 
+TEST(PolyConnectivity, APyramidOverAHundredGonIsClosed) {
+    // Apex 0 of valence 100 (searched by bisection) over the base polygon 1..100: 2 * 100
+    // edges, each corner's twin leaves the corner's head and is twinned back.
+    const int n = 100;
+    PolyMesh m;
+    m.positions.push_back(Vec3(0, 0, 1));
+    for (int k = 0; k < n; ++k) m.positions.push_back(Vec3(std::cos(2 * M_PI * k / n), std::sin(2 * M_PI * k / n), 0));
+    for (int k = 0; k < n; ++k) m.add_face({0, 1 + k, 1 + (k + 1) % n});
+    std::vector<int> base;
+    for (int k = n; k >= 1; --k) base.push_back(k);
+    m.add_face(base);
+    const PolyConnectivity c = build_poly_connectivity(m);
+    EXPECT_EQ(c.num_edges(), 2 * n);
+    for (int k = 0; k < static_cast<int>(c.twin.size()); ++k) {
+        ASSERT_GE(c.twin[k], 0) << k;
+        EXPECT_EQ(c.twin[c.twin[k]], k);
+        EXPECT_EQ(c.corner_vertex[c.twin[k]], c.head(k));
+    }
+    m.add_face({0, 2, 1});  // a third face on the edges (0, 1) and (0, 2)
+    EXPECT_THROW(build_poly_connectivity(m), NonManifoldInput);
+}
+
 TEST(PolyConnectivity, RefusesBadPolygonsNamingTheElement) {
     PolyMesh two_corner;
     two_corner.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0)};

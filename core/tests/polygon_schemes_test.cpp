@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "crossdiv/error.h"
 #include "crossdiv/mesh/poly_connectivity.h"
@@ -248,8 +249,56 @@ TEST(Butterfly, WingsBeyondTheBoundaryAreReflectedOrTheOppositeVertex) {
     // Boundary edges take the four-point rule under both wing rules.
     const PolyMesh reflected = butterfly_subdivide(m, ButterflyVariant::Classic, 1);
     const PolyMesh opposite = butterfly_subdivide(m, ButterflyVariant::Classic, 1, ButterflyWings::OppositeVertex);
-    for (int e = 0; e < c.num_edges(); ++e)
-        if (4 + e != diagonal) EXPECT_EQ(reflected.positions[4 + e], opposite.positions[4 + e]) << e;
+    for (int e = 0; e < c.num_edges(); ++e) {
+        if (4 + e != diagonal) {
+            EXPECT_EQ(reflected.positions[4 + e], opposite.positions[4 + e]) << e;
+        }
+    }
+}
+
+TEST(Butterfly, APoleOfLargeValenceTakesTheKPointStencilThroughItsFourierSums) {
+    // Bicones whose poles have valence K above the direct stencil's limit (32), a rim
+    // that wobbles so that every Fourier sum matters. Each edge point against Zorin's K-point
+    // stencils summed term by term around both endpoints (the rim vertices have valence 4),
+    // half each: within 1e-14 of the mesh's size, which is a few roundings of K-term sums.
+    for (const int K : {33, 64, 360, 1000}) {
+        PolyMesh m;
+        m.positions.push_back(Vec3(0.1, -0.05, 0.7));
+        for (int k = 0; k < K; ++k) {
+            const double a = 2 * M_PI * k / K;
+            m.positions.push_back(Vec3((1 + 0.2 * std::cos(3 * a)) * std::cos(a), std::sin(a), 0.1 * std::sin(5 * a)));
+        }
+        m.positions.push_back(Vec3(-0.1, 0.02, -0.6));
+        for (int k = 0; k < K; ++k) m.add_face({0, 1 + k, 1 + (k + 1) % K});
+        for (int k = 0; k < K; ++k) m.add_face({K + 1, 1 + (k + 1) % K, 1 + k});
+        const PolyConnectivity c = build_poly_connectivity(m);
+        const PolyMesh fine = butterfly_subdivide(m, ButterflyVariant::Modified, 1);
+        const auto k_point = [&](int corner) {
+            const int v = c.corner_vertex[corner];
+            int valence = 0;
+            for (int x = corner;;) {
+                ++valence;
+                x = c.next_around_vertex(x);
+                if (x == corner) break;
+            }
+            const std::vector<double> s = modified_butterfly_stencil(valence);
+            Vec3 sum = s[static_cast<size_t>(valence)] * m.positions[v];
+            int j = 0;
+            for (int x = corner;;) {
+                sum += s[static_cast<size_t>(j++)] * m.positions[c.head(x)];
+                x = c.next_around_vertex(x);
+                if (x == corner) break;
+            }
+            return sum;
+        };
+        double worst = 0;
+        for (int e = 0; e < c.num_edges(); ++e) {
+            const int corner = c.edge_corner[e];
+            const Vec3 expected = 0.5 * k_point(corner) + 0.5 * k_point(c.twin[corner]);
+            worst = std::max(worst, (fine.positions[static_cast<size_t>(m.num_vertices() + e)] - expected).norm());
+        }
+        EXPECT_LE(worst, 1e-14) << "K = " << K;
+    }
 }
 
 TEST(Butterfly, BoundaryEdgeIsTheFourPointRule) {

@@ -74,5 +74,47 @@ TEST(TriConnectivity, ErrorsNameTheElement) {
     EXPECT_NE(error_of(mesh_of(5, {{0, 1, 2}, {0, 3, 4}})).find("vertex 0 is non-manifold"), std::string::npos);
 }
 
+/// A closed fan of n triangles (0, 1+k, 1+(k+1)%n) around vertex 0, capped by a second fan
+/// around vertex n+1: a bicone whose two poles have valence n.
+std::vector<Triangle> bicone(int n) {
+    std::vector<Triangle> t;
+    for (int k = 0; k < n; ++k) t.push_back({0, 1 + k, 1 + (k + 1) % n});
+    for (int k = 0; k < n; ++k) t.push_back({n + 1, 1 + (k + 1) % n, 1 + k});
+    return t;
+}
+
+TEST(TriConnectivity, APoleOfHighValenceGetsTheTablesOfAFan) {
+    // Valence 100: above the scan limit, so the pole is searched by bisection. By hand:
+    // triangle k's edge 0 (0 -> 1+k) is edge 2 of triangle k-1, its edge 1 (the rim) is edge
+    // 1 of cap triangle n+k, its edge 2 (1+k+1 -> 0) is edge 0 of triangle k+1.
+    const int n = 100;
+    static_assert(100 > 32, "above TwinSearch::kScanLimit");
+    const TriConnectivity c = build_tri_connectivity(mesh_of(n + 2, bicone(n)));
+    ASSERT_EQ(c.num_edges(), 3 * n);
+    for (int k = 0; k < n; ++k) {
+        EXPECT_EQ(c.neighbor_tris[k], (std::array<int, 3>{(k + n - 1) % n, n + k, (k + 1) % n})) << k;
+        EXPECT_EQ(c.neighbor_edges[k], (std::array<int, 3>{2, 1, 0})) << k;
+    }
+    int visited = 0;
+    for (int k = c.vertex_corner[0];; k = c.next_around_vertex(k)) {
+        ++visited;
+        if (c.next_around_vertex(k) == c.vertex_corner[0]) break;
+    }
+    EXPECT_EQ(visited, n);
+}
+
+TEST(TriConnectivity, ErrorsAtAPoleOfHighValenceNameTheElement) {
+    const int n = 100;
+    std::vector<Triangle> third = bicone(n);
+    third.push_back({0, 2, 1});  // a third triangle on each edge of (0, 1, 2)
+    EXPECT_NE(error_of(mesh_of(n + 2, third)).find("shared by 3 triangles"), std::string::npos);
+    std::vector<Triangle> flipped = bicone(n);
+    flipped[5] = {0, 7, 6};  // traverses 0 -> 7 as triangle 6 does
+    EXPECT_NE(error_of(mesh_of(n + 2, flipped)).find("inconsistent orientation"), std::string::npos);
+    std::vector<Triangle> bowtie = bicone(n);
+    for (int k = 0; k < n; ++k) bowtie.push_back({0, n + 2 + k, n + 2 + (k + 1) % n});  // a second fan at 0
+    EXPECT_NE(error_of(mesh_of(2 * n + 2, bowtie)).find("vertex 0 is non-manifold"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace crossdiv

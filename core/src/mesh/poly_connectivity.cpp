@@ -4,6 +4,7 @@
 
 #include "crossdiv/error.h"
 #include "one_ring_starts.h"
+#include "twin_search.h"
 
 namespace crossdiv {
 namespace {
@@ -59,15 +60,11 @@ PolyConnectivity build_poly_connectivity(const PolyMesh& mesh) {
     conn.vertex_corner.assign(nv, -1);
     conn.edge_corner.reserve(static_cast<size_t>(nc) / 2 + 16);
     conn.edge_vertices.reserve(static_cast<size_t>(nc) / 2 + 16);
+    const auto head = [&conn](int c) { return conn.head(c); };
+    const detail::TwinSearch twins(out_start, out_corners, head);
     for (int c = 0; c < nc; ++c) {
         const int a = conn.corner_vertex[c], b = conn.head(c);
-        int same = 0, twin = -1, opposite = 0;
-        for (int k = out_start[a]; k < out_start[a + 1]; ++k) same += conn.head(out_corners[k]) == b;
-        for (int k = out_start[b]; k < out_start[b + 1]; ++k)
-            if (conn.head(out_corners[k]) == a) {
-                twin = out_corners[k];
-                ++opposite;
-            }
+        const auto [same, opposite, twin] = twins(a, b);
         if (same + opposite > 2)
             throw NonManifoldInput(edge_name(a, b) + " is shared by " + std::to_string(same + opposite) +
                              " faces (non-manifold edge; first seen in " + src.describe_face(conn.corner_face[c]) + ")");

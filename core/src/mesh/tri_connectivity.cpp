@@ -4,6 +4,7 @@
 
 #include "crossdiv/error.h"
 #include "one_ring_starts.h"
+#include "twin_search.h"
 
 namespace crossdiv {
 namespace {
@@ -58,12 +59,10 @@ TriConnectivity build_tri_connectivity(const TriMesh& mesh) {
     conn.edge_corner.reserve(static_cast<size_t>(3) * nf / 2 + 16);  // closed: exactly 3F/2
     conn.edge_vertices.reserve(static_cast<size_t>(3) * nf / 2 + 16);
 
+    const detail::TwinSearch twins(out_start, out_corners, head);
     for (int c = 0; c < 3 * nf; ++c) {
         const int a = T[c / 3][c % 3], b = head(c);
-        int same = 0, twin = -1, opposite = 0;
-        for (int k = out_start[a]; k < out_start[a + 1]; ++k) same += head(out_corners[k]) == b;
-        for (int k = out_start[b]; k < out_start[b + 1]; ++k)
-            if (head(out_corners[k]) == a) { twin = out_corners[k]; ++opposite; }
+        const auto [same, opposite, twin] = twins(a, b);
         if (same + opposite > 2)
             throw NonManifoldInput(edge_name(a, b) + " is shared by " + std::to_string(same + opposite) +
                              " triangles (non-manifold edge; first seen in " + src.describe_face(c / 3) + ")");

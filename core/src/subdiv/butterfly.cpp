@@ -1,6 +1,8 @@
 #include "crossdiv/subdiv/butterfly.h"
 
 #include <climits>
+#include <cmath>
+#include <numbers>
 #include <string>
 
 #include "crossdiv/error.h"
@@ -42,7 +44,12 @@ public:
     /// Zorin's K-point stencil around endpoint v of the edge of corner c_out (v -> w), scaled.
     void extraordinary(int c_out, double scale) {
         const int v = conn_.corner_vertex[c_out], K = valence_[v];
-        const std::vector<double> s = modified_butterfly_stencil(K);
+        if (K > kFourierValence) {
+            by_fourier_sums(c_out, scale);
+            return;
+        }
+        std::vector<double>& s = stencil_by_valence_[K];
+        if (s.empty()) s = modified_butterfly_stencil(K);
         int j = 0;
         for (int c = c_out;;) {
             st_.add(conn_.head(c), scale * s[j++]);
@@ -50,6 +57,60 @@ public:
             if (c == c_out) break;
         }
         st_.add(v, scale * s[K]);
+    }
+
+private:
+    /// Above this valence the K-point stencil is stated through its Fourier sums: K edges
+    /// each reading K neighbours would make O(K^2) terms (146 s and 24 GB at K = 100000).
+    static constexpr int kFourierValence = 32;
+
+    /// The K-point stencil of edge i around v (its other endpoint the i-th neighbour p_i
+    /// of v's ring) is sum_m s_(m-i) p_m + s_K v with s_j = (1/4 + cos(j t) + 1/2 cos(2 j t)) / K,
+    /// t = 2 pi / K; expanding cos((m - i) t) = cos(m t) cos(i t) + sin(m t) sin(i t) makes it
+    /// five sums over the ring, each weighted by cos or sin of i t or 2 i t: auxiliary points
+    /// of the stencil table, made once per vertex.
+    void by_fourier_sums(int c_out, double scale) {
+        const int v = conn_.corner_vertex[c_out], K = valence_[v];
+        const int sums = fourier_sums(v);
+        const double t = 2.0 * std::numbers::pi * ring_index_[c_out] / K;
+        st_.add_auxiliary(sums, scale);
+        st_.add_auxiliary(sums + 1, scale * std::cos(t));
+        st_.add_auxiliary(sums + 2, scale * std::sin(t));
+        st_.add_auxiliary(sums + 3, scale * std::cos(2.0 * t));
+        st_.add_auxiliary(sums + 4, scale * std::sin(2.0 * t));
+        st_.add(v, scale * self_weight_[v]);
+    }
+
+    /// The first of v's five auxiliary points (sum of p_m / 4K, of cos(m t) p_m / K and
+    /// sin(m t) p_m / K, of cos(2 m t) p_m / 2K and sin(2 m t) p_m / 2K); made on first use,
+    /// with each outgoing corner's ring position m.
+    int fourier_sums(int v) {
+        if (fourier_first_.empty()) {
+            fourier_first_.assign(valence_.size(), -1);
+            self_weight_.assign(valence_.size(), 0.0);
+            ring_index_.assign(conn_.corner_vertex.size(), -1);
+        }
+        if (fourier_first_[v] >= 0) return fourier_first_[v];
+        const int K = valence_[v];
+        ring_.clear();
+        for (int c = conn_.vertex_corner[v];;) {
+            ring_index_[c] = static_cast<int>(ring_.size());
+            ring_.push_back(conn_.head(c));
+            c = conn_.next_around_vertex(c);
+            if (c == conn_.vertex_corner[v]) break;
+        }
+        const double t = 2.0 * std::numbers::pi / K;
+        const auto sum = [&](auto weight) {
+            for (int m = 0; m < K; ++m) st_.add_auxiliary_term(ring_[m], weight(m * t) / K);
+            return st_.end_auxiliary();
+        };
+        const int first = sum([](double) { return 0.25; });
+        sum([](double a) { return std::cos(a); });
+        sum([](double a) { return std::sin(a); });
+        sum([](double a) { return 0.5 * std::cos(2.0 * a); });
+        sum([](double a) { return 0.5 * std::sin(2.0 * a); });
+        self_weight_[v] = modified_butterfly_stencil(K)[static_cast<size_t>(K)];
+        return fourier_first_[v] = first;
     }
 
 private:
@@ -75,6 +136,11 @@ private:
     const std::vector<int>& valence_;
     ButterflyWings wings_;
     StencilTable& st_;
+    std::vector<std::vector<double>> stencil_by_valence_ = std::vector<std::vector<double>>(kFourierValence + 1);
+    std::vector<int> fourier_first_;  ///< per vertex, -1 until its sums are made; empty when none is
+    std::vector<double> self_weight_;  ///< per vertex, the K-point stencil's weight on the vertex
+    std::vector<int> ring_index_;      ///< per corner, its head's position in its vertex's ring
+    std::vector<int> ring_;            ///< the ring being walked
 };
 
 }  // namespace

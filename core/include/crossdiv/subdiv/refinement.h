@@ -13,6 +13,10 @@
 /// coarse vertices, num_coarse + r is refined row r, which must itself read coarse vertices
 /// only. Rows reading only coarse vertices are evaluated first, then the others, so the
 /// output order (old vertices first, as every library numbers them) is free.
+/// Stencils may also read auxiliary points: sums of coarse vertices that are no vertex of the
+/// refined mesh, evaluated before any row. They let a rule whose every row around a vertex
+/// of valence K reads all K neighbours be stated in O(K) terms instead of O(K^2) (the
+/// modified Butterfly's K-point stencil, through its Fourier sums; butterfly.cpp).
 /// Each row is summed in the order given, as sum_k w_k p_k starting from zero -- OpenSubdiv's
 /// Clear/AddWithWeight -- so that a scheme that states its mask in the library's order
 /// reproduces the library's rounding.
@@ -38,6 +42,18 @@ public:
     void add_refined(int row, double weight) {
         add(num_coarse_ + row, weight);
         current_reads_refined_ = true;
+    }
+    /// Adds a term reading auxiliary point `point` (see add_auxiliary_term).
+    void add_auxiliary(int point, double weight) { add(-1 - point, weight); }
+    /// Adds a coarse vertex to the auxiliary point being built.
+    void add_auxiliary_term(int coarse, double weight) {
+        aux_source_.push_back(coarse);
+        aux_weight_.push_back(weight);
+    }
+    /// Closes the auxiliary point being built; returns its index.
+    int end_auxiliary() {
+        aux_start_.push_back(static_cast<int>(aux_source_.size()));
+        return static_cast<int>(aux_start_.size()) - 2;
     }
     /// Closes the current row; returns its index.
     int end_row() {
@@ -74,6 +90,12 @@ private:
     std::vector<double> weight_;
     std::vector<bool> reads_refined_;
     bool current_reads_refined_ = false;
+    std::vector<int> aux_start_{0};  ///< auxiliary points in compressed-row form, coarse terms only
+    std::vector<int> aux_source_;
+    std::vector<double> aux_weight_;
+
+    /// The auxiliary points' values.
+    std::vector<Vec3> auxiliary_values(const std::vector<Vec3>& coarse) const;
 };
 
 /// One level of a scheme as data: the refined faces (compressed rows, as PolyMesh) and the
