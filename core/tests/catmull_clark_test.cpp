@@ -49,7 +49,7 @@ TEST(PolyConnectivity, SquareBoundaryWalkStartsWhereTheBoundaryComesIn) {
 }
 
 TEST(PolyConnectivity, APyramidOverAHundredGonIsClosed) {
-    // Apex 0 of valence 100 (searched by bisection) over the base polygon 1..100: 2 * 100
+    // Apex 0 of valence 100 over the base polygon 1..100: 2 * 100
     // edges, each corner's twin leaves the corner's head and is twinned back.
     const int n = 100;
     PolyMesh m;

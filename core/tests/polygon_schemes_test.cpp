@@ -177,6 +177,31 @@ TEST(DooSabin, SquareBoundaryIsChaikinsCornerCutting) {
     EXPECT_EQ(dropped.num_faces(), 1);
 }
 
+TEST(DooSabin, APolygonOfManySidesTakesItsCornerPointsThroughFourierSums) {
+    // Above 32 sides the corner points are stated through three sums over the face: against
+    // the published weights summed term by term, within 1e-14 of the polygon's size: either
+    // side sums n terms, whose rounding grows about as sqrt(n) eps (7e-15 at n = 1000). One
+    // polygon of n sides, its corner points the first n rows.
+    for (const int n : {33, 100, 1000}) {
+        PolyMesh m;
+        std::vector<int> face;
+        for (int k = 0; k < n; ++k) {
+            const double a = 2 * M_PI * k / n;
+            m.positions.push_back(Vec3((1 + 0.3 * std::cos(2 * a)) * std::cos(a), std::sin(a), 0.2 * std::sin(3 * a)));
+            face.push_back(k);
+        }
+        m.add_face(face);
+        const PolyMesh r = doo_sabin_subdivide(m, {DooSabinBoundary::ChaikinBoundary}, 1);
+        double worst = 0;
+        for (int i = 0; i < n; ++i) {
+            Vec3 expected = Vec3::Zero();
+            for (int k = 0; k < n; ++k) expected += doo_sabin_weight(n, k) * m.positions[static_cast<size_t>((i + k) % n)];
+            worst = std::max(worst, (r.positions[static_cast<size_t>(i)] - expected).norm());
+        }
+        EXPECT_LE(worst, 1e-14) << "n = " << n;
+    }
+}
+
 // ---- Butterflies --------------------------------------------------------------------------
 
 TEST(ButterflyMask, ZorinStencilsSumToOne) {
@@ -260,7 +285,8 @@ TEST(Butterfly, APoleOfLargeValenceTakesTheKPointStencilThroughItsFourierSums) {
     // Bicones whose poles have valence K above the direct stencil's limit (32), a rim
     // that wobbles so that every Fourier sum matters. Each edge point against Zorin's K-point
     // stencils summed term by term around both endpoints (the rim vertices have valence 4),
-    // half each: within 1e-14 of the mesh's size, which is a few roundings of K-term sums.
+    // half each: within 1e-14 of the mesh's size, as either side sums K terms, whose rounding
+    // grows about as sqrt(K) eps (7e-15 at K = 1000).
     for (const int K : {33, 64, 360, 1000}) {
         PolyMesh m;
         m.positions.push_back(Vec3(0.1, -0.05, 0.7));

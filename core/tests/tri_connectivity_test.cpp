@@ -84,11 +84,10 @@ std::vector<Triangle> bicone(int n) {
 }
 
 TEST(TriConnectivity, APoleOfHighValenceGetsTheTablesOfAFan) {
-    // Valence 100: above the scan limit, so the pole is searched by bisection. By hand:
+    // Valence 100. By hand:
     // triangle k's edge 0 (0 -> 1+k) is edge 2 of triangle k-1, its edge 1 (the rim) is edge
     // 1 of cap triangle n+k, its edge 2 (1+k+1 -> 0) is edge 0 of triangle k+1.
     const int n = 100;
-    static_assert(100 > 32, "above TwinSearch::kScanLimit");
     const TriConnectivity c = build_tri_connectivity(mesh_of(n + 2, bicone(n)));
     ASSERT_EQ(c.num_edges(), 3 * n);
     for (int k = 0; k < n; ++k) {

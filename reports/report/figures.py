@@ -155,6 +155,25 @@ def timing(records, figdir):
     return save(fig, figdir, "timing.png")
 
 
+def valence_times(rows, figdir):
+    """Log-log time against k on each shape, one line per command, the regular mesh dashed."""
+    shapes = list(dict.fromkeys(r["shape"] for r in rows))
+    fig, axes = plt.subplots(1, len(shapes), figsize=(4.2 * len(shapes), 3.8), squeeze=False)
+    for ax, shape in zip(axes[0], shapes):
+        for i, command in enumerate(dict.fromkeys(r["command"] for r in rows if r["shape"] == shape)):
+            pts = sorted((r["valence"], r["ms"], r["regular_ms"]) for r in rows
+                         if r["shape"] == shape and r["command"] == command)
+            color = f"C{i}"
+            ax.loglog([p[0] for p in pts], [p[1] for p in pts], marker="o", color=color, label=command)
+            ax.loglog([p[0] for p in pts], [p[2] for p in pts], linestyle="--", color=color, alpha=0.6)
+        ax.set_xlabel("valence k (polygon: sides)")
+        ax.set_ylabel("median time (ms)")
+        ax.set_title(f"{shape} (solid) and its regular mesh (dashed)", fontsize=8)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=6)
+    return save(fig, figdir, "valence_times.png")
+
+
 def surface_convergence(tables, figdir):
     fig, ax = plt.subplots(figsize=(5, 3.6))
     for key, err in (("sphere", "radial_error"), ("torus", "distance_error")):

@@ -302,20 +302,34 @@ def halfedge_section(cases):
 
 def timing_section(bench, figdir):
     s = Section("Timing")
-    records = (bench or {}).get("records", [])
-    if not records:
+    records = (bench or {}).get("records") or []
+    valence = ((bench or {}).get("valence") or {}).get("rows") or []
+    if not records and not valence:
         return s.add(Text("No bench.json in this folder: run `crossdiv bench --out DIR` to add the timing section."))
-    core = {(r["input"], r["levels"]): r["median_ms"] for r in records if r["impl"] == "core"}
-    s.add(Text(f"`crossdiv bench`: median of {bench.get('repeats', '?')} runs, single thread, ratio = time / core time on "
-               f"the same input (above 1: slower than core). {bench.get('note', '')}"),
-          Figure(figures.timing(records, figdir), "timing"),
-          Table(["input", "levels", "impl", "input faces", "output faces", "median ms", "ratio to core", "peak RSS MB"],
-                [(r["input"], r["levels"], r["impl"], r["input_faces"], r["output_faces"], fmt(r["median_ms"], ".2f"),
-                  fmt(r["median_ms"] / core[(r["input"], r["levels"])], ".2f") if core.get((r["input"], r["levels"])) else "-",
-                  fmt(r.get("peak_rss_mb"), ".0f")) for r in records]))
-    if bench.get("goal"):
-        g = bench["goal"]
-        s.add(Text(f"Goal: core at least {g['target_ratio']}x faster than the fastest reference on {g['input']} at "
-                   f"{g['levels']} levels: measured {fmt(g['ratio'], '.2f')}x (fastest reference "
-                   f"{g['fastest_reference']}) - {'met' if g['met'] else 'NOT met'}."))
+    if records:
+        core = {(r["input"], r["levels"]): r["median_ms"] for r in records if r["impl"] == "core"}
+        s.add(Text(f"`crossdiv bench`: median of {bench.get('repeats', '?')} runs, single thread, ratio = time / core time on "
+                   f"the same input (above 1: slower than core). {bench.get('note', '')}"),
+              Figure(figures.timing(records, figdir), "timing"),
+              Table(["input", "levels", "impl", "input faces", "output faces", "median ms", "ratio to core", "peak RSS MB"],
+                    [(r["input"], r["levels"], r["impl"], r["input_faces"], r["output_faces"], fmt(r["median_ms"], ".2f"),
+                      fmt(r["median_ms"] / core[(r["input"], r["levels"])], ".2f") if core.get((r["input"], r["levels"])) else "-",
+                      fmt(r.get("peak_rss_mb"), ".0f")) for r in records]))
+        if bench.get("goal"):
+            g = bench["goal"]
+            s.add(Text(f"Goal: core at least {g['target_ratio']}x faster than the fastest reference on {g['input']} at "
+                       f"{g['levels']} levels: measured {fmt(g['ratio'], '.2f')}x (fastest reference "
+                       f"{g['fastest_reference']}) - {'met' if g['met'] else 'NOT met'}."))
+    if valence:
+        worst = max(valence, key=lambda r: r["ratio"])
+        goal = bench["valence"]["goal_ratio"]
+        s.add(Text("Valence: each command on a vertex of valence k (a bicone's two poles, a disc fan's centre) or on "
+                   "one polygon of k sides, against a regular mesh of as many corners; ratio of the times per unit of "
+                   f"size (check: input corners; a scheme: output vertices + faces). Goal: every ratio <= {goal}; largest "
+                   f"{fmt(worst['ratio'], '.2f')} ({worst['command']} on the {worst['shape']} of k = {worst['valence']})"
+                   f" - {'met' if worst['ratio'] <= goal else 'NOT met'}."),
+              Figure(figures.valence_times(valence, figdir), "valence times"),
+              Table(["shape", "k", "command", "size", "ms", "regular size", "regular ms", "ratio"],
+                    [(r["shape"], r["valence"], r["command"], r["size"], fmt(r["ms"], ".2f"), r["regular_size"],
+                      fmt(r["regular_ms"], ".2f"), fmt(r["ratio"], ".2f")) for r in valence]))
     return s

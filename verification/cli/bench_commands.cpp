@@ -4,12 +4,14 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
 #include "command.h"
 #include "crossdiv/verification/harness/json_text.h"
 #include "crossdiv/verification/bench/bench.h"
+#include "crossdiv/verification/bench/valence_bench.h"
 #include "curve_commands.h"
 #include "suite_commands.h"
 #include "surface_commands.h"
@@ -19,16 +21,69 @@ namespace {
 
 using namespace crossdiv::verification;
 
-int run_bench_command(const std::string& json_path, const std::string& out_dir, int repeats, bool quick, bool cold) {
+/// The valence rows: each command on a pole, a fan and a big polygon against a regular mesh.
+nlohmann::json print_valence_bench(const std::vector<int>& valences, int repeats) {
+    fmt::print("\nValence: each command on a vertex of valence k (or a polygon of k sides) against a regular mesh of "
+               "as many corners, median of {} runs; ratio of the times per unit of size (check: input corners, a "
+               "scheme: output vertices + faces)\n",
+               repeats);
+    fmt::print("{:<9} {:>7} {:<19} {:>9} {:>10} {:>9} {:>11} {:>7}\n", "shape", "k", "command", "size", "ms",
+               "reg. size", "regular ms", "ratio");
+    const std::vector<ValenceRow> rows = run_valence_bench(valences, repeats);
+    nlohmann::json out = nlohmann::json::array();
+    double worst = 0;
+    std::string worst_row;
+    for (const ValenceRow& r : rows) {
+        fmt::print("{:<9} {:>7} {:<19} {:>9} {:>10.2f} {:>9} {:>11.2f} {:>7.2f}\n", datasets::to_string(r.shape),
+                   r.valence, r.command, r.size, r.ms, r.regular_size, r.regular_ms, r.ratio());
+        out.push_back(to_json(r));
+        if (!(r.ratio() <= worst)) {
+            worst = r.ratio();
+            worst_row = fmt::format("{} on the {} of k = {}", r.command, datasets::to_string(r.shape), r.valence);
+        }
+    }
+    fmt::print("goal: every ratio <= {}: {} (largest {:.2f}, {})\n", kValenceRatioGoal,
+               worst <= kValenceRatioGoal ? "met" : "NOT met", worst, worst_row);
+    std::fflush(stdout);
+    return {{"goal_ratio", kValenceRatioGoal}, {"rows", out}};
+}
+
+/// The sections `crossdiv bench` runs, each by name.
+inline constexpr const char* kBenchSections[] = {"loop", "valence", "curves", "sweep"};
+
+struct BenchArgs {
+    std::string json, out;
+    int repeats = 5;
+    bool quick = false, cold = false;
+    std::vector<std::string> only;  ///< sections to run; every one when empty
+    std::vector<int> valences;      ///< the valence rows' k; kBenchValences when empty
+    void add_to(CLI::App& app) {
+        app.add_option("--json", json, "Write the records to this JSON file");
+        app.add_option("--out", out, "Suite output folder: write bench.json there and re-render its report");
+        app.add_option("--repeats", repeats, "Timed runs per measurement")->check(CLI::Range(1, 64))->capture_default_str();
+        app.add_flag("--quick", quick, "Two mesh sizes only (320 and 20000 faces), valence 1000 only");
+        app.add_flag("--cold", cold, "Return freed memory to the kernel between repeats (page faults counted)");
+        app.add_option("--only", only, "Run only these sections (loop, valence, curves, sweep)")
+            ->check(CLI::IsMember(std::vector<std::string>(std::begin(kBenchSections), std::end(kBenchSections))));
+        app.add_option("--valences", valences, "The valence rows' valences (default 1000 10000 100000)")
+            ->check(CLI::Range(3, 10000000));
+    }
+    bool runs(const std::string& section) const {
+        return only.empty() || std::find(only.begin(), only.end(), section) != only.end();
+    }
+};
+
+/// The Loop rows: core against each reference on tori of growing size.
+nlohmann::json print_loop_bench(const BenchArgs& a, std::optional<BenchGoal>& goal) {
     const LoopOptions options{LoopWeights::Loop, LoopBoundary::EdgeOnly};
-    const std::vector<BenchInput> inputs = default_bench_inputs(quick);
-    fmt::print("Loop (weights=loop boundary=edge-only), single thread, median of {} runs after one warm-up{}\n", repeats,
-               cold ? ", freed memory returned to the kernel (cold)" : ", freed memory kept (warm)");
+    const std::vector<BenchInput> inputs = default_bench_inputs(a.quick);
+    fmt::print("Loop (weights=loop boundary=edge-only), single thread, median of {} runs after one warm-up{}\n", a.repeats,
+               a.cold ? ", freed memory returned to the kernel (cold)" : ", freed memory kept (warm)");
     fmt::print("{:<12} {:>6} {:<11} {:>11} {:>12} {:>10} {:>9} {:>8}\n", "input", "levels", "impl", "input faces",
                "output faces", "median ms", "x core", "RSS MB");
     std::vector<BenchRecord> records;
     for (const BenchInput& in : inputs) {
-        std::vector<BenchRecord> r = run_bench({in}, options, repeats, cold);
+        std::vector<BenchRecord> r = run_bench({in}, options, a.repeats, a.cold);
         const double core_ms = r.front().median_ms;
         for (const BenchRecord& b : r) {
             if (b.status != "ok")
@@ -40,48 +95,45 @@ int run_bench_command(const std::string& json_path, const std::string& out_dir, 
         std::fflush(stdout);
         records.insert(records.end(), r.begin(), r.end());
     }
-    const std::optional<BenchGoal> goal = bench_goal(records);
+    goal = bench_goal(records);
     if (goal)
         fmt::print("\ngoal: core {:.2f}x faster than the fastest reference ({}) on {} at 2 levels ({} output faces, "
                    "core peak RSS {:.0f} MB): {} (target {}x)\n",
                    goal->ratio, goal->fastest_reference, goal->input, goal->output_faces, goal->core_peak_rss_mb,
                    goal->met() ? "met" : "NOT met", kBenchGoalRatio);
-    const nlohmann::json curves = run_curve_bench(repeats);
-    const nlohmann::json surfaces = run_surface_bench();
     nlohmann::json recs = nlohmann::json::array();
     for (const BenchRecord& r : records) recs.push_back(to_json(r));
-    const nlohmann::json doc = {{"tool", "crossdiv bench"}, {"repeats", repeats}, {"memory", cold ? "cold" : "warm"},
-                                {"goal", goal ? to_json(*goal) : nlohmann::json(nullptr)}, {"records", recs}, {"curves", curves["tessellation"]},
-                                {"curve_timing", curves["timing"]}, {"adaptive_sweep", surfaces},
+    return recs;
+}
+
+int bench_command(const BenchArgs& a) {
+    std::optional<BenchGoal> goal;
+    const nlohmann::json null;
+    const nlohmann::json loop = a.runs("loop") ? print_loop_bench(a, goal) : null;
+    std::vector<int> valences = a.valences;
+    if (valences.empty()) valences.assign(std::begin(kBenchValences), a.quick ? std::begin(kBenchValences) + 1 : std::end(kBenchValences));
+    const nlohmann::json valence = a.runs("valence") ? print_valence_bench(valences, a.repeats) : null;
+    const nlohmann::json curves = a.runs("curves") ? run_curve_bench(a.repeats) : null;
+    const nlohmann::json surfaces = a.runs("sweep") ? run_surface_bench() : null;
+    const nlohmann::json doc = {{"tool", "crossdiv bench"}, {"repeats", a.repeats}, {"memory", a.cold ? "cold" : "warm"},
+                                {"goal", goal ? to_json(*goal) : null}, {"records", loop}, {"valence", valence},
+                                {"curves", curves.is_null() ? null : curves["tessellation"]},
+                                {"curve_timing", curves.is_null() ? null : curves["timing"]}, {"adaptive_sweep", surfaces},
                                 {"note", "references timed through their native refinement (loop_native), output kept "
                                          "in the library's own structures"}};
     std::vector<std::string> paths;
-    if (!json_path.empty()) paths.push_back(json_path);
-    if (!out_dir.empty()) paths.push_back((std::filesystem::path(out_dir) / "bench.json").string());
+    if (!a.json.empty()) paths.push_back(a.json);
+    if (!a.out.empty()) paths.push_back((std::filesystem::path(a.out) / "bench.json").string());
     for (const std::string& path : paths) {
         const std::filesystem::path p(path);
         if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
         std::ofstream(path) << verification::json_text(doc, 1) << "\n";
         fmt::print("bench results: {}\n", path);
     }
-    if (!out_dir.empty() && std::filesystem::exists(std::filesystem::path(out_dir) / "results.json"))
-        return finish_outputs(out_dir, true);
+    if (!a.out.empty() && std::filesystem::exists(std::filesystem::path(a.out) / "results.json"))
+        return finish_outputs(a.out, true);
     return 0;
 }
-
-struct BenchArgs {
-    std::string json, out;
-    int repeats = 5;
-    bool quick = false, cold = false;
-    void add_to(CLI::App& app) {
-        app.add_option("--json", json, "Write the records to this JSON file");
-        app.add_option("--out", out, "Suite output folder: write bench.json there and re-render its report");
-        app.add_option("--repeats", repeats, "Timed runs per measurement")->check(CLI::Range(1, 64))->capture_default_str();
-        app.add_flag("--quick", quick, "Two mesh sizes only (320 and 20000 faces)");
-        app.add_flag("--cold", cold, "Return freed memory to the kernel between repeats (page faults counted)");
-    }
-};
-int bench_command(const BenchArgs& a) { return run_bench_command(a.json, a.out, a.repeats, a.quick, a.cold); }
 
 }  // namespace
 

@@ -60,18 +60,19 @@ PolyConnectivity build_poly_connectivity(const PolyMesh& mesh) {
     conn.vertex_corner.assign(nv, -1);
     conn.edge_corner.reserve(static_cast<size_t>(nc) / 2 + 16);
     conn.edge_vertices.reserve(static_cast<size_t>(nc) / 2 + 16);
-    const auto head = [&conn](int c) { return conn.head(c); };
-    const detail::TwinSearch twins(out_start, out_corners, head);
+    const detail::EdgeFault fault = detail::find_twins(
+        out_start, out_corners, [&conn](int c) { return conn.head(c); }, [&conn](int c) { return conn.prev[c]; },
+        [&conn](int p) { return conn.corner_vertex[p]; }, conn.twin);
+    if (fault.corner >= 0) {
+        const int c = fault.corner, a = conn.corner_vertex[c], b = conn.head(c);
+        if (fault.same + fault.opposite > 2)
+            throw NonManifoldInput(edge_name(a, b) + " is shared by " + std::to_string(fault.same + fault.opposite) +
+                                   " faces (non-manifold edge; first seen in " + src.describe_face(conn.corner_face[c]) + ")");
+        throw NonManifoldInput(edge_name(a, b) + ": two faces traverse it in the same direction "
+                               "(inconsistent orientation; one of them is " + src.describe_face(conn.corner_face[c]) + ")");
+    }
     for (int c = 0; c < nc; ++c) {
-        const int a = conn.corner_vertex[c], b = conn.head(c);
-        const auto [same, opposite, twin] = twins(a, b);
-        if (same + opposite > 2)
-            throw NonManifoldInput(edge_name(a, b) + " is shared by " + std::to_string(same + opposite) +
-                             " faces (non-manifold edge; first seen in " + src.describe_face(conn.corner_face[c]) + ")");
-        if (same == 2)
-            throw NonManifoldInput(edge_name(a, b) + ": two faces traverse it in the same direction "
-                             "(inconsistent orientation; one of them is " + src.describe_face(conn.corner_face[c]) + ")");
-        conn.twin[c] = twin;
+        const int a = conn.corner_vertex[c], b = conn.head(c), twin = conn.twin[c];
         if (twin < 0 || twin > c) {
             conn.corner_edge[c] = conn.num_edges();
             conn.edge_corner.push_back(c);

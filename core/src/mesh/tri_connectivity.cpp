@@ -59,16 +59,20 @@ TriConnectivity build_tri_connectivity(const TriMesh& mesh) {
     conn.edge_corner.reserve(static_cast<size_t>(3) * nf / 2 + 16);  // closed: exactly 3F/2
     conn.edge_vertices.reserve(static_cast<size_t>(3) * nf / 2 + 16);
 
-    const detail::TwinSearch twins(out_start, out_corners, head);
+    std::vector<int> twins(static_cast<size_t>(3) * nf);
+    const detail::EdgeFault fault = detail::find_twins(
+        out_start, out_corners, head, [](int c) { return c - c % 3 + (c % 3 + 2) % 3; },
+        [&](int p) { return T[p / 3][p % 3]; }, twins);
+    if (fault.corner >= 0) {
+        const int c = fault.corner, a = T[c / 3][c % 3], b = head(c);
+        if (fault.same + fault.opposite > 2)
+            throw NonManifoldInput(edge_name(a, b) + " is shared by " + std::to_string(fault.same + fault.opposite) +
+                                   " triangles (non-manifold edge; first seen in " + src.describe_face(c / 3) + ")");
+        throw NonManifoldInput(edge_name(a, b) + ": two triangles traverse it in the same direction "
+                               "(inconsistent orientation; one of them is " + src.describe_face(c / 3) + ")");
+    }
     for (int c = 0; c < 3 * nf; ++c) {
-        const int a = T[c / 3][c % 3], b = head(c);
-        const auto [same, opposite, twin] = twins(a, b);
-        if (same + opposite > 2)
-            throw NonManifoldInput(edge_name(a, b) + " is shared by " + std::to_string(same + opposite) +
-                             " triangles (non-manifold edge; first seen in " + src.describe_face(c / 3) + ")");
-        if (same == 2)
-            throw NonManifoldInput(edge_name(a, b) + ": two triangles traverse it in the same direction "
-                             "(inconsistent orientation; one of them is " + src.describe_face(c / 3) + ")");
+        const int a = T[c / 3][c % 3], b = head(c), twin = twins[c];
         if (twin >= 0) {
             conn.neighbor_tris[c / 3][c % 3] = twin / 3;
             conn.neighbor_edges[c / 3][c % 3] = twin % 3;

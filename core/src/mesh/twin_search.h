@@ -1,79 +1,66 @@
 #pragma once
 // The twin search both connectivity builders share (tri_connectivity.cpp,
-// poly_connectivity.cpp): for the directed edge a -> b, the corners of b that lead back to a,
-// found among b's outgoing corners, so no edge map is needed.
+// poly_connectivity.cpp): for every directed edge a -> b, the corner of b that leads back to a.
 
-#include <algorithm>
-#include <utility>
 #include <vector>
 
 namespace crossdiv::detail {
 
-/// What the outgoing corners of a and b say about the directed edge a -> b.
-struct TwinMatch {
-    int same = 0;      ///< corners of a heading to b (the edge itself among them)
-    int opposite = 0;  ///< corners of b heading to a
-    int twin = -1;     ///< the last of those (in corner order), -1 when there is none
+/// The first corner, in corner order, whose edge is shared by more than two faces or run the
+/// same way by two of them; corner -1 when there is none.
+struct EdgeFault {
+    int corner = -1;
+    int same = 0;      ///< corners heading the same way along the edge (the corner itself among them)
+    int opposite = 0;  ///< corners heading the other way
 };
 
-/// Outgoing corners of each vertex in compressed-row form (those of v are
-/// out_corners[out_start[v] .. out_start[v+1]), in increasing corner order) and the head of
-/// each corner's outgoing edge. A vertex with few corners is scanned; one with more than
-/// kScanLimit gets a copy of its corners sorted by head and is searched by bisection, so the
-/// cost per edge is O(log valence) at a pole instead of O(valence), which made a fan with
-/// one vertex of valence 100000 take 40 s.
-template <class Head>
-class TwinSearch {
-public:
-    /// Above this many outgoing corners a vertex is searched by bisection; below, a scan of
-    /// a few contiguous ints is faster than the sorted copy's indirection.
-    static constexpr int kScanLimit = 32;
-
-    TwinSearch(const std::vector<int>& out_start, const std::vector<int>& out_corners, const Head& head)
-        : out_start_(out_start), out_corners_(out_corners), head_(head) {
-        const int nv = static_cast<int>(out_start.size()) - 1;
-        for (int v = 0; v < nv; ++v) {
-            if (out_start[v + 1] - out_start[v] <= kScanLimit) continue;
-            if (sorted_at_.empty()) sorted_at_.assign(static_cast<size_t>(nv), -1);
-            sorted_at_[v] = static_cast<int>(sorted_.size());
-            for (int k = out_start[v]; k < out_start[v + 1]; ++k) sorted_.emplace_back(head(out_corners[k]), out_corners[k]);
-            std::sort(sorted_.begin() + sorted_at_[v], sorted_.end());
+/// Fills twin[c] for every corner c (the corner of the opposite half-edge, the last in corner
+/// order when there are several; -1 on a boundary) in O(corners), whatever the valences.
+///
+/// Vertex by vertex: each face at v has one half-edge leaving v (its corner c, to head(c))
+/// and one entering it (incoming(c), from origin(incoming(c))). Tallying both by the
+/// neighbour at their other end, in an array indexed by vertex and stamped with v (so never
+/// cleared), finds each half-edge's twin among the half-edges entering v. Searching each
+/// half-edge's twin among its head's corners instead costs O(valence) per half-edge, which
+/// made a fan with one vertex of valence 100000 take 40 s.
+///
+/// The outgoing corners of v are out_corners[out_start[v] .. out_start[v+1]), in increasing
+/// corner order.
+template <class Head, class Incoming, class Origin>
+EdgeFault find_twins(const std::vector<int>& out_start, const std::vector<int>& out_corners, const Head& head,
+                     const Incoming& incoming, const Origin& origin, std::vector<int>& twin) {
+    struct Tally {
+        int stamp = -1;    ///< the vertex whose half-edges are being tallied
+        int leaving = 0;   ///< its half-edges to this neighbour
+        int entering = 0;  ///< its half-edges from this neighbour
+        int last_entering = -1;
+    };
+    const int nv = static_cast<int>(out_start.size()) - 1;
+    std::vector<Tally> tally(static_cast<size_t>(nv));
+    EdgeFault fault;
+    for (int v = 0; v < nv; ++v) {
+        const int begin = out_start[v], end = out_start[v + 1];
+        const auto at = [&](int u) -> Tally& {
+            Tally& t = tally[static_cast<size_t>(u)];
+            if (t.stamp != v) t = Tally{v, 0, 0, -1};
+            return t;
+        };
+        for (int k = begin; k < end; ++k) ++at(head(out_corners[k])).leaving;
+        for (int k = begin; k < end; ++k) {
+            const int p = incoming(out_corners[k]);
+            Tally& t = at(origin(p));
+            ++t.entering;
+            if (p > t.last_entering) t.last_entering = p;
+        }
+        for (int k = begin; k < end; ++k) {
+            const int c = out_corners[k];
+            const Tally& t = at(head(c));
+            twin[static_cast<size_t>(c)] = t.entering ? t.last_entering : -1;
+            const bool bad = t.leaving + t.entering > 2 || t.leaving == 2;
+            if (bad && (fault.corner < 0 || c < fault.corner)) fault = {c, t.leaving, t.entering};
         }
     }
-
-    TwinMatch operator()(int a, int b) const {
-        TwinMatch m;
-        m.same = count_heading(a, b, nullptr);
-        m.opposite = count_heading(b, a, &m.twin);
-        return m;
-    }
-
-private:
-    /// How many outgoing corners of v head to `to`; the last of them into *last.
-    int count_heading(int v, int to, int* last) const {
-        if (!sorted_at_.empty() && sorted_at_[v] >= 0) {
-            const auto begin = sorted_.begin() + sorted_at_[v];
-            const auto end = begin + (out_start_[v + 1] - out_start_[v]);
-            const auto lo = std::lower_bound(begin, end, std::pair{to, -1});
-            auto hi = lo;
-            while (hi != end && hi->first == to) ++hi;
-            if (last && hi != lo) *last = (hi - 1)->second;
-            return static_cast<int>(hi - lo);
-        }
-        int n = 0;
-        for (int k = out_start_[v]; k < out_start_[v + 1]; ++k)
-            if (head_(out_corners_[k]) == to) {
-                ++n;
-                if (last) *last = out_corners_[k];
-            }
-        return n;
-    }
-
-    const std::vector<int>& out_start_;
-    const std::vector<int>& out_corners_;
-    const Head& head_;
-    std::vector<int> sorted_at_;               ///< start of v's sorted copy, -1 when scanned; empty when none is
-    std::vector<std::pair<int, int>> sorted_;  ///< (head, corner) of the vertices searched by bisection
-};
+    return fault;
+}
 
 }  // namespace crossdiv::detail

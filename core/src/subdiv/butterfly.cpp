@@ -1,12 +1,11 @@
 #include "crossdiv/subdiv/butterfly.h"
 
 #include <climits>
-#include <cmath>
-#include <numbers>
 #include <string>
 
 #include "crossdiv/error.h"
 #include "level_loop.h"
+#include "unit_circle.h"
 
 namespace crossdiv {
 namespace {
@@ -72,21 +71,23 @@ private:
     void by_fourier_sums(int c_out, double scale) {
         const int v = conn_.corner_vertex[c_out], K = valence_[v];
         const int sums = fourier_sums(v);
-        const double t = 2.0 * std::numbers::pi * ring_index_[c_out] / K;
+        const size_t angles = static_cast<size_t>(circle_first_[v]);
+        const int i = ring_index_[c_out];
         st_.add_auxiliary(sums, scale);
-        st_.add_auxiliary(sums + 1, scale * std::cos(t));
-        st_.add_auxiliary(sums + 2, scale * std::sin(t));
-        st_.add_auxiliary(sums + 3, scale * std::cos(2.0 * t));
-        st_.add_auxiliary(sums + 4, scale * std::sin(2.0 * t));
+        st_.add_auxiliary(sums + 1, scale * cosines_[angles + i]);
+        st_.add_auxiliary(sums + 2, scale * sines_[angles + i]);
+        st_.add_auxiliary(sums + 3, scale * cosines_[angles + (2 * i) % K]);
+        st_.add_auxiliary(sums + 4, scale * sines_[angles + (2 * i) % K]);
         st_.add(v, scale * self_weight_[v]);
     }
 
     /// The first of v's five auxiliary points (sum of p_m / 4K, of cos(m t) p_m / K and
     /// sin(m t) p_m / K, of cos(2 m t) p_m / 2K and sin(2 m t) p_m / 2K); made on first use,
-    /// with each outgoing corner's ring position m.
+    /// with each outgoing corner's ring position m and the ring's angles.
     int fourier_sums(int v) {
         if (fourier_first_.empty()) {
             fourier_first_.assign(valence_.size(), -1);
+            circle_first_.assign(valence_.size(), -1);
             self_weight_.assign(valence_.size(), 0.0);
             ring_index_.assign(conn_.corner_vertex.size(), -1);
         }
@@ -99,21 +100,22 @@ private:
             c = conn_.next_around_vertex(c);
             if (c == conn_.vertex_corner[v]) break;
         }
-        const double t = 2.0 * std::numbers::pi / K;
+        const size_t angles = cosines_.size();
+        circle_first_[v] = static_cast<int>(angles);
+        detail::append_unit_circle(K, cosines_, sines_);
         const auto sum = [&](auto weight) {
-            for (int m = 0; m < K; ++m) st_.add_auxiliary_term(ring_[m], weight(m * t) / K);
+            for (int m = 0; m < K; ++m) st_.add_auxiliary_term(ring_[m], weight(m) / K);
             return st_.end_auxiliary();
         };
-        const int first = sum([](double) { return 0.25; });
-        sum([](double a) { return std::cos(a); });
-        sum([](double a) { return std::sin(a); });
-        sum([](double a) { return 0.5 * std::cos(2.0 * a); });
-        sum([](double a) { return 0.5 * std::sin(2.0 * a); });
+        const int first = sum([](int) { return 0.25; });
+        sum([&](int m) { return cosines_[angles + m]; });
+        sum([&](int m) { return sines_[angles + m]; });
+        sum([&](int m) { return 0.5 * cosines_[angles + (2 * m) % K]; });
+        sum([&](int m) { return 0.5 * sines_[angles + (2 * m) % K]; });
         self_weight_[v] = modified_butterfly_stencil(K)[static_cast<size_t>(K)];
         return fourier_first_[v] = first;
     }
 
-private:
     /// The wing point c across the edge of corner w (x -> b), -1/16; when that edge is on the
     /// boundary, its stand-in under the wing rule: the reflection x + b - opposite, or
     /// opposite itself, opposite being the edge's third vertex.
@@ -138,6 +140,8 @@ private:
     StencilTable& st_;
     std::vector<std::vector<double>> stencil_by_valence_ = std::vector<std::vector<double>>(kFourierValence + 1);
     std::vector<int> fourier_first_;  ///< per vertex, -1 until its sums are made; empty when none is
+    std::vector<int> circle_first_;   ///< per vertex, where its ring's angles start in cosines_ and sines_
+    std::vector<double> cosines_, sines_;
     std::vector<double> self_weight_;  ///< per vertex, the K-point stencil's weight on the vertex
     std::vector<int> ring_index_;      ///< per corner, its head's position in its vertex's ring
     std::vector<int> ring_;            ///< the ring being walked

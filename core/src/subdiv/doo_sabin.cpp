@@ -5,8 +5,41 @@
 
 #include "crossdiv/error.h"
 #include "level_loop.h"
+#include "unit_circle.h"
 
 namespace crossdiv {
+
+namespace {
+
+/// Above this many sides a face's corner points are stated through its Fourier sums: n
+/// corner points each reading the n vertices would make O(n^2) terms.
+constexpr int kFourierSides = 32;
+
+/// The corner points of an n-gon whose vertices are v[0 .. n-1]. With t = 2 pi / n, corner i
+/// is v_i / 4 + sum_k (3 + 2 cos(k t)) / (4n) v_(i+k); expanding cos((m - i) t) makes it
+/// v_i / 4 + A + cos(i t) C + sin(i t) S, three auxiliary points of the face: A the sum of
+/// 3 v_m / 4n, C and S those of cos(m t) v_m / 2n and sin(m t) v_m / 2n.
+void add_corner_points_by_fourier_sums(StencilTable& st, const int* v, int n, std::vector<double>& cosines,
+                                       std::vector<double>& sines) {
+    cosines.clear();
+    sines.clear();
+    detail::append_unit_circle(n, cosines, sines);
+    for (int m = 0; m < n; ++m) st.add_auxiliary_term(v[m], 3.0 / (4.0 * n));
+    const int mean = st.end_auxiliary();
+    for (int m = 0; m < n; ++m) st.add_auxiliary_term(v[m], cosines[m] / (2.0 * n));
+    const int cosine = st.end_auxiliary();
+    for (int m = 0; m < n; ++m) st.add_auxiliary_term(v[m], sines[m] / (2.0 * n));
+    const int sine = st.end_auxiliary();
+    for (int i = 0; i < n; ++i) {
+        st.add(v[i], 0.25);
+        st.add_auxiliary(mean, 1.0);
+        st.add_auxiliary(cosine, cosines[i]);
+        st.add_auxiliary(sine, sines[i]);
+        st.end_row();
+    }
+}
+
+}  // namespace
 
 RefinementStep doo_sabin_step(const PolyMesh& mesh, const PolyConnectivity& conn, const DooSabinOptions& options) {
     const int nv = mesh.num_vertices(), nf = mesh.num_faces(), ne = conn.num_edges(), nc = conn.num_corners();
@@ -18,9 +51,13 @@ RefinementStep doo_sabin_step(const PolyMesh& mesh, const PolyConnectivity& conn
     st.reserve(static_cast<size_t>(nc) + 2 * static_cast<size_t>(ne), 4 * static_cast<size_t>(nc));
 
     // Corner points: corner c is refined row c. The weights depend on the face size only.
-    std::vector<double> weights;
+    std::vector<double> weights, cosines, sines;
     for (int f = 0; f < nf; ++f) {
         const int b = mesh.face_start[f], n = mesh.face_size(f);
+        if (n > kFourierSides) {
+            add_corner_points_by_fourier_sums(st, &conn.corner_vertex[b], n, cosines, sines);
+            continue;
+        }
         weights.resize(static_cast<size_t>(n));
         for (int k = 0; k < n; ++k) weights[k] = doo_sabin_weight(n, k);
         for (int i = 0; i < n; ++i) {

@@ -42,10 +42,8 @@ BenchRecord time_in_child(const Refine& refine, int repeats, bool cold) {
         // virtual machine a first-touch page fault costs microseconds, and returning memory
         // to the kernel between repeats would time the hypervisor instead of the algorithm.
         // The warm-up run pays the faults once; `crossdiv bench --cold` keeps them in.
-        if (!cold) {
-            mallopt(M_MMAP_THRESHOLD, 1 << 30);
-            mallopt(M_TRIM_THRESHOLD, -1);
-        }
+        std::optional<WarmAllocator> warm;
+        if (!cold) warm.emplace();
         ChildReport rep;
         try {
             rep.output_faces = static_cast<long long>(refine());  // warm-up: page faults, caches
@@ -138,6 +136,27 @@ double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     const size_t n = v.size();
     return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+}
+
+WarmAllocator::WarmAllocator() {
+    mallopt(M_MMAP_THRESHOLD, 1 << 30);
+    mallopt(M_TRIM_THRESHOLD, -1);
+}
+
+WarmAllocator::~WarmAllocator() {
+    mallopt(M_MMAP_THRESHOLD, 128 * 1024);  // glibc's defaults
+    mallopt(M_TRIM_THRESHOLD, 128 * 1024);
+    malloc_trim(0);
+}
+
+double median_ms(int repeats, const std::function<void()>& f) {
+    std::vector<double> ms;
+    for (int rep = 0; rep <= repeats; ++rep) {  // rep 0 warms up
+        const auto t0 = std::chrono::steady_clock::now();
+        f();
+        if (rep > 0) ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    }
+    return median(ms);
 }
 
 std::optional<BenchGoal> bench_goal(const std::vector<BenchRecord>& records) {

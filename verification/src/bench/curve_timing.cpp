@@ -1,6 +1,5 @@
 #include "crossdiv/verification/bench/curve_timing.h"
 
-#include <chrono>
 #include <vector>
 
 #include "crossdiv/curves/bezier.h"
@@ -18,21 +17,12 @@ std::optional<CurveTiming> time_curve_evaluation(const CurveRecord& r, const std
     std::vector<double> u;
     for (int k = 0; k < c.num_segments(); ++k)
         for (int j = 0; j < kPerSegment; ++j) u.push_back(k + (j + 0.5) / kPerSegment);
-    const auto median_ms = [&](auto&& f) {
-        std::vector<double> ms;
-        for (int rep = 0; rep <= repeats; ++rep) {  // rep 0 warms up
-            const auto t0 = std::chrono::steady_clock::now();
-            f();
-            if (rep > 0) ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
-        }
-        return median(ms);
-    };
     CurveTiming t{label, reference.name(), c.degree, u.size(), 0, 0, 0};
-    t.core_ms = median_ms([&] {
+    t.core_ms = median_ms(repeats, [&] {
         for (double x : u) t.checksum += chain_jet(c, x).d2.x();
     });
     const SplineKind kind = r.type == CurveType::BSpline ? SplineKind::UniformCubicBSpline : SplineKind::ClampedBezier;
-    t.reference_ms = median_ms([&] { t.checksum += reference.evaluate_spline(kind, r.control, u).d2.back().x(); });
+    t.reference_ms = median_ms(repeats, [&] { t.checksum += reference.evaluate_spline(kind, r.control, u).d2.back().x(); });
     return t;
 }
 

@@ -72,8 +72,8 @@ struct PolyConnectivity {
     BoundaryNeighbors boundary_neighbors(int v) const { return boundary_neighbors(v, fan(v)); }
 };
 
-/// Builds the tables with flat arrays (no edge map), in O(corners) for bounded valence and
-/// O(valence log valence) at each vertex of large valence (detail::TwinSearch).
+/// Builds the tables with flat arrays (no edge map) in O(corners), whatever the valences
+/// (detail::find_twins).
 /// @throws InputError naming the element when the mesh is not a manifold, consistently
 ///         oriented polygon mesh with valid indices: a face with fewer than 3 corners, an
 ///         index out of range, a repeated vertex in a face, an edge shared by more than two

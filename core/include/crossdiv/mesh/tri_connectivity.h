@@ -50,8 +50,8 @@ struct TriConnectivity {
     }
 };
 
-/// Builds the connectivity tables with flat arrays (no edge map), in O(corners) for bounded
-/// valence and O(valence log valence) at each vertex of large valence (detail::TwinSearch).
+/// Builds the connectivity tables with flat arrays (no edge map) in O(corners), whatever the
+/// valences (detail::find_twins).
 /// @throws InputError naming the element when the mesh is not a manifold, consistently
 ///         oriented triangle mesh with valid indices: index out of range, repeated vertex in a
 ///         triangle, edge shared by more than two triangles, two triangles that disagree on

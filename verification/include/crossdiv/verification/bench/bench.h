@@ -5,10 +5,12 @@
 /// single thread, each (input, levels, implementation) in its own child process so that its
 /// peak resident memory can be read from the kernel (wait4's ru_maxrss).
 
-#include <nlohmann/json.hpp>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "crossdiv/mesh/tri_mesh.h"
 #include "crossdiv/subdiv/loop_mask.h"
@@ -49,6 +51,21 @@ nlohmann::json to_json(const BenchRecord& r);
 /// The median of timings: the middle one, or the mean of the two middle ones (every timing of
 /// the bench, Loop and curves alike, is summarised by this one definition).
 double median(std::vector<double> samples);
+
+/// While it lives, glibc keeps freed memory for reuse (no mmap for large blocks, no trim), so
+/// that repeated runs do not pay first-touch page faults again: the bench's warm setting.
+/// Afterwards, glibc's defaults and the memory back to the kernel.
+class WarmAllocator {
+public:
+    WarmAllocator();
+    ~WarmAllocator();
+    WarmAllocator(const WarmAllocator&) = delete;
+    WarmAllocator& operator=(const WarmAllocator&) = delete;
+};
+
+/// The median wall time of `repeats` calls of `f` in this process, in milliseconds, after
+/// one call that warms caches and the allocator up.
+double median_ms(int repeats, const std::function<void()>& f);
 
 /// The performance goal: core Loop at least this many times faster than the fastest
 /// reference on a closed mesh of about 20k faces refined 2 levels.
