@@ -304,7 +304,8 @@ def timing_section(bench, figdir):
     s = Section("Timing")
     records = (bench or {}).get("records") or []
     valence = ((bench or {}).get("valence") or {}).get("rows") or []
-    if not records and not valence:
+    stencils = ((bench or {}).get("stencils") or {}).get("rows") or []
+    if not records and not valence and not stencils:
         return s.add(Text("No bench.json in this folder: run `crossdiv bench --out DIR` to add the timing section."))
     if records:
         core = {(r["input"], r["levels"]): r["median_ms"] for r in records if r["impl"] == "core"}
@@ -320,6 +321,19 @@ def timing_section(bench, figdir):
             s.add(Text(f"Goal: core at least {g['target_ratio']}x faster than the fastest reference on {g['input']} at "
                        f"{g['levels']} levels: measured {fmt(g['ratio'], '.2f')}x (fastest reference "
                        f"{g['fastest_reference']}) - {'met' if g['met'] else 'NOT met'}."))
+    if stencils:
+        goal = bench["stencils"]["goal_ratio"]
+        met = all(r["ratio"] >= goal for r in stencils)
+        s.add(Text("Fixed topology (the animation use): the topology refined once, then a moved frame of the base "
+                   "vertices re-evaluated through core's composed stencils, OpenSubdiv's stencil table (double) and "
+                   "its PrimvarRefiner level by level; ratio = OpenSubdiv's stencil time / core's. Distances over the "
+                   f"bounding-box diagonal. Goal: ratio >= {goal} on every torus - {'met' if met else 'NOT met'}."),
+              Table(["input", "levels", "vertices", "core terms", "OpenSubdiv terms", "core ms", "OpenSubdiv stencils ms",
+                     "OpenSubdiv levels ms", "ratio", "core vs levels", "core vs OpenSubdiv"],
+                    [(r["input"], r["levels"], r["output_vertices"], r["core_terms"], r["opensubdiv_terms"],
+                      fmt(r["core_ms"], ".2f"), fmt(r["opensubdiv_stencils_ms"], ".2f"),
+                      fmt(r["opensubdiv_levels_ms"], ".2f"), fmt(r["ratio"], ".2f"), fmt(r["core_vs_levels"], ".1e"),
+                      fmt(r["core_vs_opensubdiv"], ".1e")) for r in stencils]))
     if valence:
         worst = max(valence, key=lambda r: r["ratio"])
         goal = bench["valence"]["goal_ratio"]

@@ -12,6 +12,9 @@
 #include "crossdiv/verification/harness/json_text.h"
 #include "crossdiv/verification/bench/bench.h"
 #include "crossdiv/verification/bench/valence_bench.h"
+#ifdef CROSSDIV_HAS_OPENSUBDIV
+#include "crossdiv/verification/bench/stencil_bench.h"
+#endif
 #include "curve_commands.h"
 #include "suite_commands.h"
 #include "surface_commands.h"
@@ -49,7 +52,7 @@ nlohmann::json print_valence_bench(const std::vector<int>& valences, int repeats
 }
 
 /// The sections `crossdiv bench` runs, each by name.
-inline constexpr const char* kBenchSections[] = {"loop", "valence", "curves", "sweep"};
+inline constexpr const char* kBenchSections[] = {"loop", "valence", "stencils", "curves", "sweep"};
 
 struct BenchArgs {
     std::string json, out;
@@ -63,7 +66,7 @@ struct BenchArgs {
         app.add_option("--repeats", repeats, "Timed runs per measurement")->check(CLI::Range(1, 64))->capture_default_str();
         app.add_flag("--quick", quick, "Two mesh sizes only (320 and 20000 faces), valence 1000 only");
         app.add_flag("--cold", cold, "Return freed memory to the kernel between repeats (page faults counted)");
-        app.add_option("--only", only, "Run only these sections (loop, valence, curves, sweep)")
+        app.add_option("--only", only, "Run only these sections (loop, valence, stencils, curves, sweep)")
             ->check(CLI::IsMember(std::vector<std::string>(std::begin(kBenchSections), std::end(kBenchSections))));
         app.add_option("--valences", valences, "The valence rows' valences (default 1000 10000 100000)")
             ->check(CLI::Range(3, 10000000));
@@ -72,6 +75,39 @@ struct BenchArgs {
         return only.empty() || std::find(only.begin(), only.end(), section) != only.end();
     }
 };
+
+/// The stencil rows: re-evaluation at fixed topology, core against OpenSubdiv.
+nlohmann::json print_stencil_bench(bool quick, int repeats) {
+#ifdef CROSSDIV_HAS_OPENSUBDIV
+    std::vector<BenchInput> inputs;
+    for (BenchInput& in : default_bench_inputs(quick))
+        if (in.mesh.num_faces() >= 5000 && in.levels >= 2) inputs.push_back(std::move(in));
+    fmt::print("\nFixed topology: a moved frame of the base vertices re-evaluated, median of {} runs; core's composed "
+               "stencils against OpenSubdiv's stencil table (double) and PrimvarRefiner per level\n",
+               repeats);
+    fmt::print("{:<12} {:>6} {:>9} {:>10} {:>10} {:>9} {:>10} {:>10} {:>7} {:>10} {:>10}\n", "input", "levels", "vertices",
+               "core terms", "osd terms", "core ms", "osd st. ms", "osd lv. ms", "ratio", "vs levels", "vs osd");
+    const std::vector<StencilRow> rows = run_stencil_bench(inputs, repeats);
+    nlohmann::json out = nlohmann::json::array();
+    bool met = !rows.empty();
+    for (const StencilRow& r : rows) {
+        fmt::print("{:<12} {:>6} {:>9} {:>10} {:>10} {:>9.2f} {:>10.2f} {:>10.2f} {:>7.2f} {:>10.1e} {:>10.1e}\n", r.input,
+                   r.levels, r.output_vertices, r.core_terms, r.opensubdiv_terms, r.core_ms, r.opensubdiv_stencils_ms,
+                   r.opensubdiv_levels_ms, r.ratio(), r.core_vs_levels, r.core_vs_opensubdiv);
+        out.push_back(to_json(r));
+        met = met && r.ratio() >= kStencilRatioGoal;
+    }
+    fmt::print("goal: core's stencils at least {}x OpenSubdiv's speed on every torus: {}\n", kStencilRatioGoal,
+               met ? "met" : "NOT met");
+    std::fflush(stdout);
+    return {{"goal_ratio", kStencilRatioGoal}, {"rows", out}};
+#else
+    (void)quick;
+    (void)repeats;
+    fmt::print("\nFixed topology: this build has no OpenSubdiv adapter to time against\n");
+    return nullptr;
+#endif
+}
 
 /// The Loop rows: core against each reference on tori of growing size.
 nlohmann::json print_loop_bench(const BenchArgs& a, std::optional<BenchGoal>& goal) {
@@ -113,10 +149,11 @@ int bench_command(const BenchArgs& a) {
     std::vector<int> valences = a.valences;
     if (valences.empty()) valences.assign(std::begin(kBenchValences), a.quick ? std::begin(kBenchValences) + 1 : std::end(kBenchValences));
     const nlohmann::json valence = a.runs("valence") ? print_valence_bench(valences, a.repeats) : null;
+    const nlohmann::json stencils = a.runs("stencils") ? print_stencil_bench(a.quick, a.repeats) : null;
     const nlohmann::json curves = a.runs("curves") ? run_curve_bench(a.repeats) : null;
     const nlohmann::json surfaces = a.runs("sweep") ? run_surface_bench() : null;
     const nlohmann::json doc = {{"tool", "crossdiv bench"}, {"repeats", a.repeats}, {"memory", a.cold ? "cold" : "warm"},
-                                {"goal", goal ? to_json(*goal) : null}, {"records", loop}, {"valence", valence},
+                                {"goal", goal ? to_json(*goal) : null}, {"records", loop}, {"valence", valence}, {"stencils", stencils},
                                 {"curves", curves.is_null() ? null : curves["tessellation"]},
                                 {"curve_timing", curves.is_null() ? null : curves["timing"]}, {"adaptive_sweep", surfaces},
                                 {"note", "references timed through their native refinement (loop_native), output kept "

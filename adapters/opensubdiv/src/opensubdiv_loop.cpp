@@ -1,3 +1,5 @@
+#include <opensubdiv/far/stencilTable.h>
+#include <opensubdiv/far/stencilTableFactory.h>
 #include <opensubdiv/version.h>
 
 #include <memory>
@@ -54,6 +56,49 @@ size_t loop_native(const TriMesh& mesh, const LoopOptions& options, int levels) 
         src = dst;
     }
     return static_cast<size_t>(refiner->GetLevel(levels).GetNumFaces());
+}
+
+struct LoopFrames::Impl {
+    std::unique_ptr<Far::TopologyRefiner> refiner;
+    std::unique_ptr<const Far::StencilTableReal<double>> stencils;
+    int levels = 0;
+    mutable std::vector<Point3> scratch;  ///< every level's vertices, for by_levels
+};
+
+LoopFrames::LoopFrames(const TriMesh& mesh, const LoopOptions& options, int levels) : impl_(std::make_unique<Impl>()) {
+    impl_->refiner = refine_topology(mesh, options, levels, false);
+    impl_->levels = levels;
+    Far::StencilTableFactoryReal<double>::Options o;
+    o.generateIntermediateLevels = false;  // the last level only,
+    o.factorizeIntermediateLevels = true;  // each stencil over the base vertices
+    impl_->stencils.reset(Far::StencilTableFactoryReal<double>::Create(*impl_->refiner, o));
+    impl_->scratch.resize(static_cast<size_t>(impl_->refiner->GetNumVerticesTotal()));
+}
+
+LoopFrames::~LoopFrames() = default;
+
+int LoopFrames::num_stencils() const { return impl_->stencils->GetNumStencils(); }
+
+size_t LoopFrames::num_stencil_terms() const { return impl_->stencils->GetControlIndices().size(); }
+
+void LoopFrames::by_stencils(const std::vector<Vec3>& base, std::vector<Vec3>& out) const {
+    static_assert(sizeof(Vec3) == sizeof(Point3), "a position and Far's primvar are the same three doubles");
+    out.resize(static_cast<size_t>(num_stencils()));
+    impl_->stencils->UpdateValues(reinterpret_cast<const Point3*>(base.data()), reinterpret_cast<Point3*>(out.data()));
+}
+
+void LoopFrames::by_levels(const std::vector<Vec3>& base, std::vector<Vec3>& out) const {
+    Point3* src = impl_->scratch.data();
+    for (size_t v = 0; v < base.size(); ++v) src[v] = {{base[v].x(), base[v].y(), base[v].z()}};
+    const Far::PrimvarRefinerReal<double> primvar(*impl_->refiner);
+    for (int level = 1; level <= impl_->levels; ++level) {
+        Point3* dst = src + impl_->refiner->GetLevel(level - 1).GetNumVertices();
+        primvar.Interpolate(level, src, dst);
+        src = dst;
+    }
+    const int n = impl_->refiner->GetLevel(impl_->levels).GetNumVertices();
+    out.resize(static_cast<size_t>(n));
+    for (int v = 0; v < n; ++v) out[static_cast<size_t>(v)] = src[v].vec();
 }
 
 }  // namespace crossdiv::adapters::opensubdiv

@@ -233,7 +233,11 @@ TriMesh loop_subdivide(const TriMesh& mesh, const LoopOptions& options, int leve
 }
 
 Eigen::SparseMatrix<double> loop_subdivision_matrix(const TriMesh& mesh, const LoopOptions& options) {
-    const TriConnectivity conn = loop_input_connectivity(mesh);
+    return loop_subdivision_matrix(mesh, loop_input_connectivity(mesh), options);
+}
+
+Eigen::SparseMatrix<double> loop_subdivision_matrix(const TriMesh& mesh, const TriConnectivity& conn,
+                                                    const LoopOptions& options) {
     TripletSink sink;
     apply_loop_stencils(mesh, conn, options, sink);
     Eigen::SparseMatrix<double> S(mesh.num_vertices() + conn.num_edges(), mesh.num_vertices());

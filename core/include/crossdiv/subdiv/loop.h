@@ -72,6 +72,10 @@ TriMesh loop_subdivide(const TriMesh& mesh, const LoopOptions& options, int leve
 /// old vertices) with V' = S V. Each row sums to 1.
 /// @throws InputError as LoopRefiner.
 Eigen::SparseMatrix<double> loop_subdivision_matrix(const TriMesh& mesh, const LoopOptions& options);
+/// The same on known connectivity: rows in the order of loop_refine_once(mesh, conn, ...),
+/// as LoopRefiner numbers each level.
+Eigen::SparseMatrix<double> loop_subdivision_matrix(const TriMesh& mesh, const TriConnectivity& conn,
+                                                    const LoopOptions& options);
 
 /// Refines positions (and colors when present) one level on known connectivity.
 TriMesh loop_refine_once(const TriMesh& mesh, const TriConnectivity& conn, const LoopOptions& options);

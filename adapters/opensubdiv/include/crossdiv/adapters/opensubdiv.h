@@ -4,6 +4,7 @@
 /// Far::PrimvarRefinerReal<double>.
 
 #include <array>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -40,6 +41,32 @@ LevelTrace loop(const PolyMesh& mesh, const LoopOptions& options, int levels);
 /// The same refinement in the library's own structures, with nothing converted back: what
 /// `crossdiv bench` times. Returns the number of output faces. @throws as loop().
 size_t loop_native(const TriMesh& mesh, const LoopOptions& options, int levels);
+
+/// Loop at fixed topology, OpenSubdiv's way (what `crossdiv bench` times against core's
+/// ComposedStencils): the topology refined once, then each frame's positions from the base
+/// vertices, either through Far's stencil table (StencilTableFactoryReal<double>, intermediate
+/// levels factorized to the base vertices, StencilTableReal::UpdateValues) or through
+/// PrimvarRefinerReal<double> level by level. Output: the last level's vertices in Far's order.
+class LoopFrames {
+public:
+    /// @throws Rejected as loop().
+    LoopFrames(const TriMesh& mesh, const LoopOptions& options, int levels);
+    ~LoopFrames();
+    LoopFrames(const LoopFrames&) = delete;
+    LoopFrames& operator=(const LoopFrames&) = delete;
+
+    int num_stencils() const;
+    /// Stored weights of the stencil table, summed over its stencils.
+    size_t num_stencil_terms() const;
+    /// The last level through the stencil table.
+    void by_stencils(const std::vector<Vec3>& base, std::vector<Vec3>& out) const;
+    /// The last level through PrimvarRefiner, every level interpolated in turn.
+    void by_levels(const std::vector<Vec3>& base, std::vector<Vec3>& out) const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
 
 /// The Catmull-Clark limit surface of one face of a polygon mesh, evaluated by Bfr
 /// (Bfr::RefinerSurfaceFactory, Surface<double>::Evaluate) at each (u, v). For a quad, u runs

@@ -1,0 +1,73 @@
+#include "crossdiv/verification/bench/stencil_bench.h"
+
+#include <cmath>
+
+#include "crossdiv/adapters/opensubdiv.h"
+#include "crossdiv/subdiv/composed_stencils.h"
+#include "crossdiv/subdiv/loop.h"
+#include "crossdiv/verification/harness/correspondence.h"
+#include "crossdiv/verification/harness/mesh_comparison.h"
+
+namespace crossdiv::verification {
+namespace {
+
+/// A frame: the base vertices moved by a smooth field, as an animation would move them.
+std::vector<Vec3> moved(const std::vector<Vec3>& p) {
+    std::vector<Vec3> out(p.size());
+    for (size_t i = 0; i < p.size(); ++i)
+        out[i] = p[i] + 0.05 * Vec3(std::sin(3 * p[i].y()), std::cos(2 * p[i].z()), std::sin(p[i].x() + p[i].z()));
+    return out;
+}
+
+/// Largest distance between the two over the first one's bounding-box diagonal; ref_to_ours
+/// maps b's vertices to a's (identity when empty). Infinite when the counts differ.
+double largest_relative_distance(const std::vector<Vec3>& a, const std::vector<Vec3>& b, const std::vector<int>& ref_to_ours) {
+    if (a.size() != b.size()) return INFINITY;
+    double worst = 0;
+    for (size_t i = 0; i < b.size(); ++i) {
+        const size_t j = ref_to_ours.empty() ? i : static_cast<size_t>(ref_to_ours[i]);
+        worst = std::max(worst, (a[j] - b[i]).norm());
+    }
+    return worst / bounding_box_diagonal(a);
+}
+
+}  // namespace
+
+std::vector<StencilRow> run_stencil_bench(const std::vector<BenchInput>& inputs, int repeats) {
+    std::vector<StencilRow> rows;
+    const WarmAllocator warm;
+    const LoopOptions options{LoopWeights::Loop, LoopBoundary::EdgeOnly};
+    for (const BenchInput& in : inputs) {
+        const ComposedStencils core = ComposedStencils::loop(in.mesh, options, in.levels);
+        const adapters::opensubdiv::LoopFrames far(in.mesh, options, in.levels);
+        const std::vector<Vec3> frame = moved(in.mesh.positions);
+        std::vector<Vec3> ours, theirs, by_levels;
+        StencilRow r{in.name, in.levels, core.num_rows(), core.num_terms(), far.num_stencil_terms()};
+        r.core_ms = median_ms(repeats, [&] { core.apply(frame, ours); });
+        r.opensubdiv_stencils_ms = median_ms(repeats, [&] { far.by_stencils(frame, theirs); });
+        r.opensubdiv_levels_ms = median_ms(repeats, [&] { far.by_levels(frame, by_levels); });
+        TriMesh moved_mesh = in.mesh;
+        moved_mesh.positions = frame;
+        r.core_vs_levels = largest_relative_distance(ours, loop_subdivide(moved_mesh, options, in.levels).positions, {});
+        const Correspondence c = match_nearest(ours, theirs);
+        r.core_vs_opensubdiv = c.method == MatchMethod::None ? INFINITY : largest_relative_distance(ours, theirs, c.ref_to_ours);
+        rows.push_back(r);
+    }
+    return rows;
+}
+
+nlohmann::json to_json(const StencilRow& r) {
+    return {{"input", r.input},
+            {"levels", r.levels},
+            {"output_vertices", r.output_vertices},
+            {"core_terms", r.core_terms},
+            {"opensubdiv_terms", r.opensubdiv_terms},
+            {"core_ms", r.core_ms},
+            {"opensubdiv_stencils_ms", r.opensubdiv_stencils_ms},
+            {"opensubdiv_levels_ms", r.opensubdiv_levels_ms},
+            {"core_vs_levels", r.core_vs_levels},
+            {"core_vs_opensubdiv", r.core_vs_opensubdiv},
+            {"ratio", r.ratio()}};
+}
+
+}  // namespace crossdiv::verification
