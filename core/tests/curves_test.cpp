@@ -231,6 +231,28 @@ TEST(Tessellation, DistanceModeMeetsItsToleranceWithFewerPointsThanWang) {
     EXPECT_THROW(tessellate_distance(c, std::nan("")), InputError);
 }
 
+TEST(Tessellation, FlatteningEstimateOfAParabolaByHand) {
+    // y = x^2 on [-1, 1]: kappa = 2 / (1 + 4x^2)^(3/2), ds = (1 + 4x^2)^(1/2) dx, so
+    // sqrt(kappa) ds = sqrt(2) (1 + 4x^2)^(-1/4) dx; its integral by Simpson's rule on 10^5
+    // intervals is exact to far below the estimate's 128 trapezoids (error ~1e-5 relative).
+    const BezierChain c = single_bezier(std::vector<Vec3>{v(-1, 1), v(0, -1), v(1, 1)});
+    const int n = 100000;
+    double integral = 0;
+    for (int i = 0; i <= n; ++i) {
+        const double x = -1.0 + 2.0 * i / n, w = (i == 0 || i == n) ? 1 : (i % 2 ? 4 : 2);
+        integral += w * std::sqrt(2.0) * std::pow(1 + 4 * x * x, -0.25);
+    }
+    integral *= (2.0 / n) / 3;
+    const double tol = 1e-4;
+    EXPECT_NEAR(flattening_estimate(c, tol), integral / std::sqrt(8 * tol), 1e-4 * integral / std::sqrt(8 * tol));
+    // The distance mode cuts where the integral says: within tol, with about N* edges (the
+    // parabola's sag over a piece is kappa h^2 / 8 to within its curvature's variation).
+    const Polyline d = tessellate_distance(c, tol);
+    EXPECT_LE(chordal_deviation(c, d).max, tol);
+    EXPECT_LE(d.size() - 1, std::ceil(1.15 * flattening_estimate(c, tol)));
+    EXPECT_THROW(flattening_estimate(c, 0.0), InputError);
+}
+
 TEST(Tessellation, ChordalDeviationOfAParabolaByHand) {
     // y = x^2 on [-1, 1] (control (-1,1), (0,-1), (1,1)); its chord is y = 1, 1 away at x = 0.
     const BezierChain c = single_bezier(std::vector<Vec3>{v(-1, 1), v(0, -1), v(1, 1)});

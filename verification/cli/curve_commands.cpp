@@ -211,7 +211,8 @@ json run_curve_bench(int repeats) {
     for (const std::string& f : datasets::course_curve_files())
         if (f.ends_with("wineglass.swp")) files.emplace_back(f, read_curve_file(f));
     fmt::print("\nCurve tessellation: edges (measured max deviation) per mode at each distance tolerance\n");
-    fmt::print("{:<28} {:>9}  {:>18} {:>18} {:>18} {:>18}\n", "curve", "tol", "uniform", "angle", "distance", "Wang");
+    fmt::print("{:<28} {:>9}  {:>18} {:>18} {:>18} {:>18} {:>8} {:>10}\n", "curve", "tol", "uniform", "angle", "distance",
+               "Wang", "N*", "dist / N*");
     json rows = json::array(), timing = json::array();
     for (const auto& [input, file] : files) {
         for (size_t i = 0; i < file.curves.size(); ++i) {
@@ -222,15 +223,18 @@ json run_curve_bench(int repeats) {
             const double tols[] = {1e-2 * size, 1e-3 * size, 1e-4 * size};
             for (const TessellationRow& row : tessellation_study(r, label, tols)) {
                 auto cell = [](int n, double d) { return fmt::format("{} ({:.2e})", n, d); };
-                fmt::print("{:<28} {:>9.2e}  {:>18} {:>18} {:>18} {:>18}\n", label, row.tol, cell(row.uniform_edges, row.uniform_dev),
+                fmt::print("{:<28} {:>9.2e}  {:>18} {:>18} {:>18} {:>18} {:>8.1f} {:>10.2f}\n", label, row.tol,
+                           cell(row.uniform_edges, row.uniform_dev),
                            row.angle_reached ? cell(row.angle_edges, row.angle_dev) : "cap " + cell(row.angle_edges, row.angle_dev),
-                           cell(row.distance_edges, row.distance_dev), cell(row.wang_edges, row.wang_dev));
+                           cell(row.distance_edges, row.distance_dev), cell(row.wang_edges, row.wang_dev), row.optimal_edges,
+                           row.distance_edges / row.optimal_edges);
                 rows.push_back({{"curve", row.curve}, {"input", input}, {"tol", row.tol}, {"uniform_edges", row.uniform_edges},
                                 {"uniform_steps", row.uniform_steps}, {"uniform_dev", row.uniform_dev},
                                 {"angle_edges", row.angle_edges}, {"angle_dev", row.angle_dev},
                                 {"angle_tol_deg", row.angle_tol_deg}, {"angle_reached", row.angle_reached},
                                 {"distance_edges", row.distance_edges}, {"distance_dev", row.distance_dev},
-                                {"wang_edges", row.wang_edges}, {"wang_dev", row.wang_dev}});
+                                {"wang_edges", row.wang_edges}, {"wang_dev", row.wang_dev},
+                                {"optimal_edges", row.optimal_edges}});
             }
             // Evaluation time: position, d1 and d2 at 1000 parameters per segment, ours vs Eigen.
             if (const std::optional<CurveTiming> t = time_curve_evaluation(r, label, repeats)) timing.push_back(to_json(*t));

@@ -1,6 +1,7 @@
 #include "crossdiv/curves/tessellation.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -155,6 +156,89 @@ double max_turning_angle(std::span<const Vec3> c) {
 /// max_i |p_{i+2} - 2 p_{i+1} + p_i|, the one-step case of wang_intervals. (b) and (c) bound
 /// the distance to the parametrized chord, which bounds the Hausdorff distance by the
 /// projection argument in the header.
+/// An upper bound of max |f| on [0, 1] for the polynomial f with Bezier coefficients b,
+/// tight to 1e-9 relative: branch and bound, halving (de Casteljau) every piece whose hull
+/// bound max |b_i| could still exceed the largest value found at a piece's ends.
+double polynomial_max_bound(std::span<const double> b) {
+    struct Piece {
+        std::array<double, kMaxBezierDegree + 1> c;
+        int depth;
+    };
+    const size_t n = b.size();
+    const auto hull = [n](const Piece& p) {
+        double m = 0;
+        for (size_t i = 0; i < n; ++i) m = std::max(m, std::abs(p.c[i]));
+        return m;
+    };
+    Piece first{};
+    std::copy(b.begin(), b.end(), first.c.begin());
+    double found = std::max(std::abs(b.front()), std::abs(b.back()));
+    double bound = found;  // the largest hull bound of a piece no longer split
+    std::vector<Piece> stack{first};
+    while (!stack.empty()) {
+        Piece p = stack.back();
+        stack.pop_back();
+        const double h = hull(p);
+        if (h <= found * (1 + 1e-9)) continue;
+        if (p.depth >= 40) {
+            bound = std::max(bound, h);
+            continue;
+        }
+        Piece left{}, right{};
+        left.depth = right.depth = p.depth + 1;
+        for (size_t lvl = 0; lvl < n; ++lvl) {
+            left.c[lvl] = p.c[0];
+            right.c[n - 1 - lvl] = p.c[n - 1 - lvl];
+            for (size_t i = 0; i + 1 < n - lvl; ++i) p.c[i] = 0.5 * (p.c[i] + p.c[i + 1]);
+        }
+        found = std::max(found, std::abs(left.c[n - 1]));  // the value at the midpoint
+        stack.push_back(left);
+        stack.push_back(right);
+    }
+    return std::max(found * (1 + 1e-9), bound);
+}
+
+/// (d) For a piece that runs monotonically along its chord (its along-chord Bezier
+/// coefficients nondecreasing within the chord's length, so that no point projects beyond
+/// the chord's ends): the distance to the chord is that to its line, the norm of the
+/// perpendicular part, whose two components (along e1, the direction of the farthest control
+/// point's perpendicular offset, and e2 = u x e1) are polynomials bounded tightly by
+/// polynomial_max_bound; the bound is the root of the sum of their squares. Infinite when the
+/// piece is not monotone.
+double monotone_chord_distance(std::span<const Vec3> c) {
+    const size_t d = c.size() - 1;
+    const Vec3 chord = c.back() - c.front();
+    const double length = chord.norm();
+    if (d < 2 || d > static_cast<size_t>(kMaxBezierDegree) || !(length > 0)) return INFINITY;
+    const Vec3 u = chord / length;
+    // Monotone up to the rounding of the projections (slack), which moves a point's
+    // distance to the chord by no more than the slack added to the bound below.
+    const double slack = 1e-12 * length;
+    double previous = -slack;
+    Vec3 farthest = Vec3::Zero();
+    for (const Vec3& p : c) {
+        const Vec3 r = p - c.front();
+        const double along = r.dot(u);
+        if (along < previous - slack) return INFINITY;
+        previous = std::max(previous, along);
+        const Vec3 perpendicular = r - along * u;
+        if (perpendicular.norm() > farthest.norm()) farthest = perpendicular;
+    }
+    if (previous > length + slack) return INFINITY;
+    if (farthest.norm() == 0) return slack;
+    const Vec3 e1 = farthest.normalized(), e2 = u.cross(e1);
+    std::array<double, kMaxBezierDegree + 1> f1{}, f2{};
+    for (size_t i = 0; i <= d; ++i) {
+        const Vec3 r = c[i] - c.front();
+        f1[i] = r.dot(e1);
+        f2[i] = r.dot(e2);
+    }
+    const double m1 = polynomial_max_bound(std::span<const double>(f1.data(), d + 1));
+    const double m2 = polynomial_max_bound(std::span<const double>(f2.data(), d + 1));
+    // The perpendicular part is computed from rounded coordinates: the slack covers it.
+    return std::sqrt(m1 * m1 + m2 * m2) + slack;
+}
+
 double flatness(std::span<const Vec3> c) {
     const size_t d = c.size() - 1;
     double hull = 0, parametric = 0, second = 0;
@@ -164,7 +248,8 @@ double flatness(std::span<const Vec3> c) {
         parametric = std::max(parametric, (c[i] - l).norm());
         second = std::max(second, (c[i + 1] - 2.0 * c[i] + c[i - 1]).norm());
     }
-    return std::min({hull, (1.0 - std::ldexp(1.0, 1 - static_cast<int>(d))) * parametric, d * (d - 1) / 8.0 * second});
+    return std::min({hull, (1.0 - std::ldexp(1.0, 1 - static_cast<int>(d))) * parametric, d * (d - 1) / 8.0 * second,
+                     monotone_chord_distance(c)});
 }
 
 /// Scratch rows for split_equal, reused across calls so splitting never allocates once they
@@ -189,6 +274,69 @@ void split_equal(std::span<const Vec3> c, int k, std::vector<Vec3>& dest, SplitS
         }
     }
     dest.insert(dest.end(), s.rest.begin(), s.rest.end());
+}
+
+/// Splits `c` at the increasing parameters `breaks` (in (0, 1)) into breaks.size() + 1 pieces
+/// appended to `dest`, peeling each piece off the rest as split_equal does.
+void split_at(std::span<const Vec3> c, std::span<const double> breaks, std::vector<Vec3>& dest, SplitScratch& s) {
+    const size_t n = c.size();
+    s.rest.assign(c.begin(), c.end());
+    s.work.resize(n);
+    double done = 0;  // the rest covers [done, 1]
+    for (const double b : breaks) {
+        const double t = (b - done) / (1.0 - done);
+        std::copy(s.rest.begin(), s.rest.end(), s.work.begin());
+        for (size_t lvl = 0; lvl < n; ++lvl) {
+            dest.push_back(s.work[0]);
+            s.rest[n - 1 - lvl] = s.work[n - 1 - lvl];
+            for (size_t i = 0; i + 1 < n - lvl; ++i) s.work[i] = (1.0 - t) * s.work[i] + t * s.work[i + 1];
+        }
+        done = b;
+    }
+    dest.insert(dest.end(), s.rest.begin(), s.rest.end());
+}
+
+/// Samples of the flattening integral of one segment: cumulative[j] is the integral of
+/// sqrt(kappa) ds over [0, j / kFlatteningSamples] (trapezoids). sqrt(kappa) |c'| is
+/// sqrt(|c' x c''| / |c'|), taken as 0 where c' vanishes (a cusp, where it tends to 0 too).
+constexpr int kFlatteningSamples = 128;
+/// Rounds of re-cutting a segment with kFlatteningGrowth times more pieces before the pieces
+/// still failing the bound are split.
+constexpr int kFlatteningRounds = 12;
+constexpr double kFlatteningGrowth = 1.03;
+void flattening_integral(std::span<const Vec3> c, std::vector<double>& cumulative) {
+    const std::vector<Vec3> d1 = bezier_derivative(c);
+    const std::vector<Vec3> d2 = d1.size() > 1 ? bezier_derivative(d1) : std::vector<Vec3>{Vec3::Zero()};
+    const auto density = [&](double t) {
+        const Vec3 a = bezier_point(d1, t), b = bezier_point(d2, t);
+        const double speed = a.norm();
+        return speed > 0 ? std::sqrt(a.cross(b).norm() / speed) : 0.0;
+    };
+    cumulative.assign(kFlatteningSamples + 1, 0.0);
+    double previous = density(0.0);
+    for (int j = 1; j <= kFlatteningSamples; ++j) {
+        const double next = density(static_cast<double>(j) / kFlatteningSamples);
+        cumulative[j] = cumulative[j - 1] + 0.5 * (previous + next) / kFlatteningSamples;
+        previous = next;
+    }
+}
+
+/// Where a segment is cut into n pieces that hold equal shares of its flattening integral
+/// (interior breaks only). Equal shares are near-optimal for small tol: a chord of length h
+/// on curvature kappa sags kappa h^2 / 8, so a piece holding sqrt(8 tol) of the integral sags
+/// about tol (R. Levien's flattening, after the parabola approximation).
+void flattening_breaks(const std::vector<double>& cumulative, int n, std::vector<double>& breaks) {
+    breaks.clear();
+    const double total = cumulative.back();
+    int j = 0;
+    for (int i = 1; i < n; ++i) {
+        const double target = total * i / n;
+        while (j + 1 < kFlatteningSamples && cumulative[j + 1] < target) ++j;
+        const double span = cumulative[j + 1] - cumulative[j];
+        const double within = span > 0 ? (target - cumulative[j]) / span : 0.0;
+        const double t = (j + std::clamp(within, 0.0, 1.0)) / kFlatteningSamples;
+        if (t > (breaks.empty() ? 0.0 : breaks.back()) && t < 1.0) breaks.push_back(t);
+    }
 }
 
 /// The distance mode on one piece: accept it when flat enough, else split it into
@@ -272,9 +420,47 @@ Polyline tessellate_distance(const BezierChain& chain, double tol) {
     Polyline out;
     std::vector<std::vector<Vec3>> rows;
     SplitScratch scratch;
-    for (int k = 0; k < chain.num_segments(); ++k) refine_distance(chain.segment(k), k, 0.0, 1.0, tol, 0, rows, scratch, out);
+    std::vector<double> cumulative, breaks;
+    std::vector<Vec3> pieces;
+    for (int k = 0; k < chain.num_segments(); ++k) {
+        // Cut where the flattening integral says, then certify each piece (refine_distance
+        // splits any whose bound still exceeds tol).
+        const std::span<const Vec3> c = chain.segment(k);
+        const size_t n = c.size();
+        flattening_integral(c, cumulative);
+        const double estimate = std::ceil(cumulative.back() / std::sqrt(8.0 * tol));
+        int count = static_cast<int>(std::clamp(estimate, 1.0, static_cast<double>(kMaxCurveSamples)));
+        // Where curvature varies within a piece its sag may exceed the estimate's: cut again
+        // with a few percent more pieces (a few rounds), rather than split each failing piece
+        // in two, which would double the count there.
+        for (int round = 0;; ++round) {
+            flattening_breaks(cumulative, count, breaks);
+            pieces.clear();
+            split_at(c, breaks, pieces, scratch);
+            int failing = 0;
+            for (size_t i = 0; i <= breaks.size(); ++i) failing += flatness(std::span<const Vec3>(pieces.data() + i * n, n)) > tol;
+            if (failing == 0 || round == kFlatteningRounds || count >= kMaxCurveSamples) break;
+            count = std::max(count + 1, static_cast<int>(std::ceil(count * kFlatteningGrowth)));
+        }
+        for (size_t i = 0; i <= breaks.size(); ++i) {
+            const double t0 = i == 0 ? 0.0 : breaks[i - 1], t1 = i == breaks.size() ? 1.0 : breaks[i];
+            refine_distance(std::span<const Vec3>(pieces.data() + i * n, n), k, t0, t1, tol, 0, rows, scratch, out);
+        }
+    }
     finish(chain, out);
     return out;
+}
+
+double flattening_estimate(const BezierChain& chain, double tol) {
+    require_segments(chain);
+    if (!std::isfinite(tol) || tol <= 0.0) throw InputError("the flattening estimate needs a positive tolerance, got " + std::to_string(tol));
+    std::vector<double> cumulative;
+    double total = 0;
+    for (int k = 0; k < chain.num_segments(); ++k) {
+        flattening_integral(chain.segment(k), cumulative);
+        total += cumulative.back();
+    }
+    return total / std::sqrt(8.0 * tol);
 }
 
 std::vector<int> wang_intervals(const BezierChain& chain, double tol) {

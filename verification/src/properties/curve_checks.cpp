@@ -291,6 +291,7 @@ std::vector<TessellationRow> tessellation_study(const CurveRecord& r, const std:
         TessellationRow row;
         row.curve = label;
         row.tol = tol;
+        row.optimal_edges = flattening_estimate(c, tol);
         row.uniform_steps = fewest_uniform_steps(c, tol);
         const Polyline u = tessellate_uniform(c, row.uniform_steps);
         row.uniform_edges = u.size() - 1;
@@ -418,7 +419,8 @@ CheckReport check_curve_file(const CurveFile& file, const std::string& input) {
                             {"angle_edges", row.angle_edges}, {"angle_dev", row.angle_dev},
                             {"angle_tol_deg", row.angle_tol_deg}, {"angle_reached", row.angle_reached},
                             {"distance_edges", row.distance_edges}, {"distance_dev", row.distance_dev},
-                            {"wang_edges", row.wang_edges}, {"wang_dev", row.wang_dev}});
+                            {"wang_edges", row.wang_edges}, {"wang_dev", row.wang_dev},
+                            {"optimal_edges", row.optimal_edges}});
         }
     }
     report.tables["tessellation"] = tess;

@@ -64,16 +64,27 @@ Polyline tessellate_angle(const BezierChain& chain, double angle_tol, int max_le
 /// recursion would split to the bottom of the parameter's precision.
 inline constexpr double kMinDistanceTolRelative = 1e-12;
 
-/// Adaptive by distance, with a guarantee: a piece is one edge when an upper bound of its
+/// Adaptive by distance, with a guarantee. Each segment is first cut into pieces holding
+/// equal shares of its flattening integral (of sqrt(kappa) ds), about N* of them (see
+/// flattening_estimate), recut with a few percent more while some piece fails the bound
+/// below; then a piece is one edge when an upper bound of its
 /// distance to its chord (the smaller of: the control points' largest distance from the
-/// chord, as the piece lies in their convex hull; and (1 - 2^(1-d)) max_i |p_i - l_i| against
-/// the uniformly parametrized chord) is at most `tol`. Since the piece also runs continuously
+/// chord, as the piece lies in their convex hull; (1 - 2^(1-d)) max_i |p_i - l_i| against
+/// the uniformly parametrized chord; and, for a piece running monotonically along its chord,
+/// its distance to the chord's line bounded by branch and bound on the Bezier coefficients of
+/// the perpendicular components, tight to 1e-9) is at most `tol`. Since the piece also runs continuously
 /// from one end of the chord to the other, every chord point has a curve point within tol
 /// (project the curve onto the chord): the Hausdorff distance between curve and polyline is
 /// at most tol. Otherwise the piece is split into k = ceil(sqrt(bound / tol)) equal pieces
 /// (the bound falls as 1/k^2), and each is treated the same way.
 /// @throws InputError if tol is not finite or below kMinDistanceTolRelative of the curve.
 Polyline tessellate_distance(const BezierChain& chain, double tol);
+
+/// N* = (integral of sqrt(kappa) ds) / sqrt(8 tol): about the fewest edges of any polyline
+/// with its vertices on the curve within tol of it, for small tol (a chord of length h on
+/// curvature kappa sags kappa h^2 / 8). The integral is summed by trapezoids on 128 samples
+/// per segment. @throws InputError if tol <= 0.
+double flattening_estimate(const BezierChain& chain, double tol);
 
 /// Wang's formula (G. Wang, 1984; as in D. Filip, R. Magedson, R. Markot, "Surface
 /// algorithms using bounds on derivatives", CAGD 3, 1986): n equal parameter steps keep a

@@ -28,6 +28,7 @@ struct TessellationRow {
     int uniform_steps = 0;       ///< per segment
     double angle_tol_deg = 0;    ///< the angle tolerance found; 0 when the 10-level cap stops it first
     bool angle_reached = false;
+    double optimal_edges = 0;    ///< N*, flattening_estimate: about the fewest edges any polyline on the curve needs
 };
 
 /// The study for one spline at each tolerance (absolute). Primitives are not studied.
