@@ -129,14 +129,17 @@ def curve_section(curve_cases, bench, figdir):
     if tess:
         s.add(Text("Tessellation: edges each mode needs for a distance tolerance, with the measured maximum deviation "
                    "(uniform: fewest equal steps per segment found by measuring; angle: largest angle tolerance that "
-                   "meets it; distance: the guaranteed adaptive mode; Wang: the guaranteed uniform count per segment)" +
-                   (" from `crossdiv bench`" if (bench or {}).get("curves") else "") + ":"),
+                   "meets it; distance: the guaranteed adaptive mode; Wang: the guaranteed uniform count per segment; "
+                   "N*: the integral of sqrt(kappa / (8 tol)) ds, about the fewest edges any polyline on the curve "
+                   "needs)" + (" from `crossdiv bench`" if (bench or {}).get("curves") else "") + ":"),
               Table(["curve", "tol", "uniform edges (dev)", "angle edges (dev, tol deg)", "distance edges (dev)",
-                     "Wang edges (dev)"],
+                     "Wang edges (dev)", "N*", "distance / N*"],
                     [(r["curve"], fmt(r["tol"]), f"{r['uniform_edges']} ({fmt(r['uniform_dev'])})",
                       f"{r['angle_edges']} ({fmt(r['angle_dev'])}, {fmt(r['angle_tol_deg'])})" if r["angle_reached"]
                       else f"{r['angle_edges']} (cap: {fmt(r['angle_dev'])})",
-                      f"{r['distance_edges']} ({fmt(r['distance_dev'])})", f"{r['wang_edges']} ({fmt(r['wang_dev'])})")
+                      f"{r['distance_edges']} ({fmt(r['distance_dev'])})", f"{r['wang_edges']} ({fmt(r['wang_dev'])})",
+                      fmt(r.get("optimal_edges"), ".1f"),
+                      fmt(r["distance_edges"] / r["optimal_edges"], ".2f") if r.get("optimal_edges") else "-")
                      for r in tess]))
     closure = [row for c in curve_cases for row in c.get("tables", {}).get("closure", [])]
     if closure:
