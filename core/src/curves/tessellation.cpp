@@ -304,6 +304,8 @@ constexpr int kFlatteningSamples = 128;
 /// still failing the bound are split.
 constexpr int kFlatteningRounds = 12;
 constexpr double kFlatteningGrowth = 1.03;
+/// A piece whose bound is at most this many times tol is a near miss, which recutting fixes.
+constexpr double kNearMiss = 1.25;
 void flattening_integral(std::span<const Vec3> c, std::vector<double>& cumulative) {
     const std::vector<Vec3> d1 = bezier_derivative(c);
     const std::vector<Vec3> d2 = d1.size() > 1 ? bezier_derivative(d1) : std::vector<Vec3>{Vec3::Zero()};
@@ -430,16 +432,21 @@ Polyline tessellate_distance(const BezierChain& chain, double tol) {
         flattening_integral(c, cumulative);
         const double estimate = std::ceil(cumulative.back() / std::sqrt(8.0 * tol));
         int count = static_cast<int>(std::clamp(estimate, 1.0, static_cast<double>(kMaxCurveSamples)));
-        // Where curvature varies within a piece its sag may exceed the estimate's: cut again
-        // with a few percent more pieces (a few rounds), rather than split each failing piece
-        // in two, which would double the count there.
+        // Where curvature varies within a piece its sag may exceed the estimate's: while some
+        // piece misses the bound narrowly, cut again with a few percent more pieces (a few
+        // rounds) rather than split it in two, which would double the count there. A piece far
+        // above the bound (around a cusp, where the curve turns back along its chord) is left
+        // to refine_distance's local splitting: more pieces everywhere would not help it.
         for (int round = 0;; ++round) {
             flattening_breaks(cumulative, count, breaks);
             pieces.clear();
             split_at(c, breaks, pieces, scratch);
-            int failing = 0;
-            for (size_t i = 0; i <= breaks.size(); ++i) failing += flatness(std::span<const Vec3>(pieces.data() + i * n, n)) > tol;
-            if (failing == 0 || round == kFlatteningRounds || count >= kMaxCurveSamples) break;
+            int near_misses = 0;
+            for (size_t i = 0; i <= breaks.size(); ++i) {
+                const double f = flatness(std::span<const Vec3>(pieces.data() + i * n, n));
+                near_misses += f > tol && f <= kNearMiss * tol;
+            }
+            if (near_misses == 0 || round == kFlatteningRounds || count >= kMaxCurveSamples) break;
             count = std::max(count + 1, static_cast<int>(std::ceil(count * kFlatteningGrowth)));
         }
         for (size_t i = 0; i <= breaks.size(); ++i) {
