@@ -155,6 +155,21 @@ def timing(records, figdir):
     return save(fig, figdir, "timing.png")
 
 
+def stencil_times(rows, figdir):
+    """Log-log time per frame against refined vertices, one line per implementation."""
+    fig, ax = plt.subplots(figsize=(6, 4))
+    rows = sorted(rows, key=lambda r: r["output_vertices"])
+    for key, label in (("core_ms", "core composed stencils"), ("opensubdiv_stencils_ms", "OpenSubdiv stencil table"),
+                       ("opensubdiv_levels_ms", "OpenSubdiv PrimvarRefiner levels")):
+        ax.loglog([r["output_vertices"] for r in rows], [r[key] for r in rows], marker="o", label=label)
+    ax.set_xlabel("refined vertices")
+    ax.set_ylabel("median time per frame (ms)")
+    ax.set_title("Re-evaluation at fixed topology (Loop, tori)", fontsize=9)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=7)
+    return save(fig, figdir, "stencil_times.png")
+
+
 def valence_times(rows, figdir):
     """Log-log time against k on each shape, one line per command, the regular mesh dashed."""
     shapes = list(dict.fromkeys(r["shape"] for r in rows))

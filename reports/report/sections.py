@@ -331,6 +331,7 @@ def timing_section(bench, figdir):
                    "vertices re-evaluated through core's composed stencils, OpenSubdiv's stencil table (double) and "
                    "its PrimvarRefiner level by level; ratio = OpenSubdiv's stencil time / core's. Distances over the "
                    f"bounding-box diagonal. Goal: ratio >= {goal} on every torus - {'met' if met else 'NOT met'}."),
+              Figure(figures.stencil_times(stencils, figdir), "stencil times"),
               Table(["input", "levels", "vertices", "core terms", "OpenSubdiv terms", "core ms", "OpenSubdiv stencils ms",
                      "OpenSubdiv levels ms", "ratio", "core vs levels", "core vs OpenSubdiv"],
                     [(r["input"], r["levels"], r["output_vertices"], r["core_terms"], r["opensubdiv_terms"],
