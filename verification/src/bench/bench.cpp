@@ -159,6 +159,19 @@ double median_ms(int repeats, const std::function<void()>& f) {
     return median(ms);
 }
 
+std::vector<double> interleaved_median_ms(int repeats, const std::vector<std::function<void()>>& fs) {
+    std::vector<std::vector<double>> ms(fs.size());
+    for (int rep = 0; rep <= repeats; ++rep)  // rep 0 warms up
+        for (size_t i = 0; i < fs.size(); ++i) {
+            const auto t0 = std::chrono::steady_clock::now();
+            fs[i]();
+            if (rep > 0) ms[i].push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+        }
+    std::vector<double> out;
+    for (std::vector<double>& m : ms) out.push_back(median(std::move(m)));
+    return out;
+}
+
 std::optional<BenchGoal> bench_goal(const std::vector<BenchRecord>& records) {
     std::optional<BenchGoal> goal;
     for (const BenchRecord& core : records) {

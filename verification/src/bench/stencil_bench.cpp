@@ -43,9 +43,12 @@ std::vector<StencilRow> run_stencil_bench(const std::vector<BenchInput>& inputs,
         const std::vector<Vec3> frame = moved(in.mesh.positions);
         std::vector<Vec3> ours, theirs, by_levels;
         StencilRow r{in.name, in.levels, core.num_rows(), core.num_terms(), far.num_stencil_terms()};
-        r.core_ms = median_ms(repeats, [&] { core.apply(frame, ours); });
-        r.opensubdiv_stencils_ms = median_ms(repeats, [&] { far.by_stencils(frame, theirs); });
-        r.opensubdiv_levels_ms = median_ms(repeats, [&] { far.by_levels(frame, by_levels); });
+        const std::vector<double> ms =
+            interleaved_median_ms(repeats, {[&] { core.apply(frame, ours); }, [&] { far.by_stencils(frame, theirs); },
+                                            [&] { far.by_levels(frame, by_levels); }});
+        r.core_ms = ms[0];
+        r.opensubdiv_stencils_ms = ms[1];
+        r.opensubdiv_levels_ms = ms[2];
         TriMesh moved_mesh = in.mesh;
         moved_mesh.positions = frame;
         r.core_vs_levels = largest_relative_distance(ours, loop_subdivide(moved_mesh, options, in.levels).positions, {});

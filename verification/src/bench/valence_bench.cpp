@@ -35,8 +35,10 @@ std::vector<ValenceRow> run_valence_bench(const std::vector<int>& valences, int 
             // Each work returns its size (see ValenceRow::size), which also keeps it observable.
             const auto row = [&](const std::string& command, const std::function<long long(const PolyMesh&)>& work) {
                 ValenceRow r{shape, k, command};
-                r.ms = median_ms(repeats, [&] { r.size = work(mesh); });
-                r.regular_ms = median_ms(repeats, [&] { r.regular_size = work(regular); });
+                const std::vector<double> ms = interleaved_median_ms(
+                    repeats, {[&] { r.size = work(mesh); }, [&] { r.regular_size = work(regular); }});
+                r.ms = ms[0];
+                r.regular_ms = ms[1];
                 rows.push_back(r);
             };
             row("check", [](const PolyMesh& m) {

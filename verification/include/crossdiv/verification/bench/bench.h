@@ -67,6 +67,11 @@ public:
 /// one call that warms caches and the allocator up.
 double median_ms(int repeats, const std::function<void()>& f);
 
+/// The median wall times of `repeats` calls of each of `fs`, taken in turn (f0, f1, ..., f0,
+/// f1, ...) after one warm-up call of each, so that a load on the machine that comes and goes
+/// weighs on every one alike: for timings whose ratio is the result.
+std::vector<double> interleaved_median_ms(int repeats, const std::vector<std::function<void()>>& fs);
+
 /// The performance goal: core Loop at least this many times faster than the fastest
 /// reference on a closed mesh of about 20k faces refined 2 levels.
 inline constexpr double kBenchGoalRatio = 4.0;
