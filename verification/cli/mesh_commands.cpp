@@ -157,7 +157,9 @@ int run_subdivide(const std::string& in, const SchemeArgs& flags, const std::str
     const TriMesh mesh = to_tri_mesh(input, "Loop subdivision");
     PolyMesh result;
     if (impl == "core") {
-        result = to_poly_mesh(loop_subdivide(mesh, s.options(), s.levels));
+        // The polygon-mesh driver: the fast path on a manifold, else OpenSubdiv's
+        // non-manifold rules (or the refusal that --nonmanifold refuse asks for).
+        result = loop_subdivide(input, s.options(), s.levels);
     } else if (impl == "split-flip") {
         TriMesh level = mesh;
         for (int l = 0; l < s.levels; ++l) level = loop_by_split_and_flip(level, s.options());

@@ -40,6 +40,8 @@ expect non-manifold-opensubdiv 0 'opensubdiv +ok +agree' -- "$crossdiv" compare 
 expect non-manifold-refused 1 'core refuses the input: .*edge \(0, 1\) is shared by 3 triangles' -- "$crossdiv" compare "$tmp/nonmanifold.obj" --levels 1 --against opensubdiv --nonmanifold refuse
 # One input core refuses does not end the batch: the next one is compared.
 expect non-manifold-batch 1 'icosahedron \(12 vertices, 20 faces\)' -- "$crossdiv" compare "$tmp/nonmanifold.obj" bundled:icosahedron --levels 1 --against opensubdiv --nonmanifold refuse
+expect subdivide-non-manifold 0 'nonmanifold.obj: 5 vertices, 3 faces -> .* \(12 vertices, 12 faces, 1 level\(s\), core\)' -- "$crossdiv" subdivide "$tmp/nonmanifold.obj" --levels 1 -o "$tmp/nm1.obj"
+expect subdivide-non-manifold-refused 2 'edge \(0, 1\) is shared by 3 triangles' -- "$crossdiv" subdivide "$tmp/nonmanifold.obj" --levels 1 --nonmanifold refuse -o "$tmp/nm1.obj"
 expect check-lists-issues 2 'error \[non-manifold-edge\]' -- "$crossdiv" check "$tmp/nonmanifold.obj"
 expect too-many-levels 2 'would produce 335544320 faces, over the limit' -- "$crossdiv" subdivide bundled:icosahedron --levels 12 -o "$tmp/x.obj"
 expect compare-max-faces 2 'bundled:icosahedron: 3 levels would produce 1280 faces, over the limit of 1000 \(--max-faces\)' -- "$crossdiv" compare bundled:icosahedron --levels 3 --max-faces 1000
