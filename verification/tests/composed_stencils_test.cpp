@@ -25,12 +25,6 @@ std::vector<Vec3> frame_of(const std::vector<Vec3>& p) {
     return out;
 }
 
-double largest_relative_distance(const std::vector<Vec3>& a, const std::vector<Vec3>& b, const std::vector<int>& map) {
-    double worst = 0;
-    for (size_t i = 0; i < b.size(); ++i) worst = std::max(worst, (a[map.empty() ? i : map[i]] - b[i]).norm());
-    return worst / bounding_box_diagonal(a);
-}
-
 TEST(ComposedStencils, EveryFrameIsTheLevelByLevelRefinementOnTheCatalog) {
     // Composing the levels reorders the sums, so the points agree to rounding, not in bits:
     // tolerances::kAgreementRelative of the diagonal (measured: below 1e-15).
@@ -49,7 +43,7 @@ TEST(ComposedStencils, EveryFrameIsTheLevelByLevelRefinementOnTheCatalog) {
                 std::vector<Vec3> out;
                 s.apply(moved.positions, out);
                 ASSERT_EQ(out.size(), expected.positions.size()) << b.name;
-                EXPECT_LE(largest_relative_distance(expected.positions, out, {}), tolerances::kAgreementRelative)
+                EXPECT_LE(max_relative_distance(expected.positions, out, identity_map(out.size())), tolerances::kAgreementRelative)
                     << b.name << " levels " << levels;
             }
     }
@@ -88,8 +82,8 @@ TEST(ComposedStencils, OpenSubdivsStencilTableGivesTheSamePoints) {
         ASSERT_EQ(theirs.size(), ours.size()) << b.name;
         const Correspondence c = match_nearest(ours, theirs);
         ASSERT_NE(c.method, MatchMethod::None) << b.name << ": " << c.note;
-        EXPECT_LE(largest_relative_distance(ours, theirs, c.ref_to_ours), tolerances::kAgreementRelative) << b.name;
-        EXPECT_LE(largest_relative_distance(theirs, levels, {}), tolerances::kAgreementRelative) << b.name;
+        EXPECT_LE(max_relative_distance(ours, theirs, c.ref_to_ours), tolerances::kAgreementRelative) << b.name;
+        EXPECT_LE(max_relative_distance(theirs, levels, identity_map(levels.size())), tolerances::kAgreementRelative) << b.name;
     }
 }
 #endif

@@ -148,68 +148,65 @@ double max_turning_angle(std::span<const Vec3> c) {
     return worst;
 }
 
-/// An upper bound of the Hausdorff distance between a piece and its chord: the smallest of
-/// three valid bounds. (a) The control points' largest distance from the chord segment (the
-/// piece lies in their convex hull). (b) (1 - 2^(1-d)) max_i |p_i - l_i|, l_i = p_0 +
-/// (i/d)(p_d - p_0): the piece minus the linearly parametrized chord is sum_i B_i(t) (p_i - l_i),
-/// and the interior Bernstein weights sum to at most 1 - 2^(1-d). (c) Wang's d (d - 1) / 8
-/// max_i |p_{i+2} - 2 p_{i+1} + p_i|, the one-step case of wang_intervals. (b) and (c) bound
-/// the distance to the parametrized chord, which bounds the Hausdorff distance by the
-/// projection argument in the header.
+/// Scratch for the distance mode, reused across calls so that splitting and bounding never
+/// allocate once grown to the curve's size: de Casteljau rows, and the Bezier coefficients
+/// polynomial_max_bound splits.
+struct SplitScratch {
+    std::vector<Vec3> rest, work;
+    std::vector<double> perpendicular[2], pieces;
+    std::vector<int> depths;
+};
+
 /// An upper bound of max |f| on [0, 1] for the polynomial f with Bezier coefficients b,
 /// tight to 1e-9 relative: branch and bound, halving (de Casteljau) every piece whose hull
-/// bound max |b_i| could still exceed the largest value found at a piece's ends.
-double polynomial_max_bound(std::span<const double> b) {
-    struct Piece {
-        std::array<double, kMaxBezierDegree + 1> c;
-        int depth;
-    };
+/// bound max |b_i| could still exceed the largest value found at a piece's ends. The pieces
+/// waiting are a stack of coefficient rows in `pieces` (b.size() each) with their depths.
+double polynomial_max_bound(std::span<const double> b, std::vector<double>& pieces, std::vector<int>& depths) {
     const size_t n = b.size();
-    const auto hull = [n](const Piece& p) {
-        double m = 0;
-        for (size_t i = 0; i < n; ++i) m = std::max(m, std::abs(p.c[i]));
-        return m;
-    };
-    Piece first{};
-    std::copy(b.begin(), b.end(), first.c.begin());
+    pieces.assign(b.begin(), b.end());
+    depths.assign(1, 0);
     double found = std::max(std::abs(b.front()), std::abs(b.back()));
     double bound = found;  // the largest hull bound of a piece no longer split
-    std::vector<Piece> stack{first};
-    while (!stack.empty()) {
-        Piece p = stack.back();
-        stack.pop_back();
-        const double h = hull(p);
-        if (h <= found * (1 + 1e-9)) continue;
-        if (p.depth >= 40) {
-            bound = std::max(bound, h);
+    while (!depths.empty()) {
+        const int depth = depths.back();
+        depths.pop_back();
+        const size_t at = pieces.size() - n;
+        double hull = 0;
+        for (size_t i = 0; i < n; ++i) hull = std::max(hull, std::abs(pieces[at + i]));
+        if (hull <= found * (1 + 1e-9) || depth >= 40) {
+            if (depth >= 40) bound = std::max(bound, hull);
+            pieces.resize(at);
             continue;
         }
-        Piece left{}, right{};
-        left.depth = right.depth = p.depth + 1;
+        // Halve in place: the left half replaces the piece, the right half goes on top.
+        pieces.resize(at + 2 * n);
+        double* left = pieces.data() + at;
+        double* right = left + n;
+        // After step lvl, left[i] for i > lvl holds de Casteljau level lvl + 1 and left[lvl]
+        // is final; the last entry of each level is the right half's coefficient.
         for (size_t lvl = 0; lvl < n; ++lvl) {
-            left.c[lvl] = p.c[0];
-            right.c[n - 1 - lvl] = p.c[n - 1 - lvl];
-            for (size_t i = 0; i + 1 < n - lvl; ++i) p.c[i] = 0.5 * (p.c[i] + p.c[i + 1]);
+            right[n - 1 - lvl] = left[n - 1];
+            for (size_t i = n - 1; i > lvl; --i) left[i] = 0.5 * (left[i - 1] + left[i]);
         }
-        found = std::max(found, std::abs(left.c[n - 1]));  // the value at the midpoint
-        stack.push_back(left);
-        stack.push_back(right);
+        found = std::max(found, std::abs(right[0]));  // the value at the midpoint
+        depths.push_back(depth + 1);
+        depths.push_back(depth + 1);
     }
     return std::max(found * (1 + 1e-9), bound);
 }
 
-/// (d) For a piece that runs monotonically along its chord (its along-chord Bezier
-/// coefficients nondecreasing within the chord's length, so that no point projects beyond
-/// the chord's ends): the distance to the chord is that to its line, the norm of the
-/// perpendicular part, whose two components (along e1, the direction of the farthest control
-/// point's perpendicular offset, and e2 = u x e1) are polynomials bounded tightly by
+/// Bound (d) of flatness(): for a piece that runs monotonically along its chord (its
+/// along-chord Bezier coefficients nondecreasing within the chord's length, so that no point
+/// projects beyond the chord's ends) the distance to the chord is that to its line, the norm
+/// of the perpendicular part, whose two components (along e1, the direction of the farthest
+/// control point's perpendicular offset, and e2 = u x e1) are polynomials bounded tightly by
 /// polynomial_max_bound; the bound is the root of the sum of their squares. Infinite when the
 /// piece is not monotone.
-double monotone_chord_distance(std::span<const Vec3> c) {
+double monotone_chord_distance(std::span<const Vec3> c, SplitScratch& s) {
     const size_t d = c.size() - 1;
     const Vec3 chord = c.back() - c.front();
     const double length = chord.norm();
-    if (d < 2 || d > static_cast<size_t>(kMaxBezierDegree) || !(length > 0)) return INFINITY;
+    if (d < 2 || !(length > 0)) return INFINITY;
     const Vec3 u = chord / length;
     // Monotone up to the rounding of the projections (slack), which moves a point's
     // distance to the chord by no more than the slack added to the bound below.
@@ -226,20 +223,29 @@ double monotone_chord_distance(std::span<const Vec3> c) {
     }
     if (previous > length + slack) return INFINITY;
     if (farthest.norm() == 0) return slack;
-    const Vec3 e1 = farthest.normalized(), e2 = u.cross(e1);
-    std::array<double, kMaxBezierDegree + 1> f1{}, f2{};
-    for (size_t i = 0; i <= d; ++i) {
-        const Vec3 r = c[i] - c.front();
-        f1[i] = r.dot(e1);
-        f2[i] = r.dot(e2);
+    const Vec3 e[2] = {farthest.normalized(), u.cross(farthest.normalized())};
+    double sum_of_squares = 0;
+    for (int k = 0; k < 2; ++k) {
+        std::vector<double>& f = s.perpendicular[k];
+        f.resize(d + 1);
+        for (size_t i = 0; i <= d; ++i) f[i] = (c[i] - c.front()).dot(e[k]);
+        const double m = polynomial_max_bound(f, s.pieces, s.depths);
+        sum_of_squares += m * m;
     }
-    const double m1 = polynomial_max_bound(std::span<const double>(f1.data(), d + 1));
-    const double m2 = polynomial_max_bound(std::span<const double>(f2.data(), d + 1));
     // The perpendicular part is computed from rounded coordinates: the slack covers it.
-    return std::sqrt(m1 * m1 + m2 * m2) + slack;
+    return std::sqrt(sum_of_squares) + slack;
 }
 
-double flatness(std::span<const Vec3> c) {
+/// An upper bound of the Hausdorff distance between a piece and its chord: the smallest of
+/// four valid bounds. (a) The control points' largest distance from the chord segment (the
+/// piece lies in their convex hull). (b) (1 - 2^(1-d)) max_i |p_i - l_i|, l_i = p_0 +
+/// (i/d)(p_d - p_0): the piece minus the linearly parametrized chord is sum_i B_i(t) (p_i - l_i),
+/// and the interior Bernstein weights sum to at most 1 - 2^(1-d). (c) Wang's d (d - 1) / 8
+/// max_i |p_{i+2} - 2 p_{i+1} + p_i|, the one-step case of wang_intervals. (b) and (c) bound
+/// the distance to the parametrized chord, which bounds the Hausdorff distance by the
+/// projection argument in the header. (d) monotone_chord_distance, exact to 1e-9 where it
+/// applies.
+double flatness(std::span<const Vec3> c, SplitScratch& scratch) {
     const size_t d = c.size() - 1;
     double hull = 0, parametric = 0, second = 0;
     for (size_t i = 1; i < d; ++i) {
@@ -249,63 +255,53 @@ double flatness(std::span<const Vec3> c) {
         second = std::max(second, (c[i + 1] - 2.0 * c[i] + c[i - 1]).norm());
     }
     return std::min({hull, (1.0 - std::ldexp(1.0, 1 - static_cast<int>(d))) * parametric, d * (d - 1) / 8.0 * second,
-                     monotone_chord_distance(c)});
+                     monotone_chord_distance(c, scratch)});
 }
 
-/// Scratch rows for split_equal, reused across calls so splitting never allocates once they
-/// have grown to the curve's size.
-struct SplitScratch {
-    std::vector<Vec3> rest, work;
-};
+
+/// Peels the piece [0, t] of s.rest (de Casteljau) onto `dest`; s.rest becomes [t, 1].
+void peel(double t, std::vector<Vec3>& dest, SplitScratch& s) {
+    const size_t n = s.rest.size();
+    s.work.assign(s.rest.begin(), s.rest.end());
+    for (size_t lvl = 0; lvl < n; ++lvl) {
+        dest.push_back(s.work[0]);
+        s.rest[n - 1 - lvl] = s.work[n - 1 - lvl];
+        for (size_t i = 0; i + 1 < n - lvl; ++i) s.work[i] = (1.0 - t) * s.work[i] + t * s.work[i + 1];
+    }
+}
 
 /// Splits `c` into k equal parameter pieces appended to `dest` (k (d + 1) points): peel
-/// [0, 1/k] off the rest, then 1/(k-1) of what remains, and so on (de Casteljau each time).
+/// [0, 1/k] off the rest, then 1/(k-1) of what remains, and so on.
 void split_equal(std::span<const Vec3> c, int k, std::vector<Vec3>& dest, SplitScratch& s) {
-    const size_t n = c.size();
     s.rest.assign(c.begin(), c.end());
-    s.work.resize(n);
-    for (int piece = 0; piece < k - 1; ++piece) {
-        const double t = 1.0 / (k - piece);
-        std::copy(s.rest.begin(), s.rest.end(), s.work.begin());
-        for (size_t lvl = 0; lvl < n; ++lvl) {
-            dest.push_back(s.work[0]);
-            s.rest[n - 1 - lvl] = s.work[n - 1 - lvl];
-            for (size_t i = 0; i + 1 < n - lvl; ++i) s.work[i] = (1.0 - t) * s.work[i] + t * s.work[i + 1];
-        }
-    }
+    for (int piece = 0; piece < k - 1; ++piece) peel(1.0 / (k - piece), dest, s);
     dest.insert(dest.end(), s.rest.begin(), s.rest.end());
 }
 
 /// Splits `c` at the increasing parameters `breaks` (in (0, 1)) into breaks.size() + 1 pieces
-/// appended to `dest`, peeling each piece off the rest as split_equal does.
+/// appended to `dest`, peeling each off the rest as split_equal does.
 void split_at(std::span<const Vec3> c, std::span<const double> breaks, std::vector<Vec3>& dest, SplitScratch& s) {
-    const size_t n = c.size();
     s.rest.assign(c.begin(), c.end());
-    s.work.resize(n);
     double done = 0;  // the rest covers [done, 1]
     for (const double b : breaks) {
-        const double t = (b - done) / (1.0 - done);
-        std::copy(s.rest.begin(), s.rest.end(), s.work.begin());
-        for (size_t lvl = 0; lvl < n; ++lvl) {
-            dest.push_back(s.work[0]);
-            s.rest[n - 1 - lvl] = s.work[n - 1 - lvl];
-            for (size_t i = 0; i + 1 < n - lvl; ++i) s.work[i] = (1.0 - t) * s.work[i] + t * s.work[i + 1];
-        }
+        peel((b - done) / (1.0 - done), dest, s);
         done = b;
     }
     dest.insert(dest.end(), s.rest.begin(), s.rest.end());
 }
 
+/// Samples per segment of the flattening integral.
+constexpr int kFlatteningSamples = 128;
+/// Rounds of recutting a segment with kFlatteningGrowth times more pieces while some piece
+/// narrowly misses the bound (by at most kNearMiss times tol), before the pieces still
+/// failing are split.
+constexpr int kFlatteningRounds = 12;
+constexpr double kFlatteningGrowth = 1.03;
+constexpr double kNearMiss = 1.25;
+
 /// Samples of the flattening integral of one segment: cumulative[j] is the integral of
 /// sqrt(kappa) ds over [0, j / kFlatteningSamples] (trapezoids). sqrt(kappa) |c'| is
 /// sqrt(|c' x c''| / |c'|), taken as 0 where c' vanishes (a cusp, where it tends to 0 too).
-constexpr int kFlatteningSamples = 128;
-/// Rounds of re-cutting a segment with kFlatteningGrowth times more pieces before the pieces
-/// still failing the bound are split.
-constexpr int kFlatteningRounds = 12;
-constexpr double kFlatteningGrowth = 1.03;
-/// A piece whose bound is at most this many times tol is a near miss, which recutting fixes.
-constexpr double kNearMiss = 1.25;
 void flattening_integral(std::span<const Vec3> c, std::vector<double>& cumulative) {
     const std::vector<Vec3> d1 = bezier_derivative(c);
     const std::vector<Vec3> d2 = d1.size() > 1 ? bezier_derivative(d1) : std::vector<Vec3>{Vec3::Zero()};
@@ -344,10 +340,12 @@ void flattening_breaks(const std::vector<double>& cumulative, int n, std::vector
 /// The distance mode on one piece: accept it when flat enough, else split it into
 /// k = ceil(sqrt(flatness / tol)) equal pieces (flatness falls as 1/k^2 under splitting, so
 /// one split usually suffices; halving would overshoot to the next power of two) and treat
-/// each the same way. `rows[depth]` holds the pieces of a depth, reused across calls.
+/// each the same way. `rows[depth]` holds the pieces of a depth, reused across calls;
+/// `known_flatness` is the piece's flatness when the caller has it (negative: computed here).
 void refine_distance(std::span<const Vec3> c, int segment, double t0, double t1, double tol, int depth,
-                     std::vector<std::vector<Vec3>>& rows, SplitScratch& scratch, Polyline& out) {
-    const double f = flatness(c);
+                     std::vector<std::vector<Vec3>>& rows, SplitScratch& scratch, Polyline& out,
+                     double known_flatness = -1) {
+    const double f = known_flatness >= 0 ? known_flatness : flatness(c, scratch);
     if (f <= tol) {
         emit(out, {c[0], start_tangent(c)}, segment + t0);
         return;
@@ -422,7 +420,7 @@ Polyline tessellate_distance(const BezierChain& chain, double tol) {
     Polyline out;
     std::vector<std::vector<Vec3>> rows;
     SplitScratch scratch;
-    std::vector<double> cumulative, breaks;
+    std::vector<double> cumulative, breaks, piece_flatness;
     std::vector<Vec3> pieces;
     for (int k = 0; k < chain.num_segments(); ++k) {
         // Cut where the flattening integral says, then certify each piece (refine_distance
@@ -442,8 +440,10 @@ Polyline tessellate_distance(const BezierChain& chain, double tol) {
             pieces.clear();
             split_at(c, breaks, pieces, scratch);
             int near_misses = 0;
+            piece_flatness.clear();
             for (size_t i = 0; i <= breaks.size(); ++i) {
-                const double f = flatness(std::span<const Vec3>(pieces.data() + i * n, n));
+                const double f = flatness(std::span<const Vec3>(pieces.data() + i * n, n), scratch);
+                piece_flatness.push_back(f);
                 near_misses += f > tol && f <= kNearMiss * tol;
             }
             if (near_misses == 0 || round == kFlatteningRounds || count >= kMaxCurveSamples) break;
@@ -451,7 +451,8 @@ Polyline tessellate_distance(const BezierChain& chain, double tol) {
         }
         for (size_t i = 0; i <= breaks.size(); ++i) {
             const double t0 = i == 0 ? 0.0 : breaks[i - 1], t1 = i == breaks.size() ? 1.0 : breaks[i];
-            refine_distance(std::span<const Vec3>(pieces.data() + i * n, n), k, t0, t1, tol, 0, rows, scratch, out);
+            refine_distance(std::span<const Vec3>(pieces.data() + i * n, n), k, t0, t1, tol, 0, rows, scratch, out,
+                            piece_flatness[i]);
         }
     }
     finish(chain, out);

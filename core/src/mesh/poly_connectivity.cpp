@@ -7,12 +7,6 @@
 #include "twin_search.h"
 
 namespace crossdiv {
-namespace {
-
-std::string edge_name(int a, int b) { return "edge (" + std::to_string(a) + ", " + std::to_string(b) + ")"; }
-
-}  // namespace
-
 PolyConnectivity build_poly_connectivity(const PolyMesh& mesh) {
     const int nv = mesh.num_vertices(), nf = mesh.num_faces();
     const MeshSource& src = mesh.source;
@@ -64,12 +58,8 @@ PolyConnectivity build_poly_connectivity(const PolyMesh& mesh) {
         out_start, out_corners, [&conn](int c) { return conn.head(c); }, [&conn](int c) { return conn.prev[c]; },
         [&conn](int p) { return conn.corner_vertex[p]; }, conn.twin);
     if (fault.corner >= 0) {
-        const int c = fault.corner, a = conn.corner_vertex[c], b = conn.head(c);
-        if (fault.same + fault.opposite > 2)
-            throw NonManifoldInput(edge_name(a, b) + " is shared by " + std::to_string(fault.same + fault.opposite) +
-                                   " faces (non-manifold edge; first seen in " + src.describe_face(conn.corner_face[c]) + ")");
-        throw NonManifoldInput(edge_name(a, b) + ": two faces traverse it in the same direction "
-                               "(inconsistent orientation; one of them is " + src.describe_face(conn.corner_face[c]) + ")");
+        const int c = fault.corner;
+        detail::throw_edge_fault(fault, conn.corner_vertex[c], conn.head(c), "faces", src.describe_face(conn.corner_face[c]));
     }
     for (int c = 0; c < nc; ++c) {
         const int a = conn.corner_vertex[c], b = conn.head(c), twin = conn.twin[c];

@@ -7,12 +7,6 @@
 #include "twin_search.h"
 
 namespace crossdiv {
-namespace {
-
-std::string edge_name(int a, int b) { return "edge (" + std::to_string(a) + ", " + std::to_string(b) + ")"; }
-
-}  // namespace
-
 TriConnectivity build_tri_connectivity(const TriMesh& mesh) {
     const int nv = mesh.num_vertices();
     const int nf = mesh.num_faces();
@@ -64,12 +58,8 @@ TriConnectivity build_tri_connectivity(const TriMesh& mesh) {
         out_start, out_corners, head, [](int c) { return c - c % 3 + (c % 3 + 2) % 3; },
         [&](int p) { return T[p / 3][p % 3]; }, twins);
     if (fault.corner >= 0) {
-        const int c = fault.corner, a = T[c / 3][c % 3], b = head(c);
-        if (fault.same + fault.opposite > 2)
-            throw NonManifoldInput(edge_name(a, b) + " is shared by " + std::to_string(fault.same + fault.opposite) +
-                                   " triangles (non-manifold edge; first seen in " + src.describe_face(c / 3) + ")");
-        throw NonManifoldInput(edge_name(a, b) + ": two triangles traverse it in the same direction "
-                               "(inconsistent orientation; one of them is " + src.describe_face(c / 3) + ")");
+        const int c = fault.corner;
+        detail::throw_edge_fault(fault, T[c / 3][c % 3], head(c), "triangles", src.describe_face(c / 3));
     }
     for (int c = 0; c < 3 * nf; ++c) {
         const int a = T[c / 3][c % 3], b = head(c), twin = twins[c];

@@ -2,7 +2,10 @@
 // The twin search both connectivity builders share (tri_connectivity.cpp,
 // poly_connectivity.cpp): for every directed edge a -> b, the corner of b that leads back to a.
 
+#include <string>
 #include <vector>
+
+#include "crossdiv/error.h"
 
 namespace crossdiv::detail {
 
@@ -13,6 +16,18 @@ struct EdgeFault {
     int same = 0;      ///< corners heading the same way along the edge (the corner itself among them)
     int opposite = 0;  ///< corners heading the other way
 };
+
+/// Throws the error `fault` describes (fault.corner >= 0): the corner's edge a -> b shared by more
+/// than two of the mesh's `faces_word` ("triangles", "faces"), or run the same way by two;
+/// `face` is the corner's face as the mesh's source describes it.
+[[noreturn]] inline void throw_edge_fault(const EdgeFault& fault, int a, int b, const char* faces_word, const std::string& face) {
+    const std::string edge = "edge (" + std::to_string(a) + ", " + std::to_string(b) + ")";
+    if (fault.same + fault.opposite > 2)
+        throw NonManifoldInput(edge + " is shared by " + std::to_string(fault.same + fault.opposite) + " " + faces_word +
+                               " (non-manifold edge; first seen in " + face + ")");
+    throw NonManifoldInput(edge + ": two " + faces_word + " traverse it in the same direction (inconsistent orientation; one of them is " +
+                           face + ")");
+}
 
 /// Fills twin[c] for every corner c (the corner of the opposite half-edge, the last in corner
 /// order when there are several; -1 on a boundary) in O(corners), whatever the valences.

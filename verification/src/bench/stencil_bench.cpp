@@ -19,18 +19,6 @@ std::vector<Vec3> moved(const std::vector<Vec3>& p) {
     return out;
 }
 
-/// Largest distance between the two over the first one's bounding-box diagonal; ref_to_ours
-/// maps b's vertices to a's (identity when empty). Infinite when the counts differ.
-double largest_relative_distance(const std::vector<Vec3>& a, const std::vector<Vec3>& b, const std::vector<int>& ref_to_ours) {
-    if (a.size() != b.size()) return INFINITY;
-    double worst = 0;
-    for (size_t i = 0; i < b.size(); ++i) {
-        const size_t j = ref_to_ours.empty() ? i : static_cast<size_t>(ref_to_ours[i]);
-        worst = std::max(worst, (a[j] - b[i]).norm());
-    }
-    return worst / bounding_box_diagonal(a);
-}
-
 }  // namespace
 
 std::vector<StencilRow> run_stencil_bench(const std::vector<BenchInput>& inputs, int repeats) {
@@ -51,9 +39,10 @@ std::vector<StencilRow> run_stencil_bench(const std::vector<BenchInput>& inputs,
         r.opensubdiv_levels_ms = ms[2];
         TriMesh moved_mesh = in.mesh;
         moved_mesh.positions = frame;
-        r.core_vs_levels = largest_relative_distance(ours, loop_subdivide(moved_mesh, options, in.levels).positions, {});
+        r.core_vs_levels = max_relative_distance(ours, loop_subdivide(moved_mesh, options, in.levels).positions,
+                                                 identity_map(ours.size()));
         const Correspondence c = match_nearest(ours, theirs);
-        r.core_vs_opensubdiv = c.method == MatchMethod::None ? INFINITY : largest_relative_distance(ours, theirs, c.ref_to_ours);
+        r.core_vs_opensubdiv = c.method == MatchMethod::None ? INFINITY : max_relative_distance(ours, theirs, c.ref_to_ours);
         rows.push_back(r);
     }
     return rows;

@@ -45,15 +45,24 @@ int count_only_in(const std::vector<std::vector<int>>& a, const std::vector<std:
 }  // namespace
 
 double max_relative_distance(const PolyMesh& ours, const PolyMesh& ref, const std::vector<int>& ref_to_ours) {
-    if (ref_to_ours.size() != static_cast<size_t>(ref.num_vertices()) || ref.num_vertices() != ours.num_vertices())
-        return INFINITY;
+    return max_relative_distance(ours.positions, ref.positions, ref_to_ours);
+}
+
+double max_relative_distance(const std::vector<Vec3>& ours, const std::vector<Vec3>& ref, const std::vector<int>& ref_to_ours) {
+    if (ref_to_ours.size() != ref.size() || ref.size() != ours.size()) return INFINITY;
     double max_abs = 0;
-    for (int i = 0; i < ref.num_vertices(); ++i) {
-        const double d = (ref.positions[i] - ours.positions[ref_to_ours[i]]).norm();
+    for (size_t i = 0; i < ref.size(); ++i) {
+        const double d = (ref[i] - ours[static_cast<size_t>(ref_to_ours[i])]).norm();
         max_abs = std::isnan(d) ? INFINITY : std::max(max_abs, d);
     }
-    const double diagonal = bounding_box_diagonal(ours.positions);
+    const double diagonal = bounding_box_diagonal(ours);
     return max_abs / (diagonal > 0 ? diagonal : 1.0);
+}
+
+std::vector<int> identity_map(size_t n) {
+    std::vector<int> map(n);
+    std::iota(map.begin(), map.end(), 0);
+    return map;
 }
 
 std::vector<double> vertex_distances(const PolyMesh& ours, const PolyMesh& ref, const std::vector<int>& ref_to_ours) {

@@ -16,7 +16,8 @@
 /// Stencils may also read auxiliary points: sums of coarse vertices that are no vertex of the
 /// refined mesh, evaluated before any row. They let a rule whose every row around a vertex
 /// of valence K reads all K neighbours be stated in O(K) terms instead of O(K^2) (the
-/// modified Butterfly's K-point stencil, through its Fourier sums; butterfly.cpp).
+/// modified Butterfly's K-point stencil, butterfly.cpp, and Doo-Sabin's corner points of a
+/// polygon of many sides, doo_sabin.cpp, each through its Fourier sums).
 /// Each row is summed in the order given, as sum_k w_k p_k starting from zero -- OpenSubdiv's
 /// Clear/AddWithWeight -- so that a scheme that states its mask in the library's order
 /// reproduces the library's rounding.

@@ -46,6 +46,10 @@ struct MeshComparison {
 /// Largest vertex distance over our bounding-box diagonal, positions only (no topology):
 /// the per-level figure. INFINITY when the map does not fit or a position is NaN.
 double max_relative_distance(const PolyMesh& ours, const PolyMesh& ref, const std::vector<int>& ref_to_ours);
+/// The same on two position lists.
+double max_relative_distance(const std::vector<Vec3>& ours, const std::vector<Vec3>& ref, const std::vector<int>& ref_to_ours);
+/// The map of two lists in the same order: i -> i for i < n.
+std::vector<int> identity_map(size_t n);
 
 /// Distance of each of our vertices to its reference vertex under the map (NaN: unmatched).
 std::vector<double> vertex_distances(const PolyMesh& ours, const PolyMesh& ref, const std::vector<int>& ref_to_ours);
