@@ -27,9 +27,14 @@ install_missing() {
       echo "missing Debian packages:$missing (run as root, or: sudo apt-get install$missing)" >&2
       exit 2
     fi
-    echo "installing:$missing"
-    apt-get update -qq
-    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $missing
+    # apt's and dpkg's lines (hundreds on a fresh machine) go to a log, shown when they fail.
+    local log=/var/log/crossdiv-apt.log
+    echo "installing:$missing (log: $log)"
+    if ! { apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $missing; } > "$log" 2>&1; then
+      tail -n 40 "$log" >&2
+      echo "apt-get could not install:$missing" >&2
+      exit 2
+    fi
   fi
   # Real meshes from Debian's libcgal-demo, unpacked into datasets/cgal (optional data).
   [ -d datasets/cgal ] || datasets/install_cgal_meshes.sh || echo "CGAL demo meshes unavailable; continuing without them"
@@ -37,6 +42,16 @@ install_missing() {
 
 # The sanitizer build: clang (and its sanitizer and libFuzzer runtimes).
 SANITIZE_PACKAGES="clang libclang-rt-14-dev"
+
+# CTest, with the whole output in DIR/ctest.log and on the screen only what says something: a
+# failing test's result with its output, and the summary. 410 lines of passes would push a
+# failure out of a capped CI log.
+run_ctest() {
+  local dir="$1"
+  echo "ctest --test-dir $dir (the whole output: $dir/ctest.log)"
+  ctest --test-dir "$dir" --output-on-failure -j2 2>&1 | tee "$dir/ctest.log" |
+    grep -v -E '^ +Start +[0-9]+: |Passed +[0-9.]+ sec$'
+}
 
 build() {
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
@@ -54,7 +69,7 @@ case "${1:-}" in
   test)
     install_missing
     build
-    ctest --test-dir build --output-on-failure -j2
+    run_ctest build
     ;;
   sanitize)
     PACKAGES="$PACKAGES $SANITIZE_PACKAGES"
@@ -72,7 +87,7 @@ case "${1:-}" in
     export ASAN_OPTIONS=handle_segv=0:detect_leaks=1:abort_on_error=0:max_allocation_size_mb=6144
     export LSAN_OPTIONS="suppressions=$PWD/fuzz/sanitizer-suppressions.txt"
     export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-    ctest --test-dir build-sanitize --output-on-failure -j2
+    run_ctest build-sanitize
     # Two targets at a time: one per core of the 2-core machines this runs on.
     CROSSDIV_FUZZ_PARALLEL=2 fuzz/run_fuzzers.sh build-sanitize "${2:-30}"
     ;;
