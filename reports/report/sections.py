@@ -326,18 +326,25 @@ def timing_section(bench, figdir):
                        f"{g['fastest_reference']}) - {'met' if g['met'] else 'NOT met'}."))
     if stencils:
         goal = bench["stencils"]["goal_ratio"]
-        met = all(r["ratio"] >= goal for r in stencils)
+        # The goal is on core's level stencils; a bench file from before them has the composed ones only.
+        judged = "level_ratio" if all("level_ratio" in r for r in stencils) else "ratio"
+        met = all(r[judged] >= goal for r in stencils)
         s.add(Text("Fixed topology (the animation use): the topology refined once, then a moved frame of the base "
-                   "vertices re-evaluated through core's composed stencils, OpenSubdiv's stencil table (double) and "
-                   "its PrimvarRefiner level by level; ratio = OpenSubdiv's stencil time / core's. Distances over the "
-                   f"bounding-box diagonal. Goal: ratio >= {goal} on every torus - {'met' if met else 'NOT met'}."),
+                   "vertices re-evaluated through core's composed stencils (one table, S = S_L ... S_1), core's level "
+                   "stencils (one table per level, weights shared by rows that repeat them), OpenSubdiv's stencil "
+                   "table (double) and its PrimvarRefiner level by level; ratio = OpenSubdiv's stencil time / core's. "
+                   "Distances to core's level-by-level refinement over the bounding-box diagonal. Goal: core's level "
+                   f"stencils' ratio >= {goal} on every torus - {'met' if met else 'NOT met'}."),
               Figure(figures.stencil_times(stencils, figdir), "stencil times"),
-              Table(["input", "levels", "vertices", "core terms", "OpenSubdiv terms", "core ms", "OpenSubdiv stencils ms",
-                     "OpenSubdiv levels ms", "ratio", "core vs levels", "core vs OpenSubdiv"],
-                    [(r["input"], r["levels"], r["output_vertices"], r["core_terms"], r["opensubdiv_terms"],
-                      fmt(r["core_ms"], ".2f"), fmt(r["opensubdiv_stencils_ms"], ".2f"),
-                      fmt(r["opensubdiv_levels_ms"], ".2f"), fmt(r["ratio"], ".2f"), fmt(r["core_vs_levels"], ".1e"),
-                      fmt(r["core_vs_opensubdiv"], ".1e")) for r in stencils]))
+              Table(["input", "levels", "vertices", "composed terms", "level terms", "OpenSubdiv terms", "composed ms",
+                     "level ms", "OpenSubdiv stencils ms", "OpenSubdiv levels ms", "ratio composed", "ratio level",
+                     "composed vs levels", "level vs levels", "composed vs OpenSubdiv"],
+                    [(r["input"], r["levels"], r["output_vertices"], r["core_terms"], r.get("level_terms", "-"),
+                      r["opensubdiv_terms"], fmt(r["core_ms"], ".2f"), fmt(r.get("core_levels_ms"), ".2f"),
+                      fmt(r["opensubdiv_stencils_ms"], ".2f"), fmt(r["opensubdiv_levels_ms"], ".2f"),
+                      fmt(r["ratio"], ".2f"), fmt(r.get("level_ratio"), ".2f"), fmt(r["core_vs_levels"], ".1e"),
+                      fmt(r.get("level_stencils_vs_levels"), ".1e"), fmt(r["core_vs_opensubdiv"], ".1e"))
+                     for r in stencils]))
     if valence:
         worst = max(valence, key=lambda r: r["ratio"])
         goal = bench["valence"]["goal_ratio"]
