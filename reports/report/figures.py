@@ -162,8 +162,7 @@ def stencil_times(rows, figdir):
     for key, label in (("core_ms", "core composed stencils"), ("core_levels_ms", "core level stencils"),
                        ("opensubdiv_stencils_ms", "OpenSubdiv stencil table"),
                        ("opensubdiv_levels_ms", "OpenSubdiv PrimvarRefiner levels")):
-        if all(key in r for r in rows):  # bench files written before the level stencils lack them
-            ax.loglog([r["output_vertices"] for r in rows], [r[key] for r in rows], marker="o", label=label)
+        ax.loglog([r["output_vertices"] for r in rows], [r[key] for r in rows], marker="o", label=label)
     ax.set_xlabel("refined vertices")
     ax.set_ylabel("median time per frame (ms)")
     ax.set_title("Re-evaluation at fixed topology (Loop, tori)", fontsize=9)

@@ -1,30 +1,24 @@
 #include "crossdiv/subdiv/composed_stencils.h"
 
-#include <Eigen/SparseCore>
 #include <string>
 
 #include "crossdiv/error.h"
-#include "crossdiv/subdiv/loop.h"
+#include "loop_level_matrices.h"
 
 namespace crossdiv {
 
 ComposedStencils ComposedStencils::loop(const TriMesh& base, const LoopOptions& options, int levels) {
-    if (levels < 1) throw InputError("number of levels must be >= 1, got " + std::to_string(levels));
-    LoopRefiner refiner(base, options);
-    refiner.refine(levels);
-    // Each level's matrix on the refiner's own connectivity, so that the rows follow the
-    // vertex order of the level the refiner (and loop_subdivide) makes.
+    detail::LoopLevelMatrices levels_of = detail::loop_level_matrices(base, options, levels);
     using RowMajor = Eigen::SparseMatrix<double, Eigen::RowMajor>;
-    RowMajor S = loop_subdivision_matrix(refiner.mesh(0), refiner.connectivity(0), options);
-    for (int l = 1; l < levels; ++l)
-        S = RowMajor(loop_subdivision_matrix(refiner.mesh(l), refiner.connectivity(l), options) * S);
+    RowMajor S = std::move(levels_of.matrices.front());
+    for (size_t l = 1; l < levels_of.matrices.size(); ++l) S = RowMajor(levels_of.matrices[l] * S);
     S.makeCompressed();
     ComposedStencils out;
     out.num_base_ = base.num_vertices();
     out.row_start_.assign(S.outerIndexPtr(), S.outerIndexPtr() + S.rows() + 1);
     out.source_.assign(S.innerIndexPtr(), S.innerIndexPtr() + S.nonZeros());
     out.weight_.assign(S.valuePtr(), S.valuePtr() + S.nonZeros());
-    out.triangles_ = refiner.mesh(levels).triangles;
+    out.triangles_ = std::move(levels_of.triangles);
     return out;
 }
 

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "crossdiv/error.h"
-#include "crossdiv/subdiv/loop.h"
+#include "loop_level_matrices.h"
 
 namespace crossdiv {
 namespace {
@@ -25,15 +25,10 @@ uint64_t hash_weights(const double* w, int n) {
 }  // namespace
 
 LevelStencils LevelStencils::loop(const TriMesh& base, const LoopOptions& options, int levels) {
-    if (levels < 1) throw InputError("number of levels must be >= 1, got " + std::to_string(levels));
-    LoopRefiner refiner(base, options);
-    refiner.refine(levels);
+    detail::LoopLevelMatrices levels_of = detail::loop_level_matrices(base, options, levels);
     LevelStencils out;
     out.num_base_ = base.num_vertices();
-    for (int l = 0; l < levels; ++l) {
-        // On the refiner's own connectivity, so that the rows follow its vertex order.
-        RowMajor S(loop_subdivision_matrix(refiner.mesh(l), refiner.connectivity(l), options));
-        S.makeCompressed();
+    for (const RowMajor& S : levels_of.matrices) {
         Level level;
         const int rows = static_cast<int>(S.rows());
         const int* outer = S.outerIndexPtr();
@@ -71,7 +66,7 @@ LevelStencils LevelStencils::loop(const TriMesh& base, const LoopOptions& option
         }
         out.levels_.push_back(std::move(level));
     }
-    out.triangles_ = refiner.mesh(levels).triangles;
+    out.triangles_ = std::move(levels_of.triangles);
     return out;
 }
 
@@ -97,10 +92,12 @@ void LevelStencils::apply_level(const Level& level, const Vec3* in, Vec3* out) {
     const double* pattern_weight = level.pattern_weight.data();
     const int rows = level.rows();
     for (int r = 0; r < rows; ++r) {
-        const double* w = pattern_weight + pattern_start[pattern[r]] - start[r];
+        const double* w = pattern_weight + pattern_start[pattern[r]];
+        const int* s = source + start[r];
+        const int n = start[r + 1] - start[r];
         double x = 0, y = 0, z = 0;
-        for (int k = start[r]; k < start[r + 1]; ++k) {
-            const double* q = p + 3 * static_cast<size_t>(source[k]);
+        for (int k = 0; k < n; ++k) {
+            const double* q = p + 3 * static_cast<size_t>(s[k]);
             x += w[k] * q[0];
             y += w[k] * q[1];
             z += w[k] * q[2];
