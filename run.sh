@@ -44,7 +44,7 @@ install_missing() {
 SANITIZE_PACKAGES="clang libclang-rt-14-dev"
 
 # CTest, with the whole output in DIR/ctest.log and on the screen only what says something: a
-# failing test's result with its output, and the summary. 410 lines of passes would push a
+# failing test's result with its output, and the summary. Hundreds of lines of passes would push a
 # failure out of a capped CI log.
 run_ctest() {
   local dir="$1"
