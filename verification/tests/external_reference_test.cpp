@@ -13,6 +13,7 @@
 #include "crossdiv/verification/comparisons/loop_comparison.h"
 #include "crossdiv/verification/comparisons/scheme_comparison.h"
 #include "crossdiv/subdiv/loop.h"
+#include "crossdiv/verification/harness/mesh_topology.h"
 #include "crossdiv/verification/implementations/callback_implementation.h"
 #include "crossdiv/verification/implementations/program_implementation.h"
 #include "crossdiv/verification/implementations/registry.h"
@@ -206,6 +207,52 @@ TEST(LibraryReference, WithANonFiniteCoordinateIsAnInvalidOutput) {
     register_reference(std::make_unique<NonFiniteLibrary>());
     expect_failed_run(compare_against("non-finite", "octahedron", 2), RunStatus::NonFiniteOutput, Verdict::RefInvalidOutput,
                       "vertex 3 of level 2 is not finite");
+}
+
+// A library whose weight table ends below the input's valence, as OpenMesh's Sqrt3T (50
+// entries) on pole-64: at every level it puts the vertices past its table at three times their
+// distance from the origin, as what Sqrt3T reads past its vector may. Their neighbourhoods then
+// land among other vertices and pair with the wrong ones, so the final level has no vertex
+// correspondence (moved a thousand times as far, the faces would still place them); level 1
+// still shows the cause: exactly the vertices past the table differ.
+class ShortTableLibrary final : public Implementation {
+public:
+    ShortTableLibrary()
+        : Implementation("short-table", "test", ImplementationKind::Library,
+                         {.schemes = {{Scheme::Sqrt3, {SchemeRule{.sqrt3 = {Sqrt3Parity::RestartEachLevel}}}, false, 49,
+                                       "a table of 50 weights"}}}) {}
+    adapters::LevelTrace refine(const PolyMesh& mesh, const RefineRequest& request) const override {
+        adapters::LevelTrace trace{mesh};
+        for (int l = 1; l <= request.levels; ++l) {
+            RefineRequest one = request;
+            one.levels = 1;
+            one.rule.sqrt3 = {Sqrt3Parity::RestartEachLevel};
+            const PolyMesh& coarse = trace.back();
+            PolyMesh fine = core_implementation().refine_last(coarse, one);
+            const MeshTopology topo = mesh_topology(coarse);
+            for (int v = 0; v < coarse.num_vertices(); ++v)  // core keeps the old vertices first
+                if (topo.valence[v] > 49) fine.positions[v] *= 3;
+            trace.push_back(std::move(fine));
+        }
+        return trace;
+    }
+};
+
+TEST(LibraryReference, PastItsValenceTableIsAValenceLimitEvenWithoutACorrespondence) {
+    register_reference(std::make_unique<ShortTableLibrary>());
+    SchemeRequest req;
+    req.scheme = Scheme::Sqrt3;
+    req.levels = 3;
+    req.references = {"short-table"};
+    const SchemeComparison c = compare_scheme(datasets::bundled_mesh("pole-64"), "pole-64", req);
+    ASSERT_EQ(c.runs.size(), 1u);
+    const SchemeReferenceRun& r = c.runs[0];
+    EXPECT_EQ(r.correspondence.method, MatchMethod::None) << r.correspondence.note;  // level 3 cannot be matched
+    EXPECT_EQ(r.verdict, Verdict::Diverge);
+    EXPECT_EQ(r.divergence_class, DivergenceClass::ValenceLimit) << r.explanation;
+    // pole-64's two poles have valence 64.
+    EXPECT_NE(r.explanation.find("exactly the 2 vertices of larger valence (up to 64) differ"), std::string::npos)
+        << r.explanation;
 }
 
 // MeshLab as the default suite has it: Loop under each of its weight families against core in

@@ -97,8 +97,13 @@ TEST(Sqrt3Comparison, OneCallAgreesPerLevelCallsNeverRefineTheBoundary) {
             SCOPED_TRACE(b.name + " vs " + r.reference);
             const bool one_call = r.reference.find("one-call") != std::string::npos;
             if (r.reference.rfind("openmesh", 0) == 0 && max_valence(b.mesh) > 49) {
-                // Sqrt3T's weight table has 50 entries: pole-64 reads past it.
-                EXPECT_EQ(r.divergence_class, DivergenceClass::ValenceLimit) << r.explanation;
+                // Sqrt3T's weight table has 50 entries: pole-64 reads past it, and what it finds
+                // there differs from run to run: weights that move the poles (the valence limit,
+                // measured at level 1) or a non-finite position (an invalid output).
+                if (r.verdict == Verdict::RefInvalidOutput)
+                    EXPECT_NE(r.explanation.find("is not finite"), std::string::npos) << r.explanation;
+                else
+                    EXPECT_EQ(r.divergence_class, DivergenceClass::ValenceLimit) << r.explanation;
             } else if (!one_call && open_mesh(b.mesh)) {
                 EXPECT_EQ(r.divergence_class, DivergenceClass::Parity) << r.explanation;
                 EXPECT_LE(r.max_rel_with_reference_rule, tolerances::kAgreementRelative);

@@ -56,20 +56,24 @@ bool beyond_valence_table(const Implementation& ref, Scheme scheme, const Scheme
     if (c.method == MatchMethod::None) return false;
     const std::vector<double> d = vertex_distances(ours, trace[1], c.ref_to_ours);
     const double diagonal = bounding_box_diagonal(ours.positions);
-    int differing = 0;
+    int differing = 0, non_finite = 0;
     double worst = 0;
     for (size_t i = 0; i < d.size(); ++i) {
-        if (!(d[i] > tolerance * diagonal)) continue;
+        if (d[i] <= tolerance * diagonal) continue;  // a non-finite position differs too
         const int v = c.ref_to_ours[i];  // core keeps old vertices first, in input order
         if (v >= input.num_vertices() || topo.valence[v] <= max_valence) return false;
         ++differing;
-        worst = std::max(worst, d[i] / diagonal);
+        if (std::isfinite(d[i])) worst = std::max(worst, d[i] / diagonal);
+        else ++non_finite;
     }
     if (differing != beyond) return false;
     explanation = ref.name() + "'s weight table ends at valence " + std::to_string(max_valence) + " (" +
-                  support->valence_table + "); at level 1 exactly the " + std::to_string(beyond) +
-                  " vertices of larger valence (up to " + std::to_string(largest) + ") differ, by up to " + sci(worst) +
-                  " of the diagonal, and every other vertex agrees";
+                  support->valence_table + ") and what it reads past the table is undefined; at level 1 exactly the " + std::to_string(beyond) +
+                  " vertices of larger valence (up to " + std::to_string(largest) + ") differ, " +
+                  (non_finite == differing ? std::string("all to non-finite positions")
+                                           : "by up to " + sci(worst) + " of the diagonal" +
+                                                 (non_finite ? " (" + std::to_string(non_finite) + " non-finite)" : "")) +
+                  ", and every other vertex agrees";
     return true;
 }
 
@@ -177,8 +181,21 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
             run.correspondence = match_refinement(level_view(same_rule_levels.empty() ? our_levels : same_rule_levels), *it.trace);
         else
             run.correspondence = match_nearest_and_faces(same_rule_mesh, theirs);
+        // A reference whose weight table ends below the input's valence reads past it: what it
+        // puts at those vertices is undefined (OpenMesh's Sqrt3T reads whatever lies beyond
+        // its vector), and only level 1, where nothing else has yet mixed it in, shows it.
+        // The test stands whether or not the final levels could be matched.
+        // A reference that computes in float is held to the float tier (tolerances::kFloatAgreementUlps).
+        const bool in_float = ref.capabilities().precision == Precision::Float;
+        const double tolerance = agreement_tolerance(ours, in_float, req.tolerance, max_valence, req.levels);
+        const DivergenceTest valence_table = [&]() -> std::optional<Classification> {
+            std::string why;
+            if (!beyond_valence_table(ref, req.scheme, ref_rule, input, *it.trace, tolerance, why)) return std::nullopt;
+            return Classification{DivergenceClass::ValenceLimit, why};
+        };
         if (run.correspondence.method == MatchMethod::None) {
-            // Without a correspondence only the topology test of the ladder can be run.
+            // Without a correspondence only the valence-table and topology tests of the ladder
+            // can be run.
             run.verdict = Verdict::Diverge;
             // With equal counts that is no measured topology difference: a rule that moves
             // vertices far (a wrong weight) breaks a match by position too.
@@ -188,6 +205,7 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
                                           std::to_string(same_rule_mesh.num_faces()) + " and " +
                                           std::to_string(same_rule_mesh.num_vertices());
             DivergenceTests only_topology;
+            only_topology.valence_table = valence_table;
             only_topology.topology = [&]() -> std::optional<Classification> {
                 if (!measured_topology_difference(topology_counts(same_rule_mesh), topology_counts(theirs), false,
                                                   MatchMethod::None))
@@ -209,9 +227,6 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
                                                           : run.correspondence.ref_to_ours);
         const MeshComparison with_rule = compare_meshes(same_rule_mesh, theirs, run.correspondence.ref_to_ours);
         run.max_rel_with_reference_rule = with_rule.max_rel;
-        // A reference that computes in float is held to the float tier (tolerances::kFloatAgreementUlps).
-        const bool in_float = ref.capabilities().precision == Precision::Float;
-        const double tolerance = agreement_tolerance(ours, in_float, req.tolerance, max_valence, req.levels);
         const bool rule_explains = rules_differ && with_rule.topology_equal() && with_rule.max_rel <= tolerance;
         if (run.comparison.topology_equal() && run.comparison.max_rel <= tolerance) {
             run.verdict = Verdict::Agree;
@@ -261,11 +276,7 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
                 return nonmanifold_handling(nonmanifold_reach(level_view(our_levels)), ours, theirs,
                                             run.correspondence.ref_to_ours, tolerance, ref.name(), run.comparison.max_rel);
             };
-            tests.valence_table = [&]() -> std::optional<Classification> {
-                std::string why;
-                if (!beyond_valence_table(ref, req.scheme, ref_rule, input, *it.trace, tolerance, why)) return std::nullopt;
-                return Classification{DivergenceClass::ValenceLimit, why};
-            };
+            tests.valence_table = valence_table;
             tests.topology = [&]() -> std::optional<Classification> {
                 if (same_faces || !measured_topology_difference(run.comparison.ours, run.comparison.ref, false,
                                                                 run.correspondence.method))

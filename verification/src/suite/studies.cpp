@@ -32,12 +32,15 @@ Check decided(const std::string& reference, const std::string& name, const std::
     return {subject, name, reference, measured, tolerance, unit, note, outcome};
 }
 
-/// One check per reference run of a scheme comparison, with the run's verdict and class.
+/// One check per reference run of a scheme comparison, with the run's verdict and class; a
+/// run without a result or a vertex correspondence measured nothing (NaN, "measured -").
 void add_scheme_runs(const SchemeComparison& c, double tolerance, std::vector<Check>& checks) {
-    for (const SchemeReferenceRun& r : c.runs)
+    for (const SchemeReferenceRun& r : c.runs) {
+        const bool measured = r.outcome.status == RunStatus::Ok && r.correspondence.method != MatchMethod::None;
         checks.push_back(decided(r.reference, std::string(to_string(c.scheme)) + " " + c.rule + " L" + std::to_string(c.levels),
-                                 c.input, r.comparison.max_rel, tolerance, "rel", r.rule + " rule: " + r.explanation,
-                                 {r.verdict, r.divergence_class}));
+                                 c.input, measured ? r.comparison.max_rel : NAN, tolerance, "rel",
+                                 r.rule + " rule: " + r.explanation, {r.verdict, r.divergence_class}));
+    }
 }
 
 }  // namespace
