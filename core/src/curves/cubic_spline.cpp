@@ -104,20 +104,27 @@ BezierChain sliding_window(std::span<const Vec3> control, CubicBasis basis, bool
     for (size_t k = 0; k < segments; ++k) {
         // Closed curves read the window cyclically, so segment k still runs from p_{k+1}.
         const std::array<Vec3, 4> window{control[k % n], control[(k + 1) % n], control[(k + 2) % n], control[(k + 3) % n]};
-        const std::array<Vec3, 4> b = to_bezier(basis, window);
         // The basis change sums control points (B-spline: 1/6, 4/6, 1/6; Catmull-Rom: with
-        // negative weights), which overflows for points near DBL_MAX.
-        for (int i = 0; i < 4; ++i)
-            if (!b[i].allFinite())
-                throw InputError("segment " + std::to_string(k) + ": Bezier control point " + std::to_string(i) +
-                                 " of the basis change is not finite; the control points overflow double in its "
-                                 "sums, so scale the curve down");
-        c.points.insert(c.points.end(), b.begin(), b.end());
+        // negative weights).
+        append_segment(c, static_cast<int>(k), to_bezier(basis, window));
     }
     return c;
 }
 
 }  // namespace
+
+std::array<Vec3, 4> hermite_to_bezier(const Vec3& p0, const Vec3& m0, const Vec3& p1, const Vec3& m1) {
+    return {p0, p0 + m0 / 3.0, p1 - m1 / 3.0, p1};
+}
+
+void append_segment(BezierChain& chain, int k, const std::array<Vec3, 4>& segment) {
+    for (int i = 0; i < 4; ++i)
+        if (!segment[i].allFinite())
+            throw InputError("segment " + std::to_string(k) + ": Bezier control point " + std::to_string(i) +
+                             " is not finite; the control points overflow double in the sums that make it, so "
+                             "scale the curve down");
+    chain.points.insert(chain.points.end(), segment.begin(), segment.end());
+}
 
 BezierChain bspline_chain(std::span<const Vec3> control) {
     if (control.size() < 4)

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "crossdiv/curves/bessel_overhauser.h"
 #include "crossdiv/curves/bezier.h"
 #include "crossdiv/error.h"
 
@@ -13,6 +14,10 @@ std::string_view to_string(CurveType t) {
         case CurveType::BSpline: return "bspline";
         case CurveType::CatmullRom: return "catmull-rom";
         case CurveType::CatmullRomClosed: return "catmull-rom-closed";
+        case CurveType::Tcb: return "tcb";
+        case CurveType::TcbClosed: return "tcb-closed";
+        case CurveType::BesselOverhauser: return "bessel-overhauser";
+        case CurveType::BesselOverhauserClosed: return "bessel-overhauser-closed";
         case CurveType::Bezier: return "bezier";
         case CurveType::Primitive: return "primitive";
     }
@@ -29,15 +34,23 @@ BezierChain CurveRecord::chain() const {
         case CurveType::BSpline: return bspline_chain(control);
         case CurveType::CatmullRom: return catmull_rom_chain(control, false);
         case CurveType::CatmullRomClosed: return catmull_rom_chain(control, true);
+        case CurveType::Tcb: return kochanek_bartels_chain(control, tcb, false);
+        case CurveType::TcbClosed: return kochanek_bartels_chain(control, tcb, true);
+        case CurveType::BesselOverhauser: return bessel_overhauser_chain(control, false);
+        case CurveType::BesselOverhauserClosed: return bessel_overhauser_chain(control, true);
         case CurveType::Bezier: return single_bezier(control);
         case CurveType::Primitive: break;
     }
     throw InputError(keyword + " is a primitive, not a spline: it has no control points");
 }
 
+bool CurveRecord::wraps() const {
+    return type == CurveType::CatmullRomClosed || type == CurveType::TcbClosed || type == CurveType::BesselOverhauserClosed;
+}
+
 bool CurveRecord::closed() const {
     if (type == CurveType::Primitive) return primitive.closed();
-    if (type == CurveType::CatmullRomClosed) return true;
+    if (wraps()) return true;
     const BezierChain c = chain();
     return c.points.front() == c.points.back();
 }

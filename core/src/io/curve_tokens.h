@@ -8,6 +8,7 @@
 #include <istream>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "crossdiv/error.h"
@@ -84,7 +85,11 @@ public:
         return x;
     }
     /// One bracketed point with `dim` coordinates.
-    Vec3 point(int dim, int index, long count) {
+    Vec3 point(int dim, int index, long count) { return point_with_extras(dim, 0, index, count).first; }
+
+    /// One bracketed point with `dim` coordinates, then `extras` more numbers or none:
+    /// `[x y]` or `[x y e1 .. ek]`. The extras are empty when the point has none.
+    std::pair<Vec3, std::vector<double>> point_with_extras(int dim, int extras, int index, long count) {
         const std::string which = "point " + std::to_string(index + 1) + " of " + std::to_string(count);
         const Token& open = next(("'[' opening " + which).c_str());
         if (open.text != "[")
@@ -95,11 +100,21 @@ public:
                 fail_at(peek().line, which + " has " + std::to_string(c) + " coordinates, expected " + std::to_string(dim));
             p[c] = real("a coordinate");
         }
+        std::vector<double> more;
+        if (extras > 0 && !done() && peek().text != "]" && peek().text != "[") {
+            for (int e = 0; e < extras; ++e) {
+                if (!done() && (peek().text == "]" || peek().text == "["))
+                    fail_at(peek().line, which + " has " + std::to_string(dim + e) + " numbers, expected " +
+                                             std::to_string(dim) + " or " + std::to_string(dim + extras));
+                more.push_back(real("a number"));
+            }
+        }
         const Token& close = next(("']' closing " + which).c_str());
         if (close.text == "[") fail_at(close.line, "unbalanced bracket: '[' inside " + which);
         if (close.text != "]")
-            fail_at(close.line, which + " has more than " + std::to_string(dim) + " coordinates (or an unclosed '[')");
-        return p;
+            fail_at(close.line, which + " has more than " + std::to_string(dim + extras) +
+                                    (extras > 0 ? " numbers" : " coordinates") + " (or an unclosed '[')");
+        return {p, std::move(more)};
     }
     int line() const { return done() ? (t_.empty() ? 1 : t_.back().line) : peek().line; }
     [[noreturn]] void fail(const std::string& what) const { throw ParseError(file_, line(), what); }

@@ -27,9 +27,35 @@ constexpr SplineKeyword kSplines[] = {
     {"bsp2", CurveType::BSpline, 2},          {"bsp3", CurveType::BSpline, 3},
     {"crm2", CurveType::CatmullRom, 2},       {"crm3", CurveType::CatmullRom, 3},
     {"crc2", CurveType::CatmullRomClosed, 2}, {"crc3", CurveType::CatmullRomClosed, 3},
+    {"tcb2", CurveType::Tcb, 2},              {"tcb3", CurveType::Tcb, 3},
+    {"tcc2", CurveType::TcbClosed, 2},        {"tcc3", CurveType::TcbClosed, 3},
+    {"ovh2", CurveType::BesselOverhauser, 2}, {"ovh3", CurveType::BesselOverhauser, 3},
+    {"ovc2", CurveType::BesselOverhauserClosed, 2}, {"ovc3", CurveType::BesselOverhauserClosed, 3},
 };
 
-const char* kKnown = "bez2, bez3, bsp2, bsp3, crm2, crm3, crc2, crc3, circ, helx, trfl, srev, gcyl";
+const char* kKnown =
+    "bez2, bez3, bsp2, bsp3, crm2, crm3, crc2, crc3, tcb2, tcb3, tcc2, tcc3, ovh2, ovh3, ovc2, ovc3, circ, helx, trfl, "
+    "srev, gcyl";
+
+/// A TCB key: `[x y]` (tension, continuity and bias 0) or `[x y t c b]` (3D: `[x y z t c b]`).
+void read_tcb_keys(Parser& p, CurveRecord& r, long n) {
+    std::vector<TcbParameters> given(static_cast<size_t>(n));
+    bool any = false;
+    for (long i = 0; i < n; ++i) {
+        const int line = p.line();
+        auto [point, extras] = p.point_with_extras(r.dim, 3, static_cast<int>(i), n);
+        r.control.push_back(point);
+        if (extras.empty()) continue;
+        const char* names[3] = {"tension", "continuity", "bias"};
+        for (int k = 0; k < 3; ++k)
+            if (extras[k] < -1.0 || extras[k] > 1.0)
+                p.fail_at(line, "key " + std::to_string(i + 1) + " of " + std::to_string(n) + ": " + names[k] + " " +
+                                    std::to_string(extras[k]) + " is outside [-1, 1]");
+        given[static_cast<size_t>(i)] = {extras[0], extras[1], extras[2]};
+        any = true;
+    }
+    if (any) r.tcb = std::move(given);
+}
 
 }  // namespace
 
@@ -68,7 +94,10 @@ CurveFile read_swp(std::istream& in, const std::string& name) {
             r.name = p.word("a curve name");
             r.steps = static_cast<int>(p.integer("STEPS", 1, kMaxSteps));
             const long n = p.integer("the point count", 1);
-            for (long i = 0; i < n; ++i) r.control.push_back(p.point(r.dim, static_cast<int>(i), n));
+            if (r.type == CurveType::Tcb || r.type == CurveType::TcbClosed)
+                read_tcb_keys(p, r, n);
+            else
+                for (long i = 0; i < n; ++i) r.control.push_back(p.point(r.dim, static_cast<int>(i), n));
             try {
                 (void)r.chain();  // the count rules: 3n + 1 for Bezier, >= 4 for B-splines, ...
             } catch (const InputError& e) {

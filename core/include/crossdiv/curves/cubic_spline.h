@@ -71,6 +71,15 @@ struct BezierChain {
     }
 };
 
+/// The cubic Bezier of the Hermite segment from p0 to p1 with end derivatives m0, m1:
+/// p0, p0 + m0/3, p1 - m1/3, p1.
+std::array<Vec3, 4> hermite_to_bezier(const Vec3& p0, const Vec3& m0, const Vec3& p1, const Vec3& m1);
+
+/// Appends `segment` to `chain`, refusing a control point that is not finite (a basis change
+/// or tangent sums control points, which overflows for points near DBL_MAX).
+/// @throws InputError naming segment `k`.
+void append_segment(BezierChain& chain, int k, const std::array<Vec3, 4>& segment);
+
 /// A single Bezier curve of any degree (the BZC file's curve) as a one-segment chain.
 /// @throws InputError if `control` is empty.
 BezierChain single_bezier(std::span<const Vec3> control);

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "crossdiv/curves/kochanek_bartels.h"
 #include "crossdiv/curves/primitives.h"
 
 namespace crossdiv {
@@ -18,6 +19,10 @@ enum class CurveType {
     BSpline,           ///< SWP bsp2/bsp3: uniform cubic, sliding window
     CatmullRom,        ///< SWP crm2/crm3 (our extension): open Catmull-Rom
     CatmullRomClosed,  ///< SWP crc2/crc3 (our extension): closed, wraps around
+    Tcb,               ///< SWP tcb2/tcb3 (our extension): open Kochanek-Bartels, keys as Catmull-Rom's
+    TcbClosed,         ///< SWP tcc2/tcc3 (our extension): closed Kochanek-Bartels
+    BesselOverhauser,        ///< SWP ovh2/ovh3 (our extension): open, chord-length knots
+    BesselOverhauserClosed,  ///< SWP ovc2/ovc3 (our extension): closed
     Bezier,            ///< BZC: one Bezier curve of any degree
     Primitive,         ///< SWP circ, helx, trfl
 };
@@ -36,6 +41,9 @@ struct CurveRecord {
     int dim = 2;          ///< 2 (points in the xy-plane, z = 0) or 3
     int steps = 1;        ///< SWP STEPS: uniform intervals per segment (primitives: in all)
     std::vector<Vec3> control;
+    /// Tension, continuity and bias per key (Tcb, TcbClosed): one per control point, or none
+    /// for all 0.
+    std::vector<TcbParameters> tcb;
     Primitive primitive;  ///< when type == Primitive
     int line = 0;         ///< where the record starts
 
@@ -43,7 +51,10 @@ struct CurveRecord {
     std::string label(int index) const;
     /// The Bezier segments of a spline record. @throws InputError for a primitive.
     BezierChain chain() const;
-    /// Whether the curve closes on itself: a closed Catmull-Rom or closed primitive, or a
+    /// Whether the record is a closed interpolating spline (crc, tcc, ovc): one that wraps
+    /// around its points and has as many segments as points.
+    bool wraps() const;
+    /// Whether the curve closes on itself: a wrapping spline or closed primitive, or a
     /// spline whose first and last point coincide (the course files close B-splines by
     /// repeating three control points).
     bool closed() const;

@@ -13,8 +13,12 @@
 ///
 /// NAME '.' is anonymous. Our extensions, which standard files never contain so standard
 /// files read unchanged: `crm2|crm3 NAME STEPS N [..]...` open Catmull-Rom (N >= 4),
-/// `crc2|crc3` closed Catmull-Rom (N >= 3, wraps around), `helx NAME STEPS RADIUS PITCH TURNS`
-/// a helix about +z, `trfl NAME STEPS SCALE` a trefoil knot, and `#` comments to end of line.
+/// `crc2|crc3` closed Catmull-Rom (N >= 3, wraps around), `tcb2|tcb3` and `tcc2|tcc3` open and
+/// closed Kochanek-Bartels splines whose keys are `[x y]` or `[x y TENSION CONTINUITY BIAS]`
+/// (each in [-1, 1], 0 when left out), `ovh2|ovh3` and `ovc2|ovc3` open and closed
+/// Bessel-Overhauser splines (chord-length knots; consecutive points distinct), the open ones
+/// with Catmull-Rom's counts and ends, `helx NAME STEPS RADIUS PITCH TURNS` a helix about +z,
+/// `trfl NAME STEPS SCALE` a trefoil knot, and `#` comments to end of line.
 ///
 /// BZC (meshedit): N, then N `x y` pairs: one Bezier curve of degree N - 1.
 
