@@ -28,6 +28,20 @@ const std::vector<BundledCurve>& bundled_curves() {
          "[1.922727 -0.255455 -0.080661] [1.582727 1.374545 -1.050661] [0.912727 2.034545 -0.760661]\n"
          "[0.242727 2.094545 -0.410661] [-1.097273 1.444545 0.259339] [-1.427273 0.424545 0.929339]\n"
          "[-1.767273 -1.585455 0.371157] [0.912727 -1.585455 -0.278843]\n"},
+        {"tcb-family", "Kochanek-Bartels through six keys: Catmull-Rom, then tension, continuity and bias at +-0.5 "
+                       "(our tcb2 record)",
+         "swp",
+         "tcb2 catmull-rom 16 6 [0 0 0 0 0] [1 2 0 0 0] [3 3 0 0 0] [4 1 0 0 0] [6 0 0 0 0] [7 2 0 0 0]\n"
+         "tcb2 tension+0.5 16 6 [0 0 0.5 0 0] [1 2 0.5 0 0] [3 3 0.5 0 0] [4 1 0.5 0 0] [6 0 0.5 0 0] [7 2 0.5 0 0]\n"
+         "tcb2 tension-0.5 16 6 [0 0 -0.5 0 0] [1 2 -0.5 0 0] [3 3 -0.5 0 0] [4 1 -0.5 0 0] [6 0 -0.5 0 0] [7 2 -0.5 0 0]\n"
+         "tcb2 continuity+0.5 16 6 [0 0 0 0.5 0] [1 2 0 0.5 0] [3 3 0 0.5 0] [4 1 0 0.5 0] [6 0 0 0.5 0] [7 2 0 0.5 0]\n"
+         "tcb2 continuity-0.5 16 6 [0 0 0 -0.5 0] [1 2 0 -0.5 0] [3 3 0 -0.5 0] [4 1 0 -0.5 0] [6 0 0 -0.5 0] [7 2 0 -0.5 0]\n"
+         "tcb2 bias+0.5 16 6 [0 0 0 0 0.5] [1 2 0 0 0.5] [3 3 0 0 0.5] [4 1 0 0 0.5] [6 0 0 0 0.5] [7 2 0 0 0.5]\n"
+         "tcb2 bias-0.5 16 6 [0 0 0 0 -0.5] [1 2 0 0 -0.5] [3 3 0 0 -0.5] [4 1 0 0 -0.5] [6 0 0 0 -0.5] [7 2 0 0 -0.5]\n"
+         "tcb2 mixed 16 6 [0 0] [1 2 0.3 -0.4 0.2] [3 3 -0.2 0.8 -0.6] [4 1] [6 0 0.9 0 0] [7 2]\n"},
+        {"bessel-overhauser", "Bessel-Overhauser through unevenly spaced points, open and closed (our ovh2, ovc2)", "swp",
+         "ovh2 uneven 16 7 [0 0] [0.2 0.5] [1 1] [3.5 1.2] [4 0] [4.2 -0.3] [7 -1]\n"
+         "ovc2 loop 16 6 [0 0] [3 0] [3.3 0.4] [3 2] [0.5 2.5] [-0.2 1]\n"},
         {"helix", "three turns of a helix (our helx record)", "swp", "helx spring 96 1 0.5 3\n"},
         {"trefoil", "trefoil knot (our trfl record)", "swp", "trfl knot 120 1\n"},
         {"circles", "the course's circles.swp: two circles", "swp", "circ . 30 1\ncirc . 50 2\n"},

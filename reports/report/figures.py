@@ -260,3 +260,19 @@ def curve_degrees(d, figdir):
     ax.set_title("de Casteljau against two other algorithms")
     ax.legend(fontsize=7)
     return save(fig, figdir, "curve_degrees.png")
+
+
+def interpolating_splines(shapes, figdir, name):
+    """The keys and uniform tessellations of the TCB and Bessel-Overhauser curves of one input,
+    all on one axes (the TCB family shares its keys)."""
+    fig, ax = plt.subplots(figsize=(6.4, 4))
+    for row in shapes:
+        xs, ys = zip(*row["points"])
+        ax.plot(xs, ys, lw=1.2, label=f"{row['curve']} ({row['type']})")
+        kx, ky = zip(*row["keys"])
+        ax.plot(kx, ky, "ko", ms=3)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_title("Interpolating splines through their keys (black)")
+    ax.legend(fontsize=7, loc="best")
+    return save(fig, figdir, name)
+

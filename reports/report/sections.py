@@ -141,6 +141,24 @@ def curve_section(curve_cases, bench, figdir):
                       fmt(r.get("optimal_edges"), ".1f"),
                       fmt(r["distance_edges"] / r["optimal_edges"], ".2f") if r.get("optimal_edges") else "-")
                      for r in tess]))
+    for i, c in enumerate(curve_cases):
+        shapes = c.get("tables", {}).get("shapes")
+        if shapes:
+            s.add(Text(f"{c['input']}: Kochanek-Bartels (tension, continuity, bias per key) and Bessel-Overhauser "
+                       "(chord-length knots) curves:"),
+                  Figure(figures.interpolating_splines(shapes, figdir, f"interpolating_splines_{i}.png"), c["input"]))
+    spline_types = ("catmull-rom", "tcb", "bessel-overhauser")
+    continuity = [row for c in curve_cases for row in c.get("tables", {}).get("continuity", [])
+                  if row["type"].startswith(spline_types)]
+    if continuity:
+        s.add(Text("Continuity of the interpolating splines: the largest jump of position, first and second "
+                   "derivative (in the chain's parameter, one unit per segment) at a joint, over the curve's size. "
+                   "Catmull-Rom is C1; TCB jumps in the first derivative by (1-t) c ((1+b)(p_i - p_{i-1}) - (1-b)"
+                   "(p_{i+1} - p_i)) (checked against that formula), so it is C1 where c = 0; Bessel-Overhauser is C1 "
+                   "in the chord-length parameter (checked there), so its jump here is the chords' speed change:"),
+              Table(["curve", "type", "joints", "C0 gap", "C1 jump", "C2 jump"],
+                    [(r["curve"], r["type"], r["joints"], fmt(r["c0_gap_rel"]), fmt(r["c1_jump_rel"]),
+                      fmt(r["c2_jump_rel"])) for r in continuity]))
     closure = [row for c in curve_cases for row in c.get("tables", {}).get("closure", [])]
     if closure:
         s.add(Text("Frame mismatch after one lap of each closed curve (before and after distributing it):"),

@@ -127,3 +127,27 @@ def test_the_coverage_table_is_the_same_in_readme_and_reports():
     # every core header directory has a row
     for part in ("subdiv/", "mesh/", "curves/", "surfaces/", "io/"):
         assert any(part in row for row in reports), part
+
+
+def test_interpolating_splines_get_their_figure_and_continuity_table(tmp_path):
+    results = results_fixture()
+    curve = results["cases"][2]
+    keys = [[0, 0], [1, 2], [3, 3], [4, 1]]
+    curve["tables"] = {
+        "shapes": [{"curve": "cr", "type": "tcb", "keys": keys, "tcb": [], "points": [[1, 2], [2, 2.8], [3, 3]]},
+                   {"curve": "c+", "type": "tcb", "keys": keys, "tcb": [[0, 0.5, 0]] * 4,
+                    "points": [[1, 2], [2.2, 2.9], [3, 3]]}],
+        "continuity": [{"curve": "cr", "type": "tcb", "joints": 2, "c0_gap_rel": 0, "c1_jump_rel": 0, "c2_jump_rel": 1.0},
+                       {"curve": "c+", "type": "tcb", "joints": 2, "c0_gap_rel": 0, "c1_jump_rel": 0.25,
+                        "c2_jump_rel": 1.4},
+                       {"curve": "b", "type": "bspline", "joints": 2, "c0_gap_rel": 0, "c1_jump_rel": 0,
+                        "c2_jump_rel": 0}]}
+    (tmp_path / "results.json").write_text(json.dumps(results))
+    make_report.main(str(tmp_path))
+    md = (tmp_path / "report.md").read_text()
+    figures = list((tmp_path / "figures").glob("interpolating_splines_*.png"))
+    assert len(figures) == 1 and figures[0].stat().st_size > 1000
+    table = [t for t in tables_of(md) if t[0][0].strip() == "curve" and t[0][1].strip() == "type"][0]
+    # The TCB rows, not the B-spline's (it is no interpolating spline).
+    assert [row[0].strip() for row in table[2:]] == ["cr", "c+"]
+    assert table[3][4].strip() == "0.25"

@@ -5,7 +5,9 @@
 #include <limits>
 #include <random>
 
+#include "crossdiv/curves/bessel_overhauser.h"
 #include "crossdiv/curves/bezier.h"
+#include "crossdiv/curves/kochanek_bartels.h"
 #include "crossdiv/datasets/bundled_curves.h"
 #include "crossdiv/error.h"
 #include "crossdiv/io/curve_io.h"
@@ -193,15 +195,28 @@ void check_against_eigen(const Implementation& eigen, const CurveRecord& r, cons
 /// Continuity at each joint, measured, against what the representation dictates.
 void check_continuity(const CurveRecord& r, const BezierChain& c, const std::string& label, Checker& out, json& table) {
     const int n = c.num_segments();
-    const int joints = n - 1 + (r.type == CurveType::CatmullRomClosed ? 1 : 0);
+    const int joints = n - 1 + (r.wraps() ? 1 : 0);
     if (joints <= 0) return;
     const double s = scale_of(c);
-    double gap[3] = {0, 0, 0}, predicted_error[3] = {0, 0, 0};
+    const bool tcb = r.type == CurveType::Tcb || r.type == CurveType::TcbClosed;
+    const bool bessel = r.type == CurveType::BesselOverhauser || r.type == CurveType::BesselOverhauserClosed;
+    const std::vector<double> chords = bessel ? bessel_overhauser_chords(r.control, r.wraps()) : std::vector<double>{};
+    double gap[3] = {0, 0, 0}, predicted_error[3] = {0, 0, 0}, chord_velocity_jump = 0;
     for (int j = 0; j < joints; ++j) {
         const auto a = c.segment(j), b = c.segment((j + 1) % n);
         const BezierJet ea = bezier_jet(a, 1.0), sb = bezier_jet(b, 0.0);
         const Vec3 jump[3] = {sb.position - ea.position, sb.d1 - ea.d1, sb.d2 - ea.d2};
         for (int o = 0; o < 3; ++o) gap[o] = std::max(gap[o], jump[o].norm());
+        if (tcb) {
+            // The jump the key's continuity dictates; joint j is key j + 2 (segment k runs from
+            // key k + 1).
+            const size_t m = r.control.size(), i = (j + 2) % m;
+            const TcbParameters p = r.tcb.empty() ? TcbParameters{} : r.tcb[i];
+            const Vec3 want = kochanek_bartels_jump(r.control[(i + m - 1) % m], r.control[i], r.control[(i + 1) % m], p);
+            predicted_error[1] = std::max(predicted_error[1], (jump[1] - want).norm());
+        }
+        if (bessel)  // velocities in the chord-length parameter: the chain's over each chord
+            chord_velocity_jump = std::max(chord_velocity_jump, (sb.d1 / chords[(j + 1) % n] - ea.d1 / chords[j]).norm());
         if (r.type == CurveType::BezierChain) {
             // The jump the control points dictate: p = the input points around joint 3(j+1).
             const auto& p = r.control;
@@ -221,12 +236,71 @@ void check_continuity(const CurveRecord& r, const BezierChain& c, const std::str
                     "derivative jump at each joint vs the jump its control points dictate");
         return;
     }
+    if (tcb) {
+        out.add(label, "continuity-c0", "analytic", gap[0] / s, 4 * rounding_bound(d, 0), "rel", "gap at each key");
+        out.add(label, "continuity-c1", "analytic", predicted_error[1] / s, 4 * rounding_bound(d, 1), "rel",
+                "derivative jump at each key vs (1-t) c ((1+b)(p_i - p_{i-1}) - (1-b)(p_{i+1} - p_i)), 0 where c = 0");
+        return;
+    }
+    if (bessel) {
+        out.add(label, "continuity-c0", "analytic", gap[0] / s, 4 * rounding_bound(d, 0), "rel", "gap at each point");
+        // A velocity in the chord-length parameter has about unit length: its jump is absolute.
+        out.add(label, "continuity-c1", "analytic", chord_velocity_jump, 4 * rounding_bound(d, 1), "abs",
+                "velocity jump at each point in the chord-length parameter (Bessel-Overhauser: C1 there)");
+        return;
+    }
     // B-splines are C2, Catmull-Rom C1 (its C2 jump is reported in the table, not required).
     const int required = r.type == CurveType::BSpline ? 2 : 1;
     const char* names[3] = {"continuity-c0", "continuity-c1", "continuity-c2"};
     for (int o = 0; o <= required; ++o)
         out.add(label, names[o], "analytic", gap[o] / s, 4 * rounding_bound(d, o), "rel",
                 std::string("jump at each joint (") + (required == 2 ? "B-spline: C2" : "Catmull-Rom: C1") + ")");
+}
+
+/// Whether the record's chain passes through its points (from p_1 open, every point closed).
+bool interpolating(const CurveRecord& r) {
+    switch (r.type) {
+        case CurveType::CatmullRom:
+        case CurveType::CatmullRomClosed:
+        case CurveType::Tcb:
+        case CurveType::TcbClosed:
+        case CurveType::BesselOverhauser:
+        case CurveType::BesselOverhauserClosed: return true;
+        default: return false;
+    }
+}
+
+/// An interpolating spline passes exactly through its points: segment k starts at p_{k+1} and
+/// ends at p_{k+2} (mod n when closed), the points themselves.
+void check_interpolation(const CurveRecord& r, const BezierChain& c, const std::string& label, Checker& out) {
+    const size_t n = r.control.size();
+    double through = 0;
+    for (int k = 0; k < c.num_segments(); ++k) {
+        through = std::max(through, (bezier_point(c.segment(k), 0.0) - r.control[(k + 1) % n]).norm());
+        through = std::max(through, (bezier_point(c.segment(k), 1.0) - r.control[(k + 2) % n]).norm());
+    }
+    out.add(label, "interpolation", "analytic", through / scale_of(c), 0.0, "rel",
+            std::string(to_string(r.type)) + " passes exactly through p_1 .. p_{n-2} (closed: every point)");
+}
+
+/// A TCB record whose parameters are all 0 is Catmull-Rom's chain, bit for bit.
+void check_tcb_reduction(const CurveRecord& r, const BezierChain& c, const std::string& label, Checker& out) {
+    for (const TcbParameters& p : r.tcb)
+        if (!(p == TcbParameters{})) return;
+    const BezierChain cr = catmull_rom_chain(r.control, r.wraps());
+    double e = 0;
+    for (size_t i = 0; i < c.points.size(); ++i) e = std::max(e, (c.points[i] - cr.points[i]).norm());
+    out.add(label, "tcb-zero-is-catmull-rom", "analytic", e / scale_of(c), 0.0, "rel",
+            "tension, continuity and bias 0: every Bezier control point equals Catmull-Rom's bit for bit");
+}
+
+/// The record's keys and uniform tessellation, for the report's figure of the TCB family.
+json shape_row(const CurveRecord& r, const std::string& label, const Polyline& p) {
+    json keys = json::array(), points = json::array(), params = json::array();
+    for (const Vec3& k : r.control) keys.push_back({k.x(), k.y()});
+    for (const Vec3& x : p.positions) points.push_back({x.x(), x.y()});
+    for (const TcbParameters& t : r.tcb) params.push_back({t.tension, t.continuity, t.bias});
+    return {{"curve", label}, {"type", to_string(r.type)}, {"keys", keys}, {"tcb", params}, {"points", points}};
 }
 
 /// Each basis conversion reproduces the seed's matrix form G B T(t).
@@ -243,15 +317,6 @@ void check_conversion(const CurveRecord& r, const BezierChain& c, const std::str
     }
     out.add(label, "basis-conversion", "matrix-form", e / scale_of(c), rounding_bound(3, 0), "rel",
             std::string(to_string(basis)) + " -> Bezier vs G B T(t) at 65 t per segment");
-    if (r.type == CurveType::BSpline) return;
-    double through = 0;
-    const int segs = c.num_segments();
-    for (int k = 0; k < segs; ++k) {
-        through = std::max(through, (bezier_point(c.segment(k), 0.0) - r.control[(k + 1) % n]).norm());
-        through = std::max(through, (bezier_point(c.segment(k), 1.0) - r.control[(k + 2) % n]).norm());
-    }
-    out.add(label, "interpolation", "analytic", through / scale_of(c), 0.0, "rel",
-            "Catmull-Rom passes exactly through p_1 .. p_{n-2} (closed: every point)");
 }
 
 void check_frames(const CurveRecord& r, const Polyline& p, const std::string& label, Checker& out, json& closure) {
@@ -373,7 +438,7 @@ CheckReport check_curve_file(const CurveFile& file, const std::string& input) {
     CheckReport report;
     report.input = input;
     Checker out(report);
-    json tess = json::array(), continuity = json::array(), closure = json::array();
+    json tess = json::array(), continuity = json::array(), closure = json::array(), shapes = json::array();
     for (size_t i = 0; i < file.curves.size(); ++i) {
         const CurveRecord& r = file.curves[i];
         const std::string label = r.label(static_cast<int>(i));
@@ -404,6 +469,11 @@ CheckReport check_curve_file(const CurveFile& file, const std::string& input) {
         check_continuity(r, c, label, out, continuity);
         if (r.type == CurveType::BSpline || r.type == CurveType::CatmullRom || r.type == CurveType::CatmullRomClosed)
             check_conversion(r, c, label, out);
+        if (interpolating(r)) check_interpolation(r, c, label, out);
+        if (r.type == CurveType::Tcb || r.type == CurveType::TcbClosed) check_tcb_reduction(r, c, label, out);
+        if (r.type == CurveType::Tcb || r.type == CurveType::TcbClosed || r.type == CurveType::BesselOverhauser ||
+            r.type == CurveType::BesselOverhauserClosed)
+            shapes.push_back(shape_row(r, label, uniform));
         check_frames(r, uniform, label, out, closure);
         // Tessellation guarantees at one tolerance per curve (1e-3 of its size): the distance
         // mode and Wang's counts must meet it as measured.
@@ -426,6 +496,7 @@ CheckReport check_curve_file(const CurveFile& file, const std::string& input) {
     report.tables["tessellation"] = tess;
     report.tables["continuity"] = continuity;
     report.tables["closure"] = closure;
+    if (!shapes.empty()) report.tables["shapes"] = shapes;
     return report;
 }
 
