@@ -18,6 +18,7 @@ std::string_view to_string(CurveType t) {
         case CurveType::TcbClosed: return "tcb-closed";
         case CurveType::BesselOverhauser: return "bessel-overhauser";
         case CurveType::BesselOverhauserClosed: return "bessel-overhauser-closed";
+        case CurveType::CameraPath: return "camera-path";
         case CurveType::Bezier: return "bezier";
         case CurveType::Primitive: return "primitive";
     }
@@ -38,6 +39,7 @@ BezierChain CurveRecord::chain() const {
         case CurveType::TcbClosed: return kochanek_bartels_chain(control, tcb, true);
         case CurveType::BesselOverhauser: return bessel_overhauser_chain(control, false);
         case CurveType::BesselOverhauserClosed: return bessel_overhauser_chain(control, true);
+        case CurveType::CameraPath: return bezier_chain(control);
         case CurveType::Bezier: return single_bezier(control);
         case CurveType::Primitive: break;
     }

@@ -31,11 +31,12 @@ constexpr SplineKeyword kSplines[] = {
     {"tcc2", CurveType::TcbClosed, 2},        {"tcc3", CurveType::TcbClosed, 3},
     {"ovh2", CurveType::BesselOverhauser, 2}, {"ovh3", CurveType::BesselOverhauser, 3},
     {"ovc2", CurveType::BesselOverhauserClosed, 2}, {"ovc3", CurveType::BesselOverhauserClosed, 3},
+    {"cam3", CurveType::CameraPath, 3},
 };
 
 const char* kKnown =
-    "bez2, bez3, bsp2, bsp3, crm2, crm3, crc2, crc3, tcb2, tcb3, tcc2, tcc3, ovh2, ovh3, ovc2, ovc3, circ, helx, trfl, "
-    "srev, gcyl";
+    "bez2, bez3, bsp2, bsp3, crm2, crm3, crc2, crc3, tcb2, tcb3, tcc2, tcc3, ovh2, ovh3, ovc2, ovc3, cam3, circ, helx, "
+    "trfl, srev, gcyl";
 
 /// A TCB key: `[x y]` (tension, continuity and bias 0) or `[x y t c b]` (3D: `[x y z t c b]`).
 void read_tcb_keys(Parser& p, CurveRecord& r, long n) {
@@ -55,6 +56,19 @@ void read_tcb_keys(Parser& p, CurveRecord& r, long n) {
         any = true;
     }
     if (any) r.tcb = std::move(given);
+}
+
+/// A camera path's control point: `[x y z w qx qy qz]`, a position and a unit quaternion.
+void read_camera_points(Parser& p, CurveRecord& r, long n) {
+    for (long i = 0; i < n; ++i) {
+        const int line = p.line();
+        auto [point, q] = p.point_with_extras(3, 4, static_cast<int>(i), n);
+        if (q.empty())
+            p.fail_at(line, "point " + std::to_string(i + 1) + " of " + std::to_string(n) +
+                                " has 3 numbers, expected 7 (x y z w qx qy qz)");
+        r.control.push_back(point);
+        r.orientations.emplace_back(q[0], q[1], q[2], q[3]);  // Eigen's order: w, x, y, z
+    }
 }
 
 }  // namespace
@@ -96,10 +110,13 @@ CurveFile read_swp(std::istream& in, const std::string& name) {
             const long n = p.integer("the point count", 1);
             if (r.type == CurveType::Tcb || r.type == CurveType::TcbClosed)
                 read_tcb_keys(p, r, n);
+            else if (r.type == CurveType::CameraPath)
+                read_camera_points(p, r, n);
             else
                 for (long i = 0; i < n; ++i) r.control.push_back(p.point(r.dim, static_cast<int>(i), n));
             try {
                 (void)r.chain();  // the count rules: 3n + 1 for Bezier, >= 4 for B-splines, ...
+                if (r.type == CurveType::CameraPath) r.orientations = quaternion_chain(r.orientations).control;
             } catch (const InputError& e) {
                 p.fail_at(r.line, head.text + " '" + (r.name == "." ? "." : r.name) + "': " + e.what());
             }

@@ -10,6 +10,7 @@
 
 #include "crossdiv/curves/kochanek_bartels.h"
 #include "crossdiv/curves/primitives.h"
+#include "crossdiv/curves/quaternion_bezier.h"
 
 namespace crossdiv {
 
@@ -23,6 +24,7 @@ enum class CurveType {
     TcbClosed,         ///< SWP tcc2/tcc3 (our extension): closed Kochanek-Bartels
     BesselOverhauser,        ///< SWP ovh2/ovh3 (our extension): open, chord-length knots
     BesselOverhauserClosed,  ///< SWP ovc2/ovc3 (our extension): closed
+    CameraPath,        ///< SWP cam3 (our extension): a bez3 chain of positions with a quaternion each
     Bezier,            ///< BZC: one Bezier curve of any degree
     Primitive,         ///< SWP circ, helx, trfl
 };
@@ -44,6 +46,9 @@ struct CurveRecord {
     /// Tension, continuity and bias per key (Tcb, TcbClosed): one per control point, or none
     /// for all 0.
     std::vector<TcbParameters> tcb;
+    /// One unit quaternion per control point (CameraPath): a quaternion Bezier chain with the
+    /// positions' segments.
+    std::vector<Quat> orientations;
     Primitive primitive;  ///< when type == Primitive
     int line = 0;         ///< where the record starts
 

@@ -17,7 +17,9 @@
 /// closed Kochanek-Bartels splines whose keys are `[x y]` or `[x y TENSION CONTINUITY BIAS]`
 /// (each in [-1, 1], 0 when left out), `ovh2|ovh3` and `ovc2|ovc3` open and closed
 /// Bessel-Overhauser splines (chord-length knots; consecutive points distinct), the open ones
-/// with Catmull-Rom's counts and ends, `helx NAME STEPS RADIUS PITCH TURNS` a helix about +z,
+/// with Catmull-Rom's counts and ends, `cam3 NAME STEPS N [x y z w qx qy qz] ...` a camera path
+/// (positions a bez3 chain, N = 3n + 1, and a quaternion per point, normalized on reading, whose
+/// quaternion Bezier chain gives the orientation), `helx NAME STEPS RADIUS PITCH TURNS` a helix about +z,
 /// `trfl NAME STEPS SCALE` a trefoil knot, and `#` comments to end of line.
 ///
 /// BZC (meshedit): N, then N `x y` pairs: one Bezier curve of degree N - 1.
