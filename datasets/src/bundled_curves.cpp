@@ -42,6 +42,11 @@ const std::vector<BundledCurve>& bundled_curves() {
         {"bessel-overhauser", "Bessel-Overhauser through unevenly spaced points, open and closed (our ovh2, ovc2)", "swp",
          "ovh2 uneven 16 7 [0 0] [0.2 0.5] [1 1] [3.5 1.2] [4 0] [4.2 -0.3] [7 -1]\n"
          "ovc2 loop 16 6 [0 0] [3 0] [3.3 0.4] [3 2] [0.5 2.5] [-0.2 1]\n"},
+        {"camera-path", "a camera flying a two-piece cubic path, turning and banking (our cam3 record: position "
+                        "and orientation quaternion w x y z per control point)",
+         "swp",
+         "cam3 fly 24 7 [0 0 0 1 0 0 0] [2 0 0.5 0.98 0 0 0.2] [4 1 1 0.92 0.1 0 0.38] [5 3 1 0.7 0.1 0.1 0.7]\n"
+         "[6 5 1 0.6 0.2 0 0.77] [8 6 0.5 0.5 0 0.2 0.84] [10 6 0 0.38 0 0 0.92]\n"},
         {"helix", "three turns of a helix (our helx record)", "swp", "helx spring 96 1 0.5 3\n"},
         {"trefoil", "trefoil knot (our trfl record)", "swp", "trfl knot 120 1\n"},
         {"circles", "the course's circles.swp: two circles", "swp", "circ . 30 1\ncirc . 50 2\n"},

@@ -276,3 +276,24 @@ def interpolating_splines(shapes, figdir, name):
     ax.legend(fontsize=7, loc="best")
     return save(fig, figdir, name)
 
+
+def orientation_frames(row, figdir, name):
+    """A camera path with the frame of its quaternion curve at every few samples (T red, N green,
+    B blue, the columns of the rotation)."""
+    fig = plt.figure(figsize=(6, 4.4))
+    ax = fig.add_subplot(projection="3d")
+    pts = row["points"]
+    xs, ys, zs = zip(*pts)
+    ax.plot(xs, ys, zs, "k-", lw=1)
+    span = max(max(xs) - min(xs), max(ys) - min(ys), max(zs) - min(zs)) or 1.0
+    length = 0.08 * span
+    for setter, values in ((ax.set_xlim, xs), (ax.set_ylim, ys), (ax.set_zlim, zs)):  # equal scales
+        middle = (max(values) + min(values)) / 2
+        setter(middle - span / 2, middle + span / 2)
+    every = max(1, len(pts) // 16)
+    for p, f in list(zip(pts, row["frames"]))[::every]:
+        for axis, colour in zip(f, ("tab:red", "tab:green", "tab:blue")):
+            ax.quiver(p[0], p[1], p[2], axis[0], axis[1], axis[2], length=length, color=colour, lw=1)
+    ax.set_title(f"{row['curve']}: orientation frames (T red, N green, B blue)")
+    return save(fig, figdir, name)
+

@@ -147,6 +147,12 @@ def curve_section(curve_cases, bench, figdir):
             s.add(Text(f"{c['input']}: Kochanek-Bartels (tension, continuity, bias per key) and Bessel-Overhauser "
                        "(chord-length knots) curves:"),
                   Figure(figures.interpolating_splines(shapes, figdir, f"interpolating_splines_{i}.png"), c["input"]))
+    for i, c in enumerate(curve_cases):
+        for j, row in enumerate(c.get("tables", {}).get("orientations", [])):
+            s.add(Text(f"{c['input']} {row['curve']}: positions a cubic Bezier chain, orientations the quaternion "
+                       "Bezier chain of its control quaternions (de Casteljau with slerp), drawn as the rotation's "
+                       "columns:"),
+                  Figure(figures.orientation_frames(row, figdir, f"orientation_frames_{i}_{j}.png"), row["curve"]))
     spline_types = ("catmull-rom", "tcb", "bessel-overhauser")
     continuity = [row for c in curve_cases for row in c.get("tables", {}).get("continuity", [])
                   if row["type"].startswith(spline_types)]

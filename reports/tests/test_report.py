@@ -151,3 +151,15 @@ def test_interpolating_splines_get_their_figure_and_continuity_table(tmp_path):
     # The TCB rows, not the B-spline's (it is no interpolating spline).
     assert [row[0].strip() for row in table[2:]] == ["cr", "c+"]
     assert table[3][4].strip() == "0.25"
+
+
+def test_a_camera_path_gets_its_orientation_figure(tmp_path):
+    results = results_fixture()
+    frame = [[1, 0, 0], [0, 1, 0], [0, 0, 1]]
+    results["cases"][2]["tables"] = {
+        "orientations": [{"curve": "fly", "points": [[0, 0, 0], [1, 0.5, 0.2], [2, 1, 0]], "frames": [frame] * 3}]}
+    (tmp_path / "results.json").write_text(json.dumps(results))
+    make_report.main(str(tmp_path))
+    figures = list((tmp_path / "figures").glob("orientation_frames_*.png"))
+    assert len(figures) == 1 and figures[0].stat().st_size > 1000
+    assert "fly: positions a cubic Bezier chain" in (tmp_path / "report.md").read_text()

@@ -9,6 +9,7 @@
 
 #include "crossdiv/verification/harness/json_text.h"
 #include "crossdiv/curves/bezier.h"
+#include "crossdiv/curves/quaternion_bezier.h"
 #include "crossdiv/datasets/bundled_curves.h"
 #include "crossdiv/io/curve_io.h"
 #include "crossdiv/mesh/tri_mesh.h"
@@ -30,8 +31,10 @@ void TessellateArgs::add_to(CLI::App& app) {
     app.add_option("--intervals", intervals, "Uniform: intervals per segment (default: the file's STEPS)")->check(CLI::Range(1, 1 << 20));
     app.add_option("--angle-tol", angle_tol_deg, "Angle mode: tolerance in degrees, (0, 180]");
     app.add_option("--tol", tol, "Distance mode: the largest distance between curve and polyline");
-    app.add_option("--frames", frames, "Frames to output: none, recursive (the seed's) or rmf (double reflection)")
-        ->check(CLI::IsMember({"none", "recursive", "rmf"}))
+    app.add_option("--frames", frames,
+                   "Frames to output: none, recursive (the seed's), rmf (double reflection) or orientation (a cam3 "
+                   "record's quaternions: T N B the columns of the rotation)")
+        ->check(CLI::IsMember({"none", "recursive", "rmf", "orientation"}))
         ->capture_default_str();
     app.add_option("--normal-side", normal_side,
                    "Planar curves: normals left of travel (CS-C3100, N = +z x T) or right (CS4620, N = T x +z)")
@@ -87,7 +90,16 @@ int run_tessellate(const TessellateArgs& a) {
         }
         t.deviation = r.type == CurveType::Primitive ? primitive_deviation(r.primitive, t.poly).max
                                                      : chordal_deviation(r.chain(), t.poly).max;
-        if (a.frames != "none") {
+        if (a.frames == "orientation") {
+            if (r.type != CurveType::CameraPath)
+                throw InputError(a.input + ": curve '" + t.name + "' (" + r.keyword +
+                                 ") has no orientations; --frames orientation takes cam3 records");
+            const QuaternionChain q = quaternion_chain(r.orientations);
+            for (double u : t.poly.params) {
+                const Eigen::Matrix3d m = rotation_matrix(q.at(u));
+                t.frames.push_back({m.col(0), m.col(1), m.col(2)});
+            }
+        } else if (a.frames != "none") {
             t.frames = curve_frames(t.poly.positions, t.poly.tangents,
                                     a.frames == "rmf" ? FrameMethod::DoubleReflection : FrameMethod::Recursive);
             if (r.closed()) {

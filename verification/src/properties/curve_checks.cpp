@@ -8,6 +8,7 @@
 #include "crossdiv/curves/bessel_overhauser.h"
 #include "crossdiv/curves/bezier.h"
 #include "crossdiv/curves/kochanek_bartels.h"
+#include "crossdiv/curves/quaternion_bezier.h"
 #include "crossdiv/datasets/bundled_curves.h"
 #include "crossdiv/error.h"
 #include "crossdiv/io/curve_io.h"
@@ -294,6 +295,55 @@ void check_tcb_reduction(const CurveRecord& r, const BezierChain& c, const std::
             "tension, continuity and bias 0: every Bezier control point equals Catmull-Rom's bit for bit");
 }
 
+/// A camera path's orientations: every slerp of its de Casteljau levels against Eigen's, the
+/// unit norm, the ends, the rotation matrices (against Eigen's, orthonormal); one row of the
+/// report's figure (positions and frames at the tessellation's parameters).
+void check_orientations(const CurveRecord& r, const std::string& label, const Polyline& uniform, Checker& out,
+                        json& rows) {
+    const QuaternionChain q = quaternion_chain(r.orientations);
+    double slerp_error = 0, norm_error = 0, ends = 0, matrix_error = 0, orthonormality = 0;
+    const auto matrix_checks = [&](const Quat& x) {
+        const Eigen::Matrix3d m = rotation_matrix(x);
+        matrix_error = std::max(matrix_error, (m - x.toRotationMatrix()).cwiseAbs().maxCoeff());
+        orthonormality = std::max(orthonormality, (m.transpose() * m - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff());
+    };
+    for (int k = 0; k < q.num_segments(); ++k) {
+        const std::span<const Quat> seg = q.segment(k);
+        for (int i = 0; i <= kSamplesPerSegment; ++i) {
+            const double t = sample_t(i);
+            const std::vector<std::vector<Quat>> levels = quaternion_casteljau_levels(seg, t);
+            for (size_t l = 1; l < levels.size(); ++l)
+                for (size_t j = 0; j < levels[l].size(); ++j)
+                    slerp_error = std::max(slerp_error, (levels[l][j].coeffs() -
+                                                         levels[l - 1][j].slerp(t, levels[l - 1][j + 1]).coeffs()).norm());
+            const Quat at = levels.back()[0];
+            norm_error = std::max(norm_error, std::abs(at.norm() - 1));
+            matrix_checks(at);
+            if (i == 0) ends = std::max(ends, (at.coeffs() - seg[0].coeffs()).norm());
+            if (i == kSamplesPerSegment)
+                ends = std::max(ends, std::min((at.coeffs() - seg[3].coeffs()).norm(), (at.coeffs() + seg[3].coeffs()).norm()));
+        }
+    }
+    out.add(label, "slerp", "eigen", slerp_error, tolerances::kSlerpAgreement, "abs",
+            "every slerp of the de Casteljau levels vs Eigen::Quaternion::slerp, 65 t per segment");
+    out.add(label, "quaternion-unit-norm", "analytic", norm_error, tolerances::kQuaternionNormUlps * 3 * kEps, "abs",
+            "| |q(t)| - 1 | along the cubic quaternion chain");
+    out.add(label, "quaternion-ends", "analytic", ends, 0.0, "abs",
+            "each piece starts at its first control quaternion and ends at its last (or its negative: the same rotation)");
+    out.add(label, "rotation-matrix", "eigen", matrix_error, 4 * kEps, "abs",
+            "rotation matrix of q(t) vs Eigen's toRotationMatrix");
+    out.add(label, "orientation-frames", "analytic", orthonormality, tolerances::kFrameOrthonormality, "abs",
+            "R(q(t))^T R(q(t)) - I: the frames along the path are orthonormal");
+    json points = json::array(), frames = json::array();
+    for (int i = 0; i < uniform.size(); ++i) {
+        const Vec3& p = uniform.positions[i];
+        const Eigen::Matrix3d m = rotation_matrix(q.at(uniform.params[i]));
+        points.push_back({p.x(), p.y(), p.z()});
+        frames.push_back({{m(0, 0), m(1, 0), m(2, 0)}, {m(0, 1), m(1, 1), m(2, 1)}, {m(0, 2), m(1, 2), m(2, 2)}});
+    }
+    rows.push_back({{"curve", label}, {"points", points}, {"frames", frames}});
+}
+
 /// The record's keys and uniform tessellation, for the report's figure of the TCB family.
 json shape_row(const CurveRecord& r, const std::string& label, const Polyline& p) {
     json keys = json::array(), points = json::array(), params = json::array();
@@ -438,7 +488,8 @@ CheckReport check_curve_file(const CurveFile& file, const std::string& input) {
     CheckReport report;
     report.input = input;
     Checker out(report);
-    json tess = json::array(), continuity = json::array(), closure = json::array(), shapes = json::array();
+    json tess = json::array(), continuity = json::array(), closure = json::array(), shapes = json::array(),
+         orientations = json::array();
     for (size_t i = 0; i < file.curves.size(); ++i) {
         const CurveRecord& r = file.curves[i];
         const std::string label = r.label(static_cast<int>(i));
@@ -474,6 +525,7 @@ CheckReport check_curve_file(const CurveFile& file, const std::string& input) {
         if (r.type == CurveType::Tcb || r.type == CurveType::TcbClosed || r.type == CurveType::BesselOverhauser ||
             r.type == CurveType::BesselOverhauserClosed)
             shapes.push_back(shape_row(r, label, uniform));
+        if (r.type == CurveType::CameraPath) check_orientations(r, label, uniform, out, orientations);
         check_frames(r, uniform, label, out, closure);
         // Tessellation guarantees at one tolerance per curve (1e-3 of its size): the distance
         // mode and Wang's counts must meet it as measured.
@@ -497,6 +549,7 @@ CheckReport check_curve_file(const CurveFile& file, const std::string& input) {
     report.tables["continuity"] = continuity;
     report.tables["closure"] = closure;
     if (!shapes.empty()) report.tables["shapes"] = shapes;
+    if (!orientations.empty()) report.tables["orientations"] = orientations;
     return report;
 }
 
@@ -529,6 +582,38 @@ CheckReport check_synthetic() {
         degrees.push_back(row);
     }
     report.tables["degrees"] = degrees;
+
+    // Quaternion de Casteljau on a great circle (rotations about one axis, consecutive angles
+    // less than pi apart) is the rotation by the planar de Casteljau of the angles; with two
+    // control points the angle grows linearly in t (constant angular velocity).
+    std::uniform_real_distribution<double> angle_step(-2.5, 2.5);
+    const Vec3 axis = Vec3(1, -2, 0.5).normalized();
+    const auto about = [&](double a) {
+        return Quat(std::cos(a / 2), std::sin(a / 2) * axis.x(), std::sin(a / 2) * axis.y(), std::sin(a / 2) * axis.z());
+    };
+    double great_circle = 0, angular_velocity = 0;
+    for (int d = 1; d <= 10; ++d) {
+        std::vector<Quat> c{about(0.3)};
+        std::vector<Vec3> planar{Vec3(0.3, 0, 0)};
+        for (int i = 0; i < d; ++i) {
+            planar.emplace_back(planar.back().x() + angle_step(rng), 0, 0);
+            c.push_back(about(planar.back().x()));
+        }
+        for (int i = 0; i <= kSamplesPerSegment; ++i) {
+            const Quat q = quaternion_bezier_point(c, sample_t(i)), want = about(bezier_point(planar, sample_t(i)).x());
+            great_circle = std::max(great_circle, std::min((q.coeffs() - want.coeffs()).norm(), (q.coeffs() + want.coeffs()).norm()) / d);
+        }
+        const std::vector<Quat> two{c.front(), c.back()};
+        const double total = rotation_angle_between(two[0], two[1]);
+        for (int i = 0; i <= kSamplesPerSegment; ++i)
+            angular_velocity = std::max(angular_velocity, std::abs(rotation_angle_between(two[0], quaternion_bezier_point(two, sample_t(i))) -
+                                                                   sample_t(i) * total));
+    }
+    report.subjects.push_back("quaternion curves");
+    out.add("quaternion curves", "great-circle", "exact", great_circle, tolerances::kQuaternionNormUlps * 2 * kEps, "abs",
+            "degrees 1..10 of rotations about one axis vs the rotation by the planar de Casteljau of the angles, per degree");
+    out.add("quaternion curves", "constant-angular-velocity", "exact", angular_velocity, 1e-14, "rad",
+            "two control quaternions: the angle turned at t vs t times the whole angle (pi-sized angles, a few ulps)");
 
     const HelixFrameStudy h = helix_frame_study();
     json rows = json::array();

@@ -45,6 +45,15 @@ inline constexpr double kCurveRoundingUlps = 64;
 /// normalization of unit vectors, a few ulps of 1.
 inline constexpr double kFrameOrthonormality = 1e-13;
 
+/// Two slerps of the same unit quaternions (ours: the half-angle atan2; Eigen's: acos of the dot
+/// product) agree to this (absolute, in R^4): both weigh two unit vectors by sines of about
+/// unit size, a few ulps each; a wrong weight or arc is off by the angle, 1e10 times more.
+inline constexpr double kSlerpAgreement = 1e-15;
+
+/// A quaternion de Casteljau of degree d stays on the unit sphere to kQuaternionNormUlps * d
+/// ulps: each of its d levels of slerps rounds the norm by an ulp or two.
+inline constexpr double kQuaternionNormUlps = 4;
+
 /// After the closure mismatch of a closed curve's frames is distributed along its arc length,
 /// the frames close to this angle (radians): the distribution rotates each frame by a share of
 /// the measured angle, so what is left is the rounding of those rotations.
