@@ -14,11 +14,62 @@ namespace {
 constexpr double kMinStepAlongT = 1e-3;
 }  // namespace
 
-SweepFrames sweep_frames(const Polyline& sweep, bool closed_sweep, const CylinderOptions& o) {
+namespace {
+
+Frame rotated(const Eigen::Matrix3d& r, const Frame& f) { return {r * f.T, r * f.N, r * f.B}; }
+
+/// The method's frames run by run between corners: each run's tangents are the polyline's,
+/// except that it leaves a corner along the corner's `out` and arrives at the next along its
+/// `in`; each run starts from the previous run's last frame turned by the corner's rotation.
+/// `arriving` receives the last frame of each run at its end sample.
+std::vector<Frame> frames_with_corners(const Polyline& sweep, FrameMethod method, std::span<const SweepCorner> corners,
+                                       std::vector<Frame>& arriving) {
+    const int n = sweep.size();
+    std::vector<Vec3> tangents = sweep.tangents;
+    std::vector<int> at(n, -1);  // corner index at each sample
+    for (size_t c = 0; c < corners.size(); ++c) at[corners[c].sample] = static_cast<int>(c);
+    std::vector<Frame> frames(n);
+    arriving.assign(n, Frame{});
+    int start = 0;
+    Vec3 initial_b = initial_binormal(at[0] >= 0 ? corners[at[0]].out : tangents[0]);
+    while (start < n - 1) {
+        int end = start + 1;
+        while (end < n - 1 && at[end] < 0) ++end;
+        std::vector<Vec3> t(tangents.begin() + start, tangents.begin() + end + 1);
+        if (at[start] >= 0) t.front() = corners[at[start]].out;
+        if (at[end] >= 0) t.back() = corners[at[end]].in;
+        // A closed sweep's seam corner is sample 0; its last sample arrives along that corner's in.
+        if (end == n - 1 && at[0] >= 0 && corners[at[0]].sample == 0) t.back() = corners[at[0]].in;
+        const std::vector<Frame> run = curve_frames(std::span<const Vec3>(sweep.positions).subspan(start, end - start + 1), t,
+                                                    method, initial_b);
+        for (int i = start; i <= end; ++i) frames[i] = arriving[i] = run[i - start];
+        if (at[end] >= 0) {
+            const SweepCorner& c = corners[at[end]];
+            frames[end] = rotated(corner_rotation(c.in, c.out), run.back());
+            initial_b = frames[end].B;
+        }
+        start = end;
+    }
+    return frames;
+}
+
+}  // namespace
+
+SweepFrames sweep_frames(const Polyline& sweep, bool closed_sweep, const CylinderOptions& o,
+                         std::span<const SweepCorner> corners) {
     if (o.frames == FrameMethod::Planar)
         throw InputError("a generalized cylinder needs space-curve frames (recursive or rmf), not planar ones");
     SweepFrames f;
-    f.frames = curve_frames(sweep.positions, sweep.tangents, o.frames);
+    if (corners.empty()) {
+        f.frames = curve_frames(sweep.positions, sweep.tangents, o.frames);
+        f.arriving = f.frames;
+    } else {
+        f.frames = frames_with_corners(sweep, o.frames, corners, f.arriving);
+    }
+    // A seam corner: the last sample arrives along its in; its frame turned by the corner's
+    // rotation is what must meet the first frame.
+    const SweepCorner* seam = !corners.empty() && corners.front().sample == 0 ? &corners.front() : nullptr;
+    if (seam && f.frames.size() > 1) f.frames.back() = rotated(corner_rotation(seam->in, seam->out), f.arriving.back());
     if (closed_sweep && f.frames.size() > 1) {
         f.closure_angle = closure_angle(f.frames);
         if (o.close_frames) {
@@ -28,11 +79,22 @@ SweepFrames sweep_frames(const Polyline& sweep, bool closed_sweep, const Cylinde
             f.frames.back() = f.frames.front();
         }
     }
+    // Arriving frames follow the leaving ones through the distribution: R^T turns them back.
+    for (const SweepCorner& c : corners) {
+        const Eigen::Matrix3d back = corner_rotation(c.in, c.out).transpose();
+        f.arriving[c.sample] = rotated(back, f.frames[c.sample]);
+        if (c.sample == 0 && closed_sweep) f.arriving.back() = f.arriving.front();
+    }
+    for (size_t i = 0; i < f.frames.size(); ++i)
+        if (std::none_of(corners.begin(), corners.end(), [&](const SweepCorner& c) { return c.sample == static_cast<int>(i); }) &&
+            !(closed_sweep && i + 1 == f.frames.size() && seam))
+            f.arriving[i] = f.frames[i];
     return f;
 }
 
 SweepGrid cylinder_grid(const Polyline& profile, bool closed_profile, const Polyline& sweep, bool closed_sweep,
-                        const CylinderOptions& o, std::span<const double> scale, double* closure_angle) {
+                        const CylinderOptions& o, std::span<const double> scale, double* closure_angle,
+                        std::span<const SweepCorner> corners) {
     if (profile.size() < 2 || sweep.size() < 2)
         throw InputError("a generalized cylinder needs at least 2 profile and 2 sweep samples");
     if (!scale.empty() && scale.size() != static_cast<size_t>(sweep.size()))
@@ -46,7 +108,9 @@ SweepGrid cylinder_grid(const Polyline& profile, bool closed_profile, const Poly
         if (!(scale[i] > 0))
             throw InputError("the scale at sweep sample " + std::to_string(i) + " is " + std::to_string(scale[i]) +
                              "; scales must be positive (zero pinches the tube, negative turns it inside out)");
-    const SweepFrames sf = sweep_frames(sweep, closed_sweep, o);
+    const SweepFrames sf = sweep_frames(sweep, closed_sweep, o, corners);
+    std::vector<char> corner(static_cast<size_t>(sweep.size()), 0);
+    for (const SweepCorner& c : corners) corner[c.sample] = 1;
     if (closure_angle) *closure_angle = sf.closure_angle;
     // Without closing the frames, a closed sweep's last ring is kept as its own ring.
     const bool wrap = closed_sweep && o.close_frames;
@@ -62,10 +126,14 @@ SweepGrid cylinder_grid(const Polyline& profile, bool closed_profile, const Poly
     g.normals.reserve(g.positions.capacity());
     for (int i = 0; i < g.rings; ++i) {
         const Frame& f = sf.frames[i];
+        const Frame& in = sf.arriving[i];
         const double s = scale.empty() ? 1.0 : scale[i];
         for (int j = 0; j < g.ring_size; ++j) {
             const Vec3& p = profile.positions[j];
-            g.positions.push_back(sweep.positions[i] + s * (p.x() * f.N + p.y() * f.B));
+            if (corner[i])  // in the arriving frame, moved into the mitre plane
+                g.positions.push_back(sweep.positions[i] + s * mitre_offset(p.x() * in.N + p.y() * in.B, in.T, f.T));
+            else
+                g.positions.push_back(sweep.positions[i] + s * (p.x() * f.N + p.y() * f.B));
         }
     }
     // The profile's normal placed in the frame, m = nx N + ny B, is perpendicular to the
@@ -79,6 +147,11 @@ SweepGrid cylinder_grid(const Polyline& profile, bool closed_profile, const Poly
         for (int j = 0; j < g.ring_size; ++j) {
             const Vec3& n2 = normals2[j];
             const Vec3 m = n2.x() * f.N + n2.y() * f.B;
+            if (corner[i]) {  // a crease: between the two tubes' normals
+                const Frame& in = sf.arriving[i];
+                g.normals.push_back((m + n2.x() * in.N + n2.y() * in.B).normalized());
+                continue;
+            }
             const Vec3 d = g.at(ring(i + 1), j) - g.at(ring(i - 1), j);
             const double along = f.T.dot(d);
             const Vec3 n = std::abs(along) > kMinStepAlongT * d.norm() ? Vec3(m - (m.dot(d) / along) * f.T) : m;

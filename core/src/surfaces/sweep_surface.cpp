@@ -81,7 +81,9 @@ SweepSurface build_sweep(const CurveFile& file, int index, const SweepOptions& o
             co.frames = o.frames;
             co.close_frames = o.close_frames;
             const bool sweep_closed = sweep.closed();
-            out.grid = cylinder_grid(p, profile_closed, s, sweep_closed, co, scale, &out.closure_angle);
+            // A spline sweep may be only C0: its corners are mitred (sweep_corners.h).
+            if (sweep.type != CurveType::Primitive) out.corners = find_corners(sweep.chain(), s, sweep_closed);
+            out.grid = cylinder_grid(p, profile_closed, s, sweep_closed, co, scale, &out.closure_angle, out.corners);
             out.closed = profile_closed && sweep_closed && o.close_frames;
         }
         out.surface = mesh_sweep(out.grid);

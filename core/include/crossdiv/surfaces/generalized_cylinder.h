@@ -9,6 +9,7 @@
 
 #include "crossdiv/curves/frames.h"
 #include "crossdiv/curves/tessellation.h"
+#include "crossdiv/surfaces/sweep_corners.h"
 #include "crossdiv/surfaces/sweep_mesh.h"
 
 namespace crossdiv {
@@ -23,13 +24,18 @@ struct CylinderOptions {
 
 /// A sweep's samples and the frames the cylinder uses, after closure.
 struct SweepFrames {
-    std::vector<Frame> frames;
-    double closure_angle = 0;  ///< radians, before distribution (0 for an open sweep)
+    std::vector<Frame> frames;    ///< leaving each sample
+    std::vector<Frame> arriving;  ///< arriving at each sample: the same but at corners, R^T times the leaving one
+    double closure_angle = 0;     ///< radians, before distribution (0 for an open sweep)
 };
 
-/// Frames along the sweep (FrameMethod::Planar is refused: a sweep is a space curve).
+/// Frames along the sweep (FrameMethod::Planar is refused: a sweep is a space curve). Between
+/// corners each run of samples has the method's frames; at a corner the next run starts from
+/// the corner's rotation of the frame arriving there (sweep_corners.h), so no twist is added.
+/// A closed sweep's closure angle is measured after its seam corner's rotation, if it has one.
 /// @throws InputError for Planar or when sizes differ.
-SweepFrames sweep_frames(const Polyline& sweep, bool closed_sweep, const CylinderOptions& options);
+SweepFrames sweep_frames(const Polyline& sweep, bool closed_sweep, const CylinderOptions& options,
+                         std::span<const SweepCorner> corners = {});
 
 /// The grid of a generalized cylinder. `closed_*` say the last sample repeats the first.
 /// `scale`, when not empty, holds one profile scale per sweep sample (> 0). When
@@ -37,7 +43,10 @@ SweepFrames sweep_frames(const Polyline& sweep, bool closed_sweep, const Cylinde
 /// (SweepFrames::closure_angle).
 /// @throws InputError if the profile is not planar in xy, a scale is not positive, or the
 ///         sizes disagree, naming the sample.
+/// At a corner of the sweep the ring is mitred (mitre_offset) and its normals are the
+/// normalized sum of the arriving and leaving tubes' normals.
 SweepGrid cylinder_grid(const Polyline& profile, bool closed_profile, const Polyline& sweep, bool closed_sweep,
-                        const CylinderOptions& options, std::span<const double> scale = {}, double* closure_angle = nullptr);
+                        const CylinderOptions& options, std::span<const double> scale = {}, double* closure_angle = nullptr,
+                        std::span<const SweepCorner> corners = {});
 
 }  // namespace crossdiv

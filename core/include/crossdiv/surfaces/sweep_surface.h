@@ -32,6 +32,7 @@ struct SweepSurface {
     SurfaceMesh surface;
     bool closed = false;     ///< whether the construction is closed (must then be watertight)
     double closure_angle = 0;  ///< gcyl over a closed sweep: the frames' mismatch before distribution (rad)
+    std::vector<SweepCorner> corners;  ///< gcyl: the sweep's mitred corners
 };
 
 /// Builds record `index` of file.sweeps.
