@@ -22,6 +22,22 @@ const std::vector<BundledCurve>& bundled_surfaces() {
         {"horn", "gcyl with a scale curve (our extension): a circle along a space B-spline, growing", "swp",
          "circ profile 24 0.3\nbsp3 sweep 16 5 [0 0 0] [1 0 0] [2 1 0] [3 1 1] [4 0 2]\n"
          "bez2 size 8 4 [0 0.4] [1 0.6] [2 1.4] [3 2.5]\ngcyl horn profile sweep size\n"},
+        {"square-frame", "gcyl with corners: a unit square section around a square path of side 4, mitred at the "
+                         "four corners (closed; volume 4 L a^2 = 16)",
+         "swp",
+         "bez2 section 1 13 [-0.5 -0.5] [-0.16666666666666669 -0.5] [0.16666666666666663 -0.5] [0.5 -0.5] "
+         "[0.5 -0.16666666666666669] [0.5 0.16666666666666663] [0.5 0.5] [0.16666666666666669 0.5] "
+         "[-0.16666666666666663 0.5] [-0.5 0.5] [-0.5 0.16666666666666669] [-0.5 -0.16666666666666663] [-0.5 -0.5]\n"
+         "bez3 path 1 13 [0 0 0] [1.3333333333333333 0 0] [2.6666666666666665 0 0] [4 0 0] [4 1.3333333333333333 0] "
+         "[4 2.6666666666666665 0] [4 4 0] [2.666666666666667 4 0] [1.3333333333333335 4 0] [0 4 0] "
+         "[0 2.666666666666667 0] [0 1.3333333333333335 0] [0 0 0]\n"
+         "gcyl square-frame section path\n"},
+        {"cornered-tube", "gcyl with corners: a circle along a space Bezier chain whose pieces meet at two corners "
+                          "(mitred, open)",
+         "swp",
+         "circ profile 24 0.3\n"
+         "bez3 path 8 10 [0 0 0] [1 0 0] [2 0 0] [3 0 0] [3.5 1 0.2] [4 2 0.5] [4 3 1] [3 3.5 2] [2 4 2.5] [1 4 3]\n"
+         "gcyl cornered-tube profile path\n"},
         {"saddle-pair", "two bicubic patches sharing an edge (open)", "bez",
          "2\n"
          "0 0 0  1 0 0.3  2 0 -0.3  3 0 0\n0 1 0.3  1 1 0.8  2 1 0.1  3 1 0.2\n"

@@ -297,3 +297,29 @@ def orientation_frames(row, figdir, name):
     ax.set_title(f"{row['curve']}: orientation frames (T red, N green, B blue)")
     return save(fig, figdir, name)
 
+
+def surface_mesh(mesh, title, figdir, name):
+    """A small triangle mesh, shaded by the facing of each triangle to a light from the viewer's
+    upper left, axes at equal scales."""
+    fig = plt.figure(figsize=(6, 4.6))
+    ax = fig.add_subplot(projection="3d")
+    p = mesh["positions"]
+    tris = [[p[i] for i in t] for t in mesh["triangles"]]
+    light = (-0.4, -0.5, 0.77)
+    shades = []
+    for a, b, c in tris:
+        u = [b[k] - a[k] for k in range(3)]
+        v = [c[k] - a[k] for k in range(3)]
+        n = (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
+        length = math.sqrt(sum(x * x for x in n)) or 1.0
+        shades.append(0.35 + 0.6 * abs(sum(n[k] * light[k] for k in range(3))) / length)
+    ax.add_collection3d(Poly3DCollection(tris, facecolors=[(0.3 * s, 0.55 * s, 0.85 * s) for s in shades],
+                                         edgecolors=(0, 0, 0, 0.15), linewidths=0.2))
+    xs, ys, zs = zip(*p)
+    span = max(max(xs) - min(xs), max(ys) - min(ys), max(zs) - min(zs)) or 1.0
+    for setter, values in ((ax.set_xlim, xs), (ax.set_ylim, ys), (ax.set_zlim, zs)):
+        middle = (max(values) + min(values)) / 2
+        setter(middle - span / 2, middle + span / 2)
+    ax.set_title(title)
+    return save(fig, figdir, name)
+

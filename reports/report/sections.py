@@ -185,6 +185,16 @@ def surface_section(surface_cases, bench, figdir):
                     [(r["surface"], r.get("kind", ""), r["faces"], "yes" if r["closed"] else "no", r["boundary_edges"],
                       fmt(r["signed_volume"]), ("yes" if r["cgal"]["outward"] else "NO") if "cgal" in r else "-",
                       r.get("fold", {}).get("faces", 0)) for r in built]))
+    cornered = [r for r in built if r.get("corners")]
+    if cornered:
+        s.add(Text("Generalized cylinders along sweeps with corners: at each corner the frames turn by the corner's "
+                   "smallest rotation and the ring lies in the mitre plane; the largest departure of a corner ring "
+                   "point from either tube's wall, over the profile radius:"),
+              Table(["surface", "corners", "wall thickness error", "signed volume"],
+                    [(r["surface"], r["corners"], fmt(r.get("corner_thickness_rel")), fmt(r["signed_volume"]))
+                     for r in cornered]))
+        for i, r in enumerate(x for x in cornered if x.get("mesh")):
+            s.add(Figure(figures.surface_mesh(r["mesh"], r["surface"], figdir, f"cornered_sweep_{i}.png"), r["surface"]))
     for c in surface_cases:
         t = c.get("tables", {})
         if "sphere" in t or "torus" in t:

@@ -163,3 +163,19 @@ def test_a_camera_path_gets_its_orientation_figure(tmp_path):
     figures = list((tmp_path / "figures").glob("orientation_frames_*.png"))
     assert len(figures) == 1 and figures[0].stat().st_size > 1000
     assert "fly: positions a cubic Bezier chain" in (tmp_path / "report.md").read_text()
+
+
+def test_a_sweep_with_corners_gets_its_table_and_picture(tmp_path):
+    results = results_fixture()
+    square = {"positions": [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0.5]], "triangles": [[0, 1, 2], [0, 2, 3]]}
+    row = {"surface": "frame (rmf)", "kind": "gcyl", "faces": 2, "closed": False, "boundary_edges": 4,
+           "signed_volume": 0.0, "corners": 4, "corner_thickness_rel": 0.0, "mesh": square}
+    results["cases"].append({"input": "surface:frame", "operation": "surfaces", "job": 4, "id": "surface:frame | surfaces",
+                             "subjects": ["frame (rmf)"], "tables": {"surfaces": [row]}, "outcome": "agree",
+                             "runs": []})
+    (tmp_path / "results.json").write_text(json.dumps(results))
+    make_report.main(str(tmp_path))
+    md = (tmp_path / "report.md").read_text()
+    table = [t for t in tables_of(md) if t[0][:2] == [" surface ", " corners "]]
+    assert table and table[0][2][1].strip() == "4", tables_of(md)
+    assert (tmp_path / "figures" / "cornered_sweep_0.png").stat().st_size > 1000

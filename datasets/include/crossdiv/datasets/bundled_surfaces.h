@@ -12,7 +12,8 @@ namespace crossdiv::datasets {
 
 /// vase (srev, profile ends on the axis: closed), bottle-cs (srev of a closed profile),
 /// knot-tube (gcyl: circle along a trefoil, closed), bean-ring (gcyl: a non-circular closed
-/// B-spline along a circle), horn (gcyl with a scale curve, open), and two BEZ models:
+/// B-spline along a circle), horn (gcyl with a scale curve, open), square-frame and
+/// cornered-tube (gcyl along sweeps with corners, mitred: closed and open), and two BEZ models:
 /// saddle-pair (two bicubic patches sharing an edge) and pillow (six patches, closed).
 const std::vector<BundledCurve>& bundled_surfaces();
 

@@ -54,6 +54,11 @@ inline constexpr double kSlerpAgreement = 1e-15;
 /// ulps: each of its d levels of slerps rounds the norm by an ulp or two.
 inline constexpr double kQuaternionNormUlps = 4;
 
+/// A mitred corner ring keeps the tube's wall: each point's distance from either tube's axis
+/// equals its profile radius to this (relative to the largest radius). The mitre moves a point
+/// by one division and a dot product, and the frames are orthonormal to kFrameOrthonormality.
+inline constexpr double kCornerThickness = 1e-12;
+
 /// After the closure mismatch of a closed curve's frames is distributed along its arc length,
 /// the frames close to this angle (radians): the distribution rotates each frame by a share of
 /// the measured angle, so what is left is the rounding of those rotations.
