@@ -8,13 +8,6 @@ namespace crossdiv {
 
 namespace {
 
-void check_count(size_t n, bool closed) {
-    const size_t need = closed ? 3 : 4;
-    if (n < need)
-        throw InputError(std::string("a") + (closed ? " closed" : "n open") + " Bessel-Overhauser spline needs at least " +
-                         std::to_string(need) + " points, got " + std::to_string(n));
-}
-
 /// |p_{j+1} - p_j| for every chord j the chain uses (j < n - 1 open, all n closed).
 std::vector<double> chord_lengths(std::span<const Vec3> p, bool closed) {
     const size_t n = p.size();
@@ -34,7 +27,7 @@ std::vector<double> chord_lengths(std::span<const Vec3> p, bool closed) {
 
 BezierChain bessel_overhauser_chain(std::span<const Vec3> points, bool closed) {
     const size_t n = points.size();
-    check_count(n, closed);
+    require_window_count(n, closed, "Bessel-Overhauser spline", "points");
     const std::vector<double> h = chord_lengths(points, closed);
     const size_t chords = h.size();
     // Bessel's tangent at point i times a chord length `scale`: the chord velocities around
@@ -60,7 +53,7 @@ BezierChain bessel_overhauser_chain(std::span<const Vec3> points, bool closed) {
 
 std::vector<double> bessel_overhauser_chords(std::span<const Vec3> points, bool closed) {
     const size_t n = points.size();
-    check_count(n, closed);
+    require_window_count(n, closed, "Bessel-Overhauser spline", "points");
     const std::vector<double> h = chord_lengths(points, closed);
     std::vector<double> out(closed ? n : n - 3);
     for (size_t k = 0; k < out.size(); ++k) out[k] = h[(k + 1) % h.size()];

@@ -117,6 +117,13 @@ std::array<Vec3, 4> hermite_to_bezier(const Vec3& p0, const Vec3& m0, const Vec3
     return {p0, p0 + m0 / 3.0, p1 - m1 / 3.0, p1};
 }
 
+void require_window_count(size_t n, bool closed, const char* curve, const char* points) {
+    const size_t need = closed ? 3 : 4;
+    if (n < need)
+        throw InputError(std::string("a") + (closed ? " closed " : "n open ") + curve + " needs at least " +
+                         std::to_string(need) + " " + points + ", got " + std::to_string(n));
+}
+
 void append_segment(BezierChain& chain, int k, const std::array<Vec3, 4>& segment) {
     for (int i = 0; i < 4; ++i)
         if (!segment[i].allFinite())
@@ -133,10 +140,7 @@ BezierChain bspline_chain(std::span<const Vec3> control) {
 }
 
 BezierChain catmull_rom_chain(std::span<const Vec3> control, bool closed) {
-    const size_t need = closed ? 3 : 4;
-    if (control.size() < need)
-        throw InputError(std::string("a") + (closed ? " closed" : "n open") + " Catmull-Rom curve needs at least " +
-                         std::to_string(need) + " control points, got " + std::to_string(control.size()));
+    require_window_count(control.size(), closed, "Catmull-Rom curve", "control points");
     return sliding_window(control, CubicBasis::CatmullRom, closed);
 }
 

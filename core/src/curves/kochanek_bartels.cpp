@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "crossdiv/error.h"
 
@@ -17,15 +18,13 @@ Vec3 blend(double w_in, double w_out, const Vec3& previous, const Vec3& key, con
     return w_in * (key - previous) + w_out * (next - key);
 }
 
-/// Refuses a parameter of key `key` (0-based) of `count` outside [-1, 1] or not finite.
-void check_parameters(const TcbParameters& p, size_t key, size_t count) {
+}  // namespace
+
+void check_tcb_parameters(const TcbParameters& p) {
     for (const auto& [value, name] : {std::pair{p.tension, "tension"}, {p.continuity, "continuity"}, {p.bias, "bias"}})
         if (!(value >= -1.0 && value <= 1.0))
-            throw InputError("key " + std::to_string(key + 1) + " of " + std::to_string(count) + ": " + name + " " +
-                             std::to_string(value) + " is outside [-1, 1]");
+            throw InputError(std::string(name) + " " + std::to_string(value) + " is outside [-1, 1]");
 }
-
-}  // namespace
 
 KeyTangents kochanek_bartels_tangents(const Vec3& previous, const Vec3& key, const Vec3& next, const TcbParameters& p) {
     const double s = (1.0 - p.tension) / 2.0;
@@ -40,14 +39,17 @@ Vec3 kochanek_bartels_jump(const Vec3& previous, const Vec3& key, const Vec3& ne
 
 BezierChain kochanek_bartels_chain(std::span<const Vec3> keys, std::span<const TcbParameters> parameters, bool closed) {
     const size_t n = keys.size();
-    const size_t need = closed ? 3 : 4;
-    if (n < need)
-        throw InputError(std::string("a") + (closed ? " closed" : "n open") + " TCB spline needs at least " +
-                         std::to_string(need) + " keys, got " + std::to_string(n));
+    require_window_count(n, closed, "TCB spline", "keys");
     if (!parameters.empty() && parameters.size() != n)
         throw InputError("a TCB spline needs one parameter set per key: " + std::to_string(n) + " keys, " +
                          std::to_string(parameters.size()) + " parameter sets");
-    for (size_t i = 0; i < parameters.size(); ++i) check_parameters(parameters[i], i, n);
+    for (size_t i = 0; i < parameters.size(); ++i) {
+        try {
+            check_tcb_parameters(parameters[i]);
+        } catch (const InputError& e) {
+            throw InputError("key " + std::to_string(i + 1) + " of " + std::to_string(n) + ": " + e.what());
+        }
+    }
     const auto at = [&](size_t i) { return parameters.empty() ? TcbParameters{} : parameters[i % n]; };
     // Segment k runs from key k + 1 to key k + 2 (mod n when closed), as Catmull-Rom's.
     const size_t segments = closed ? n : n - 3;

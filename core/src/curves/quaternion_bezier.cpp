@@ -1,6 +1,7 @@
 #include "crossdiv/curves/quaternion_bezier.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -14,15 +15,33 @@ namespace {
 /// of that approximation is about theta^2 / 6 < 1e-16), so the blend is linear.
 constexpr double kLinearAngle = 1e-8;
 
-Eigen::Vector4d coeffs(const Quat& q) { return q.coeffs(); }
+/// The largest degree evaluated in a stack buffer; higher degrees take a heap copy.
+constexpr size_t kStackControl = 16;
+
+/// b's coefficients with the sign nearer to a (the shorter arc), and the angle between them on
+/// the unit sphere of R^4, 2 atan2(|a - b|, |a + b|).
+struct ShorterArc {
+    Eigen::Vector4d b;
+    double theta;
+};
+ShorterArc shorter_arc(const Eigen::Vector4d& qa, const Quat& b) {
+    Eigen::Vector4d qb = b.coeffs();
+    if (qa.dot(qb) < 0) qb = -qb;
+    return {qb, 2.0 * std::atan2((qa - qb).norm(), (qa + qb).norm())};
+}
+
+/// De Casteljau with slerp in place on `work`; returns the point.
+Quat reduce(std::span<Quat> work, double t) {
+    for (size_t n = work.size(); n > 1; --n)
+        for (size_t i = 0; i + 1 < n; ++i) work[i] = slerp(work[i], work[i + 1], t);
+    return work[0];
+}
 
 }  // namespace
 
-Quat slerp(const Quat& a, const Quat& b_in, double t) {
-    const Eigen::Vector4d qa = coeffs(a);
-    Eigen::Vector4d qb = coeffs(b_in);
-    if (qa.dot(qb) < 0) qb = -qb;  // the shorter arc
-    const double theta = 2.0 * std::atan2((qa - qb).norm(), (qa + qb).norm());
+Quat slerp(const Quat& a, const Quat& b, double t) {
+    const Eigen::Vector4d qa = a.coeffs();
+    const auto [qb, theta] = shorter_arc(qa, b);
     Eigen::Vector4d r;
     if (theta < kLinearAngle) {
         r = ((1.0 - t) * qa + t * qb).normalized();
@@ -49,10 +68,13 @@ std::vector<std::vector<Quat>> quaternion_casteljau_levels(std::span<const Quat>
 
 Quat quaternion_bezier_point(std::span<const Quat> control, double t) {
     if (control.empty()) throw InputError("a quaternion Bezier curve needs at least 1 control quaternion, got 0");
+    if (control.size() <= kStackControl) {
+        std::array<Quat, kStackControl> work;
+        std::copy(control.begin(), control.end(), work.begin());
+        return reduce(std::span<Quat>(work.data(), control.size()), t);
+    }
     std::vector<Quat> work(control.begin(), control.end());
-    for (size_t n = work.size(); n > 1; --n)
-        for (size_t i = 0; i + 1 < n; ++i) work[i] = slerp(work[i], work[i + 1], t);
-    return work[0];
+    return reduce(work, t);
 }
 
 Eigen::Matrix3d rotation_matrix(const Quat& q) {
@@ -65,10 +87,7 @@ Eigen::Matrix3d rotation_matrix(const Quat& q) {
 }
 
 double rotation_angle_between(const Quat& a, const Quat& b) {
-    const Eigen::Vector4d qa = coeffs(a);
-    Eigen::Vector4d qb = coeffs(b);
-    if (qa.dot(qb) < 0) qb = -qb;
-    return 4.0 * std::atan2((qa - qb).norm(), (qa + qb).norm());
+    return 2.0 * shorter_arc(a.coeffs(), b).theta;  // a rotation turns by twice the arc
 }
 
 Quat QuaternionChain::at(double u) const {

@@ -47,12 +47,13 @@ void read_tcb_keys(Parser& p, CurveRecord& r, long n) {
         auto [point, extras] = p.point_with_extras(r.dim, 3, static_cast<int>(i), n);
         r.control.push_back(point);
         if (extras.empty()) continue;
-        const char* names[3] = {"tension", "continuity", "bias"};
-        for (int k = 0; k < 3; ++k)
-            if (extras[k] < -1.0 || extras[k] > 1.0)
-                p.fail_at(line, "key " + std::to_string(i + 1) + " of " + std::to_string(n) + ": " + names[k] + " " +
-                                    std::to_string(extras[k]) + " is outside [-1, 1]");
-        given[static_cast<size_t>(i)] = {extras[0], extras[1], extras[2]};
+        const TcbParameters key{extras[0], extras[1], extras[2]};
+        try {  // here, to name the key's own line
+            check_tcb_parameters(key);
+        } catch (const InputError& e) {
+            p.fail_at(line, "key " + std::to_string(i + 1) + " of " + std::to_string(n) + ": " + e.what());
+        }
+        given[static_cast<size_t>(i)] = key;
         any = true;
     }
     if (any) r.tcb = std::move(given);

@@ -21,28 +21,24 @@ Frame rotated(const Eigen::Matrix3d& r, const Frame& f) { return {r * f.T, r * f
 /// The method's frames run by run between corners: each run's tangents are the polyline's,
 /// except that it leaves a corner along the corner's `out` and arrives at the next along its
 /// `in`; each run starts from the previous run's last frame turned by the corner's rotation.
-/// `arriving` receives the last frame of each run at its end sample.
-std::vector<Frame> frames_with_corners(const Polyline& sweep, FrameMethod method, std::span<const SweepCorner> corners,
-                                       std::vector<Frame>& arriving) {
+/// A closed sweep's seam corner is sample 0: the last sample keeps the frame arriving there.
+std::vector<Frame> frames_with_corners(const Polyline& sweep, FrameMethod method, std::span<const SweepCorner> corners) {
     const int n = sweep.size();
-    std::vector<Vec3> tangents = sweep.tangents;
     std::vector<int> at(n, -1);  // corner index at each sample
     for (size_t c = 0; c < corners.size(); ++c) at[corners[c].sample] = static_cast<int>(c);
     std::vector<Frame> frames(n);
-    arriving.assign(n, Frame{});
     int start = 0;
-    Vec3 initial_b = initial_binormal(at[0] >= 0 ? corners[at[0]].out : tangents[0]);
+    Vec3 initial_b = initial_binormal(at[0] >= 0 ? corners[at[0]].out : sweep.tangents[0]);
     while (start < n - 1) {
         int end = start + 1;
         while (end < n - 1 && at[end] < 0) ++end;
-        std::vector<Vec3> t(tangents.begin() + start, tangents.begin() + end + 1);
+        std::vector<Vec3> t(sweep.tangents.begin() + start, sweep.tangents.begin() + end + 1);
         if (at[start] >= 0) t.front() = corners[at[start]].out;
         if (at[end] >= 0) t.back() = corners[at[end]].in;
-        // A closed sweep's seam corner is sample 0; its last sample arrives along that corner's in.
-        if (end == n - 1 && at[0] >= 0 && corners[at[0]].sample == 0) t.back() = corners[at[0]].in;
+        if (end == n - 1 && at[0] >= 0) t.back() = corners[at[0]].in;  // arriving at the seam
         const std::vector<Frame> run = curve_frames(std::span<const Vec3>(sweep.positions).subspan(start, end - start + 1), t,
                                                     method, initial_b);
-        for (int i = start; i <= end; ++i) frames[i] = arriving[i] = run[i - start];
+        std::copy(run.begin(), run.end(), frames.begin() + start);
         if (at[end] >= 0) {
             const SweepCorner& c = corners[at[end]];
             frames[end] = rotated(corner_rotation(c.in, c.out), run.back());
@@ -60,16 +56,12 @@ SweepFrames sweep_frames(const Polyline& sweep, bool closed_sweep, const Cylinde
     if (o.frames == FrameMethod::Planar)
         throw InputError("a generalized cylinder needs space-curve frames (recursive or rmf), not planar ones");
     SweepFrames f;
-    if (corners.empty()) {
-        f.frames = curve_frames(sweep.positions, sweep.tangents, o.frames);
-        f.arriving = f.frames;
-    } else {
-        f.frames = frames_with_corners(sweep, o.frames, corners, f.arriving);
-    }
-    // A seam corner: the last sample arrives along its in; its frame turned by the corner's
-    // rotation is what must meet the first frame.
+    f.frames = corners.empty() ? curve_frames(sweep.positions, sweep.tangents, o.frames)
+                               : frames_with_corners(sweep, o.frames, corners);
+    // A seam corner: the frame arriving at the last sample, turned by the corner's rotation, is
+    // what must meet the first frame.
     const SweepCorner* seam = !corners.empty() && corners.front().sample == 0 ? &corners.front() : nullptr;
-    if (seam && f.frames.size() > 1) f.frames.back() = rotated(corner_rotation(seam->in, seam->out), f.arriving.back());
+    if (seam && f.frames.size() > 1) f.frames.back() = rotated(corner_rotation(seam->in, seam->out), f.frames.back());
     if (closed_sweep && f.frames.size() > 1) {
         f.closure_angle = closure_angle(f.frames);
         if (o.close_frames) {
@@ -79,16 +71,13 @@ SweepFrames sweep_frames(const Polyline& sweep, bool closed_sweep, const Cylinde
             f.frames.back() = f.frames.front();
         }
     }
-    // Arriving frames follow the leaving ones through the distribution: R^T turns them back.
-    for (const SweepCorner& c : corners) {
-        const Eigen::Matrix3d back = corner_rotation(c.in, c.out).transpose();
-        f.arriving[c.sample] = rotated(back, f.frames[c.sample]);
-        if (c.sample == 0 && closed_sweep) f.arriving.back() = f.arriving.front();
-    }
-    for (size_t i = 0; i < f.frames.size(); ++i)
-        if (std::none_of(corners.begin(), corners.end(), [&](const SweepCorner& c) { return c.sample == static_cast<int>(i); }) &&
-            !(closed_sweep && i + 1 == f.frames.size() && seam))
-            f.arriving[i] = f.frames[i];
+    // The frames arriving: the leaving ones but at corners, where R^T turns them back (after the
+    // distribution, so that they follow it).
+    f.arriving = f.frames;
+    for (const SweepCorner& c : corners)
+        f.arriving[c.sample] = rotated(corner_rotation(c.in, c.out).transpose(), f.frames[c.sample]);
+    if (seam && f.frames.size() > 1)
+        f.arriving.back() = rotated(corner_rotation(seam->in, seam->out).transpose(), f.frames.back());
     return f;
 }
 

@@ -1,5 +1,6 @@
 #include "crossdiv/surfaces/sweep_corners.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -28,11 +29,11 @@ std::vector<SweepCorner> find_corners(const BezierChain& chain, const Polyline& 
             throw InputError("the sweep turns by " + std::to_string(angle * 180 / 3.14159265358979323846) +
                              " degrees at joint " + std::to_string(k) + " (parameter " + std::to_string(k) +
                              "); a mitred corner needs a turn below 170 degrees");
-        int sample = -1;
-        for (int i = 0; i < sweep.size() && sample < 0; ++i)
-            if (sweep.params[i] == static_cast<double>(k)) sample = i;
-        if (sample < 0) throw InputError("the sweep's tessellation has no sample at joint " + std::to_string(k));
-        corners.push_back({sample, in, out});
+        // The parameters increase along the polyline, and each piece's ends are emitted exactly.
+        const auto it = std::lower_bound(sweep.params.begin(), sweep.params.end(), static_cast<double>(k));
+        if (it == sweep.params.end() || *it != static_cast<double>(k))
+            throw InputError("the sweep's tessellation has no sample at joint " + std::to_string(k));
+        corners.push_back({static_cast<int>(it - sweep.params.begin()), in, out});
     }
     return corners;
 }

@@ -193,14 +193,18 @@ void check_against_eigen(const Implementation& eigen, const CurveRecord& r, cons
         out.add(label, names[o], "eigen", e[o] / s, rounding_bound(c.degree, o), "rel", how + ", 65 samples per segment");
 }
 
+bool is_tcb(const CurveRecord& r) { return r.type == CurveType::Tcb || r.type == CurveType::TcbClosed; }
+bool is_bessel(const CurveRecord& r) {
+    return r.type == CurveType::BesselOverhauser || r.type == CurveType::BesselOverhauserClosed;
+}
+
 /// Continuity at each joint, measured, against what the representation dictates.
 void check_continuity(const CurveRecord& r, const BezierChain& c, const std::string& label, Checker& out, json& table) {
     const int n = c.num_segments();
     const int joints = n - 1 + (r.wraps() ? 1 : 0);
     if (joints <= 0) return;
     const double s = scale_of(c);
-    const bool tcb = r.type == CurveType::Tcb || r.type == CurveType::TcbClosed;
-    const bool bessel = r.type == CurveType::BesselOverhauser || r.type == CurveType::BesselOverhauserClosed;
+    const bool tcb = is_tcb(r), bessel = is_bessel(r);
     const std::vector<double> chords = bessel ? bessel_overhauser_chords(r.control, r.wraps()) : std::vector<double>{};
     double gap[3] = {0, 0, 0}, predicted_error[3] = {0, 0, 0}, chord_velocity_jump = 0;
     for (int j = 0; j < joints; ++j) {
@@ -521,10 +525,8 @@ CheckReport check_curve_file(const CurveFile& file, const std::string& input) {
         if (r.type == CurveType::BSpline || r.type == CurveType::CatmullRom || r.type == CurveType::CatmullRomClosed)
             check_conversion(r, c, label, out);
         if (interpolating(r)) check_interpolation(r, c, label, out);
-        if (r.type == CurveType::Tcb || r.type == CurveType::TcbClosed) check_tcb_reduction(r, c, label, out);
-        if (r.type == CurveType::Tcb || r.type == CurveType::TcbClosed || r.type == CurveType::BesselOverhauser ||
-            r.type == CurveType::BesselOverhauserClosed)
-            shapes.push_back(shape_row(r, label, uniform));
+        if (is_tcb(r)) check_tcb_reduction(r, c, label, out);
+        if (is_tcb(r) || is_bessel(r)) shapes.push_back(shape_row(r, label, uniform));
         if (r.type == CurveType::CameraPath) check_orientations(r, label, uniform, out, orientations);
         check_frames(r, uniform, label, out, closure);
         // Tessellation guarantees at one tolerance per curve (1e-3 of its size): the distance

@@ -199,29 +199,27 @@ std::vector<char> folded_vertices(const CurveFile& file, const SweepSurface& s) 
 
 /// At each corner of a generalized cylinder's sweep, how far the mitred ring's points are from
 /// the wall of either tube: each point's distance from the arriving and from the leaving axis
-/// line against its profile radius (times the scale, read off the ring beside the corner when
-/// the sweep has a scale curve: then only the two distances are compared). Relative to the
-/// largest profile radius.
+/// line, the two against each other, and against the profile point's radius when the profile
+/// is not scaled. The sweep's corner and the profile points are evaluated exactly at the grid's
+/// parameters, not taken from the tessellation under test. Relative to the largest radius.
 double corner_thickness_error(const CurveFile& file, const SweepSurface& s) {
-    const CurveRecord& profile = file.curves.at(s.record.profile_index);
-    const Polyline p = tessellate_record(profile, {});
+    const auto profile = record_evaluator(file.curves.at(s.record.profile_index));
+    const auto sweep = record_evaluator(file.curves.at(s.record.sweep_index));
     const SweepGrid& g = s.grid;
-    if (g.ring_size > p.size()) return 0;
-    const Polyline sweep = tessellate_record(file.curves.at(s.record.sweep_index), {});
-    double radius = 0;
-    for (const Vec3& q : p.positions) radius = std::max(radius, q.head<2>().norm());
+    std::vector<double> radius(g.ring_size);
+    for (int j = 0; j < g.ring_size; ++j) radius[j] = profile(g.profile_params[j]).position.head<2>().norm();
     double worst = 0;
     for (const SweepCorner& c : s.corners) {
-        if (c.sample >= g.rings || c.sample >= sweep.size()) continue;
-        const Vec3& v = sweep.positions[c.sample];
+        const Vec3 v = sweep(g.sweep_params[c.sample]).position;
         for (int j = 0; j < g.ring_size; ++j) {
             const Vec3 d = g.at(c.sample, j) - v;
             const double to_in = (d - d.dot(c.in) * c.in).norm(), to_out = (d - d.dot(c.out) * c.out).norm();
             worst = std::max(worst, std::abs(to_in - to_out));
-            if (s.record.scale_index < 0) worst = std::max(worst, std::abs(to_in - p.positions[j].head<2>().norm()));
+            if (s.record.scale_index < 0) worst = std::max(worst, std::abs(to_in - radius[j]));
         }
     }
-    return radius > 0 ? worst / radius : worst;
+    const double largest = *std::max_element(radius.begin(), radius.end());
+    return largest > 0 ? worst / largest : worst;
 }
 
 /// A small surface's mesh for the report's picture (nothing above kPictureTriangles).

@@ -75,6 +75,11 @@ struct BezierChain {
 /// p0, p0 + m0/3, p1 - m1/3, p1.
 std::array<Vec3, 4> hermite_to_bezier(const Vec3& p0, const Vec3& m0, const Vec3& p1, const Vec3& m1);
 
+/// The count rule of the splines that run through their points by Catmull-Rom's windows: at
+/// least 4 points open, 3 closed. @throws InputError "a[n] open|closed CURVE needs at least N
+/// POINTS, got n".
+void require_window_count(size_t n, bool closed, const char* curve, const char* points);
+
 /// Appends `segment` to `chain`, refusing a control point that is not finite (a basis change
 /// or tangent sums control points, which overflows for points near DBL_MAX).
 /// @throws InputError naming segment `k`.

@@ -29,6 +29,10 @@ struct TcbParameters {
     friend bool operator==(const TcbParameters&, const TcbParameters&) = default;
 };
 
+/// @throws InputError naming the parameter outside [-1, 1] (or not finite), e.g.
+/// "tension 2.000000 is outside [-1, 1]".
+void check_tcb_parameters(const TcbParameters& p);
+
 /// The tangents at a key: of the segment arriving there and of the segment leaving it.
 struct KeyTangents {
     Vec3 arriving, leaving;
