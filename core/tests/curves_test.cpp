@@ -348,7 +348,7 @@ TEST(CurveIo, SwpErrorsNameFileAndLine) {
               "bad.swp:2: bsp2 '.': a cubic B-spline needs at least 4 control points, got 3");
     EXPECT_EQ(swp_error("circ . 10 1\nspline . 4\n"),
               "bad.swp:2: unknown record 'spline' (known: bez2, bez3, bsp2, bsp3, crm2, crm3, crc2, crc3, tcb2, tcb3, tcc2, tcc3, "
-              "ovh2, ovh3, ovc2, ovc3, cam3, circ, helx, trfl, srev, gcyl)");
+              "ovh2, ovh3, ovc2, ovc3, kpc2, cam3, circ, helx, trfl, srev, gcyl)");
     EXPECT_EQ(swp_error("bez2 . 20 4\n[0 0] [1 0\n[1 1] [0 1]\n"), "bad.swp:3: unbalanced bracket: '[' inside point 2 of 4");
     EXPECT_EQ(swp_error("bez2 . 20 4\n[0 0] [1 0] [1 1] [0 1]]\n"),
               "bad.swp:2: unbalanced bracket: ']' outside a point list (too many points?)");

@@ -117,7 +117,9 @@ TEST(KochanekBartels, InterpolatesEveryKeyAndJumpsByTheFormula) {
             const Vec3 jump = leaving(c, (k + 1) % n) - arriving(c, k);
             const Vec3 want = kochanek_bartels_jump(keys[(i + m - 1) % m], keys[i], keys[(i + 1) % m], p[i]);
             expect_near(jump, want, 64 * std::numeric_limits<double>::epsilon() * 10);
-            if (p[i].continuity == 0) EXPECT_LE(jump.norm(), 64 * std::numeric_limits<double>::epsilon() * 10);
+            if (p[i].continuity == 0) {
+                EXPECT_LE(jump.norm(), 64 * std::numeric_limits<double>::epsilon() * 10);
+            }
         }
     }
 }

@@ -4,6 +4,7 @@
 
 #include "crossdiv/curves/bessel_overhauser.h"
 #include "crossdiv/curves/bezier.h"
+#include "crossdiv/curves/kappa_curve.h"
 #include "crossdiv/error.h"
 
 namespace crossdiv {
@@ -18,6 +19,7 @@ std::string_view to_string(CurveType t) {
         case CurveType::TcbClosed: return "tcb-closed";
         case CurveType::BesselOverhauser: return "bessel-overhauser";
         case CurveType::BesselOverhauserClosed: return "bessel-overhauser-closed";
+        case CurveType::KappaClosed: return "kappa-closed";
         case CurveType::CameraPath: return "camera-path";
         case CurveType::Bezier: return "bezier";
         case CurveType::Primitive: return "primitive";
@@ -39,6 +41,7 @@ BezierChain CurveRecord::chain() const {
         case CurveType::TcbClosed: return kochanek_bartels_chain(control, tcb, true);
         case CurveType::BesselOverhauser: return bessel_overhauser_chain(control, false);
         case CurveType::BesselOverhauserClosed: return bessel_overhauser_chain(control, true);
+        case CurveType::KappaClosed: return kappa_chain(control);
         case CurveType::CameraPath: return bezier_chain(control);
         case CurveType::Bezier: return single_bezier(control);
         case CurveType::Primitive: break;
@@ -47,7 +50,8 @@ BezierChain CurveRecord::chain() const {
 }
 
 bool CurveRecord::wraps() const {
-    return type == CurveType::CatmullRomClosed || type == CurveType::TcbClosed || type == CurveType::BesselOverhauserClosed;
+    return type == CurveType::CatmullRomClosed || type == CurveType::TcbClosed || type == CurveType::BesselOverhauserClosed ||
+           type == CurveType::KappaClosed;
 }
 
 bool CurveRecord::closed() const {

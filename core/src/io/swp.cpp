@@ -31,11 +31,12 @@ constexpr SplineKeyword kSplines[] = {
     {"tcc2", CurveType::TcbClosed, 2},        {"tcc3", CurveType::TcbClosed, 3},
     {"ovh2", CurveType::BesselOverhauser, 2}, {"ovh3", CurveType::BesselOverhauser, 3},
     {"ovc2", CurveType::BesselOverhauserClosed, 2}, {"ovc3", CurveType::BesselOverhauserClosed, 3},
+    {"kpc2", CurveType::KappaClosed, 2},
     {"cam3", CurveType::CameraPath, 3},
 };
 
 const char* kKnown =
-    "bez2, bez3, bsp2, bsp3, crm2, crm3, crc2, crc3, tcb2, tcb3, tcc2, tcc3, ovh2, ovh3, ovc2, ovc3, cam3, circ, helx, "
+    "bez2, bez3, bsp2, bsp3, crm2, crm3, crc2, crc3, tcb2, tcb3, tcc2, tcc3, ovh2, ovh3, ovc2, ovc3, kpc2, cam3, circ, helx, "
     "trfl, srev, gcyl";
 
 /// A TCB key: `[x y]` (tension, continuity and bias 0) or `[x y t c b]` (3D: `[x y z t c b]`).

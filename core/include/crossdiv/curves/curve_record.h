@@ -24,6 +24,7 @@ enum class CurveType {
     TcbClosed,         ///< SWP tcc2/tcc3 (our extension): closed Kochanek-Bartels
     BesselOverhauser,        ///< SWP ovh2/ovh3 (our extension): open, chord-length knots
     BesselOverhauserClosed,  ///< SWP ovc2/ovc3 (our extension): closed
+    KappaClosed,       ///< SWP kpc2 (our extension): closed kappa-curve, one quadratic piece per point
     CameraPath,        ///< SWP cam3 (our extension): a bez3 chain of positions with a quaternion each
     Bezier,            ///< BZC: one Bezier curve of any degree
     Primitive,         ///< SWP circ, helx, trfl
@@ -56,8 +57,8 @@ struct CurveRecord {
     std::string label(int index) const;
     /// The Bezier segments of a spline record. @throws InputError for a primitive.
     BezierChain chain() const;
-    /// Whether the record is a closed interpolating spline (crc, tcc, ovc): one that wraps
-    /// around its points and has as many segments as points.
+    /// Whether the record is a closed interpolating spline (crc, tcc, ovc, kpc): one that
+    /// wraps around its points and has as many segments as points.
     bool wraps() const;
     /// Whether the curve closes on itself: a wrapping spline or closed primitive, or a
     /// spline whose first and last point coincide (the course files close B-splines by

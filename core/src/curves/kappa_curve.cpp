@@ -1,0 +1,166 @@
+#include "crossdiv/curves/kappa_curve.h"
+
+#include <Eigen/Geometry>
+#include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "crossdiv/error.h"
+#include "crossdiv/mesh/tri_mesh.h"
+
+namespace crossdiv {
+
+namespace {
+
+double triangle_area(const Vec3& a, const Vec3& b, const Vec3& c) { return 0.5 * (b - a).cross(c - a).norm(); }
+
+std::string point_name(size_t i, size_t n) { return "point " + std::to_string(i + 1) + " of " + std::to_string(n); }
+
+void require_kappa_points(std::span<const Vec3> p) {
+    const size_t n = p.size();
+    if (n < 3) throw InputError("a closed kappa-curve needs at least 3 points, got " + std::to_string(n));
+    for (size_t i = 0; i < n; ++i) {
+        if (!p[i].allFinite()) throw InputError(point_name(i, n) + " is not finite");
+        if (p[i].z() != 0.0) throw InputError(point_name(i, n) + " is off the xy-plane: a kappa-curve is planar");
+    }
+    for (size_t i = 0; i < n; ++i)
+        if (p[i] == p[(i + 1) % n])
+            throw InputError("points " + std::to_string(i + 1) + " and " + std::to_string((i + 1) % n + 1) + " of " +
+                             std::to_string(n) + " coincide: a piece cannot have its curvature maximum at both");
+}
+
+}  // namespace
+
+double kappa_parameter(const Vec3& c0, const Vec3& p, const Vec3& c2) {
+    const Vec3 u = c0 - p, w = c2 - c0;
+    const double a = w.squaredNorm(), b = 3.0 * w.dot(u), c = (2.0 * u - w).dot(u), d = -u.squaredNorm();
+    const auto f = [&](double t) { return ((a * t + b) * t + c) * t + d; };
+    const auto df = [&](double t) { return (3.0 * a * t + 2.0 * b) * t + c; };
+    // f(0) = -|c0 - p|^2 <= 0 <= |c2 - p|^2 = f(1): keep a bracket [lo, hi] with f(lo) < 0 <
+    // f(hi), take Newton's step when it stays inside and bisect otherwise (the paper's
+    // closed form loses digits to cancellation when the cubic is nearly degenerate).
+    if (d == 0.0) return 0.0;
+    if (f(1.0) <= 0.0) return 1.0;
+    double lo = 0.0, hi = 1.0, t = 0.5;
+    for (int step = 0; step < 200; ++step) {  // bisection alone halves [0, 1] to one ulp in < 1100
+        const double v = f(t);
+        if (v == 0.0) return t;
+        (v < 0.0 ? lo : hi) = t;
+        const double slope = df(t);
+        double next = slope != 0.0 ? t - v / slope : lo;
+        if (!(next > lo && next < hi) || std::abs(next - t) > 0.5 * (hi - lo)) next = 0.5 * (lo + hi);
+        if (next == t || next <= lo || next >= hi) return t;  // the bracket holds no other double
+        t = next;
+    }
+    return t;
+}
+
+double kappa_lambda(const Vec3& c0, const Vec3& c1, const Vec3& c1_next, const Vec3& c2_next) {
+    const double a = std::sqrt(triangle_area(c0, c1, c1_next)), b = std::sqrt(triangle_area(c1, c1_next, c2_next));
+    return a + b > 0.0 ? a / (a + b) : 0.5;
+}
+
+double quadratic_max_curvature_param(std::span<const Vec3> c) {
+    // c'(t) = 2 ((c1 - c0) + t (c0 - 2 c1 + c2)): |c'| is smallest where c'(t) . c'' = 0.
+    const Vec3 first = c[1] - c[0], second = c[0] - 2.0 * c[1] + c[2];
+    const double s = second.squaredNorm();
+    if (s == 0.0) return 0.5;  // a straight, uniformly parametrized piece: curvature 0 throughout
+    return std::clamp(-first.dot(second) / s, 0.0, 1.0);
+}
+
+double quadratic_signed_curvature(std::span<const Vec3> c, double t) {
+    const Vec3 d1 = 2.0 * ((1.0 - t) * (c[1] - c[0]) + t * (c[2] - c[1])), d2 = 2.0 * (c[0] - 2.0 * c[1] + c[2]);
+    const double speed = d1.norm();
+    return speed > 0.0 ? d1.cross(d2).z() / (speed * speed * speed) : 0.0;
+}
+
+KappaCurve kappa_curve(std::span<const Vec3> p, const KappaOptions& options) {
+    require_kappa_points(p);
+    const size_t n = p.size();
+    const auto next = [n](size_t i) { return (i + 1) % n; };
+    const auto prev = [n](size_t i) { return (i + n - 1) % n; };
+    const double diagonal = bounding_box_diagonal({p.begin(), p.end()});
+
+    // The paper's start: middle points at the points, joints at the chords' midpoints.
+    std::vector<Vec3> mid(p.begin(), p.end()), start(n), end(n);
+    for (size_t i = 0; i < n; ++i) {
+        start[i] = 0.5 * (p[prev(i)] + p[i]);
+        end[i] = 0.5 * (p[i] + p[next(i)]);
+    }
+    KappaCurve out;
+    out.params.assign(n, 0.5);
+    out.lambdas.assign(n, 0.5);
+
+    // Row i of the system: p_i = (1-t)^2 c_{i,0} + 2t(1-t) c_{i,1} + t^2 c_{i,2} with the joints
+    // written in the middle points; three entries per row, one pattern for every iteration.
+    Eigen::SparseMatrix<double> a(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+    {
+        std::vector<Eigen::Triplet<double>> pattern;
+        pattern.reserve(3 * n);
+        for (size_t i = 0; i < n; ++i)
+            for (size_t j : {prev(i), i, next(i)}) pattern.emplace_back(int(i), int(j), 1.0);
+        a.setFromTriplets(pattern.begin(), pattern.end());
+        a.makeCompressed();
+    }
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+    lu.analyzePattern(a);
+    Eigen::MatrixX3d rhs(static_cast<Eigen::Index>(n), 3);
+    for (size_t i = 0; i < n; ++i) rhs.row(static_cast<Eigen::Index>(i)) = p[i].transpose();
+
+    std::vector<double>& t = out.params;
+    std::vector<double>& lambda = out.lambdas;
+    for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
+        for (size_t i = 0; i < n; ++i) {
+            t[i] = kappa_parameter(start[i], p[i], end[i]);
+            lambda[i] = kappa_lambda(start[i], mid[i], mid[next(i)], end[next(i)]);
+        }
+        for (size_t i = 0; i < n; ++i) {
+            const double s = 1.0 - t[i], before = lambda[prev(i)], after = lambda[i];
+            const auto row = static_cast<Eigen::Index>(i);
+            a.coeffRef(row, static_cast<Eigen::Index>(prev(i))) = (1.0 - before) * s * s;
+            a.coeffRef(row, row) = before * s * s + 2.0 * t[i] * s + (1.0 - after) * t[i] * t[i];
+            a.coeffRef(row, static_cast<Eigen::Index>(next(i))) = after * t[i] * t[i];
+        }
+        lu.factorize(a);
+        if (lu.info() != Eigen::Success)
+            throw InputError("the kappa-curve system is singular at iteration " + std::to_string(iteration) + ": " +
+                             lu.lastErrorMessage());
+        const Eigen::MatrixX3d solved = lu.solve(rhs);
+        double move = 0;
+        for (size_t i = 0; i < n; ++i) {
+            const Vec3 m = solved.row(static_cast<Eigen::Index>(i)).transpose();
+            move = std::max(move, (m - mid[i]).norm());
+            mid[i] = m;
+        }
+        for (size_t i = 0; i < n; ++i) end[i] = start[next(i)] = (1.0 - lambda[i]) * mid[i] + lambda[i] * mid[next(i)];
+        if (!std::isfinite(move))
+            throw InputError("the kappa-curve iteration left the finite range at iteration " + std::to_string(iteration));
+        out.residuals.push_back(move / diagonal);
+        if (out.residuals.back() <= options.tolerance) {
+            out.converged = true;
+            break;
+        }
+    }
+    out.chain = BezierChain{2, {}, true};
+    out.chain.points.reserve(3 * n);
+    for (size_t i = 0; i < n; ++i) out.chain.points.insert(out.chain.points.end(), {start[i], mid[i], end[i]});
+    return out;
+}
+
+BezierChain kappa_chain(std::span<const Vec3> points) {
+    KappaCurve k = kappa_curve(points);
+    if (!k.converged) {
+        char message[160];
+        std::snprintf(message, sizeof message,
+                      "the kappa-curve iteration did not converge: after %d iterations the middle points still move "
+                      "by %.3g of the diagonal (tolerance %.0e)",
+                      k.iterations(), k.residual(), kKappaConvergence);
+        throw InputError(message);
+    }
+    return std::move(k.chain);
+}
+
+}  // namespace crossdiv
