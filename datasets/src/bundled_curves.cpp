@@ -42,6 +42,17 @@ const std::vector<BundledCurve>& bundled_curves() {
         {"bessel-overhauser", "Bessel-Overhauser through unevenly spaced points, open and closed (our ovh2, ovc2)", "swp",
          "ovh2 uneven 16 7 [0 0] [0.2 0.5] [1 1] [3.5 1.2] [4 0] [4.2 -0.3] [7 -1]\n"
          "ovc2 loop 16 6 [0 0] [3 0] [3.3 0.4] [3 2] [0.5 2.5] [-0.2 1]\n"},
+        {"kappa-curves", "closed kappa-curves (our kpc2 record): a blob with inflections, a sharp 10-degree spike, "
+                         "nearly collinear points (1e-6 off the line), a star whose tips become cusps, and the "
+                         "four points of Yan's reference code",
+         "swp",
+         "kpc2 blob 16 12 [1 0] [1.126 0.65] [0.5 0.866] [0 0.7] [-0.5 0.866] [-1.126 0.65] [-1 0] [-0.606 -0.35]\n"
+         "[-0.5 -0.866] [0 -1.3] [0.5 -0.866] [0.606 -0.35]\n"
+         "kpc2 spike-10deg 16 4 [0 0] [10 0.874887] [0 1.749773] [-3 0.874887]\n"
+         "kpc2 nearly-collinear 16 6 [0 0] [1 0.000001] [2 0] [3 0.000001] [4 0] [2 2]\n"
+         "kpc2 star 16 10 [1 0] [0.323607 0.235114] [0.309017 0.951057] [-0.123607 0.380423] [-0.809017 0.587785]\n"
+         "[-0.4 0] [-0.809017 -0.587785] [-0.123607 -0.380423] [0.309017 -0.951057] [0.323607 -0.235114]\n"
+         "kpc2 yan 16 4 [0 0] [0 1] [2 2] [1 0]\n"},
         {"camera-path", "a camera flying a two-piece cubic path, turning and banking (our cam3 record: position "
                         "and orientation quaternion w x y z per control point)",
          "swp",

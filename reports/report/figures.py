@@ -277,6 +277,49 @@ def interpolating_splines(shapes, figdir, name):
     return save(fig, figdir, name)
 
 
+def kappa_curve(row, figdir, name):
+    """A kappa-curve beside its signed curvature along the parameter: the points (black) sit where
+    each quadratic piece is slowest, so every point is at a peak of |kappa| (dotted lines)."""
+    fig, (left, right) = plt.subplots(1, 2, figsize=(9, 3.8), gridspec_kw={"width_ratios": [1, 1.3]})
+    cx, cy = zip(*row["control"])
+    left.plot(cx, cy, "--", color="0.7", lw=0.8, label="quadratic pieces' control points")
+    xs, ys = zip(*row["curve_points"])
+    left.plot(xs, ys, lw=1.4, label="curve")
+    px, py = zip(*row["points"])
+    left.plot(px, py, "ko", ms=3.5, label="points")
+    left.set_aspect("equal", adjustable="datalim")
+    left.legend(fontsize=6, loc="best")
+    left.set_title(row["curve"])
+    u, k = zip(*row["curvature"])
+    right.plot(u, k, lw=1.2)
+    for at in row["point_params"]:
+        right.axvline(at, color="k", ls=":", lw=0.8)
+    # Near a cusp at a point (a star's tips) the curvature spans decades: then linear up to the
+    # typical value and logarithmic beyond.
+    magnitudes = sorted(abs(v) for v in k)
+    typical = magnitudes[len(magnitudes) // 2]
+    if typical > 0 and magnitudes[-1] > 100 * typical:
+        right.set_yscale("symlog", linthresh=typical)
+    right.set_xlabel("parameter (piece i on [i, i + 1]); dotted: the points")
+    right.set_ylabel("signed curvature")
+    right.set_title(f"{row['iterations']} iterations; |kappa| max at the points")
+    return save(fig, figdir, name)
+
+
+def kappa_convergence(rows, figdir, name):
+    """The kappa-curve iteration's residual (largest middle-point move over the diagonal) per
+    iteration, one line per curve."""
+    fig, ax = plt.subplots(figsize=(6, 3.8))
+    for row in rows:
+        r = row["residuals"]
+        ax.semilogy(range(1, len(r) + 1), [max(x, 1e-18) for x in r], lw=1.2, label=row["curve"])
+    ax.set_xlabel("iteration")
+    ax.set_ylabel("largest middle-point move / diagonal")
+    ax.set_title("kappa-curve iteration: residual per iteration")
+    ax.legend(fontsize=7)
+    return save(fig, figdir, name)
+
+
 def orientation_frames(row, figdir, name):
     """A camera path with the frame of its quaternion curve at every few samples (T red, N green,
     B blue, the columns of the rotation)."""

@@ -153,6 +153,38 @@ def curve_section(curve_cases, bench, figdir):
                        "Bezier chain of its control quaternions (de Casteljau with slerp), drawn as the rotation's "
                        "columns:"),
                   Figure(figures.orientation_frames(row, figdir, f"orientation_frames_{i}_{j}.png"), row["curve"]))
+    for i, c in enumerate(curve_cases):
+        kappa = c.get("tables", {}).get("kappa")
+        if not kappa:
+            continue
+        s.add(Text(f"{c['input']}: closed kappa-curves (Yan et al. 2017), one quadratic piece per point, run until the "
+                   "middle points are estimated within 1e-13 of the diagonal from the iteration's fixed point. "
+                   "Measured on the result: the point on its piece, the distance from the point to where the piece "
+                   "is slowest (its |curvature| maximum), the angle between the tangents at a joint (G1), the "
+                   "relative jump of |curvature| there (G2; the sign flips at inflections), and the largest "
+                   "|curvature| times the diagonal (a cusp at a point shows as a large value):"),
+              Table(["curve", "points", "iterations", "contraction", "est. distance", "on piece", "at max |kappa|",
+                     "G1 angle", "|kappa| jump", "inflections", "max |kappa| diag"],
+                    [(r["curve"], len(r["points"]), r["iterations"], fmt(r["contraction"], ".3f"),
+                      fmt(r["error_estimate"]), fmt(r["measures"]["interpolation"]),
+                      fmt(r["measures"]["curvature_maximum"]), fmt(r["measures"]["tangent_angle"]),
+                      fmt(r["measures"]["curvature_jump"]), r["measures"]["inflections"],
+                      fmt(r["measures"]["sharpest"])) for r in kappa]),
+              Figure(figures.kappa_convergence(kappa, figdir, f"kappa_convergence_{i}.png"), "kappa convergence"))
+        for j, row in enumerate(kappa):
+            s.add(Figure(figures.kappa_curve(row, figdir, f"kappa_curve_{i}_{j}.png"), row["curve"]))
+    hard = [row for c in curve_cases for row in c.get("tables", {}).get("kappa_hard_cases", [])]
+    if hard:
+        s.add(Text("The kappa-curve iteration on hard cases: a spike (4 points) narrowing to 1 degree, points "
+                   "closer and closer to a line, and spikes whose back point is close, where the iteration "
+                   "contracts by about 0.99 per step. \"converged, ill-conditioned\": the estimate was met but "
+                   "the curvature maximum is off by more than 1e-9 (the fixed point is that sensitive); "
+                   "\"not converged\": the iteration gave up after its cap, and `crossdiv` refuses such a record:"),
+              Table(["family", "case", "iterations", "outcome", "last move", "est. distance", "contraction",
+                     "at max |kappa|", "|kappa| jump"],
+                    [(r["family"], r["case"], r["iterations"], r["outcome"], fmt(r["residual"]),
+                      fmt(r["error_estimate"]), fmt(r["contraction"], ".3f"), fmt(r["measures"]["curvature_maximum"]),
+                      fmt(r["measures"]["curvature_jump"])) for r in hard]))
     spline_types = ("catmull-rom", "tcb", "bessel-overhauser")
     continuity = [row for c in curve_cases for row in c.get("tables", {}).get("continuity", [])
                   if row["type"].startswith(spline_types)]

@@ -179,3 +179,34 @@ def test_a_sweep_with_corners_gets_its_table_and_picture(tmp_path):
     table = [t for t in tables_of(md) if t[0][:2] == [" surface ", " corners "]]
     assert table and table[0][2][1].strip() == "4", tables_of(md)
     assert (tmp_path / "figures" / "cornered_sweep_0.png").stat().st_size > 1000
+
+
+def test_a_kappa_curve_gets_its_table_curvature_plot_and_convergence(tmp_path):
+    results = results_fixture()
+    curve = [c for c in results["cases"] if c["operation"] == "curves"][0]
+    square = [[1, 1], [-1, 1], [-1, -1], [1, -1]]
+    control = [[4 / 3, 0], [4 / 3, 4 / 3], [0, 4 / 3], [0, 4 / 3], [-4 / 3, 4 / 3], [-4 / 3, 0],
+               [-4 / 3, 0], [-4 / 3, -4 / 3], [0, -4 / 3], [0, -4 / 3], [4 / 3, -4 / 3], [4 / 3, 0]]
+    measures = {"interpolation": 1e-16, "curvature_maximum": 2e-16, "joint_gap": 0, "tangent_angle": 0,
+                "curvature_jump": 1e-15, "inflections": 0, "sharpest": 3.1}
+    curve["tables"] = {
+        "kappa": [{"curve": "square", "points": square, "control": control, "curve_points": control,
+                   "curvature": [[u / 4, 1.0 + (u % 4) / 8] for u in range(17)], "point_params": [0.5, 1.5, 2.5, 3.5],
+                   "iterations": 2, "converged": True, "error_estimate": 3e-16, "contraction": 2e-15,
+                   "residuals": [0.17, 3e-16], "measures": measures}],
+        "kappa_hard_cases": [{"family": "spike", "case": "1 deg", "points": 4, "iterations": 163, "converged": True,
+                              "outcome": "converged", "residual": 9e-15, "error_estimate": 5e-14, "contraction": 0.82,
+                              "measures": measures},
+                             {"family": "spike, close back point", "case": "0.6 deg", "points": 4, "iterations": 5000,
+                              "converged": False, "outcome": "not converged", "residual": 2e-8, "error_estimate": None,
+                              "contraction": 1.0, "measures": measures}]}
+    (tmp_path / "results.json").write_text(json.dumps(results))
+    make_report.main(str(tmp_path))
+    md = (tmp_path / "report.md").read_text()
+    table = [t for t in tables_of(md) if t[0][:2] == [" curve ", " points "]]
+    assert table and table[0][2][2].strip() == "2", tables_of(md)
+    hard = [t for t in tables_of(md) if t[0][:2] == [" family ", " case "]]
+    assert [row[3].strip() for row in hard[0][2:]] == ["converged", "not converged"]
+    assert hard[0][3][5].strip() == "-"  # no estimate: the moves did not shrink
+    for name in ("kappa_curve_0_0.png", "kappa_convergence_0.png"):
+        assert (tmp_path / "figures" / name).stat().st_size > 1000

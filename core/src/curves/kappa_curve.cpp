@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 
 #include "crossdiv/error.h"
@@ -30,6 +31,21 @@ void require_kappa_points(std::span<const Vec3> p) {
         if (p[i] == p[(i + 1) % n])
             throw InputError("points " + std::to_string(i + 1) + " and " + std::to_string((i + 1) % n + 1) + " of " +
                              std::to_string(n) + " coincide: a piece cannot have its curvature maximum at both");
+}
+
+/// How far the middle points still are from the fixed point, estimated from the moves r_k of
+/// a linearly converging iteration: with the contraction rho measured over the last
+/// kContractionWindow moves, the remaining moves sum to r_k rho / (1 - rho). A move alone
+/// understates it where rho is near 1 (sharp turns contract by 0.99 per step); infinity while
+/// the moves do not shrink (rounding noise at the fixed point of an ill-conditioned case).
+double distance_to_fixed_point(const std::vector<double>& moves) {
+    constexpr size_t kContractionWindow = 10;
+    const double last = moves.back();
+    if (last == 0.0) return 0.0;
+    if (moves.size() < 2) return std::numeric_limits<double>::infinity();
+    const size_t w = std::min(kContractionWindow, moves.size() - 1);
+    const double rho = std::pow(last / moves[moves.size() - 1 - w], 1.0 / static_cast<double>(w));
+    return rho < 1.0 ? last * rho / (1.0 - rho) : std::numeric_limits<double>::infinity();
 }
 
 }  // namespace
@@ -139,7 +155,8 @@ KappaCurve kappa_curve(std::span<const Vec3> p, const KappaOptions& options) {
         if (!std::isfinite(move))
             throw InputError("the kappa-curve iteration left the finite range at iteration " + std::to_string(iteration));
         out.residuals.push_back(move / diagonal);
-        if (out.residuals.back() <= options.tolerance) {
+        out.error_estimate = distance_to_fixed_point(out.residuals);
+        if (out.error_estimate <= options.tolerance) {
             out.converged = true;
             break;
         }
@@ -153,11 +170,11 @@ KappaCurve kappa_curve(std::span<const Vec3> p, const KappaOptions& options) {
 BezierChain kappa_chain(std::span<const Vec3> points) {
     KappaCurve k = kappa_curve(points);
     if (!k.converged) {
-        char message[160];
+        char message[256];
         std::snprintf(message, sizeof message,
                       "the kappa-curve iteration did not converge: after %d iterations the middle points still move "
-                      "by %.3g of the diagonal (tolerance %.0e)",
-                      k.iterations(), k.residual(), kKappaConvergence);
+                      "by %.3g of the diagonal, an estimated %.3g from the fixed point (tolerance %.0e)",
+                      k.iterations(), k.residual(), k.error_estimate, kKappaConvergence);
         throw InputError(message);
     }
     return std::move(k.chain);

@@ -16,6 +16,7 @@
 #include "crossdiv/verification/harness/convergence_order.h"
 #include "crossdiv/verification/harness/tolerances.h"
 #include "harness/check_inputs.h"
+#include "kappa_checks.h"
 #include "crossdiv/verification/implementations/registry.h"
 
 namespace crossdiv::verification {
@@ -233,6 +234,7 @@ void check_continuity(const CurveRecord& r, const BezierChain& c, const std::str
     }
     table.push_back({{"curve", label}, {"type", to_string(r.type)}, {"joints", joints}, {"c0_gap_rel", gap[0] / s},
                      {"c1_jump_rel", gap[1] / s}, {"c2_jump_rel", gap[2] / s}});
+    if (r.type == CurveType::KappaClosed) return;  // G1 and G2, not C1: check_kappa_record
     const int d = c.degree;
     if (r.type == CurveType::BezierChain) {
         const char* names[3] = {"continuity-c0", "continuity-c1", "continuity-c2"};
@@ -493,7 +495,7 @@ CheckReport check_curve_file(const CurveFile& file, const std::string& input) {
     report.input = input;
     Checker out(report);
     json tess = json::array(), continuity = json::array(), closure = json::array(), shapes = json::array(),
-         orientations = json::array();
+         orientations = json::array(), kappa = json::array();
     for (size_t i = 0; i < file.curves.size(); ++i) {
         const CurveRecord& r = file.curves[i];
         const std::string label = r.label(static_cast<int>(i));
@@ -528,6 +530,7 @@ CheckReport check_curve_file(const CurveFile& file, const std::string& input) {
         if (is_tcb(r)) check_tcb_reduction(r, c, label, out);
         if (is_tcb(r) || is_bessel(r)) shapes.push_back(shape_row(r, label, uniform));
         if (r.type == CurveType::CameraPath) check_orientations(r, label, uniform, out, orientations);
+        if (r.type == CurveType::KappaClosed) kappa.push_back(check_kappa_record(r, label, report));
         check_frames(r, uniform, label, out, closure);
         // Tessellation guarantees at one tolerance per curve (1e-3 of its size): the distance
         // mode and Wang's counts must meet it as measured.
@@ -552,6 +555,7 @@ CheckReport check_curve_file(const CurveFile& file, const std::string& input) {
     report.tables["closure"] = closure;
     if (!shapes.empty()) report.tables["shapes"] = shapes;
     if (!orientations.empty()) report.tables["orientations"] = orientations;
+    if (!kappa.empty()) report.tables["kappa"] = kappa;
     return report;
 }
 
@@ -616,6 +620,8 @@ CheckReport check_synthetic() {
             "degrees 1..10 of rotations about one axis vs the rotation by the planar de Casteljau of the angles, per degree");
     out.add("quaternion curves", "constant-angular-velocity", "exact", angular_velocity, 1e-14, "rad",
             "two control quaternions: the angle turned at t vs t times the whole angle (pi-sized angles, a few ulps)");
+
+    report.tables["kappa_hard_cases"] = kappa_hard_case_study();
 
     const HelixFrameStudy h = helix_frame_study();
     json rows = json::array();

@@ -59,6 +59,30 @@ inline constexpr double kQuaternionNormUlps = 4;
 /// by one division and a dot product, and the frames are orthonormal to kFrameOrthonormality.
 inline constexpr double kCornerThickness = 1e-12;
 
+/// A kappa-curve passes through each point at the parameter of the last solve to this
+/// (relative to the points' diagonal): the pivoted sparse LU's backward error on rows of
+/// nonnegative weights summing to 1, a few ulps (measured below 1e-15 on the bundled curves),
+/// with two decades for the condition of the system where a t_i nears 0 or 1.
+inline constexpr double kKappaInterpolation = 1e-13;
+
+/// Each point of a kappa-curve is where its piece is slowest (largest |curvature|) to this,
+/// relative to the diagonal: the converged middle points are within kKappaConvergence of
+/// the fixed point, and the speed minimum moves by that times its sensitivity, which grows
+/// as a turn sharpens (about 1e-10 at a 1-degree spike; the hard-case study tables it).
+inline constexpr double kKappaCurvatureMaximum = 1e-9;
+
+/// |curvature| agrees on both sides of a kappa-curve's joint to this (relative): the joint
+/// weights come from the previous iterate, within kKappaConvergence of the fixed point, and
+/// the end curvature of a quadratic is a ratio of an area and a cubed length (a few times
+/// more sensitive). Measured at most 4e-11 on the bundled curves.
+inline constexpr double kKappaCurvatureContinuity = 1e-9;
+
+/// The tangents at a kappa-curve's joint are parallel to this angle (radians): both are
+/// multiples of c_{i+1,1} - c_{i,1}, one through the joint's rounding, which is relative to
+/// the middle points and so grows as l_i (or 1 - l_i) shrinks: 1e-12 holds for l down to
+/// about 1e-4 (the bundled star's l is 0.007).
+inline constexpr double kKappaTangentAngle = 1e-12;
+
 /// After the closure mismatch of a closed curve's frames is distributed along its arc length,
 /// the frames close to this angle (radians): the distribution rotates each frame by a share of
 /// the measured angle, so what is left is the rounding of those rotations.
