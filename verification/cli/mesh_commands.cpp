@@ -105,7 +105,7 @@ struct SchemeArgs {
 /// Loop on a crease-tagged input: core's generic step, or OpenSubdiv, the one reference with
 /// crease rules; the others (and split-and-flip) have none and refuse.
 int run_loop_subdivide_creased(const std::string& in, const PolyMesh& input, const SchemeArgs& s,
-                               const std::string& impl, const std::string& out) {
+                               const std::string& impl, const std::string& out, const std::string& color) {
     LoopOptions o = s.options();
     o.creasing = crease_method(s.creasing, input);
     s.require_size(input, in);
@@ -127,6 +127,12 @@ int run_loop_subdivide_creased(const std::string& in, const PolyMesh& input, con
                          " has no crease or hole rules (core and opensubdiv have; drop the tags to compare the smooth "
                          "scheme)");
     }
+    if (color == "age")
+        color_by_age(result, s.scheme, s.levels, impl, [&](int l) {
+            RefineRequest to_l = request;
+            to_l.levels = l;
+            return l == 0 ? input.positions.size() : chosen.refine_last(input, to_l).positions.size();
+        });
     // Hole faces were refined around; they are not emitted (OpenSubdiv's convention).
     const PolyMesh emitted = without_hole_faces(result);
     write_mesh(out, emitted);
@@ -145,14 +151,15 @@ SchemeArgs with_tag_rules(const SchemeArgs& flags, PolyMesh& input) {
     return s;
 }
 
-int run_subdivide(const std::string& in, const SchemeArgs& flags, const std::string& impl, const std::string& out) {
+int run_subdivide(const std::string& in, const SchemeArgs& flags, const std::string& impl, const std::string& out,
+                  const std::string& color) {
     if (flags.scheme != "loop") {
         if (impl == "split-flip") throw InputError("split-flip is Loop's method; " + flags.scheme + " has none");
-        return run_scheme_subdivide(in, flags.poly(), impl, out);
+        return run_scheme_subdivide(in, flags.poly(), impl, out, color);
     }
     PolyMesh input = load_input(in, flags.tag_policy());
     const SchemeArgs s = with_tag_rules(flags, input);
-    if (!input.creases.empty()) return run_loop_subdivide_creased(in, input, s, impl, out);
+    if (!input.creases.empty()) return run_loop_subdivide_creased(in, input, s, impl, out, color);
     s.require_size(input, in);
     const TriMesh mesh = to_tri_mesh(input, "Loop subdivision");
     PolyMesh result;
@@ -172,6 +179,9 @@ int run_subdivide(const std::string& in, const SchemeArgs& flags, const std::str
             throw InputError(impl + " has no Loop with weights=" + s.weights + " boundary=" + std::string(to_string(s.options().boundary)));
         result = ref.refine(input, request).back();
     }
+    if (color == "age")
+        color_by_age(result, s.scheme, s.levels, impl,
+                     [&](int l) { return loop_subdivide(input, s.options(), l).positions.size(); });
     write_mesh(out, result);
     fmt::print("{}: {} vertices, {} faces -> {} ({} vertices, {} faces, {} level(s), {})\n", in, mesh.num_vertices(),
                mesh.num_faces(), out, result.num_vertices(), result.num_faces(), s.levels, impl);
@@ -456,7 +466,7 @@ int run_diff(const std::string& in, const SchemeArgs& flags, const std::string& 
 }
 
 struct SubdivideArgs {
-    std::string input, impl = "core", out;
+    std::string input, impl = "core", out, color = "none";
     SchemeArgs scheme;
     void add_to(CLI::App& app) {
         app.add_option("input", input, "Mesh file (.obj, .off) or bundled:NAME")->required();
@@ -465,9 +475,18 @@ struct SubdivideArgs {
             ->check(CLI::IsMember({"core", "split-flip", "opensubdiv", "openmesh", "cgal"}))
             ->capture_default_str();
         app.add_option("-o,--output", out, "Output mesh (.obj, .off)")->required();
+        app.add_option("--color", color,
+                       "age: colour each vertex by the level it was born at (viridis, the input's dark blue, the "
+                       "newest yellow; OBJ 'v x y z r g b'), core and split-flip only")
+            ->check(CLI::IsMember({"none", "age"}))
+            ->capture_default_str();
     }
 };
-int subdivide_command(const SubdivideArgs& a) { return run_subdivide(a.input, a.scheme, a.impl, a.out); }
+int subdivide_command(const SubdivideArgs& a) {
+    if (a.color == "age" && !a.out.ends_with(".obj"))
+        throw InputError("--color age writes vertex colours as OBJ 'v x y z r g b'; " + a.out + " is not an .obj file");
+    return run_subdivide(a.input, a.scheme, a.impl, a.out, a.color);
+}
 
 /// The programs of a run: a subject in core's place and references added to the registry.
 struct ProgramArgs {

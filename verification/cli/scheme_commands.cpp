@@ -18,6 +18,7 @@
 #include "crossdiv/verification/implementations/tag_rules.h"
 #include "crossdiv/subdiv/hole_faces.h"
 #include "crossdiv/subdiv/limit.h"
+#include "crossdiv/subdiv/vertex_age.h"
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/verification/comparisons/limit_comparison.h"
 #include "crossdiv/verification/comparisons/crease_comparison.h"
@@ -97,7 +98,21 @@ bool compare_loop_creases(const PolyMesh& mesh, const std::string& name, const s
     return c.verdict == Verdict::Agree;
 }
 
-int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const std::string& impl, const std::string& out) {
+void color_by_age(PolyMesh& result, const std::string& scheme, int levels, const std::string& impl,
+                  const std::function<size_t(int)>& vertices_at) {
+    if (impl != "core" && impl != "split-flip")
+        throw InputError("--color age needs --impl core: the age is read off core's numbering (old vertices first); " +
+                         impl + " numbers its vertices its own way");
+    std::vector<size_t> counts;
+    for (int l = 0; l < levels; ++l) counts.push_back(vertices_at(l));
+    counts.push_back(result.positions.size());
+    const std::vector<int> born = vertex_birth_levels(counts, scheme_from_string(scheme) == Scheme::DooSabin);
+    result.colors.resize(born.size());
+    for (size_t v = 0; v < born.size(); ++v) result.colors[v] = age_color(born[v], levels);
+}
+
+int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const std::string& impl, const std::string& out,
+                         const std::string& color) {
     const Scheme scheme = scheme_from_string(s.scheme);
     PolyMesh mesh = load_input(in, s.unknown_tags);
     const SchemeRule rule_asked = rule_with_tags(scheme, s, mesh);
@@ -116,6 +131,9 @@ int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const s
         }
         if (rule != asked) fmt::print("note: {} applies the {} boundary rule, not {}\n", impl, rule, asked);
     }
+    if (color == "age")
+        color_by_age(result, s.scheme, s.levels, impl,
+                     [&](int l) { return subdivide(scheme, rule_asked, mesh, l).positions.size(); });
     // Hole faces were refined around; they are not emitted (OpenSubdiv's convention).
     const PolyMesh emitted = without_hole_faces(result);
     write_mesh(out, emitted);

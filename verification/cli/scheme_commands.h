@@ -3,6 +3,7 @@
 // --scheme catmull-clark (Loop stays in main.cpp), limit and spectrum.
 
 #include <CLI/CLI.hpp>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -36,8 +37,18 @@ bool compare_loop_creases(const PolyMesh& mesh, const std::string& name, const s
                           const std::string& boundary, CreaseMethod method, int levels, double timeout, bool isolate,
                           nlohmann::json& record);
 
-/// `crossdiv subdivide IN --scheme catmull-clark --impl core|opensubdiv|openmesh|cgal -o OUT`.
-int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const std::string& impl, const std::string& out);
+/// `crossdiv subdivide IN --scheme catmull-clark --impl core|opensubdiv|openmesh|cgal -o OUT`;
+/// `color` "age" colours the vertices by the level they were born at (color_by_age).
+int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const std::string& impl, const std::string& out,
+                         const std::string& color);
+
+/// `subdivide --color age`: colours `result`, core's level `levels` of `scheme`, by the level
+/// each vertex was born at (crossdiv/subdiv/vertex_age.h), from the vertex count of core's
+/// every level, `vertices_at(l)` (core run again to level l: at most 4/3 of the work again).
+/// @throws InputError for an implementation other than core: the references number their
+/// vertices their own way, and only core's numbering (old vertices first) tells the age.
+void color_by_age(PolyMesh& result, const std::string& scheme, int levels, const std::string& impl,
+                  const std::function<size_t(int)>& vertices_at);
 
 /// `crossdiv compare INPUTS --scheme catmull-clark`: a table per input, exit 0 when every
 /// reference agrees, 1 otherwise (each divergence printed with its class).

@@ -43,6 +43,9 @@ expect non-manifold-batch 1 'icosahedron \(12 vertices, 20 faces\)' -- "$crossdi
 expect subdivide-non-manifold 0 'nonmanifold.obj: 5 vertices, 3 faces -> .* \(12 vertices, 12 faces, 1 level\(s\), core\)' -- "$crossdiv" subdivide "$tmp/nonmanifold.obj" --levels 1 -o "$tmp/nm1.obj"
 expect subdivide-non-manifold-refused 2 'edge \(0, 1\) is shared by 3 triangles' -- "$crossdiv" subdivide "$tmp/nonmanifold.obj" --levels 1 --nonmanifold refuse -o "$tmp/nm1.obj"
 expect check-lists-issues 2 'error \[non-manifold-edge\]' -- "$crossdiv" check "$tmp/nonmanifold.obj"
+# Vertex age: Loop on the icosahedron keeps its 12 vertices (dark blue) and adds one per edge: 480 at level 3 (yellow).
+expect subdivide-age 0 '^ *480 v 0\.99299999999999999 0\.90600000000000003 0\.14399999999999999$' -- bash -c "\"$crossdiv\" subdivide bundled:icosahedron --levels 3 --color age -o \"$tmp/age.obj\" >/dev/null && awk '\$1==\"v\" {print \"v\", \$5, \$6, \$7}' \"$tmp/age.obj\" | sort | uniq -c"
+expect subdivide-age-core-only 2 '--color age needs --impl core' -- "$crossdiv" subdivide bundled:icosahedron --levels 1 --color age --impl opensubdiv -o "$tmp/x.obj"
 expect too-many-levels 2 'would produce 335544320 faces, over the limit' -- "$crossdiv" subdivide bundled:icosahedron --levels 12 -o "$tmp/x.obj"
 expect compare-max-faces 2 'bundled:icosahedron: 3 levels would produce 1280 faces, over the limit of 1000 \(--max-faces\)' -- "$crossdiv" compare bundled:icosahedron --levels 3 --max-faces 1000
 expect cc-max-faces 2 'would produce 96 faces, over the limit of 95' -- "$crossdiv" subdivide bundled:quad-cube --scheme catmull-clark --levels 2 --max-faces 95 -o "$tmp/x.obj"
