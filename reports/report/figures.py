@@ -222,6 +222,31 @@ def crease_cube(cubes, figdir):
     return save(fig, figdir, "crease_cube.png")
 
 
+def vertex_age(rows, figdir):
+    """Each mesh after its levels with every vertex coloured by the level it was born at (viridis,
+    as `crossdiv subdivide --color age` writes them); the faces grey, only the front half drawn."""
+    fig = plt.figure(figsize=(3.6 * len(rows), 3.8))
+    for i, row in enumerate(rows):
+        ax = fig.add_subplot(1, len(rows), i + 1, projection="3d")
+        m = row["mesh"]
+        pts = m["positions"]
+        # The half facing the viewer (x + y > 0 for the view below): the back would show through.
+        front = [f for f in m["faces"] if sum(pts[v][0] + pts[v][1] for v in f) > 0]
+        _draw_mesh(ax, pts, front, facecolor="0.85", edgecolor="0.55", linewidths=0.2)
+        shown = sorted({v for f in front for v in f})
+        xs, ys, zs = zip(*(pts[v] for v in shown))
+        ax.scatter(xs, ys, zs, c=[row["ages"][v] for v in shown], cmap="viridis", vmin=0, vmax=row["levels"], s=7,
+                   depthshade=False)
+        span = max(max(abs(c) for p in pts for c in p), 1e-9)
+        for setter in (ax.set_xlim, ax.set_ylim, ax.set_zlim):
+            setter(-span, span)
+        ax.set_box_aspect((1, 1, 1), zoom=1.35)
+        ax.view_init(elev=20, azim=45)
+        ax.set_axis_off()
+        ax.set_title(f"{row['scheme']}, {row['levels']} levels: age 0 dark blue .. {row['levels']} yellow", fontsize=8)
+    return save(fig, figdir, "vertex_age.png")
+
+
 def limit_convergence(rows, figdir):
     fig, ax = plt.subplots(figsize=(5, 3.6))
     for r in rows:

@@ -269,6 +269,18 @@ def studies_section(study_cases, figdir):
                    "(a divergence's class is measured: core re-run with the reference's rule agrees)."),
               Table(["scheme", "levels", "requested rule", "reference", "its rule", "verdict", "class", "inputs"],
                     [k + (n,) for k, n in sorted(verdicts.items())]))
+    if tables.get("vertex_age"):
+        rows = tables["vertex_age"]
+        s.add(Text("Vertex age: the vertices core's levels add, by the level they were born at (its numbering keeps "
+                   "old vertices first), against the count the level before's topology dictates: V, then one per "
+                   "edge (Loop, Butterflies), per edge and face (Catmull-Clark), per face (sqrt3); Doo-Sabin, dual, "
+                   "replaces every vertex:"),
+              Table(["scheme", "input", "levels", "vertices per level", "born at each level", "expected"],
+                    [(r["scheme"], r["input"], r["levels"], " / ".join(map(str, r["vertex_counts"])),
+                      " / ".join(map(str, r["born"])), " / ".join(map(str, r["expected"]))) for r in rows]))
+        pictured = [r for r in rows if r.get("mesh")]
+        if pictured:
+            s.add(Figure(figures.vertex_age(pictured, figdir), "vertex age"))
     if tables.get("butterfly_properties"):
         rows = []
         for scheme in sorted({r["scheme"] for r in tables["butterfly_properties"]}):

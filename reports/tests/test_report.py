@@ -210,3 +210,21 @@ def test_a_kappa_curve_gets_its_table_curvature_plot_and_convergence(tmp_path):
     assert hard[0][3][5].strip() == "-"  # no estimate: the moves did not shrink
     for name in ("kappa_curve_0_0.png", "kappa_convergence_0.png"):
         assert (tmp_path / "figures" / name).stat().st_size > 1000
+
+
+def test_vertex_age_gets_its_table_and_coloured_meshes(tmp_path):
+    results = results_fixture()
+    tetra = {"positions": [[1, 1, 1], [1, -1, -1], [-1, 1, -1], [-1, -1, 1], [1, 0, 0], [0, 1, 0]],
+             "faces": [[0, 1, 2], [0, 2, 3], [0, 3, 1], [1, 3, 2]]}
+    rows = [{"scheme": "loop", "input": "tetrahedron", "levels": 1, "vertex_counts": [4, 6], "born": [4, 2],
+             "expected": [4, 2], "mesh": tetra, "ages": [0, 0, 0, 0, 1, 1]},
+            {"scheme": "doo-sabin", "input": "tetrahedron", "levels": 1, "vertex_counts": [4, 12], "born": [0, 12],
+             "expected": [0, 12]}]
+    results["cases"].append({"input": "catalog", "operation": "vertex-age", "job": 4, "id": "catalog | vertex-age",
+                             "subjects": [], "tables": {"vertex_age": rows}, "outcome": "agree", "runs": []})
+    (tmp_path / "results.json").write_text(json.dumps(results))
+    make_report.main(str(tmp_path))
+    md = (tmp_path / "report.md").read_text()
+    table = [t for t in tables_of(md) if t[0][:2] == [" scheme ", " input "] and len(t[0]) == 6]
+    assert table and [row[4].strip() for row in table[0][2:]] == ["4 / 2", "0 / 12"], tables_of(md)
+    assert (tmp_path / "figures" / "vertex_age.png").stat().st_size > 1000

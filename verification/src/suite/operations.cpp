@@ -131,6 +131,8 @@ const std::vector<SuiteOperation>& suite_operations() {
          run_study<creases_study>},
         {"limit-positions", OperationKind::Study, "limit positions and normals against OpenSubdiv, Bfr at (u, v)",
          one_collection<kCatalog>, run_study<limit_positions_study>},
+        {"vertex-age", OperationKind::Study, "the level each vertex was born at, every scheme, against the topology",
+         one_collection<kCatalog>, run_study<vertex_age_study>},
         {"spectrum", OperationKind::Study, "eigen table of the local subdivision matrices; the Loop rule oracle", one_collection<kFans>,
          run_study<spectrum_study>},
         {"convergence", OperationKind::Study, "convergence of extraordinary vertices to their limit",

@@ -17,6 +17,10 @@ CheckReport creases_study();
 /// Limit positions and interior normals against OpenSubdiv's Limit(), and Bfr's (u, v)
 /// evaluation against core's exact limit.
 CheckReport limit_positions_study();
+/// Vertex age (subdiv/vertex_age.h) of every scheme, 3 levels of core on the icosahedron:
+/// the vertices born at each level against the counts the topology dictates; the Butterflies'
+/// oldest vertices at their input positions; Loop's and Catmull-Clark's meshes for the figure.
+CheckReport vertex_age_study();
 /// The eigen table, valence 3..20, Loop, Warren, Catmull-Clark, each against its published
 /// closed form; and the Loop rule oracle (loop_rule_oracle.h) of each Loop rule it knows.
 CheckReport spectrum_study();
