@@ -149,6 +149,9 @@ TEST(KappaCurve, RefusesPointsItCannotUse) {
     EXPECT_EQ(error_of([] { kappa_curve(std::vector<Vec3>{v(0, 0), v(1, 0), Vec3(0, 1, 1)}); }),
               "point 3 of 3 is off the xy-plane: a kappa-curve is planar");
     EXPECT_EQ(error_of([] { kappa_curve(std::vector<Vec3>{v(0, 0), v(NAN, 0), v(0, 1)}); }), "point 2 of 3 is not finite");
+    EXPECT_EQ(error_of([] { kappa_curve(regular_polygon(10'001)); }),
+              "a kappa-curve of 10001 points: each of up to 5000 iterations solves a system of that size; at most "
+              "10000 points");
 }
 
 TEST(KappaCurve, SwpRecord) {

@@ -23,6 +23,10 @@ std::string point_name(size_t i, size_t n) { return "point " + std::to_string(i 
 void require_kappa_points(std::span<const Vec3> p) {
     const size_t n = p.size();
     if (n < 3) throw InputError("a closed kappa-curve needs at least 3 points, got " + std::to_string(n));
+    if (n > kKappaMaxPoints)
+        throw InputError("a kappa-curve of " + std::to_string(n) + " points: each of up to " +
+                         std::to_string(kKappaMaxIterations) + " iterations solves a system of that size; at most " +
+                         std::to_string(kKappaMaxPoints) + " points");
     for (size_t i = 0; i < n; ++i) {
         if (!p[i].allFinite()) throw InputError(point_name(i, n) + " is not finite");
         if (p[i].z() != 0.0) throw InputError(point_name(i, n) + " is off the xy-plane: a kappa-curve is planar");

@@ -47,6 +47,11 @@ inline constexpr double kKappaConvergence = 1e-13;
 /// hundred (the measured table is in the report); a case beyond is reported as not converged.
 inline constexpr int kKappaMaxIterations = 5000;
 
+/// The most points a kappa-curve takes: an iteration costs about 0.6 us per point, so a case
+/// that does not converge stops after 5000 iterations within half a minute; a designed curve
+/// has tens of points.
+inline constexpr size_t kKappaMaxPoints = 10'000;
+
 /// When to stop iterating.
 struct KappaOptions {
     double tolerance = kKappaConvergence;  ///< estimated distance to the fixed point / diagonal
@@ -86,8 +91,9 @@ double quadratic_signed_curvature(std::span<const Vec3> piece, double t);
 
 /// Runs the kappa-curve iteration through `points` (closed, in order), from the paper's start
 /// (middle points at the points, joints at the chords' midpoints), until `options` says stop.
-/// @throws InputError for fewer than 3 points, a point off the xy-plane or not finite, two
-/// consecutive points that coincide (naming them), or a singular system (naming the iteration).
+/// @throws InputError for fewer than 3 or more than kKappaMaxPoints points, a point off the
+/// xy-plane or not finite, two consecutive points that coincide (naming them), or a singular
+/// system (naming the iteration).
 KappaCurve kappa_curve(std::span<const Vec3> points, const KappaOptions& options = {});
 
 /// The chain of a converged kappa-curve. @throws InputError as kappa_curve, and when the
