@@ -16,6 +16,7 @@
 #include "crossdiv/curves/tessellation.h"
 #include "crossdiv/error.h"
 #include "crossdiv/io/curve_io.h"
+#include "parse_errors.h"
 
 using namespace crossdiv;
 
@@ -322,20 +323,8 @@ TEST(CurveIo, ReadsCoreSwp) {
 }
 
 namespace {
-/// The ParseError message a reader gives for `text`, or "no error".
-template <class Reader>
-std::string parse_error(Reader read, const std::string& text, const std::string& name) {
-    std::istringstream in(text);
-    try {
-        read(in, name);
-    } catch (const ParseError& e) {
-        return e.what();
-    }
-    return "no error";
-}
-std::string swp_error(const std::string& text) {
-    return parse_error([](std::istream& in, const std::string& n) { return read_swp(in, n); }, text, "bad.swp");
-}
+using test::parse_error;
+using test::swp_error;
 std::string bzc_error(const std::string& text) {
     return parse_error([](std::istream& in, const std::string& n) { return read_bzc(in, n); }, text, "bad.bzc");
 }

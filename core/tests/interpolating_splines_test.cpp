@@ -15,6 +15,8 @@
 #include "crossdiv/error.h"
 #include "crossdiv/io/curve_io.h"
 
+#include "parse_errors.h"
+
 using namespace crossdiv;
 
 namespace {
@@ -219,14 +221,7 @@ TEST(SwpInterpolatingSplines, KeysWithAndWithoutParameters) {
 }
 
 TEST(SwpInterpolatingSplines, ErrorsNameTheLineAndKey) {
-    const auto message = [](const std::string& text) {
-        try {
-            swp(text);
-        } catch (const ParseError& e) {
-            return std::string(e.what());
-        }
-        return std::string("no error");
-    };
+    const auto message = [](const std::string& text) { return test::swp_error(text, "test.swp"); };
     EXPECT_EQ(message("tcb2 a 8 4\n[0 0] [1 0]\n[1 1 2 0 0] [2 1]\n"),
               "test.swp:3: key 3 of 4: tension 2.000000 is outside [-1, 1]");
     EXPECT_EQ(message("tcb2 a 8 4 [0 0] [1 0 1 1] [1 1] [2 1]\n"), "test.swp:1: point 2 of 4 has 4 numbers, expected 2 or 5");

@@ -13,6 +13,8 @@
 #include "crossdiv/io/curve_io.h"
 #include "crossdiv/mesh/tri_mesh.h"
 
+#include "parse_errors.h"
+
 using namespace crossdiv;
 
 namespace {
@@ -133,7 +135,7 @@ TEST(KappaCurve, ReportsAnIterationStoppedShortAsNotConverged) {
     EXPECT_GT(k.residual(), 1e-4);
     // A spike of 0.6 degrees with a point close behind it converges too slowly for the cap.
     const std::vector<Vec3> spike{v(0, 0), v(10, 0.05), v(0, 0.1), v(-2, 0.05)};
-    const std::string e = error_of([&] { kappa_chain(spike); });
+    const std::string e = error_of([&] { converged_kappa_curve(spike); });
     EXPECT_EQ(e.rfind("the kappa-curve iteration did not converge: after 5000 iterations the middle points still move by ", 0),
               0u)
         << e;
@@ -162,24 +164,20 @@ TEST(KappaCurve, SwpRecord) {
     EXPECT_EQ(r.type, CurveType::KappaClosed);
     EXPECT_TRUE(r.wraps());
     EXPECT_TRUE(r.closed());
+    // The reader solves the iteration once and keeps it; chain() reads it.
+    ASSERT_TRUE(r.kappa);
+    EXPECT_TRUE(r.kappa->converged);
     const BezierChain c = r.chain();
+    EXPECT_EQ(c.points, r.kappa->chain.points);
     EXPECT_EQ(c.degree, 2);
     EXPECT_EQ(c.num_segments(), 4);
     const Polyline line = tessellate_record(r, {});
     EXPECT_EQ(line.size(), 4 * 8 + 1);
     EXPECT_EQ(line.positions.front(), line.positions.back());
 
-    const auto message = [](const std::string& text) {
-        try {
-            std::istringstream s(text);
-            read_swp(s, "bad.swp");
-        } catch (const ParseError& e) {
-            return std::string(e.what());
-        }
-        return std::string("no error");
-    };
-    EXPECT_EQ(message("\nkpc2 k 8 2 [0 0] [1 0]\n"), "bad.swp:2: kpc2 'k': a closed kappa-curve needs at least 3 points, got 2");
-    EXPECT_EQ(message("kpc2 k 8 4 [0 0] [10 0.05] [0 0.1] [-2 0.05]\n").rfind("bad.swp:1: kpc2 'k': the kappa-curve iteration did "
+    using test::swp_error;
+    EXPECT_EQ(swp_error("\nkpc2 k 8 2 [0 0] [1 0]\n"), "bad.swp:2: kpc2 'k': a closed kappa-curve needs at least 3 points, got 2");
+    EXPECT_EQ(swp_error("kpc2 k 8 4 [0 0] [10 0.05] [0 0.1] [-2 0.05]\n").rfind("bad.swp:1: kpc2 'k': the kappa-curve iteration did "
                                                                               "not converge: after 5000 iterations",
                                                                               0),
               0u);

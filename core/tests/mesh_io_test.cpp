@@ -10,6 +10,8 @@
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/mesh/tri_mesh.h"
 
+#include "parse_errors.h"
+
 namespace crossdiv {
 namespace {
 
@@ -183,13 +185,7 @@ TEST(MeshIo, ObjReadsHoleBoundaryAndTriangleTagsAndKeepsUnknownOnesForTheCaller)
 
 TEST(MeshIo, OffErrorsNameFileAndLine) {
     auto off_error = [](const std::string& text) {
-        std::istringstream in(text);
-        try {
-            read_off(in, "t.off");
-        } catch (const ParseError& e) {
-            return std::string(e.what());
-        }
-        return std::string("no error");
+        return test::parse_error([](std::istream& in, const std::string& n) { return read_off(in, n); }, text, "t.off");
     };
     EXPECT_EQ(off_error("PLY\n"), "t.off:1: expected 'OFF' or 'COFF' header, got 'PLY'");
     EXPECT_EQ(off_error("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"), "t.off:6: vertex index 7 out of range [0, 3)");
@@ -272,13 +268,7 @@ TEST(MeshIo, PlyAsciiRoundTripIsBitExact) {
 
 TEST(MeshIo, PlyErrorsNameFileAndLine) {
     auto error = [](const std::string& text) {
-        std::istringstream in(text);
-        try {
-            read_ply(in, "bad.ply");
-        } catch (const ParseError& e) {
-            return std::string(e.what());
-        }
-        return std::string("no error");
+        return test::parse_error([](std::istream& in, const std::string& n) { return read_ply(in, n); }, text, "bad.ply");
     };
     const std::string head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
                              "element face 1\nproperty list uchar int vertex_indices\nend_header\n";

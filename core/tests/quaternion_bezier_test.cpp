@@ -14,6 +14,8 @@
 #include "crossdiv/error.h"
 #include "crossdiv/io/curve_io.h"
 
+#include "parse_errors.h"
+
 using namespace crossdiv;
 
 namespace {
@@ -162,15 +164,7 @@ TEST(SwpCameraPath, PositionsAndQuaternions) {
     ASSERT_EQ(r.orientations.size(), 4u);
     EXPECT_EQ(r.orientations[2].coeffs(), Quat::Identity().coeffs());  // (2 0 0 0) normalized
     EXPECT_EQ(r.orientations[3].coeffs(), Quat(0, 0, 0, 1).coeffs());
-    const auto error = [](const std::string& text) {
-        std::istringstream bad(text);
-        try {
-            read_swp(bad, "cam.swp");
-        } catch (const ParseError& e) {
-            return std::string(e.what());
-        }
-        return std::string("no error");
-    };
+    const auto error = [](const std::string& text) { return test::swp_error(text, "cam.swp"); };
     EXPECT_EQ(error("cam3 fly 8 4\n[0 0 0 1 0 0 0] [1 0 0]\n"), "cam.swp:2: point 2 of 4 has 3 numbers, expected 7 (x y z w qx qy qz)");
     EXPECT_EQ(error("cam3 fly 8 4 [0 0 0 1 0 0 0] [1 0 0 0 0 0 0] [2 1 0 1 0 0 0] [3 1 1 1 0 0 0]\n"),
               "cam.swp:1: cam3 'fly': quaternion 2 of 4 is zero: it names no rotation");

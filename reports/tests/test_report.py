@@ -187,7 +187,7 @@ def test_a_kappa_curve_gets_its_table_curvature_plot_and_convergence(tmp_path):
     square = [[1, 1], [-1, 1], [-1, -1], [1, -1]]
     control = [[4 / 3, 0], [4 / 3, 4 / 3], [0, 4 / 3], [0, 4 / 3], [-4 / 3, 4 / 3], [-4 / 3, 0],
                [-4 / 3, 0], [-4 / 3, -4 / 3], [0, -4 / 3], [0, -4 / 3], [4 / 3, -4 / 3], [4 / 3, 0]]
-    measures = {"interpolation": 1e-16, "curvature_maximum": 2e-16, "joint_gap": 0, "tangent_angle": 0,
+    measures = {"interpolation": 1e-16, "curvature_maximum": 2e-16, "tangent_angle": 0,
                 "curvature_jump": 1e-15, "inflections": 0, "sharpest": 3.1}
     curve["tables"] = {
         "kappa": [{"curve": "square", "points": square, "control": control, "curve_points": control,

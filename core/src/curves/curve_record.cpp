@@ -4,7 +4,6 @@
 
 #include "crossdiv/curves/bessel_overhauser.h"
 #include "crossdiv/curves/bezier.h"
-#include "crossdiv/curves/kappa_curve.h"
 #include "crossdiv/error.h"
 
 namespace crossdiv {
@@ -41,7 +40,7 @@ BezierChain CurveRecord::chain() const {
         case CurveType::TcbClosed: return kochanek_bartels_chain(control, tcb, true);
         case CurveType::BesselOverhauser: return bessel_overhauser_chain(control, false);
         case CurveType::BesselOverhauserClosed: return bessel_overhauser_chain(control, true);
-        case CurveType::KappaClosed: return kappa_chain(control);
+        case CurveType::KappaClosed: return kappa ? kappa->chain : converged_kappa_curve(control).chain;
         case CurveType::CameraPath: return bezier_chain(control);
         case CurveType::Bezier: return single_bezier(control);
         case CurveType::Primitive: break;

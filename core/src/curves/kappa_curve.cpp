@@ -37,19 +37,24 @@ void require_kappa_points(std::span<const Vec3> p) {
                              std::to_string(n) + " coincide: a piece cannot have its curvature maximum at both");
 }
 
-/// How far the middle points still are from the fixed point, estimated from the moves r_k of
-/// a linearly converging iteration: with the contraction rho measured over the last
-/// kContractionWindow moves, the remaining moves sum to r_k rho / (1 - rho). A move alone
-/// understates it where rho is near 1 (sharp turns contract by 0.99 per step); infinity while
-/// the moves do not shrink (rounding noise at the fixed point of an ill-conditioned case).
-double distance_to_fixed_point(const std::vector<double>& moves) {
+/// The contraction rho of a linearly converging iteration, from its moves r_k: the geometric
+/// mean ratio over the last kContractionWindow moves (see KappaCurve::contraction).
+double contraction_of(const std::vector<double>& moves) {
     constexpr size_t kContractionWindow = 10;
     const double last = moves.back();
     if (last == 0.0) return 0.0;
-    if (moves.size() < 2) return std::numeric_limits<double>::infinity();
+    if (moves.size() < 2) return std::numeric_limits<double>::quiet_NaN();
     const size_t w = std::min(kContractionWindow, moves.size() - 1);
-    const double rho = std::pow(last / moves[moves.size() - 1 - w], 1.0 / static_cast<double>(w));
-    return rho < 1.0 ? last * rho / (1.0 - rho) : std::numeric_limits<double>::infinity();
+    return std::pow(last / moves[moves.size() - 1 - w], 1.0 / static_cast<double>(w));
+}
+
+/// How far the middle points still are from the fixed point: the remaining moves sum to
+/// r_k rho / (1 - rho). A move alone understates it where rho is near 1 (sharp turns contract
+/// by 0.99 per step); infinity while the moves do not shrink (or cannot be measured yet, or
+/// are rounding noise at the fixed point of an ill-conditioned case).
+double distance_to_fixed_point(double last_move, double rho) {
+    if (last_move == 0.0) return 0.0;
+    return rho < 1.0 ? last_move * rho / (1.0 - rho) : std::numeric_limits<double>::infinity();
 }
 
 }  // namespace
@@ -159,7 +164,8 @@ KappaCurve kappa_curve(std::span<const Vec3> p, const KappaOptions& options) {
         if (!std::isfinite(move))
             throw InputError("the kappa-curve iteration left the finite range at iteration " + std::to_string(iteration));
         out.residuals.push_back(move / diagonal);
-        out.error_estimate = distance_to_fixed_point(out.residuals);
+        out.contraction = contraction_of(out.residuals);
+        out.error_estimate = distance_to_fixed_point(out.residuals.back(), out.contraction);
         if (out.error_estimate <= options.tolerance) {
             out.converged = true;
             break;
@@ -171,7 +177,7 @@ KappaCurve kappa_curve(std::span<const Vec3> p, const KappaOptions& options) {
     return out;
 }
 
-BezierChain kappa_chain(std::span<const Vec3> points) {
+KappaCurve converged_kappa_curve(std::span<const Vec3> points) {
     KappaCurve k = kappa_curve(points);
     if (!k.converged) {
         char message[256];
@@ -181,7 +187,7 @@ BezierChain kappa_chain(std::span<const Vec3> points) {
                       k.iterations(), k.residual(), k.error_estimate, kKappaConvergence);
         throw InputError(message);
     }
-    return std::move(k.chain);
+    return k;
 }
 
 }  // namespace crossdiv

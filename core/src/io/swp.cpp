@@ -117,6 +117,8 @@ CurveFile read_swp(std::istream& in, const std::string& name) {
             else
                 for (long i = 0; i < n; ++i) r.control.push_back(p.point(r.dim, static_cast<int>(i), n));
             try {
+                if (r.type == CurveType::KappaClosed)  // solved once, here
+                    r.kappa = std::make_shared<const KappaCurve>(converged_kappa_curve(r.control));
                 (void)r.chain();  // the count rules: 3n + 1 for Bezier, >= 4 for B-splines, ...
                 if (r.type == CurveType::CameraPath) r.orientations = quaternion_chain(r.orientations).control;
             } catch (const InputError& e) {

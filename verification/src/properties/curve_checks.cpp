@@ -530,7 +530,7 @@ CheckReport check_curve_file(const CurveFile& file, const std::string& input) {
         if (is_tcb(r)) check_tcb_reduction(r, c, label, out);
         if (is_tcb(r) || is_bessel(r)) shapes.push_back(shape_row(r, label, uniform));
         if (r.type == CurveType::CameraPath) check_orientations(r, label, uniform, out, orientations);
-        if (r.type == CurveType::KappaClosed) kappa.push_back(check_kappa_record(r, label, report));
+        if (r.type == CurveType::KappaClosed) kappa.push_back(check_kappa_record(r, label, uniform, report));
         check_frames(r, uniform, label, out, closure);
         // Tessellation guarantees at one tolerance per curve (1e-3 of its size): the distance
         // mode and Wang's counts must meet it as measured.

@@ -4,10 +4,12 @@
 /// named mode. The readers are in crossdiv/io/curve_io.h.
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "crossdiv/curves/kappa_curve.h"
 #include "crossdiv/curves/kochanek_bartels.h"
 #include "crossdiv/curves/primitives.h"
 #include "crossdiv/curves/quaternion_bezier.h"
@@ -50,6 +52,10 @@ struct CurveRecord {
     /// One unit quaternion per control point (CameraPath): a quaternion Bezier chain with the
     /// positions' segments.
     std::vector<Quat> orientations;
+    /// KappaClosed: the converged iteration through `control`, solved once by the SWP reader
+    /// (it is the expensive part of the record, and every check reads it); chain() solves it
+    /// when a record was built without the reader.
+    std::shared_ptr<const KappaCurve> kappa;
     Primitive primitive;  ///< when type == Primitive
     int line = 0;         ///< where the record starts
 

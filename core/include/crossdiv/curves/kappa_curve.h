@@ -65,7 +65,10 @@ struct KappaCurve {
     std::vector<double> params;     ///< t_i: piece i passes through p_i at t_i
     std::vector<double> lambdas;    ///< l_i: where joint i divides c_{i,1} c_{i+1,1}
     std::vector<double> residuals;  ///< per iteration: largest middle-point move / diagonal
-    double error_estimate = 0;      ///< the last move's estimated distance to the fixed point
+    /// The contraction per iteration, rho, measured over the last (up to 10) moves: 0 when the
+    /// last move is 0, NaN after a single iteration.
+    double contraction = 0;
+    double error_estimate = 0;      ///< the last move times rho / (1 - rho); infinity while rho >= 1
     bool converged = false;         ///< error_estimate is within the tolerance
 
     int iterations() const { return static_cast<int>(residuals.size()); }
@@ -96,8 +99,9 @@ double quadratic_signed_curvature(std::span<const Vec3> piece, double t);
 /// system (naming the iteration).
 KappaCurve kappa_curve(std::span<const Vec3> points, const KappaOptions& options = {});
 
-/// The chain of a converged kappa-curve. @throws InputError as kappa_curve, and when the
-/// iteration did not converge (naming the iterations and the last residual).
-BezierChain kappa_chain(std::span<const Vec3> points);
+/// kappa_curve with the default options, required to converge. @throws InputError as
+/// kappa_curve, and when the iteration did not converge (naming the iterations, the last move
+/// and the estimate).
+KappaCurve converged_kappa_curve(std::span<const Vec3> points);
 
 }  // namespace crossdiv
