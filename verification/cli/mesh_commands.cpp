@@ -118,7 +118,9 @@ int run_loop_subdivide_creased(const std::string& in, const PolyMesh& input, con
         if (!chosen.applies(Scheme::Loop, request.rule))
             throw InputError(impl + " has no Loop with weights=" + std::string(to_string(o.weights)));
         try {
-            result = chosen.refine_last(input, request);
+            const adapters::LevelTrace levels = chosen.refine(input, request);
+            result = levels.back();
+            if (color == "age") color_by_age(result, s.scheme, vertex_counts(levels));
         } catch (const adapters::Rejected& e) {
             throw InputError(impl + " refused " + in + ": " + e.what());
         }
@@ -127,12 +129,6 @@ int run_loop_subdivide_creased(const std::string& in, const PolyMesh& input, con
                          " has no crease or hole rules (core and opensubdiv have; drop the tags to compare the smooth "
                          "scheme)");
     }
-    if (color == "age")
-        color_by_age(result, s.scheme, s.levels, impl, [&](int l) {
-            RefineRequest to_l = request;
-            to_l.levels = l;
-            return l == 0 ? input.positions.size() : chosen.refine_last(input, to_l).positions.size();
-        });
     // Hole faces were refined around; they are not emitted (OpenSubdiv's convention).
     const PolyMesh emitted = without_hole_faces(result);
     write_mesh(out, emitted);
@@ -179,9 +175,14 @@ int run_subdivide(const std::string& in, const SchemeArgs& flags, const std::str
             throw InputError(impl + " has no Loop with weights=" + s.weights + " boundary=" + std::string(to_string(s.options().boundary)));
         result = ref.refine(input, request).back();
     }
-    if (color == "age")
-        color_by_age(result, s.scheme, s.levels, impl,
-                     [&](int l) { return loop_subdivide(input, s.options(), l).positions.size(); });
+    if (color == "age") {
+        // The fast Loop driver returns the last level only: the earlier levels' vertex counts
+        // come from running it again to each (at most a third of the work again).
+        std::vector<size_t> counts;
+        for (int l = 0; l < s.levels; ++l) counts.push_back(loop_subdivide(input, s.options(), l).positions.size());
+        counts.push_back(result.positions.size());
+        color_by_age(result, s.scheme, counts);
+    }
     write_mesh(out, result);
     fmt::print("{}: {} vertices, {} faces -> {} ({} vertices, {} faces, {} level(s), {})\n", in, mesh.num_vertices(),
                mesh.num_faces(), out, result.num_vertices(), result.num_faces(), s.levels, impl);
@@ -483,6 +484,9 @@ struct SubdivideArgs {
     }
 };
 int subdivide_command(const SubdivideArgs& a) {
+    if (a.color == "age" && a.impl != "core" && a.impl != "split-flip")
+        throw InputError("--color age needs --impl core: the age is read off core's numbering (old vertices first); " +
+                         a.impl + " numbers its vertices its own way");
     if (a.color == "age" && !a.out.ends_with(".obj"))
         throw InputError("--color age writes vertex colours as OBJ 'v x y z r g b'; " + a.out + " is not an .obj file");
     return run_subdivide(a.input, a.scheme, a.impl, a.out, a.color);

@@ -98,17 +98,17 @@ bool compare_loop_creases(const PolyMesh& mesh, const std::string& name, const s
     return c.verdict == Verdict::Agree;
 }
 
-void color_by_age(PolyMesh& result, const std::string& scheme, int levels, const std::string& impl,
-                  const std::function<size_t(int)>& vertices_at) {
-    if (impl != "core" && impl != "split-flip")
-        throw InputError("--color age needs --impl core: the age is read off core's numbering (old vertices first); " +
-                         impl + " numbers its vertices its own way");
-    std::vector<size_t> counts;
-    for (int l = 0; l < levels; ++l) counts.push_back(vertices_at(l));
-    counts.push_back(result.positions.size());
+void color_by_age(PolyMesh& result, const std::string& scheme, const std::vector<size_t>& counts) {
     const std::vector<int> born = vertex_birth_levels(counts, scheme_from_string(scheme) == Scheme::DooSabin);
+    const int levels = static_cast<int>(counts.size()) - 1;
     result.colors.resize(born.size());
     for (size_t v = 0; v < born.size(); ++v) result.colors[v] = age_color(born[v], levels);
+}
+
+std::vector<size_t> vertex_counts(const std::vector<PolyMesh>& levels) {
+    std::vector<size_t> counts;
+    for (const PolyMesh& m : levels) counts.push_back(m.positions.size());
+    return counts;
 }
 
 int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const std::string& impl, const std::string& out,
@@ -120,7 +120,9 @@ int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const s
     require_refined_size(mesh, scheme, s.levels, s.max_faces, in, "--max-faces");
     PolyMesh result;
     if (impl == "core") {
-        result = subdivide(scheme, rule_asked, mesh, s.levels);
+        const adapters::LevelTrace levels = core_implementation().refine(mesh, {scheme, rule_asked, s.levels});
+        result = levels.back();
+        if (color == "age") color_by_age(result, s.scheme, vertex_counts(levels));
     } else {
         const Implementation& ref = *select_references(scheme, {impl}).front();
         const std::string rule = rule_name(scheme, ref.closest_rule(scheme, rule_asked));
@@ -131,9 +133,6 @@ int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const s
         }
         if (rule != asked) fmt::print("note: {} applies the {} boundary rule, not {}\n", impl, rule, asked);
     }
-    if (color == "age")
-        color_by_age(result, s.scheme, s.levels, impl,
-                     [&](int l) { return subdivide(scheme, rule_asked, mesh, l).positions.size(); });
     // Hole faces were refined around; they are not emitted (OpenSubdiv's convention).
     const PolyMesh emitted = without_hole_faces(result);
     write_mesh(out, emitted);

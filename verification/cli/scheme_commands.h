@@ -3,7 +3,6 @@
 // --scheme catmull-clark (Loop stays in main.cpp), limit and spectrum.
 
 #include <CLI/CLI.hpp>
-#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -42,13 +41,13 @@ bool compare_loop_creases(const PolyMesh& mesh, const std::string& name, const s
 int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const std::string& impl, const std::string& out,
                          const std::string& color);
 
-/// `subdivide --color age`: colours `result`, core's level `levels` of `scheme`, by the level
-/// each vertex was born at (crossdiv/subdiv/vertex_age.h), from the vertex count of core's
-/// every level, `vertices_at(l)` (core run again to level l: at most 4/3 of the work again).
-/// @throws InputError for an implementation other than core: the references number their
-/// vertices their own way, and only core's numbering (old vertices first) tells the age.
-void color_by_age(PolyMesh& result, const std::string& scheme, int levels, const std::string& impl,
-                  const std::function<size_t(int)>& vertices_at);
+/// `subdivide --color age`: colours `result`, the last of core's levels of `scheme`, by the
+/// level each vertex was born at (crossdiv/subdiv/vertex_age.h), from the vertex count of
+/// every level (`counts[0]` the input's, `counts.back()` result's).
+void color_by_age(PolyMesh& result, const std::string& scheme, const std::vector<size_t>& counts);
+
+/// The vertex count of each of `levels`.
+std::vector<size_t> vertex_counts(const std::vector<PolyMesh>& levels);
 
 /// `crossdiv compare INPUTS --scheme catmull-clark`: a table per input, exit 0 when every
 /// reference agrees, 1 otherwise (each divergence printed with its class).
