@@ -2,10 +2,13 @@
 // topology, not on counts alone.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 
+#include "crossdiv/datasets/analytic_surfaces.h"
 #include "crossdiv/datasets/edge_cases.h"
 #include "crossdiv/error.h"
 #include "crossdiv/mesh/mesh_checks.h"
@@ -133,6 +136,45 @@ TEST(BenchmarkMesh, IsClosedWithTheRequestedSizeAndMixedValences) {
     EXPECT_LE(lo, 5);
     EXPECT_GE(hi, 7);
     EXPECT_NO_THROW(build_tri_connectivity(to_tri_mesh(m, "test")));
+}
+
+}  // namespace
+}  // namespace crossdiv::datasets
+
+namespace crossdiv::datasets {
+namespace {
+
+// The icosphere: 10 4^l + 2 vertices on the unit sphere, 20 4^l faces, closed (no boundary
+// vertex), valence 5 at the icosahedron's 12 vertices and 6 at every midpoint, and outward:
+// its signed volume approaches 4 pi / 3 from below.
+TEST(AnalyticSurfaces, IcosphereIsAClosedOutwardSphere) {
+    for (int level = 0; level < 4; ++level) {
+        const TriMesh m = icosphere(level);
+        const int scale = 1 << (2 * level);
+        ASSERT_EQ(m.num_vertices(), 10 * scale + 2);
+        ASSERT_EQ(m.num_faces(), 20 * scale);
+        for (const Vec3& p : m.positions) EXPECT_NEAR(p.norm(), 1.0, 4e-16);
+        const TriConnectivity conn = build_tri_connectivity(m);
+        std::vector<int> valence(m.num_vertices(), 0);
+        for (const auto& [a, b] : conn.edge_vertices) ++valence[a], ++valence[b];
+        for (int v = 0; v < m.num_vertices(); ++v) {
+            EXPECT_FALSE(conn.is_boundary_vertex(v));
+            EXPECT_EQ(valence[v], v < 12 ? 5 : 6) << v;
+        }
+        double volume = 0;
+        for (const Triangle& t : m.triangles)
+            volume += m.positions[t[0]].dot(m.positions[t[1]].cross(m.positions[t[2]])) / 6;
+        EXPECT_GT(volume, 0.0);
+        EXPECT_LT(volume, 4 * M_PI / 3);
+    }
+    EXPECT_THROW(icosphere(9), InputError);
+}
+
+TEST(AnalyticSurfaces, TorusVerticesLieOnTheTorus) {
+    const TriMesh m = regular_torus(16, 8, 1.0, 0.25);
+    ASSERT_EQ(m.num_vertices(), 128);
+    for (const Vec3& p : m.positions) EXPECT_NEAR(std::hypot(std::hypot(p.x(), p.y()) - 1.0, p.z()), 0.25, 1e-15);
+    EXPECT_THROW(regular_torus(16, 8, 1.0, 1.5), InputError);
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 // The second of the two translation units that include CGAL: everything on a Surface_mesh
-// apart from Loop subdivision: closed-mesh checks (orientation, volume), vertex normals, and
+// apart from Loop subdivision: closed-mesh checks (orientation, volume), vertex normals,
+// jet-fitted curvatures, and
 // the Euler operations the half-edge differential tests compare with.
+#include <CGAL/Monge_via_jet_fitting.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
@@ -48,6 +50,67 @@ std::vector<Vec3> vertex_normals(const TriMesh& mesh) {
     std::vector<Vec3> out;
     out.reserve(m.number_of_vertices());
     for (Mesh::Vertex_index v : m.vertices()) out.emplace_back(normals[v].x(), normals[v].y(), normals[v].z());
+    return out;
+}
+
+MongeCurvatures monge_curvatures(const TriMesh& mesh, const std::vector<Vec3>& orientation, int rings, int degree) {
+    if (degree < 1 || degree > 4 || rings < 1)
+        throw Rejected("jet fitting takes degree 1..4 and at least one ring (got degree " + std::to_string(degree) +
+                       ", " + std::to_string(rings) + " rings)");
+    const Mesh m = build(mesh);
+    if (orientation.size() != m.number_of_vertices())
+        throw std::invalid_argument("monge_curvatures: one orientation normal per vertex");
+    using Fitting = CGAL::Monge_via_jet_fitting<Kernel>;
+    const size_t nv = m.number_of_vertices();
+    const size_t needed = static_cast<size_t>((degree + 1) * (degree + 2) / 2);
+    MongeCurvatures out;
+    out.fitted.assign(nv, 0);
+    out.k1.assign(nv, 0.0);
+    out.k2.assign(nv, 0.0);
+    out.direction1.assign(nv, Vec3::Zero());
+    out.normal.assign(nv, Vec3::Zero());
+    out.condition_number.assign(nv, 0.0);
+
+    // Breadth-first rings, the vertex first (the fit is made at the first point); one stamp
+    // array for all vertices, so gathering is linear in the neighbourhoods' size.
+    std::vector<size_t> stamp(nv, static_cast<size_t>(-1));
+    std::vector<Mesh::Vertex_index> ring;
+    std::vector<Kernel::Point_3> points;
+    for (Mesh::Vertex_index v : m.vertices()) {
+        const size_t id = v;
+        ring.assign(1, v);
+        stamp[v] = id;
+        size_t begin = 0;
+        for (int r = 0; r < rings; ++r) {
+            const size_t end = ring.size();
+            for (size_t i = begin; i < end; ++i)
+                if (m.halfedge(ring[i]) != Mesh::null_halfedge())
+                    for (Mesh::Vertex_index w : CGAL::vertices_around_target(ring[i], m))
+                        if (stamp[w] != id) {
+                            stamp[w] = id;
+                            ring.push_back(w);
+                        }
+            begin = end;
+        }
+        if (ring.size() < needed) continue;
+        points.clear();
+        for (Mesh::Vertex_index w : ring) points.push_back(m.point(w));
+        Fitting fitting;
+        Fitting::Monge_form form = fitting(points.begin(), points.end(), static_cast<size_t>(degree), 2);
+        const Vec3& o = orientation[v];
+        form.comply_wrt_given_normal(Kernel::Vector_3(o.x(), o.y(), o.z()));
+        const auto n = form.normal_direction();
+        const auto d2 = form.minimal_principal_direction();
+        if (!std::isfinite(form.principal_curvatures(0)) || !std::isfinite(form.principal_curvatures(1)))
+            continue;  // a degenerate neighbourhood (coplanar rings fitted by a flat jet still give 0, not this)
+        out.fitted[v] = 1;
+        // CGAL's k1 >= k2 bend towards +n; ours bend away from the outward normal.
+        out.k1[v] = -form.principal_curvatures(1);
+        out.k2[v] = -form.principal_curvatures(0);
+        out.direction1[v] = Vec3(d2.x(), d2.y(), d2.z());
+        out.normal[v] = Vec3(n.x(), n.y(), n.z());
+        out.condition_number[v] = fitting.condition_number();
+    }
     return out;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// CGAL 5.5 adapter: Subdivision_method_3 (Loop, Catmull-Clark, Doo-Sabin, sqrt3) on
-/// Surface_mesh<Simple_cartesian<double>::Point_3>; closed-mesh checks, vertex normals and the
+/// Surface_mesh<Simple_cartesian<double>::Point_3>; closed-mesh checks, vertex normals, jet-fitted curvatures and the
 /// Euler operations flip_edge, split_edge and split_face. CGAL is included by two translation
 /// units (subdivision; everything else).
 
@@ -57,6 +57,24 @@ ClosedMeshReport closed_mesh_report(const TriMesh& mesh);
 /// them), and only when that fails the sine-weighted sum of face normals.
 /// @throws Rejected naming the face Surface_mesh refuses.
 std::vector<Vec3> vertex_normals(const TriMesh& mesh);
+
+/// Principal curvatures by CGAL's Monge_via_jet_fitting (Cazals and Pouget 2005): at each
+/// vertex a degree-`degree` bivariate polynomial (a jet) is fitted by least squares to the
+/// vertex and its `rings`-ring of neighbours in a frame from their principal component
+/// analysis, and the Monge form of the jet gives the curvatures at the vertex. Returned in
+/// crossdiv's convention (discrete_curvature.h): CGAL's surface z = (k1 x^2 + k2 y^2) / 2 curves
+/// towards +n for positive k, so its curvatures are negated against the outward `orientation`
+/// normal we pass, and k1 >= k2 after that.
+struct MongeCurvatures {
+    std::vector<unsigned char> fitted;  ///< 0 where the neighbourhood holds too few points for the jet
+    std::vector<double> k1, k2;
+    std::vector<Vec3> direction1;  ///< unit direction of k1
+    std::vector<Vec3> normal;      ///< the fitted normal, turned to agree with `orientation`
+    std::vector<double> condition_number;  ///< of the least-squares system (CGAL's)
+};
+/// @param orientation one normal per vertex that says which side is out (ours, angle weighted)
+/// @throws Rejected naming the face Surface_mesh refuses, or for degree outside 1..4 or rings < 1.
+MongeCurvatures monge_curvatures(const TriMesh& mesh, const std::vector<Vec3>& orientation, int rings, int degree);
 
 /// A triangle mesh held and edited by CGAL itself: Euler::flip_edge, and Euler::split_edge
 /// followed by Euler::split_face on each side with a face. Edges are named by endpoints;
