@@ -2,6 +2,8 @@
 // convergence tables: the measured figures of issue 6 asserted on the catalog.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "library_guard.h"
 
 #include <algorithm>
@@ -12,6 +14,7 @@
 #include "crossdiv/mesh/poly_connectivity.h"
 #include "crossdiv/verification/comparisons/bfr_comparison.h"
 #include "crossdiv/verification/suite/operations.h"
+#include "crossdiv/verification/suite/curvature_study.h"
 #include "crossdiv/verification/comparisons/limit_comparison.h"
 #include "crossdiv/verification/comparisons/scheme_comparison.h"
 #include "scheme_test_catalog.h"
@@ -132,8 +135,31 @@ TEST(BfrComparison, ExactAtLevelOneDyadicPointsEvenOnIrregularFaces) {
 TEST(LimitChecks, UnknownStudyIsRefused) {
     EXPECT_THROW(find_operation("eigen"), InputError);
     const auto& ops = suite_operations();
-    // catmull-clark, schemes, creases, limit-positions, vertex-age, spectrum, convergence
-    EXPECT_EQ(std::count_if(ops.begin(), ops.end(), [](const SuiteOperation& op) { return op.kind == OperationKind::Study; }), 7);
+    // catmull-clark, schemes, creases, limit-positions, vertex-age, curvature, spectrum, convergence
+    EXPECT_EQ(std::count_if(ops.begin(), ops.end(), [](const SuiteOperation& op) { return op.kind == OperationKind::Study; }), 8);
+}
+
+// The curvature study: every check holds (second-order convergence of core on the sphere and
+// torus, core and CGAL converging to each other, Gauss-Bonnet on every manifold catalog mesh,
+// Loop's curvature growth per level as its eigenvalues predict), and the growth table says
+// what is known of Loop's scheme: unbounded Gaussian curvature at valence 3 and above 6,
+// bounded at 6, tending to 0 at 4 and 5.
+TEST(CurvatureStudy, EveryCheckHoldsAndLoopsCurvatureGrowsWhereItsEigenvaluesSay) {
+    const CheckReport r = curvature_study();
+    int gauss_bonnet = 0;
+    for (const Check& c : r.checks) {
+        EXPECT_TRUE(c.pass()) << c.subject << " " << c.check << " " << c.measured << " > " << c.tolerance;
+        gauss_bonnet += c.check == "gauss-bonnet";
+    }
+    EXPECT_GE(gauss_bonnet, 60);
+    for (const auto& row : r.tables.at("loop_curvature_growth")) {
+        const int n = row.at("valence");
+        const double first = std::abs(row.at("gaussian").front().get<double>());
+        const double last = std::abs(row.at("gaussian").back().get<double>());
+        if (n == 3 || n > 6) EXPECT_GT(last, 10 * first) << n;
+        if (n == 4 || n == 5) EXPECT_LT(last, first / 5) << n;  // 10 levels of 0.79 and 0.71
+        if (n == 6) EXPECT_NEAR(last, first, 0.05 * first);
+    }
 }
 
 }  // namespace

@@ -90,20 +90,23 @@ DiscreteCurvature discrete_curvature(const TriMesh& mesh) {
     std::vector<Vec3> laplacian(n, Vec3::Zero());  // sum (cot a + cot b)(x_i - x_j)
 
     // One pass over the triangles: each corner's angle, its share of the mixed area, and the
-    // cotangent terms of the two edges it sees. Zero-area triangles add nothing (their
-    // cotangents are undefined); they still count as incident for the status.
+    // cotangent terms of the two edges it sees. A zero-area triangle adds its angles (0, 0 and
+    // pi when its corners are distinct and collinear) but no area and no cotangent term (they
+    // are undefined).
     for (const Triangle& t : mesh.triangles) {
         const Vec3 e[3] = {P[t[2]] - P[t[1]], P[t[0]] - P[t[2]], P[t[1]] - P[t[0]]};  // e[j] opposite corner j
         for (int v : t)
             if (out.status[v] == CurvatureStatus::Isolated) out.status[v] = CurvatureStatus::Degenerate;
+        Corner c[3];
+        for (int j = 0; j < 3; ++j) {
+            c[j] = corner(e[(j + 2) % 3], -e[(j + 1) % 3]);
+            angle_sum[t[j]] += c[j].angle;  // a flat triangle's are 0, 0 and pi: the sum stays exact
+        }
         const double area = 0.5 * e[2].cross(-e[1]).norm();
         if (!(area > 0.0)) continue;
-        Corner c[3];
-        for (int j = 0; j < 3; ++j) c[j] = corner(e[(j + 2) % 3], -e[(j + 1) % 3]);
         const bool obtuse = c[0].cot < 0 || c[1].cot < 0 || c[2].cot < 0;
         for (int j = 0; j < 3; ++j) {
             const int i = t[j], a = (j + 1) % 3, b = (j + 2) % 3;
-            angle_sum[i] += c[j].angle;
             // Edge x_i -> x_a is e[b] (seen from corner b), edge x_i -> x_b is -e[a].
             laplacian[i] += c[b].cot * (-e[b]) + c[a].cot * e[a];
             if (!obtuse)

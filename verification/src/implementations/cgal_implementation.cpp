@@ -1,7 +1,8 @@
 // CGAL as implementations: "cgal" (Subdivision_method_3's Loop, Catmull-Clark, Doo-Sabin and
-// sqrt3 called once per level; Euler flips and splits; PMP vertex normals and the closed-mesh
-// report) and "cgal-one-call" (Sqrt3 asked for every level in one call).
+// sqrt3 called once per level; Euler flips and splits; PMP vertex normals, the closed-mesh
+// report and jet-fitted curvatures) and "cgal-one-call" (Sqrt3 asked for every level in one call).
 #include "crossdiv/adapters/cgal.h"
+#include "crossdiv/mesh/vertex_normals.h"
 #include "library_implementations.h"
 
 namespace crossdiv::verification::detail {
@@ -19,7 +20,8 @@ public:
                                       supports(Scheme::Sqrt3, {sqrt3_rule(Sqrt3Parity::RestartEachLevel)})},
                           .edits = true,
                           .vertex_normals = true,
-                          .closed_mesh_report = true}) {}
+                          .closed_mesh_report = true,
+                          .curvatures = true}) {}
 
     adapters::LevelTrace refine(const PolyMesh& mesh, const RefineRequest& r) const override {
         check_refinable(r.scheme);
@@ -51,6 +53,18 @@ public:
     }
 
     adapters::ClosedMeshReport closed_mesh_report(const TriMesh& mesh) const override { return cg::closed_mesh_report(mesh); }
+
+    /// A degree-2 jet over the 2-ring (at least 7 points around an interior vertex for the 6
+    /// coefficients), the fit CGAL's own example makes; oriented by our angle-weighted normals.
+    PrincipalCurvatures curvatures(const TriMesh& mesh) const override {
+        const cg::MongeCurvatures m = cg::monge_curvatures(mesh, crossdiv::vertex_normals(mesh, NormalWeighting::Angle), 2, 2);
+        PrincipalCurvatures out{"Monge_via_jet_fitting, degree 2, 2-ring", m.fitted, m.k1, m.k2, {}, {}, m.direction1};
+        for (size_t v = 0; v < m.k1.size(); ++v) {
+            out.mean.push_back((m.k1[v] + m.k2[v]) / 2);
+            out.gaussian.push_back(m.k1[v] * m.k2[v]);
+        }
+        return out;
+    }
 };
 
 class CgalOneCall final : public Implementation {

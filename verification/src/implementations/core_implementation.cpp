@@ -1,5 +1,6 @@
 // Core as an implementation: every scheme under every named rule, with crease tags for Loop
-// and Catmull-Clark, limit positions for both.
+// and Catmull-Clark, limit positions for both, discrete curvature.
+#include "crossdiv/mesh/discrete_curvature.h"
 #include "crossdiv/subdiv/butterfly.h"
 #include "crossdiv/subdiv/catmull_clark.h"
 #include "crossdiv/subdiv/doo_sabin.h"
@@ -32,6 +33,7 @@ Capabilities core_capabilities() {
                  supports(Scheme::ModifiedButterfly,
                           {butterfly_rule(ButterflyWings::Reflected), butterfly_rule(ButterflyWings::OppositeVertex)})};
     c.limit_positions = true;
+    c.curvatures = true;
     return c;
 }
 
@@ -97,6 +99,15 @@ public:
         }
         out.position = std::move(limit.position);
         out.normal = std::move(limit.normal);
+        return out;
+    }
+
+    PrincipalCurvatures curvatures(const TriMesh& mesh) const override {
+        DiscreteCurvature c = discrete_curvature(mesh);
+        PrincipalCurvatures out{"cotangent Laplacian and angle defect (Meyer et al. 2002)", {}, std::move(c.k1),
+                                std::move(c.k2), std::move(c.mean), std::move(c.gaussian), std::move(c.direction1)};
+        out.estimated.reserve(c.status.size());
+        for (CurvatureStatus s : c.status) out.estimated.push_back(s == CurvatureStatus::Estimated);
         return out;
     }
 };

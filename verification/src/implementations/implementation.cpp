@@ -110,6 +110,7 @@ adapters::SplineSamples Implementation::evaluate_spline(SplineKind, std::span<co
 }
 
 adapters::ClosedMeshReport Implementation::closed_mesh_report(const TriMesh&) const { lacks("closed-mesh report"); }
+PrincipalCurvatures Implementation::curvatures(const TriMesh&) const { lacks("curvature estimator"); }
 
 IsolatedTrace refine_isolated(const Implementation& impl, const PolyMesh& mesh, const RefineRequest& request,
                               double timeout_seconds, bool isolate) {

@@ -13,6 +13,7 @@
 #include "crossdiv/verification/properties/surface_checks.h"
 #include "crossdiv/verification/harness/json_text.h"
 #include "crossdiv/verification/suite/features_under_test.h"
+#include "crossdiv/verification/suite/curvature_study.h"
 #include "suite/studies.h"
 
 namespace crossdiv::verification {
@@ -133,6 +134,8 @@ const std::vector<SuiteOperation>& suite_operations() {
          one_collection<kCatalog>, run_study<limit_positions_study>},
         {"vertex-age", OperationKind::Study, "the level each vertex was born at, every scheme, against the topology",
          one_collection<kCatalog>, run_study<vertex_age_study>},
+        {"curvature", OperationKind::Study, "discrete curvature against the analytic sphere and torus and CGAL's jet fitting, Gauss-Bonnet, Loop's curvature at extraordinary vertices",
+         one_collection<kCatalog>, run_study<curvature_study>},
         {"spectrum", OperationKind::Study, "eigen table of the local subdivision matrices; the Loop rule oracle", one_collection<kFans>,
          run_study<spectrum_study>},
         {"convergence", OperationKind::Study, "convergence of extraordinary vertices to their limit",

@@ -2,6 +2,7 @@
 // The studies of schemes and limit behaviour, each a suite operation over a fixed catalog
 // (operations.h): measured checks, each with its named tolerance, and the full tables.
 
+#include "crossdiv/mesh/poly_mesh.h"
 #include "crossdiv/verification/properties/check.h"
 
 namespace crossdiv::verification {
@@ -26,5 +27,8 @@ CheckReport vertex_age_study();
 CheckReport spectrum_study();
 /// The convergence table, valence 3..12, levels 1..8.
 CheckReport convergence_study();
+
+/// A mesh as {positions, faces} for the report's figures.
+nlohmann::json mesh_json(const PolyMesh& m);
 
 }  // namespace crossdiv::verification

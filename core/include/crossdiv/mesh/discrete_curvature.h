@@ -29,7 +29,9 @@
 /// Gauss-Bonnet theorem holds on every manifold mesh, open or closed, to rounding:
 ///     sum over interior vertices (2 pi - sum angles) + sum over boundary vertices
 ///     (pi - sum angles) = 2 pi chi,   chi = V - E + F (isolated vertices not counted).
-/// It is exact because every triangle's angles sum to pi, and 3F = 2E - E_boundary.
+/// It is exact because every triangle's angles sum to pi, and 3F = 2E - E_boundary. A triangle
+/// with two coincident corners has no angles (atan2(0, 0) = 0 is taken), and the sum then
+/// misses pi for each such triangle.
 
 #include <vector>
 

@@ -60,6 +60,7 @@ struct Capabilities {
     bool vertex_normals = false;
     bool spline_evaluation = false;   ///< B-spline and Bezier evaluation with derivatives
     bool closed_mesh_report = false;  ///< validity, closedness, orientation and volume of a mesh
+    bool curvatures = false;          ///< per-vertex principal curvatures of a triangle mesh
     Precision precision = Precision::Double;
 };
 
@@ -69,6 +70,18 @@ struct NamedNormals {
     std::string method;  ///< the library call
     std::vector<Vec3> normals;
     std::string error;   ///< the library refused the mesh (then `normals` is empty)
+};
+
+/// Per-vertex principal curvatures in crossdiv's sign convention (mesh/discrete_curvature.h:
+/// positive where the surface bends away from the outward normal, 1/r on a sphere), k1 >= k2.
+struct PrincipalCurvatures {
+    std::string method;  ///< the estimator: "cotangent Laplacian and angle defect (Meyer et al. 2002)", ...
+    std::vector<unsigned char> estimated;  ///< 0 where the estimator gives nothing (a boundary vertex, too few neighbours)
+    std::vector<double> k1, k2;
+    /// The estimator's own mean and Gaussian curvature: (k1 + k2) / 2 and k1 k2 for a fit, but
+    /// the angle defect over the area for core, whose k1, k2 clamp H^2 - K at 0.
+    std::vector<double> mean, gaussian;
+    std::vector<Vec3> direction1;  ///< unit direction of k1; 0 where undefined (an umbilic)
 };
 
 /// A mesh held in an implementation's own structures and edited in lockstep with ours.
@@ -143,6 +156,9 @@ public:
     virtual adapters::SplineSamples evaluate_spline(SplineKind kind, std::span<const Vec3> control,
                                                     std::span<const double> params) const;
     virtual adapters::ClosedMeshReport closed_mesh_report(const TriMesh& mesh) const;
+    /// Principal curvatures of every vertex. @throws InputError or adapters::Rejected for a
+    /// mesh the estimator cannot take (non-manifold), naming the element.
+    virtual PrincipalCurvatures curvatures(const TriMesh& mesh) const;
 
 protected:
     /// adapters::Rejected("<name> has no <what>").

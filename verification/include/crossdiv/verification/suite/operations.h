@@ -13,6 +13,7 @@
 ///   creases          the crease catalog against OpenSubdiv, and the crease-cube figure
 ///   limit-positions  limit positions and normals against OpenSubdiv's Limit(), and Bfr at (u, v)
 ///   vertex-age       the level each vertex was born at, every scheme, against the topology
+///   curvature        discrete curvature: analytic convergence, CGAL's jet fitting, Gauss-Bonnet, Loop's growth
 ///   spectrum         the eigen table of the local subdivision matrices, valence 3..20, against
 ///                    the published closed forms; the Loop rule oracle of loop and warren
 ///   convergence      the convergence table, valence 3..12, levels 1..8
