@@ -247,6 +247,64 @@ def vertex_age(rows, figdir):
     return save(fig, figdir, "vertex_age.png")
 
 
+def curvature_convergence(rows, figdir):
+    """Largest error of the mean and Gaussian curvature against the exact sphere and torus as the
+    mean edge length h halves, one line per estimator (log-log: a slope of 2 is second order)."""
+    surfaces = sorted({r["surface"] for r in rows})
+    fig, axes = plt.subplots(1, 2 * len(surfaces), figsize=(3.4 * 2 * len(surfaces), 3.2), squeeze=False)
+    col = 0
+    for surface in surfaces:
+        for key, label in (("mean_max", "H"), ("gauss_max", "K")):
+            ax = axes[0][col]
+            col += 1
+            for est in sorted({r["estimator"] for r in rows if r["surface"] == surface}):
+                sel = sorted((r for r in rows if r["surface"] == surface and r["estimator"] == est), key=lambda r: r["h"])
+                ax.loglog([r["h"] for r in sel], [max(r[key], 1e-300) for r in sel], marker="o", label=est)
+            ax.set_xlabel("mean edge length h")
+            ax.set_title(f"{surface}: max |{label} error|", fontsize=8)
+            ax.legend(fontsize=7)
+    return save(fig, figdir, "curvature_convergence.png")
+
+
+def curvature_mesh(row, figdir):
+    """A mesh with every face coloured by the mean of its vertices' Gaussian curvature (diverging
+    map centred at 0: red positive, blue negative), as `crossdiv curvature --color gaussian` writes it."""
+    m = row["mesh"]
+    pts, faces, k = m["positions"], m["faces"], row["gaussian"]
+    values = [sum(k[v] for v in f) / len(f) for f in faces]
+    bound = max(max(abs(x) for x in values), 1e-12)
+    fig = plt.figure(figsize=(5, 3.6))
+    ax = fig.add_subplot(1, 1, 1, projection="3d")
+    cmap = plt.get_cmap("coolwarm")
+    colors = [cmap(0.5 + 0.5 * x / bound) for x in values]
+    ax.add_collection3d(Poly3DCollection([[pts[v] for v in f] for f in faces], facecolors=colors, edgecolors="0.3",
+                                         linewidths=0.1))
+    span = max(abs(c) for p in pts for c in p)
+    for setter in (ax.set_xlim, ax.set_ylim, ax.set_zlim):
+        setter(-span, span)
+    ax.set_box_aspect((1, 1, 1), zoom=1.3)
+    ax.view_init(elev=35, azim=-60)
+    ax.set_axis_off()
+    ax.set_title(f"{row['surface']}: Gaussian curvature, blue {-bound:.3g} .. red {bound:.3g}", fontsize=8)
+    return save(fig, figdir, "curvature_mesh.png")
+
+
+def loop_curvature_growth(rows, figdir):
+    """|Gaussian curvature| of Loop's limit surface at a vertex of valence n, measured on the limit
+    points of its ring at each level (log scale), with the growth its eigenvalues predict (dashed)."""
+    fig, ax = plt.subplots(figsize=(5.6, 3.6))
+    for r in sorted(rows, key=lambda r: r["valence"]):
+        g = [abs(x) for x in r["gaussian"]]
+        line, = ax.semilogy(range(len(g)), g, marker=".", label=f"n = {r['valence']}")
+        ax.semilogy(range(len(g)), [g[-1] * r["predicted_ratio"] ** (l - len(g) + 1) for l in range(len(g))],
+                    linestyle="--", color=line.get_color(), linewidth=0.7)
+    ax.set_xlabel("level")
+    ax.set_ylabel("|K| at the extraordinary vertex")
+    ax.set_title("Loop: Gaussian curvature at valence n (dashed: (nu / lambda^2)^2 per level)", fontsize=8)
+    ax.legend(fontsize=6, ncol=3)
+    return save(fig, figdir, "loop_curvature_growth.png")
+
+
 def limit_convergence(rows, figdir):
     fig, ax = plt.subplots(figsize=(5, 3.6))
     for r in rows:

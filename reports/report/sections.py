@@ -281,6 +281,38 @@ def studies_section(study_cases, figdir):
         pictured = [r for r in rows if r.get("mesh")]
         if pictured:
             s.add(Figure(figures.vertex_age(pictured, figdir), "vertex age"))
+    if tables.get("curvature_convergence"):
+        rows = tables["curvature_convergence"]
+        s.add(Text("Discrete curvature (core: cotangent Laplacian, mixed Voronoi areas, angle defect, Meyer et al. "
+                   "2002; CGAL: Monge_via_jet_fitting, a degree-2 jet over the 2-ring) against the exact unit sphere "
+                   "and torus (R 1, r 0.4) as the meshes are refined; errors are the largest over the vertices:"),
+              Table(["surface", "estimator", "vertices", "h", "max |H err|", "max |K err|", "max direction err (rad)"],
+                    [(r["surface"], r["estimator"], r["vertices"], fmt(r["h"]), fmt(r["mean_max"]), fmt(r["gauss_max"]),
+                      fmt(r["direction_max"]) if r["surface"] != "sphere" else "umbilic") for r in rows]),
+              Figure(figures.curvature_convergence(rows, figdir), "curvature convergence"))
+    if tables.get("curvature_figure"):
+        s.add(Figure(figures.curvature_mesh(tables["curvature_figure"][0], figdir), "curvature colouring"))
+    if tables.get("gauss_bonnet"):
+        rows = tables["gauss_bonnet"]
+        held = [r for r in rows if "refused" not in r]
+        s.add(Text(f"Discrete Gauss-Bonnet: the angle defects (turning angles on a boundary) sum to 2 pi chi on "
+                   f"{len(held)} manifold meshes; {len(rows) - len(held)} non-manifold edge cases are refused, as the "
+                   f"operators need a manifold. Largest error: "
+                   f"{fmt(max((r['error'] for r in held), default=0))} rad."),
+              Table(["mesh", "V", "F", "boundary vertices", "chi", "sum of defects", "|error|", "bound"],
+                    [(r["mesh"], r["vertices"], r["faces"], r["boundary_vertices"], r["chi"], fmt(r["total_defect"]),
+                      fmt(r["error"]), fmt(r["bound"])) for r in held]))
+    if tables.get("loop_curvature_growth"):
+        rows = tables["loop_curvature_growth"]
+        s.add(Text("Loop's Gaussian curvature at a vertex of valence n, on the limit points of its ring, level after "
+                   "level: it changes by (nu / lambda^2)^2 per level, lambda = 3/8 + cos(2 pi / n) / 4 and nu the larger "
+                   "of 3/8 + cos(4 pi / n) / 4 and 1/8. It grows without bound at valence 3 and above 6, stays at 6 and "
+                   "tends to 0 at 4 and 5 (a flat spot)."),
+              Table(["valence", "lambda", "nu", "predicted ratio", "measured ratio (last level)", "K level 0",
+                     "K last level"],
+                    [(r["valence"], fmt(r["lambda"]), fmt(r["nu"]), fmt(r["predicted_ratio"]), fmt(r["ratio"][-1]),
+                      fmt(r["gaussian"][0]), fmt(r["gaussian"][-1])) for r in rows]),
+              Figure(figures.loop_curvature_growth(rows, figdir), "Loop curvature growth"))
     if tables.get("butterfly_properties"):
         rows = []
         for scheme in sorted({r["scheme"] for r in tables["butterfly_properties"]}):

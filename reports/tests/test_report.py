@@ -228,3 +228,32 @@ def test_vertex_age_gets_its_table_and_coloured_meshes(tmp_path):
     table = [t for t in tables_of(md) if t[0][:2] == [" scheme ", " input "] and len(t[0]) == 6]
     assert table and [row[4].strip() for row in table[0][2:]] == ["4 / 2", "0 / 12"], tables_of(md)
     assert (tmp_path / "figures" / "vertex_age.png").stat().st_size > 1000
+
+
+def test_curvature_gets_its_tables_and_figures(tmp_path):
+    results = results_fixture()
+    tetra = {"positions": [[1, 1, 1], [1, -1, -1], [-1, 1, -1], [-1, -1, 1]],
+             "faces": [[0, 1, 2], [0, 2, 3], [0, 3, 1], [1, 3, 2]]}
+    conv = [{"surface": s, "estimator": e, "method": "m", "vertices": 10 * 4 ** k, "h": 0.5 / 2 ** k, "estimated": 10,
+             "mean_max": 0.1 / 4 ** k, "mean_rms": 0.05 / 4 ** k, "gauss_max": 0.2 / 4 ** k, "gauss_rms": 0.1 / 4 ** k,
+             "direction_max": 0.01 / 4 ** k} for s in ("sphere", "torus") for e in ("core", "cgal") for k in range(3)]
+    gb = [{"mesh": "tetrahedron", "vertices": 4, "faces": 4, "boundary_vertices": 0, "chi": 2,
+           "total_defect": 12.566370614359172, "error": 1.8e-15, "bound": 6.7e-14},
+          {"mesh": "edgecase:fin", "refused": "edge 0-1 in three faces"}]
+    growth = [{"valence": 7, "lambda": 0.53, "nu": 0.32, "predicted_ratio": 1.284, "gaussian": [-0.5, -0.6, -0.77],
+               "mean": [1, 1, 1], "ratio": [1.2, 1.28]}]
+    figure = [{"surface": "tetra", "mesh": tetra, "gaussian": [1, -1, 2, 0.5], "mean": [0, 0, 0, 0]}]
+    results["cases"].append({"input": "catalog", "operation": "curvature", "job": 5, "id": "catalog | curvature",
+                             "subjects": ["sphere", "torus"], "outcome": "agree", "runs": [],
+                             "tables": {"curvature_convergence": conv, "gauss_bonnet": gb,
+                                        "loop_curvature_growth": growth, "curvature_figure": figure}})
+    (tmp_path / "results.json").write_text(json.dumps(results))
+    make_report.main(str(tmp_path))
+    md = (tmp_path / "report.md").read_text()
+    assert "on 1 manifold meshes; 1 non-manifold edge cases are refused" in md
+    growth_table = [t for t in tables_of(md) if t[0][:2] == [" valence ", " lambda "]]
+    assert growth_table and growth_table[0][2][4].strip() == "1.28", tables_of(md)
+    conv_table = [t for t in tables_of(md) if t[0][:2] == [" surface ", " estimator "]]
+    assert conv_table and len(conv_table[0]) == 2 + 12
+    for name in ("curvature_convergence.png", "curvature_mesh.png", "loop_curvature_growth.png"):
+        assert (tmp_path / "figures" / name).stat().st_size > 1000
