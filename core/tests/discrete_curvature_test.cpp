@@ -157,6 +157,32 @@ TEST(DiscreteCurvature, TorusConvergesToTheAnalyticCurvatures) {
     }
 }
 
+// Curvature scales as 1 / size and Gaussian curvature as 1 / size^2: the octahedron scaled by
+// 1e153 and 1e-153 gives the unit octahedron's values scaled, to the same ulps. Scaled by 1e200
+// its areas (1e400) and by 1e-300 its K (1e600) are out of range: refused, not returned as inf or 0.
+TEST(DiscreteCurvature, HugeAndTinyMeshesScaleOrAreRefused) {
+    for (double s : {1e153, 1e-153}) {
+        TriMesh m = octahedron();
+        for (Vec3& p : m.positions) p *= s;
+        const DiscreteCurvature c = discrete_curvature(m);
+        ASSERT_EQ(c.num_estimated(), 6) << s;
+        EXPECT_NEAR(c.mean[0] * s, 1.0, 16 * kEps) << s;
+        EXPECT_NEAR(c.gaussian[0] * s * s, kPi / std::sqrt(3.0), 32 * kEps) << s;
+        EXPECT_NEAR(c.mixed_area[0] / s / s, 2 * std::sqrt(3.0) / 3, 16 * kEps) << s;
+    }
+    for (double s : {1e200, 1e-300}) {
+        TriMesh m = octahedron();
+        for (Vec3& p : m.positions) p *= s;
+        try {
+            discrete_curvature(m);
+            FAIL() << s;
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("vertex 0: its curvature or area is out of the range of double"),
+                      std::string::npos) << e.what();
+        }
+    }
+}
+
 TEST(DiscreteCurvature, RefusesNonManifoldAndNonFiniteInput) {
     TriMesh m = octahedron();
     m.positions[3] = Vec3(0, std::nan(""), 0);

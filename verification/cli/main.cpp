@@ -7,6 +7,7 @@
 
 #include "bench_commands.h"
 #include "crossdiv/error.h"
+#include "curvature_command.h"
 #include "curve_commands.h"
 #include "edit_commands.h"
 #include "mesh_commands.h"
@@ -25,6 +26,7 @@ int main(int argc, char** argv) {
     cli::add_curve_commands(app, status);    // tessellate, casteljau
     cli::add_surface_commands(app, status);  // sweep, patch
     cli::add_edit_commands(app, status);     // edit, normals
+    cli::add_curvature_command(app, status);  // curvature
     cli::add_scheme_commands(app, status);   // limit, spectrum
     try {
         app.parse(argc, argv);  // runs the selected command

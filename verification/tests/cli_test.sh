@@ -46,6 +46,15 @@ expect check-lists-issues 2 'error \[non-manifold-edge\]' -- "$crossdiv" check "
 # Vertex age: Loop on the icosahedron keeps its 12 vertices (dark blue) and adds one per edge: 480 at level 3 (yellow).
 expect subdivide-age 0 '^ *480 v 0\.99299999999999999 0\.90600000000000003 0\.14399999999999999$' -- bash -c "\"$crossdiv\" subdivide bundled:icosahedron --levels 3 --color age -o \"$tmp/age.obj\" >/dev/null && awk '\$1==\"v\" {print \"v\", \$5, \$6, \$7}' \"$tmp/age.obj\" | sort | uniq -c"
 expect subdivide-age-core-only 2 '--color age needs --impl core' -- "$crossdiv" subdivide bundled:icosahedron --levels 1 --color age --impl opensubdiv -o "$tmp/x.obj"
+# Curvature: the octahedron's hand values (H = 1, K = pi / sqrt 3, mixed area 2 sqrt 3 / 3, defect 2 pi / 3),
+# Gauss-Bonnet on the torus, CGAL's jet fit compared, the mesh coloured, and what the operators refuse.
+expect curvature-octahedron 0 '^0,estimated,1\.1547005383792517,2\.0943951023931957,1,1\.8137993642342178,1,1,' -- bash -c "\"$crossdiv\" curvature bundled:octahedron --csv \"$tmp/oct.csv\" >/dev/null && cat \"$tmp/oct.csv\""
+expect curvature-gauss-bonnet 0 'chi = 0\) to .*\(holds to rounding\)' -- "$crossdiv" curvature bundled:torus
+expect curvature-cgal 0 'cgal \(Monge_via_jet_fitting, degree 2, 2-ring\): on 96 vertices max \|H diff\|' -- "$crossdiv" curvature bundled:torus --against cgal
+expect curvature-colour 0 'wrote .*curv.obj coloured by gaussian curvature' -- "$crossdiv" curvature bundled:torus --color gaussian -o "$tmp/curv.obj"
+expect curvature-colour-needs-obj 2 'is not an .obj file' -- "$crossdiv" curvature bundled:torus --color mean -o "$tmp/curv.off"
+expect curvature-non-manifold 2 'edge \(0, 1\) is shared by 3 triangles' -- "$crossdiv" curvature "$tmp/nonmanifold.obj"
+expect curvature-quads 2 'discrete curvature needs triangles' -- "$crossdiv" curvature bundled:quad-cube
 expect too-many-levels 2 'would produce 335544320 faces, over the limit' -- "$crossdiv" subdivide bundled:icosahedron --levels 12 -o "$tmp/x.obj"
 expect compare-max-faces 2 'bundled:icosahedron: 3 levels would produce 1280 faces, over the limit of 1000 \(--max-faces\)' -- "$crossdiv" compare bundled:icosahedron --levels 3 --max-faces 1000
 expect cc-max-faces 2 'would produce 96 faces, over the limit of 95' -- "$crossdiv" subdivide bundled:quad-cube --scheme catmull-clark --levels 2 --max-faces 95 -o "$tmp/x.obj"

@@ -65,12 +65,11 @@ double DiscreteCurvature::total_angle_defect() const {
     return sum;
 }
 
-DiscreteCurvature discrete_curvature(const TriMesh& mesh) {
+namespace {
+
+/// The operators on `mesh`, whose bounding-box diagonal is about 1.
+DiscreteCurvature curvature_at_unit_scale(const TriMesh& mesh, const TriConnectivity& conn) {
     const int nv = mesh.num_vertices();
-    for (int v = 0; v < nv; ++v)
-        if (!mesh.positions[v].allFinite())
-            throw InputError(mesh.source.describe_vertex(v) + ": coordinate is not finite");
-    const TriConnectivity conn = build_tri_connectivity(mesh);  // throws for non-manifold input
     const auto& P = mesh.positions;
     const size_t n = static_cast<size_t>(nv);
 
@@ -172,6 +171,41 @@ DiscreteCurvature discrete_curvature(const TriMesh& mesh) {
         const Eigen::Vector2d d1 = eig.eigenvectors().col(1);
         out.direction1[v] = (d1[0] * u + d1[1] * w).normalized();
         out.direction2[v] = out.normal[v].cross(out.direction1[v]);
+    }
+    return out;
+}
+
+}  // namespace
+
+DiscreteCurvature discrete_curvature(const TriMesh& mesh) {
+    for (int v = 0; v < mesh.num_vertices(); ++v)
+        if (!mesh.positions[v].allFinite())
+            throw InputError(mesh.source.describe_vertex(v) + ": coordinate is not finite");
+    const TriConnectivity conn = build_tri_connectivity(mesh);  // throws for non-manifold input
+    // Squared edge lengths and cross products of a mesh of size 1e160 overflow and of 1e-160
+    // underflow: the operators run on the mesh scaled by a power of two (exact) to a diagonal
+    // in [0.5, 1), and the results are scaled back (H and k by 1/s, K by 1/s^2, areas by s^2).
+    // A result that leaves the range of double then (an area of 1e400, a curvature that
+    // underflows to 0) is refused rather than returned wrong.
+    const double diagonal = bounding_box_diagonal(mesh.positions);
+    int exponent = 0;
+    if (diagonal > 0.0 && std::isfinite(diagonal)) std::frexp(diagonal, &exponent);
+    TriMesh unit = mesh;
+    for (Vec3& p : unit.positions) p = Vec3(std::ldexp(p.x(), -exponent), std::ldexp(p.y(), -exponent), std::ldexp(p.z(), -exponent));
+    DiscreteCurvature out = curvature_at_unit_scale(unit, conn);
+    for (int v = 0; v < mesh.num_vertices(); ++v) {
+        const bool nonzero = out.gaussian[v] != 0.0 && out.mean[v] != 0.0;
+        out.mixed_area[v] = std::ldexp(out.mixed_area[v], 2 * exponent);
+        out.mean[v] = std::ldexp(out.mean[v], -exponent);
+        out.k1[v] = std::ldexp(out.k1[v], -exponent);
+        out.k2[v] = std::ldexp(out.k2[v], -exponent);
+        out.gaussian[v] = std::ldexp(out.gaussian[v], -2 * exponent);
+        const bool in_range = std::isfinite(out.k1[v]) && std::isfinite(out.k2[v]) && std::isfinite(out.gaussian[v]) &&
+                              std::isfinite(out.mixed_area[v]) && out.mixed_area[v] > 0.0 &&
+                              (!nonzero || (out.gaussian[v] != 0.0 && out.mean[v] != 0.0));
+        if (out.status[v] == CurvatureStatus::Estimated && !in_range)
+            throw InputError(mesh.source.describe_vertex(v) + ": its curvature or area is out of the range of double "
+                             "(mesh diagonal " + std::to_string(diagonal) + ")");
     }
     return out;
 }

@@ -68,8 +68,8 @@ struct DiscreteCurvature {
 
 /// The curvature of every vertex of `mesh`, in O(V + F).
 /// @throws InputError naming the element when the mesh is not a manifold, consistently
-///         oriented triangle mesh (build_tri_connectivity's conditions), or has a non-finite
-///         coordinate (naming the vertex).
+///         oriented triangle mesh (build_tri_connectivity's conditions), has a non-finite
+///         coordinate, or a vertex whose curvature overflows double (naming the vertex).
 DiscreteCurvature discrete_curvature(const TriMesh& mesh);
 
 /// "estimated", "boundary", "isolated", "degenerate".
