@@ -186,7 +186,8 @@ DiscreteCurvature discrete_curvature(const TriMesh& mesh) {
     // underflow: the operators run on the mesh scaled by a power of two (exact) to a diagonal
     // in [0.5, 1), and the results are scaled back (H and k by 1/s, K by 1/s^2, areas by s^2).
     // A result that leaves the range of double then (an area of 1e400, a curvature that
-    // underflows to 0) is refused rather than returned wrong.
+    // underflows to 0) is refused rather than returned wrong. Scaling up cannot overflow: a
+    // mesh of size s resolves no coordinate beyond s 2^53.
     const double diagonal = bounding_box_diagonal(mesh.positions);
     int exponent = 0;
     if (diagonal > 0.0 && std::isfinite(diagonal)) std::frexp(diagonal, &exponent);
