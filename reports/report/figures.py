@@ -266,26 +266,34 @@ def curvature_convergence(rows, figdir):
     return save(fig, figdir, "curvature_convergence.png")
 
 
-def curvature_mesh(row, figdir):
-    """A mesh with every face coloured by the mean of its vertices' Gaussian curvature (diverging
-    map centred at 0: red positive, blue negative), as `crossdiv curvature --color gaussian` writes it."""
-    m = row["mesh"]
-    pts, faces, k = m["positions"], m["faces"], row["gaussian"]
-    values = [sum(k[v] for v in f) / len(f) for f in faces]
-    bound = max(max(abs(x) for x in values), 1e-12)
-    fig = plt.figure(figsize=(5, 3.6))
-    ax = fig.add_subplot(1, 1, 1, projection="3d")
+def curvature_mesh(rows, figdir):
+    """Each mesh with every face coloured by the mean Gaussian curvature of its vertices where it
+    was estimated (diverging map centred at 0: red positive, blue negative, scaled to the 95th
+    percentile of |K| as `crossdiv curvature --color gaussian` does; grey: no estimate)."""
+    fig = plt.figure(figsize=(4.6 * len(rows), 3.8))
     cmap = plt.get_cmap("coolwarm")
-    colors = [cmap(0.5 + 0.5 * x / bound) for x in values]
-    ax.add_collection3d(Poly3DCollection([[pts[v] for v in f] for f in faces], facecolors=colors, edgecolors="0.3",
-                                         linewidths=0.1))
-    span = max(abs(c) for p in pts for c in p)
-    for setter in (ax.set_xlim, ax.set_ylim, ax.set_zlim):
-        setter(-span, span)
-    ax.set_box_aspect((1, 1, 1), zoom=1.3)
-    ax.view_init(elev=35, azim=-60)
-    ax.set_axis_off()
-    ax.set_title(f"{row['surface']}: Gaussian curvature, blue {-bound:.3g} .. red {bound:.3g}", fontsize=8)
+    for i, row in enumerate(rows):
+        m = row["mesh"]
+        pts, faces, k = m["positions"], m["faces"], row["gaussian"]
+        known = row.get("estimated", [1] * len(k))
+        magnitudes = sorted(abs(k[v]) for v in range(len(k)) if known[v])
+        bound = max(magnitudes[int(0.95 * (len(magnitudes) - 1))] if magnitudes else 0.0, 1e-12)
+        colors = []
+        for f in faces:
+            vals = [k[v] for v in f if known[v]]
+            colors.append(cmap(0.5 + 0.5 * max(-1.0, min(1.0, sum(vals) / len(vals) / bound))) if vals else "0.7")
+        ax = fig.add_subplot(1, len(rows), i + 1, projection="3d")
+        ax.add_collection3d(Poly3DCollection([[pts[v] for v in f] for f in faces], facecolors=colors, edgecolors="0.3",
+                                             linewidths=0.05))
+        lo = [min(p[c] for p in pts) for c in range(3)]
+        hi = [max(p[c] for p in pts) for c in range(3)]
+        half = max(h - l for l, h in zip(lo, hi)) / 2
+        for setter, l, h in zip((ax.set_xlim, ax.set_ylim, ax.set_zlim), lo, hi):
+            setter((l + h) / 2 - half, (l + h) / 2 + half)
+        ax.set_box_aspect((1, 1, 1), zoom=1.3)
+        ax.view_init(elev=35, azim=-60)
+        ax.set_axis_off()
+        ax.set_title(f"{row['surface']}: K, blue {-bound:.3g} .. red {bound:.3g}", fontsize=8)
     return save(fig, figdir, "curvature_mesh.png")
 
 

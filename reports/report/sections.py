@@ -291,7 +291,7 @@ def studies_section(study_cases, figdir):
                       fmt(r["direction_max"]) if r["surface"] != "sphere" else "umbilic") for r in rows]),
               Figure(figures.curvature_convergence(rows, figdir), "curvature convergence"))
     if tables.get("curvature_figure"):
-        s.add(Figure(figures.curvature_mesh(tables["curvature_figure"][0], figdir), "curvature colouring"))
+        s.add(Figure(figures.curvature_mesh(tables["curvature_figure"], figdir), "curvature colouring"))
     if tables.get("gauss_bonnet"):
         rows = tables["gauss_bonnet"]
         held = [r for r in rows if "refused" not in r]

@@ -242,7 +242,8 @@ def test_curvature_gets_its_tables_and_figures(tmp_path):
           {"mesh": "edgecase:fin", "refused": "edge 0-1 in three faces"}]
     growth = [{"valence": 7, "lambda": 0.53, "nu": 0.32, "predicted_ratio": 1.284, "gaussian": [-0.5, -0.6, -0.77],
                "mean": [1, 1, 1], "ratio": [1.2, 1.28]}]
-    figure = [{"surface": "tetra", "mesh": tetra, "gaussian": [1, -1, 2, 0.5], "mean": [0, 0, 0, 0]}]
+    figure = [{"surface": "tetra", "mesh": tetra, "gaussian": [1, -1, 2, 0.5], "estimated": [1, 1, 1, 0]},
+              {"surface": "tetra again", "mesh": tetra, "gaussian": [0, 0, 0, 0], "estimated": [0, 0, 0, 0]}]
     results["cases"].append({"input": "catalog", "operation": "curvature", "job": 5, "id": "catalog | curvature",
                              "subjects": ["sphere", "torus"], "outcome": "agree", "runs": [],
                              "tables": {"curvature_convergence": conv, "gauss_bonnet": gb,

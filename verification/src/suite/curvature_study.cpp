@@ -284,11 +284,22 @@ json loop_blowup(CheckReport& out) {
     return rows;
 }
 
-/// The torus at 32 x 16 with core's curvatures, for the coloured figure.
-json torus_figure() {
-    const TriMesh m = datasets::regular_torus(32, 16, kTorusR, kTorusr);
+/// A figure row: the mesh and core's Gaussian curvature, with where it was estimated.
+json figure_row(const std::string& title, const TriMesh& m) {
     const DiscreteCurvature c = discrete_curvature(m);
-    return {{"surface", "torus R 1 r 0.4, 32 x 16"}, {"mesh", mesh_json(to_poly_mesh(m))}, {"gaussian", c.gaussian}, {"mean", c.mean}};
+    std::vector<int> estimated;
+    for (CurvatureStatus s : c.status) estimated.push_back(s == CurvatureStatus::Estimated);
+    return {{"surface", title}, {"mesh", mesh_json(to_poly_mesh(m))}, {"gaussian", c.gaussian}, {"estimated", estimated}};
+}
+
+/// The torus at 32 x 16, and Loop's limit surface around a vertex of valence 8 after 3 levels
+/// (the limit positions of level 3, 16 rings around it), for the coloured figure.
+json curvature_figures() {
+    const TriMesh disc = loop_subdivide(extraordinary_disc(8, 5), {LoopWeights::Loop, LoopBoundary::EdgeOnly}, 3);
+    TriMesh limit = disc;
+    limit.positions = loop_limit(disc, {LoopWeights::Loop, LoopBoundary::EdgeOnly}).position;
+    return json::array({figure_row("torus R 1 r 0.4, 32 x 16", datasets::regular_torus(32, 16, kTorusR, kTorusr)),
+                        figure_row("Loop limit at valence 8, level 3", crop_around_first(limit, 16))});
 }
 
 }  // namespace
@@ -298,7 +309,7 @@ CheckReport curvature_study() {
     out.tables["curvature_convergence"] = convergence(out);
     out.tables["gauss_bonnet"] = gauss_bonnet(out);
     out.tables["loop_curvature_growth"] = loop_blowup(out);
-    out.tables["curvature_figure"] = json::array({torus_figure()});
+    out.tables["curvature_figure"] = curvature_figures();
     return out;
 }
 
