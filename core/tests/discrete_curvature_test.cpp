@@ -77,7 +77,8 @@ TEST(DiscreteCurvature, OctahedronHandValues) {
         EXPECT_NEAR(c.k2[v], 1.0, 8 * kEps) << v;
         EXPECT_NEAR(c.normal[v].norm(), 1.0, 4 * kEps);
     }
-    EXPECT_NEAR(c.total_angle_defect(), 4 * kPi, 32 * kEps);  // chi = 2
+    EXPECT_EQ(c.euler_characteristic, 2);
+    EXPECT_NEAR(c.total_angle_defect(), 4 * kPi, 32 * kEps);
 }
 
 // A triangle with an obtuse corner at vertex 2: half its area goes there, a quarter to each
@@ -96,6 +97,7 @@ TEST(DiscreteCurvature, ObtuseTriangleMixedAreaAndBoundary) {
         EXPECT_EQ(c.mean[v], 0.0);
         EXPECT_EQ(c.gaussian[v], 0.0);
     }
+    EXPECT_EQ(c.euler_characteristic, 1);
     EXPECT_NEAR(c.total_angle_defect(), 2 * kPi, 8 * kEps);
 }
 
@@ -121,6 +123,12 @@ TEST(DiscreteCurvature, FlatFanHasNone) {
     EXPECT_NEAR(c.mean[0], 0.0, 64 * kEps);
     for (int v = 1; v < 7; ++v) EXPECT_EQ(c.status[v], CurvatureStatus::Boundary);
     EXPECT_NEAR(c.total_angle_defect(), 2 * kPi, 32 * kEps);  // a disc
+    TriMesh with_isolated = flat_fan();  // a vertex in no triangle: not counted in chi
+    with_isolated.positions.push_back(Vec3(5, 5, 5));
+    const DiscreteCurvature d = discrete_curvature(with_isolated);
+    EXPECT_EQ(d.status[7], CurvatureStatus::Isolated);
+    EXPECT_EQ(d.euler_characteristic, 1);
+    EXPECT_EQ(d.angle_defect[7], 0.0);
 }
 
 // Gauss-Bonnet on the torus: chi = 0, so the angle defects cancel to rounding (each defect
@@ -129,6 +137,7 @@ TEST(DiscreteCurvature, GaussBonnetOnTheTorus) {
     const TriMesh m = torus(24, 12, 1.0, 0.4);
     const DiscreteCurvature c = discrete_curvature(m);
     EXPECT_EQ(c.num_estimated(), m.num_vertices());
+    EXPECT_EQ(c.euler_characteristic, 0);
     EXPECT_NEAR(c.total_angle_defect(), 0.0, 8 * kEps * kPi * m.num_vertices());
 }
 

@@ -295,13 +295,15 @@ def studies_section(study_cases, figdir):
     if tables.get("gauss_bonnet"):
         rows = tables["gauss_bonnet"]
         held = [r for r in rows if "refused" not in r]
+        refused = [r for r in rows if "refused" in r]
         s.add(Text(f"Discrete Gauss-Bonnet: the angle defects (turning angles on a boundary) sum to 2 pi chi on "
-                   f"{len(held)} manifold meshes; {len(rows) - len(held)} non-manifold edge cases are refused, as the "
-                   f"operators need a manifold. Largest error: "
-                   f"{fmt(max((r['error'] for r in held), default=0))} rad."),
+                   f"{len(held)} manifold meshes; {len(refused)} meshes are refused (the operators need a manifold "
+                   f"triangle mesh). Largest error: {fmt(max((r['error'] for r in held), default=0))} rad."),
               Table(["mesh", "V", "F", "boundary vertices", "chi", "sum of defects", "|error|", "bound"],
                     [(r["mesh"], r["vertices"], r["faces"], r["boundary_vertices"], r["chi"], fmt(r["total_defect"]),
                       fmt(r["error"]), fmt(r["bound"])) for r in held]))
+        if refused:
+            s.add(Table(["refused mesh", "why"], [(r["mesh"], r["refused"]) for r in refused]))
     if tables.get("loop_curvature_growth"):
         rows = tables["loop_curvature_growth"]
         s.add(Text("Loop's Gaussian curvature at a vertex of valence n, on the limit points of its ring, level after "

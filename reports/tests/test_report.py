@@ -251,7 +251,9 @@ def test_curvature_gets_its_tables_and_figures(tmp_path):
     (tmp_path / "results.json").write_text(json.dumps(results))
     make_report.main(str(tmp_path))
     md = (tmp_path / "report.md").read_text()
-    assert "on 1 manifold meshes; 1 non-manifold edge cases are refused" in md
+    assert "on 1 manifold meshes; 1 meshes are refused" in md
+    refused = [t for t in tables_of(md) if t[0] == [" refused mesh ", " why "]]
+    assert refused and refused[0][2][1].strip() == "edge 0-1 in three faces", tables_of(md)
     growth_table = [t for t in tables_of(md) if t[0][:2] == [" valence ", " lambda "]]
     assert growth_table and growth_table[0][2][4].strip() == "1.28", tables_of(md)
     conv_table = [t for t in tables_of(md) if t[0][:2] == [" surface ", " estimator "]]

@@ -5,6 +5,8 @@
 
 #include <CLI/CLI.hpp>
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace crossdiv::cli {
 
@@ -16,6 +18,17 @@ void add_command(CLI::App& app, const char* name, const char* help, int& status,
     CLI::App* sub = app.add_subcommand(name, help);
     args->add_to(*sub);
     sub->callback([args, run, &status] { status = run(*args); });
+}
+
+/// The names of a comma-separated list ("opensubdiv,cgal"), empty items dropped.
+inline std::vector<std::string> split_commas(const std::string& s) {
+    std::vector<std::string> out;
+    for (size_t b = 0, e; b < s.size(); b = e + 1) {
+        e = s.find(',', b);
+        if (e == std::string::npos) e = s.size();
+        if (e > b) out.push_back(s.substr(b, e - b));
+    }
+    return out;
 }
 
 }  // namespace crossdiv::cli

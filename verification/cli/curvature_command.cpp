@@ -2,17 +2,17 @@
 #include "curvature_command.h"
 
 #include <fmt/format.h>
-#include <fmt/os.h>
+#include <fmt/ostream.h>
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <numbers>
 
 #include "command.h"
 #include "crossdiv/error.h"
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/mesh/discrete_curvature.h"
-#include "crossdiv/mesh/tri_connectivity.h"
 #include "crossdiv/verification/harness/inputs.h"
 #include "crossdiv/verification/harness/tolerances.h"
 #include "crossdiv/verification/implementations/registry.h"
@@ -56,9 +56,9 @@ int run_curvature(const CurvatureArgs& a) {
     for (CurvatureStatus s : c.status) ++count[static_cast<int>(s)];
     fmt::print("{}: {} vertices: {} estimated, {} boundary, {} isolated, {} degenerate\n", a.input, mesh.num_vertices(),
                count[0], count[1], count[2], count[3]);
-    const int chi = mesh.num_vertices() - count[2] - build_tri_connectivity(mesh).num_edges() + mesh.num_faces();
+    const int chi = c.euler_characteristic;
     const double total = c.total_angle_defect(), error = std::abs(total - 2 * std::numbers::pi * chi);
-    const double bound = tolerances::kGaussBonnetPerCorner * 3.0 * mesh.num_faces();
+    const double bound = tolerances::gauss_bonnet_bound(mesh.num_faces());
     fmt::print("Gauss-Bonnet: sum of angle defects {:.15g} = 2 pi chi (chi = {}) to {:.3e} ({})\n", total, chi, error,
                error <= bound ? "holds to rounding" : fmt::format("beyond the rounding bound {:.3e}", bound));
     for (const char* name : {"mean", "gaussian", "k1", "k2"}) {
@@ -73,12 +73,7 @@ int run_curvature(const CurvatureArgs& a) {
         if (at_lo >= 0) fmt::print("  {:<9} {:.6g} (vertex {}) .. {:.6g} (vertex {})\n", name, lo, at_lo, hi, at_hi);
     }
 
-    std::vector<std::string> refs;
-    for (size_t start = 0; start < a.against.size();) {
-        const size_t comma = std::min(a.against.find(',', start), a.against.size());
-        if (comma > start) refs.push_back(a.against.substr(start, comma - start));
-        start = comma + 1;
-    }
+    const std::vector<std::string> refs = split_commas(a.against);
     if (!refs.empty())
         for (const verification::Implementation* ref :
              verification::select_references(&verification::Capabilities::curvatures, refs, "curvature estimator")) {
@@ -100,11 +95,12 @@ int run_curvature(const CurvatureArgs& a) {
         }
 
     if (!a.csv.empty()) {
-        auto out = fmt::output_file(a.csv);
-        out.print("vertex,status,mixed_area,angle_defect,mean,gaussian,k1,k2,d1x,d1y,d1z,nx,ny,nz\n");
+        std::ofstream out(a.csv);
+        if (!out) throw InputError(a.csv + ": cannot write");
+        fmt::print(out, "vertex,status,mixed_area,angle_defect,mean,gaussian,k1,k2,d1x,d1y,d1z,nx,ny,nz\n");
         for (int i = 0; i < mesh.num_vertices(); ++i) {
             const Vec3 &d = c.direction1[i], &n = c.normal[i];
-            out.print("{},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", i,
+            fmt::print(out, "{},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", i,
                       to_string(c.status[i]), c.mixed_area[i], c.angle_defect[i], c.mean[i], c.gaussian[i], c.k1[i], c.k2[i],
                       d.x(), d.y(), d.z(), n.x(), n.y(), n.z());
         }

@@ -103,13 +103,7 @@ void NormalsArgs::add_to(CLI::App& app) {
 
 int run_normals(const NormalsArgs& a) {
     const TriMesh mesh = to_tri_mesh(verification::load_input(a.input, verification::UnknownTags::Ignore), "vertex normals");
-    std::vector<std::string> refs;
-    for (size_t start = 0; start < a.against.size();) {
-        const size_t comma = std::min(a.against.find(',', start), a.against.size());
-        if (comma > start) refs.push_back(a.against.substr(start, comma - start));
-        start = comma + 1;
-    }
-    const auto c = verification::compare_normals(mesh, *parse_normal_weighting(a.weighting), refs);
+    const auto c = verification::compare_normals(mesh, *parse_normal_weighting(a.weighting), split_commas(a.against));
     int zero = 0;
     for (const Vec3& n : c.ours) zero += n.norm() == 0;
     fmt::print("{}: {} vertices ({} on the boundary), {} weighting; {} without a normal\n", a.input, c.vertices,

@@ -42,16 +42,6 @@ SchemeRule rule_with_tags(Scheme scheme, const PolySchemeArgs& s, PolyMesh& mesh
     return rule;
 }
 
-std::vector<std::string> split_commas(const std::string& s) {
-    std::vector<std::string> out;
-    for (size_t b = 0, e; b < s.size(); b = e + 1) {
-        e = s.find(',', b);
-        if (e == std::string::npos) e = s.size();
-        if (e > b) out.push_back(s.substr(b, e - b));
-    }
-    return out;
-}
-
 }  // namespace
 
 void write_json(const std::string& path, const nlohmann::json& j) {

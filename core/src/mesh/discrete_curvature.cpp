@@ -117,8 +117,10 @@ DiscreteCurvature curvature_at_unit_scale(const TriMesh& mesh, const TriConnecti
 
     std::vector<TensorFit> fit(n);
     std::vector<Vec3> tangent(n, Vec3::Zero());
+    out.euler_characteristic = mesh.num_faces() - conn.num_edges();
     for (int v = 0; v < nv; ++v) {
         if (out.status[v] == CurvatureStatus::Isolated) continue;
+        ++out.euler_characteristic;
         const bool boundary = conn.is_boundary_vertex(v);
         out.angle_defect[v] = (boundary ? std::numbers::pi : 2.0 * std::numbers::pi) - angle_sum[v];
         if (boundary) {
@@ -195,7 +197,7 @@ DiscreteCurvature discrete_curvature(const TriMesh& mesh) {
     for (Vec3& p : unit.positions) p = Vec3(std::ldexp(p.x(), -exponent), std::ldexp(p.y(), -exponent), std::ldexp(p.z(), -exponent));
     DiscreteCurvature out = curvature_at_unit_scale(unit, conn);
     for (int v = 0; v < mesh.num_vertices(); ++v) {
-        const bool nonzero = out.gaussian[v] != 0.0 && out.mean[v] != 0.0;
+        const bool curved = out.mean[v] != 0.0, gauss_curved = out.gaussian[v] != 0.0;
         out.mixed_area[v] = std::ldexp(out.mixed_area[v], 2 * exponent);
         out.mean[v] = std::ldexp(out.mean[v], -exponent);
         out.k1[v] = std::ldexp(out.k1[v], -exponent);
@@ -203,7 +205,7 @@ DiscreteCurvature discrete_curvature(const TriMesh& mesh) {
         out.gaussian[v] = std::ldexp(out.gaussian[v], -2 * exponent);
         const bool in_range = std::isfinite(out.k1[v]) && std::isfinite(out.k2[v]) && std::isfinite(out.gaussian[v]) &&
                               std::isfinite(out.mixed_area[v]) && out.mixed_area[v] > 0.0 &&
-                              (!nonzero || (out.gaussian[v] != 0.0 && out.mean[v] != 0.0));
+                              (!curved || out.mean[v] != 0.0) && (!gauss_curved || out.gaussian[v] != 0.0);
         if (out.status[v] == CurvatureStatus::Estimated && !in_range)
             throw InputError(mesh.source.describe_vertex(v) + ": its curvature or area is out of the range of double "
                              "(mesh diagonal " + std::to_string(diagonal) + ")");

@@ -60,6 +60,8 @@ struct DiscreteCurvature {
     std::vector<Vec3> direction1;      ///< unit tangent direction of k1 (0 where undefined: an umbilic fit)
     std::vector<Vec3> direction2;      ///< unit tangent direction of k2, normal x direction1
     std::vector<Vec3> normal;          ///< the angle-weighted unit vertex normal
+    /// chi = V - E + F of the mesh, isolated vertices not counted (as the angle defects do not).
+    int euler_characteristic = 0;
 
     int num_estimated() const;
     /// The sum of every vertex's angle defect: 2 pi chi (the discrete Gauss-Bonnet theorem).

@@ -133,6 +133,8 @@ inline constexpr double kBezierCirclePlateauRelative = 0.1;
 /// vertex and then over vertices adds at most a few more ulps of 2 pi per corner. Linear in the
 /// corners, so it holds on the largest mesh without being loose on the smallest.
 inline constexpr double kGaussBonnetPerCorner = 8 * 2.220446049250313e-16 * 3.141592653589793;
+/// The bound for a mesh of `faces` triangles (three corners each).
+inline double gauss_bonnet_bound(int faces) { return kGaussBonnetPerCorner * 3.0 * faces; }
 
 /// Two consistent curvature estimators converge to the same surface, so their difference falls
 /// at least as fast as the slower one's error: CGAL's degree-2 jet has first-order curvature
