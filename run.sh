@@ -11,11 +11,12 @@ set -euo pipefail
 cd "$(dirname "$0")"
 
 # Debian packages the build, the references and the tests need (meshlab, xvfb and xauth: the
-# external MeshLab reference of the default suite, run as meshlabserver under Xvfb).
+# external MeshLab reference of the default suite, run as meshlabserver under Xvfb; python3-skimage:
+# scikit-image's marching cubes, the isosurface reference).
 PACKAGES="g++ make cmake libeigen3-dev libosd-dev libopenmesh-dev libcgal-dev libgtest-dev \
 libcli11-dev nlohmann-json3-dev libfmt-dev libnanoflann-dev libassimp-dev python3-matplotlib python3-numpy \
 meshlab xvfb xauth \
-python3-pytest"
+python3-pytest python3-skimage"
 
 install_missing() {
   local missing=""

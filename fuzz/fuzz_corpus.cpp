@@ -2,6 +2,8 @@
 // edge-case catalog and the polygon meshes as OBJ, OFF and PLY; the bundled curve and
 // surface files; the course files (../shared/data) when present; the suites. Generated at
 // fuzzing time, so the repository holds no copy of any of them.
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -52,6 +54,23 @@ int main(int argc, char** argv) {
     for (const std::string& f : datasets::course_mesh_files())
         if (const std::string ext = fs::path(f).extension().string(); ext == ".obj" || ext == ".off")
             if (fs::file_size(f) <= 200'000) copy_into(f, out / ext.substr(1));
+    // Volumes with inline samples, behind fuzz_volume's format byte: a sphere's distance field
+    // as MetaImage bytes and as NRRD floats.
+    {
+        std::string bytes, floats;
+        for (int k = 0; k < 6; ++k)
+            for (int j = 0; j < 6; ++j)
+                for (int i = 0; i < 6; ++i) {
+                    const float d = std::sqrt(float((i - 2.5) * (i - 2.5) + (j - 2.5) * (j - 2.5) + (k - 2.5) * (k - 2.5))) - 2;
+                    bytes += static_cast<char>(std::clamp(int(128 + 40 * d), 0, 255));
+                    floats += std::string(reinterpret_cast<const char*>(&d), 4);  // the fuzzers run on little-endian x86
+                }
+        write_text(out / "volume" / "sphere-mha", std::string(1, '\0') +
+                   "ObjectType = Image\nNDims = 3\nDimSize = 6 6 6\nElementSpacing = 0.5 0.5 0.5\nOffset = -1 -1 -1\n"
+                   "ElementType = MET_UCHAR\nElementDataFile = LOCAL\n" + bytes);
+        write_text(out / "volume" / "sphere-nrrd", std::string(1, '\1') +
+                   "NRRD0004\ntype: float\ndimension: 3\nsizes: 6 6 6\nspacings: 1 1 1\nencoding: raw\nendian: little\n\n" + floats);
+    }
     for (const auto& e : fs::directory_iterator(source / "verification" / "suites"))
         if (e.path().extension() == ".suite") copy_into(e.path().string(), out / "manifest");
     std::printf("seed corpora in %s\n", out.c_str());

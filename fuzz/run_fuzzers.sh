@@ -8,7 +8,7 @@
 # Findings are kept in BUILD_DIR/fuzz-findings/ (reproduce: BUILD_DIR/fuzz/fuzz_T FILE).
 set -euo pipefail
 build="$1"; seconds="$2"; shift 2
-targets="${*:-obj off ply swp bzc bez manifest}"
+targets="${*:-obj off ply swp bzc bez volume manifest}"
 parallel="${CROSSDIV_FUZZ_PARALLEL:-1}"
 source_dir="$(cd "$(dirname "$0")/.." && pwd)"
 corpus="$build/fuzz-corpus"; work="$build/fuzz-work"; findings="$build/fuzz-findings"

@@ -10,6 +10,7 @@
 
 #include "crossdiv/datasets/analytic_surfaces.h"
 #include "crossdiv/datasets/edge_cases.h"
+#include "crossdiv/datasets/implicit_surfaces.h"
 #include "crossdiv/error.h"
 #include "crossdiv/mesh/mesh_checks.h"
 #include "crossdiv/mesh/tri_connectivity.h"
@@ -179,3 +180,27 @@ TEST(AnalyticSurfaces, TorusVerticesLieOnTheTorus) {
 
 }  // namespace
 }  // namespace crossdiv::datasets
+
+// The implicit surfaces: hand values of each function, the genus-2 tube's holes open, the
+// Newton distance on the gyroid, and grids of cubic cells.
+TEST(ImplicitSurfaces, HandValuesAndDistances) {
+    using crossdiv::datasets::implicit_surface;
+    const auto& g2 = implicit_surface("genus2");
+    // At a lobe's centre (1/sqrt 2, 0, 0), L = -1/4: L^2 - 0.04 > 0, outside (a hole).
+    EXPECT_NEAR(g2.f(crossdiv::Vec3(std::sqrt(0.5), 0, 0)), 0.0625 - 0.04, 1e-15);
+    EXPECT_LT(g2.f(crossdiv::Vec3(0, 0, 0)), 0);  // the crossing of the figure eight is inside
+    const auto& gy = implicit_surface("gyroid");
+    EXPECT_EQ(gy.f(crossdiv::Vec3(0, 0, 0)), 0);
+    // Near the origin the gyroid is the plane x + y + z = 0: (0, 0, d) is d / sqrt 3 from it.
+    EXPECT_NEAR(crossdiv::datasets::distance_to(gy, crossdiv::Vec3(0, 0, 1e-4)), 1e-4 / std::sqrt(3.0), 1e-11);
+    const auto& torus = implicit_surface("torus");
+    EXPECT_DOUBLE_EQ(crossdiv::datasets::distance_to(torus, crossdiv::Vec3(1.5, 0, 0)), 0.1);
+    EXPECT_THROW(implicit_surface("klein"), crossdiv::InputError);
+    const crossdiv::ScalarGrid grid = crossdiv::datasets::sample(torus, 32);
+    EXPECT_EQ(grid.size, (std::array<int, 3>{32, 32, 12}));  // 3.1 x 3.1 x 1.1 in cells of 0.1
+    EXPECT_DOUBLE_EQ(grid.spacing.x(), grid.spacing.z());
+    EXPECT_THROW(crossdiv::datasets::sample(torus, 2), crossdiv::InputError);
+    const crossdiv::ScalarGrid field = crossdiv::datasets::ambiguous_field(5);
+    EXPECT_EQ(field.at(0, 2, 2), 1.0);  // the shell is outside
+    EXPECT_LT(std::abs(field.at(2, 2, 2)), 1.0);
+}

@@ -297,6 +297,59 @@ def curvature_mesh(rows, figdir):
     return save(fig, figdir, "curvature_mesh.png")
 
 
+def isosurface_convergence(rows, figdir):
+    """Marching cubes against the exact implicit surfaces as the cell size h halves: the largest
+    distance of a vertex to the surface, and the relative error of the enclosed volume (log-log:
+    a slope of 2 is second order)."""
+    fig, axes = plt.subplots(1, 2, figsize=(8.4, 3.4))
+    for surface in sorted({r["surface"] for r in rows}):
+        sel = sorted((r for r in rows if r["surface"] == surface), key=lambda r: r["h"])
+        axes[0].loglog([r["h"] for r in sel], [max(r["max_distance"], 1e-300) for r in sel], marker="o", label=surface)
+        vol = [r for r in sel if "volume_error" in r]
+        if vol:
+            axes[1].loglog([r["h"] for r in vol], [max(r["volume_error"], 1e-300) for r in vol], marker="o", label=surface)
+    axes[0].set_title("largest vertex distance to the surface", fontsize=8)
+    axes[1].set_title("relative error of the enclosed volume", fontsize=8)
+    for ax in axes:
+        ax.set_xlabel("cell size h")
+        ax.legend(fontsize=7)
+    return save(fig, figdir, "isosurface_convergence.png")
+
+
+def isosurface_meshes(rows, figdir):
+    """Each isosurface shaded by the angle of its faces to a light, the edges of one triangle (holes,
+    or the grid's boundary) in red."""
+    fig = plt.figure(figsize=(4.4 * len(rows), 4.0))
+    light = [0.4, -0.5, 0.77]
+    for i, row in enumerate(rows):
+        pts, faces = row["mesh"]["positions"], row["mesh"]["faces"]
+        shades, uses = [], defaultdict(int)
+        for f in faces:
+            a, b, c = (pts[v] for v in f[:3])
+            u = [b[k] - a[k] for k in range(3)]
+            w = [c[k] - a[k] for k in range(3)]
+            n = [u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]]
+            length = math.sqrt(sum(x * x for x in n)) or 1.0
+            shades.append(str(0.25 + 0.7 * abs(sum(n[k] * light[k] for k in range(3))) / length))
+            for j in range(len(f)):
+                uses[tuple(sorted((f[j], f[(j + 1) % len(f)])))] += 1
+        ax = fig.add_subplot(1, len(rows), i + 1, projection="3d")
+        ax.add_collection3d(Poly3DCollection([[pts[v] for v in f] for f in faces], facecolors=shades, edgecolors="none"))
+        for (a, b), n in uses.items():
+            if n == 1:
+                ax.plot(*zip(pts[a], pts[b]), color="red", linewidth=1.6, zorder=10)
+        lo = [min(p[c] for p in pts) for c in range(3)]
+        hi = [max(p[c] for p in pts) for c in range(3)]
+        half = max(h - l for l, h in zip(lo, hi)) / 2
+        for setter, l, h in zip((ax.set_xlim, ax.set_ylim, ax.set_zlim), lo, hi):
+            setter((l + h) / 2 - half, (l + h) / 2 + half)
+        ax.set_box_aspect((1, 1, 1), zoom=1.3)
+        ax.view_init(elev=35, azim=-60)
+        ax.set_axis_off()
+        ax.set_title(row["title"], fontsize=8)
+    return save(fig, figdir, "isosurface_meshes.png")
+
+
 def loop_curvature_growth(rows, figdir):
     """|Gaussian curvature| of Loop's limit surface at a vertex of valence n, measured on the limit
     points of its ring at each level (log scale), with the growth its eigenvalues predict (dashed)."""

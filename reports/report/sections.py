@@ -315,6 +315,50 @@ def studies_section(study_cases, figdir):
                     [(r["valence"], fmt(r["lambda"]), fmt(r["nu"]), fmt(r["predicted_ratio"]), fmt(r["ratio"][-1]),
                       fmt(r["gaussian"][0]), fmt(r["gaussian"][-1])) for r in rows]),
               Figure(figures.loop_curvature_growth(rows, figdir), "Loop curvature growth"))
+    if tables.get("isosurface_convergence"):
+        rows = tables["isosurface_convergence"]
+        s.add(Text("Marching cubes with the asymptotic decider (one shared vertex per crossed grid edge, each cube's "
+                   "polygons traced face by face) on implicit surfaces sampled at growing resolutions: the largest "
+                   "distance of a vertex to the exact surface (the signed distance itself for the sphere and torus, a "
+                   "Newton projection along the gradient otherwise), the Euler characteristic, edges of one triangle "
+                   "and mesh errors (non-manifold, orientation), the enclosed volume against the exact one. The gyroid "
+                   "is cut by its box: its boundary edges are the cut."),
+              Table(["surface", "samples", "h", "V", "F", "max distance", "chi (exact)", "boundary edges", "mesh errors",
+                     "volume error"],
+                    [(r["surface"], " x ".join(map(str, r["grid"])), fmt(r["h"]), r["vertices"], r["faces"],
+                      fmt(r["max_distance"]), f"{r['euler']} ({r['expected_euler']})" if "expected_euler" in r else r["euler"],
+                      r["boundary_edges"], r["mesh_errors"], fmt(r["volume_error"]) if "volume_error" in r else "")
+                     for r in rows]),
+              Figure(figures.isosurface_convergence(rows, figdir), "isosurface convergence"))
+    if tables.get("isosurface_ambiguity"):
+        rows = tables["isosurface_ambiguity"]
+
+        def facts(r):
+            return "failed: " + r["failed"] if "failed" in r else f"{r['boundary_edges']} / {r['mesh_errors']} / {r['euler']}"
+        s.add(Text("A field whose faces are ambiguous by construction (pseudo-random samples inside an outside shell). "
+                   "The asymptotic decider joins a face's inside corners when the bilinear saddle is inside: decided by "
+                   "the face alone, so the two cubes of a face agree and the surface is closed. The minority rule (how "
+                   "Lorensen and Cline's table with complementary cases folded together resolves a face) lets two cubes "
+                   "decide one face differently: holes. scikit-image's MC33 (Lewiner) and 1987 tables on the same "
+                   "samples. Each cell: boundary edges / mesh errors / Euler characteristic."),
+              Table(["samples", "ambiguous faces", "decider", "minority", "skimage MC33", "skimage 1987"],
+                    [(f"{r['samples']}^3", r["decider"]["ambiguous_faces"], facts(r["decider"]), facts(r["minority"]),
+                      facts(r["skimage_lewiner"]), facts(r["skimage_lorensen"])) for r in rows]))
+    if tables.get("isosurface_reference"):
+        rows = tables["isosurface_reference"]
+        s.add(Text("scikit-image's marching cubes (Lewiner's MC33 table, on the samples rounded to float32) against "
+                   "ours: vertices matched to float32 rounding, triangles compared through the match. The same crossings "
+                   "triangulated otherwise is `triangulation`; another Euler characteristic or boundary is `topology` "
+                   "(MC33 also tests the cube's interior, and adds a vertex inside some cubes)."),
+              Table(["samples", "status", "agreement", "max vertex distance", "tolerance", "triangles only ours / theirs",
+                     "chi ours / theirs"],
+                    [(r["subject"], r["status"], r.get("agreement", ""), fmt(r["max_vertex_distance"]) if "agreement" in r else "",
+                      fmt(r["tolerance"]) if "agreement" in r else "",
+                      f"{r['faces_only_ours']} / {r['faces_only_theirs']}" if "agreement" in r else "",
+                      f"{r['ours']['euler']} / {r['theirs']['euler']}" if "agreement" in r else r.get("explanation", ""))
+                     for r in rows]))
+    if tables.get("isosurface_figure"):
+        s.add(Figure(figures.isosurface_meshes(tables["isosurface_figure"], figdir), "isosurfaces"))
     if tables.get("butterfly_properties"):
         rows = []
         for scheme in sorted({r["scheme"] for r in tables["butterfly_properties"]}):

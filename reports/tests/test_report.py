@@ -260,3 +260,41 @@ def test_curvature_gets_its_tables_and_figures(tmp_path):
     assert conv_table and len(conv_table[0]) == 2 + 12
     for name in ("curvature_convergence.png", "curvature_mesh.png", "loop_curvature_growth.png"):
         assert (tmp_path / "figures" / name).stat().st_size > 1000
+
+
+def test_isosurface_gets_its_tables_and_figures(tmp_path):
+    results = results_fixture()
+    tetra = {"positions": [[1, 1, 1], [1, -1, -1], [-1, 1, -1], [-1, -1, 1]],
+             "faces": [[0, 1, 2], [0, 2, 3], [0, 3, 1], [1, 3, 2]]}
+    open_tetra = {"positions": tetra["positions"], "faces": tetra["faces"][:3]}
+    conv = [dict({"surface": s, "description": s, "resolution": 17 * 2 ** k, "h": 0.2 / 2 ** k, "grid": [17, 17, 9],
+                  "max_distance": 0.01 / 4 ** k, "rms_distance": 0.005 / 4 ** k, "ambiguous_faces": 0,
+                  "centred_polygons": 0, "vertices": 100, "faces": 196, "boundary_edges": 0, "boundary_loops": 0,
+                  "mesh_errors": 0, "euler": 2, "volume": 4.1},
+                 **({"expected_euler": 2, "exact_volume": 4.18, "volume_error": 0.02 / 4 ** k} if s == "sphere" else {}))
+            for s in ("sphere", "gyroid") for k in range(3)]
+    facts = {"boundary_edges": 0, "mesh_errors": 0, "euler": -28, "ambiguous_faces": 40}
+    amb = [{"samples": 9, "decider": facts, "minority": dict(facts, boundary_edges=176, euler=-32),
+            "skimage_lewiner": dict(facts, euler=-34), "skimage_lorensen": {"failed": "unavailable: no skimage"}}]
+    ref = [{"subject": "sphere res 33", "status": "ok", "agreement": "triangulation", "max_vertex_distance": 7.5e-8,
+            "tolerance": 5.5e-7, "faces_only_ours": 3051, "faces_only_theirs": 3051, "ours": {"euler": 2},
+            "theirs": {"euler": 2}},
+           {"subject": "torus res 33", "status": "unavailable", "explanation": "unavailable: no skimage"}]
+    figure = [{"title": "closed", "mesh": tetra}, {"title": "with a hole", "mesh": open_tetra}]
+    results["cases"].append({"input": "catalog", "operation": "isosurface", "job": 6, "id": "catalog | isosurface",
+                             "subjects": ["sphere", "gyroid"], "outcome": "agree", "runs": [],
+                             "tables": {"isosurface_convergence": conv, "isosurface_ambiguity": amb,
+                                        "isosurface_reference": ref, "isosurface_figure": figure}})
+    (tmp_path / "results.json").write_text(json.dumps(results))
+    make_report.main(str(tmp_path))
+    md = (tmp_path / "report.md").read_text()
+    conv_table = [t for t in tables_of(md) if t[0][:2] == [" surface ", " samples "]]
+    assert conv_table and len(conv_table[0]) == 2 + 6
+    assert conv_table[0][2][6].strip() == "2 (2)" and conv_table[0][5][6].strip() == "2", conv_table
+    amb_table = [t for t in tables_of(md) if t[0][:2] == [" samples ", " ambiguous faces "]]
+    assert amb_table and amb_table[0][2][3].strip() == "176 / 0 / -32"
+    assert amb_table[0][2][5].strip() == "failed: unavailable: no skimage"
+    ref_table = [t for t in tables_of(md) if t[0][:2] == [" samples ", " status "]]
+    assert ref_table and ref_table[0][3][6].strip() == "unavailable: no skimage", ref_table
+    for name in ("isosurface_convergence.png", "isosurface_meshes.png"):
+        assert (tmp_path / "figures" / name).stat().st_size > 1000

@@ -55,6 +55,14 @@ expect curvature-colour 0 'wrote .*curv.obj coloured by gaussian curvature' -- "
 expect curvature-colour-needs-obj 2 'is not an .obj file' -- "$crossdiv" curvature bundled:torus --color mean -o "$tmp/curv.off"
 expect curvature-non-manifold 2 'edge \(0, 1\) is shared by 3 triangles' -- "$crossdiv" curvature "$tmp/nonmanifold.obj"
 expect curvature-quads 2 'discrete curvature needs triangles' -- "$crossdiv" curvature bundled:quad-cube
+expect isosurface-genus2 0 'Euler characteristic -2, 0 boundary edges in 0 loops, 0 mesh errors' -- "$crossdiv" isosurface implicit:genus2 --res 65 -o "$tmp/genus2.off" --write-volume "$tmp/genus2.nrrd"
+expect isosurface-volume-file 0 'Euler characteristic -2, 0 boundary edges' -- "$crossdiv" isosurface "$tmp/genus2.nrrd" --level 0
+expect isosurface-volume-needs-level 2 '--level is needed for a volume file' -- "$crossdiv" isosurface "$tmp/genus2.nrrd"
+expect isosurface-minority-holes 0 '2008 boundary edges in 225 loops' -- "$crossdiv" isosurface implicit:ambiguous --res 17 --rule minority
+expect isosurface-skimage 0 'skimage \(.* s\): other-triangulation: the same crossings' -- "$crossdiv" isosurface implicit:sphere --res 17 --against skimage
+expect isosurface-unknown 2 "unknown implicit surface 'klein'" -- "$crossdiv" isosurface implicit:klein
+printf 'NDims = 3\nDimSize = 2 2 2\nElementType = MET_FLOAT\nElementDataFile = LOCAL\n' > "$tmp/short.mha"
+expect isosurface-short-volume 2 'short.mha: 8 samples of 4 bytes need 32 bytes' -- "$crossdiv" isosurface "$tmp/short.mha" --level 0
 expect too-many-levels 2 'would produce 335544320 faces, over the limit' -- "$crossdiv" subdivide bundled:icosahedron --levels 12 -o "$tmp/x.obj"
 expect compare-max-faces 2 'bundled:icosahedron: 3 levels would produce 1280 faces, over the limit of 1000 \(--max-faces\)' -- "$crossdiv" compare bundled:icosahedron --levels 3 --max-faces 1000
 expect cc-max-faces 2 'would produce 96 faces, over the limit of 95' -- "$crossdiv" subdivide bundled:quad-cube --scheme catmull-clark --levels 2 --max-faces 95 -o "$tmp/x.obj"

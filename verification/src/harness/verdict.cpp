@@ -33,6 +33,7 @@ constexpr std::array kClasses = {
     std::pair{DivergenceClass::IsolatedVertexHandling, "isolated-vertex-handling"},
     std::pair{DivergenceClass::ValenceLimit, "valence-limit"},
     std::pair{DivergenceClass::Topology, "topology"},
+    std::pair{DivergenceClass::Triangulation, "triangulation"},
     std::pair{DivergenceClass::AmbiguousCorrespondence, "ambiguous-correspondence"},
     std::pair{DivergenceClass::Unexplained, "unexplained"},
     std::pair{DivergenceClass::NonManifoldHandling, "non-manifold-handling"},

@@ -12,6 +12,7 @@
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/verification/harness/mesh_topology.h"
 #include "crossdiv/verification/harness/process.h"
+#include "crossdiv/verification/harness/temporary_folder.h"
 #include "crossdiv/verification/implementations/registry.h"
 
 namespace crossdiv::verification {
@@ -29,26 +30,6 @@ bool all_triangles(const PolyMesh& mesh) {
         if (mesh.face_size(f) != 3) return false;
     return true;
 }
-
-/// A temporary folder of its own, removed when the run ends (whatever the program left in it).
-class TemporaryFolder {
-public:
-    explicit TemporaryFolder(const std::string& label) {
-        std::string pattern = (fs::temp_directory_path() / ("crossdiv-" + label + "-XXXXXX")).string();
-        if (!mkdtemp(pattern.data())) throw InputError("cannot create a temporary folder in " + fs::temp_directory_path().string());
-        path_ = pattern;
-    }
-    ~TemporaryFolder() {
-        std::error_code ignored;
-        fs::remove_all(path_, ignored);
-    }
-    TemporaryFolder(const TemporaryFolder&) = delete;
-    TemporaryFolder& operator=(const TemporaryFolder&) = delete;
-    const fs::path& path() const { return path_; }
-
-private:
-    fs::path path_;
-};
 
 /// A label safe in a file name: the implementation's name with anything unusual replaced.
 std::string file_label(const std::string& name) {

@@ -14,6 +14,7 @@
 #include "crossdiv/verification/harness/json_text.h"
 #include "crossdiv/verification/suite/features_under_test.h"
 #include "crossdiv/verification/suite/curvature_study.h"
+#include "crossdiv/verification/suite/isosurface_study.h"
 #include "suite/studies.h"
 
 namespace crossdiv::verification {
@@ -136,6 +137,8 @@ const std::vector<SuiteOperation>& suite_operations() {
          one_collection<kCatalog>, run_study<vertex_age_study>},
         {"curvature", OperationKind::Study, "discrete curvature against the analytic sphere and torus and CGAL's jet fitting, Gauss-Bonnet, Loop's curvature at extraordinary vertices",
          one_collection<kCatalog>, run_study<curvature_study>},
+        {"isosurface", OperationKind::Study, "marching cubes against exact implicit surfaces (distance, Euler characteristic, watertight, volume), ambiguous faces, scikit-image's marching cubes",
+         one_collection<kCatalog>, run_study<isosurface_study>},
         {"spectrum", OperationKind::Study, "eigen table of the local subdivision matrices; the Loop rule oracle", one_collection<kFans>,
          run_study<spectrum_study>},
         {"convergence", OperationKind::Study, "convergence of extraordinary vertices to their limit",
