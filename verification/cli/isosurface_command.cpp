@@ -38,6 +38,10 @@ struct IsosurfaceArgs {
 };
 
 int run_isosurface(const IsosurfaceArgs& a) {
+    const std::vector<std::string> references = split_commas(a.against);
+    for (const std::string& ref : references)
+        if (ref != "skimage" && ref != "skimage-lorensen")
+            throw InputError("--against " + ref + ": the isosurface references are skimage and skimage-lorensen");
     const datasets::ImplicitSurface* surface = nullptr;
     ScalarGrid grid;
     if (a.input.starts_with("implicit:")) {
@@ -82,9 +86,7 @@ int run_isosurface(const IsosurfaceArgs& a) {
             fmt::print("  exact volume {:.15g}: relative error {:.3e}\n", *surface->volume,
                        std::abs(m.volume - *surface->volume) / *surface->volume);
     }
-    for (const std::string& ref : split_commas(a.against)) {
-        if (ref != "skimage" && ref != "skimage-lorensen")
-            throw InputError("--against " + ref + ": the isosurface references are skimage and skimage-lorensen");
+    for (const std::string& ref : references) {
         const std::string method = ref == "skimage" ? "lewiner" : "lorensen";
         const verification::SkimageRun run = verification::run_skimage_marching_cubes(grid, options, method);
         if (run.outcome.status != verification::RunStatus::Ok) {

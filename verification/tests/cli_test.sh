@@ -61,6 +61,7 @@ expect isosurface-volume-needs-level 2 '--level is needed for a volume file' -- 
 expect isosurface-minority-holes 0 '2008 boundary edges in 225 loops' -- "$crossdiv" isosurface implicit:ambiguous --res 17 --rule minority
 expect isosurface-skimage 0 'skimage \(.* s\): other-triangulation: the same crossings' -- "$crossdiv" isosurface implicit:sphere --res 17 --against skimage
 expect isosurface-unknown 2 "unknown implicit surface 'klein'" -- "$crossdiv" isosurface implicit:klein
+expect isosurface-unknown-reference 2 'the isosurface references are skimage and skimage-lorensen' -- "$crossdiv" isosurface implicit:sphere --against meshlab
 printf 'NDims = 3\nDimSize = 2 2 2\nElementType = MET_FLOAT\nElementDataFile = LOCAL\n' > "$tmp/short.mha"
 expect isosurface-short-volume 2 'short.mha: 8 samples of 4 bytes need 32 bytes' -- "$crossdiv" isosurface "$tmp/short.mha" --level 0
 expect too-many-levels 2 'would produce 335544320 faces, over the limit' -- "$crossdiv" subdivide bundled:icosahedron --levels 12 -o "$tmp/x.obj"
