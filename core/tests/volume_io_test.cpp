@@ -99,7 +99,13 @@ TEST(VolumeIo, RefusesWhatItCannotReadByName) {
     write(dir / "short.mha", head + "ElementType = MET_SHORT\nElementDataFile = LOCAL\n1234");
     EXPECT_NE(error_of((dir / "short.mha").string()).find("need 16 bytes"), std::string::npos) << error_of((dir / "short.mha").string());
     write(dir / "missing.mhd", head + "ElementType = MET_SHORT\nElementDataFile = nowhere.raw\n");
-    EXPECT_NE(error_of((dir / "missing.mhd").string()).find("nowhere.raw' cannot be opened"), std::string::npos);
+    EXPECT_NE(error_of((dir / "missing.mhd").string()).find("nowhere.raw' is not a readable file"), std::string::npos);
+    // A folder (or a device) as the data file: refused, not read until it fails or forever.
+    write(dir / "folder.mhd", head + "ElementType = MET_SHORT\nElementDataFile = .\n");
+    EXPECT_NE(error_of((dir / "folder.mhd").string()).find("is not a readable file"), std::string::npos);
+    write(dir / "zero.mhd", head + "ElementType = MET_SHORT\nElementDataFile = /dev/zero\n");
+    EXPECT_NE(error_of((dir / "zero.mhd").string()).find("/dev/zero' is not a readable file"), std::string::npos);
+    EXPECT_NE(error_of(dir.string() + "/").find("unknown volume format"), std::string::npos);
     const float nan = std::numeric_limits<float>::quiet_NaN(), zero = 0;
     std::string samples;
     for (int q = 0; q < 8; ++q) samples += std::string(reinterpret_cast<const char*>(q == 3 ? &nan : &zero), 4);

@@ -37,10 +37,20 @@ struct RawLayout {
     int64_t skip = 0;        ///< bytes before the samples; -1: the samples are the file's last bytes
 };
 
-std::string read_file(const std::string& path, const std::string& what) {
+/// A regular file (not a folder, device or pipe, which would fail to read or never end).
+std::ifstream open_regular(const std::string& path, const std::string& what) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) throw InputError(what + " '" + path + "' is not a readable file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(what + " '" + path + "' cannot be opened");
-    return std::string(std::istreambuf_iterator<char>(in), {});
+    return in;
+}
+
+std::string read_file(const std::string& path, const std::string& what) {
+    std::ifstream in = open_regular(path, what);
+    std::string text(std::istreambuf_iterator<char>(in), {});
+    if (in.bad()) throw InputError(what + " '" + path + "' could not be read");
+    return text;
 }
 
 std::string trim(std::string_view s) {
@@ -119,17 +129,34 @@ void read_samples(ScalarGrid& grid, const RawLayout& layout, const std::string& 
         ScalarGrid probe = grid;
         check_grid(probe, header_path);  // throws: too many samples
     }
-    const std::string bytes = layout.data_path.empty() ? bytes_if_inline : read_file(layout.data_path, "the data file of " + header_path);
     const int64_t n = grid.num_samples(), size = sample_bytes(layout.type);
     const int64_t need = n * size;
     const std::string& where = layout.data_path.empty() ? header_path : layout.data_path;
-    const int64_t start = layout.skip < 0 ? static_cast<int64_t>(bytes.size()) - need : layout.skip;
-    if (start < 0 || start + need > static_cast<int64_t>(bytes.size()))
+    // A data file is read only where the samples are: it may be far larger than they are.
+    std::string bytes;
+    int64_t available = static_cast<int64_t>(bytes_if_inline.size());
+    std::ifstream data;
+    if (!layout.data_path.empty()) {
+        data = open_regular(layout.data_path, "the data file of " + header_path);
+        std::error_code ec;
+        available = static_cast<int64_t>(std::filesystem::file_size(layout.data_path, ec));
+        if (ec) throw InputError("the data file '" + layout.data_path + "' has no size: " + ec.message());
+    }
+    const int64_t start = layout.skip < 0 ? available - need : layout.skip;
+    if (start < 0 || start > available || need > available - start)
         throw InputError(where + ": " + std::to_string(n) + " samples of " + std::to_string(size) + " bytes need " +
                          std::to_string(need) + " bytes after the first " + std::to_string(std::max<int64_t>(start, 0)) +
-                         ", the file has " + std::to_string(bytes.size()));
+                         ", the file has " + std::to_string(available));
+    if (layout.data_path.empty()) {
+        bytes = bytes_if_inline.substr(static_cast<size_t>(start), static_cast<size_t>(need));
+    } else {
+        bytes.resize(static_cast<size_t>(need));
+        data.seekg(start);
+        data.read(bytes.data(), need);
+        if (data.gcount() != need) throw InputError(where + ": could not read " + std::to_string(need) + " bytes at " + std::to_string(start));
+    }
     const bool swap = layout.big_endian != (std::endian::native == std::endian::big) && size > 1;
-    const auto* p = reinterpret_cast<const unsigned char*>(bytes.data()) + start;
+    const auto* p = reinterpret_cast<const unsigned char*>(bytes.data());
     grid.values.resize(n);
     for (int64_t q = 0; q < n; ++q, p += size) {
         switch (layout.type) {
