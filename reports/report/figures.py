@@ -98,6 +98,31 @@ def _draw_mesh(ax, pts, faces, **style):
     ax.add_collection3d(Poly3DCollection([[pts[v] for v in f] for f in faces], **style))
 
 
+def _equal_scales(ax, pts):
+    """Sets the three axes to one cube round the points (matplotlib scales each axis to its own
+    range otherwise); returns the cube's side."""
+    xs, ys, zs = zip(*pts)
+    span = max(max(xs) - min(xs), max(ys) - min(ys), max(zs) - min(zs)) or 1.0
+    for setter, values in ((ax.set_xlim, xs), (ax.set_ylim, ys), (ax.set_zlim, zs)):
+        middle = (max(values) + min(values)) / 2
+        setter(middle - span / 2, middle + span / 2)
+    return span
+
+
+def _light_shades(polygons, light):
+    """For each polygon (its first three corners), |cos| of the angle between its normal and the
+    unit vector `light`: 1 facing the light, 0 edge-on."""
+    shades = []
+    for poly in polygons:
+        a, b, c = poly[:3]
+        u = [b[k] - a[k] for k in range(3)]
+        v = [c[k] - a[k] for k in range(3)]
+        n = (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
+        length = math.sqrt(sum(x * x for x in n)) or 1.0
+        shades.append(abs(sum(n[k] * light[k] for k in range(3))) / length)
+    return shades
+
+
 def error_pictures(mesh_cases, folder, figdir):
     """Meshes coloured by per-vertex distance to the reference, one per divergence class,
     reference and boundary rule (the first few), so a reader sees where two surfaces part."""
@@ -123,11 +148,7 @@ def error_pictures(mesh_cases, folder, figdir):
             coll.set_array([0 if math.isnan(e) else e for e in face_err])
             coll.set_clim(0, top)
             ax.add_collection3d(coll)
-            xs, ys, zs = zip(*pts)
-            half = max(max(xs) - min(xs), max(ys) - min(ys), max(zs) - min(zs)) / 2 or 1
-            for setter, values in ((ax.set_xlim, xs), (ax.set_ylim, ys), (ax.set_zlim, zs)):
-                mid = (max(values) + min(values)) / 2
-                setter(mid - half, mid + half)
+            _equal_scales(ax, pts)
             ax.set_axis_off()
             fig.colorbar(coll, ax=ax, shrink=0.6, label="distance to reference")
             ax.set_title(f"{short_input(c['input'])} vs {r['reference']}, level {field['level']}\n"
@@ -285,11 +306,7 @@ def curvature_mesh(rows, figdir):
         ax = fig.add_subplot(1, len(rows), i + 1, projection="3d")
         ax.add_collection3d(Poly3DCollection([[pts[v] for v in f] for f in faces], facecolors=colors, edgecolors="0.3",
                                              linewidths=0.05))
-        lo = [min(p[c] for p in pts) for c in range(3)]
-        hi = [max(p[c] for p in pts) for c in range(3)]
-        half = max(h - l for l, h in zip(lo, hi)) / 2
-        for setter, l, h in zip((ax.set_xlim, ax.set_ylim, ax.set_zlim), lo, hi):
-            setter((l + h) / 2 - half, (l + h) / 2 + half)
+        _equal_scales(ax, pts)
         ax.set_box_aspect((1, 1, 1), zoom=1.3)
         ax.view_init(elev=35, azim=-60)
         ax.set_axis_off()
@@ -320,29 +337,20 @@ def isosurface_meshes(rows, figdir):
     """Each isosurface shaded by the angle of its faces to a light, the edges of one triangle (holes,
     or the grid's boundary) in red."""
     fig = plt.figure(figsize=(4.4 * len(rows), 4.0))
-    light = [0.4, -0.5, 0.77]
     for i, row in enumerate(rows):
         pts, faces = row["mesh"]["positions"], row["mesh"]["faces"]
-        shades, uses = [], defaultdict(int)
+        polygons = [[pts[v] for v in f] for f in faces]
+        shades = [str(0.25 + 0.7 * s) for s in _light_shades(polygons, (0.4, -0.5, 0.77))]
+        uses = defaultdict(int)
         for f in faces:
-            a, b, c = (pts[v] for v in f[:3])
-            u = [b[k] - a[k] for k in range(3)]
-            w = [c[k] - a[k] for k in range(3)]
-            n = [u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]]
-            length = math.sqrt(sum(x * x for x in n)) or 1.0
-            shades.append(str(0.25 + 0.7 * abs(sum(n[k] * light[k] for k in range(3))) / length))
             for j in range(len(f)):
                 uses[tuple(sorted((f[j], f[(j + 1) % len(f)])))] += 1
         ax = fig.add_subplot(1, len(rows), i + 1, projection="3d")
-        ax.add_collection3d(Poly3DCollection([[pts[v] for v in f] for f in faces], facecolors=shades, edgecolors="none"))
+        ax.add_collection3d(Poly3DCollection(polygons, facecolors=shades, edgecolors="none"))
         for (a, b), n in uses.items():
             if n == 1:
                 ax.plot(*zip(pts[a], pts[b]), color="red", linewidth=1.6, zorder=10)
-        lo = [min(p[c] for p in pts) for c in range(3)]
-        hi = [max(p[c] for p in pts) for c in range(3)]
-        half = max(h - l for l, h in zip(lo, hi)) / 2
-        for setter, l, h in zip((ax.set_xlim, ax.set_ylim, ax.set_zlim), lo, hi):
-            setter((l + h) / 2 - half, (l + h) / 2 + half)
+        _equal_scales(ax, pts)
         ax.set_box_aspect((1, 1, 1), zoom=1.3)
         ax.view_init(elev=35, azim=-60)
         ax.set_axis_off()
@@ -470,13 +478,8 @@ def orientation_frames(row, figdir, name):
     fig = plt.figure(figsize=(6, 4.4))
     ax = fig.add_subplot(projection="3d")
     pts = row["points"]
-    xs, ys, zs = zip(*pts)
-    ax.plot(xs, ys, zs, "k-", lw=1)
-    span = max(max(xs) - min(xs), max(ys) - min(ys), max(zs) - min(zs)) or 1.0
-    length = 0.08 * span
-    for setter, values in ((ax.set_xlim, xs), (ax.set_ylim, ys), (ax.set_zlim, zs)):  # equal scales
-        middle = (max(values) + min(values)) / 2
-        setter(middle - span / 2, middle + span / 2)
+    ax.plot(*zip(*pts), "k-", lw=1)
+    length = 0.08 * _equal_scales(ax, pts)
     every = max(1, len(pts) // 16)
     for p, f in list(zip(pts, row["frames"]))[::every]:
         for axis, colour in zip(f, ("tab:red", "tab:green", "tab:blue")):
@@ -492,21 +495,10 @@ def surface_mesh(mesh, title, figdir, name):
     ax = fig.add_subplot(projection="3d")
     p = mesh["positions"]
     tris = [[p[i] for i in t] for t in mesh["triangles"]]
-    light = (-0.4, -0.5, 0.77)
-    shades = []
-    for a, b, c in tris:
-        u = [b[k] - a[k] for k in range(3)]
-        v = [c[k] - a[k] for k in range(3)]
-        n = (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
-        length = math.sqrt(sum(x * x for x in n)) or 1.0
-        shades.append(0.35 + 0.6 * abs(sum(n[k] * light[k] for k in range(3))) / length)
+    shades = [0.35 + 0.6 * s for s in _light_shades(tris, (-0.4, -0.5, 0.77))]
     ax.add_collection3d(Poly3DCollection(tris, facecolors=[(0.3 * s, 0.55 * s, 0.85 * s) for s in shades],
                                          edgecolors=(0, 0, 0, 0.15), linewidths=0.2))
-    xs, ys, zs = zip(*p)
-    span = max(max(xs) - min(xs), max(ys) - min(ys), max(zs) - min(zs)) or 1.0
-    for setter, values in ((ax.set_xlim, xs), (ax.set_ylim, ys), (ax.set_zlim, zs)):
-        middle = (max(values) + min(values)) / 2
-        setter(middle - span / 2, middle + span / 2)
+    _equal_scales(ax, p)
     ax.set_title(title)
     return save(fig, figdir, name)
 

@@ -107,6 +107,13 @@ bool parse_bool(const std::string& value, const std::string& file, int line, con
     throw ParseError(file, line, key + ": '" + value + "' is not True or False");
 }
 
+/// NRRD's vectors "(a,b,c) (d,e,f)" as `count` numbers.
+std::vector<double> parse_vectors(std::string value, size_t count, const std::string& file, int line, const std::string& key) {
+    for (char& c : value)
+        if (c == '(' || c == ')' || c == ',') c = ' ';
+    return parse_reals(value, count, file, line, key);
+}
+
 /// The header's folder joined with a data file name it gives.
 std::string beside(const std::string& header, const std::string& name) {
     const std::filesystem::path p(name);
@@ -125,10 +132,7 @@ double load(const unsigned char* at, bool swap) {
 
 /// The samples of `grid` (size, origin and spacing set) from the bytes the layout names.
 void read_samples(ScalarGrid& grid, const RawLayout& layout, const std::string& header_path, const std::string& bytes_if_inline) {
-    if (double(grid.size[0]) * grid.size[1] * grid.size[2] > double(kMaxGridSamples)) {
-        ScalarGrid probe = grid;
-        check_grid(probe, header_path);  // throws: too many samples
-    }
+    check_sample_count(grid.size, header_path);
     const int64_t n = grid.num_samples(), size = sample_bytes(layout.type);
     const int64_t need = n * size;
     const std::string& where = layout.data_path.empty() ? header_path : layout.data_path;
@@ -296,20 +300,14 @@ ScalarGrid read_nrrd(const std::string& path) {
             grid.spacing = Vec3(v[0], v[1], v[2]), have_spacing = true;
         } else if (key == "space directions") {
             // Three vectors "(a,b,c)": only an axis-aligned, positive diagonal is a grid.
-            std::string flat = value;
-            for (char& c : flat)
-                if (c == '(' || c == ')' || c == ',') c = ' ';
-            const std::vector<double> m = parse_reals(flat, 9, path, line, key);
+            const std::vector<double> m = parse_vectors(value, 9, path, line, key);
             for (int r = 0; r < 3; ++r)
                 for (int c = 0; c < 3; ++c)
                     if (r != c && m[3 * r + c] != 0)
                         throw ParseError(path, line, "space directions are not axis-aligned: rotated volumes are not read");
             grid.spacing = Vec3(m[0], m[4], m[8]), have_spacing = true;
         } else if (key == "space origin") {
-            std::string flat = value;
-            for (char& c : flat)
-                if (c == '(' || c == ')' || c == ',') c = ' ';
-            const std::vector<double> v = parse_reals(flat, 3, path, line, key);
+            const std::vector<double> v = parse_vectors(value, 3, path, line, key);
             grid.origin = Vec3(v[0], v[1], v[2]);
         } else if (key == "encoding") {
             encoding = value;

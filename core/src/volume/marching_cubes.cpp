@@ -66,15 +66,14 @@ Isosurface marching_cubes(const ScalarGrid& grid, const IsosurfaceOptions& optio
     const int nx = grid.size[0], ny = grid.size[1], nz = grid.size[2];
     const int64_t n = grid.num_samples(), slice = int64_t{nx} * ny;
     const double sign = options.inside == InsideIs::Below ? 1.0 : -1.0;
-    // s < 0 is inside; a sample at the level (s == 0) is outside.
-    std::vector<double> s(n);
-    for (int64_t q = 0; q < n; ++q) {
-        s[q] = sign * (grid.values[q] - options.level);
-        if (!std::isfinite(s[q]))
+    // s(q) < 0 is inside; a sample at the level (s == 0) is outside. Computed where used rather
+    // than stored: a copy of the samples would double the memory of the largest grids.
+    const auto s = [&](int64_t q) { return sign * (grid.values[q] - options.level); };
+    for (int64_t q = 0; q < n; ++q)
+        if (!std::isfinite(s(q)))
             throw InputError("sample (" + std::to_string(q % nx) + ", " + std::to_string(q / nx % ny) + ", " +
                              std::to_string(q / slice) + "): its value minus the level " + std::to_string(options.level) +
                              " overflows");
-    }
 
     Isosurface out;
     // Vertex ids of the crossed edges near the slab of cubes being traversed: x and y edges of
@@ -86,8 +85,9 @@ Isosurface marching_cubes(const ScalarGrid& grid, const IsosurfaceOptions& optio
     const auto make_vertex = [&](int axis, int i, int j, int k) -> int {
         const int64_t a = grid.index(i, j, k);
         const int64_t b = a + (axis == 0 ? 1 : axis == 1 ? nx : slice);
-        if ((s[a] < 0) == (s[b] < 0)) return -1;
-        const double t = s[a] / (s[a] - s[b]);
+        const double sa = s(a), sb = s(b);
+        if ((sa < 0) == (sb < 0)) return -1;
+        const double t = sa / (sa - sb);
         Vec3 p = grid.position(i, j, k);
         p[axis] = grid.origin[axis] + grid.spacing[axis] * ((axis == 0 ? i : axis == 1 ? j : k) + t);
         if (!p.allFinite())
@@ -114,7 +114,7 @@ Isosurface marching_cubes(const ScalarGrid& grid, const IsosurfaceOptions& optio
                 double cs[8];
                 int inside = 0, count = 0;
                 for (int c = 0; c < 8; ++c) {
-                    cs[c] = s[grid.index(i + kCornerOffset[c][0], j + kCornerOffset[c][1], k + kCornerOffset[c][2])];
+                    cs[c] = s(grid.index(i + kCornerOffset[c][0], j + kCornerOffset[c][1], k + kCornerOffset[c][2]));
                     if (cs[c] < 0) inside |= 1 << c, ++count;
                 }
                 if (inside == 0 || inside == 0xff) continue;

@@ -14,15 +14,19 @@ std::string sample_name(const ScalarGrid& g, int64_t s) {
 }
 }  // namespace
 
+void check_sample_count(const std::array<int, 3>& size, const std::string& what) {
+    if (double(size[0]) * size[1] * size[2] > double(kMaxGridSamples))
+        throw InputError(what + ": " + std::to_string(size[0]) + " x " + std::to_string(size[1]) + " x " +
+                         std::to_string(size[2]) + " samples are more than the " + std::to_string(kMaxGridSamples) +
+                         " a grid may have");
+}
+
 void check_grid(const ScalarGrid& g, const std::string& what) {
     for (int a = 0; a < 3; ++a)
         if (g.size[a] < 2)
             throw InputError(what + ": a grid needs at least 2 samples along each axis (axis " + std::to_string(a) + " has " +
                              std::to_string(g.size[a]) + ")");
-    if (double(g.size[0]) * g.size[1] * g.size[2] > double(kMaxGridSamples))
-        throw InputError(what + ": " + std::to_string(g.size[0]) + " x " + std::to_string(g.size[1]) + " x " +
-                         std::to_string(g.size[2]) + " samples are more than the " + std::to_string(kMaxGridSamples) +
-                         " a grid may have");
+    check_sample_count(g.size, what);
     if (!g.origin.allFinite()) throw InputError(what + ": the grid origin is not finite");
     for (int a = 0; a < 3; ++a)
         if (!(std::isfinite(g.spacing[a]) && g.spacing[a] > 0))
@@ -45,7 +49,7 @@ ScalarGrid sample_grid(const std::function<double(const Vec3&)>& f, const Vec3& 
         if (n[a] < 2) throw InputError("sampling a function needs at least 2 samples along each axis");
         g.spacing[a] = (hi[a] - lo[a]) / (n[a] - 1);
     }
-    if (double(n[0]) * n[1] * n[2] > double(kMaxGridSamples)) check_grid(g, "sampled grid");  // throws: too many
+    check_sample_count(n, "sampled grid");
     g.values.resize(g.num_samples());
     for (int k = 0; k < n[2]; ++k)
         for (int j = 0; j < n[1]; ++j)

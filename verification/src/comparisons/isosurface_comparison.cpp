@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <tuple>
 
 #include "crossdiv/io/mesh_io.h"
@@ -16,6 +17,7 @@
 #include "crossdiv/verification/harness/mesh_topology.h"
 #include "crossdiv/verification/harness/process.h"
 #include "crossdiv/verification/harness/temporary_folder.h"
+#include "crossdiv/verification/harness/tolerances.h"
 #include "crossdiv/verification/implementations/program_implementation.h"
 #include "harness/point_cloud.h"
 
@@ -85,12 +87,9 @@ SkimageRun run_skimage_marching_cubes(const ScalarGrid& grid, const IsosurfaceOp
 }
 
 double float32_vertex_tolerance(const ScalarGrid& grid) {
-    // float32's unit roundoff 2^-24 on the index coordinate (up to the largest index), on the
-    // crossing fraction (three roundings) and on the product with the spacing; 8x for the
-    // roundings combining.
-    constexpr double kFloat32Roundoff = 5.9604644775390625e-08;
+    const double unit_roundoff = std::numeric_limits<float>::epsilon() / 2;
     const int largest = *std::max_element(grid.size.begin(), grid.size.end());
-    return 8 * kFloat32Roundoff * (largest + 4) * grid.spacing.maxCoeff();
+    return tolerances::kIsosurfaceFloatRoundings * unit_roundoff * (largest + 4) * grid.spacing.maxCoeff();
 }
 
 namespace {

@@ -33,6 +33,10 @@ struct ScalarGrid {
 /// is refused before anything is allocated.
 inline constexpr int64_t kMaxGridSamples = int64_t{1} << 28;
 
+/// Refuses (InputError naming `what`) a grid of more than kMaxGridSamples samples, before
+/// anything is allocated for it.
+void check_sample_count(const std::array<int, 3>& size, const std::string& what);
+
 /// Checks what every grid must be: each size >= 2, at most kMaxGridSamples samples, finite
 /// origin, spacing finite and > 0, one finite value per sample.
 /// @param what names the grid in messages (a file name).
