@@ -129,5 +129,57 @@ TEST(CatmullClarkLimit, IsTheLimitOfRefinement) {
     EXPECT_LT((fine.positions[7] - limit).norm(), 1e-3);
 }
 
+TEST(LimitMatrix, HandRowsAndTheSamePositionsAsTheMasks) {
+    // Loop, octahedron: every vertex of valence 4, centre 1 - 4 chi(4), ring chi(4) (above).
+    TriMesh oct;
+    oct.positions = {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0, 0, 1), Vec3(0, 0, -1)};
+    oct.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+    const LoopOptions loop{LoopWeights::Loop, LoopBoundary::EdgeOnly};
+    const Eigen::MatrixXd l(loop_limit_matrix(oct, loop));
+    const double chi = 1.0 / (4 + 3.0 / (8 * 31.0 / 256));
+    EXPECT_DOUBLE_EQ(l(4, 4), 1 - 4 * chi);
+    for (int v : {0, 1, 2, 3}) EXPECT_DOUBLE_EQ(l(4, v), chi);
+    EXPECT_EQ(l(4, 5), 0.0);
+    // Catmull-Clark, cube corner 7 (n = 3): 9/24 on itself, 4/24 on each ring vertex, 1/24 on
+    // each diagonal, 0 on the opposite corner 0.
+    const Eigen::MatrixXd c(catmull_clark_limit_matrix(quad_cube(), {CatmullClarkBoundary::EdgeOnly}));
+    EXPECT_DOUBLE_EQ(c(7, 7), 9.0 / 24);
+    for (int v : {3, 5, 6}) EXPECT_DOUBLE_EQ(c(7, v), 4.0 / 24);
+    for (int v : {1, 2, 4}) EXPECT_DOUBLE_EQ(c(7, v), 1.0 / 24);
+    EXPECT_EQ(c(7, 0), 0.0);
+    // Boundary and corner rows: a single triangle, 2/3 and 1/6 each, or the identity.
+    TriMesh t;
+    t.positions = {Vec3(0, 0, 0), Vec3(6, 0, 0), Vec3(0, 6, 0)};
+    t.triangles = {{0, 1, 2}};
+    const Eigen::MatrixXd b(loop_limit_matrix(t, loop));
+    EXPECT_DOUBLE_EQ(b(0, 0), 2.0 / 3);
+    EXPECT_DOUBLE_EQ(b(0, 1), 1.0 / 6);
+    EXPECT_DOUBLE_EQ(b(0, 2), 1.0 / 6);
+    EXPECT_EQ(Eigen::MatrixXd(loop_limit_matrix(t, {LoopWeights::Loop, LoopBoundary::EdgeAndCorner})),
+              Eigen::MatrixXd::Identity(3, 3));
+
+    // On irregular meshes with boundaries the matrix gives the masks' positions to rounding.
+    for (int n : {3, 5, 7, 11}) {
+        const TriMesh f = loop_subdivide(fan(n), loop, 1);
+        const LimitResult lim = loop_limit(f, loop);
+        const Eigen::SparseMatrix<double, Eigen::RowMajor> m = loop_limit_matrix(f, loop);
+        for (int v = 0; v < f.num_vertices(); ++v) {
+            Vec3 p = Vec3::Zero();
+            for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(m, v); it; ++it)
+                p += it.value() * f.positions[static_cast<size_t>(it.col())];
+            EXPECT_NEAR((p - lim.position[v]).norm(), 0.0, 1e-14) << "n=" << n << " v=" << v;
+        }
+    }
+    const PolyMesh cc = catmull_clark_subdivide(quad_cube(), {CatmullClarkBoundary::EdgeOnly}, 1);
+    const LimitResult cl = catmull_clark_limit(cc, {CatmullClarkBoundary::EdgeOnly});
+    const Eigen::MatrixXd cm(catmull_clark_limit_matrix(cc, {CatmullClarkBoundary::EdgeOnly}));
+    for (int v = 0; v < cc.num_vertices(); ++v) {
+        Vec3 p = Vec3::Zero();
+        for (int u = 0; u < cc.num_vertices(); ++u) p += cm(v, u) * cc.positions[static_cast<size_t>(u)];
+        EXPECT_NEAR((p - cl.position[v]).norm(), 0.0, 1e-15) << v;
+    }
+    EXPECT_THROW(loop_limit_matrix(oct, {LoopWeights::Regularity, LoopBoundary::EdgeOnly}), InputError);
+}
+
 }  // namespace
 }  // namespace crossdiv

@@ -10,6 +10,7 @@
 #include "curvature_command.h"
 #include "curve_commands.h"
 #include "edit_commands.h"
+#include "fit_command.h"
 #include "isosurface_command.h"
 #include "mesh_commands.h"
 #include "scheme_commands.h"
@@ -29,6 +30,7 @@ int main(int argc, char** argv) {
     cli::add_edit_commands(app, status);     // edit, normals
     cli::add_curvature_command(app, status);  // curvature
     cli::add_isosurface_command(app, status);  // isosurface
+    cli::add_fit_command(app, status);         // fit
     cli::add_scheme_commands(app, status);   // limit, spectrum
     try {
         app.parse(argc, argv);  // runs the selected command

@@ -60,6 +60,11 @@ expect isosurface-volume-file 0 'Euler characteristic -2, 0 boundary edges' -- "
 expect isosurface-volume-needs-level 2 '--level is needed for a volume file' -- "$crossdiv" isosurface "$tmp/genus2.nrrd"
 expect isosurface-minority-holes 0 '2008 boundary edges in 225 loops' -- "$crossdiv" isosurface implicit:ambiguous --res 17 --rule minority
 expect isosurface-skimage 0 'skimage \(.* s\): other-triangulation: the same crossings' -- "$crossdiv" isosurface implicit:sphere --res 17 --against skimage
+expect fit-torus 0 'hausdorff\(cgal\)' -- "$crossdiv" fit bundled:torus --edges 200 --against cgal --surface "$tmp/fit_surface.obj" -o "$tmp/fit_control.obj"
+expect fit-own-limit-surface 0 '^ +0 +0\.000000e\+00 +0\.0000e\+00' -- "$crossdiv" fit "$tmp/fit_surface.obj" --control "$tmp/fit_control.obj" --iterations 2
+expect fit-needs-control 2 'give the control mesh \(--control MESH\) or how coarse' -- "$crossdiv" fit bundled:torus
+expect fit-topology-type 2 'the control mesh \(Euler characteristic 2, 0 boundary loops\) and the target \(0, 0\) are not of the same topology type' -- "$crossdiv" fit bundled:torus --control bundled:icosahedron
+expect fit-nan 2 'nan.obj:3: y coordinate is nan' -- "$crossdiv" fit "$tmp/nan.obj" --edges 10
 expect isosurface-unknown 2 "unknown implicit surface 'klein'" -- "$crossdiv" isosurface implicit:klein
 expect isosurface-unknown-reference 2 'the isosurface references are skimage and skimage-lorensen' -- "$crossdiv" isosurface implicit:sphere --against meshlab
 printf 'NDims = 3\nDimSize = 2 2 2\nElementType = MET_FLOAT\nElementDataFile = LOCAL\n' > "$tmp/short.mha"

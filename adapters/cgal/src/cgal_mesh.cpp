@@ -1,11 +1,14 @@
 // The second of the two translation units that include CGAL: everything on a Surface_mesh
 // apart from Loop subdivision: closed-mesh checks (orientation, volume), vertex normals,
-// jet-fitted curvatures, and
-// the Euler operations the half-edge differential tests compare with.
+// jet-fitted curvatures, the Hausdorff distance, edge-collapse simplification, and the Euler
+// operations the half-edge differential tests compare with.
 #include <CGAL/Monge_via_jet_fitting.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Count_stop_predicate.h>
+#include <CGAL/Surface_mesh_simplification/edge_collapse.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -41,7 +44,40 @@ Mesh build(const TriMesh& mesh) {
     return m;
 }
 
+/// The mesh's vertices and faces in Surface_mesh order (which is its index order when it has
+/// no removed elements).
+TriMesh to_tri_mesh(const Mesh& m) {
+    TriMesh out;
+    out.positions.reserve(m.number_of_vertices());
+    for (Mesh::Vertex_index v : m.vertices()) out.positions.emplace_back(m.point(v).x(), m.point(v).y(), m.point(v).z());
+    out.triangles.reserve(m.number_of_faces());
+    for (Mesh::Face_index f : m.faces()) {
+        Triangle t{};
+        int k = 0;
+        for (Mesh::Vertex_index v : m.vertices_around_face(m.halfedge(f))) t[k++ % 3] = static_cast<int>(v.idx());
+        out.triangles.push_back(t);
+    }
+    return out;
+}
+
 }  // namespace
+
+double hausdorff_distance(const TriMesh& a, const TriMesh& b, int face_samples, unsigned seed) {
+    if (a.triangles.empty() || b.triangles.empty()) throw Rejected("the Hausdorff distance needs two meshes with triangles");
+    const Mesh ma = build(a), mb = build(b);
+    namespace PMP = CGAL::Polygon_mesh_processing;
+    const auto sampling = CGAL::parameters::random_seed(seed).number_of_points_on_faces(static_cast<std::size_t>(face_samples));
+    return PMP::approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(ma, mb, sampling, sampling);
+}
+
+TriMesh simplify(const TriMesh& mesh, int edges) {
+    Mesh m = build(mesh);
+    namespace SMS = CGAL::Surface_mesh_simplification;
+    // Lindstrom-Turk cost and placement, the package's default policies.
+    SMS::edge_collapse(m, SMS::Count_stop_predicate<Mesh>(static_cast<std::size_t>(std::max(edges, 0))));
+    m.collect_garbage();
+    return to_tri_mesh(m);
+}
 
 std::vector<Vec3> vertex_normals(const TriMesh& mesh) {
     Mesh m = build(mesh);
@@ -161,25 +197,9 @@ std::vector<std::string> EditableMesh::check() const {
     return out;
 }
 
-std::vector<Triangle> EditableMesh::faces() const {
-    const Mesh& m = impl_->mesh;
-    std::vector<Triangle> out;
-    out.reserve(m.number_of_faces());
-    for (Mesh::Face_index f : m.faces()) {
-        Triangle t{};
-        int k = 0;
-        for (Mesh::Vertex_index v : m.vertices_around_face(m.halfedge(f))) t[k++ % 3] = static_cast<int>(v.idx());
-        out.push_back(t);
-    }
-    return out;
-}
+// Flips and splits remove nothing, so Surface_mesh order is index order.
+std::vector<Triangle> EditableMesh::faces() const { return to_tri_mesh(impl_->mesh).triangles; }
 
-std::vector<Vec3> EditableMesh::positions() const {
-    const Mesh& m = impl_->mesh;
-    std::vector<Vec3> out;
-    out.reserve(m.number_of_vertices());
-    for (Mesh::Vertex_index v : m.vertices()) out.emplace_back(m.point(v).x(), m.point(v).y(), m.point(v).z());
-    return out;
-}
+std::vector<Vec3> EditableMesh::positions() const { return to_tri_mesh(impl_->mesh).positions; }
 
 }  // namespace crossdiv::adapters::cgal

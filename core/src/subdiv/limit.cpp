@@ -35,7 +35,80 @@ bool boundary_or_isolated_limit(const PolyConnectivity& conn, const std::vector<
     return true;
 }
 
+using Triplets = std::vector<Eigen::Triplet<double>>;
+
+/// The mask form of boundary_or_isolated_limit: the terms of vertex v's row, or false for an
+/// interior vertex.
+bool boundary_or_isolated_mask(const PolyConnectivity& conn, int v, bool corner_rule, Triplets& out) {
+    if (conn.vertex_corner[v] < 0) {
+        out.emplace_back(v, v, 1.0);
+        return true;
+    }
+    if (!conn.is_boundary_vertex(v)) return false;
+    const PolyConnectivity::Fan fan = conn.fan(v);
+    if (corner_rule && fan.faces == 1) {
+        out.emplace_back(v, v, 1.0);
+        return true;
+    }
+    const PolyConnectivity::BoundaryNeighbors nb = conn.boundary_neighbors(v, fan);
+    out.emplace_back(v, v, 2.0 / 3.0);
+    out.emplace_back(v, nb.before, 1.0 / 6.0);
+    out.emplace_back(v, nb.after, 1.0 / 6.0);
+    return true;
+}
+
+Eigen::SparseMatrix<double, Eigen::RowMajor> to_matrix(int n, const Triplets& terms) {
+    Eigen::SparseMatrix<double, Eigen::RowMajor> m(n, n);
+    m.setFromTriplets(terms.begin(), terms.end());
+    return m;
+}
+
 }  // namespace
+
+Eigen::SparseMatrix<double, Eigen::RowMajor> loop_limit_matrix(const TriMesh& mesh, const LoopOptions& options) {
+    if (has_tuned_edges(options.weights))
+        throw InputError("limit masks are derived for the weight families with Loop's edge mask (loop, warren); " +
+                         std::string(to_string(options.weights)) + " tunes the edge mask too");
+    const PolyConnectivity conn = build_poly_connectivity(to_poly_mesh(mesh));
+    Triplets terms;
+    for (int v = 0; v < mesh.num_vertices(); ++v) {
+        if (boundary_or_isolated_mask(conn, v, options.boundary == LoopBoundary::EdgeAndCorner, terms)) continue;
+        const int n = conn.fan(v).faces;
+        const double chi = loop_limit_ring_weight(options.weights, n);
+        terms.emplace_back(v, v, 1.0 - n * chi);
+        const int start = conn.vertex_corner[v];
+        for (int c = start;;) {
+            terms.emplace_back(v, conn.head(c), chi);
+            c = conn.next_around_vertex(c);
+            if (c == start) break;
+        }
+    }
+    return to_matrix(mesh.num_vertices(), terms);
+}
+
+Eigen::SparseMatrix<double, Eigen::RowMajor> catmull_clark_limit_matrix(const PolyMesh& mesh, const CatmullClarkOptions& options) {
+    if (options.boundary == CatmullClarkBoundary::MidpointAverage)
+        throw InputError("the midpoint-average boundary rule (OpenMesh's) has no cubic B-spline boundary limit mask");
+    const PolyConnectivity conn = build_poly_connectivity(mesh);
+    Triplets terms;
+    for (int v = 0; v < mesh.num_vertices(); ++v) {
+        if (boundary_or_isolated_mask(conn, v, options.boundary == CatmullClarkBoundary::EdgeAndCorner, terms)) continue;
+        const int n = conn.fan(v).faces;
+        const double scale = 1.0 / (double(n) * (n + 5));
+        terms.emplace_back(v, v, double(n) * n * scale);
+        const int start = conn.vertex_corner[v];
+        for (int c = start;;) {
+            if (mesh.face_size(conn.corner_face[c]) != 4)
+                throw InputError(mesh.source.describe_vertex(v) + ": a face around it is not a quad; the Catmull-Clark "
+                                 "limit mask needs quads (refine one level first)");
+            terms.emplace_back(v, conn.head(c), 4 * scale);
+            terms.emplace_back(v, conn.head(conn.next[c]), scale);
+            c = conn.next_around_vertex(c);
+            if (c == start) break;
+        }
+    }
+    return to_matrix(mesh.num_vertices(), terms);
+}
 
 LimitResult loop_limit(const TriMesh& mesh, const LoopOptions& options) {
     // The ring weight chi comes from the eigenvectors of the local subdivision matrix whose

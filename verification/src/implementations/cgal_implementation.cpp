@@ -10,6 +10,11 @@ namespace {
 
 namespace cg = adapters::cgal;
 
+/// Face samples of each mesh for the Hausdorff distance: the distance of the farthest sample
+/// is a lower bound that misses at most the gap between samples; 20000 points on a mesh of a
+/// few thousand triangles put several on each.
+constexpr int kHausdorffFaceSamples = 20000;
+
 class Cgal final : public Implementation {
 public:
     Cgal()
@@ -21,7 +26,9 @@ public:
                           .edits = true,
                           .vertex_normals = true,
                           .closed_mesh_report = true,
-                          .curvatures = true}) {}
+                          .curvatures = true,
+                          .hausdorff_distance = true,
+                          .simplification = true}) {}
 
     adapters::LevelTrace refine(const PolyMesh& mesh, const RefineRequest& r) const override {
         check_refinable(r.scheme);
@@ -53,6 +60,14 @@ public:
     }
 
     adapters::ClosedMeshReport closed_mesh_report(const TriMesh& mesh) const override { return cg::closed_mesh_report(mesh); }
+
+    /// PMP::approximate_symmetric_Hausdorff_distance with each mesh's vertices, edge samples and
+    /// kHausdorffFaceSamples random points on its faces from a fixed seed (reproducible).
+    double hausdorff_distance(const TriMesh& a, const TriMesh& b) const override {
+        return cg::hausdorff_distance(a, b, kHausdorffFaceSamples, 1);
+    }
+
+    TriMesh simplify(const TriMesh& mesh, int edges) const override { return cg::simplify(mesh, edges); }
 
     /// A degree-2 jet over the 2-ring (at least 7 points around an interior vertex for the 6
     /// coefficients), the fit CGAL's own example makes; oriented by our angle-weighted normals.

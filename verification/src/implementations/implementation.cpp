@@ -111,6 +111,8 @@ adapters::SplineSamples Implementation::evaluate_spline(SplineKind, std::span<co
 
 adapters::ClosedMeshReport Implementation::closed_mesh_report(const TriMesh&) const { lacks("closed-mesh report"); }
 PrincipalCurvatures Implementation::curvatures(const TriMesh&) const { lacks("curvature estimator"); }
+double Implementation::hausdorff_distance(const TriMesh&, const TriMesh&) const { lacks("Hausdorff distance"); }
+TriMesh Implementation::simplify(const TriMesh&, int) const { lacks("mesh simplification"); }
 
 IsolatedTrace refine_isolated(const Implementation& impl, const PolyMesh& mesh, const RefineRequest& request,
                               double timeout_seconds, bool isolate) {

@@ -14,6 +14,7 @@
 #include "crossdiv/verification/harness/json_text.h"
 #include "crossdiv/verification/suite/features_under_test.h"
 #include "crossdiv/verification/suite/curvature_study.h"
+#include "crossdiv/verification/suite/fitting_study.h"
 #include "crossdiv/verification/suite/isosurface_study.h"
 #include "suite/studies.h"
 
@@ -139,6 +140,8 @@ const std::vector<SuiteOperation>& suite_operations() {
          one_collection<kCatalog>, run_study<curvature_study>},
         {"isosurface", OperationKind::Study, "marching cubes against exact implicit surfaces (distance, Euler characteristic, watertight, volume), ambiguous faces, scikit-image's marching cubes",
          one_collection<kCatalog>, run_study<isosurface_study>},
+        {"fitting", OperationKind::Study, "subdivision surface fitting: exact recovery on the catalog; Loop and Catmull-Clark fitted to the CGAL meshes and the bunny, CGAL's Hausdorff distance per iteration",
+         one_collection<kCatalog>, run_study<static_cast<CheckReport (*)()>(fitting_study)>},
         {"spectrum", OperationKind::Study, "eigen table of the local subdivision matrices; the Loop rule oracle", one_collection<kFans>,
          run_study<spectrum_study>},
         {"convergence", OperationKind::Study, "convergence of extraordinary vertices to their limit",

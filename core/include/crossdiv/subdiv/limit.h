@@ -19,6 +19,7 @@
 /// boundary neighbour; a corner of EdgeAndCorner stays. The limit normal of a boundary vertex
 /// is not computed here (NaN): its cross-boundary tangent mask is a further formula.
 
+#include <Eigen/SparseCore>
 #include <vector>
 
 #include "crossdiv/mesh/poly_mesh.h"
@@ -44,6 +45,14 @@ LimitResult loop_limit(const TriMesh& mesh, const LoopOptions& options);
 ///         vertex has a non-quad face around it (refine once first: every face is then a quad).
 ///         The midpoint-average rule has no cubic B-spline boundary: refused too.
 LimitResult catmull_clark_limit(const PolyMesh& mesh, const CatmullClarkOptions& options);
+
+/// The same limit masks as a matrix L (row v: the mask of vertex v, columns: the vertices), so
+/// that L V is the limit position of every vertex; what makes the limit surface a linear
+/// function of the control points, for fitting it (limit_fitting.h). Agrees with the limit
+/// positions above to rounding (they sum each mask in another order). @throws as loop_limit.
+Eigen::SparseMatrix<double, Eigen::RowMajor> loop_limit_matrix(const TriMesh& mesh, const LoopOptions& options);
+/// @throws as catmull_clark_limit.
+Eigen::SparseMatrix<double, Eigen::RowMajor> catmull_clark_limit_matrix(const PolyMesh& mesh, const CatmullClarkOptions& options);
 
 /// Loop's limit weight chi(n) on each ring vertex (the centre gets 1 - n chi).
 inline double loop_limit_ring_weight(LoopWeights weights, int n) { return 1.0 / (n + 3.0 / (8.0 * loop_beta(weights, n))); }

@@ -1,9 +1,10 @@
 #pragma once
 /// @file
 /// CGAL 5.5 adapter: Subdivision_method_3 (Loop, Catmull-Clark, Doo-Sabin, sqrt3) on
-/// Surface_mesh<Simple_cartesian<double>::Point_3>; closed-mesh checks, vertex normals, jet-fitted curvatures and the
-/// Euler operations flip_edge, split_edge and split_face. CGAL is included by two translation
-/// units (subdivision; everything else).
+/// Surface_mesh<Simple_cartesian<double>::Point_3>; closed-mesh checks, vertex normals,
+/// jet-fitted curvatures, the Hausdorff distance, edge-collapse simplification and the Euler
+/// operations flip_edge, split_edge and split_face. CGAL is included by two translation units
+/// (subdivision; everything else).
 
 #include <memory>
 #include <string>
@@ -75,6 +76,19 @@ struct MongeCurvatures {
 /// @param orientation one normal per vertex that says which side is out (ours, angle weighted)
 /// @throws Rejected naming the face Surface_mesh refuses, or for degree outside 1..4 or rings < 1.
 MongeCurvatures monge_curvatures(const TriMesh& mesh, const std::vector<Vec3>& orientation, int rings, int degree);
+
+/// PMP::approximate_symmetric_Hausdorff_distance: the larger of the two one-sided distances,
+/// each the farthest of a sampling of one mesh (its vertices, points on its edges, and
+/// `face_samples` points uniformly at random on its faces, from `seed`) from the other mesh
+/// (exact point-to-mesh distances by an AABB tree). A lower bound of the true distance.
+/// @throws Rejected for a mesh without triangles or one Surface_mesh refuses, naming the face.
+double hausdorff_distance(const TriMesh& a, const TriMesh& b, int face_samples, unsigned seed);
+
+/// Surface_mesh_simplification::edge_collapse with its default Lindstrom-Turk cost and
+/// placement until fewer than `edges` edges remain (or no collapse keeps the mesh a valid
+/// manifold of the same topology); the result renumbered densely.
+/// @throws Rejected naming the face Surface_mesh refuses.
+TriMesh simplify(const TriMesh& mesh, int edges);
 
 /// A triangle mesh held and edited by CGAL itself: Euler::flip_edge, and Euler::split_edge
 /// followed by Euler::split_face on each side with a face. Edges are named by endpoints;

@@ -41,6 +41,29 @@ inline constexpr double kFloatAgreementUlps = 64;
 /// otherwise round by u |level| / |s0 - s1| cells more.
 inline constexpr double kIsosurfaceFloatRoundings = 8;
 
+/// Control points recovered from samples of their own limit surface (limit_fitting.h) equal
+/// the true ones to this, relative to the control mesh's bounding-box diagonal. The normal
+/// equations square the condition number of the limit stencils A (measured 2 to 40 on the
+/// catalog), and one step of iterative refinement takes the error back to a few roundings of
+/// the coordinates; 1e-10 is the bound the method is asked to meet, measured 1e-15 and below.
+inline constexpr double kFittingRecovery = 1e-10;
+
+/// Fitting's distance energy never increases from one iteration to the next (each step
+/// minimizes it over the correspondences or over the control points): the next is at most
+/// the last times 1 + kFittingEnergyRounding, plus N (kFittingDistanceUlps eps D)^2 for N
+/// squared distances on a mesh of diagonal D. The relative part: two sums of squares in
+/// different orders, a few ulps apart. The absolute part: a surface that fits exactly still
+/// has distances of a few ulps of the coordinates (solving and evaluating round), which may
+/// come out larger on the next step than on this one; 64 ulps bounds the stencil sums.
+inline constexpr double kFittingEnergyRounding = 1e-12;
+inline constexpr double kFittingDistanceUlps = 64;
+
+/// A point's distance to a triangle mesh computed by two exact methods (ours: Ericson's
+/// Voronoi regions, closest_point.h; CGAL's AABB tree and squared_distance) agrees to this,
+/// relative to the mesh's diagonal: both round the coordinates' differences and a square root,
+/// a few ulps of the diagonal.
+inline constexpr double kPointMeshDistanceAgreement = 1e-12;
+
 
 /// Two evaluations of the same polynomial curve (de Casteljau, the Bernstein sum, Eigen's
 /// Cox-de Boor, the seed's matrix form) agree when they differ by at most

@@ -61,6 +61,8 @@ struct Capabilities {
     bool spline_evaluation = false;   ///< B-spline and Bezier evaluation with derivatives
     bool closed_mesh_report = false;  ///< validity, closedness, orientation and volume of a mesh
     bool curvatures = false;          ///< per-vertex principal curvatures of a triangle mesh
+    bool hausdorff_distance = false;  ///< two-sided Hausdorff distance between triangle meshes
+    bool simplification = false;      ///< edge-collapse simplification to an edge budget
     Precision precision = Precision::Double;
 };
 
@@ -159,6 +161,12 @@ public:
     /// Principal curvatures of every vertex. @throws InputError or adapters::Rejected for a
     /// mesh the estimator cannot take (non-manifold), naming the element.
     virtual PrincipalCurvatures curvatures(const TriMesh& mesh) const;
+    /// The two-sided (symmetric) Hausdorff distance between two triangle meshes.
+    /// @throws adapters::Rejected for a mesh it cannot take, naming the element.
+    virtual double hausdorff_distance(const TriMesh& a, const TriMesh& b) const;
+    /// The mesh with edges collapsed until fewer than `edges` remain, topology kept.
+    /// @throws adapters::Rejected for a mesh it cannot take, naming the element.
+    virtual TriMesh simplify(const TriMesh& mesh, int edges) const;
 
 protected:
     /// adapters::Rejected("<name> has no <what>").
