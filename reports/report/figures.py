@@ -336,6 +336,12 @@ def isosurface_convergence(rows, figdir):
 def isosurface_meshes(rows, figdir):
     """Each isosurface shaded by the angle of its faces to a light, the edges of one triangle (holes,
     or the grid's boundary) in red."""
+    return shaded_meshes(rows, figdir, "isosurface_meshes.png")
+
+
+def shaded_meshes(rows, figdir, name, vertical_axis="z"):
+    """Meshes side by side, each shaded by the angle of its faces to a light, with the edges of one
+    face (holes, borders) in red; a row with "wire" also draws every edge."""
     fig = plt.figure(figsize=(4.4 * len(rows), 4.0))
     for i, row in enumerate(rows):
         pts, faces = row["mesh"]["positions"], row["mesh"]["faces"]
@@ -346,16 +352,41 @@ def isosurface_meshes(rows, figdir):
             for j in range(len(f)):
                 uses[tuple(sorted((f[j], f[(j + 1) % len(f)])))] += 1
         ax = fig.add_subplot(1, len(rows), i + 1, projection="3d")
-        ax.add_collection3d(Poly3DCollection(polygons, facecolors=shades, edgecolors="none"))
+        ax.add_collection3d(Poly3DCollection(polygons, facecolors=shades,
+                                             edgecolors="0.15" if row.get("wire") else "none", linewidths=0.3))
         for (a, b), n in uses.items():
             if n == 1:
                 ax.plot(*zip(pts[a], pts[b]), color="red", linewidth=1.6, zorder=10)
         _equal_scales(ax, pts)
         ax.set_box_aspect((1, 1, 1), zoom=1.3)
-        ax.view_init(elev=35, azim=-60)
+        ax.view_init(elev=35 if vertical_axis == "z" else 20, azim=-60 if vertical_axis == "z" else 30,
+                     vertical_axis=vertical_axis)
         ax.set_axis_off()
         ax.set_title(row["title"], fontsize=8)
-    return save(fig, figdir, "isosurface_meshes.png")
+    return save(fig, figdir, name)
+
+
+def fitting_convergence(rows, figdir):
+    """Fitting a limit surface by closest-point iterations: the two-sided Hausdorff distance
+    (relative to the target's diagonal) at each iteration, one line per target, solid for the
+    larger control mesh and dashed for the smaller; one panel per scheme."""
+    schemes = sorted({r["scheme"] for r in rows if "steps" in r})
+    fig, axes = plt.subplots(1, len(schemes), figsize=(4.6 * len(schemes), 3.8), squeeze=False)
+    colours = {t: plt.cm.tab10(i % 10) for i, t in enumerate(dict.fromkeys(r["target"] for r in rows))}
+    for ax, scheme in zip(axes[0], schemes):
+        sel = [r for r in rows if r.get("scheme") == scheme and "steps" in r and "hausdorff" in r["steps"][0]]
+        largest = {}
+        for r in sel:
+            largest[r["target"]] = max(largest.get(r["target"], 0), r["control_vertices"])
+        for r in sel:
+            big = r["control_vertices"] == largest[r["target"]]
+            ax.semilogy(range(len(r["steps"])), [s["hausdorff"] for s in r["steps"]], color=colours[r["target"]],
+                        linestyle="-" if big else "--", marker="o", markersize=2.5,
+                        label=r["target"] if big else None)
+        ax.set_title(f"{scheme}: Hausdorff distance / diagonal", fontsize=8)
+        ax.set_xlabel("iteration")
+        ax.legend(fontsize=6)
+    return save(fig, figdir, "fitting_convergence.png")
 
 
 def loop_curvature_growth(rows, figdir):

@@ -358,6 +358,44 @@ def studies_section(study_cases, figdir):
                      "chi ours / theirs"], [compared(r) for r in tables["isosurface_reference"]]))
     if tables.get("isosurface_figure"):
         s.add(Figure(figures.isosurface_meshes(tables["isosurface_figure"], figdir), "isosurfaces"))
+    if tables.get("fitting_recovery"):
+        rows = tables["fitting_recovery"]
+        solved = [r for r in rows if "error" in r]
+        singular = [r for r in rows if "singular" in r]
+        s.add(Text("Subdivision surface fitting. The limit surface sampled at the vertices of level 2 is A X, A the "
+                   "levels' subdivision matrices composed with the limit masks; samples of a known control mesh's own "
+                   "limit surface give it back by least squares. Recovered on "
+                   f"{len(solved)} mesh x scheme pairs of the catalog; largest error "
+                   f"{fmt(max((r['error'] for r in solved), default=0))} of the diagonal. Singular: "
+                   + (", ".join(f"{r['mesh']} ({r['scheme']}, predicted: {'yes' if r['predicted_singular'] else 'no'})"
+                                for r in singular) or "none")
+                   + ". Catmull-Clark's stencils are linearly dependent on a closed mesh of valence-3 vertices whose "
+                   "graph is bipartite: signs alternating over the vertices vanish after one level."))
+    if tables.get("fitting_iterations"):
+        rows = [r for r in tables["fitting_iterations"] if "steps" in r]
+
+        def h(r, k):
+            return fmt(r["steps"][k]["hausdorff"]) if "hausdorff" in r["steps"][k] else ""
+        s.add(Text("Fitting by closest-point iterations (Hoppe et al. 1994): the control mesh is CGAL's edge collapse of "
+                   "the target; each iteration finds each sample's closest point on the target and each target vertex's "
+                   "closest point on the sampled surface, then solves the least-squares control points. The distance "
+                   "energy never increases; the two-sided Hausdorff distance (CGAL's approximate_Hausdorff_distance, "
+                   "relative to the target's diagonal) is the largest distance, which least squares does not minimize: "
+                   "it may rise at an iteration."),
+              Table(["target", "scheme", "control V", "samples", "Hausdorff start", "Hausdorff end", "rises",
+                     "rms target->surface start", "end"],
+                    [(r["target"], r["scheme"], r["control_vertices"], r["samples"], h(r, 0), h(r, -1),
+                      r.get("hausdorff_rises", ""), fmt(r["steps"][0]["rms_target_to_surface"]),
+                      fmt(r["steps"][-1]["rms_target_to_surface"])) for r in rows]))
+        failed = [r for r in tables["fitting_iterations"] if "steps" not in r]
+        if failed:
+            s.add(Table(["target", "edge budget", "why not fitted"], [(r["target"], r.get("edge_budget", ""), r["error"])
+                                                                      for r in failed]))
+        if rows:
+            s.add(Figure(figures.fitting_convergence(rows, figdir), "fitting convergence"))
+    if tables.get("fitting_figure"):
+        s.add(Figure(figures.shaded_meshes(tables["fitting_figure"], figdir, "fitting_meshes.png", vertical_axis="y"),
+                     "fitting the bunny"))
     if tables.get("butterfly_properties"):
         rows = []
         for scheme in sorted({r["scheme"] for r in tables["butterfly_properties"]}):

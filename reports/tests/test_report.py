@@ -298,3 +298,38 @@ def test_isosurface_gets_its_tables_and_figures(tmp_path):
     assert ref_table and ref_table[0][3][6].strip() == "unavailable: no skimage", ref_table
     for name in ("isosurface_convergence.png", "isosurface_meshes.png"):
         assert (tmp_path / "figures" / name).stat().st_size > 1000
+
+
+def test_fitting_gets_its_tables_and_figures(tmp_path):
+    results = results_fixture()
+    tetra = {"positions": [[1, 1, 1], [1, -1, -1], [-1, 1, -1], [-1, -1, 1]],
+             "faces": [[0, 1, 2], [0, 2, 3], [0, 3, 1], [1, 3, 2]]}
+    recovery = [{"mesh": "tetrahedron", "scheme": "loop", "vertices": 4, "samples": 34, "error": 6.4e-17,
+                 "predicted_singular": False},
+                {"mesh": "quad-cube", "scheme": "catmull-clark", "vertices": 8, "samples": 98,
+                 "singular": "fitting: the least-squares system is singular", "predicted_singular": True}]
+
+    def steps(h0):
+        return [{"energy": 1.0 / (k + 1), "rms_sample_to_target": 0.01, "max_sample_to_target": 0.02,
+                 "rms_target_to_surface": 0.01 / (k + 1), "max_target_to_surface": 0.03, "hausdorff": h0 / (k + 1)}
+                for k in range(4)]
+    iterations = [{"target": "bunny", "scheme": s, "edge_budget": b, "target_vertices": 2503, "control_vertices": v,
+                   "control_faces": 2 * v, "samples": 16 * v, "steps": steps(0.05 if b == 300 else 0.02),
+                   "hausdorff_rises": 0} for s in ("loop", "catmull-clark") for b, v in ((300, 102), (1200, 407))]
+    iterations.append({"target": "oblong", "edge_budget": 1200, "error": "cgal's simplification changed the topology"})
+    figure = [{"title": "target", "mesh": tetra}, {"title": "control", "mesh": tetra, "wire": True}]
+    results["cases"].append({"input": "catalog", "operation": "fitting", "job": 7, "id": "catalog | fitting",
+                             "subjects": ["catalog", "bunny"], "outcome": "agree", "runs": [],
+                             "tables": {"fitting_recovery": recovery, "fitting_iterations": iterations,
+                                        "fitting_figure": figure}})
+    (tmp_path / "results.json").write_text(json.dumps(results))
+    make_report.main(str(tmp_path))
+    md = (tmp_path / "report.md").read_text()
+    assert "Recovered on 1 mesh x scheme pairs" in md and "quad-cube (catmull-clark, predicted: yes)" in md
+    table = [t for t in tables_of(md) if t[0][:2] == [" target ", " scheme "]]
+    assert table and len(table[0]) == 2 + 4
+    assert table[0][2][4].strip() == "0.05" and table[0][2][5].strip() == "0.0125", table
+    failed = [t for t in tables_of(md) if t[0][:2] == [" target ", " edge budget "]]
+    assert failed and failed[0][2][2].strip() == "cgal's simplification changed the topology"
+    for name in ("fitting_convergence.png", "fitting_meshes.png"):
+        assert (tmp_path / "figures" / name).stat().st_size > 1000

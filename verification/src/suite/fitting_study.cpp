@@ -150,7 +150,7 @@ json fit_row(CheckReport& out, const FittingTarget& t, const TriMesh& control, i
         const LimitSampling start = fitting_sampling(scheme, control, 2);
         figures.push_back({{"title", fmt::format("target: {} triangles", t.mesh.num_faces())}, {"mesh", mesh_json(to_poly_mesh(t.mesh))}});
         figures.push_back({{"title", fmt::format("control by edge collapse: {} vertices", control.num_vertices())},
-                           {"mesh", mesh_json(to_poly_mesh(control))}});
+                           {"mesh", mesh_json(to_poly_mesh(control))}, {"wire", true}});
         figures.push_back({{"title", "its limit surface (start)"}, {"mesh", mesh_json(to_poly_mesh(start.surface(control.positions)))}});
         figures.push_back({{"title", fmt::format("after {} iterations", iterations)}, {"mesh", mesh_json(to_poly_mesh(run.fitted_surface))}});
     }
