@@ -1,59 +1,29 @@
 #include "crossdiv/subdiv/limit_fitting.h"
 
-#include <Eigen/SparseCholesky>
 #include <cmath>
 #include <string>
 
 #include "crossdiv/error.h"
 #include "crossdiv/mesh/closest_point.h"
 #include "crossdiv/subdiv/catmull_clark.h"
+#include "crossdiv/subdiv/least_squares.h"
 #include "crossdiv/subdiv/limit.h"
 #include "crossdiv/subdiv/loop.h"
+#include "normal_equations.h"
 
 namespace crossdiv {
 namespace {
 
+using detail::Points;
+using detail::check_finite;
+using detail::to_matrix;
+using detail::to_points;
+using detail::solve_normal_equations;
+
 using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
-using Points = Eigen::Matrix<double, Eigen::Dynamic, 3>;
 
 void check_levels(int levels) {
     if (levels < 0) throw InputError("fitting: the level count must be >= 0, not " + std::to_string(levels));
-}
-
-void check_finite(const std::vector<Vec3>& points, const std::string& what) {
-    for (size_t i = 0; i < points.size(); ++i)
-        if (!points[i].allFinite()) throw InputError(what + " " + std::to_string(i) + " is not finite");
-}
-
-Points to_matrix(const std::vector<Vec3>& points) {
-    Points m(static_cast<Eigen::Index>(points.size()), 3);
-    for (size_t i = 0; i < points.size(); ++i) m.row(static_cast<Eigen::Index>(i)) = points[i].transpose();
-    return m;
-}
-
-std::vector<Vec3> to_points(const Points& m) {
-    std::vector<Vec3> out(static_cast<size_t>(m.rows()));
-    for (Eigen::Index i = 0; i < m.rows(); ++i) out[static_cast<size_t>(i)] = m.row(i).transpose();
-    return out;
-}
-
-/// Solves the normal equations M X = rhs (M = Q^T Q for the system's matrix Q) by sparse
-/// Cholesky, then one step of iterative refinement against `residual`, which returns
-/// rhs - M X evaluated without forming M's rounding twice.
-template <class Residual>
-Points solve_normal_equations(const Eigen::SparseMatrix<double>& normal, const Points& rhs, Residual residual) {
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(normal);
-    if (ldlt.info() != Eigen::Success)
-        throw InputError("fitting: the least-squares system is singular (the samples do not determine every control point)");
-    const Eigen::VectorXd d = ldlt.vectorD();
-    // LDL^T of a positive semi-definite matrix succeeds with a zero (or, by rounding, a tiny
-    // negative) pivot; the matrix is then numerically singular and the solution meaningless.
-    const double largest = d.cwiseAbs().maxCoeff();
-    if (!(d.minCoeff() > largest * 1e-13))
-        throw InputError("fitting: the least-squares system is singular (the samples do not determine every control point)");
-    Points x = ldlt.solve(rhs);
-    x += ldlt.solve(residual(x));
-    return x;
 }
 
 /// S_L ... S_1 of `levels` levels from `level`, which is left at the last level.
@@ -112,15 +82,7 @@ LimitSampling catmull_clark_limit_sampling(const PolyMesh& control, const Catmul
 }
 
 std::vector<Vec3> fit_limit_points(const LimitSampling& sampling, const std::vector<Vec3>& points) {
-    if (static_cast<int>(points.size()) != sampling.num_samples())
-        throw InputError("fitting: " + std::to_string(points.size()) + " points for " +
-                         std::to_string(sampling.num_samples()) + " limit samples");
-    check_finite(points, "fitting: point");
-    const RowMatrix& a = sampling.stencils;
-    const Eigen::SparseMatrix<double> at = a.transpose();
-    const Points p = to_matrix(points);
-    const Eigen::SparseMatrix<double> normal = at * a;
-    return to_points(solve_normal_equations(normal, at * p, [&](const Points& x) -> Points { return at * (p - a * x); }));
+    return least_squares(sampling.stencils, points, "fitting");
 }
 
 FittingResult fit_limit_surface(const LimitSampling& sampling, const std::vector<Vec3>& start, const TriMesh& target,
@@ -186,7 +148,7 @@ FittingResult fit_limit_surface(const LimitSampling& sampling, const std::vector
         const Points rhs = at * closest_on_target + bt * t;
         x = solve_normal_equations(normal, rhs, [&](const Points& y) -> Points {
             return Points(at * (closest_on_target - a * y)) + Points(bt * (t - b * y));
-        });
+        }, "fitting");
     }
     return result;
 }
