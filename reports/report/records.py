@@ -7,7 +7,7 @@ import math
 import os
 
 # The study operations of the suite (verification/src/suite/operations.cpp).
-STUDIES = ("catmull-clark", "schemes", "creases", "limit-positions", "vertex-age", "curvature", "isosurface", "fitting", "spectrum", "convergence")
+STUDIES = ("catmull-clark", "schemes", "creases", "limit-positions", "vertex-age", "curvature", "isosurface", "fitting", "multiresolution", "spectrum", "convergence")
 
 # Outcome categories of the summary matrix, in legend order, with their colours.
 CATEGORIES = [

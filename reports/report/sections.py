@@ -396,6 +396,24 @@ def studies_section(study_cases, figdir):
     if tables.get("fitting_figure"):
         s.add(Figure(figures.shaded_meshes(tables["fitting_figure"], figdir, "fitting_meshes.png", vertical_axis="y"),
                      "fitting the bunny"))
+    if tables.get("multiresolution"):
+        rows = tables["multiresolution"]
+        done = [r for r in rows if "round_trip" in r]
+        s.add(Text("Multiresolution editing (Zorin, Schroeder and Sweldens 1997), Loop, 3 levels: each bundled mesh "
+                   "subdivided and moved along its normals by a detail, decomposed level by level (least-squares coarser "
+                   "level, details in frames of the smooth prediction) and recomposed; the same after a rigid motion; base "
+                   "vertex 0 moved by a fifth of the diagonal. The reach is the subdivision support grown by one ring per "
+                   "level (the frames of the support's neighbours turn); with zero details exactly the support moves."),
+              Table(["mesh", "finest V", "round trip", "rigid motion", "moved", "reach", "support", "outside reach",
+                     "zero details: moved", "vs support"],
+                    [(r["mesh"], r["finest_vertices"], fmt(r["round_trip"]), fmt(r["rigid_motion"]), r["moved"], r["reach"],
+                      r["support"], r["outside_reach"], r["smooth_moved"], r["smooth_mismatch"]) for r in done]))
+        failed = [r for r in rows if "error" in r]
+        if failed:
+            s.add(Table(["mesh", "not decomposed"], [(r["mesh"], r["error"]) for r in failed]))
+    if tables.get("multiresolution_figure"):
+        s.add(Figure(figures.shaded_meshes(tables["multiresolution_figure"], figdir, "multiresolution.png"),
+                     "multiresolution edit"))
     if tables.get("butterfly_properties"):
         rows = []
         for scheme in sorted({r["scheme"] for r in tables["butterfly_properties"]}):

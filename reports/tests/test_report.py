@@ -333,3 +333,25 @@ def test_fitting_gets_its_tables_and_figures(tmp_path):
     assert failed and failed[0][2][2].strip() == "cgal's simplification changed the topology"
     for name in ("fitting_convergence.png", "fitting_meshes.png"):
         assert (tmp_path / "figures" / name).stat().st_size > 1000
+
+
+def test_multiresolution_gets_its_table_and_figure(tmp_path):
+    results = results_fixture()
+    tetra = {"positions": [[1, 1, 1], [1, -1, -1], [-1, 1, -1], [-1, -1, 1]],
+             "faces": [[0, 1, 2], [0, 2, 3], [0, 3, 1], [1, 3, 2]]}
+    rows = [{"mesh": "torus", "levels": 3, "base_vertices": 96, "finest_vertices": 6144, "round_trip": 1.8e-18,
+             "rigid_motion": 7.3e-16, "detail_rms": [5.7e-4, 3e-5, 1.9e-6], "moved": 1379, "reach": 1387, "support": 631,
+             "outside_reach": 0, "smooth_moved": 631, "smooth_mismatch": 0},
+            {"mesh": "pole-64", "levels": 3, "base_vertices": 65, "error": "multiresolution: vertex 3 has no normal"}]
+    figure = [{"title": "before", "mesh": tetra}, {"title": "after", "mesh": tetra}]
+    results["cases"].append({"input": "catalog", "operation": "multiresolution", "job": 8, "id": "catalog | multiresolution",
+                             "subjects": ["torus", "pole-64"], "outcome": "agree", "runs": [],
+                             "tables": {"multiresolution": rows, "multiresolution_figure": figure}})
+    (tmp_path / "results.json").write_text(json.dumps(results))
+    make_report.main(str(tmp_path))
+    md = (tmp_path / "report.md").read_text()
+    table = [t for t in tables_of(md) if t[0][:2] == [" mesh ", " finest V "]]
+    assert table and len(table[0]) == 3 and table[0][2][4].strip() == "1379" and table[0][2][6].strip() == "631", table
+    failed = [t for t in tables_of(md) if t[0][:2] == [" mesh ", " not decomposed "]]
+    assert failed and failed[0][2][1].strip() == "multiresolution: vertex 3 has no normal"
+    assert (tmp_path / "figures" / "multiresolution.png").stat().st_size > 1000

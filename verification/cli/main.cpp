@@ -13,6 +13,7 @@
 #include "fit_command.h"
 #include "isosurface_command.h"
 #include "mesh_commands.h"
+#include "multires_command.h"
 #include "scheme_commands.h"
 #include "suite_commands.h"
 #include "surface_commands.h"
@@ -31,6 +32,7 @@ int main(int argc, char** argv) {
     cli::add_curvature_command(app, status);  // curvature
     cli::add_isosurface_command(app, status);  // isosurface
     cli::add_fit_command(app, status);         // fit
+    cli::add_multires_command(app, status);    // multires
     cli::add_scheme_commands(app, status);   // limit, spectrum
     try {
         app.parse(argc, argv);  // runs the selected command

@@ -65,6 +65,10 @@ expect fit-own-limit-surface 0 '^ +0 +0\.000000e\+00 +0\.0000e\+00' -- "$crossdi
 expect fit-needs-control 2 'give the control mesh \(--control MESH\) or how coarse' -- "$crossdiv" fit bundled:torus
 expect fit-topology-type 2 'the control mesh \(Euler characteristic 2, 0 boundary loops\) and the target \(0, 0\) are not of the same topology type' -- "$crossdiv" fit bundled:torus --control bundled:icosahedron
 expect fit-nan 2 'nan.obj:3: y coordinate is nan' -- "$crossdiv" fit "$tmp/nan.obj" --edges 10
+expect multires-torus 0 '0 outside the reach' -- "$crossdiv" multires bundled:torus --vertex 3 --move 0.2,0,0.3 -o "$tmp/mr.obj"
+expect multires-fine-connectivity 2 'are not the connectivity of bundled:torus refined 2 times' -- "$crossdiv" multires bundled:torus --levels 2 --fine "$tmp/mr.obj"
+expect multires-own-fine 0 'decompose then recompose: .* \(the input back\)' -- "$crossdiv" multires bundled:torus --levels 3 --fine "$tmp/mr.obj"
+expect multires-vertex-range 2 'base vertex 500 of 96' -- "$crossdiv" multires bundled:torus --vertex 500
 expect isosurface-unknown 2 "unknown implicit surface 'klein'" -- "$crossdiv" isosurface implicit:klein
 expect isosurface-unknown-reference 2 'the isosurface references are skimage and skimage-lorensen' -- "$crossdiv" isosurface implicit:sphere --against meshlab
 printf 'NDims = 3\nDimSize = 2 2 2\nElementType = MET_FLOAT\nElementDataFile = LOCAL\n' > "$tmp/short.mha"

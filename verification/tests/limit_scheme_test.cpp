@@ -135,9 +135,9 @@ TEST(BfrComparison, ExactAtLevelOneDyadicPointsEvenOnIrregularFaces) {
 TEST(LimitChecks, UnknownStudyIsRefused) {
     EXPECT_THROW(find_operation("eigen"), InputError);
     const auto& ops = suite_operations();
-    // catmull-clark, schemes, creases, limit-positions, vertex-age, curvature, isosurface, fitting, spectrum,
-    // convergence
-    EXPECT_EQ(std::count_if(ops.begin(), ops.end(), [](const SuiteOperation& op) { return op.kind == OperationKind::Study; }), 10);
+    // catmull-clark, schemes, creases, limit-positions, vertex-age, curvature, isosurface, fitting,
+    // multiresolution, spectrum, convergence
+    EXPECT_EQ(std::count_if(ops.begin(), ops.end(), [](const SuiteOperation& op) { return op.kind == OperationKind::Study; }), 11);
 }
 
 // The curvature study: every check holds (second-order convergence of core on the sphere and

@@ -16,6 +16,7 @@
 #include "crossdiv/verification/suite/curvature_study.h"
 #include "crossdiv/verification/suite/fitting_study.h"
 #include "crossdiv/verification/suite/isosurface_study.h"
+#include "crossdiv/verification/suite/multiresolution_study.h"
 #include "suite/studies.h"
 
 namespace crossdiv::verification {
@@ -142,6 +143,8 @@ const std::vector<SuiteOperation>& suite_operations() {
          one_collection<kCatalog>, run_study<isosurface_study>},
         {"fitting", OperationKind::Study, "subdivision surface fitting: exact recovery on the catalog; Loop and Catmull-Clark fitted to the CGAL meshes and the bunny, CGAL's Hausdorff distance per iteration",
          one_collection<kCatalog>, run_study<static_cast<CheckReport (*)()>(fitting_study)>},
+        {"multiresolution", OperationKind::Study, "Loop multiresolution editing: round trip, rigid motion, an edit's reach against the prediction and the subdivision support",
+         one_collection<kCatalog>, run_study<multiresolution_study>},
         {"spectrum", OperationKind::Study, "eigen table of the local subdivision matrices; the Loop rule oracle", one_collection<kFans>,
          run_study<spectrum_study>},
         {"convergence", OperationKind::Study, "convergence of extraordinary vertices to their limit",

@@ -58,6 +58,18 @@ inline constexpr double kFittingRecovery = 1e-10;
 inline constexpr double kFittingEnergyRounding = 1e-12;
 inline constexpr double kFittingDistanceUlps = 64;
 
+/// Multiresolution: recomposing a decomposition gives the input back to this, relative to the
+/// diagonal. Each level adds back a detail rotated into and out of an orthonormal frame (a
+/// few ulps of the detail) to the prediction it was taken from; the bound the method is asked
+/// to meet.
+inline constexpr double kMultiresolutionRoundTrip = 1e-14;
+
+/// A rigid motion commutes with decompose and recompose to this, relative to the diagonal:
+/// the moved mesh's analysis solves a system whose right side is rotated and rounded, and its
+/// frames come from normals of rounded positions; each a few ulps of the coordinates, which
+/// the motion's shift makes up to twice the diagonal.
+inline constexpr double kMultiresolutionRigidMotion = 1e-12;
+
 /// A point's distance to a triangle mesh computed by two exact methods (ours: Ericson's
 /// Voronoi regions, closest_point.h; CGAL's AABB tree and squared_distance) agrees to this,
 /// relative to the mesh's diagonal: both round the coordinates' differences and a square root,
