@@ -11,9 +11,13 @@
 #include "crossdiv/subdiv/limit_fitting.h"
 #include "crossdiv/subdiv/loop.h"
 #include "test_meshes.h"
+#include "test_points.h"
 
 namespace crossdiv {
 namespace {
+
+using test::largest_difference;
+using test::perturbed;
 
 /// Recovered control points are exact to this: the normal equations square the condition of
 /// A (about 10 for these meshes' limit stencils), and one step of iterative refinement brings
@@ -59,19 +63,6 @@ TEST(ClosestPoint, TreeFindsTheSameDistanceAsEveryTriangle) {
     }
     EXPECT_THROW(TriangleTree(m.positions, {}).closest(Vec3::Zero()), InputError);
     EXPECT_THROW(tree.closest(Vec3(std::nan(""), 0, 0)), InputError);
-}
-
-std::vector<Vec3> perturbed(std::vector<Vec3> p, double amount, unsigned seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> u(-amount, amount);
-    for (Vec3& x : p) x += Vec3(u(rng), u(rng), u(rng));
-    return p;
-}
-
-double largest_difference(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
-    double d = 0;
-    for (size_t i = 0; i < a.size(); ++i) d = std::max(d, (a[i] - b[i]).norm());
-    return d;
 }
 
 TEST(LimitFitting, SamplesOfAKnownLimitSurfaceGiveBackItsControlPoints) {

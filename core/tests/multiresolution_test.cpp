@@ -5,15 +5,17 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
-#include <random>
 
 #include "crossdiv/error.h"
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/subdiv/multiresolution.h"
 #include "test_meshes.h"
+#include "test_points.h"
 
 namespace crossdiv {
 namespace {
+
+using test::largest_difference;
 
 const LoopOptions kLoop{LoopWeights::Loop, LoopBoundary::EdgeOnly};
 
@@ -21,17 +23,7 @@ const LoopOptions kLoop{LoopWeights::Loop, LoopBoundary::EdgeOnly};
 TriMesh closed_base() { return loop_subdivide(to_tri_mesh(test::octahedron()), kLoop, 1); }
 
 std::vector<Vec3> with_detail(const LoopMultiresolution& m, const TriMesh& base, double amount, unsigned seed) {
-    std::vector<Vec3> p = m.subdivide(base.positions);
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> u(-amount, amount);
-    for (Vec3& x : p) x += Vec3(u(rng), u(rng), u(rng));
-    return p;
-}
-
-double largest_difference(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
-    double d = 0;
-    for (size_t i = 0; i < a.size(); ++i) d = std::max(d, (a[i] - b[i]).norm());
-    return d;
+    return test::perturbed(m.subdivide(base.positions), amount, seed);
 }
 
 TEST(Multiresolution, ASubdivisionSurfaceHasItsBaseAndNoDetail) {

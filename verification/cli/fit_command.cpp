@@ -63,7 +63,7 @@ int run_fit(const FitArgs& a) {
     const verification::FittingRun run = verification::run_fitting(scheme, control, target, a.levels, a.iterations, hausdorff);
     const double diagonal = bounding_box_diagonal(target.positions);
     fmt::print("{} limit surface sampled at level {} ({} samples of {} control points); distances relative to the target's "
-               "diagonal {:.6g}\n", a.scheme, a.levels, run.fitted_surface.num_vertices(), control.num_vertices(), diagonal);
+               "diagonal {:.6g}\n", a.scheme, a.levels, run.sampling.num_samples(), control.num_vertices(), diagonal);
     fmt::print("{:>5} {:>13} {:>12} {:>12} {:>12} {:>12}{}\n", "step", "energy", "rms s->t", "max s->t", "rms t->s", "max t->s",
                run.hausdorff.empty() ? "" : fmt::format(" {:>14}", "hausdorff(" + run.hausdorff_by + ")"));
     for (size_t k = 0; k < run.result.steps.size(); ++k) {
@@ -73,7 +73,7 @@ int run_fit(const FitArgs& a) {
                    run.hausdorff.empty() ? "" : fmt::format(" {:>14.4e}", run.hausdorff[k] / diagonal));
     }
     if (!run.hausdorff_error.empty()) fmt::print("{} refused: {}\n", run.hausdorff_by, run.hausdorff_error);
-    const int increases = verification::energy_increases(run.result, target, run.fitted_surface.num_vertices());
+    const int increases = verification::energy_increases(run.result, target, run.sampling.num_samples());
     if (increases > 0) fmt::print("the distance energy increased at {} step(s): each step must not increase it\n", increases);
     if (!a.out.empty()) {
         TriMesh fitted = control;
@@ -82,7 +82,7 @@ int run_fit(const FitArgs& a) {
         fmt::print("wrote {} (the fitted control mesh)\n", a.out);
     }
     if (!a.surface.empty()) {
-        write_mesh(a.surface, to_poly_mesh(run.fitted_surface));
+        write_mesh(a.surface, to_poly_mesh(run.fitted_surface()));
         fmt::print("wrote {} (its limit surface at level {})\n", a.surface, a.levels);
     }
     return increases > 0 ? 1 : 0;

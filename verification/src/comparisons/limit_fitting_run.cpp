@@ -58,10 +58,10 @@ FittingRun run_fitting(Scheme scheme, const TriMesh& control, const TriMesh& tar
         throw InputError(fmt::format("the control mesh (Euler characteristic {}, {} boundary loops) and the target ({}, {}) "
                                      "are not of the same topology type",
                                      c.euler, c.boundary_loops, t.euler, t.boundary_loops));
-    const LimitSampling sampling = fitting_sampling(scheme, control, levels);
     FittingRun run;
+    run.sampling = fitting_sampling(scheme, control, levels);
+    const LimitSampling& sampling = run.sampling;
     run.result = fit_limit_surface(sampling, control.positions, target, {.iterations = iterations});
-    run.fitted_surface = sampling.surface(run.result.steps.back().control);
     if (hausdorff_reference) {
         run.hausdorff_by = hausdorff_reference->name();
         try {

@@ -40,7 +40,8 @@ MultiresolutionMeasures measure_multiresolution(const LoopMultiresolution& m, co
     MultiresolutionMeasures out;
     out.diagonal = bounding_box_diagonal(finest);
     const MultiresolutionDecomposition d = m.decompose(finest);
-    out.round_trip = largest_difference(m.recompose(d), finest) / out.diagonal;
+    const std::vector<Vec3> before = m.recompose(d);  // the round trip, and the edit's reference
+    out.round_trip = largest_difference(before, finest) / out.diagonal;
     for (const std::vector<Vec3>& level : d.details) {
         double sum = 0;
         for (const Vec3& x : level) sum += x.squaredNorm();
@@ -60,7 +61,6 @@ MultiresolutionMeasures measure_multiresolution(const LoopMultiresolution& m, co
     const std::vector<char> reach = m.edit_reach({vertex}, true), support = m.edit_reach({vertex}, false);
     MultiresolutionDecomposition e = d;
     e.base[vertex] += edit;
-    const std::vector<Vec3> before = m.recompose(d);
     out.edited = m.recompose(e);
     // With zero details a subdivision surface: the frames multiply zeros.
     MultiresolutionDecomposition z = d;

@@ -116,12 +116,12 @@ json fit_row(CheckReport& out, const FittingTarget& t, const TriMesh& control, i
         return row;
     }
     const double diagonal = bounding_box_diagonal(t.mesh.positions);
-    row["samples"] = run.fitted_surface.num_vertices();
+    row["samples"] = run.sampling.num_samples();
     json steps = json::array();
     for (size_t k = 0; k < run.result.steps.size(); ++k) steps.push_back(step_json(run.result.steps[k], diagonal, run.hausdorff, k));
     row["steps"] = steps;
     out.checks.push_back(count_check(subject, "energy-never-increases", "ours",
-                                     energy_increases(run.result, t.mesh, run.fitted_surface.num_vertices()),
+                                     energy_increases(run.result, t.mesh, run.sampling.num_samples()),
                                      "iterations whose distance energy exceeds the previous one's beyond rounding"));
     if (!run.hausdorff_error.empty()) {
         row["hausdorff_error"] = run.hausdorff_error;
@@ -145,14 +145,11 @@ json fit_row(CheckReport& out, const FittingTarget& t, const TriMesh& control, i
                               "its samples hold both meshes' vertices, so it is at least our largest vertex distance"});
     }
     if (t.name == "bunny" && scheme == Scheme::Loop && figures.empty()) {
-        TriMesh fitted = control;
-        fitted.positions = run.result.steps.back().control;
-        const LimitSampling start = fitting_sampling(scheme, control, 2);
         figures.push_back({{"title", fmt::format("target: {} triangles", t.mesh.num_faces())}, {"mesh", mesh_json(to_poly_mesh(t.mesh))}});
         figures.push_back({{"title", fmt::format("control by edge collapse: {} vertices", control.num_vertices())},
                            {"mesh", mesh_json(to_poly_mesh(control))}, {"wire", true}});
-        figures.push_back({{"title", "its limit surface (start)"}, {"mesh", mesh_json(to_poly_mesh(start.surface(control.positions)))}});
-        figures.push_back({{"title", fmt::format("after {} iterations", iterations)}, {"mesh", mesh_json(to_poly_mesh(run.fitted_surface))}});
+        figures.push_back({{"title", "its limit surface (start)"}, {"mesh", mesh_json(to_poly_mesh(run.sampling.surface(control.positions)))}});
+        figures.push_back({{"title", fmt::format("after {} iterations", iterations)}, {"mesh", mesh_json(to_poly_mesh(run.fitted_surface()))}});
     }
     return row;
 }

@@ -40,7 +40,10 @@ struct FittingRun {
     /// the target, by `hausdorff_by`; empty without a reference, or when it refused (`hausdorff_error`).
     std::vector<double> hausdorff;
     std::string hausdorff_by, hausdorff_error;
-    TriMesh fitted_surface;  ///< the last step's sampled limit surface
+    LimitSampling sampling;  ///< the control mesh's limit surface, as fitted
+
+    /// The last step's sampled limit surface.
+    TriMesh fitted_surface() const { return sampling.surface(result.steps.back().control); }
 };
 
 /// The steps whose distance energy exceeds the previous one's beyond rounding
