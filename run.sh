@@ -16,7 +16,9 @@ cd "$(dirname "$0")"
 PACKAGES="g++ make cmake libeigen3-dev libosd-dev libopenmesh-dev libcgal-dev libgtest-dev \
 libcli11-dev nlohmann-json3-dev libfmt-dev libnanoflann-dev libassimp-dev python3-matplotlib python3-numpy \
 meshlab xvfb xauth \
-python3-pytest python3-skimage"
+python3-pytest python3-skimage \
+libjs-three chromium chromium-driver python3-selenium python3-pil \
+pybind11-dev python3-dev python3-scipy"
 
 install_missing() {
   local missing=""
@@ -66,6 +68,8 @@ case "${1:-}" in
     # The benchmark first, so that the suite's report includes its timing section.
     ./build/verification/crossdiv bench --out out
     ./build/verification/crossdiv suite --out out
+    # The report as a reader opens it: headless Chromium, screenshots in out/screenshots.
+    /usr/bin/python3 reports/check_viewer.py out --screenshots
     ;;
   test)
     install_missing

@@ -14,6 +14,18 @@ class Text:
 
 
 @dataclass
+class Link:
+    """A table cell that links in index.html (its text alone in report.md). `attributes` is
+    extra HTML of the anchor, already escaped (the viewer's data-view)."""
+    text: str
+    href: str
+    attributes: str = ""
+
+    def __str__(self):
+        return self.text
+
+
+@dataclass
 class Table:
     header: list
     rows: list
@@ -23,6 +35,14 @@ class Table:
 class Figure:
     path: str  # relative to the report folder, e.g. "figures/timing.png"
     alt: str
+
+
+@dataclass
+class Interactive:
+    """A part of the page that only a browser shows (the 3D viewer, a collapsed long list):
+    `html` verbatim in index.html, `markdown` (a sentence pointing to it) in report.md."""
+    html: str
+    markdown: str = ""
 
 
 @dataclass
@@ -61,6 +81,8 @@ def render_markdown(title, intro, sections):
                 out += md_table(b) + [""]
             elif isinstance(b, Figure):
                 out += [f"![{b.alt}]({b.path})", ""]
+            elif isinstance(b, Interactive) and b.markdown:
+                out += [b.markdown, ""]
     return "\n".join(out).rstrip("\n") + "\n"
 
 
@@ -70,14 +92,24 @@ def _inline_html(text):
     return "".join(f"<code>{p}</code>" if i % 2 else p for i, p in enumerate(parts))
 
 
+def html_cell(value):
+    """A cell's HTML: escaped text, or a Link as an anchor."""
+    if isinstance(value, Link):
+        return f"<a href='{html.escape(value.href)}'{value.attributes}>{html.escape(value.text)}</a>"
+    return html.escape(str(value))
+
+
 def html_table(table):
     out = ["<table><tr>" + "".join(f"<th>{html.escape(str(h))}</th>" for h in table.header) + "</tr>"]
-    out += ["<tr>" + "".join(f"<td>{html.escape(str(v))}</td>" for v in row) + "</tr>" for row in table.rows]
+    out += ["<tr>" + "".join(f"<td>{html_cell(v)}</td>" for v in row) + "</tr>" for row in table.rows]
     return "\n".join(out + ["</table>"])
 
 
 STYLE = ("body{font-family:sans-serif;max-width:1400px;margin:auto}table{border-collapse:collapse;font-size:12px}"
-         "td,th{border:1px solid #ccc;padding:2px 6px;text-align:left}img{max-width:100%}")
+         "td,th{border:1px solid #ccc;padding:2px 6px;text-align:left}img{max-width:100%}"
+         "#crossdiv-viewer{display:flex;flex-wrap:wrap;gap:8px}#crossdiv-viewer canvas{width:860px;height:560px;"
+         "border:1px solid #ccc}.cv-side{flex:1;min-width:300px;font-size:13px}.cv-controls{width:100%}"
+         ".cv-controls select{max-width:560px}")
 
 
 def render_html(title, intro, sections):
@@ -92,5 +124,7 @@ def render_html(title, intro, sections):
                 body.append(html_table(b))
             elif isinstance(b, Figure):
                 body.append(f"<img src='{html.escape(b.path)}' alt='{html.escape(b.alt)}'>")
+            elif isinstance(b, Interactive):
+                body.append(b.html)
     return (f"<!DOCTYPE html><html><head><meta charset='utf-8'><title>{html.escape(title)}</title>"
             f"<style>{STYLE}</style></head><body>\n" + "\n".join(body) + "\n</body></html>\n")

@@ -2,7 +2,7 @@
 from collections import Counter
 
 from . import figures
-from .model import Figure, Section, Table, Text
+from .model import Figure, Interactive, Section, Table, Text, html_table
 from .records import fmt, outcome, short_input, vec
 
 
@@ -70,15 +70,17 @@ def subject_section(mesh_cases):
 
 
 def catalogue_section(rows):
-    counts = Counter((row["class"], row["reference"]) for row in rows)
+    """Every run that is not agreement: in index.html a collapsed table, in report.md a pointer
+    to results.csv (the overview has one row per class with its representative)."""
+    table = Table(["case", "reference", "outcome", "max rel", "worst vertex", "values at the worst vertex", "explanation"],
+                  [(r["case"], r["reference"], r["outcome"], fmt(r["max_rel"]), r["worst"], r["values"], r["explanation"])
+                   for r in rows])
     return Section("Divergence catalogue").add(
-        Text("Classes by reference:"),
-        Table(["class", "reference", "runs"], [(c, r, n) for (c, r), n in sorted(counts.items())]),
-        Text("Every run that is not agreement, with the case's worst vertex (the vertex where some reference parts "
-             "most from core) and each implementation's value there:"),
-        Table(["case", "reference", "outcome", "max rel", "worst vertex", "values at the worst vertex", "explanation"],
-              [(r["case"], r["reference"], r["outcome"], fmt(r["max_rel"]), r["worst"], r["values"], r["explanation"])
-               for r in rows]))
+        Interactive(f"<details><summary>Every run that is not agreement ({len(rows)}), with the case's worst vertex "
+                    "(where some reference parts most from core) and each implementation's value there</summary>"
+                    f"{html_table(table)}</details>",
+                    f"{len(rows)} runs are not agreement; results.csv lists every run, index.html every one of these "
+                    "with the case's worst vertex and each implementation's value there."))
 
 
 def mesh_sections(results, mesh_cases, folder, figdir):

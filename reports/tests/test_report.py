@@ -93,15 +93,24 @@ def test_a_small_suite_folder_renders_every_section(tmp_path):
     make_report.main(str(tmp_path))
     md = (tmp_path / "report.md").read_text()
     page = (tmp_path / "index.html").read_text()
-    for title in ("Outcomes", "Summary matrix", "Divergence catalogue", "Error by level and its distribution",
+    for title in ("Overview", "Outcomes", "Summary matrix", "Divergence catalogue", "Error by level and its distribution",
                   "Curves", "Schemes and limit behaviour", "Timing"):
         assert f"## {title}" in md and f"<h2>{title}</h2>" in page
+    assert md.index("## Overview") < md.index("## Outcomes")  # the first screen answers the question
     for table in tables_of(md):  # every row has its header's cells, ids with '|' included
         assert len({len(row) for row in table}) == 1, table
-    catalogue = [t for t in tables_of(md) if t[0][0].strip() == "case"][0]
-    outcomes = [row[2].strip() for row in catalogue[2:]]
-    assert sorted(outcomes) == ["diverge (corner-rule)", "diverge (unexplained)", "ours-rejected"]
-    assert "v3 valence 4 boundary" in md
+    header = lambda t: [h.strip() for h in t[0]]  # noqa: E731
+    [matrix] = [t for t in tables_of(md) if header(t)[0] == "scheme or study"]
+    assert header(matrix) == ["scheme or study", "opensubdiv", "cgal", "exact answers and own checks"]
+    assert [c.strip() for c in matrix[2]] == ["loop", "1 / 0 / 0", "0 / 1 / 0", "0 / 1 / 0"]  # the bowtie core refused
+    [failures] = [t for t in tables_of(md) if header(t) == ["case", "reference", "outcome", "explanation"]]
+    assert [(r[1].strip(), r[2].strip()) for r in failures[2:]] == [("eigen", "diverge (unexplained)")]
+    [classes] = [t for t in tables_of(md) if header(t) == ["outcome", "reference", "runs", "representative"]]
+    assert sorted((r[0].strip(), r[1].strip(), r[2].strip()) for r in classes[2:]) == [
+        ("diverge (corner-rule)", "cgal", "1"), ("ours-rejected", "core", "1")]
+    # report.md is the summary (every run is in results.csv); index.html keeps the full list.
+    assert "results.csv lists every run" in md and "v3 valence 4 boundary" not in md
+    assert "v3 valence 4 boundary" in page and "<details>" in page
     for png in ("summary_matrix.png", "convergence.png", "error_histogram.png"):
         assert (tmp_path / "figures" / png).stat().st_size > 1000
 

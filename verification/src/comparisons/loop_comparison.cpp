@@ -116,6 +116,31 @@ std::optional<ErrorField> error_field(const CoreRun& ours, const adapters::Level
     return std::nullopt;
 }
 
+/// A reference's vertices in our numbering (`ref_to_ours`: ours for each of its vertices);
+/// NaN where none of its vertices maps.
+std::vector<Vec3> in_our_numbering(const PolyMesh& ref, const std::vector<int>& ref_to_ours, int our_vertices) {
+    std::vector<Vec3> mapped(our_vertices, Vec3::Constant(NAN));
+    for (size_t i = 0; i < ref_to_ours.size(); ++i)
+        if (ref_to_ours[i] >= 0 && ref_to_ours[i] < our_vertices) mapped[ref_to_ours[i]] = ref.positions[i];
+    return mapped;
+}
+
+/// A reference's levels 0..N in our numbering, each where the correspondence has a map for it
+/// (every level when matched level by level, the last one when matched by position).
+std::vector<std::vector<Vec3>> levels_in_our_numbering(const CoreRun& ours, const PolyMesh& input,
+                                                       const adapters::LevelTrace& ref, const Correspondence& c) {
+    const int levels = static_cast<int>(ref.size()) - 1;
+    std::vector<std::vector<Vec3>> out(ref.size());
+    for (int l = 0; l <= levels; ++l) {
+        const std::vector<int>* map = l < static_cast<int>(c.level_maps.size()) ? &c.level_maps[l]
+                                      : l == levels                             ? &c.ref_to_ours
+                                                                                : nullptr;
+        if (!map || map->empty() || map->size() != ref[l].positions.size()) continue;
+        out[l] = in_our_numbering(ref[l], *map, l == 0 ? input.num_vertices() : ours.levels[l - 1].num_vertices());
+    }
+    return out;
+}
+
 /// Runs one reference, isolated, with the closest rules it has; fills the run's identity.
 IsolatedTrace run_reference(const Implementation& ref, const TriMesh& input, const LoopComparisonRequest& req,
                             ReferenceRun& run) {
@@ -276,6 +301,8 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
     // Each matched reference's last level in our vertex order, to report every
     // implementation's value at the case's worst vertex.
     std::map<std::string, std::vector<Vec3>> in_our_order;
+    // And, for the 3D view, every level of each matched reference.
+    std::map<std::string, std::vector<std::vector<Vec3>>> at_each_level;
     for (const Implementation* ref : refs) {
         ReferenceRun run;
         IsolatedTrace iso = run_reference(*ref, input, req, run);
@@ -326,9 +353,8 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
         run.comparison = compare_meshes(ours.levels.back(), trace.back(), run.correspondence.ref_to_ours);
         run.level_max_rel = level_errors(ours, trace, run.correspondence);
         std::vector<Vec3>& mapped = in_our_order[ref->name()];
-        mapped.assign(ours.levels.back().positions.size(), Vec3::Constant(NAN));
-        for (size_t i = 0; i < run.correspondence.ref_to_ours.size(); ++i)
-            mapped[run.correspondence.ref_to_ours[i]] = trace.back().positions[i];
+        mapped = in_our_numbering(trace.back(), run.correspondence.ref_to_ours, ours.levels.back().num_vertices());
+        if (req.view_max_faces > 0) at_each_level[ref->name()] = levels_in_our_numbering(ours, input_mesh, trace, run.correspondence);
         if (within(tier, run.comparison, run.level_max_rel, run.hausdorff_rel)) {
             run.verdict = Verdict::Agree;
             run.explanation = tier.tier == Tier::Geometric
@@ -452,6 +478,13 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
         if (r.verdict == Verdict::Diverge && !r.comparison.worst.empty() &&
             (!worst_run || r.comparison.worst[0].distance > worst_run->comparison.worst[0].distance))
             worst_run = &r;
+    if (worst_run && req.view_max_faces > 0 && under_test->levels.back().num_faces() <= req.view_max_faces) {
+        DivergenceView& view = out.view.emplace();
+        view.levels.push_back(input_mesh);
+        view.levels.insert(view.levels.end(), under_test->levels.begin(), under_test->levels.end());
+        view.origins = under_test->origins;
+        view.references = std::move(at_each_level);
+    }
     if (worst_run) {
         const WorstVertex& w = worst_run->comparison.worst[0];
         out.worst_vertex = CaseWorstVertex{w.ours_index, w.valence, w.boundary, w.ours, std::nullopt, {}};

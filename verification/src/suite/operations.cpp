@@ -17,6 +17,7 @@
 #include "crossdiv/verification/suite/fitting_study.h"
 #include "crossdiv/verification/suite/isosurface_study.h"
 #include "crossdiv/verification/suite/multiresolution_study.h"
+#include "crossdiv/verification/suite/divergence_view_file.h"
 #include "suite/studies.h"
 
 namespace crossdiv::verification {
@@ -28,6 +29,10 @@ using nlohmann::json;
 /// Error fields larger than this are not kept: the report renders them with matplotlib,
 /// which stays interactive-fast up to about this many triangles.
 constexpr int kErrorFieldMaxFaces = 20000;
+
+/// 3D views larger than this (faces at the last level) are not written: about 1 MB of side
+/// file per view with four references, and a mesh any browser turns in real time.
+constexpr int kViewMaxFaces = 50000;
 
 /// Writes each diverging run's error field as fields/jobN-REF.json and names it in the run.
 void write_error_fields(const LoopComparison& c, const SuiteJob& job, const std::string& out_dir, CaseRecord& rec) {
@@ -48,9 +53,19 @@ void write_error_fields(const LoopComparison& c, const SuiteJob& job, const std:
     }
 }
 
+/// Writes the case's 3D view, when it has one, as views/jobN.js and names it in the case.
+void write_view(const LoopComparison& c, const SuiteJob& job, const std::string& out_dir, CaseRecord& rec) {
+    if (!c.view) return;
+    const std::string name = "views/job" + std::to_string(job.index) + ".js";
+    fs::create_directories(fs::path(out_dir) / "views");
+    write_divergence_view(*c.view, job.index, c.subject, (fs::path(out_dir) / name).string());
+    rec.detail["view"] = name;
+}
+
 CaseRecord run_loop(const SuiteJob& job, const std::string& out_dir) {
     LoopComparisonRequest req = job.entry->request;
     req.error_field_max_faces = kErrorFieldMaxFaces;
+    req.view_max_faces = kViewMaxFaces;
     // The implementation under test: core, the manifest's subject program, or its result file
     // for this input.
     std::unique_ptr<Implementation> result_file;
@@ -75,6 +90,7 @@ CaseRecord run_loop(const SuiteJob& job, const std::string& out_dir) {
         refused.empty() ? compare_loop(mesh, job.input, req) : compare_loop_refused(mesh, job.input, req, refused);
     CaseRecord rec = case_record(c);
     write_error_fields(c, job, out_dir, rec);
+    write_view(c, job, out_dir, rec);
     return rec;
 }
 

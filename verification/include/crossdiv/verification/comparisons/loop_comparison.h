@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "crossdiv/mesh/tri_mesh.h"
+#include "crossdiv/subdiv/loop.h"
 #include "crossdiv/subdiv/loop_mask.h"
 #include "crossdiv/verification/harness/verdict.h"
 #include "crossdiv/verification/harness/mesh_comparison.h"
@@ -48,6 +49,10 @@ struct LoopComparisonRequest {
     /// Keep, for each divergence, our mesh at the first level that diverges with each
     /// vertex's distance to the reference (for pictures), if it has at most this many faces.
     int error_field_max_faces = 0;
+    /// Keep, when some reference diverges, every level of the implementation under test with
+    /// each reference's positions (the report's 3D view), if the last level has at most this
+    /// many faces.
+    int view_max_faces = 0;
 };
 
 /// Our mesh at one level with the per-vertex distance to a reference (NaN: unmatched).
@@ -55,6 +60,18 @@ struct ErrorField {
     int level = 0;
     PolyMesh mesh;
     std::vector<double> distance;
+};
+
+/// What the report's 3D viewer shows of a case where some reference diverges: the
+/// implementation under test's levels 0..N with each vertex's provenance, and each matched
+/// reference's positions at every level in that numbering.
+struct DivergenceView {
+    std::vector<PolyMesh> levels;                    ///< levels 0..N of the implementation under test
+    std::vector<std::vector<VertexOrigin>> origins;  ///< origins[l-1]: where each vertex of level l came from
+    /// Per reference, its positions at levels 0..N in our numbering: an empty level has no
+    /// vertex map there (a match by position sees the last level only); NaN marks a vertex
+    /// the reference has no match for.
+    std::map<std::string, std::vector<std::vector<Vec3>>> references;
 };
 
 /// The outcome of one reference on one input.
@@ -109,6 +126,7 @@ struct LoopComparison {
     std::optional<RuleIdentification> rules;
     std::vector<ReferenceRun> runs;
     std::optional<CaseWorstVertex> worst_vertex;  ///< when some reference diverges
+    std::optional<DivergenceView> view;           ///< when some reference diverges (LoopComparisonRequest::view_max_faces)
     bool all_agree() const;
     /// The subject failed (crashed, hung, wrote nothing or something that is not a Loop mesh)
     /// or cannot be matched to core's refinement.

@@ -1,0 +1,80 @@
+"""The report as a reader meets it: a small suite run by crossdiv, its index.html opened in
+headless Chromium (Debian's chromium, chromium-driver, python3-selenium). Fails on a console
+error, a blank 3D canvas, a click that picks nothing, or a page that reaches for the network.
+
+The crossdiv program is CROSSDIV_BIN (set by CTest), else build/verification/crossdiv."""
+import os
+import re
+import subprocess
+import sys
+
+import pytest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPORTS = os.path.join(HERE, "..")
+sys.path.insert(0, REPORTS)
+
+import check_viewer  # noqa: E402
+
+CROSSDIV = os.environ.get("CROSSDIV_BIN") or os.path.join(REPORTS, "..", "build", "verification", "crossdiv")
+
+# Two divergences with a known cause: OpenMesh and CGAL lack Loop's corner rule (open-patch),
+# and no reference has Warren's weights (octahedron); and a case where all agree.
+MANIFEST = """suite viewer-test
+case bundled:open-patch  loop weights=loop boundary=edge-and-corner levels=2 tier=weak tolerance=1e-12 against=opensubdiv,openmesh
+case bundled:octahedron  loop weights=warren boundary=edge-only levels=2 tier=weak tolerance=1e-12 against=opensubdiv
+case bundled:tetrahedron loop weights=loop boundary=edge-only levels=1 tier=weak tolerance=1e-12 against=opensubdiv
+"""
+
+
+def run_suite(folder, manifest):
+    path = os.path.join(folder, "viewer.suite")
+    with open(path, "w") as f:
+        f.write(manifest)
+    out = os.path.join(folder, "out")
+    subprocess.run([CROSSDIV, "suite", path, "--out", out, "--no-report"], check=True, capture_output=True, timeout=300)
+    subprocess.run(["/usr/bin/python3", os.path.join(REPORTS, "make_report.py"), out], check=True, timeout=300)
+    return out
+
+
+@pytest.fixture(scope="module")
+def report(tmp_path_factory):
+    assert os.path.exists(CROSSDIV), f"{CROSSDIV}: build crossdiv first (or set CROSSDIV_BIN)"
+    return run_suite(str(tmp_path_factory.mktemp("viewer")), MANIFEST)
+
+
+def test_every_divergence_has_a_view_and_the_page_needs_no_network(report):
+    views = sorted(os.listdir(os.path.join(report, "views")))
+    assert views == ["job0.js", "job1.js"]  # the agreeing tetrahedron has none
+    for name in ("three.min.js", "OrbitControls.js", "viewer.js"):
+        assert os.path.getsize(os.path.join(report, "viewer", name)) > 1000
+    with open(os.path.join(report, "index.html")) as f:
+        page = f.read()
+    # Every script and image is a relative path beside the page: it opens from disk, offline.
+    sources = re.findall(r"""src=['"]([^'"]+)['"]""", page)
+    assert sources and not [s for s in sources if re.match(r"[a-z]+:|/", s)], sources
+    assert "views/job0.js" in page and "data-view=" in page
+    # The meshes are in the side files, not the page.
+    assert os.path.getsize(os.path.join(report, "index.html")) < 200_000
+
+
+def test_the_viewer_draws_picks_and_logs_no_error(report):
+    seen = check_viewer.check(report, screenshots=True)
+    assert seen[0].startswith("canvas: ") and seen[-1] == "no console error", seen
+    for shot in ("overview.png", "viewer.png", "viewer-panel.png"):
+        assert os.path.getsize(os.path.join(report, "screenshots", shot)) > 5000
+
+
+def test_the_warren_case_names_every_reference_at_the_picked_vertex(report):
+    seen = check_viewer.check(report, case="weight-family")
+    assert any(line.startswith("picked v") and "1 reference(s)" in line for line in seen), seen
+
+
+def test_a_broken_view_file_is_a_console_error(report, tmp_path):
+    # The check must fail when the page does: a view whose script throws.
+    broken = tmp_path / "broken"
+    subprocess.run(["cp", "-r", report, str(broken)], check=True)
+    with open(broken / "views" / "job0.js", "w") as f:
+        f.write("crossdivView({\"job\": 0, \"levels\": 17});\n")
+    with pytest.raises(AssertionError, match="console error"):
+        check_viewer.check(str(broken))

@@ -1,0 +1,155 @@
+"""The report's interactive parts: the first screen's matrix of outcomes, the failures and the
+classes with a representative each, and the 3D divergence viewer (reports/viewer/viewer.js)
+over the cases `crossdiv suite` wrote a view for (views/jobN.js)."""
+import json
+import os
+import shutil
+from collections import Counter, defaultdict
+
+from .model import Interactive, Link, Section, Table, Text
+from .records import category, outcome
+
+# three.js from Debian's libjs-three (release 111, its classic scripts: a page opened from disk
+# may run these but not import ES modules), copied beside the report so it opens offline.
+THREE_FILES = ("/usr/share/javascript/three/build/three.min.js",
+               "/usr/share/javascript/three/examples/js/controls/OrbitControls.js")
+VIEWER_JS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "viewer", "viewer.js")
+
+FAILURE = ("ours-failed", "diverge (unexplained)")
+
+
+def _kind(case, run):
+    """agree, classified (a measured, named difference, or a reference's own failure) or failure."""
+    c = category(case, run)
+    return "agree" if c == "agree" else "failure" if c in FAILURE else "classified"
+
+
+def _row_name(case):
+    return case.get("scheme") or case.get("operation") or "?"
+
+
+def matrix_table(cases, libraries):
+    """Per scheme (or study) x reference library: agree / classified / failure run counts; the
+    checks against exact answers, oracles and second algorithms of ours share one column."""
+    own = "exact answers and own checks"
+    counts = defaultdict(Counter)
+    for c in cases:
+        for r in c.get("runs", []):
+            column = r["reference"] if r["reference"] in libraries else own
+            counts[_row_name(c)][(column, _kind(c, r))] += 1
+        if not c.get("runs"):
+            counts[_row_name(c)][(own, _kind(c, None))] += 1
+    columns = list(libraries) + [own]
+    rows = []
+    for name in sorted(counts, key=lambda n: (n != "loop", n)):
+        k = counts[name]
+        rows.append([name] + [f"{k[(col, 'agree')]} / {k[(col, 'classified')]} / {k[(col, 'failure')]}"
+                              if any(k[(col, x)] for x in ("agree", "classified", "failure")) else "-" for col in columns])
+    return Table(["scheme or study"] + columns, rows)
+
+
+def view_entries(mesh_cases):
+    """The cases with a 3D view, as the viewer lists them: failures first, then one per
+    divergence class (its first case), then the rest in job order."""
+    entries = []
+    for c in mesh_cases:
+        if "view" not in c:
+            continue
+        diverging = [r for r in c["runs"] if r["verdict"] == "diverge"]
+        worst = max(diverging, key=lambda r: r.get("positions", {}).get("max_rel") or 0, default=None)
+        classes = sorted({r.get("divergence_class") or r["verdict"] for r in diverging})
+        entries.append({"job": c["job"], "id": c["id"], "view": c["view"], "classes": classes,
+                        "failure": any(_kind(c, r) == "failure" for r in c["runs"]),
+                        "reference": worst["reference"] if worst else None,
+                        "worst_vertex": (c.get("worst_vertex") or {}).get("ours_index", -1),
+                        "runs": [{"reference": r["reference"], "outcome": outcome(c, r), "explanation": r.get("explanation", "")}
+                                 for r in c["runs"]]})
+    # Representatives: the first case of each class, the most frequent classes first.
+    frequency = Counter(k for e in entries for k in e["classes"])
+    seen, first, rest = set(), [], []
+    for e in entries:
+        new = [k for k in e["classes"] if k not in seen]
+        seen.update(e["classes"])
+        e["_rank"] = (not e["failure"], -max((frequency[k] for k in new), default=0))
+        (first if e["failure"] or new else rest).append(e)
+    ordered = sorted(first, key=lambda e: e["_rank"]) + rest
+    for e in ordered:
+        del e["_rank"]
+    for e in ordered:
+        e["label"] = ("FAILURE " if e["failure"] else "") + f"job {e['job']}: {e['id']} [{', '.join(e['classes'])}]"
+    return ordered
+
+
+def copy_viewer(folder):
+    """three.js, OrbitControls and viewer.js into folder/viewer/. Raises SystemExit naming the
+    package when Debian's three.js is missing."""
+    target = os.path.join(folder, "viewer")
+    os.makedirs(target, exist_ok=True)
+    for src in THREE_FILES + (VIEWER_JS,):
+        if not os.path.exists(src):
+            raise SystemExit(f"{src} is missing: the 3D viewer needs Debian's libjs-three (apt-get install libjs-three)")
+        shutil.copyfile(os.path.realpath(src), os.path.join(target, os.path.basename(src)))
+
+
+def viewer_html(entries):
+    # The case list is small (labels, runs); the meshes stay in views/jobN.js. "</" is
+    # escaped so an id can never close the script element.
+    data = json.dumps(entries).replace("</", "<\\/")
+    return ("<div id='crossdiv-viewer'><div class='cv-controls'>case <select class='cv-case'></select> "
+            "reference <select class='cv-reference'></select> <select class='cv-level'></select> "
+            "<label><input type='checkbox' class='cv-net' checked> control net and ancestors</label> "
+            "<label><input type='checkbox' class='cv-wire'> wireframe</label> "
+            "<label><input type='checkbox' class='cv-flat'> flat shading</label></div>"
+            "<canvas></canvas><div class='cv-side'><p class='cv-info'></p><div class='cv-picked'></div>"
+            "<p>Drag to orbit, wheel to zoom, right-drag to pan, click to pick a vertex. Colour: distance to the chosen "
+            "reference at the chosen level (light: equal, dark red: the largest at that level; grey: no matched vertex). Green: the "
+            "selected vertex (the worst until a pick); blue: the input vertices it descends from, on the control net.</p>"
+            "</div></div>"
+            f"<script>window.CROSSDIV_VIEWS = {data};</script>"
+            "<script src='viewer/three.min.js'></script><script src='viewer/OrbitControls.js'></script>"
+            "<script src='viewer/viewer.js'></script>")
+
+
+def first_screen(cases, mesh_cases, libraries, folder):
+    """The section that answers the suite's question at once: the matrix, the failures, the
+    classes with a representative each, and the viewer."""
+    entries = view_entries(mesh_cases)
+    index = {e["job"]: i for i, e in enumerate(entries)}
+
+    def case_link(c):
+        if c["job"] in index:
+            return Link(c["id"], "#crossdiv-viewer", f" data-view='{index[c['job']]}'")
+        return c["id"]
+
+    s = Section("Overview").add(
+        Text("Runs per scheme (or study) and reference: agree / classified (a measured difference with a named "
+             "cause, or a reference's own failure) / failure (ours failed, or a divergence no test explains)."),
+        matrix_table(cases, libraries))
+    failures = [(case_link(c), r["reference"], outcome(c, r), r.get("explanation", "")) for c in cases
+                for r in c.get("runs", []) if _kind(c, r) == "failure"]
+    failures += [(case_link(c), "core", outcome(c), c.get("core_error", "")) for c in cases
+                 if not c.get("runs") and _kind(c, None) == "failure"]
+    s.add(Text(f"Failures: {len(failures)}." + ("" if failures else " Nothing failed.")))
+    if failures:
+        s.add(Table(["case", "reference", "outcome", "explanation"], failures))
+    representatives, counts = {}, Counter()
+    for c in cases:
+        runs = [(outcome(c, r), r["reference"]) for r in c.get("runs", []) if _kind(c, r) == "classified"]
+        if not c.get("runs") and _kind(c, None) == "classified":
+            runs = [(outcome(c), "core")]
+        for key in runs:
+            counts[key] += 1
+            # A case with a 3D view represents its class when there is one.
+            if key not in representatives or (c["job"] in index and representatives[key]["job"] not in index):
+                representatives[key] = c
+    s.add(Text("Each class of difference by reference, with one representative case (a link opens it in the 3D "
+               "viewer below when it has a view; results.csv lists every run):"),
+          Table(["outcome", "reference", "runs", "representative"],
+                [(o, ref, counts[(o, ref)], case_link(representatives[(o, ref)])) for (o, ref) in sorted(counts)]))
+    if entries:
+        copy_viewer(folder)
+        s.add(Text(f"3D views of {len(entries)} case(s) where a reference diverges (failures first, then one per "
+                   "class, then the rest):"),
+              Interactive(viewer_html(entries),
+                          f"index.html shows {len(entries)} of these cases in an interactive 3D viewer (views/jobN.js)."))
+    return s

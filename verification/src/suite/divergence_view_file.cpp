@@ -1,0 +1,102 @@
+#include "crossdiv/verification/suite/divergence_view_file.h"
+
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "crossdiv/error.h"
+#include "crossdiv/mesh/tri_mesh.h"
+#include "crossdiv/verification/harness/json_text.h"
+
+namespace crossdiv::verification {
+namespace {
+
+// The viewer reads the arrays as JavaScript typed arrays, which take the machine's byte order:
+// little-endian on every machine a browser runs on, and on this one.
+static_assert(std::endian::native == std::endian::little, "views are written as little-endian arrays");
+
+/// RFC 4648 base64 of the bytes of `values`.
+template <class T>
+std::string base64(const std::vector<T>& values) {
+    static constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    const size_t n = values.size() * sizeof(T);
+    const unsigned char* bytes = reinterpret_cast<const unsigned char*>(values.data());
+    std::string out;
+    out.reserve((n + 2) / 3 * 4);
+    for (size_t i = 0; i < n; i += 3) {
+        const unsigned b0 = bytes[i], b1 = i + 1 < n ? bytes[i + 1] : 0u, b2 = i + 2 < n ? bytes[i + 2] : 0u;
+        const unsigned triple = (b0 << 16) | (b1 << 8) | b2;
+        out += kAlphabet[(triple >> 18) & 63];
+        out += kAlphabet[(triple >> 12) & 63];
+        out += i + 1 < n ? kAlphabet[(triple >> 6) & 63] : '=';
+        out += i + 2 < n ? kAlphabet[triple & 63] : '=';
+    }
+    return out;
+}
+
+std::string positions64(const PolyMesh& mesh) {
+    std::vector<double> xyz;
+    xyz.reserve(3 * mesh.positions.size());
+    for (const Vec3& p : mesh.positions) xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
+    return base64(xyz);
+}
+
+std::string triangles32(const PolyMesh& mesh) {
+    std::vector<int32_t> corners;
+    for (int f = 0; f < mesh.num_faces(); ++f) {
+        const int* v = mesh.face(f);
+        for (int k = 1; k + 1 < mesh.face_size(f); ++k) corners.insert(corners.end(), {v[0], v[k], v[k + 1]});
+    }
+    return base64(corners);
+}
+
+std::string origins32(const std::vector<VertexOrigin>& origins) {
+    std::vector<int32_t> pairs;
+    pairs.reserve(2 * origins.size());
+    for (const VertexOrigin& o : origins) pairs.insert(pairs.end(), {o.a, o.is_edge_point() ? o.b : -1});
+    return base64(pairs);
+}
+
+/// The reference's position minus ours per vertex, in float32 (NaN stays NaN).
+std::string offsets32(const std::vector<Vec3>& ref, const PolyMesh& ours) {
+    std::vector<float> xyz;
+    xyz.reserve(3 * ref.size());
+    for (size_t v = 0; v < ref.size(); ++v)
+        for (int k = 0; k < 3; ++k) xyz.push_back(static_cast<float>(ref[v][k] - ours.positions[v][k]));
+    return base64(xyz);
+}
+
+}  // namespace
+
+std::string divergence_view_script(const DivergenceView& view, int job, const std::string& subject) {
+    using nlohmann::json;
+    json levels = json::array();
+    for (size_t l = 0; l < view.levels.size(); ++l) {
+        json level{{"positions", positions64(view.levels[l])}, {"triangles", triangles32(view.levels[l])}};
+        if (l >= 1) level["origins"] = origins32(view.origins.at(l - 1));
+        levels.push_back(std::move(level));
+    }
+    json references = json::object();
+    for (const auto& [name, at_level] : view.references) {
+        json per_level = json::array();
+        for (size_t l = 0; l < view.levels.size(); ++l) {
+            const bool mapped = l < at_level.size() && at_level[l].size() == view.levels[l].positions.size() &&
+                                !at_level[l].empty();
+            per_level.push_back(mapped ? json(offsets32(at_level[l], view.levels[l])) : json(nullptr));
+        }
+        references[name] = std::move(per_level);
+    }
+    const json data{{"job", job}, {"subject", subject}, {"levels", levels}, {"references", references}};
+    return "crossdivView(" + json_text(data) + ");\n";
+}
+
+void write_divergence_view(const DivergenceView& view, int job, const std::string& subject, const std::string& path) {
+    std::ofstream out(path, std::ios::binary);
+    if (!out) throw InputError(path + ": cannot write");
+    out << divergence_view_script(view, job, subject);
+    if (!out.flush()) throw InputError(path + ": cannot write");
+}
+
+}  // namespace crossdiv::verification

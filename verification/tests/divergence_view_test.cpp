@@ -1,0 +1,88 @@
+// The 3D viewer's side file: the arrays byte for byte (hand-encoded base64), and a real
+// divergence's view holding every level and each reference's offsets from ours.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <string>
+
+#include "crossdiv/verification/comparisons/loop_comparison.h"
+#include "crossdiv/verification/harness/inputs.h"
+#include "crossdiv/verification/suite/divergence_view_file.h"
+
+namespace crossdiv::verification {
+namespace {
+
+PolyMesh triangle() {
+    PolyMesh m;
+    m.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+    m.add_face({0, 1, 2});
+    return m;
+}
+
+TEST(DivergenceView, ArraysAreLittleEndianBase64ByHand) {
+    DivergenceView view;
+    view.levels = {triangle()};
+    // The reference: vertex 1 lifted by 0.5 in z, vertex 2 unmatched.
+    view.references["ref"] = {{Vec3(0, 0, 0), Vec3(1, 0, 0.5), Vec3::Constant(NAN)}};
+    const std::string script = divergence_view_script(view, 7, "core");
+    ASSERT_EQ(script.rfind("crossdivView(", 0), 0u);
+    EXPECT_EQ(script.substr(script.size() - 3), ");\n");
+    // Triangle (0, 1, 2) as int32: 00000000 01000000 02000000.
+    EXPECT_NE(script.find("\"triangles\":\"AAAAAAEAAAACAAAA\""), std::string::npos) << script;
+    // Positions as float64: 0 0 0, then 1.0 = 00..00 F0 3F, 0, 0, then 0, 1.0, 0.
+    EXPECT_NE(script.find("\"positions\":\"AAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAA8D8AAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAADwPwAAAAAAAAAA\""),
+              std::string::npos) << script;
+    // Offsets as float32: 0 0 0 | 0 0 0.5 (00 00 00 3F) | NaN NaN NaN (00 00 C0 7F, the quiet NaN).
+    EXPECT_NE(script.find("\"ref\":[\"AAAAAAAAAAAAAAAAAAAAAAAAAAAAAAA/AADAfwAAwH8AAMB/\"]"), std::string::npos) << script;
+    EXPECT_NE(script.find("\"job\":7"), std::string::npos);
+    EXPECT_EQ(script.find("origins"), std::string::npos);  // level 0 has none
+}
+
+TEST(DivergenceView, AReferenceWithoutAMapAtALevelIsNull) {
+    DivergenceView view;
+    view.levels = {triangle(), triangle()};
+    view.origins = {{{0, -1}, {1, -1}, {0, 1}}};
+    view.references["ref"] = {{}, {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}};
+    const std::string script = divergence_view_script(view, 0, "core");
+    EXPECT_NE(script.find("\"ref\":[null,\""), std::string::npos) << script;
+    // Origins (0, -1) (1, -1) (0, 1): 00000000 FFFFFFFF 01000000 FFFFFFFF 00000000 01000000.
+    EXPECT_NE(script.find("\"origins\":\"AAAAAP////8BAAAA/////wAAAAABAAAA\""), std::string::npos) << script;
+}
+
+TEST(DivergenceView, ACornerRuleDivergenceKeepsEveryLevelAndEachReference) {
+    LoopComparisonRequest req;
+    req.options = {LoopWeights::Loop, LoopBoundary::EdgeAndCorner};
+    req.levels = 2;
+    req.references = {"opensubdiv", "openmesh"};
+    req.view_max_faces = 1000;
+    const PolyMesh input = load_input("bundled:open-patch");
+    const LoopComparison c = compare_loop(to_tri_mesh(input, "test"), "bundled:open-patch", req);
+    ASSERT_TRUE(c.view.has_value());
+    const DivergenceView& v = *c.view;
+    ASSERT_EQ(v.levels.size(), 3u);
+    ASSERT_EQ(v.origins.size(), 2u);
+    EXPECT_EQ(v.levels[0].positions, input.positions);
+    for (int l = 1; l <= 2; ++l) EXPECT_EQ(v.origins[l - 1].size(), v.levels[l].positions.size());
+    // OpenSubdiv has the corner rule and agrees; OpenMesh lacks it: its offsets are largest at
+    // the case's worst vertex, and equal to the worst vertex's recorded values.
+    ASSERT_EQ(v.references.size(), 2u);
+    for (const auto& [name, levels] : v.references) {
+        ASSERT_EQ(levels.size(), 3u) << name;
+        for (int l = 0; l <= 2; ++l) ASSERT_EQ(levels[l].size(), v.levels[l].positions.size()) << name << " level " << l;
+    }
+    const int w = c.worst_vertex->ours_index;
+    EXPECT_EQ(v.references.at("openmesh")[2][w], c.worst_vertex->reference_positions.at("openmesh"));
+    EXPECT_GT((v.references.at("openmesh")[2][w] - v.levels[2].positions[w]).norm(), 1e-3);
+    for (size_t i = 0; i < v.levels[2].positions.size(); ++i)
+        EXPECT_LT((v.references.at("opensubdiv")[2][i] - v.levels[2].positions[i]).norm(), 1e-12) << i;
+
+    req.view_max_faces = 0;  // not asked for
+    EXPECT_FALSE(compare_loop(to_tri_mesh(input, "test"), "bundled:open-patch", req).view.has_value());
+    req.view_max_faces = 1000;
+    req.options.boundary = LoopBoundary::EdgeOnly;  // every reference agrees: nothing to view
+    EXPECT_FALSE(compare_loop(to_tri_mesh(input, "test"), "bundled:open-patch", req).view.has_value());
+}
+
+}  // namespace
+}  // namespace crossdiv::verification
