@@ -375,3 +375,68 @@ TEST(CurveIo, ReadsBzcAndNamesItsErrors) {
     EXPECT_EQ(bzc_error("258\n0 0\n"), "bad.bzc:1: the control point count 258 is out of range: at most 257");
     EXPECT_EQ(bzc_error("2\n0 0\n1 inf\n"), "bad.bzc:3: y of point 2 of 2 is inf; numbers must be finite");
 }
+
+namespace {
+
+/// The records of `text`, written by write_swp and read again.
+crossdiv::CurveFile swp_round_trip(const std::string& text, std::string* written = nullptr) {
+    std::istringstream in(text);
+    const crossdiv::CurveFile first = crossdiv::read_swp(in, "first.swp");
+    std::ostringstream out;
+    crossdiv::write_swp(out, first);
+    if (written) *written = out.str();
+    std::istringstream again(out.str());
+    return crossdiv::read_swp(again, "written.swp");
+}
+
+}  // namespace
+
+TEST(SwpWriter, WritesTheReadersLayoutByHand) {
+    std::string written;
+    swp_round_trip("bez2 arc 8 4 [0 0] [0.5 1] [1.5 1] [2 0]\nbsp3 . 4 4 [0 0 0] [1 0 1] [1 1 2] [0 1 3]\n", &written);
+    EXPECT_EQ(written,
+              "bez2 arc 8 4\n[ 0 0 ]\n[ 0.5 1 ]\n[ 1.5 1 ]\n[ 2 0 ]\n"
+              "bsp3 . 4 4\n[ 0 0 0 ]\n[ 1 0 1 ]\n[ 1 1 2 ]\n[ 0 1 3 ]\n");
+}
+
+TEST(SwpWriter, EveryControlPointRecordReadsBackBitForBit) {
+    const std::string text =
+        "bez3 a 5 4 [0.1 0.2 0.3] [0.30000000000000004 1e-300 -7] [1 2 3] [4 5 6]\n"
+        "crm2 b 6 5 [0 0] [1 0.3333333333333333] [2 0] [3 1] [4 0]\n"
+        "crc2 c 6 3 [0 0] [1 0] [0 1]\n"
+        "tcb2 d 6 4 [0 0 0.5 -0.25 1] [1 1] [2 0 -1 0 0] [3 1]\n"
+        "tcc3 e 3 3 [0 0 0] [1 0 0] [0 1 0]\n"
+        "ovh2 f 4 4 [0 0] [1 1] [3 1] [4 0]\n"
+        "ovc2 g 4 3 [0 0] [2 0] [1 1]\n";
+    std::istringstream in(text);
+    const crossdiv::CurveFile first = crossdiv::read_swp(in, "first.swp");
+    const crossdiv::CurveFile again = swp_round_trip(text);
+    ASSERT_EQ(again.curves.size(), first.curves.size());
+    for (size_t i = 0; i < first.curves.size(); ++i) {
+        const auto &a = first.curves[i], &b = again.curves[i];
+        EXPECT_EQ(b.name, a.name);
+        EXPECT_EQ(b.keyword, a.keyword);
+        EXPECT_EQ(b.type, a.type);
+        EXPECT_EQ(b.dim, a.dim);
+        EXPECT_EQ(b.steps, a.steps);
+        EXPECT_EQ(b.control, a.control) << a.name;  // bit for bit
+        EXPECT_EQ(b.tcb, a.tcb) << a.name;
+    }
+    EXPECT_EQ(again.curves[3].tcb[0], (crossdiv::TcbParameters{0.5, -0.25, 1}));
+}
+
+TEST(SwpWriter, RecordsSwpCannotHoldAsPointsAreRefusedByName) {
+    std::istringstream in("circ ring 16 2\nbez2 ok 4 4 [0 0] [1 1] [2 1] [3 0]\n");
+    const crossdiv::CurveFile file = crossdiv::read_swp(in, "prim.swp");
+    std::ostringstream out;
+    try {
+        crossdiv::write_swp(out, file);
+        FAIL() << "a circle was written";
+    } catch (const crossdiv::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("curve 0 'ring' (circ)"), std::string::npos) << e.what();
+    }
+    crossdiv::CurveFile bad;
+    bad.curves.push_back(file.curves[1]);
+    bad.curves[0].control[2].x() = NAN;
+    EXPECT_THROW(crossdiv::write_swp(out, bad), crossdiv::InputError);
+}

@@ -45,4 +45,13 @@ CurveFile read_bzc(std::istream& in, const std::string& name);
 /// Reads by extension: .swp or .bzc. @throws InputError for another extension.
 CurveFile read_curve_file(const std::string& path);
 
+/// Writes the control-point records of `curves` as SWP that read_swp reads back to the same
+/// records: bez, bsp, crm, crc, tcb and tcc (with each key's tension, continuity and bias when
+/// any is not 0), ovh and ovc, in 2D or 3D; an anonymous record is named '.'. Coordinates are
+/// written with 17 significant digits, so every double reads back bit for bit.
+/// @throws InputError naming the record for one SWP cannot hold this way (a primitive, a
+/// camera path, a kappa-curve, a BZC curve, a sweep) or a non-finite coordinate.
+void write_swp(std::ostream& out, const CurveFile& curves);
+void write_swp(const std::string& path, const CurveFile& curves);
+
 }  // namespace crossdiv

@@ -1,0 +1,67 @@
+// SWP output: the control-point records, in the layout read_swp reads (swp.cpp).
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <ostream>
+
+#include "crossdiv/error.h"
+#include "crossdiv/io/curve_io.h"
+
+namespace crossdiv {
+namespace {
+
+/// The SWP keyword stem of a record type SWP holds as control points; empty for the others.
+std::string_view stem(CurveType t) {
+    switch (t) {
+        case CurveType::BezierChain: return "bez";
+        case CurveType::BSpline: return "bsp";
+        case CurveType::CatmullRom: return "crm";
+        case CurveType::CatmullRomClosed: return "crc";
+        case CurveType::Tcb: return "tcb";
+        case CurveType::TcbClosed: return "tcc";
+        case CurveType::BesselOverhauser: return "ovh";
+        case CurveType::BesselOverhauserClosed: return "ovc";
+        default: return "";
+    }
+}
+
+std::string describe(const CurveRecord& r, size_t index) {
+    return "curve " + std::to_string(index) + (r.name.empty() ? "" : " '" + r.name + "'") + " (" + r.keyword + ")";
+}
+
+}  // namespace
+
+void write_swp(std::ostream& out, const CurveFile& curves) {
+    if (!curves.sweeps.empty()) throw InputError("write_swp: surfaces (srev, gcyl) are not written, only curves");
+    out << std::setprecision(17);
+    for (size_t i = 0; i < curves.curves.size(); ++i) {
+        const CurveRecord& r = curves.curves[i];
+        const std::string_view kind = stem(r.type);
+        if (kind.empty())
+            throw InputError("write_swp: " + describe(r, i) + " is not a control-point record SWP holds (" +
+                             std::string(to_string(r.type)) + ")");
+        if (r.dim != 2 && r.dim != 3) throw InputError("write_swp: " + describe(r, i) + " has dimension " + std::to_string(r.dim));
+        const bool with_tcb = r.tcb.size() == r.control.size() && std::any_of(r.tcb.begin(), r.tcb.end(), [](const TcbParameters& p) {
+            return !(p == TcbParameters{});
+        });
+        out << kind << r.dim << ' ' << (r.name.empty() ? "." : r.name) << ' ' << r.steps << ' ' << r.control.size() << '\n';
+        for (size_t k = 0; k < r.control.size(); ++k) {
+            const Vec3& p = r.control[k];
+            if (!p.allFinite()) throw InputError("write_swp: " + describe(r, i) + " point " + std::to_string(k) + " is not finite");
+            out << "[ " << p.x() << ' ' << p.y();
+            if (r.dim == 3) out << ' ' << p.z();
+            if (with_tcb) out << ' ' << r.tcb[k].tension << ' ' << r.tcb[k].continuity << ' ' << r.tcb[k].bias;
+            out << " ]\n";
+        }
+    }
+}
+
+void write_swp(const std::string& path, const CurveFile& curves) {
+    std::ofstream out(path);
+    if (!out) throw InputError(path + ": cannot write");
+    write_swp(out, curves);
+    if (!out.flush()) throw InputError(path + ": cannot write");
+}
+
+}  // namespace crossdiv

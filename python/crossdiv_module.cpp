@@ -1,0 +1,285 @@
+// The Python module `crossdiv`: meshes and curves in and out as numpy arrays, subdivision by
+// core or any reference, the subdivision matrix as scipy.sparse, and the Loop comparison with
+// a Python function as the implementation under test.
+//
+// Arrays going out are not copied: the module moves the mesh's own vectors into a capsule the
+// array keeps alive (a Vec3 is three contiguous doubles, so positions are an n x 3 array as
+// they lie). Arrays coming in are read once into the mesh.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "crossdiv/error.h"
+#include "crossdiv/io/curve_io.h"
+#include "crossdiv/io/mesh_io.h"
+#include "crossdiv/subdiv/loop.h"
+#include "crossdiv/verification/comparisons/loop_comparison.h"
+#include "crossdiv/verification/harness/json_text.h"
+#include "crossdiv/verification/implementations/callback_implementation.h"
+#include "crossdiv/verification/implementations/registry.h"
+
+namespace py = pybind11;
+using namespace crossdiv;
+using namespace crossdiv::verification;
+
+namespace {
+
+static_assert(sizeof(Vec3) == 3 * sizeof(double), "positions are read as an n x 3 array in place");
+
+/// A numpy array over `values`, which it then owns (moved, not copied).
+template <class T>
+py::array_t<T> owning_array(std::vector<T>&& values, std::vector<py::ssize_t> shape) {
+    auto* held = new std::vector<T>(std::move(values));
+    py::capsule owner(held, [](void* p) { delete static_cast<std::vector<T>*>(p); });
+    return py::array_t<T>(shape, held->data(), owner);
+}
+
+py::array_t<double> positions_array(std::vector<Vec3>&& positions) {
+    auto* held = new std::vector<Vec3>(std::move(positions));
+    py::capsule owner(held, [](void* p) { delete static_cast<std::vector<Vec3>*>(p); });
+    return py::array_t<double>({static_cast<py::ssize_t>(held->size()), py::ssize_t{3}},
+                               reinterpret_cast<const double*>(held->data()), owner);
+}
+
+/// F as an m x k int32 array when every face has k corners, else a list of int32 arrays.
+py::object faces_object(PolyMesh& mesh) {
+    const int m = mesh.num_faces();
+    const int k = m > 0 ? mesh.face_size(0) : 3;
+    bool uniform = true;
+    for (int f = 0; f < m && uniform; ++f) uniform = mesh.face_size(f) == k;
+    if (uniform) return owning_array<int>(std::move(mesh.face_vertices), {m, k});
+    py::list faces;
+    for (int f = 0; f < m; ++f)
+        faces.append(py::array_t<int>(mesh.face_size(f), mesh.face(f)));
+    return faces;
+}
+
+py::tuple mesh_tuple(PolyMesh&& mesh) {
+    py::object faces = faces_object(mesh);
+    return py::make_tuple(positions_array(std::move(mesh.positions)), faces);
+}
+
+/// A mesh from V (n x 3, any real dtype) and F (an m x k integer array, or a sequence of
+/// index sequences). @throws InputError naming the face and corner of an index out of range,
+/// or a non-finite coordinate.
+PolyMesh mesh_from(const py::array_t<double, py::array::c_style | py::array::forcecast>& V, const py::object& F) {
+    if (V.ndim() != 2 || V.shape(1) != 3)
+        throw InputError("V must be an n x 3 array of positions (got " + std::to_string(V.ndim()) + " dimensions)");
+    PolyMesh mesh;
+    const auto v = V.unchecked<2>();
+    mesh.positions.resize(V.shape(0));
+    for (py::ssize_t i = 0; i < V.shape(0); ++i) {
+        mesh.positions[i] = Vec3(v(i, 0), v(i, 1), v(i, 2));
+        if (!mesh.positions[i].allFinite()) throw InputError("V row " + std::to_string(i) + " is not finite");
+    }
+    std::vector<int> corners;
+    const auto add = [&](size_t face) {
+        if (corners.size() < 3) throw InputError("F face " + std::to_string(face) + " has fewer than 3 corners");
+        for (size_t c = 0; c < corners.size(); ++c)
+            if (corners[c] < 0 || corners[c] >= mesh.num_vertices())
+                throw InputError("F face " + std::to_string(face) + " corner " + std::to_string(c) + ": vertex " +
+                                 std::to_string(corners[c]) + " is not in V (" + std::to_string(mesh.num_vertices()) +
+                                 " vertices)");
+        mesh.add_face(corners);
+    };
+    if (py::isinstance<py::array>(F) && py::array(F).ndim() == 2) {
+        const auto faces = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(F);
+        if (!faces) throw InputError("F must be an array of integer vertex indices");
+        const auto f = faces.unchecked<2>();
+        for (py::ssize_t i = 0; i < faces.shape(0); ++i) {
+            corners.clear();
+            for (py::ssize_t c = 0; c < faces.shape(1); ++c) {
+                const long long index = f(i, c);
+                corners.push_back(index < 0 || index > (1ll << 31) - 1 ? -1 : static_cast<int>(index));
+            }
+            add(i);
+        }
+        return mesh;
+    }
+    size_t i = 0;
+    for (const py::handle face : F) {
+        corners.clear();
+        for (const py::handle index : face) {
+            const long long value = index.cast<long long>();
+            corners.push_back(value < 0 || value > (1ll << 31) - 1 ? -1 : static_cast<int>(value));
+        }
+        add(i++);
+    }
+    return mesh;
+}
+
+RefineRequest request_for(const std::string& scheme_name, int levels, const std::optional<std::string>& weights,
+                          const std::optional<std::string>& boundary) {
+    RefineRequest req;
+    req.scheme = scheme_from_string(scheme_name);
+    if (levels < 0 || levels > 12) throw InputError("levels must be in 0..12 (got " + std::to_string(levels) + ")");
+    req.levels = levels;
+    req.rule = rule_from_boundary_name(req.scheme, boundary.value_or(""));
+    if (weights) {
+        if (req.scheme != Scheme::Loop) throw InputError("weights name a Loop weight family; " + scheme_name + " has none");
+        req.rule.loop.weights = loop_weights_from_string(*weights);
+    }
+    return req;
+}
+
+py::object json_to_python(const nlohmann::json& j) {
+    return py::module_::import("json").attr("loads")(json_text(j));
+}
+
+/// A Python function subject(V, F) -> (V, F) refining one level, as an implementation: level
+/// k is k calls. It runs in the harness's forked child like any implementation, so an
+/// exception, a crash or a hang there is the run's outcome, not the caller's.
+std::unique_ptr<Implementation> python_subject(const std::string& name, py::object subject) {
+    RefineFunction refine = [subject](const PolyMesh& mesh, const RefineRequest& request) {
+        PolyMesh copy = mesh;
+        py::object V = positions_array(std::move(copy.positions));
+        py::object F = faces_object(copy);
+        for (int l = 0; l < request.levels; ++l) {
+            py::object result = subject(V, F);
+            py::tuple pair = result.cast<py::tuple>();
+            if (pair.size() != 2) throw InputError("the subject must return (V, F)");
+            V = pair[0];
+            F = pair[1];
+        }
+        return mesh_from(V.cast<py::array_t<double, py::array::c_style | py::array::forcecast>>(), F);
+    };
+    return make_callback_implementation(name, {Scheme::Loop}, std::move(refine));
+}
+
+}  // namespace
+
+PYBIND11_MODULE(crossdiv, m) {
+    m.doc() = "crossdiv: subdivision and curves, with the references side by side (numpy in and out).";
+    py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
+
+    m.def("read_mesh", [](const std::string& path) { return mesh_tuple(read_mesh(path)); }, py::arg("path"),
+          "Reads OBJ, OFF or PLY: (V, F), V an n x 3 float64 array, F an m x k int32 array (a list of "
+          "arrays when face sizes differ). Raises crossdiv.InputError naming the file and line.");
+    m.def("write_mesh", [](const std::string& path, const py::array_t<double, py::array::c_style | py::array::forcecast>& V,
+                           const py::object& F) { write_mesh(path, mesh_from(V, F)); },
+          py::arg("path"), py::arg("V"), py::arg("F"), "Writes OBJ, OFF or PLY by the extension.");
+    m.def("read_curves", [](const std::string& path) {
+              const CurveFile file = read_curve_file(path);
+              py::list curves;
+              for (const CurveRecord& r : file.curves) {
+                  std::vector<Vec3> control = r.control;
+                  py::dict d;
+                  d["name"] = r.name;
+                  d["keyword"] = r.keyword;
+                  d["type"] = std::string(to_string(r.type));
+                  d["dim"] = r.dim;
+                  d["steps"] = r.steps;
+                  d["control"] = positions_array(std::move(control));
+                  curves.append(d);
+              }
+              return curves;
+          },
+          py::arg("path"),
+          "Reads SWP or BZC: a list of dicts {name, keyword ('bez2', 'bsp3', ...), type, dim, steps, control "
+          "(n x 3)}.");
+    m.def("write_curves", [](const std::string& path, const py::list& curves) {
+              CurveFile file;
+              for (const py::handle h : curves) {
+                  const py::dict d = h.cast<py::dict>();
+                  const std::string keyword = d["keyword"].cast<std::string>();
+                  // The type and dimension come from the keyword, as the reader derives them.
+                  CurveRecord r;
+                  const std::string stem = keyword.substr(0, 3);
+                  const int dim = keyword.size() == 4 ? keyword[3] - '0' : 0;
+                  static const std::map<std::string, CurveType> kTypes{
+                      {"bez", CurveType::BezierChain}, {"bsp", CurveType::BSpline}, {"crm", CurveType::CatmullRom},
+                      {"crc", CurveType::CatmullRomClosed}, {"tcb", CurveType::Tcb}, {"tcc", CurveType::TcbClosed},
+                      {"ovh", CurveType::BesselOverhauser}, {"ovc", CurveType::BesselOverhauserClosed}};
+                  if (!kTypes.count(stem) || (dim != 2 && dim != 3))
+                      throw InputError("write_curves: keyword '" + keyword + "' is not a control-point record (bez2, bsp3, crm2, ...)");
+                  r.keyword = keyword;
+                  r.type = kTypes.at(stem);
+                  r.dim = dim;
+                  r.name = d.contains("name") ? d["name"].cast<std::string>() : "";
+                  r.steps = d.contains("steps") ? d["steps"].cast<int>() : 16;
+                  const auto control = d["control"].cast<py::array_t<double, py::array::c_style | py::array::forcecast>>();
+                  if (control.ndim() != 2 || (control.shape(1) != 2 && control.shape(1) != 3))
+                      throw InputError("write_curves: '" + r.name + "' control must be an n x 2 or n x 3 array");
+                  const auto c = control.unchecked<2>();
+                  for (py::ssize_t i = 0; i < control.shape(0); ++i)
+                      r.control.emplace_back(c(i, 0), c(i, 1), control.shape(1) == 3 ? c(i, 2) : 0.0);
+                  file.curves.push_back(std::move(r));
+              }
+              write_swp(path, file);
+          },
+          py::arg("path"), py::arg("curves"),
+          "Writes curves (dicts as read_curves gives, keyword and control required) as SWP.");
+    m.def("subdivide",
+          [](const py::array_t<double, py::array::c_style | py::array::forcecast>& V, const py::object& F,
+             const std::string& scheme, int levels, std::optional<std::string> weights, std::optional<std::string> boundary,
+             const std::string& impl) {
+              const RefineRequest req = request_for(scheme, levels, weights, boundary);
+              const Implementation& implementation = find_implementation(impl);
+              PolyMesh mesh = mesh_from(V, F);
+              PolyMesh out;
+              {
+                  py::gil_scoped_release unlocked;  // the references are C++ and do not touch Python
+                  out = implementation.refine_last(mesh, req);
+              }
+              return mesh_tuple(std::move(out));
+          },
+          py::arg("V"), py::arg("F"), py::arg("scheme") = "loop", py::arg("levels") = 1, py::arg("weights") = py::none(),
+          py::arg("boundary") = py::none(), py::arg("impl") = "core",
+          "Subdivides (V, F) by `levels` levels of `scheme` (loop, catmull-clark, doo-sabin, sqrt3, butterfly, "
+          "modified-butterfly) with core or a reference (impl: core, opensubdiv, openmesh, cgal, ...), which applies "
+          "the closest rule it has. Returns (V, F) in that implementation's numbering.");
+    m.def("subdivision_matrix",
+          [](const py::array_t<double, py::array::c_style | py::array::forcecast>& V, const py::object& F,
+             const std::string& weights, const std::string& boundary) {
+              const PolyMesh mesh = mesh_from(V, F);
+              const LoopOptions options{loop_weights_from_string(weights), loop_boundary_from_string(boundary)};
+              Eigen::SparseMatrix<double, Eigen::RowMajor> S = loop_subdivision_matrix(to_tri_mesh(mesh, "subdivision_matrix"), options);
+              S.makeCompressed();
+              std::vector<double> data(S.valuePtr(), S.valuePtr() + S.nonZeros());
+              std::vector<int> indices(S.innerIndexPtr(), S.innerIndexPtr() + S.nonZeros());
+              std::vector<int> indptr(S.outerIndexPtr(), S.outerIndexPtr() + S.rows() + 1);
+              const py::ssize_t nnz = S.nonZeros(), rows = S.rows(), cols = S.cols();
+              return py::module_::import("scipy.sparse").attr("csr_matrix")(
+                  py::make_tuple(owning_array(std::move(data), {nnz}), owning_array(std::move(indices), {nnz}),
+                                 owning_array(std::move(indptr), {rows + 1})),
+                  py::arg("shape") = py::make_tuple(rows, cols));
+          },
+          py::arg("V"), py::arg("F"), py::arg("weights") = "loop", py::arg("boundary") = "edge-only",
+          "Loop's one-level subdivision matrix S (V1 = S @ V0; rows in core's output order: old vertices, then "
+          "one per edge) as a scipy.sparse.csr_matrix.");
+    m.def("compare",
+          [](const py::array_t<double, py::array::c_style | py::array::forcecast>& V, const py::object& F, int levels,
+             const std::string& weights, const std::string& boundary, std::vector<std::string> references,
+             const std::string& tier, double tolerance, py::object subject, const std::string& subject_name,
+             double timeout) {
+              LoopComparisonRequest req;
+              req.options = {loop_weights_from_string(weights), loop_boundary_from_string(boundary)};
+              if (levels < 1 || levels > 12) throw InputError("levels must be in 1..12 (got " + std::to_string(levels) + ")");
+              req.levels = levels;
+              req.references = std::move(references);
+              req.tier = tier_from_string(tier);
+              req.tolerance = tolerance;
+              req.timeout_seconds = timeout;
+              std::unique_ptr<Implementation> under_test;
+              if (!subject.is_none()) {
+                  if (!PyCallable_Check(subject.ptr())) throw InputError("subject must be callable: subject(V, F) -> (V, F)");
+                  under_test = python_subject(subject_name, subject);
+                  req.subject = under_test.get();
+              }
+              const PolyMesh mesh = mesh_from(V, F);
+              return json_to_python(to_json(compare_loop(to_tri_mesh(mesh, "compare"), "python", req)));
+          },
+          py::arg("V"), py::arg("F"), py::arg("levels") = 2, py::arg("weights") = "loop", py::arg("boundary") = "edge-only",
+          py::arg("references") = std::vector<std::string>{}, py::arg("tier") = "weak", py::arg("tolerance") = 1e-12,
+          py::arg("subject") = py::none(), py::arg("subject_name") = "python", py::arg("timeout") = 120.0,
+          "Compares Loop subdivision of (V, F) by core (or `subject`) with each reference (all built when empty): "
+          "the same record as `crossdiv compare --json` (runs, verdicts, divergence classes, worst vertex; with a "
+          "subject, the named rule it follows). subject(V, F) -> (V, F) refines one level; it runs in a child "
+          "process with `timeout` seconds, so its exception, crash or hang is recorded, not raised.");
+}

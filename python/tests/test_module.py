@@ -1,0 +1,156 @@
+"""The Python module crossdiv: hand values on a tetrahedron, the references through it, the
+subdivision matrix against subdivision, the comparison record against `crossdiv compare
+--json`, and a Python function as the implementation under test (examples/python/loop_numpy.py).
+
+Run by CTest with PYTHONPATH=build/python, CROSSDIV_BIN and CROSSDIV_SOURCE set."""
+import json
+import math
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+import scipy.sparse
+from scipy.spatial import cKDTree
+
+import crossdiv
+
+SOURCE = os.environ.get("CROSSDIV_SOURCE", os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+sys.path.insert(0, os.path.join(SOURCE, "examples", "python"))
+from loop_numpy import loop_once  # noqa: E402
+
+# A regular tetrahedron's corners, outward oriented.
+TETRA_V = np.array([[1, 1, 1], [1, -1, -1], [-1, 1, -1], [-1, -1, 1]], dtype=float)
+TETRA_F = np.array([[0, 1, 2], [0, 2, 3], [0, 3, 1], [1, 3, 2]], dtype=np.int32)
+
+
+def largest_distance_to_nearest(A, B):
+    """max over rows of A of the distance to the nearest row of B (A, B: n x 3)."""
+    return cKDTree(B).query(A)[0].max()
+
+
+def test_one_loop_level_of_a_tetrahedron_by_hand():
+    V, F = crossdiv.subdivide(TETRA_V, TETRA_F, levels=1)
+    assert V.shape == (10, 3) and F.shape == (16, 3) and F.dtype == np.int32
+    # Valence 3: beta = 3/16, so a vertex point is 7/16 v + 3/16 (sum of the other three) =
+    # 7/16 v - 3/16 v (the four corners sum to 0) = v / 4.
+    np.testing.assert_array_equal(V[:4], TETRA_V / 4)
+    # An edge point: 3/8 of its ends and 1/8 of the two other corners = (a + b) / 4.
+    edge_points = {tuple(p) for p in V[4:]}
+    for a in range(4):
+        for b in range(a + 1, 4):
+            assert tuple((TETRA_V[a] + TETRA_V[b]) / 4) in edge_points
+
+
+def test_arrays_out_are_the_meshs_own_memory():
+    V, F = crossdiv.subdivide(TETRA_V, TETRA_F, levels=2)
+    # Not copied: each array is a view on a buffer the module handed over.
+    assert not V.flags.owndata and not F.flags.owndata and V.base is not None
+    assert V.flags.c_contiguous and V.dtype == np.float64
+
+
+def test_each_reference_refines_as_core_does():
+    core, _ = crossdiv.subdivide(TETRA_V, TETRA_F, levels=2)
+    for impl in ("opensubdiv", "openmesh", "cgal"):
+        V, F = crossdiv.subdivide(TETRA_V, TETRA_F, levels=2, impl=impl)
+        assert V.shape == core.shape and F.shape == (64, 3), impl
+        # The same vertex set to rounding (each library numbers and sums in its own order).
+        assert largest_distance_to_nearest(V, core) < 1e-15 and largest_distance_to_nearest(core, V) < 1e-15, impl
+
+
+def test_the_subdivision_matrix_is_subdivision():
+    S = crossdiv.subdivision_matrix(TETRA_V, TETRA_F)
+    assert isinstance(S, scipy.sparse.csr_matrix) and S.shape == (10, 4)
+    np.testing.assert_allclose(np.asarray(S.sum(axis=1)).ravel(), 1, rtol=0, atol=1e-15)
+    V, _ = crossdiv.subdivide(TETRA_V, TETRA_F, levels=1)
+    np.testing.assert_array_equal(S @ TETRA_V, V)
+    assert S[0, 0] == 7 / 16 and S[0, 1] == 3 / 16
+
+
+def test_meshes_and_curves_round_trip_through_files(tmp_path):
+    path = str(tmp_path / "t.off")
+    crossdiv.write_mesh(path, TETRA_V, TETRA_F)
+    V, F = crossdiv.read_mesh(path)
+    np.testing.assert_array_equal(V, TETRA_V)
+    np.testing.assert_array_equal(F, TETRA_F)
+    quads = str(tmp_path / "mixed.obj")
+    crossdiv.write_mesh(quads, TETRA_V, [[0, 1, 2, 3], [0, 2, 3]])
+    _, mixed = crossdiv.read_mesh(quads)
+    assert [list(f) for f in mixed] == [[0, 1, 2, 3], [0, 2, 3]]
+    curves = [{"name": "arc", "keyword": "bez2", "steps": 8, "control": np.array([[0, 0], [0.5, 1], [1.5, 1], [2, 0.1]])},
+              {"name": "", "keyword": "bsp3", "steps": 4, "control": np.array([[0, 0, 0], [1, 0, 1], [1, 1, 2], [0, 1, 3]])}]
+    swp = str(tmp_path / "c.swp")
+    crossdiv.write_curves(swp, curves)
+    back = crossdiv.read_curves(swp)
+    assert [(c["name"], c["keyword"], c["dim"], c["steps"]) for c in back] == [("arc", "bez2", 2, 8), ("", "bsp3", 3, 4)]
+    np.testing.assert_array_equal(back[0]["control"][:, :2], curves[0]["control"])
+    np.testing.assert_array_equal(back[1]["control"], curves[1]["control"])
+
+
+def test_bad_input_names_the_element():
+    with pytest.raises(crossdiv.InputError, match="F face 1 corner 2: vertex 9 is not in V"):
+        crossdiv.subdivide(TETRA_V, [[0, 1, 2], [0, 2, 9]])
+    with pytest.raises(ValueError, match="V row 3 is not finite"):
+        crossdiv.subdivide(np.vstack([TETRA_V[:3], [math.nan, 0, 0]]), TETRA_F)
+    with pytest.raises(ValueError, match="unknown scheme"):
+        crossdiv.subdivide(TETRA_V, TETRA_F, scheme="loopy")
+    with pytest.raises(ValueError, match="cannot open|No such|not found|t.obj"):
+        crossdiv.read_mesh("/nonexistent/t.obj")
+
+
+def test_compare_is_the_record_of_crossdiv_compare_json(tmp_path):
+    mesh = str(tmp_path / "octa.off")
+    V = np.array([[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]], dtype=float)
+    F = np.array([[0, 2, 4], [2, 1, 4], [1, 3, 4], [3, 0, 4], [2, 0, 5], [1, 2, 5], [3, 1, 5], [0, 3, 5]])
+    crossdiv.write_mesh(mesh, V, F)
+    record = crossdiv.compare(V, F, levels=2, weights="warren", references=["opensubdiv", "openmesh"])
+    out = str(tmp_path / "cli.json")
+    subprocess.run([os.environ.get("CROSSDIV_BIN", os.path.join(SOURCE, "build", "verification", "crossdiv")),
+                    "compare", mesh, "--levels", "2", "--weights", "warren", "--against", "opensubdiv,openmesh",
+                    "--json", out], check=False, capture_output=True, timeout=300)
+    with open(out) as f:
+        cli = json.load(f)
+    cli_record = cli["comparisons"][0] if "comparisons" in cli else cli
+    key = lambda r: (r["reference"], r["verdict"], r.get("divergence_class"), r["positions"]["max_rel"])  # noqa: E731
+    assert [key(r) for r in record["runs"]] == [key(r) for r in cli_record["runs"]]
+    assert {r["divergence_class"] for r in record["runs"]} == {"weight-family"}
+
+
+def test_a_python_loop_is_identified_by_its_rule():
+    V = np.array([[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]], dtype=float)
+    F = np.array([[0, 2, 4], [2, 1, 4], [1, 3, 4], [3, 0, 4], [2, 0, 5], [1, 2, 5], [3, 1, 5], [0, 3, 5]])
+    loop = crossdiv.compare(V, F, levels=2, references=["opensubdiv"], subject=loop_once)
+    assert loop["subject"]["status"] == "ok"
+    assert loop["subject"]["rules"]["rule"] == "weights=loop boundary=edge-only"
+    assert loop["runs"][0]["verdict"] == "agree"
+    warren = crossdiv.compare(V, F, levels=2, references=["opensubdiv"], subject=lambda V, F: loop_once(V, F, "warren"))
+    assert warren["subject"]["rules"]["rule"] == "weights=warren boundary=edge-only"
+    assert warren["runs"][0]["divergence_class"] == "weight-family"
+
+
+def test_a_subject_that_raises_or_lies_is_recorded_not_raised():
+    def broken(V, F):
+        raise RuntimeError("my bug")
+    record = crossdiv.compare(TETRA_V, TETRA_F, levels=1, references=["opensubdiv"], subject=broken)
+    assert record["subject"]["status"] != "ok" and "my bug" in record["subject"]["status_message"]
+    assert record["runs"] == []
+
+    def non_finite(V, F):
+        V1, F1 = loop_once(V, F)
+        V1[0, 0] = math.nan
+        return V1, F1
+    record = crossdiv.compare(TETRA_V, TETRA_F, levels=1, references=["opensubdiv"], subject=non_finite)
+    assert record["subject"]["status"] != "ok"
+
+
+def test_the_example_script_names_warrens_rule_and_draws(tmp_path):
+    mesh, png = str(tmp_path / "tetra.off"), str(tmp_path / "plot.png")
+    crossdiv.write_mesh(mesh, TETRA_V * 0.5, TETRA_F)
+    # Valence 3 everywhere: Warren's weights equal Loop's there, so the two agree.
+    done = subprocess.run(["/usr/bin/python3", os.path.join(SOURCE, "examples", "python", "compare_with_opensubdiv.py"), mesh,
+                           "--weights", "warren", "-o", png], capture_output=True, text=True, timeout=300,
+                          env=dict(os.environ))
+    assert done.returncode == 0, done.stderr
+    assert "numpy Loop vs opensubdiv: agree" in done.stdout, done.stdout
+    assert os.path.getsize(png) > 5000
