@@ -78,3 +78,20 @@ def test_a_broken_view_file_is_a_console_error(report, tmp_path):
         f.write("crossdivView({\"job\": 0, \"levels\": 17});\n")
     with pytest.raises(AssertionError, match="console error"):
         check_viewer.check(str(broken))
+
+
+def test_a_representative_link_opens_its_case_in_the_viewer(report):
+    from selenium.webdriver.common.by import By
+    driver = check_viewer.browser()
+    try:
+        driver.get("file://" + os.path.abspath(os.path.join(report, "index.html")))
+        check_viewer.wait_for(driver, "return window.crossdivViewer && window.crossdivViewer.ready === true", "the viewer")
+        links = [a for a in driver.find_elements(By.CSS_SELECTOR, "a[data-view]") if "octahedron" in a.text]
+        assert links, "no link to the octahedron's view"
+        links[0].click()
+        check_viewer.wait_for(driver, "return window.crossdivViewer.state.entry && "
+                                      "window.crossdivViewer.state.entry.id.includes('octahedron')", "the linked case")
+        assert "bundled:octahedron" in driver.find_element(By.CSS_SELECTOR, "#crossdiv-viewer .cv-info").text
+        assert not check_viewer.console_errors(driver)
+    finally:
+        driver.quit()
