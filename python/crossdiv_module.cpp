@@ -9,7 +9,6 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -78,37 +77,35 @@ PolyMesh mesh_from(const py::array_t<double, py::array::c_style | py::array::for
         mesh.positions[i] = Vec3(v(i, 0), v(i, 1), v(i, 2));
         if (!mesh.positions[i].allFinite()) throw InputError("V row " + std::to_string(i) + " is not finite");
     }
-    std::vector<int> corners;
-    const auto add = [&](size_t face) {
-        if (corners.size() < 3) throw InputError("F face " + std::to_string(face) + " has fewer than 3 corners");
-        for (size_t c = 0; c < corners.size(); ++c)
+    // Indices are checked as read (any integer width), before they become the mesh's ints.
+    std::vector<long long> corners;
+    std::vector<int> face;
+    const auto add = [&](size_t f) {
+        if (corners.size() < 3) throw InputError("F face " + std::to_string(f) + " has fewer than 3 corners");
+        face.clear();
+        for (size_t c = 0; c < corners.size(); ++c) {
             if (corners[c] < 0 || corners[c] >= mesh.num_vertices())
-                throw InputError("F face " + std::to_string(face) + " corner " + std::to_string(c) + ": vertex " +
+                throw InputError("F face " + std::to_string(f) + " corner " + std::to_string(c) + ": vertex " +
                                  std::to_string(corners[c]) + " is not in V (" + std::to_string(mesh.num_vertices()) +
                                  " vertices)");
-        mesh.add_face(corners);
+            face.push_back(static_cast<int>(corners[c]));
+        }
+        mesh.add_face(face);
     };
     if (py::isinstance<py::array>(F) && py::array(F).ndim() == 2) {
         const auto faces = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(F);
         if (!faces) throw InputError("F must be an array of integer vertex indices");
         const auto f = faces.unchecked<2>();
         for (py::ssize_t i = 0; i < faces.shape(0); ++i) {
-            corners.clear();
-            for (py::ssize_t c = 0; c < faces.shape(1); ++c) {
-                const long long index = f(i, c);
-                corners.push_back(index < 0 || index > (1ll << 31) - 1 ? -1 : static_cast<int>(index));
-            }
+            corners.assign(f.data(i, 0), f.data(i, 0) + faces.shape(1));
             add(i);
         }
         return mesh;
     }
     size_t i = 0;
-    for (const py::handle face : F) {
+    for (const py::handle row : F) {
         corners.clear();
-        for (const py::handle index : face) {
-            const long long value = index.cast<long long>();
-            corners.push_back(value < 0 || value > (1ll << 31) - 1 ? -1 : static_cast<int>(value));
-        }
+        for (const py::handle index : row) corners.push_back(index.cast<long long>());
         add(i++);
     }
     return mesh;
@@ -190,17 +187,12 @@ PYBIND11_MODULE(crossdiv, m) {
                   const std::string keyword = d["keyword"].cast<std::string>();
                   // The type and dimension come from the keyword, as the reader derives them.
                   CurveRecord r;
-                  const std::string stem = keyword.substr(0, 3);
-                  const int dim = keyword.size() == 4 ? keyword[3] - '0' : 0;
-                  static const std::map<std::string, CurveType> kTypes{
-                      {"bez", CurveType::BezierChain}, {"bsp", CurveType::BSpline}, {"crm", CurveType::CatmullRom},
-                      {"crc", CurveType::CatmullRomClosed}, {"tcb", CurveType::Tcb}, {"tcc", CurveType::TcbClosed},
-                      {"ovh", CurveType::BesselOverhauser}, {"ovc", CurveType::BesselOverhauserClosed}};
-                  if (!kTypes.count(stem) || (dim != 2 && dim != 3))
-                      throw InputError("write_curves: keyword '" + keyword + "' is not a control-point record (bez2, bsp3, crm2, ...)");
+                  const std::optional<SplineKeyword> spline = spline_keyword(keyword);
+                  if (!spline)
+                      throw InputError("write_curves: keyword '" + keyword + "' is not a spline record (bez2, bsp3, crm2, ...)");
                   r.keyword = keyword;
-                  r.type = kTypes.at(stem);
-                  r.dim = dim;
+                  r.type = spline->type;
+                  r.dim = spline->dim;
                   r.name = d.contains("name") ? d["name"].cast<std::string>() : "";
                   r.steps = d.contains("steps") ? d["steps"].cast<int>() : 16;
                   const auto control = d["control"].cast<py::array_t<double, py::array::c_style | py::array::forcecast>>();

@@ -10,6 +10,7 @@ the first case whose label contains TEXT (a divergence class, an input) instead 
 Needs Debian's chromium, chromium-driver and python3-selenium; a report without views (the
 suite made no divergence small enough) is reported and passes.
 """
+import argparse
 import io
 import os
 import sys
@@ -147,7 +148,6 @@ def check(folder, screenshots=False, case=None):
 
 
 def main(argv):
-    import argparse
     parser = argparse.ArgumentParser(description="Check a report's 3D viewer in headless Chromium.")
     parser.add_argument("folder")
     parser.add_argument("--screenshots", action="store_true")

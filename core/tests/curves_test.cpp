@@ -407,7 +407,8 @@ TEST(SwpWriter, EveryControlPointRecordReadsBackBitForBit) {
         "tcb2 d 6 4 [0 0 0.5 -0.25 1] [1 1] [2 0 -1 0 0] [3 1]\n"
         "tcc3 e 3 3 [0 0 0] [1 0 0] [0 1 0]\n"
         "ovh2 f 4 4 [0 0] [1 1] [3 1] [4 0]\n"
-        "ovc2 g 4 3 [0 0] [2 0] [1 1]\n";
+        "ovc2 g 4 3 [0 0] [2 0] [1 1]\n"
+        "kpc2 h 4 4 [0 0] [2 0] [2 1] [0 1.5]\n";
     std::istringstream in(text);
     const crossdiv::CurveFile first = crossdiv::read_swp(in, "first.swp");
     const crossdiv::CurveFile again = swp_round_trip(text);
@@ -439,4 +440,15 @@ TEST(SwpWriter, RecordsSwpCannotHoldAsPointsAreRefusedByName) {
     bad.curves.push_back(file.curves[1]);
     bad.curves[0].control[2].x() = NAN;
     EXPECT_THROW(crossdiv::write_swp(out, bad), crossdiv::InputError);
+    // A keyword that does not name the record's type: bez2 on a B-spline would read back as
+    // another curve.
+    crossdiv::CurveFile renamed;
+    renamed.curves.push_back(file.curves[1]);
+    renamed.curves[0].type = crossdiv::CurveType::BSpline;
+    try {
+        crossdiv::write_swp(out, renamed);
+        FAIL() << "a B-spline was written as bez2";
+    } catch (const crossdiv::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("which its keyword does not name"), std::string::npos) << e.what();
+    }
 }

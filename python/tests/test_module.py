@@ -79,11 +79,15 @@ def test_meshes_and_curves_round_trip_through_files(tmp_path):
     _, mixed = crossdiv.read_mesh(quads)
     assert [list(f) for f in mixed] == [[0, 1, 2, 3], [0, 2, 3]]
     curves = [{"name": "arc", "keyword": "bez2", "steps": 8, "control": np.array([[0, 0], [0.5, 1], [1.5, 1], [2, 0.1]])},
-              {"name": "", "keyword": "bsp3", "steps": 4, "control": np.array([[0, 0, 0], [1, 0, 1], [1, 1, 2], [0, 1, 3]])}]
+              {"name": "", "keyword": "bsp3", "steps": 4, "control": np.array([[0, 0, 0], [1, 0, 1], [1, 1, 2], [0, 1, 3]])},
+              {"name": "loop", "keyword": "kpc2", "steps": 6, "control": np.array([[0, 0], [2, 0], [2, 1], [0, 1.5]])}]
     swp = str(tmp_path / "c.swp")
     crossdiv.write_curves(swp, curves)
     back = crossdiv.read_curves(swp)
-    assert [(c["name"], c["keyword"], c["dim"], c["steps"]) for c in back] == [("arc", "bez2", 2, 8), ("", "bsp3", 3, 4)]
+    assert [(c["name"], c["keyword"], c["dim"], c["steps"]) for c in back] == [
+        ("arc", "bez2", 2, 8), ("", "bsp3", 3, 4), ("loop", "kpc2", 2, 6)]
+    with pytest.raises(crossdiv.InputError, match="keyword 'circ' is not a spline record"):
+        crossdiv.write_curves(swp, [{"keyword": "circ", "control": np.zeros((4, 2))}])
     np.testing.assert_array_equal(back[0]["control"][:, :2], curves[0]["control"])
     np.testing.assert_array_equal(back[1]["control"], curves[1]["control"])
 
@@ -91,6 +95,9 @@ def test_meshes_and_curves_round_trip_through_files(tmp_path):
 def test_bad_input_names_the_element():
     with pytest.raises(crossdiv.InputError, match="F face 1 corner 2: vertex 9 is not in V"):
         crossdiv.subdivide(TETRA_V, [[0, 1, 2], [0, 2, 9]])
+    # An index past 32 bits is named as given, not as it would wrap.
+    with pytest.raises(crossdiv.InputError, match="F face 0 corner 1: vertex 1099511627776 is not in V"):
+        crossdiv.subdivide(TETRA_V, np.array([[0, 2**40, 2]], dtype=np.int64))
     with pytest.raises(ValueError, match="V row 3 is not finite"):
         crossdiv.subdivide(np.vstack([TETRA_V[:3], [math.nan, 0, 0]]), TETRA_F)
     with pytest.raises(ValueError, match="unknown scheme"):

@@ -1,6 +1,5 @@
 """The report's figures, drawn with matplotlib (Debian's python3-matplotlib) and saved as PNG
 under figures/; each function returns the path relative to the report folder."""
-import json
 import math
 import os
 from collections import defaultdict
@@ -13,8 +12,11 @@ from matplotlib.colors import ListedColormap  # noqa: E402
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
 
 from .records import CATEGORIES, category, entry_label, short_input  # noqa: E402
+from .viewer import first_parting_level, read_view  # noqa: E402
 
 MAX_ERROR_PICTURES = 12
+# Larger meshes are left to the 3D viewer: matplotlib's 3D collections stay fast up to about this.
+MAX_ERROR_PICTURE_FACES = 20000
 
 
 def save(fig, figdir, name):
@@ -125,20 +127,27 @@ def _light_shades(polygons, light):
 
 def error_pictures(mesh_cases, folder, figdir):
     """Meshes coloured by per-vertex distance to the reference, one per divergence class,
-    reference and boundary rule (the first few), so a reader sees where two surfaces part."""
+    reference and boundary rule (the first few), so a reader sees where two surfaces part: our
+    mesh at the first level where they part by more than the case's tolerance, read from the
+    case's 3D view."""
     pictures, seen = [], set()
     for c in mesh_cases:
+        if "view" not in c:
+            continue
+        view = None
         for r in c["runs"]:
-            if "error_field" not in r or len(pictures) >= MAX_ERROR_PICTURES:
+            if r["verdict"] != "diverge" or len(pictures) >= MAX_ERROR_PICTURES:
                 continue
             key = (r.get("divergence_class"), r["reference"], c.get("options", {}).get("boundary"))
             if key in seen:
                 continue
+            view = view or read_view(folder, c["view"])
+            parting = first_parting_level(view, r["reference"], c.get("tolerance_rel") or 0)
+            if parting is None or len(view["levels"][parting[0]]["triangles"]) > MAX_ERROR_PICTURE_FACES:
+                continue
             seen.add(key)
-            with open(os.path.join(folder, r["error_field"])) as f:
-                field = json.load(f)
-            pts, faces = field["positions"], field["faces"]
-            dist = [d if d is not None else float("nan") for d in field["distance"]]
+            level, dist = parting
+            pts, faces = view["levels"][level]["positions"], view["levels"][level]["triangles"]
             face_err = [max(dist[v] for v in face) for face in faces]
             fig = plt.figure(figsize=(5, 4.4))
             ax = fig.add_subplot(projection="3d")
@@ -151,7 +160,7 @@ def error_pictures(mesh_cases, folder, figdir):
             _equal_scales(ax, pts)
             ax.set_axis_off()
             fig.colorbar(coll, ax=ax, shrink=0.6, label="distance to reference")
-            ax.set_title(f"{short_input(c['input'])} vs {r['reference']}, level {field['level']}\n"
+            ax.set_title(f"{short_input(c['input'])} vs {r['reference']}, level {level}\n"
                          f"{r.get('divergence_class')}, {entry_label(c)}", fontsize=8)
             name = f"error_job{c['job']}_{r['reference']}.png"
             fig.savefig(os.path.join(figdir, name), dpi=100)

@@ -1,9 +1,12 @@
 """The report's interactive parts: the first screen's matrix of outcomes, the failures and the
 classes with a representative each, and the 3D divergence viewer (reports/viewer/viewer.js)
 over the cases `crossdiv suite` wrote a view for (views/jobN.js)."""
+import base64
 import json
+import math
 import os
 import shutil
+from array import array
 from collections import Counter, defaultdict
 
 from .model import Interactive, Link, Section, Table, Text
@@ -16,6 +19,43 @@ THREE_FILES = ("/usr/share/javascript/three/build/three.min.js",
 VIEWER_JS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "viewer", "viewer.js")
 
 FAILURE = ("ours-failed", "diverge (unexplained)")
+
+
+def read_view(folder, path):
+    """A views/jobN.js file (divergence_view_file.h) as Python lists: {"levels": [{"positions":
+    [(x, y, z)], "triangles": [(a, b, c)]}], "references": {name: [None | [(dx, dy, dz)]]}}."""
+    with open(os.path.join(folder, path)) as f:
+        text = f.read().strip()
+    prefix, suffix = "crossdivView(", ");"
+    if not (text.startswith(prefix) and text.endswith(suffix)):
+        raise ValueError(f"{path}: not a crossdiv view file")
+    data = json.loads(text[len(prefix):-len(suffix)])
+
+    def decode(b64, code, width):
+        values = array(code, base64.b64decode(b64))
+        return [tuple(values[i:i + width]) for i in range(0, len(values), width)]
+
+    return {"levels": [{"positions": decode(l["positions"], "d", 3), "triangles": decode(l["triangles"], "i", 3)}
+                       for l in data["levels"]],
+            "references": {name: [None if o is None else decode(o, "f", 3) for o in per_level]
+                           for name, per_level in data["references"].items()}}
+
+
+def first_parting_level(view, reference, tolerance_rel):
+    """(level, per-vertex distances) of the first level where `reference` parts from ours by more
+    than `tolerance_rel` of that level's diagonal, else its last level with a vertex map; None
+    when it has no map at any level."""
+    found = None
+    for level, offsets in enumerate(view["references"].get(reference, [])):
+        if offsets is None or level == 0:
+            continue
+        distance = [math.sqrt(sum(x * x for x in o)) for o in offsets]
+        pts = view["levels"][level]["positions"]
+        diagonal = math.dist([min(p[k] for p in pts) for k in range(3)], [max(p[k] for p in pts) for k in range(3)])
+        found = (level, distance)
+        if max((d for d in distance if not math.isnan(d)), default=0) > tolerance_rel * diagonal:
+            return found
+    return found
 
 
 def _kind(case, run):
@@ -70,11 +110,11 @@ def view_entries(mesh_cases):
     for e in entries:
         new = [k for k in e["classes"] if k not in seen]
         seen.update(e["classes"])
-        e["_rank"] = (not e["failure"], -max((frequency[k] for k in new), default=0))
-        (first if e["failure"] or new else rest).append(e)
-    ordered = sorted(first, key=lambda e: e["_rank"]) + rest
-    for e in ordered:
-        del e["_rank"]
+        if e["failure"] or new:
+            first.append(((not e["failure"], -max((frequency[k] for k in new), default=0)), e))
+        else:
+            rest.append(e)
+    ordered = [e for _, e in sorted(first, key=lambda pair: pair[0])] + rest
     for e in ordered:
         e["label"] = ("FAILURE " if e["failure"] else "") + f"job {e['job']}: {e['id']} [{', '.join(e['classes'])}]"
     return ordered

@@ -2,9 +2,12 @@
 table cell never breaks its row, and a small results.json becomes a report whose every
 section, table and figure is there."""
 import json
+import math
 import os
 import re
 import sys
+
+import pytest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 
@@ -364,3 +367,31 @@ def test_multiresolution_gets_its_table_and_figure(tmp_path):
     failed = [t for t in tables_of(md) if t[0][:2] == [" mesh ", " not decomposed "]]
     assert failed and failed[0][2][1].strip() == "multiresolution: vertex 3 has no normal"
     assert (tmp_path / "figures" / "multiresolution.png").stat().st_size > 1000
+
+
+def test_a_view_file_reads_back_and_names_the_first_level_where_surfaces_part(tmp_path):
+    import base64
+    import struct
+    from report.viewer import first_parting_level, read_view
+    b64 = lambda code, values: base64.b64encode(struct.pack("<%d%s" % (len(values), code), *values)).decode()  # noqa: E731
+    triangle = [0, 0, 0, 1, 0, 0, 0, 1, 0]
+    nan = float("nan")
+    data = {"job": 0, "subject": "core",
+            "levels": [{"positions": b64("d", triangle), "triangles": b64("i", [0, 1, 2])},
+                       {"positions": b64("d", triangle), "triangles": b64("i", [0, 1, 2]), "origins": b64("i", [0, -1] * 3)},
+                       {"positions": b64("d", triangle), "triangles": b64("i", [0, 1, 2]), "origins": b64("i", [0, -1] * 3)}],
+            # Level 1 parts by 1e-14 of the diagonal sqrt(2), level 2 by 0.5 (and one vertex unmatched).
+            "references": {"ref": [None, b64("f", [0, 0, 1e-14, 0, 0, 0, 0, 0, 0]), b64("f", [0, 0, 0.5, 0, 0, 0, nan, nan, nan])]}}
+    (tmp_path / "views").mkdir()
+    (tmp_path / "views" / "job0.js").write_text("crossdivView(" + json.dumps(data) + ");\n")
+    view = read_view(str(tmp_path), "views/job0.js")
+    assert view["levels"][1]["positions"] == [(0, 0, 0), (1, 0, 0), (0, 1, 0)]
+    assert view["levels"][2]["triangles"] == [(0, 1, 2)]
+    assert view["references"]["ref"][0] is None
+    level, distance = first_parting_level(view, "ref", 1e-12)
+    assert level == 2 and distance[0] == 0.5 and distance[1] == 0 and math.isnan(distance[2])
+    assert first_parting_level(view, "ref", 1e-16)[0] == 1  # 1e-14 > 1e-16 * sqrt(2)
+    assert first_parting_level(view, "other", 1e-12) is None
+    (tmp_path / "views" / "bad.js").write_text("alert(1);")
+    with pytest.raises(ValueError, match="not a crossdiv view file"):
+        read_view(str(tmp_path), "views/bad.js")

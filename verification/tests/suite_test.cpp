@@ -142,10 +142,10 @@ TEST(Suite, RunsInWorkersAndRecordsEachOutcome) {
     // A triangle naming a vertex twice: core refines it by OpenSubdiv's rules, CGAL refuses it.
     EXPECT_EQ(outcome_label(recs[3], recs[3].runs[0]), "ref-rejected");
     EXPECT_EQ(recs[3].core_error, "");
-    // The corner-rule divergence kept its error field for the report.
-    const RunRecord& om = recs[1].runs[1];
-    ASSERT_TRUE(om.detail.contains("error_field"));
-    EXPECT_TRUE(fs::exists(d / om.detail["error_field"].get<std::string>()));
+    // The corner-rule divergence kept its 3D view for the report; the agreeing case has none.
+    ASSERT_TRUE(recs[1].detail.contains("view"));
+    EXPECT_TRUE(fs::exists(d / recs[1].detail["view"].get<std::string>()));
+    EXPECT_FALSE(recs[0].detail.contains("view"));
     EXPECT_EQ(recs[1].detail["worst_vertex"]["valence"], 2);
 }
 

@@ -17,12 +17,11 @@ using io_detail::lex;
 using io_detail::Parser;
 using io_detail::Token;
 
-struct SplineKeyword {
+struct NamedSpline {
     const char* keyword;
-    CurveType type;
-    int dim;
+    SplineKeyword spline;
 };
-constexpr SplineKeyword kSplines[] = {
+constexpr NamedSpline kSplines[] = {
     {"bez2", CurveType::BezierChain, 2},      {"bez3", CurveType::BezierChain, 3},
     {"bsp2", CurveType::BSpline, 2},          {"bsp3", CurveType::BSpline, 3},
     {"crm2", CurveType::CatmullRom, 2},       {"crm3", CurveType::CatmullRom, 3},
@@ -75,6 +74,12 @@ void read_camera_points(Parser& p, CurveRecord& r, long n) {
 
 }  // namespace
 
+std::optional<SplineKeyword> spline_keyword(std::string_view keyword) {
+    for (const NamedSpline& k : kSplines)
+        if (keyword == k.keyword) return k.spline;
+    return std::nullopt;
+}
+
 CurveFile read_swp(std::istream& in, const std::string& name) {
     Parser p(lex(in), name);
     CurveFile f;
@@ -101,10 +106,7 @@ CurveFile read_swp(std::istream& in, const std::string& name) {
         CurveRecord r;
         r.keyword = head.text;
         r.line = head.line;
-        const SplineKeyword* spline = nullptr;
-        for (const SplineKeyword& k : kSplines)
-            if (head.text == k.keyword) spline = &k;
-        if (spline) {
+        if (const std::optional<SplineKeyword> spline = spline_keyword(head.text)) {
             r.type = spline->type;
             r.dim = spline->dim;
             r.name = p.word("a curve name");

@@ -11,21 +11,6 @@
 namespace crossdiv {
 namespace {
 
-/// The SWP keyword stem of a record type SWP holds as control points; empty for the others.
-std::string_view stem(CurveType t) {
-    switch (t) {
-        case CurveType::BezierChain: return "bez";
-        case CurveType::BSpline: return "bsp";
-        case CurveType::CatmullRom: return "crm";
-        case CurveType::CatmullRomClosed: return "crc";
-        case CurveType::Tcb: return "tcb";
-        case CurveType::TcbClosed: return "tcc";
-        case CurveType::BesselOverhauser: return "ovh";
-        case CurveType::BesselOverhauserClosed: return "ovc";
-        default: return "";
-    }
-}
-
 std::string describe(const CurveRecord& r, size_t index) {
     return "curve " + std::to_string(index) + (r.name.empty() ? "" : " '" + r.name + "'") + " (" + r.keyword + ")";
 }
@@ -37,15 +22,19 @@ void write_swp(std::ostream& out, const CurveFile& curves) {
     out << std::setprecision(17);
     for (size_t i = 0; i < curves.curves.size(); ++i) {
         const CurveRecord& r = curves.curves[i];
-        const std::string_view kind = stem(r.type);
-        if (kind.empty())
+        // The record's own keyword, when it names the record's type and dimension; a camera
+        // path's quaternions are not written.
+        const std::optional<SplineKeyword> spline = spline_keyword(r.keyword);
+        if (!spline || r.type == CurveType::CameraPath)
             throw InputError("write_swp: " + describe(r, i) + " is not a control-point record SWP holds (" +
                              std::string(to_string(r.type)) + ")");
-        if (r.dim != 2 && r.dim != 3) throw InputError("write_swp: " + describe(r, i) + " has dimension " + std::to_string(r.dim));
+        if (spline->type != r.type || spline->dim != r.dim)
+            throw InputError("write_swp: " + describe(r, i) + " is a " + std::string(to_string(r.type)) + " in " +
+                             std::to_string(r.dim) + "D, which its keyword does not name");
         const bool with_tcb = r.tcb.size() == r.control.size() && std::any_of(r.tcb.begin(), r.tcb.end(), [](const TcbParameters& p) {
             return !(p == TcbParameters{});
         });
-        out << kind << r.dim << ' ' << (r.name.empty() ? "." : r.name) << ' ' << r.steps << ' ' << r.control.size() << '\n';
+        out << r.keyword << ' ' << (r.name.empty() ? "." : r.name) << ' ' << r.steps << ' ' << r.control.size() << '\n';
         for (size_t k = 0; k < r.control.size(); ++k) {
             const Vec3& p = r.control[k];
             if (!p.allFinite()) throw InputError("write_swp: " + describe(r, i) + " point " + std::to_string(k) + " is not finite");

@@ -67,16 +67,21 @@ std::vector<const PolyMesh*> levels_of(const CoreRun& run, const PolyMesh& input
     return view;
 }
 
+/// The correspondence's vertex map at level `l` of `last`: its level map when matched level by
+/// level, the last level's map when matched by position (nullptr at the levels before).
+const std::vector<int>* level_map(const Correspondence& c, size_t l, size_t last) {
+    if (l < c.level_maps.size()) return &c.level_maps[l];
+    return l == last ? &c.ref_to_ours : nullptr;
+}
+
 /// Max relative error at each level 1..N under the level maps (or the last level only, when
 /// the match was by nearest neighbour). Positions only: topology is compared once, at the end.
 std::vector<double> level_errors(const CoreRun& core, const adapters::LevelTrace& ref, const Correspondence& c) {
     std::vector<double> e;
     for (size_t l = 1; l < ref.size(); ++l) {
         if (core.levels[l - 1].num_vertices() == 0) continue;  // a level the subject was not asked for
-        if (l < c.level_maps.size())
-            e.push_back(max_relative_distance(core.levels[l - 1], ref[l], c.level_maps[l]));
-        else if (l + 1 == ref.size())
-            e.push_back(max_relative_distance(core.levels[l - 1], ref[l], c.ref_to_ours));
+        if (const std::vector<int>* map = level_map(c, l, ref.size() - 1))
+            e.push_back(max_relative_distance(core.levels[l - 1], ref[l], *map));
     }
     return e;
 }
@@ -96,26 +101,6 @@ bool within(const LoopComparisonRequest& req, const MeshComparison& c, const std
     return false;
 }
 
-/// Our mesh at the first level that diverges, with per-vertex distances (the last level's
-/// map when matched by nearest neighbour); empty when larger than the request allows.
-std::optional<ErrorField> error_field(const CoreRun& ours, const adapters::LevelTrace& ref, const Correspondence& c,
-                                      const std::vector<double>& level_max_rel, const LoopComparisonRequest& req) {
-    const int levels = static_cast<int>(ref.size()) - 1;
-    // level_errors() has one entry per level with a map, in order, ending at the last level.
-    size_t k = 0;
-    for (int l = 1; l <= levels; ++l) {
-        const std::vector<int>* map = l < static_cast<int>(c.level_maps.size()) ? &c.level_maps[l]
-                                      : l == levels                             ? &c.ref_to_ours
-                                                                                : nullptr;
-        const PolyMesh& mesh = ours.levels[l - 1];
-        if (!map || mesh.num_vertices() == 0) continue;
-        if (level_max_rel.at(k++) <= req.tolerance && l < levels) continue;
-        if (mesh.num_faces() > req.error_field_max_faces) return std::nullopt;
-        return ErrorField{l, mesh, vertex_distances(mesh, ref[l], *map)};
-    }
-    return std::nullopt;
-}
-
 /// A reference's vertices in our numbering (`ref_to_ours`: ours for each of its vertices);
 /// NaN where none of its vertices maps.
 std::vector<Vec3> in_our_numbering(const PolyMesh& ref, const std::vector<int>& ref_to_ours, int our_vertices) {
@@ -129,12 +114,9 @@ std::vector<Vec3> in_our_numbering(const PolyMesh& ref, const std::vector<int>& 
 /// (every level when matched level by level, the last one when matched by position).
 std::vector<std::vector<Vec3>> levels_in_our_numbering(const CoreRun& ours, const PolyMesh& input,
                                                        const adapters::LevelTrace& ref, const Correspondence& c) {
-    const int levels = static_cast<int>(ref.size()) - 1;
     std::vector<std::vector<Vec3>> out(ref.size());
-    for (int l = 0; l <= levels; ++l) {
-        const std::vector<int>* map = l < static_cast<int>(c.level_maps.size()) ? &c.level_maps[l]
-                                      : l == levels                             ? &c.ref_to_ours
-                                                                                : nullptr;
+    for (size_t l = 0; l < ref.size(); ++l) {
+        const std::vector<int>* map = level_map(c, l, ref.size() - 1);
         if (!map || map->empty() || map->size() != ref[l].positions.size()) continue;
         out[l] = in_our_numbering(ref[l], *map, l == 0 ? input.num_vertices() : ours.levels[l - 1].num_vertices());
     }
@@ -301,7 +283,9 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
     // Each matched reference's last level in our vertex order, to report every
     // implementation's value at the case's worst vertex.
     std::map<std::string, std::vector<Vec3>> in_our_order;
-    // And, for the 3D view, every level of each matched reference.
+    // And, for the 3D view, every level of each matched reference (not gathered for a last
+    // level larger than the view allows).
+    const bool keep_view = req.view_max_faces > 0 && under_test->levels.back().num_faces() <= req.view_max_faces;
     std::map<std::string, std::vector<std::vector<Vec3>>> at_each_level;
     for (const Implementation* ref : refs) {
         ReferenceRun run;
@@ -354,7 +338,7 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
         run.level_max_rel = level_errors(ours, trace, run.correspondence);
         std::vector<Vec3>& mapped = in_our_order[ref->name()];
         mapped = in_our_numbering(trace.back(), run.correspondence.ref_to_ours, ours.levels.back().num_vertices());
-        if (req.view_max_faces > 0) at_each_level[ref->name()] = levels_in_our_numbering(ours, input_mesh, trace, run.correspondence);
+        if (keep_view) at_each_level[ref->name()] = levels_in_our_numbering(ours, input_mesh, trace, run.correspondence);
         if (within(tier, run.comparison, run.level_max_rel, run.hausdorff_rel)) {
             run.verdict = Verdict::Agree;
             run.explanation = tier.tier == Tier::Geometric
@@ -470,7 +454,6 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
         const Classification found = classify_divergence(tests);
         run.divergence_class = found.cls;
         run.explanation = found.explanation;
-        if (req.error_field_max_faces > 0) run.error_field = error_field(ours, trace, run.correspondence, run.level_max_rel, tier);
         out.runs.push_back(std::move(run));
     }
     const ReferenceRun* worst_run = nullptr;
@@ -478,7 +461,7 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
         if (r.verdict == Verdict::Diverge && !r.comparison.worst.empty() &&
             (!worst_run || r.comparison.worst[0].distance > worst_run->comparison.worst[0].distance))
             worst_run = &r;
-    if (worst_run && req.view_max_faces > 0 && under_test->levels.back().num_faces() <= req.view_max_faces) {
+    if (worst_run && keep_view) {
         DivergenceView& view = out.view.emplace();
         view.levels.push_back(input_mesh);
         view.levels.insert(view.levels.end(), under_test->levels.begin(), under_test->levels.end());

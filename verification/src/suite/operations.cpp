@@ -26,32 +26,9 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-/// Error fields larger than this are not kept: the report renders them with matplotlib,
-/// which stays interactive-fast up to about this many triangles.
-constexpr int kErrorFieldMaxFaces = 20000;
-
 /// 3D views larger than this (faces at the last level) are not written: about 1 MB of side
 /// file per view with four references, and a mesh any browser turns in real time.
 constexpr int kViewMaxFaces = 50000;
-
-/// Writes each diverging run's error field as fields/jobN-REF.json and names it in the run.
-void write_error_fields(const LoopComparison& c, const SuiteJob& job, const std::string& out_dir, CaseRecord& rec) {
-    for (size_t i = 0; i < c.runs.size(); ++i) {
-        const auto& field = c.runs[i].error_field;
-        if (!field) continue;
-        const std::string name = "fields/job" + std::to_string(job.index) + "-" + c.runs[i].reference + ".json";
-        json positions = json::array(), faces = json::array(), distance = json::array();
-        for (const Vec3& p : field->mesh.positions) positions.push_back({p.x(), p.y(), p.z()});
-        for (int f = 0; f < field->mesh.num_faces(); ++f)
-            faces.push_back(std::vector<int>(field->mesh.face(f), field->mesh.face(f) + field->mesh.face_size(f)));
-        for (double d : field->distance) distance.push_back(std::isfinite(d) ? json(d) : json(nullptr));
-        fs::create_directories(fs::path(out_dir) / "fields");
-        std::ofstream out(fs::path(out_dir) / name);
-        if (!out) throw InputError((fs::path(out_dir) / name).string() + ": cannot write");
-        out << json_text(json{{"level", field->level}, {"positions", positions}, {"faces", faces}, {"distance", distance}});
-        rec.runs[i].detail["error_field"] = name;
-    }
-}
 
 /// Writes the case's 3D view, when it has one, as views/jobN.js and names it in the case.
 void write_view(const LoopComparison& c, const SuiteJob& job, const std::string& out_dir, CaseRecord& rec) {
@@ -64,7 +41,6 @@ void write_view(const LoopComparison& c, const SuiteJob& job, const std::string&
 
 CaseRecord run_loop(const SuiteJob& job, const std::string& out_dir) {
     LoopComparisonRequest req = job.entry->request;
-    req.error_field_max_faces = kErrorFieldMaxFaces;
     req.view_max_faces = kViewMaxFaces;
     // The implementation under test: core, the manifest's subject program, or its result file
     // for this input.
@@ -89,7 +65,6 @@ CaseRecord run_loop(const SuiteJob& job, const std::string& out_dir) {
     const LoopComparison c =
         refused.empty() ? compare_loop(mesh, job.input, req) : compare_loop_refused(mesh, job.input, req, refused);
     CaseRecord rec = case_record(c);
-    write_error_fields(c, job, out_dir, rec);
     write_view(c, job, out_dir, rec);
     return rec;
 }

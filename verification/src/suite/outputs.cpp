@@ -178,16 +178,13 @@ SuiteSummary merge_suite_outputs(const std::vector<std::string>& dirs, const std
         for (const json& record : r["cases"]) {
             CaseRecord c = case_record_from_json(record);
             if (cases.count(c.job)) throw InputError(p.string() + ": job " + std::to_string(c.job) + " is in two shards");
-            // The side files a case names (error fields, 3D views) move with it.
-            auto copy_side_file = [&](const json& detail, const char* key) {
-                if (!detail.contains(key)) return;
-                const std::string file = detail[key].get<std::string>();
+            // The 3D view a case names moves with it.
+            if (c.detail.contains("view")) {
+                const std::string file = c.detail["view"].get<std::string>();
                 const fs::path src = fs::path(d) / file, dst = fs::path(out_dir) / file;
                 fs::create_directories(dst.parent_path());
                 if (fs::absolute(src) != fs::absolute(dst)) fs::copy_file(src, dst, fs::copy_options::overwrite_existing);
-            };
-            for (const RunRecord& run : c.runs) copy_side_file(run.detail, "error_field");
-            copy_side_file(c.detail, "view");
+            }
             cases.emplace(c.job, std::move(c));
         }
     }

@@ -25,7 +25,9 @@
 /// BZC (meshedit): N, then N `x y` pairs: one Bezier curve of degree N - 1.
 
 #include <istream>
+#include <optional>
 #include <string>
+#include <string_view>
 
 #include "crossdiv/curves/curve_record.h"
 
@@ -42,15 +44,24 @@ CurveFile read_swp(std::istream& in, const std::string& name);
 CurveFile read_bzc(const std::string& path);
 CurveFile read_bzc(std::istream& in, const std::string& name);
 
+/// What an SWP spline keyword (bez2, bsp3, crm2, ..., kpc2, cam3) makes: its type and dimension.
+struct SplineKeyword {
+    CurveType type;
+    int dim;
+};
+/// The spline an SWP keyword names; nullopt for any other word (a primitive, a surface, a typo).
+std::optional<SplineKeyword> spline_keyword(std::string_view keyword);
+
 /// Reads by extension: .swp or .bzc. @throws InputError for another extension.
 CurveFile read_curve_file(const std::string& path);
 
 /// Writes the control-point records of `curves` as SWP that read_swp reads back to the same
-/// records: bez, bsp, crm, crc, tcb and tcc (with each key's tension, continuity and bias when
-/// any is not 0), ovh and ovc, in 2D or 3D; an anonymous record is named '.'. Coordinates are
-/// written with 17 significant digits, so every double reads back bit for bit.
+/// records: every spline keyword but cam3 (tcb and tcc with each key's tension, continuity and
+/// bias when any is not 0), under the record's own keyword; an anonymous record is named '.'.
+/// Coordinates are written with 17 significant digits, so every double reads back bit for bit.
 /// @throws InputError naming the record for one SWP cannot hold this way (a primitive, a
-/// camera path, a kappa-curve, a BZC curve, a sweep) or a non-finite coordinate.
+/// camera path, a BZC curve, a keyword that does not name the record's type and dimension), a
+/// sweep, or a non-finite coordinate.
 void write_swp(std::ostream& out, const CurveFile& curves);
 void write_swp(const std::string& path, const CurveFile& curves);
 

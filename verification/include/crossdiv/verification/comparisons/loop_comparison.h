@@ -46,20 +46,10 @@ struct LoopComparisonRequest {
     /// refinement is matched to core's, renumbered into core's numbering, and compared with
     /// each reference in core's place; its rule is identified (rule_identification.h).
     const Implementation* subject = nullptr;
-    /// Keep, for each divergence, our mesh at the first level that diverges with each
-    /// vertex's distance to the reference (for pictures), if it has at most this many faces.
-    int error_field_max_faces = 0;
     /// Keep, when some reference diverges, every level of the implementation under test with
     /// each reference's positions (the report's 3D view), if the last level has at most this
     /// many faces.
     int view_max_faces = 0;
-};
-
-/// Our mesh at one level with the per-vertex distance to a reference (NaN: unmatched).
-struct ErrorField {
-    int level = 0;
-    PolyMesh mesh;
-    std::vector<double> distance;
 };
 
 /// What the report's 3D viewer shows of a case where some reference diverges: the
@@ -94,7 +84,6 @@ struct ReferenceRun {
     DivergenceClass divergence_class = DivergenceClass::None;
     std::string explanation;  ///< one sentence with the measured figures
     double hausdorff_rel = NAN;  ///< vertex-set Hausdorff distance / diagonal (Geometric tier)
-    std::optional<ErrorField> error_field;
 };
 
 /// The vertex where some reference parts most from core, with every implementation's value
