@@ -2,6 +2,8 @@
 """Opens a report's index.html in headless Chromium, as a reader would, and checks its 3D view.
 
 Usage: check_viewer.py DIR [--screenshots] [--case TEXT]
+Then the pages the suite's pages study wrote (curves/editor.html, levels/levels.html), when
+there: no console error, every canvas (every level of every levels entry) drawn.
 Fails (exit 1, naming what) on any console error of the page, when the viewer's canvas is
 blank (no pixel differs from the background) or when a click on the surface does not show the
 picked vertex with every implementation's position. With --screenshots the page, the viewer
@@ -82,10 +84,86 @@ return null;
 """
 
 
-def differing_pixels(png):
-    """How many pixels of a PNG differ from the viewer's background by more than antialiasing."""
+def differing_pixels(png, background=BACKGROUND):
+    """How many pixels of a PNG differ from a page's background by more than antialiasing."""
     img = Image.open(io.BytesIO(png)).convert("RGB")
-    return sum(1 for p in img.getdata() if max(abs(p[k] - BACKGROUND[k]) for k in range(3)) > 8)
+    return sum(1 for p in img.getdata() if max(abs(p[k] - background[k]) for k in range(3)) > 8)
+
+
+EDITOR_BACKGROUND = (0x1e, 0x22, 0x26)  # editor.js
+LEVELS_BACKGROUND = (0xf4, 0xf4, 0xf4)  # levels.js
+
+
+def open_page(driver, path, ready, what):
+    """Loads a page from disk and waits until `ready` (a script) is true."""
+    driver.get("file://" + os.path.abspath(path))
+    wait_for(driver, "return document.readyState === 'complete'", f"{what} to load")
+    wait_for(driver, ready, what)
+
+
+def check_pages(folder, screenshots=False):
+    """The pages study's pages, when the report has them: the bundled curves in the editor (a
+    curve with core's runs shown, its frames drawn) and the subdivision levels (every entry's
+    views drawn). Fails on a console error or a blank canvas. Returns lines of what was seen."""
+    seen, shots = [], os.path.join(folder, "screenshots")
+    editor, levels = os.path.join(folder, "curves", "editor.html"), os.path.join(folder, "levels", "levels.html")
+    if not os.path.exists(editor) and not os.path.exists(levels):
+        return [f"{folder}: no interactive pages (the suite ran no pages study)"]
+    if screenshots:
+        os.makedirs(shots, exist_ok=True)
+    driver = browser()
+    try:
+        if os.path.exists(editor):
+            open_page(driver, editor, "return !!window.crossdivEditor", "the curve editor page")
+            curves = driver.execute_script("return window.crossdivEditor.state.curves.length")
+            # A 3D curve with core's runs: its closest-tolerance distance run and its
+            # rotation-minimizing frames drawn over the editor's own view.
+            index = driver.execute_script("""
+                const cs = window.crossdivEditor.state.curves;
+                const i = cs.findIndex((c) => c.keyword.endsWith('3') && c.core);
+                return i >= 0 ? i : cs.findIndex((c) => c.core);""")
+            assert index >= 0, "no curve on the curves page carries core's tessellations"
+            driver.execute_script("""
+                const list = document.getElementById('curve-list');
+                list.value = String(arguments[0]); list.dispatchEvent(new Event('change'));
+                document.getElementById('core-run').value = '2'; document.getElementById('core-frames').value = 'rmf';
+                window.crossdivEditor.redraw();""", index)
+            rows = len(driver.find_elements(By.CSS_SELECTOR, "#core-table tr")) - 1
+            assert rows >= 6, f"core's table lists {rows} runs"
+            canvas = driver.find_element(By.CSS_SELECTOR, "#view canvas")
+            lit = differing_pixels(canvas.screenshot_as_png, EDITOR_BACKGROUND)
+            assert lit > 1000, f"the curves page's canvas is blank: {lit} pixels drawn"
+            seen.append(f"curves page: {curves} curves, {rows} core runs of curve {index}, {lit} pixels drawn")
+            if screenshots:
+                driver.save_screenshot(os.path.join(shots, "curves.png"))
+            errors = console_errors(driver)
+            assert not errors, f"console errors on the curves page: {errors}"
+        if os.path.exists(levels):
+            open_page(driver, levels, "return !!window.crossdivLevels", "the subdivision levels page")
+            entries = driver.execute_script("return window.crossdivLevels.entries.length")
+            canvas = driver.find_element(By.CSS_SELECTOR, "#view canvas")
+            for i in range(entries):
+                driver.execute_script("window.crossdivLevels.select(arguments[0])", i)
+                img = Image.open(io.BytesIO(canvas.screenshot_as_png)).convert("RGB")
+                n = driver.execute_script("return window.crossdivLevels.state.scenes.length")
+                cell = img.width // n
+                for level in range(n):
+                    part = img.crop((level * cell, 0, (level + 1) * cell, img.height))
+                    buf = io.BytesIO()
+                    part.save(buf, format="PNG")
+                    lit = differing_pixels(buf.getvalue(), LEVELS_BACKGROUND)
+                    assert lit > 500, f"levels page, entry {i}, level {level}: blank ({lit} pixels drawn)"
+            seen.append(f"levels page: {entries} entries, every level drawn")
+            if screenshots:
+                driver.execute_script("window.crossdivLevels.select(0);"
+                                      "document.getElementById('show-wire').checked = true; window.crossdivLevels.build();")
+                driver.save_screenshot(os.path.join(shots, "levels.png"))
+            errors = console_errors(driver)
+            assert not errors, f"console errors on the levels page: {errors}"
+        seen.append("no console error on the pages")
+    finally:
+        driver.quit()
+    return seen
 
 
 def check(folder, screenshots=False, case=None):
@@ -154,7 +232,7 @@ def main(argv):
     parser.add_argument("--case", help="show the first case whose label contains this text")
     args = parser.parse_args(argv[1:])
     try:
-        for line in check(args.folder, args.screenshots, args.case):
+        for line in check(args.folder, args.screenshots, args.case) + check_pages(args.folder, args.screenshots):
             print(line)
     except AssertionError as e:
         sys.exit(f"{args.folder}/index.html: {e}")

@@ -19,11 +19,13 @@ import check_viewer  # noqa: E402
 CROSSDIV = os.environ.get("CROSSDIV_BIN") or os.path.join(REPORTS, "..", "build", "verification", "crossdiv")
 
 # Two divergences with a known cause: OpenMesh and CGAL lack Loop's corner rule (open-patch),
-# and no reference has Warren's weights (octahedron); and a case where all agree.
+# and no reference has Warren's weights (octahedron); a case where all agree; and the pages
+# study's curve editor and subdivision-levels pages.
 MANIFEST = """suite viewer-test
 case bundled:open-patch  loop weights=loop boundary=edge-and-corner levels=2 tier=weak tolerance=1e-12 against=opensubdiv,openmesh
 case bundled:octahedron  loop weights=warren boundary=edge-only levels=2 tier=weak tolerance=1e-12 against=opensubdiv
 case bundled:tetrahedron loop weights=loop boundary=edge-only levels=1 tier=weak tolerance=1e-12 against=opensubdiv
+case catalog pages
 """
 
 
@@ -95,3 +97,27 @@ def test_a_representative_link_opens_its_case_in_the_viewer(report):
         assert not check_viewer.console_errors(driver)
     finally:
         driver.quit()
+
+
+def test_the_curve_and_levels_pages_draw_and_are_linked(report):
+    seen = check_viewer.check_pages(report, screenshots=True)
+    assert seen[0].startswith("curves page: ") and seen[1].startswith("levels page: 9 entries"), seen
+    assert seen[-1] == "no console error on the pages", seen
+    with open(os.path.join(report, "index.html")) as f:
+        page = f.read()
+    assert "href='curves/editor.html'" in page and "href='levels/levels.html'" in page
+    for shot in ("curves.png", "levels.png"):
+        assert os.path.getsize(os.path.join(report, "screenshots", shot)) > 5000
+
+
+def test_a_blank_levels_view_fails_the_check(report, tmp_path):
+    # The check must fail when a level draws nothing: a level whose triangles are gone.
+    broken = tmp_path / "blank"
+    subprocess.run(["cp", "-r", report, str(broken)], check=True)
+    with open(broken / "levels" / "levels.js") as f:
+        script = f.read()
+    with open(broken / "levels" / "levels.js", "w") as f:
+        f.write(script.replace("scene.add(surface(level, flat));", "if (level !== e.levels[2]) scene.add(surface(level, flat));")
+                      .replace("if (document.getElementById(\"show-net\").checked)", "if (false)"))
+    with pytest.raises(AssertionError, match="level 2: blank"):
+        check_viewer.check_pages(str(broken))

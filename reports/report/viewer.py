@@ -20,6 +20,13 @@ VIEWER_JS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "view
 
 FAILURE = ("ours-failed", "diverge (unexplained)")
 
+# The pages the suite's pages study writes beside the results (pages_study.h), linked when there.
+INTERACTIVE_PAGES = (
+    ("curves/editor.html", "the bundled curves in the curve editor: drag control points, de Casteljau at a chosen t, "
+                           "core's distance and angle tessellations with their measured deviation, frames along the curve"),
+    ("levels/levels.html", "subdivision levels side by side for every scheme: control net, wireframe, flat or smooth shading"),
+)
+
 
 def read_view(folder, path):
     """A views/jobN.js file (divergence_view_file.h) as Python lists: {"levels": [{"positions":
@@ -192,4 +199,8 @@ def first_screen(cases, mesh_cases, libraries, folder):
                    "class, then the rest):"),
               Interactive(viewer_html(entries),
                           f"index.html shows {len(entries)} of these cases in an interactive 3D viewer (views/jobN.js)."))
+    pages = [(href, what) for href, what in INTERACTIVE_PAGES if os.path.exists(os.path.join(folder, href))]
+    if pages:
+        s.add(Interactive("<p>Interactive pages: " + "; ".join(f"<a href='{href}'>{what}</a>" for href, what in pages) + ".</p>",
+                          "Interactive pages: " + "; ".join(f"{what} (`{href}`)" for href, what in pages) + "."))
     return s

@@ -10,6 +10,7 @@
 #include "curvature_command.h"
 #include "curve_commands.h"
 #include "edit_commands.h"
+#include "editor_command.h"
 #include "fit_command.h"
 #include "isosurface_command.h"
 #include "mesh_commands.h"
@@ -33,6 +34,7 @@ int main(int argc, char** argv) {
     cli::add_isosurface_command(app, status);  // isosurface
     cli::add_fit_command(app, status);         // fit
     cli::add_multires_command(app, status);    // multires
+    cli::add_editor_command(app, status);      // editor
     cli::add_scheme_commands(app, status);   // limit, spectrum
     try {
         app.parse(argc, argv);  // runs the selected command

@@ -1,6 +1,5 @@
 #include "crossdiv/verification/suite/divergence_view_file.h"
 
-#include <bit>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -9,48 +8,10 @@
 #include "crossdiv/error.h"
 #include "crossdiv/mesh/tri_mesh.h"
 #include "crossdiv/verification/harness/json_text.h"
+#include "crossdiv/verification/suite/page_arrays.h"
 
 namespace crossdiv::verification {
 namespace {
-
-// The viewer reads the arrays as JavaScript typed arrays, which take the machine's byte order:
-// little-endian on every machine a browser runs on, and on this one.
-static_assert(std::endian::native == std::endian::little, "views are written as little-endian arrays");
-
-/// RFC 4648 base64 of the bytes of `values`.
-template <class T>
-std::string base64(const std::vector<T>& values) {
-    static constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    const size_t n = values.size() * sizeof(T);
-    const unsigned char* bytes = reinterpret_cast<const unsigned char*>(values.data());
-    std::string out;
-    out.reserve((n + 2) / 3 * 4);
-    for (size_t i = 0; i < n; i += 3) {
-        const unsigned b0 = bytes[i], b1 = i + 1 < n ? bytes[i + 1] : 0u, b2 = i + 2 < n ? bytes[i + 2] : 0u;
-        const unsigned triple = (b0 << 16) | (b1 << 8) | b2;
-        out += kAlphabet[(triple >> 18) & 63];
-        out += kAlphabet[(triple >> 12) & 63];
-        out += i + 1 < n ? kAlphabet[(triple >> 6) & 63] : '=';
-        out += i + 2 < n ? kAlphabet[triple & 63] : '=';
-    }
-    return out;
-}
-
-std::string positions64(const PolyMesh& mesh) {
-    std::vector<double> xyz;
-    xyz.reserve(3 * mesh.positions.size());
-    for (const Vec3& p : mesh.positions) xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
-    return base64(xyz);
-}
-
-std::string triangles32(const PolyMesh& mesh) {
-    std::vector<int32_t> corners;
-    for (int f = 0; f < mesh.num_faces(); ++f) {
-        const int* v = mesh.face(f);
-        for (int k = 1; k + 1 < mesh.face_size(f); ++k) corners.insert(corners.end(), {v[0], v[k], v[k + 1]});
-    }
-    return base64(corners);
-}
 
 std::string origins32(const std::vector<VertexOrigin>& origins) {
     std::vector<int32_t> pairs;

@@ -17,6 +17,7 @@
 #include "crossdiv/verification/suite/fitting_study.h"
 #include "crossdiv/verification/suite/isosurface_study.h"
 #include "crossdiv/verification/suite/multiresolution_study.h"
+#include "crossdiv/verification/suite/pages_study.h"
 #include "crossdiv/verification/suite/divergence_view_file.h"
 #include "suite/studies.h"
 
@@ -105,6 +106,14 @@ CaseRecord run_study(const SuiteJob& job, const std::string&) {
     return case_record(r);
 }
 
+/// The pages study writes its pages beside the results, so it takes the output folder.
+CaseRecord run_pages(const SuiteJob& job, const std::string& out_dir) {
+    CheckReport r = pages_study(out_dir);
+    r.input = job.input;
+    r.operation = job.entry->operation->name;
+    return case_record(r);
+}
+
 }  // namespace
 
 const std::vector<SuiteOperation>& suite_operations() {
@@ -136,6 +145,8 @@ const std::vector<SuiteOperation>& suite_operations() {
          one_collection<kCatalog>, run_study<static_cast<CheckReport (*)()>(fitting_study)>},
         {"multiresolution", OperationKind::Study, "Loop multiresolution editing: round trip, rigid motion, an edit's reach against the prediction and the subdivision support",
          one_collection<kCatalog>, run_study<multiresolution_study>},
+        {"pages", OperationKind::Study, "the report's curve editor page (bundled curves, core's tessellations and frames) and subdivision-levels page, and the checks of what they show",
+         one_collection<kCatalog>, run_pages},
         {"spectrum", OperationKind::Study, "eigen table of the local subdivision matrices; the Loop rule oracle", one_collection<kFans>,
          run_study<spectrum_study>},
         {"convergence", OperationKind::Study, "convergence of extraordinary vertices to their limit",

@@ -1,0 +1,44 @@
+#include "crossdiv/verification/suite/levels_page.h"
+
+#include <filesystem>
+#include <fstream>
+
+#include "crossdiv/error.h"
+#include "crossdiv/verification/harness/install_paths.h"
+#include "crossdiv/verification/harness/mesh_topology.h"
+#include "crossdiv/verification/suite/editor_page.h"
+#include "crossdiv/verification/suite/page_arrays.h"
+
+namespace crossdiv::verification {
+
+namespace fs = std::filesystem;
+
+std::string levels_data_script(const std::vector<LevelsEntry>& entries) {
+    using nlohmann::json;
+    json out = json::array();
+    for (const LevelsEntry& e : entries) {
+        json levels = json::array();
+        for (const PolyMesh& m : e.levels)
+            levels.push_back({{"positions", positions64(m)}, {"triangles", triangles32(m)},
+                              {"edges", edges32(mesh_topology(m).edge_list)}, {"faces", m.num_faces()}});
+        out.push_back({{"mesh", e.mesh}, {"scheme", e.scheme}, {"rule", e.rule}, {"levels", levels}});
+    }
+    return "window.CROSSDIV_LEVELS = " + json{{"entries", out}}.dump(-1, ' ', false, json::error_handler_t::replace) + ";\n";
+}
+
+void write_levels_page(const std::string& dir, const std::vector<LevelsEntry>& entries) {
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (ec) throw InputError(dir + ": cannot create the folder (" + ec.message() + ")");
+    copy_three_js(dir);
+    const fs::path source = fs::path(reports_dir()) / "levels";
+    for (const char* f : {"levels.html", "levels.js"}) {
+        fs::copy_file(source / f, fs::path(dir) / f, fs::copy_options::overwrite_existing, ec);
+        if (ec) throw InputError((source / f).string() + ": cannot copy into " + dir + " (" + ec.message() + ")");
+    }
+    std::ofstream out(fs::path(dir) / "levels-data.js");
+    out << levels_data_script(entries);
+    if (!out.flush()) throw InputError((fs::path(dir) / "levels-data.js").string() + ": cannot write");
+}
+
+}  // namespace crossdiv::verification
