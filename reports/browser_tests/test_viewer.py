@@ -3,12 +3,14 @@ headless Chromium (Debian's chromium, chromium-driver, python3-selenium). Fails 
 error, a blank 3D canvas, a click that picks nothing, or a page that reaches for the network.
 
 The crossdiv program is CROSSDIV_BIN (set by CTest), else build/verification/crossdiv."""
+import json
 import os
 import re
 import subprocess
 import sys
 
 import pytest
+from selenium.webdriver.common.by import By
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPORTS = os.path.join(HERE, "..")
@@ -16,7 +18,7 @@ sys.path.insert(0, REPORTS)
 
 import check_viewer  # noqa: E402
 
-CROSSDIV = os.environ.get("CROSSDIV_BIN") or os.path.join(REPORTS, "..", "build", "verification", "crossdiv")
+CROSSDIV = os.path.abspath(os.environ.get("CROSSDIV_BIN") or os.path.join(REPORTS, "..", "build", "verification", "crossdiv"))
 
 # Two divergences with a known cause: OpenMesh and CGAL lack Loop's corner rule (open-patch),
 # and no reference has Warren's weights (octahedron); a case where all agree; and the pages
@@ -47,7 +49,8 @@ def report(tmp_path_factory):
 
 def test_every_divergence_has_a_view_and_the_page_needs_no_network(report):
     views = sorted(os.listdir(os.path.join(report, "views")))
-    assert views == ["job0.js", "job1.js"]  # the agreeing tetrahedron has none
+    # The agreeing tetrahedron has none; both divergences were shrunk to a minimal input.
+    assert views == ["job0-minimal.obj", "job0.js", "job1-minimal.obj", "job1.js"]
     for name in ("three.min.js", "OrbitControls.js", "viewer.js"):
         assert os.path.getsize(os.path.join(report, "viewer", name)) > 1000
     with open(os.path.join(report, "index.html")) as f:
@@ -121,3 +124,42 @@ def test_a_blank_levels_view_fails_the_check(report, tmp_path):
                       .replace("if (document.getElementById(\"show-net\").checked)", "if (false)"))
     with pytest.raises(AssertionError, match="level 2: blank"):
         check_viewer.check_pages(str(broken))
+
+
+def test_a_shrunk_case_shows_its_minimal_input_which_reproduces_it(report):
+    # The open patch (OpenMesh and CGAL lack the corner rule) shrinks to one triangle.
+    with open(os.path.join(report, "results.json")) as f:
+        cases = json.load(f)["cases"]
+    # Both divergent cases shrink: the open patch to one triangle, the octahedron (Warren's
+    # weights, a valence-4 vertex) to that vertex's fan.
+    shrunk = {c["input"]: c["minimal"] for c in cases if "minimal" in c}
+    assert sorted(shrunk) == ["bundled:octahedron", "bundled:open-patch"], shrunk
+    assert shrunk["bundled:octahedron"]["faces"] == 4 and "weight-family" in shrunk["bundled:octahedron"]["symptom"]
+    minimal = shrunk["bundled:open-patch"]
+    assert minimal["faces"] == 1 and "corner-rule" in minimal["symptom"], minimal
+    # The reproduce line, run in the report's folder, shows the same divergence.
+    run = subprocess.run([CROSSDIV, "compare", minimal["mesh"], "--weights", "loop", "--boundary", "edge-and-corner",
+                          "--levels", "2", "--against", minimal["reference"]], cwd=report, capture_output=True, text=True,
+                         timeout=120)
+    assert run.returncode == 1 and "corner-rule" in run.stdout, run.stdout + run.stderr
+    driver = check_viewer.browser()
+    try:
+        driver.get("file://" + os.path.abspath(os.path.join(report, "index.html")))
+        check_viewer.wait_for(driver, "return window.crossdivViewer && window.crossdivViewer.ready === true", "the viewer")
+        index = driver.execute_script("return window.CROSSDIV_VIEWS.findIndex((e) => e.id.includes('open-patch'))")
+        driver.execute_script("window.crossdivViewer.ready = false;"
+                              "window.crossdivViewer.show(arguments[0]).then(() => { window.crossdivViewer.ready = true; })", index)
+        check_viewer.wait_for(driver, "return window.crossdivViewer.ready === true", "the open patch's view")
+        box = driver.find_element(By.CSS_SELECTOR, "#crossdiv-viewer .cv-minimal")
+        assert "1 face(s) still show that" in box.text and minimal["mesh"] in box.text, box.text
+        lit = check_viewer.differing_pixels(box.find_element(By.TAG_NAME, "canvas").screenshot_as_png, (255, 255, 255))
+        assert lit > 500, f"the minimal input's canvas is blank ({lit} pixels drawn)"
+        # The next case shows its own.
+        other = driver.execute_script("return window.CROSSDIV_VIEWS.findIndex((e) => e.id.includes('octahedron'))")
+        driver.execute_script("window.crossdivViewer.ready = false;"
+                              "window.crossdivViewer.show(arguments[0]).then(() => { window.crossdivViewer.ready = true; })", other)
+        check_viewer.wait_for(driver, "return window.crossdivViewer.ready === true", "the octahedron's view")
+        assert "4 face(s) still show that" in box.text and "weight-family" in box.text, box.text
+        assert not check_viewer.console_errors(driver)
+    finally:
+        driver.quit()

@@ -148,6 +148,7 @@ def viewer_html(entries):
             "<label><input type='checkbox' class='cv-wire'> wireframe</label> "
             "<label><input type='checkbox' class='cv-flat'> flat shading</label></div>"
             "<canvas></canvas><div class='cv-side'><p class='cv-info'></p><div class='cv-picked'></div>"
+            "<div class='cv-minimal'></div>"
             "<p>Drag to orbit, wheel to zoom, right-drag to pan, click to pick a vertex. Colour: distance to the chosen "
             "reference at the chosen level (light: equal, dark red: the largest at that level; grey: no matched vertex). Green: the "
             "selected vertex (the worst until a pick); blue: the input vertices it descends from, on the control net.</p>"

@@ -33,6 +33,11 @@
     for (const [name, perLevel] of Object.entries(data.references))
       view.references[name] = perLevel.map((o) => (o === null ? null : new Float32Array(bytes(o))));
     for (const level of view.levels) describeVertices(level);
+    if (data.minimal) {
+      const m = data.minimal;
+      view.minimal = Object.assign({}, m, { positions: new Float64Array(bytes(m.positions)), triangles: new Int32Array(bytes(m.triangles)) });
+      describeVertices(view.minimal);
+    }
     loaded[data.job] = view;
     if (waiting[data.job]) waiting[data.job](view);
   };
@@ -190,6 +195,7 @@
         this.ui.level.appendChild(o);
       });
       this.ui.level.value = this.state.level;
+      this.showMinimal(view.minimal);
       this.rebuild(true);
     }, (err) => { this.info.textContent = err.message; });
   };
@@ -315,6 +321,52 @@
     this.state.vertex = best;
     this.rebuild(false);
     return true;
+  };
+
+  // The case shrunk (as `crossdiv diff` shrinks): the minimal input that still shows the
+  // divergence, beside the case, in its own small view with its own orbit.
+  Viewer.prototype.showMinimal = function (m) {
+    const box = this.root.querySelector(".cv-minimal");
+    if (!box) return;
+    box.style.display = m ? "" : "none";
+    if (!m) return;
+    if (!this.minimal) {
+      // One canvas and one WebGL context for every case (a browser allows few contexts).
+      box.innerHTML = "<p class='cv-minimal-text'></p><canvas style='width: 320px; height: 220px'></canvas>";
+      const canvas = box.querySelector("canvas");
+      const renderer = new THREE.WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
+      renderer.setClearColor(0xffffff);
+      const scene = new THREE.Scene(), camera = new THREE.PerspectiveCamera(35, 320 / 220, 1e-3, 1e3);
+      camera.up.set(0, 0, 1);
+      scene.add(new THREE.HemisphereLight(0xffffff, 0x444444, 0.9));
+      const group = new THREE.Group();
+      scene.add(group);
+      const controls = new THREE.OrbitControls(camera, canvas);
+      const draw = () => { renderer.setSize(320, 220, false); renderer.render(scene, camera); };
+      controls.addEventListener("change", draw);
+      this.minimal = { canvas, group, camera, controls, draw };
+    }
+    box.querySelector(".cv-minimal-text").innerHTML = "<b>Minimal input</b>: " + m.faces + " face(s) still show that " +
+      escapeHtml(m.symptom) + " (" + m.tests + " comparisons while shrinking). In the report's folder: <code>" +
+      escapeHtml(m.reproduce) + "</code>";
+    const { group, camera, controls, draw } = this.minimal;
+    for (const child of group.children.slice()) {
+      group.remove(child);
+      if (child.geometry) child.geometry.dispose();
+    }
+    const g = new THREE.BufferGeometry();
+    g.setAttribute("position", new THREE.BufferAttribute(new Float32Array(m.positions), 3));
+    g.setIndex(new THREE.BufferAttribute(new Uint32Array(m.triangles), 1));
+    g.computeVertexNormals();
+    g.computeBoundingSphere();
+    group.add(new THREE.Mesh(g, new THREE.MeshPhongMaterial({ color: 0xf0a070, side: THREE.DoubleSide, flatShading: true,
+                                                             polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1 })));
+    group.add(lines(m.positions, m.edges, 0x1565c0, 1));
+    const c = g.boundingSphere.center, r = g.boundingSphere.radius || 1;
+    camera.position.copy(c).add(new THREE.Vector3(0.5, -0.8, 1).normalize().multiplyScalar(2.6 * r));
+    controls.target.copy(c);
+    controls.update();
+    draw();
   };
 
   // Where vertex v of the shown level is on the page (CSS pixels), for a scripted click.

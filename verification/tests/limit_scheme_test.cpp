@@ -136,8 +136,8 @@ TEST(LimitChecks, UnknownStudyIsRefused) {
     EXPECT_THROW(find_operation("eigen"), InputError);
     const auto& ops = suite_operations();
     // catmull-clark, schemes, creases, limit-positions, vertex-age, curvature, isosurface, fitting,
-    // multiresolution, spectrum, convergence
-    EXPECT_EQ(std::count_if(ops.begin(), ops.end(), [](const SuiteOperation& op) { return op.kind == OperationKind::Study; }), 11);
+    // multiresolution, pages, spectrum, convergence
+    EXPECT_EQ(std::count_if(ops.begin(), ops.end(), [](const SuiteOperation& op) { return op.kind == OperationKind::Study; }), 12);
 }
 
 // The curvature study: every check holds (second-order convergence of core on the sphere and

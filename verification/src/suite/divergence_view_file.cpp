@@ -49,7 +49,12 @@ std::string divergence_view_script(const DivergenceView& view, int job, const st
         }
         references[name] = std::move(per_level);
     }
-    const json data{{"job", job}, {"subject", subject}, {"levels", levels}, {"references", references}};
+    json data{{"job", job}, {"subject", subject}, {"levels", levels}, {"references", references}};
+    if (const auto& m = view.minimal)
+        data["minimal"] = {{"reference", m->reference},     {"symptom", m->symptom},
+                           {"tests", m->tests},             {"faces", m->mesh.num_faces()},
+                           {"positions", positions64(m->mesh)}, {"triangles", triangles32(m->mesh)},
+                           {"reproduce", m->reproduce}};
     return "crossdivView(" + json_text(data) + ");\n";
 }
 

@@ -4,7 +4,10 @@
 #include <fstream>
 
 #include "crossdiv/error.h"
+#include "crossdiv/io/mesh_io.h"
 #include "crossdiv/subdiv/loop.h"
+#include "crossdiv/verification/comparisons/shrink.h"
+#include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/verification/harness/inputs.h"
 #include "crossdiv/verification/harness/output_size.h"
 #include "crossdiv/verification/implementations/program_implementation.h"
@@ -31,13 +34,55 @@ using nlohmann::json;
 /// file per view with four references, and a mesh any browser turns in real time.
 constexpr int kViewMaxFaces = 50000;
 
-/// Writes the case's 3D view, when it has one, as views/jobN.js and names it in the case.
+/// The file of a case's minimal input, beside its view.
+std::string minimal_obj_name(const SuiteJob& job) { return "views/job" + std::to_string(job.index) + "-minimal.obj"; }
+
+/// Inputs up to this many faces are shrunk for the viewer: every catalog and bundled mesh, where
+/// delta debugging takes tens of comparisons of milliseconds each (measured: 1 to 7 comparisons,
+/// 0.03 to 0.08 s a case); larger inputs would take seconds each, and `crossdiv diff` is there.
+constexpr int kShrinkMaxFaces = 500;
+
+/// The case's first divergence from a library reference shrunk to a minimal input, as `crossdiv
+/// diff` shrinks it, for the viewer; nothing when core is not what is under test, when every
+/// divergent reference is a program (each comparison would start it again), or when the input
+/// is too large or cannot be shrunk (a refusal, no symptom left on the whole input).
+std::optional<MinimalDivergence> shrink_for_view(const TriMesh& mesh, const std::string& input,
+                                                 const LoopComparisonRequest& req, const LoopComparison& c,
+                                                 const std::string& obj_name) {
+    if (req.subject || mesh.num_faces() > kShrinkMaxFaces) return std::nullopt;
+    for (const ReferenceRun& run : c.runs) {
+        if (run.verdict != Verdict::Diverge || find_implementation(run.reference).confines_itself()) continue;
+        LoopComparisonRequest one = req;
+        one.references = {run.reference};
+        one.view_max_faces = 0;
+        try {
+            const ShrinkResult r = shrink_divergence(mesh, input, one);
+            const std::string levels = std::to_string(req.levels);
+            return MinimalDivergence{run.reference, describe(r.symptom, "core", run.reference), to_poly_mesh(r.minimal), r.tests,
+                                     "crossdiv compare " + obj_name + " --weights " + std::string(to_string(req.options.weights)) +
+                                         " --boundary " + std::string(to_string(req.options.boundary)) + " --levels " + levels +
+                                         " --against " + run.reference};
+        } catch (const InputError&) {
+            // Nothing to shrink here (the symptom needs the whole input, or a refusal): the view stands alone.
+        }
+    }
+    return std::nullopt;
+}
+
+/// Writes the case's 3D view, when it has one, as views/jobN.js (and its minimal input as
+/// views/jobN-minimal.obj) and names it in the case.
 void write_view(const LoopComparison& c, const SuiteJob& job, const std::string& out_dir, CaseRecord& rec) {
     if (!c.view) return;
     const std::string name = "views/job" + std::to_string(job.index) + ".js";
     fs::create_directories(fs::path(out_dir) / "views");
     write_divergence_view(*c.view, job.index, c.subject, (fs::path(out_dir) / name).string());
     rec.detail["view"] = name;
+    if (c.view->minimal) {
+        const std::string obj = minimal_obj_name(job);
+        write_mesh((fs::path(out_dir) / obj).string(), c.view->minimal->mesh);
+        rec.detail["minimal"] = {{"mesh", obj}, {"reference", c.view->minimal->reference},
+                                 {"faces", c.view->minimal->mesh.num_faces()}, {"symptom", c.view->minimal->symptom}};
+    }
 }
 
 CaseRecord run_loop(const SuiteJob& job, const std::string& out_dir) {
@@ -63,8 +108,9 @@ CaseRecord run_loop(const SuiteJob& job, const std::string& out_dir) {
     } catch (const InputError& e) {
         refused = e.what();
     }
-    const LoopComparison c =
+    LoopComparison c =
         refused.empty() ? compare_loop(mesh, job.input, req) : compare_loop_refused(mesh, job.input, req, refused);
+    if (c.view) c.view->minimal = shrink_for_view(mesh, job.input, req, c, minimal_obj_name(job));
     CaseRecord rec = case_record(c);
     write_view(c, job, out_dir, rec);
     return rec;

@@ -13,7 +13,10 @@
 /// - `references[name][l]`: float32 xyz per vertex, the reference's position minus ours (NaN:
 ///   unmatched), or null where the reference has no vertex map at level l. An offset in float32
 ///   keeps the reference's value to 1e-7 of its distance from ours, far finer than any
-///   divergence the viewer colours.
+///   divergence the viewer colours;
+/// - `minimal`, when the suite shrank the case: `reference`, `symptom`, `tests`, `faces`,
+///   `positions` and `triangles` of the minimal input (as a level's), and `reproduce`, the
+///   crossdiv compare line on its OBJ file.
 
 #include <string>
 
