@@ -9,29 +9,16 @@
 #include "crossdiv/subdiv/limit.h"
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/subdiv/loop_split_flip.h"
+#include "loop_test_meshes.h"
 
 namespace crossdiv {
 namespace {
 
-constexpr LoopOptions kLoopEdge{LoopWeights::Loop, LoopBoundary::EdgeOnly};
-constexpr LoopOptions kLoopCorner{LoopWeights::Loop, LoopBoundary::EdgeAndCorner};
-constexpr LoopOptions kWarrenEdge{LoopWeights::Warren, LoopBoundary::EdgeOnly};
-
-// Regular tetrahedron centred at the origin: the vertices sum to zero.
-TriMesh tetrahedron() {
-    TriMesh m;
-    m.positions = {Vec3(1, 1, 1), Vec3(1, -1, -1), Vec3(-1, 1, -1), Vec3(-1, -1, 1)};
-    m.triangles = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}};
-    return m;
-}
-
-// Octahedron: +-x, +-y, +-z; every vertex has valence 4.
-TriMesh octahedron() {
-    TriMesh m;
-    m.positions = {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0, 0, 1), Vec3(0, 0, -1)};
-    m.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
-    return m;
-}
+using test::kLoopCorner;
+using test::kLoopEdge;
+using test::kWarrenEdge;
+using test::tri_octahedron;
+using test::tri_tetrahedron;
 
 Vec3 edge_point(const TriMesh& coarse, const TriMesh& fine, int a, int b, const std::vector<VertexOrigin>& o) {
     for (size_t i = 0; i < o.size(); ++i)
@@ -58,7 +45,7 @@ TEST(Loop, SeedExampleOddVertex) {
 TEST(Loop, TetrahedronByHand) {
     // Valence 3, beta = 3/16 in both families: v' = 7/16 v + 3/16 (-v) = v/4.
     // Edge (a, b): 3/8 (a + b) + 1/8 (c + d) = 3/8 (a + b) - 1/8 (a + b) = (a + b)/4.
-    const TriMesh m = tetrahedron();
+    const TriMesh m = tri_tetrahedron();
     for (LoopOptions opt : {kLoopEdge, kWarrenEdge}) {
         LoopRefiner r(m, opt);
         r.refine();
@@ -76,7 +63,7 @@ TEST(Loop, OctahedronByHandBothFamilies) {
     // Valence 4, the ring of every vertex sums to zero: v' = (1 - 4 beta) v.
     // Loop: beta = 31/256, v' = 33/64 v. Warren: beta = 3/32, v' = 5/8 v.
     // Edge (+x, +y): 3/8 (x + y) + 1/8 (z - z) = 3/8 (1, 1, 0).
-    const TriMesh m = octahedron();
+    const TriMesh m = tri_octahedron();
     const struct { LoopOptions opt; double scale; } cases[] = {{kLoopEdge, 33.0 / 64.0}, {kWarrenEdge, 5.0 / 8.0}};
     for (const auto& c : cases) {
         LoopRefiner r(m, c.opt);
@@ -129,7 +116,7 @@ TEST(Loop, OpenFanUnderBothBoundaryRules) {
 }
 
 TEST(Loop, SubdivisionMatrixRowsSumToOneAndReproduceRefinement) {
-    for (const TriMesh& m : {tetrahedron(), octahedron()}) {
+    for (const TriMesh& m : {tri_tetrahedron(), tri_octahedron()}) {
         for (LoopOptions opt : {kLoopEdge, kWarrenEdge, kLoopCorner}) {
             const Eigen::SparseMatrix<double> S = loop_subdivision_matrix(m, opt);
             const TriMesh fine = loop_subdivide(m, opt, 1);
@@ -151,7 +138,7 @@ TEST(Loop, DerivedConnectivityEqualsRebuiltConnectivity) {
     TriMesh open;
     open.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0), Vec3(2, 1, 1)};
     open.triangles = {{0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}};
-    for (const TriMesh& m : {tetrahedron(), octahedron(), open}) {
+    for (const TriMesh& m : {tri_tetrahedron(), tri_octahedron(), open}) {
         LoopRefiner r(m, kLoopEdge);
         r.refine(3);
         for (int l = 1; l <= 3; ++l) {
@@ -177,15 +164,15 @@ TEST(Loop, DerivedConnectivityEqualsRebuiltConnectivity) {
 }
 
 TEST(Loop, FastPathEqualsRefinerBitwise) {
-    LoopRefiner r(octahedron(), kWarrenEdge);
+    LoopRefiner r(tri_octahedron(), kWarrenEdge);
     r.refine(3);
-    const TriMesh fast = loop_subdivide(octahedron(), kWarrenEdge, 3);
+    const TriMesh fast = loop_subdivide(tri_octahedron(), kWarrenEdge, 3);
     EXPECT_EQ(fast.positions, r.mesh(3).positions);
     EXPECT_EQ(fast.triangles, r.mesh(3).triangles);
 }
 
 TEST(Loop, ColorsFollowTheSameStencils) {
-    TriMesh m = tetrahedron();
+    TriMesh m = tri_tetrahedron();
     m.colors = {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), Vec3(1, 1, 1)};
     const TriMesh f = loop_subdivide(m, kLoopEdge, 1);
     ASSERT_EQ(f.colors.size(), f.positions.size());
@@ -250,7 +237,7 @@ TEST(Loop, TunedFamiliesRefuseCreasesAndLimits) {
 }
 
 TEST(Loop, RejectsNonFiniteCoordinates) {
-    TriMesh m = tetrahedron();
+    TriMesh m = tri_tetrahedron();
     m.positions[2].y() = NAN;
     try {
         loop_subdivide(m, kLoopEdge, 1);
@@ -264,7 +251,7 @@ TEST(Loop, AFiniteInputWhoseMasksOverflowIsRefusedNamingTheVertex) {
     // The octahedron's vertices (1,0,0), (0,1,0), ... scaled to DBL_MAX, then the top
     // pole moved to (M, M, M): the even point of (M, 0, 0) sums neighbours whose x reach 2M.
     const double M = std::numeric_limits<double>::max();
-    TriMesh m = octahedron();
+    TriMesh m = tri_octahedron();
     for (Vec3& p : m.positions) p *= M;
     m.positions[4] = Vec3(M, M, M);
     for (auto driver : {+[](const TriMesh& t) { return loop_subdivide(t, {LoopWeights::Loop, LoopBoundary::EdgeOnly}, 1); },

@@ -170,11 +170,16 @@ def error_pictures(mesh_cases, folder, figdir):
 
 
 def timing(records, figdir):
-    """Log-log time against output size for every implementation."""
+    """Log-log time against output size for every implementation, warm solid and cold dashed
+    (the same colour per implementation)."""
     fig, ax = plt.subplots(figsize=(7, 4.5))
-    for impl in dict.fromkeys(r["impl"] for r in records):
-        rows = sorted((r for r in records if r["impl"] == impl), key=lambda r: r["output_faces"])
-        ax.plot([r["output_faces"] for r in rows], [r["median_ms"] for r in rows], marker="o", label=impl)
+    for i, impl in enumerate(dict.fromkeys(r["impl"] for r in records)):
+        for memory, style in (("warm", "-"), ("cold", "--")):
+            rows = sorted((r for r in records if r["impl"] == impl and r.get("memory", "warm") == memory
+                           and r.get("status", "ok") == "ok"), key=lambda r: r["output_faces"])
+            if rows:
+                ax.plot([r["output_faces"] for r in rows], [r["median_ms"] for r in rows], style, marker="o",
+                        color=f"C{i}", label=f"{impl} ({memory})")
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("output faces")

@@ -57,7 +57,7 @@ inline constexpr const char* kBenchSections[] = {"loop", "valence", "stencils", 
 struct BenchArgs {
     std::string json, out;
     int repeats = 5;
-    bool quick = false, cold = false;
+    bool quick = false, cold = false, warm = false;
     std::vector<std::string> only;  ///< sections to run; every one when empty
     std::vector<int> valences;      ///< the valence rows' k; kBenchValences when empty
     void add_to(CLI::App& app) {
@@ -65,7 +65,10 @@ struct BenchArgs {
         app.add_option("--out", out, "Suite output folder: write bench.json there and re-render its report");
         app.add_option("--repeats", repeats, "Timed runs per measurement")->check(CLI::Range(1, 64))->capture_default_str();
         app.add_flag("--quick", quick, "Two mesh sizes only (320 and 20000 faces), valence 1000 only");
-        app.add_flag("--cold", cold, "Return freed memory to the kernel between repeats (page faults counted)");
+        CLI::Option* c = app.add_flag(
+            "--cold", cold, "Loop rows cold only: freed memory returned to the kernel between repeats (page faults counted)");
+        app.add_flag("--warm", warm, "Loop rows warm only: freed memory kept between repeats (by default both, in turn)")
+            ->excludes(c);
         app.add_option("--only", only, "Run only these sections (loop, valence, stencils, curves, sweep)")
             ->check(CLI::IsMember(std::vector<std::string>(std::begin(kBenchSections), std::end(kBenchSections))));
         app.add_option("--valences", valences, "The valence rows' valences (default 1000 10000 100000)")
@@ -114,51 +117,71 @@ nlohmann::json print_stencil_bench(bool quick, int repeats) {
 #endif
 }
 
-/// The Loop rows: core against each reference on tori of growing size.
-nlohmann::json print_loop_bench(const BenchArgs& a, std::optional<BenchGoal>& goal) {
+/// The Loop rows: core against each reference on tori of growing size, warm and cold; the goal
+/// at every size of at least kBenchGoalMinFaces output faces; and the floor that memory
+/// bandwidth sets (the output's bytes written at the write bandwidth measured in this run).
+nlohmann::json print_loop_bench(const BenchArgs& a, nlohmann::json& goals_json, nlohmann::json& bandwidth_json) {
     const LoopOptions options{LoopWeights::Loop, LoopBoundary::EdgeOnly};
     const std::vector<BenchInput> inputs = default_bench_inputs(a.quick);
-    fmt::print("Loop (weights=loop boundary=edge-only), single thread, median of {} runs after one warm-up{}\n", a.repeats,
-               a.cold ? ", freed memory returned to the kernel (cold)" : ", freed memory kept (warm)");
-    fmt::print("{:<12} {:>6} {:<11} {:>11} {:>12} {:>10} {:>9} {:>8}\n", "input", "levels", "impl", "input faces",
-               "output faces", "median ms", "x core", "RSS MB");
+    std::vector<bool> regimes;  // cold?
+    if (!a.cold) regimes.push_back(false);
+    if (!a.warm) regimes.push_back(true);
     std::vector<BenchRecord> records;
-    for (const BenchInput& in : inputs) {
-        std::vector<BenchRecord> r = run_bench({in}, options, a.repeats, a.cold);
-        const double core_ms = r.front().median_ms;
-        for (const BenchRecord& b : r) {
-            if (b.status != "ok")
-                fmt::print("{:<12} {:>6} {:<11} {}\n", b.input, b.levels, b.impl, b.status);
-            else
-                fmt::print("{:<12} {:>6} {:<11} {:>11} {:>12} {:>10.2f} {:>9.2f} {:>8.0f}\n", b.input, b.levels, b.impl,
-                           b.input_faces, b.output_faces, b.median_ms, b.median_ms / core_ms, b.peak_rss_mb);
+    for (bool cold : regimes) {
+        fmt::print("Loop (weights=loop boundary=edge-only), single thread, median of {} runs after one warm-up{}\n", a.repeats,
+                   cold ? ", freed memory returned to the kernel (cold)" : ", freed memory kept (warm)");
+        fmt::print("{:<12} {:>6} {:<11} {:>11} {:>12} {:>10} {:>9} {:>8}\n", "input", "levels", "impl", "input faces",
+                   "output faces", "median ms", "x core", "RSS MB");
+        for (const BenchInput& in : inputs) {
+            std::vector<BenchRecord> r = run_bench({in}, options, a.repeats, cold);
+            const double core_ms = r.front().median_ms;
+            for (const BenchRecord& b : r) {
+                if (b.status != "ok")
+                    fmt::print("{:<12} {:>6} {:<11} {}\n", b.input, b.levels, b.impl, b.status);
+                else
+                    fmt::print("{:<12} {:>6} {:<11} {:>11} {:>12} {:>10.2f} {:>9.2f} {:>8.0f}\n", b.input, b.levels, b.impl,
+                               b.input_faces, b.output_faces, b.median_ms, b.median_ms / core_ms, b.peak_rss_mb);
+            }
+            std::fflush(stdout);
+            records.insert(records.end(), r.begin(), r.end());
         }
-        std::fflush(stdout);
-        records.insert(records.end(), r.begin(), r.end());
+        fmt::print("\n");
     }
-    goal = bench_goal(records);
-    if (goal)
-        fmt::print("\ngoal: core {:.2f}x faster than the fastest reference ({}) on {} at 2 levels ({} output faces, "
-                   "core peak RSS {:.0f} MB): {} (target {}x)\n",
-                   goal->ratio, goal->fastest_reference, goal->input, goal->output_faces, goal->core_peak_rss_mb,
-                   goal->met() ? "met" : "NOT met", kBenchGoalRatio);
+    const Bandwidth bw = measure_bandwidth(a.repeats);
+    bandwidth_json = {{"write_gbs", bw.write_gbs}, {"copy_gbs", bw.copy_gbs}, {"buffer_bytes", bw.buffer_bytes}};
+    fmt::print("memory bandwidth here: write {:.1f} GB/s, copy {:.1f} GB/s (best of {} passes over {} MiB)\n", bw.write_gbs,
+               bw.copy_gbs, a.repeats, bw.buffer_bytes >> 20);
+    goals_json = nlohmann::json::array();
+    for (const BenchGoal& g : bench_goals(records)) {
+        // The floor: writing the output once at the measured write bandwidth.
+        const double floor_ms = loop_output_bytes(g.output_faces) / (bw.write_gbs * 1e9) * 1e3;
+        fmt::print("goal ({}): core {:.2f}x faster than the fastest reference ({}) on {} at {} levels ({} output faces, "
+                   "core {:.2f} ms, peak RSS {:.0f} MB): {} (target {}x); bandwidth floor {:.2f} ms, core {:.1f}x above it\n",
+                   g.memory, g.ratio, g.fastest_reference, g.input, g.levels, g.output_faces, g.core_ms, g.core_peak_rss_mb,
+                   g.met() ? "met" : "NOT met", g.target, floor_ms, g.core_ms / floor_ms);
+        nlohmann::json j = to_json(g);
+        j["floor_ms"] = floor_ms;
+        j["core_over_floor"] = g.core_ms / floor_ms;
+        goals_json.push_back(j);
+    }
+    if (goals_json.empty()) fmt::print("goal: no input of at least {} output faces in this run\n", kBenchGoalMinFaces);
     nlohmann::json recs = nlohmann::json::array();
     for (const BenchRecord& r : records) recs.push_back(to_json(r));
     return recs;
 }
 
 int bench_command(const BenchArgs& a) {
-    std::optional<BenchGoal> goal;
+    nlohmann::json goals, bandwidth;
     const nlohmann::json null;
-    const nlohmann::json loop = a.runs("loop") ? print_loop_bench(a, goal) : null;
+    const nlohmann::json loop = a.runs("loop") ? print_loop_bench(a, goals, bandwidth) : null;
     std::vector<int> valences = a.valences;
     if (valences.empty()) valences.assign(std::begin(kBenchValences), a.quick ? std::begin(kBenchValences) + 1 : std::end(kBenchValences));
     const nlohmann::json valence = a.runs("valence") ? print_valence_bench(valences, a.repeats) : null;
     const nlohmann::json stencils = a.runs("stencils") ? print_stencil_bench(a.quick, a.repeats) : null;
     const nlohmann::json curves = a.runs("curves") ? run_curve_bench(a.repeats) : null;
     const nlohmann::json surfaces = a.runs("sweep") ? run_surface_bench() : null;
-    const nlohmann::json doc = {{"tool", "crossdiv bench"}, {"repeats", a.repeats}, {"memory", a.cold ? "cold" : "warm"},
-                                {"goal", goal ? to_json(*goal) : null}, {"records", loop}, {"valence", valence}, {"stencils", stencils},
+    const nlohmann::json doc = {{"tool", "crossdiv bench"}, {"repeats", a.repeats}, {"goals", goals}, {"bandwidth", bandwidth},
+                                {"records", loop}, {"valence", valence}, {"stencils", stencils},
                                 {"curves", curves.is_null() ? null : curves["tessellation"]},
                                 {"curve_timing", curves.is_null() ? null : curves["timing"]}, {"adaptive_sweep", surfaces},
                                 {"note", "references timed through their native refinement (loop_native), output kept "

@@ -16,6 +16,7 @@
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/mesh/mesh_checks.h"
 #include "crossdiv/subdiv/loop.h"
+#include "crossdiv/subdiv/loop_streaming.h"
 #include "crossdiv/subdiv/loop_split_flip.h"
 #include "crossdiv/verification/comparisons/loop_comparison.h"
 #include "crossdiv/verification/comparisons/shrink.h"
@@ -160,9 +161,14 @@ int run_subdivide(const std::string& in, const SchemeArgs& flags, const std::str
     const TriMesh mesh = to_tri_mesh(input, "Loop subdivision");
     PolyMesh result;
     if (impl == "core") {
-        // The polygon-mesh driver: the fast path on a manifold, else OpenSubdiv's
-        // non-manifold rules (or the refusal that --nonmanifold refuse asks for).
-        result = loop_subdivide(input, s.options(), s.levels);
+        // The streaming driver on a manifold (loop_streaming.h); a mesh that is not one takes
+        // the polygon-mesh driver and OpenSubdiv's non-manifold rules (or the refusal that
+        // --nonmanifold refuse asks for).
+        try {
+            result = to_poly_mesh(loop_subdivide_streaming(mesh, s.options(), s.levels));
+        } catch (const NonManifoldInput&) {
+            result = loop_subdivide(input, s.options(), s.levels);
+        }
     } else if (impl == "split-flip") {
         TriMesh level = mesh;
         for (int l = 0; l < s.levels; ++l) level = loop_by_split_and_flip(level, s.options());

@@ -129,7 +129,9 @@ expect diff-corner 0 'minimal: .* \(1 faces, 3 vertices\)' -- "$crossdiv" diff b
 expect diff-reproduces 1 'corner-rule' -- "$crossdiv" compare "$tmp/diff/minimal.obj" --boundary edge-and-corner --levels 2 --against openmesh
 expect diff-nothing 2 'does not diverge' -- "$crossdiv" diff bundled:torus --against cgal --out "$tmp/diff2"
 if [ "$sanitized" != sanitized ]; then
-expect bench 0 'goal: core .* faster than the fastest reference' -- "$crossdiv" bench --quick --repeats 1 --out "$tmp/suite"
+expect bench 0 'goal \(warm\): core .* faster than the fastest reference .* bandwidth floor' -- "$crossdiv" bench --quick --repeats 1 --out "$tmp/suite"
+expect bench-cold 0 'goal \(cold\): core .*\(target 1x\)' -- "$crossdiv" bench --quick --repeats 1 --only loop --cold
+expect bench-warm-and-cold 2 'excludes' -- "$crossdiv" bench --warm --cold
 expect bench-in-report 0 'figures/timing.png' -- grep 'figures/timing.png' "$tmp/suite/report.md"
 expect bench-curves 0 'wineglass/profile|curve:s-curve/s' -- "$crossdiv" bench --quick --repeats 1 --json "$tmp/b.json"
 fi

@@ -6,6 +6,7 @@
 #include "crossdiv/subdiv/doo_sabin.h"
 #include "crossdiv/subdiv/limit.h"
 #include "crossdiv/subdiv/loop.h"
+#include "crossdiv/subdiv/loop_streaming.h"
 #include "crossdiv/subdiv/sqrt3.h"
 #include "library_implementations.h"
 
@@ -81,7 +82,8 @@ public:
 
     size_t refine_native(const TriMesh& mesh, const RefineRequest& r) const override {
         if (r.scheme != Scheme::Loop) return Implementation::refine_native(mesh, r);
-        return loop_subdivide(mesh, r.rule.loop, r.levels).triangles.size();
+        // The fastest way core makes the last level: the streaming driver (loop_streaming.h).
+        return loop_subdivide_streaming(mesh, r.rule.loop, r.levels).triangles.size();
     }
 
     adapters::LimitPoints limit_points(const PolyMesh& mesh, const RefineRequest& r) const override {

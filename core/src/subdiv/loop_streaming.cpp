@@ -1,0 +1,376 @@
+#include "crossdiv/subdiv/loop_streaming.h"
+
+#include <climits>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "crossdiv/error.h"
+#include "crossdiv/subdiv/loop.h"
+#include "finite_level.h"
+
+namespace crossdiv {
+namespace {
+
+/// An array that is not initialized when made: each stream writes every element before any
+/// is read, and a value-initialized std::vector would first fill the whole array with zeros
+/// (measured: a tenth of a level's time).
+template <class T>
+struct Buffer {
+    std::unique_ptr<T[]> data;
+    size_t size = 0;
+    explicit Buffer(size_t n = 0) : data(std::make_unique_for_overwrite<T[]>(n)), size(n) {}
+    T& operator[](size_t i) { return data[i]; }
+    const T& operator[](size_t i) const { return data[i]; }
+};
+
+/// A level's topology as the streams read it. An edge is "first" seen from the triangle that
+/// numbers it (TriConnectivity::edge_corner); its ends and its first opposite vertex are read
+/// from there, so that edge points sum exactly what loop_subdivide sums.
+struct StreamTopology {
+    std::vector<Triangle> triangles;
+    /// Per triangle corner j: (edge << 1) | side of edge j (corner j to j + 1); side 0 when this
+    /// triangle is the edge's first.
+    Buffer<std::array<int, 3>> tri_edges;
+    Buffer<std::array<int, 2>> ends;      ///< per edge, from its first triangle's corner
+    Buffer<std::array<int, 2>> opposite;  ///< per edge: in the first triangle, in the second (-1: boundary)
+    Buffer<int> faces;                    ///< per vertex: triangles around it (0: isolated)
+    Buffer<std::uint8_t> boundary;        ///< per vertex: on a boundary
+
+    int num_vertices() const { return static_cast<int>(faces.size); }
+    int num_edges() const { return static_cast<int>(ends.size); }
+};
+
+StreamTopology from_connectivity(const TriMesh& mesh, const TriConnectivity& conn) {
+    StreamTopology t;
+    const auto& T = mesh.triangles;
+    t.triangles = T;
+    t.tri_edges = Buffer<std::array<int, 3>>(T.size());
+    for (size_t i = 0; i < T.size(); ++i)
+        for (int j = 0; j < 3; ++j) {
+            const int e = conn.tri_edges[i][j];
+            t.tri_edges[i][j] = (e << 1) | (conn.edge_corner[e] == 3 * static_cast<int>(i) + j ? 0 : 1);
+        }
+    const size_t ne = conn.edge_corner.size(), nv = static_cast<size_t>(mesh.num_vertices());
+    t.ends = Buffer<std::array<int, 2>>(ne);
+    t.opposite = Buffer<std::array<int, 2>>(ne);
+    for (int e = 0; e < conn.num_edges(); ++e) {
+        const int c = conn.edge_corner[e], i = c / 3, j = c % 3, nt = conn.neighbor_tris[i][j];
+        t.ends[e] = conn.edge_vertices[e];
+        t.opposite[e] = {T[i][(j + 2) % 3], nt < 0 ? -1 : T[nt][(conn.neighbor_edges[i][j] + 2) % 3]};
+    }
+    t.faces = Buffer<int>(nv);
+    t.boundary = Buffer<std::uint8_t>(nv);
+    for (size_t v = 0; v < nv; ++v) {
+        t.faces[v] = 0;
+        t.boundary[v] = conn.is_boundary_vertex(static_cast<int>(v));
+    }
+    for (const Triangle& tri : T)
+        for (int v : tri) ++t.faces[v];
+    return t;
+}
+
+/// The input level's topology built directly, in time linear in the corners whatever the
+/// valences: the half-edges bucketed by their lesser end (a counting sort), twins matched in
+/// each bucket by the greater end (an array stamped with the bucket, never cleared), edges
+/// numbered as build_tri_connectivity numbers them (at their first corner in scan order), and
+/// each vertex's corners walked once to see that they form one fan. nullopt when the mesh is
+/// not a manifold, consistently oriented triangle mesh with valid indices: build_tri_connectivity
+/// then names the element.
+std::optional<StreamTopology> stream_input(const TriMesh& mesh) {
+    const auto& T = mesh.triangles;
+    const int nv = mesh.num_vertices(), nf = mesh.num_faces(), nh = 3 * nf;
+    // Half-edge h = 3i + j runs from corner j of triangle i to corner j + 1. Its ends once:
+    // lesser[h], and key[h] = 2 * greater end + (1 when it runs from the lesser end).
+    std::vector<int> lesser(static_cast<size_t>(nh)), key(static_cast<size_t>(nh));
+    for (int i = 0; i < nf; ++i) {
+        const Triangle& t = T[i];
+        if (t[0] < 0 || t[0] >= nv || t[1] < 0 || t[1] >= nv || t[2] < 0 || t[2] >= nv) return std::nullopt;
+        if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) return std::nullopt;
+        for (int j = 0; j < 3; ++j) {
+            const int a = t[j], b = t[j == 2 ? 0 : j + 1];
+            lesser[3 * i + j] = std::min(a, b);
+            key[3 * i + j] = 2 * std::max(a, b) + (a < b);
+        }
+    }
+    // Half-edges by their lesser end.
+    std::vector<int> start(static_cast<size_t>(nv) + 1, 0), order(static_cast<size_t>(nh));
+    for (int h = 0; h < nh; ++h) ++start[lesser[h] + 1];
+    for (int v = 0; v < nv; ++v) start[v + 1] += start[v];
+    {
+        std::vector<int> fill(start.begin(), start.end() - 1);
+        for (int h = 0; h < nh; ++h) order[fill[lesser[h]]++] = h;
+    }
+    // Twins: in a bucket, the half-edges with the same greater end; one each way, or one alone.
+    std::vector<int> twin(static_cast<size_t>(nh), -1), stamp(static_cast<size_t>(nv), -1), first(static_cast<size_t>(nv));
+    for (int lo = 0; lo < nv; ++lo)
+        for (int k = start[lo]; k < start[lo + 1]; ++k) {
+            const int h = order[k], hi = key[h] >> 1;
+            if (stamp[hi] != lo) {
+                stamp[hi] = lo;
+                first[hi] = h;
+                continue;
+            }
+            const int g = first[hi];
+            if (g < 0 || key[g] == key[h]) return std::nullopt;  // a third face, or two the same way
+            twin[g] = h;
+            twin[h] = g;
+            first[hi] = -1;  // taken: one more half-edge on this edge is a fault
+        }
+    // Every vertex's corners in one fan: walk forward (across each outgoing edge) from the
+    // first unvisited corner and, on a boundary, backward too; a second walk at a vertex is a
+    // second fan (a bowtie). Corner c's outgoing half-edge is c itself; its incoming one is the
+    // half-edge before it in its triangle.
+    const auto after = [](int h) { return h % 3 == 2 ? h - 2 : h + 1; };
+    const auto before = [](int h) { return h % 3 == 0 ? h + 2 : h - 1; };
+    std::vector<std::uint8_t> visited(static_cast<size_t>(nh), 0), walked(static_cast<size_t>(nv), 0);
+    for (int c0 = 0; c0 < nh; ++c0) {
+        if (visited[c0]) continue;
+        if (walked[T[c0 / 3][c0 % 3]]++) return std::nullopt;
+        int c = c0;
+        do {
+            visited[c] = 1;
+            c = twin[c] < 0 ? -1 : after(twin[c]);
+        } while (c >= 0 && c != c0);
+        if (c < 0)
+            for (c = twin[before(c0)]; c >= 0; c = twin[before(c)]) visited[c] = 1;
+    }
+    StreamTopology t;
+    t.triangles = T;
+    t.tri_edges = Buffer<std::array<int, 3>>(static_cast<size_t>(nf));
+    std::vector<std::array<int, 2>> ends, opposite;
+    ends.reserve(static_cast<size_t>(nh) / 2 + 16);
+    opposite.reserve(ends.capacity());
+    t.faces = Buffer<int>(static_cast<size_t>(nv));
+    t.boundary = Buffer<std::uint8_t>(static_cast<size_t>(nv));
+    std::fill(t.faces.data.get(), t.faces.data.get() + nv, 0);
+    std::fill(t.boundary.data.get(), t.boundary.data.get() + nv, std::uint8_t{0});
+    for (int i = 0; i < nf; ++i)
+        for (int j = 0; j < 3; ++j) {
+            const int c = 3 * i + j, g = twin[c], a = T[i][j], b = T[i][j == 2 ? 0 : j + 1];
+            ++t.faces[a];
+            if (g >= 0 && g < c) {  // numbered at its twin, the first corner
+                t.tri_edges[i][j] = t.tri_edges[g / 3][g % 3] | 1;
+                continue;
+            }
+            if (g < 0) t.boundary[a] = t.boundary[b] = 1;
+            t.tri_edges[i][j] = static_cast<int>(ends.size()) << 1;
+            ends.push_back({a, b});
+            opposite.push_back({T[i][j == 0 ? 2 : j - 1], g < 0 ? -1 : T[g / 3][(g % 3 + 2) % 3]});
+        }
+    t.ends = Buffer<std::array<int, 2>>(ends.size());
+    t.opposite = Buffer<std::array<int, 2>>(ends.size());
+    std::copy(ends.begin(), ends.end(), t.ends.data.get());
+    std::copy(opposite.begin(), opposite.end(), t.opposite.data.get());
+    return t;
+}
+
+/// The input level's topology: built directly, or, for a mesh that is not a manifold, by
+/// build_tri_connectivity, which names the element it refuses.
+StreamTopology input_topology(const TriMesh& mesh) {
+    for (int v = 0; v < mesh.num_vertices(); ++v)
+        if (!mesh.positions[v].allFinite())
+            throw InputError(mesh.source.describe_vertex(v) + ": coordinate is NaN or infinite");
+    if (std::optional<StreamTopology> t = stream_input(mesh)) return std::move(*t);
+    return from_connectivity(mesh, build_tri_connectivity(mesh));
+}
+
+/// The vertex masks by face count, computed once per level for the counts that occur (at most
+/// the largest valence, so linear in the mesh).
+struct VertexMasks {
+    std::vector<VertexMask> interior, boundary;
+    VertexMasks(const StreamTopology& t, const LoopOptions& o) {
+        int most = 0;
+        for (size_t v = 0; v < t.faces.size; ++v) most = std::max(most, t.faces[v]);
+        interior.resize(static_cast<size_t>(most) + 1);
+        boundary.resize(static_cast<size_t>(most) + 1);
+        for (int n = 1; n <= most; ++n) {
+            interior[n] = interior_vertex_mask(o.weights, n);
+            boundary[n] = boundary_vertex_mask(o.boundary, n);
+        }
+    }
+};
+
+/// One level's points: the vertex points at 0..nv-1, the edge points at nv + e, in `out` (which
+/// holds nv + ne points). One pass over the edges writes the edge points and accumulates every
+/// vertex's sum of neighbours in `out`'s first nv entries (and, on a boundary edge, the
+/// boundary vertices' sums of their boundary neighbours in `boundary_sums`); one pass over the
+/// vertices turns the sums into vertex points. `Tuned`: the tuned families' edge masks, which
+/// read the ends' valences.
+template <bool Tuned>
+void level_points(const StreamTopology& t, const LoopOptions& o, const VertexMasks& masks, const Vec3* p, Vec3* out,
+                  std::vector<Vec3>& boundary_sums) {
+    const int nv = t.num_vertices(), ne = t.num_edges();
+    // The arrays as local pointers: the loop calls a function (the first boundary edge's
+    // allocation), after which members read through `t` would be loaded again every edge.
+    const std::uint8_t* bnd = t.boundary.data.get();
+    const std::array<int, 2>* ends = t.ends.data.get();
+    const std::array<int, 2>* opposite = t.opposite.data.get();
+    const int* faces = t.faces.data.get();
+    for (int v = 0; v < nv; ++v) out[v].setZero();
+    const TunedEdgeMask plain = tuned_edge_mask(o.weights, 0, 0);
+    const double half = boundary_edge_mask().end;
+    Vec3* edge_points = out + nv;
+    for (int e = 0; e < ne; ++e) {
+        const int a = ends[e][0], b = ends[e][1], c = opposite[e][0], d = opposite[e][1];
+        const Vec3 &pa = p[a], &pb = p[b];
+        out[a] += pb;
+        out[b] += pa;
+        if (d < 0) {  // a boundary edge: its ends sum their boundary neighbours apart
+            if (boundary_sums.empty()) boundary_sums.assign(static_cast<size_t>(nv), Vec3::Zero());
+            boundary_sums[a] += pb;
+            boundary_sums[b] += pa;
+            edge_points[e] = half * (pa + pb);
+            continue;
+        }
+        // Edge points: (a + b) and (c + d) summed first, then scaled (loop.cpp's stencil_sum).
+        if constexpr (Tuned) {
+            const TunedEdgeMask m = tuned_edge_mask(o.weights, tuned_edge_valence(faces[a], bnd[a]),
+                                                    tuned_edge_valence(faces[b], bnd[b]));
+            if (m.end_a == m.end_b) edge_points[e] = m.end_a * (pa + pb) + m.opposite * (p[c] + p[d]);
+            else edge_points[e] = m.end_a * pa + m.opposite * (p[c] + p[d]) + m.end_b * pb;
+        } else {
+            edge_points[e] = plain.end_a * (pa + pb) + plain.opposite * (p[c] + p[d]);
+        }
+    }
+    for (int v = 0; v < nv; ++v) {
+        const int f = faces[v];
+        if (f == 0) {  // isolated: nothing to average with, it stays
+            out[v] = p[v];
+            continue;
+        }
+        // An interior vertex sums every neighbour, a boundary vertex its two boundary neighbours.
+        const VertexMask m = bnd[v] ? masks.boundary[f] : masks.interior[f];
+        const Vec3& sum = bnd[v] ? boundary_sums[v] : out[v];
+        out[v] = m.neighbor != 0.0 ? Vec3(m.self * p[v] + m.neighbor * sum) : Vec3(m.self * p[v]);
+    }
+}
+
+/// Whether a level's points may overflow: the masks are convex (every weight in [0, 1], summing
+/// to 1), so a point is no larger than the largest input coordinate M; a partial sum is at most
+/// (largest valence + 2) M. Below this bound none can be infinite and the check after the level
+/// is skipped.
+bool may_overflow(const std::vector<Vec3>& p, const VertexMasks& masks) {
+    double largest = 0;
+    for (const Vec3& q : p) largest = std::max(largest, q.cwiseAbs().maxCoeff());
+    const double terms = static_cast<double>(masks.interior.size() + 2);
+    return !(largest * terms < std::numeric_limits<double>::max() / 4);  // NaN: a NaN input (refused before)
+}
+
+/// The next level's triangles (loop.h's numbering), and, unless `last`, the rest of its topology.
+void refine_topology(const StreamTopology& t, bool last, StreamTopology& child) {
+    const int nv = t.num_vertices(), ne = t.num_edges(), nf = static_cast<int>(t.triangles.size());
+    // Appended to a reserved vector: a resized one is zeroed first, a second pass over the
+    // level's largest array (measured: 5.5 ms against 3.5 ms for 1.28M triangles).
+    child.triangles.clear();
+    child.triangles.reserve(4 * static_cast<size_t>(nf));
+    for (int i = 0; i < nf; ++i) {
+        const Triangle& v = t.triangles[i];
+        const std::array<int, 3>& te = t.tri_edges[i];
+        const int m0 = nv + (te[0] >> 1), m1 = nv + (te[1] >> 1), m2 = nv + (te[2] >> 1);
+        child.triangles.push_back({v[0], m0, m2});
+        child.triangles.push_back({v[1], m1, m0});
+        child.triangles.push_back({v[2], m2, m1});
+        child.triangles.push_back({m0, m1, m2});
+    }
+    if (last) return;
+    child.tri_edges = Buffer<std::array<int, 3>>(4 * static_cast<size_t>(nf));
+    child.ends = Buffer<std::array<int, 2>>(2 * static_cast<size_t>(ne) + 3 * static_cast<size_t>(nf));
+    child.opposite = Buffer<std::array<int, 2>>(child.ends.size);
+    for (int i = 0; i < nf; ++i) {
+        const Triangle& v = t.triangles[i];
+        const std::array<int, 3>& te = t.tri_edges[i];
+        const int E[3] = {te[0] >> 1, te[1] >> 1, te[2] >> 1}, s[3] = {te[0] & 1, te[1] & 1, te[2] & 1};
+        const int m[3] = {nv + E[0], nv + E[1], nv + E[2]};
+        std::array<int, 3>* cte = &child.tri_edges[4 * static_cast<size_t>(i)];
+        const int interior = 2 * ne + 3 * i;
+        for (int k = 0; k < 3; ++k) {
+            const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+            // Edge k runs v_k -> v_k1 here; its half at v_k is 2E + s (the halves keep the
+            // first triangle's direction), at v_k1 2E + 1 - s. Corner child k = (v_k, m_k,
+            // m_k2): the half of edge k at v_k, the interior edge k2 backwards, the half of edge
+            // k2 at v_k. The centre child's edge k is interior edge k, which it sees first.
+            cte[k] = {((2 * E[k] + s[k]) << 1) | s[k], ((interior + k2) << 1) | 1, ((2 * E[k2] + 1 - s[k2]) << 1) | s[k2]};
+            cte[3][k] = (interior + k) << 1;
+            // Each half's opposite vertex in this triangle's child, in this triangle's slot.
+            child.opposite[2 * E[k] + s[k]][s[k]] = m[k2];
+            child.opposite[2 * E[k] + 1 - s[k]][s[k]] = m[k1];
+            if (s[k] == 0) {
+                // The first triangle writes the halves' ends (and, on a boundary, their
+                // missing second opposite).
+                const int a = t.ends[E[k]][0], b = t.ends[E[k]][1];
+                child.ends[2 * E[k]] = {a, m[k]};
+                child.ends[2 * E[k] + 1] = {m[k], b};
+                if (t.opposite[E[k]][1] < 0) child.opposite[2 * E[k]][1] = child.opposite[2 * E[k] + 1][1] = -1;
+            }
+            // Interior edge k = (m_k, m_k1): first in the centre child (opposite m_k2), second
+            // in corner child k1 (opposite v_k1).
+            child.ends[interior + k] = {m[k], m[k1]};
+            child.opposite[interior + k] = {m[k2], v[k1]};
+        }
+    }
+    // Old vertices keep their face count and boundary flag; a new edge vertex has 6 triangles
+    // round it inside, 3 on a boundary edge.
+    child.faces = Buffer<int>(static_cast<size_t>(nv) + ne);
+    child.boundary = Buffer<std::uint8_t>(child.faces.size);
+    std::copy(t.faces.data.get(), t.faces.data.get() + nv, child.faces.data.get());
+    std::copy(t.boundary.data.get(), t.boundary.data.get() + nv, child.boundary.data.get());
+    for (int e = 0; e < ne; ++e) {
+        const bool on_boundary = t.opposite[e][1] < 0;
+        child.faces[nv + e] = on_boundary ? 3 : 6;
+        child.boundary[nv + e] = on_boundary;
+    }
+}
+
+void require_addressable(const StreamTopology& t) {
+    const long long nf = static_cast<long long>(t.triangles.size()), nv = t.num_vertices(), ne = t.num_edges();
+    // Indices are int, as loop_refine_once refuses; an edge id also takes a side bit.
+    if (4 * nf > INT_MAX || 3 * (4 * nf) > INT_MAX || nv + ne > INT_MAX || 2 * (2 * ne + 3 * nf) > INT_MAX)
+        throw InputError("the next Loop level would have " + std::to_string(4 * nf) +
+                         " faces, more than 32-bit indices address; use fewer levels");
+}
+
+}  // namespace
+
+TriMesh loop_subdivide_streaming(const TriMesh& mesh, const LoopOptions& options, int levels) {
+    if (levels < 0) throw InputError("number of levels must be >= 0, got " + std::to_string(levels));
+    TriMesh out;
+    if (levels == 0) {
+        out.positions = mesh.positions;
+        out.colors = mesh.colors;
+        out.triangles = mesh.triangles;
+        return out;
+    }
+    StreamTopology topology = input_topology(mesh);
+    std::vector<Vec3> positions = mesh.positions, colors = mesh.colors;
+    for (int l = 0; l < levels; ++l) {
+        require_addressable(topology);
+        const VertexMasks masks(topology, options);
+        const size_t n = static_cast<size_t>(topology.num_vertices()) + topology.num_edges();
+        std::vector<Vec3> next(n);
+        const auto points = has_tuned_edges(options.weights) ? level_points<true> : level_points<false>;
+        std::vector<Vec3> boundary_sums;  // allocated at the first boundary edge
+        points(topology, options, masks, positions.data(), next.data(), boundary_sums);
+        if (may_overflow(positions, masks)) detail::require_finite_level(next, positions, l + 1);
+        if (!colors.empty()) {
+            std::vector<Vec3> next_colors(n);
+            boundary_sums.clear();
+            points(topology, options, masks, colors.data(), next_colors.data(), boundary_sums);
+            if (may_overflow(colors, masks)) detail::require_finite_level(next_colors, colors, l + 1);
+            colors = std::move(next_colors);
+        }
+        positions = std::move(next);
+        StreamTopology child;
+        refine_topology(topology, l + 1 == levels, child);  // the last level: its triangles only
+        topology = std::move(child);
+    }
+    out.positions = std::move(positions);
+    out.colors = std::move(colors);
+    out.triangles = std::move(topology.triangles);
+    return out;
+}
+
+}  // namespace crossdiv
