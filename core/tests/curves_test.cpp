@@ -452,3 +452,35 @@ TEST(SwpWriter, RecordsSwpCannotHoldAsPointsAreRefusedByName) {
         EXPECT_NE(std::string(e.what()).find("which its keyword does not name"), std::string::npos) << e.what();
     }
 }
+
+TEST(Tessellation, ARadialBudgetSpendsLessFarFromTheAxis) {
+    // A quarter circle of radius 1 about (0, 0) in the xy-plane, from (1, 0) to (0, 1) (a
+    // cubic's usual approximation): under {tol, radial} an edge whose arc reaches |x| = r may
+    // deviate by tol - radial r, so edges are longer near x = 0 than near x = 1.
+    const double k = 0.5522847498;
+    const BezierChain c = single_bezier(std::vector<Vec3>{v(1, 0), v(1, k), v(k, 1), v(0, 1)});
+    const double tol = 1e-4, radial = 0.5e-4;
+    const Polyline p = tessellate_distance(c, DistanceBudget{tol, radial});
+    const Polyline plain = tessellate_distance(c, tol);
+    EXPECT_GT(p.size(), plain.size());  // less tolerance near the rim: more edges
+    double first = 0, last = 0;
+    for (int i = 0; i + 1 < p.size(); ++i) {
+        // Each edge within what the budget leaves at the farthest |x| its arc reaches.
+        double farthest = 0, deviation = 0;
+        for (int j = 0; j <= 64; ++j) {
+            const double u = p.params[i] + (p.params[i + 1] - p.params[i]) * j / 64;
+            const Vec3 q = bezier_point(c.segment(0), u);
+            farthest = std::max(farthest, std::abs(q.x()));
+            deviation = std::max(deviation, point_segment_distance(q, p.positions[i], p.positions[i + 1]));
+        }
+        EXPECT_LE(deviation, tol - radial * farthest) << "edge " << i;
+        const double length = (p.positions[i + 1] - p.positions[i]).norm();
+        if (i == 0) first = length;
+        if (i + 3 == p.size()) last = length;  // the last full edge (the final one takes what is left)
+    }
+    // Near the axis an edge may sag twice as far as at the rim: about sqrt(2) times as long.
+    EXPECT_GT(last, 1.3 * first);
+    EXPECT_THROW(tessellate_distance(c, DistanceBudget{tol, -1.0}), InputError);
+    EXPECT_THROW(tessellate_distance(c, DistanceBudget{tol, std::nan("")}), InputError);
+    EXPECT_THROW(tessellate_distance(c, DistanceBudget{tol, 2 * tol}), InputError);  // nothing left at x = 1
+}

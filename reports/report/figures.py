@@ -190,6 +190,29 @@ def timing(records, figdir):
     return save(fig, figdir, "timing.png")
 
 
+def flattening(rows, target, figdir):
+    """The distance mode's edges over N* against the tolerance relative to each curve's size,
+    one line per curve, with the goal and N* itself."""
+    fig, ax = plt.subplots(figsize=(7, 4.2))
+    for curve in dict.fromkeys(r["curve"] for r in rows):
+        pts = sorted((r["tol_relative"], r["distance_edges"] / r["optimal_edges"]) for r in rows
+                     if r["curve"] == curve and r.get("optimal_edges") and "tol_relative" in r)
+        if pts:
+            ax.plot([p[0] for p in pts], [p[1] for p in pts], marker="o", lw=0.8, ms=3, alpha=0.7)
+    ax.axhline(target, color="red", ls="--", lw=1, label=f"goal {target} N* (tol <= 1e-3)")
+    ax.axhline(1.0, color="black", lw=0.8, label="N*")
+    ax.axvline(1e-3, color="grey", ls=":", lw=0.8)
+    ax.set_xscale("log")
+    ax.invert_xaxis()
+    ax.set_xlabel("distance tolerance / curve size")
+    ax.set_ylabel("distance-mode edges / N*")
+    ax.set_title("Distance-adaptive flattening against N* = integral of sqrt(kappa / (8 tol)) ds, every bundled curve",
+                 fontsize=8)
+    ax.legend(fontsize=7)
+    ax.grid(True, which="both", alpha=0.3)
+    return save(fig, figdir, "flattening.png")
+
+
 def stencil_times(rows, figdir):
     """Log-log time per frame against refined vertices, one line per implementation."""
     fig, ax = plt.subplots(figsize=(6, 4))

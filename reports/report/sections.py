@@ -143,6 +143,13 @@ def curve_section(curve_cases, bench, figdir):
                       fmt(r.get("optimal_edges"), ".1f"),
                       fmt(r["distance_edges"] / r["optimal_edges"], ".2f") if r.get("optimal_edges") else "-")
                      for r in tess]))
+        goal = (bench or {}).get("flattening_goal")
+        if goal and any("tol_relative" in r for r in tess):
+            s.add(Text(f"Goal: the distance mode within {goal['target_ratio']} N* at every tolerance of at most 1e-3 of "
+                       f"the curve's size, and never more edges than the fewest equal steps: largest "
+                       f"{fmt(goal['largest_ratio'], '.3f')} ({goal['largest_at']}), {goal['rows_above_uniform']} row(s) "
+                       f"above the uniform count - {'met' if goal['met'] else 'NOT met'}."),
+                  Figure(figures.flattening(tess, goal["target_ratio"], figdir), "flattening"))
     for i, c in enumerate(curve_cases):
         shapes = c.get("tables", {}).get("shapes")
         if shapes:
@@ -243,7 +250,9 @@ def surface_section(surface_cases, bench, figdir):
     if sweep:
         u, a, seed = sweep["uniform"], sweep["adaptive"], sweep["seed"]
         s.add(Text(f"Adaptive sweep ({sweep['input']}): uniform / adaptive faces {sweep['ratio']:.2f}, the seed's "
-                   f"{seed['uniform_faces']} / {seed['adaptive_faces']} = {seed['ratio']:.2f}."),
+                   f"{seed['uniform_faces']} / {seed['adaptive_faces']} = {seed['ratio']:.2f} - "
+                   f"{'beats' if sweep.get('beats_seed') else 'does NOT beat'} the seed's ratio at equal measured deviation "
+                   f"(the profile takes, at each radius, the tolerance the slices leave there)."),
               Table(["wineglass", "faces", "slices", "profile samples", "deviation"],
                     [("uniform (the record's steps)", u["faces"], u["slices"], u["profile_samples"], fmt(u["deviation"])),
                      ("adaptive, equal measured deviation", a["faces"], a["slices"], a["profile_samples"],

@@ -183,7 +183,8 @@ int bench_command(const BenchArgs& a) {
     const nlohmann::json doc = {{"tool", "crossdiv bench"}, {"repeats", a.repeats}, {"goals", goals}, {"bandwidth", bandwidth},
                                 {"records", loop}, {"valence", valence}, {"stencils", stencils},
                                 {"curves", curves.is_null() ? null : curves["tessellation"]},
-                                {"curve_timing", curves.is_null() ? null : curves["timing"]}, {"adaptive_sweep", surfaces},
+                                {"curve_timing", curves.is_null() ? null : curves["timing"]},
+                                {"flattening_goal", curves.is_null() ? null : curves["goal"]}, {"adaptive_sweep", surfaces},
                                 {"note", "references timed through their native refinement (loop_native), output kept "
                                          "in the library's own structures"}};
     std::vector<std::string> paths;

@@ -108,7 +108,7 @@ int run_tessellate(const TessellateArgs& a) {
                 if (a.close_frames) distribute_closure(t.poly.positions, t.frames, mismatch);
             }
         }
-        fmt::print("{}: {} ({}), {} points, measured max deviation {:.3g}{}\n", t.name, r.keyword, to_string(r.type),
+        fmt::print("{}: {} ({}), {} points, measured max deviation {:.6g}{}\n", t.name, r.keyword, to_string(r.type),
                    t.poly.size(), t.deviation,
                    t.frames.empty() || !r.closed() ? "" : fmt::format(", frame mismatch after one lap {:.4g} deg{}", t.closure_deg,
                                                                        a.close_frames ? " (distributed)" : ""));
@@ -226,6 +226,12 @@ json run_curve_bench(int repeats) {
     fmt::print("{:<28} {:>9}  {:>18} {:>18} {:>18} {:>18} {:>8} {:>10}\n", "curve", "tol", "uniform", "angle", "distance",
                "Wang", "N*", "dist / N*");
     json rows = json::array(), timing = json::array();
+    // The goal: the distance mode within kFlatteningGoal N* at every tolerance of at most 1e-3
+    // of the curve's size, and never more edges than the fewest equal steps that meet it.
+    constexpr double kFlatteningGoal = 1.15;
+    double worst_ratio = 0;
+    std::string worst_row;
+    int above_uniform = 0;
     for (const auto& [input, file] : files) {
         for (size_t i = 0; i < file.curves.size(); ++i) {
             const CurveRecord& r = file.curves[i];
@@ -234,6 +240,12 @@ json run_curve_bench(int repeats) {
             const double size = bounding_box_diagonal(r.chain().points);
             const double tols[] = {1e-2 * size, 1e-3 * size, 1e-4 * size};
             for (const TessellationRow& row : tessellation_study(r, label, tols)) {
+                const double relative = row.tol / size;
+                if (relative <= 1.01e-3 && row.distance_edges / row.optimal_edges > worst_ratio) {
+                    worst_ratio = row.distance_edges / row.optimal_edges;
+                    worst_row = fmt::format("{} at {:.0e} of its size", label, relative);
+                }
+                above_uniform += row.distance_edges > row.uniform_edges;
                 auto cell = [](int n, double d) { return fmt::format("{} ({:.2e})", n, d); };
                 fmt::print("{:<28} {:>9.2e}  {:>18} {:>18} {:>18} {:>18} {:>8.1f} {:>10.2f}\n", label, row.tol,
                            cell(row.uniform_edges, row.uniform_dev),
@@ -246,12 +258,18 @@ json run_curve_bench(int repeats) {
                                 {"angle_tol_deg", row.angle_tol_deg}, {"angle_reached", row.angle_reached},
                                 {"distance_edges", row.distance_edges}, {"distance_dev", row.distance_dev},
                                 {"wang_edges", row.wang_edges}, {"wang_dev", row.wang_dev},
-                                {"optimal_edges", row.optimal_edges}});
+                                {"optimal_edges", row.optimal_edges}, {"tol_relative", relative}});
             }
             // Evaluation time: position, d1 and d2 at 1000 parameters per segment, ours vs Eigen.
             if (const std::optional<CurveTiming> t = time_curve_evaluation(r, label, repeats)) timing.push_back(to_json(*t));
         }
     }
+    const bool met = worst_ratio <= kFlatteningGoal && above_uniform == 0;
+    fmt::print("goal: the distance mode within {} N* at tolerances of at most 1e-3 of the size (largest {:.3f}, {}) and never "
+               "above the fewest equal steps ({} rows above): {}\n",
+               kFlatteningGoal, worst_ratio, worst_row, above_uniform, met ? "met" : "NOT met");
+    const json goal = {{"target_ratio", kFlatteningGoal}, {"largest_ratio", worst_ratio}, {"largest_at", worst_row},
+                       {"rows_above_uniform", above_uniform}, {"met", met}};
     if (!timing.empty()) {
         fmt::print("\nCurve evaluation (position, d1, d2), median of {} runs: ours (de Casteljau) vs Eigen (Cox-de Boor)\n", repeats);
         fmt::print("{:<28} {:>6} {:>11} {:>10} {:>10} {:>9}\n", "curve", "degree", "evaluations", "core ms", "eigen ms", "x core");
@@ -260,7 +278,7 @@ json run_curve_bench(int repeats) {
                        t["evaluations"].get<size_t>(), t["core_ms"].get<double>(), t["eigen_ms"].get<double>(),
                        t["eigen_over_core"].get<double>());
     }
-    return {{"tessellation", rows}, {"timing", timing}};
+    return {{"tessellation", rows}, {"timing", timing}, {"goal", goal}};
 }
 
 void print_curve_tables(const std::vector<CaseRecord>& records) {

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "crossdiv/datasets/bundled_curves.h"
+#include "crossdiv/mesh/tri_mesh.h"
 #include "crossdiv/error.h"
 #include "crossdiv/verification/properties/curve_checks.h"
 #include "crossdiv/verification/harness/tolerances.h"
@@ -68,4 +69,32 @@ TEST(CurveChecks, TessellationStudyOrdersTheModes) {
             EXPECT_LE(row.angle_dev, row.tol);
         }
     }
+}
+
+// The distance mode on every bundled spline at 1e-3 and 1e-4 of its size: within the tolerance
+// as measured, never more edges than the fewest equal steps that meet it, and within 1.15 N*
+// (N* = integral of sqrt(kappa / (8 tol)) ds, about the fewest edges of any polyline on the
+// curve; measured at most 1.12, the Kochanek-Bartels curve of continuity -0.5 at 1e-3).
+TEST(CurveChecks, DistanceModeIsNearTheFewestEdgesOnEveryBundledCurve) {
+    int rows = 0;
+    double worst = 0;
+    for (const auto& b : datasets::bundled_curves()) {
+        const CurveFile f = datasets::bundled_curve_file(b.name);
+        for (size_t i = 0; i < f.curves.size(); ++i) {
+            const CurveRecord& r = f.curves[i];
+            if (r.type == CurveType::Primitive) continue;
+            const double size = bounding_box_diagonal(r.chain().points);
+            const double tols[] = {1e-3 * size, 1e-4 * size};
+            for (const TessellationRow& row : tessellation_study(r, b.name, tols)) {
+                ++rows;
+                EXPECT_LE(row.distance_dev, row.tol) << b.name << " " << r.label(static_cast<int>(i)) << " tol " << row.tol;
+                EXPECT_LE(row.distance_edges, row.uniform_edges) << b.name << " " << r.label(static_cast<int>(i));
+                EXPECT_LE(row.distance_edges, 1.15 * row.optimal_edges) << b.name << " " << r.label(static_cast<int>(i))
+                                                                         << " tol " << row.tol;
+                worst = std::max(worst, row.distance_edges / row.optimal_edges);
+            }
+        }
+    }
+    EXPECT_GT(rows, 40);
+    std::printf("distance mode: %d rows, at most %.3f N*\n", rows, worst);
 }

@@ -152,7 +152,7 @@ double max_turning_angle(std::span<const Vec3> c) {
 /// allocate once grown to the curve's size: de Casteljau rows, and the Bezier coefficients
 /// polynomial_max_bound splits.
 struct SplitScratch {
-    std::vector<Vec3> rest, work;
+    std::vector<Vec3> rest, work, discard, span_points;
     std::vector<double> perpendicular[2], pieces;
     std::vector<int> depths;
 };
@@ -278,26 +278,11 @@ void split_equal(std::span<const Vec3> c, int k, std::vector<Vec3>& dest, SplitS
     dest.insert(dest.end(), s.rest.begin(), s.rest.end());
 }
 
-/// Splits `c` at the increasing parameters `breaks` (in (0, 1)) into breaks.size() + 1 pieces
-/// appended to `dest`, peeling each off the rest as split_equal does.
-void split_at(std::span<const Vec3> c, std::span<const double> breaks, std::vector<Vec3>& dest, SplitScratch& s) {
-    s.rest.assign(c.begin(), c.end());
-    double done = 0;  // the rest covers [done, 1]
-    for (const double b : breaks) {
-        peel((b - done) / (1.0 - done), dest, s);
-        done = b;
-    }
-    dest.insert(dest.end(), s.rest.begin(), s.rest.end());
-}
-
 /// Samples per segment of the flattening integral.
 constexpr int kFlatteningSamples = 128;
-/// Rounds of recutting a segment with kFlatteningGrowth times more pieces while some piece
-/// narrowly misses the bound (by at most kNearMiss times tol), before the pieces still
-/// failing are split.
-constexpr int kFlatteningRounds = 12;
-constexpr double kFlatteningGrowth = 1.03;
-constexpr double kNearMiss = 1.25;
+/// Bisection steps that place an edge's far end: the end found lies within 2^-24 of the
+/// bracket's width below the farthest feasible one, far below what would save an edge.
+constexpr int kReachBisections = 24;
 
 /// Samples of the flattening integral of one segment: cumulative[j] is the integral of
 /// sqrt(kappa) ds over [0, j / kFlatteningSamples] (trapezoids). sqrt(kappa) |c'| is
@@ -316,24 +301,6 @@ void flattening_integral(std::span<const Vec3> c, std::vector<double>& cumulativ
         const double next = density(static_cast<double>(j) / kFlatteningSamples);
         cumulative[j] = cumulative[j - 1] + 0.5 * (previous + next) / kFlatteningSamples;
         previous = next;
-    }
-}
-
-/// Where a segment is cut into n pieces that hold equal shares of its flattening integral
-/// (interior breaks only). Equal shares are near-optimal for small tol: a chord of length h
-/// on curvature kappa sags kappa h^2 / 8, so a piece holding sqrt(8 tol) of the integral sags
-/// about tol (R. Levien's flattening, after the parabola approximation).
-void flattening_breaks(const std::vector<double>& cumulative, int n, std::vector<double>& breaks) {
-    breaks.clear();
-    const double total = cumulative.back();
-    int j = 0;
-    for (int i = 1; i < n; ++i) {
-        const double target = total * i / n;
-        while (j + 1 < kFlatteningSamples && cumulative[j + 1] < target) ++j;
-        const double span = cumulative[j + 1] - cumulative[j];
-        const double within = span > 0 ? (target - cumulative[j]) / span : 0.0;
-        const double t = (j + std::clamp(within, 0.0, 1.0)) / kFlatteningSamples;
-        if (t > (breaks.empty() ? 0.0 : breaks.back()) && t < 1.0) breaks.push_back(t);
     }
 }
 
@@ -367,6 +334,125 @@ void refine_distance(std::span<const Vec3> c, int segment, double t0, double t1,
                         depth + 1, rows, scratch, out);
     }
 }
+
+/// The piece [t0, t1] (0 <= t0 < t1 <= 1) of segment `c`, its control points in `dest`.
+void extract(std::span<const Vec3> c, double t0, double t1, std::vector<Vec3>& dest, SplitScratch& s) {
+    s.rest.assign(c.begin(), c.end());
+    if (t0 > 0.0) {
+        s.discard.clear();
+        peel(t0, s.discard, s);  // the rest is [t0, 1]
+    }
+    dest.clear();
+    if (t1 < 1.0) peel((t1 - t0) / (1.0 - t0), dest, s);
+    else dest.assign(s.rest.begin(), s.rest.end());
+}
+
+/// An upper bound of the distance from piece `c` to the segment [a, b], a chord that other
+/// pieces share (an edge across a joint of the chain): the smaller of the control points'
+/// largest distance from it (the convex hull) and, when every control point projects between
+/// a and b (so the distance to the segment is that to its line), the perpendicular
+/// components' bounds by branch and bound (as monotone_chord_distance, against this chord).
+double chord_distance_bound(std::span<const Vec3> c, const Vec3& a, const Vec3& b, SplitScratch& s) {
+    double hull = 0;
+    for (const Vec3& p : c) hull = std::max(hull, point_segment_distance(p, a, b));
+    const double length = (b - a).norm();
+    if (!(length > 0)) return hull;
+    const Vec3 u = (b - a) / length;
+    const double slack = 1e-12 * length;
+    Vec3 farthest = Vec3::Zero();
+    for (const Vec3& p : c) {
+        const double along = (p - a).dot(u);
+        if (along < -slack || along > length + slack) return hull;
+        const Vec3 perpendicular = (p - a) - along * u;
+        if (perpendicular.norm() > farthest.norm()) farthest = perpendicular;
+    }
+    if (farthest.norm() == 0) return std::min(hull, slack);
+    const Vec3 e[2] = {farthest.normalized(), u.cross(farthest.normalized())};
+    double sum_of_squares = 0;
+    for (int k = 0; k < 2; ++k) {
+        std::vector<double>& f = s.perpendicular[k];
+        f.resize(c.size());
+        for (size_t i = 0; i < c.size(); ++i) f[i] = (c[i] - a).dot(e[k]);
+        const double m = polynomial_max_bound(f, s.pieces, s.depths);
+        sum_of_squares += m * m;
+    }
+    return std::min(hull, std::sqrt(sum_of_squares) + slack);
+}
+
+/// The chain on [u0, u1] (global parameters) against its chord: within one segment the
+/// piece's flatness; across joints the largest chord_distance_bound of its pieces against the
+/// chord from the first piece's start to the last one's end. Valid upper bounds of the
+/// Hausdorff distance between the arc and the chord either way (the arc runs continuously from
+/// one end of the chord to the other).
+/// The largest |x| of control points: a bound of the arc's distance from the y axis.
+double largest_abs_x(std::span<const Vec3> c) {
+    double r = 0;
+    for (const Vec3& p : c) r = std::max(r, std::abs(p.x()));
+    return r;
+}
+
+/// How far the arc on [u0, u1] may be from its chord under `budget`: its tol less the
+/// radial share at the arc's largest distance from the y axis.
+struct SpanCheck {
+    double bound = 0;   ///< span_bound
+    double radius = 0;  ///< largest |x| of the pieces' control points (0 unless asked)
+};
+
+SpanCheck span_bound(const BezierChain& chain, double u0, double u1, bool radius, SplitScratch& s) {
+    const int segments = chain.num_segments();
+    const int first = std::clamp(static_cast<int>(std::floor(u0)), 0, segments - 1);
+    const int last = std::clamp(static_cast<int>(std::ceil(u1)) - 1, first, segments - 1);
+    SpanCheck out;
+    if (first == last) {
+        extract(chain.segment(first), u0 - first, u1 - first, s.span_points, s);
+        if (radius) out.radius = largest_abs_x(s.span_points);
+        out.bound = flatness(s.span_points, s);
+        return out;
+    }
+    // The chord's ends: the first piece's start and the last piece's end.
+    extract(chain.segment(first), u0 - first, 1.0, s.span_points, s);
+    const Vec3 a = s.span_points.front();
+    extract(chain.segment(last), 0.0, u1 - last, s.span_points, s);
+    const Vec3 b = s.span_points.back();
+    out.bound = chord_distance_bound(s.span_points, a, b, s);
+    if (radius) out.radius = largest_abs_x(s.span_points);
+    for (int k = first; k < last; ++k) {
+        extract(chain.segment(k), k == first ? u0 - k : 0.0, 1.0, s.span_points, s);
+        out.bound = std::max(out.bound, chord_distance_bound(s.span_points, a, b, s));
+        if (radius) out.radius = std::max(out.radius, largest_abs_x(s.span_points));
+    }
+    return out;
+}
+
+/// The chain's flattening integral at every sample (kFlatteningSamples per segment) from its
+/// start, and the parameter where it reaches a value: where an edge holding sqrt(8 tol) of the
+/// integral ends, about as far as an edge within tol reaches.
+struct FlatteningProfile {
+    std::vector<double> cumulative;  ///< at u = j / kFlatteningSamples
+    explicit FlatteningProfile(const BezierChain& chain) {
+        std::vector<double> segment;
+        cumulative.push_back(0.0);
+        for (int k = 0; k < chain.num_segments(); ++k) {
+            flattening_integral(chain.segment(k), segment);
+            const double base = cumulative.back();
+            for (int j = 1; j <= kFlatteningSamples; ++j) cumulative.push_back(base + segment[j]);
+        }
+    }
+    double at(double u) const {
+        const double x = u * kFlatteningSamples;
+        const size_t j = std::min(static_cast<size_t>(x), cumulative.size() - 2);
+        return cumulative[j] + (x - j) * (cumulative[j + 1] - cumulative[j]);
+    }
+    double reaching(double value) const {
+        const auto it = std::lower_bound(cumulative.begin(), cumulative.end(), value);
+        if (it == cumulative.end()) return static_cast<double>(cumulative.size() - 1) / kFlatteningSamples;
+        const size_t j = static_cast<size_t>(it - cumulative.begin());
+        if (j == 0) return 0.0;
+        const double span = cumulative[j] - cumulative[j - 1];
+        const double within = span > 0 ? (value - cumulative[j - 1]) / span : 1.0;
+        return (j - 1 + std::clamp(within, 0.0, 1.0)) / kFlatteningSamples;
+    }
+};
 
 }  // namespace
 
@@ -411,49 +497,70 @@ Polyline tessellate_angle(const BezierChain& chain, double angle_tol, int max_le
     return adaptive(chain, max_levels, [half](std::span<const Vec3> c) { return max_turning_angle(c) <= half; });
 }
 
-Polyline tessellate_distance(const BezierChain& chain, double tol) {
+Polyline tessellate_distance(const BezierChain& chain, double tol) { return tessellate_distance(chain, DistanceBudget{tol, 0.0}); }
+
+Polyline tessellate_distance(const BezierChain& chain, const DistanceBudget& budget) {
     require_segments(chain);
+    const double tol = budget.tol;
+    if (!(budget.radial >= 0 && std::isfinite(budget.radial)))
+        throw InputError("the distance budget's radial share must be finite and not negative, got " + std::to_string(budget.radial));
     const double scale = bounding_box_diagonal(chain.points);
     if (!std::isfinite(tol) || tol <= 0.0 || tol < kMinDistanceTolRelative * scale)
         throw InputError("the distance tolerance must be finite and at least " + std::to_string(kMinDistanceTolRelative) +
                          " x the curve's size (" + std::to_string(scale) + "), got " + std::to_string(tol));
     Polyline out;
-    std::vector<std::vector<Vec3>> rows;
     SplitScratch scratch;
-    std::vector<double> cumulative, breaks, piece_flatness;
-    std::vector<Vec3> pieces;
-    for (int k = 0; k < chain.num_segments(); ++k) {
-        // Cut where the flattening integral says, then certify each piece (refine_distance
-        // splits any whose bound still exceeds tol).
-        const std::span<const Vec3> c = chain.segment(k);
-        const size_t n = c.size();
-        flattening_integral(c, cumulative);
-        const double estimate = std::ceil(cumulative.back() / std::sqrt(8.0 * tol));
-        int count = static_cast<int>(std::clamp(estimate, 1.0, static_cast<double>(kMaxCurveSamples)));
-        // Where curvature varies within a piece its sag may exceed the estimate's: while some
-        // piece misses the bound narrowly, cut again with a few percent more pieces (a few
-        // rounds) rather than split it in two, which would double the count there. A piece far
-        // above the bound (around a cusp, where the curve turns back along its chord) is left
-        // to refine_distance's local splitting: more pieces everywhere would not help it.
-        for (int round = 0;; ++round) {
-            flattening_breaks(cumulative, count, breaks);
-            pieces.clear();
-            split_at(c, breaks, pieces, scratch);
-            int near_misses = 0;
-            piece_flatness.clear();
-            for (size_t i = 0; i <= breaks.size(); ++i) {
-                const double f = flatness(std::span<const Vec3>(pieces.data() + i * n, n), scratch);
-                piece_flatness.push_back(f);
-                near_misses += f > tol && f <= kNearMiss * tol;
+    const FlatteningProfile profile(chain);
+    const double end = chain.num_segments(), step = std::sqrt(8.0 * tol);
+    const auto emit_at = [&](double u) {
+        const int k = std::min(static_cast<int>(u), chain.num_segments() - 1);
+        emit(out, bezier_point_tangent(chain.segment(k), u - k), u);
+    };
+    // Certified with a margin of 1e-9 of tol: the farthest end sits at the bound, and the
+    // vertex evaluated there and any measurement of the distance round differently from the
+    // piece the bound was computed on (by ulps).
+    const double certified = tol * (1.0 - 1e-9);
+    const bool radial = budget.radial > 0;
+    const auto fits = [&](double u0, double u1) {
+        const SpanCheck c = span_bound(chain, u0, u1, radial, scratch);
+        return c.bound <= certified - budget.radial * c.radius;
+    };
+    std::vector<std::vector<Vec3>> rows;
+    for (double u = 0.0; u < end;) {
+        // The farthest end within tol: bracketed from where the flattening integral says an
+        // edge within tol ends (growing by half while it fits; each test reads the segments the
+        // edge spans, so a long chain costs about its length), then bisected.
+        double lo = u, hi = end;
+        for (double g = std::clamp(profile.reaching(profile.at(u) + step), u + (end - u) * 1e-9, end);;) {
+            if (!fits(u, g)) {
+                hi = g;
+                break;
             }
-            if (near_misses == 0 || round == kFlatteningRounds || count >= kMaxCurveSamples) break;
-            count = std::max(count + 1, static_cast<int>(std::ceil(count * kFlatteningGrowth)));
+            lo = g;
+            if (g == end) break;
+            g = std::min(end, u + 1.5 * (g - u));
         }
-        for (size_t i = 0; i <= breaks.size(); ++i) {
-            const double t0 = i == 0 ? 0.0 : breaks[i - 1], t1 = i == breaks.size() ? 1.0 : breaks[i];
-            refine_distance(std::span<const Vec3>(pieces.data() + i * n, n), k, t0, t1, tol, 0, rows, scratch, out,
-                            piece_flatness[i]);
+        for (int i = 0; i < kReachBisections && lo < end; ++i) {
+            const double mid = 0.5 * (lo + hi);
+            (fits(u, mid) ? lo : hi) = mid;
         }
+        const double reach = lo;
+        if (reach > u) {
+            emit_at(u);
+            u = reach;
+            continue;
+        }
+        // No end was found fitting (the bound's slack at a tolerance near the floor): certify
+        // the rest of this segment by splitting, which always ends.
+        const int k = std::min(static_cast<int>(u), chain.num_segments() - 1);
+        extract(chain.segment(k), u - k, 1.0, scratch.span_points, scratch);
+        const std::vector<Vec3> piece = scratch.span_points;
+        const double allowed = tol - budget.radial * largest_abs_x(piece);
+        if (!(allowed > 0))
+            throw InputError("the distance budget leaves no tolerance on segment " + std::to_string(k) + " (tol " +
+                             std::to_string(tol) + " less " + std::to_string(budget.radial) + " times its distance from the axis)");
+        refine_distance(piece, k, u - k, 1.0, allowed, 0, rows, scratch, out);
+        u = k + 1;
     }
     finish(chain, out);
     return out;
@@ -515,14 +622,23 @@ Deviation sampled_maximum(const std::function<double(double)>& f, double a, doub
 Deviation chordal_deviation(const BezierChain& chain, const Polyline& poly) {
     Deviation dev;
     const int segments = chain.num_segments();
+    // The chain at global parameter u; an edge may span joints (the distance mode's do).
+    const auto point = [&](double u) {
+        const int k = std::clamp(static_cast<int>(std::floor(u)), 0, segments - 1);
+        return bezier_point(chain.segment(k), u - k);
+    };
     for (int i = 0; i + 1 < poly.size(); ++i) {
-        const int k = std::clamp(static_cast<int>(std::floor(poly.params[i])), 0, segments - 1);
-        const std::span<const Vec3> seg = chain.segment(k);
         const Vec3 &a = poly.positions[i], &b = poly.positions[i + 1];
-        const Deviation d = sampled_maximum(
-            [&](double t) { return point_segment_distance(bezier_point(seg, t), a, b); }, poly.params[i] - k,
-            poly.params[i + 1] - k);
-        if (d.max > dev.max) dev = {d.max, k + d.at_param};
+        const int first = std::clamp(static_cast<int>(std::floor(poly.params[i])), 0, segments - 1);
+        const int last = std::clamp(static_cast<int>(std::ceil(poly.params[i + 1])) - 1, first, segments - 1);
+        // Each segment the edge spans sampled on its own: the curve is smooth within one.
+        for (int k = first; k <= last; ++k) {
+            const double u0 = std::max(poly.params[i], static_cast<double>(k)),
+                         u1 = std::min(poly.params[i + 1], static_cast<double>(k + 1));
+            if (!(u1 > u0)) continue;
+            const Deviation d = sampled_maximum([&](double u) { return point_segment_distance(point(u), a, b); }, u0, u1);
+            if (d.max > dev.max) dev = d;
+        }
     }
     return dev;
 }

@@ -20,6 +20,18 @@ Polyline sample(const CurveRecord& r, const SweepOptions& o) {
     return tessellate_record(r, t);
 }
 
+/// The largest distance of a profile from the y axis (of its control points, which bound the
+/// curve; a primitive's samples at the record's steps).
+double profile_radius(const CurveRecord& r) {
+    double radius = 0;
+    if (r.type == CurveType::Primitive) {
+        for (const Vec3& p : tessellate_record(r, {}).positions) radius = std::max(radius, std::abs(p.x()));
+    } else {
+        for (const Vec3& p : r.chain().points) radius = std::max(radius, std::abs(p.x()));
+    }
+    return radius;
+}
+
 /// Fewest slices (>= 3) whose chord sags at most `tol` below a circle of radius r.
 int slices_for(double r, double tol) {
     if (r <= 0) return 3;
@@ -46,17 +58,23 @@ SweepSurface build_sweep(const CurveFile& file, int index, const SweepOptions& o
                                 : rec.name;
     const CurveRecord& profile = file.curves.at(rec.profile_index);
     try {
-        const Polyline p = sample(profile, o);
+        RevolutionOptions ro;
+        ro.convention = RevolutionConvention::C3100;
+        ro.slices = rec.steps;
+        Polyline p;
+        if (rec.kind == SweepRecord::Kind::Revolution && o.adaptive && profile.type != CurveType::Primitive) {
+            // The slices spend (1 - share) tol at the profile's widest radius r, and at radius x
+            // only x (1 - cos(pi / n)): the profile takes, wherever it is, what they leave.
+            const double r = profile_radius(profile);
+            ro.slices = slices_for(r, o.tol * (1 - o.curve_share));
+            p = tessellate_distance(profile.chain(), DistanceBudget{o.tol, 1 - std::cos(std::numbers::pi / ro.slices)});
+        } else {
+            p = sample(profile, o);
+            if (rec.kind == SweepRecord::Kind::Revolution && o.adaptive)
+                ro.slices = slices_for(profile_radius(profile), o.tol * (1 - o.curve_share));
+        }
         const bool profile_closed = profile.closed();
         if (rec.kind == SweepRecord::Kind::Revolution) {
-            RevolutionOptions ro;
-            ro.convention = RevolutionConvention::C3100;
-            ro.slices = rec.steps;
-            if (o.adaptive) {
-                double r = 0;
-                for (const Vec3& q : p.positions) r = std::max(r, std::abs(q.x()));
-                ro.slices = slices_for(r, o.tol * (1 - o.curve_share));
-            }
             require_surface_size(2LL * std::max(p.size() - 1, 0) * std::max(ro.slices, 3), o.max_triangles,
                                  "the surface of revolution");
             out.grid = revolution_grid(p, profile_closed, ro);

@@ -64,21 +64,38 @@ Polyline tessellate_angle(const BezierChain& chain, double angle_tol, int max_le
 /// recursion would split to the bottom of the parameter's precision.
 inline constexpr double kMinDistanceTolRelative = 1e-12;
 
-/// Adaptive by distance, with a guarantee. Each segment is first cut into pieces holding
-/// equal shares of its flattening integral (of sqrt(kappa) ds), about N* of them (see
-/// flattening_estimate), recut with a few percent more while some piece fails the bound
-/// below; then a piece is one edge when an upper bound of its
-/// distance to its chord (the smaller of: the control points' largest distance from the
-/// chord, as the piece lies in their convex hull; (1 - 2^(1-d)) max_i |p_i - l_i| against
-/// the uniformly parametrized chord; and, for a piece running monotonically along its chord,
-/// its distance to the chord's line bounded by branch and bound on the Bezier coefficients of
-/// the perpendicular components, tight to 1e-9) is at most `tol`. Since the piece also runs continuously
-/// from one end of the chord to the other, every chord point has a curve point within tol
-/// (project the curve onto the chord): the Hausdorff distance between curve and polyline is
-/// at most tol. Otherwise the piece is split into k = ceil(sqrt(bound / tol)) equal pieces
-/// (the bound falls as 1/k^2), and each is treated the same way.
+/// Adaptive by distance, with a guarantee, and near the fewest edges: greedy farthest reach.
+/// From each vertex the next is put as far along the chain as an upper bound of the arc's
+/// distance to the chord between them allows (the arc may run across the chain's joints):
+/// bracketed from where the flattening integral (of sqrt(kappa) ds, see flattening_estimate)
+/// says an edge within tol ends, grown by half while it fits, then bisected. For a convex arc
+/// a shorter arc's chord is no farther, so the greedy choice is the fewest edges (interval
+/// covering); measured on the bundled curves it stays within 1.12 N* at 1e-3 and 1e-4 of the
+/// curve's size. The bound on one segment's piece is the smallest of: the control points'
+/// largest distance from the chord (the piece lies in their convex hull); (1 - 2^(1-d))
+/// max_i |p_i - l_i| against the uniformly parametrized chord; and, for a piece running
+/// monotonically along its chord, its distance to the chord's line by branch and bound on the
+/// Bezier coefficients of the perpendicular components, tight to 1e-9. Across joints, the
+/// largest over the pieces of the first and the last of those against the shared chord. Since
+/// the arc runs continuously from one end of the chord to the other, every chord point has an
+/// arc point within tol (project the arc onto the chord): the Hausdorff distance between curve
+/// and polyline is at most tol.
 /// @throws InputError if tol is not finite or below kMinDistanceTolRelative of the curve.
 Polyline tessellate_distance(const BezierChain& chain, double tol);
+
+/// A distance tolerance that shrinks away from the y axis: an edge whose control points reach
+/// |x| = r may deviate by tol - radial r. The profile of a surface of revolution about the y
+/// axis takes it when its slices already sag r (1 - cos(pi / n)) at radius r: the profile
+/// spends there what the slices leave, more near the axis than at the rim.
+struct DistanceBudget {
+    double tol = 0;
+    double radial = 0;
+};
+
+/// The distance mode under `budget` (tessellate_distance(chain, tol) is {tol, 0}).
+/// @throws InputError as tessellate_distance, for a negative or non-finite radial share, or
+///         for a segment the budget leaves no tolerance on.
+Polyline tessellate_distance(const BezierChain& chain, const DistanceBudget& budget);
 
 /// N* = (integral of sqrt(kappa) ds) / sqrt(8 tol): about the fewest edges of any polyline
 /// with its vertices on the curve within tol of it, for small tol (a chord of length h on

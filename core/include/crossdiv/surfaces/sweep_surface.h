@@ -15,12 +15,15 @@ struct SweepOptions {
     FrameMethod frames = FrameMethod::Recursive;  ///< gcyl: recursive (the seed's) or DoubleReflection
     bool close_frames = true;                     ///< gcyl: distribute the closure angle of closed sweeps
     /// Uniform (false): every curve with its record's STEPS, srev with the record's slices.
-    /// Adaptive (true): the curves by the distance mode at curve_share * tol, and srev with
-    /// the fewest slices whose chord stays within (1 - curve_share) * tol of the widest
-    /// circle, r (1 - cos(pi / n)); the two parts add up to at most about tol.
+    /// Adaptive (true): gcyl's curves by the distance mode at curve_share * tol. srev takes the
+    /// fewest slices n whose chord stays within (1 - curve_share) * tol of the widest circle
+    /// (radius r: r (1 - cos(pi / n))), and a spline profile the distance mode under the budget
+    /// the slices leave at each radius x, tol - x (1 - cos(pi / n)) (DistanceBudget): at the
+    /// rim curve_share * tol, near the axis almost all of it; the two parts add up to at most
+    /// about tol everywhere. A primitive profile (circ) takes curve_share * tol.
     bool adaptive = false;
     double tol = 0;            ///< absolute, for adaptive
-    double curve_share = 0.5;  ///< adaptive srev: the part of tol given to the profile, in (0, 1)
+    double curve_share = 0.5;  ///< adaptive: the part of tol left to the curves at the widest radius, in (0, 1)
     long long max_triangles = kDefaultMaxSurfaceTriangles;  ///< refuse a larger surface before building it
 };
 
