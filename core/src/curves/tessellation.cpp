@@ -195,6 +195,31 @@ double polynomial_max_bound(std::span<const double> b, std::vector<double>& piec
     return std::max(found * (1 + 1e-9), bound);
 }
 
+/// An upper bound of a piece's largest distance from the line through `a` along the unit
+/// vector `u`: the perpendicular part's two components (along e1, the direction of the
+/// farthest control point's perpendicular offset, and e2 = u x e1) are polynomials bounded
+/// tightly by polynomial_max_bound; the bound is the root of the sum of their squares, plus
+/// `slack` for the rounding of the coordinates.
+double line_distance_bound(std::span<const Vec3> c, const Vec3& a, const Vec3& u, double slack, SplitScratch& s) {
+    Vec3 farthest = Vec3::Zero();
+    for (const Vec3& p : c) {
+        const Vec3 perpendicular = (p - a) - (p - a).dot(u) * u;
+        if (perpendicular.norm() > farthest.norm()) farthest = perpendicular;
+    }
+    if (farthest.norm() == 0) return slack;
+    const Vec3 e[2] = {farthest.normalized(), u.cross(farthest.normalized())};
+    double sum_of_squares = 0;
+    for (int k = 0; k < 2; ++k) {
+        std::vector<double>& f = s.perpendicular[k];
+        f.resize(c.size());
+        for (size_t i = 0; i < c.size(); ++i) f[i] = (c[i] - a).dot(e[k]);
+        const double m = polynomial_max_bound(f, s.pieces, s.depths);
+        sum_of_squares += m * m;
+    }
+    // The perpendicular part is computed from rounded coordinates: the slack covers it.
+    return std::sqrt(sum_of_squares) + slack;
+}
+
 /// Bound (d) of flatness(): for a piece that runs monotonically along its chord (its
 /// along-chord Bezier coefficients nondecreasing within the chord's length, so that no point
 /// projects beyond the chord's ends) the distance to the chord is that to its line, the norm
@@ -212,28 +237,13 @@ double monotone_chord_distance(std::span<const Vec3> c, SplitScratch& s) {
     // distance to the chord by no more than the slack added to the bound below.
     const double slack = 1e-12 * length;
     double previous = -slack;
-    Vec3 farthest = Vec3::Zero();
     for (const Vec3& p : c) {
-        const Vec3 r = p - c.front();
-        const double along = r.dot(u);
+        const double along = (p - c.front()).dot(u);
         if (along < previous - slack) return INFINITY;
         previous = std::max(previous, along);
-        const Vec3 perpendicular = r - along * u;
-        if (perpendicular.norm() > farthest.norm()) farthest = perpendicular;
     }
     if (previous > length + slack) return INFINITY;
-    if (farthest.norm() == 0) return slack;
-    const Vec3 e[2] = {farthest.normalized(), u.cross(farthest.normalized())};
-    double sum_of_squares = 0;
-    for (int k = 0; k < 2; ++k) {
-        std::vector<double>& f = s.perpendicular[k];
-        f.resize(d + 1);
-        for (size_t i = 0; i <= d; ++i) f[i] = (c[i] - c.front()).dot(e[k]);
-        const double m = polynomial_max_bound(f, s.pieces, s.depths);
-        sum_of_squares += m * m;
-    }
-    // The perpendicular part is computed from rounded coordinates: the slack covers it.
-    return std::sqrt(sum_of_squares) + slack;
+    return line_distance_bound(c, c.front(), u, slack, s);
 }
 
 /// An upper bound of the Hausdorff distance between a piece and its chord: the smallest of
@@ -359,31 +369,13 @@ double chord_distance_bound(std::span<const Vec3> c, const Vec3& a, const Vec3& 
     if (!(length > 0)) return hull;
     const Vec3 u = (b - a) / length;
     const double slack = 1e-12 * length;
-    Vec3 farthest = Vec3::Zero();
     for (const Vec3& p : c) {
         const double along = (p - a).dot(u);
         if (along < -slack || along > length + slack) return hull;
-        const Vec3 perpendicular = (p - a) - along * u;
-        if (perpendicular.norm() > farthest.norm()) farthest = perpendicular;
     }
-    if (farthest.norm() == 0) return std::min(hull, slack);
-    const Vec3 e[2] = {farthest.normalized(), u.cross(farthest.normalized())};
-    double sum_of_squares = 0;
-    for (int k = 0; k < 2; ++k) {
-        std::vector<double>& f = s.perpendicular[k];
-        f.resize(c.size());
-        for (size_t i = 0; i < c.size(); ++i) f[i] = (c[i] - a).dot(e[k]);
-        const double m = polynomial_max_bound(f, s.pieces, s.depths);
-        sum_of_squares += m * m;
-    }
-    return std::min(hull, std::sqrt(sum_of_squares) + slack);
+    return std::min(hull, line_distance_bound(c, a, u, slack, s));
 }
 
-/// The chain on [u0, u1] (global parameters) against its chord: within one segment the
-/// piece's flatness; across joints the largest chord_distance_bound of its pieces against the
-/// chord from the first piece's start to the last one's end. Valid upper bounds of the
-/// Hausdorff distance between the arc and the chord either way (the arc runs continuously from
-/// one end of the chord to the other).
 /// The largest |x| of control points: a bound of the arc's distance from the y axis.
 double largest_abs_x(std::span<const Vec3> c) {
     double r = 0;
@@ -391,13 +383,18 @@ double largest_abs_x(std::span<const Vec3> c) {
     return r;
 }
 
-/// How far the arc on [u0, u1] may be from its chord under `budget`: its tol less the
-/// radial share at the arc's largest distance from the y axis.
+/// What the distance mode reads of an arc: its bound from its chord, and how far from the y
+/// axis it reaches (a DistanceBudget's tolerance shrinks with that).
 struct SpanCheck {
     double bound = 0;   ///< span_bound
     double radius = 0;  ///< largest |x| of the pieces' control points (0 unless asked)
 };
 
+/// The chain on [u0, u1] (global parameters) against its chord: within one segment the
+/// piece's flatness; across joints the largest chord_distance_bound of its pieces against the
+/// chord from the first piece's start to the last one's end. Valid upper bounds of the
+/// Hausdorff distance between the arc and the chord either way (the arc runs continuously from
+/// one end of the chord to the other). With `radius`, also the arc's reach from the y axis.
 SpanCheck span_bound(const BezierChain& chain, double u0, double u1, bool radius, SplitScratch& s) {
     const int segments = chain.num_segments();
     const int first = std::clamp(static_cast<int>(std::floor(u0)), 0, segments - 1);

@@ -1,10 +1,12 @@
 #include "crossdiv/subdiv/loop_streaming.h"
 
+#include <algorithm>
 #include <climits>
 #include <cstdint>
 #include <limits>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -43,35 +45,6 @@ struct StreamTopology {
     int num_vertices() const { return static_cast<int>(faces.size); }
     int num_edges() const { return static_cast<int>(ends.size); }
 };
-
-StreamTopology from_connectivity(const TriMesh& mesh, const TriConnectivity& conn) {
-    StreamTopology t;
-    const auto& T = mesh.triangles;
-    t.triangles = T;
-    t.tri_edges = Buffer<std::array<int, 3>>(T.size());
-    for (size_t i = 0; i < T.size(); ++i)
-        for (int j = 0; j < 3; ++j) {
-            const int e = conn.tri_edges[i][j];
-            t.tri_edges[i][j] = (e << 1) | (conn.edge_corner[e] == 3 * static_cast<int>(i) + j ? 0 : 1);
-        }
-    const size_t ne = conn.edge_corner.size(), nv = static_cast<size_t>(mesh.num_vertices());
-    t.ends = Buffer<std::array<int, 2>>(ne);
-    t.opposite = Buffer<std::array<int, 2>>(ne);
-    for (int e = 0; e < conn.num_edges(); ++e) {
-        const int c = conn.edge_corner[e], i = c / 3, j = c % 3, nt = conn.neighbor_tris[i][j];
-        t.ends[e] = conn.edge_vertices[e];
-        t.opposite[e] = {T[i][(j + 2) % 3], nt < 0 ? -1 : T[nt][(conn.neighbor_edges[i][j] + 2) % 3]};
-    }
-    t.faces = Buffer<int>(nv);
-    t.boundary = Buffer<std::uint8_t>(nv);
-    for (size_t v = 0; v < nv; ++v) {
-        t.faces[v] = 0;
-        t.boundary[v] = conn.is_boundary_vertex(static_cast<int>(v));
-    }
-    for (const Triangle& tri : T)
-        for (int v : tri) ++t.faces[v];
-    return t;
-}
 
 /// The input level's topology built directly, in time linear in the corners whatever the
 /// valences: the half-edges bucketed by their lesser end (a counting sort), twins matched in
@@ -168,14 +141,16 @@ std::optional<StreamTopology> stream_input(const TriMesh& mesh) {
     return t;
 }
 
-/// The input level's topology: built directly, or, for a mesh that is not a manifold, by
-/// build_tri_connectivity, which names the element it refuses.
+/// The input level's topology. A mesh stream_input refuses is one build_tri_connectivity
+/// refuses too, naming the element; were it to accept one, the two would disagree on what a
+/// manifold is, which is a bug (the fuzzers compare the two drivers' refusals).
 StreamTopology input_topology(const TriMesh& mesh) {
     for (int v = 0; v < mesh.num_vertices(); ++v)
         if (!mesh.positions[v].allFinite())
             throw InputError(mesh.source.describe_vertex(v) + ": coordinate is NaN or infinite");
     if (std::optional<StreamTopology> t = stream_input(mesh)) return std::move(*t);
-    return from_connectivity(mesh, build_tri_connectivity(mesh));
+    (void)build_tri_connectivity(mesh);  // throws, naming the element
+    throw std::logic_error("the streaming Loop driver refused a mesh build_tri_connectivity accepts");
 }
 
 /// The vertex masks by face count, computed once per level for the counts that occur (at most

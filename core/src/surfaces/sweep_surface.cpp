@@ -61,18 +61,14 @@ SweepSurface build_sweep(const CurveFile& file, int index, const SweepOptions& o
         RevolutionOptions ro;
         ro.convention = RevolutionConvention::C3100;
         ro.slices = rec.steps;
-        Polyline p;
-        if (rec.kind == SweepRecord::Kind::Revolution && o.adaptive && profile.type != CurveType::Primitive) {
-            // The slices spend (1 - share) tol at the profile's widest radius r, and at radius x
-            // only x (1 - cos(pi / n)): the profile takes, wherever it is, what they leave.
-            const double r = profile_radius(profile);
-            ro.slices = slices_for(r, o.tol * (1 - o.curve_share));
-            p = tessellate_distance(profile.chain(), DistanceBudget{o.tol, 1 - std::cos(std::numbers::pi / ro.slices)});
-        } else {
-            p = sample(profile, o);
-            if (rec.kind == SweepRecord::Kind::Revolution && o.adaptive)
-                ro.slices = slices_for(profile_radius(profile), o.tol * (1 - o.curve_share));
-        }
+        const bool adaptive_revolution = rec.kind == SweepRecord::Kind::Revolution && o.adaptive;
+        if (adaptive_revolution) ro.slices = slices_for(profile_radius(profile), o.tol * (1 - o.curve_share));
+        // The slices spend (1 - share) tol at the profile's widest radius, and at radius x only
+        // x (1 - cos(pi / n)): a spline profile takes, wherever it is, what they leave.
+        const Polyline p = adaptive_revolution && profile.type != CurveType::Primitive
+                               ? tessellate_distance(profile.chain(),
+                                                     DistanceBudget{o.tol, 1 - std::cos(std::numbers::pi / ro.slices)})
+                               : sample(profile, o);
         const bool profile_closed = profile.closed();
         if (rec.kind == SweepRecord::Kind::Revolution) {
             require_surface_size(2LL * std::max(p.size() - 1, 0) * std::max(ro.slices, 3), o.max_triangles,

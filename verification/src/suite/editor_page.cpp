@@ -19,7 +19,6 @@ using nlohmann::json;
 /// (it may not import ES modules).
 constexpr const char* kThreeFiles[] = {"/usr/share/javascript/three/build/three.min.js",
                                        "/usr/share/javascript/three/examples/js/controls/OrbitControls.js"};
-constexpr const char* kEditorFiles[] = {"editor.js", "spline_math.js"};
 
 /// Distance tolerances of the page's adaptive runs, as fractions of the curve's diagonal, and
 /// angle tolerances in degrees: coarse enough that each run's polygon is seen apart from the curve.
@@ -39,12 +38,6 @@ void copy_file(const fs::path& from, const fs::path& to, const std::string& why)
     if (!fs::is_regular_file(from, ec)) throw InputError(from.string() + ": missing (" + why + ")");
     fs::copy_file(from, to, fs::copy_options::overwrite_existing, ec);
     if (ec) throw InputError(to.string() + ": cannot write (" + ec.message() + ")");
-}
-
-std::string read_text(const fs::path& path) {
-    std::ifstream in(path);
-    if (!in) throw InputError(path.string() + ": cannot read (the editor's page)");
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 void write_text(const fs::path& path, const std::string& text) {
@@ -126,24 +119,18 @@ json editor_data(const std::vector<CurveFile>& files, const std::string& title, 
     return {{"title", title}, {"curves", curves}, {"skipped", skipped}};
 }
 
-void copy_three_js(const std::string& dir) {
-    for (const char* f : kThreeFiles)
-        copy_file(f, fs::path(dir) / fs::path(f).filename(), "Debian's three.js: apt-get install libjs-three");
-}
-
-void write_editor_page(const std::string& dir, const json& data) {
+void prepare_page_folder(const std::string& dir, const std::string& page, std::initializer_list<const char*> files) {
     std::error_code ec;
     fs::create_directories(dir, ec);
     if (ec) throw InputError(dir + ": cannot create the folder (" + ec.message() + ")");
-    const fs::path source = fs::path(reports_dir()) / "editor";
-    copy_three_js(dir);
-    for (const char* f : kEditorFiles) copy_file(source / f, fs::path(dir) / f, "crossdiv's editor scripts");
-    std::string html = read_text(source / "editor.html");
-    const std::string placeholder = "CURVES_SCRIPT";
-    const size_t at = html.find(placeholder);
-    if (at == std::string::npos) throw InputError((source / "editor.html").string() + ": no " + placeholder + " to name the data script");
-    html.replace(at, placeholder.size(), "curves.js");
-    write_text(fs::path(dir) / "editor.html", html);
+    for (const char* f : kThreeFiles)
+        copy_file(f, fs::path(dir) / fs::path(f).filename(), "Debian's three.js: apt-get install libjs-three");
+    const fs::path source = fs::path(reports_dir()) / page;
+    for (const char* f : files) copy_file(source / f, fs::path(dir) / f, "crossdiv's " + page + " page");
+}
+
+void write_editor_page(const std::string& dir, const json& data) {
+    prepare_page_folder(dir, "editor", {"editor.html", "editor.js", "spline_math.js"});
     // The data as a script: a page opened from disk may run a script beside it, not fetch a file.
     write_text(fs::path(dir) / "curves.js", "window.CROSSDIV_EDITOR_DATA = " + data.dump(-1, ' ', false, json::error_handler_t::replace) + ";\n");
 }

@@ -4,7 +4,6 @@
 #include <fstream>
 
 #include "crossdiv/error.h"
-#include "crossdiv/verification/harness/install_paths.h"
 #include "crossdiv/verification/harness/mesh_topology.h"
 #include "crossdiv/verification/suite/editor_page.h"
 #include "crossdiv/verification/suite/page_arrays.h"
@@ -27,15 +26,7 @@ std::string levels_data_script(const std::vector<LevelsEntry>& entries) {
 }
 
 void write_levels_page(const std::string& dir, const std::vector<LevelsEntry>& entries) {
-    std::error_code ec;
-    fs::create_directories(dir, ec);
-    if (ec) throw InputError(dir + ": cannot create the folder (" + ec.message() + ")");
-    copy_three_js(dir);
-    const fs::path source = fs::path(reports_dir()) / "levels";
-    for (const char* f : {"levels.html", "levels.js"}) {
-        fs::copy_file(source / f, fs::path(dir) / f, fs::copy_options::overwrite_existing, ec);
-        if (ec) throw InputError((source / f).string() + ": cannot copy into " + dir + " (" + ec.message() + ")");
-    }
+    prepare_page_folder(dir, "levels", {"levels.html", "levels.js"});
     std::ofstream out(fs::path(dir) / "levels-data.js");
     out << levels_data_script(entries);
     if (!out.flush()) throw InputError((fs::path(dir) / "levels-data.js").string() + ": cannot write");

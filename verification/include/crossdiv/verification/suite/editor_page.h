@@ -15,6 +15,7 @@
 /// tol, edges, deviation, points, worst}], frames: {recursive|rmf: {points, T, N, B}}}.
 
 #include <nlohmann/json.hpp>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -41,7 +42,9 @@ nlohmann::json editor_data(const std::vector<CurveFile>& files, const std::strin
 /// libjs-three) or written.
 void write_editor_page(const std::string& dir, const nlohmann::json& data);
 
-/// Copies Debian's three.min.js and OrbitControls.js into `dir`. @throws InputError as above.
-void copy_three_js(const std::string& dir);
+/// Makes a page's folder `dir` (created if missing): Debian's three.min.js and OrbitControls.js,
+/// and `files` from the report's folder `page` (reports/editor, reports/levels). The editor and
+/// the levels page share it. @throws InputError as above.
+void prepare_page_folder(const std::string& dir, const std::string& page, std::initializer_list<const char*> files);
 
 }  // namespace crossdiv::verification
