@@ -220,7 +220,8 @@ TEST(LoopConformance, CatmullClarkOnEveryNonManifoldAndPolygonEdgeCaseAgreesWith
     // cases (back to back, a hole beside creases, a non-manifold quad edge, a duplicate quad,
     // a quad naming a vertex twice): OpenSubdiv agrees at 2 levels under both boundary rules
     // (measured: at most 1.2e-16 of the diagonal), matched by provenance; OpenMesh and CGAL
-    // refuse, crash (OpenMesh's bad_alloc on the repeated vertex) or are classified.
+    // refuse, return an invalid mesh (OpenMesh stores the quad naming a vertex twice as a face
+    // that never closes) or are classified.
     std::vector<datasets::EdgeCase> cases = datasets::polygon_edge_cases();
     for (datasets::EdgeCase& c : datasets::edge_cases())
         if (!c.valid_loop_input) cases.push_back(std::move(c));

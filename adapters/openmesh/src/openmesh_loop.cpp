@@ -12,21 +12,7 @@ namespace crossdiv::adapters::openmesh {
 namespace {
 
 using detail::Mesh;
-
-PolyMesh snapshot(const Mesh& m) {
-    PolyMesh out;
-    out.positions.reserve(m.n_vertices());
-    for (auto v : m.vertices()) {
-        const auto& p = m.point(v);
-        out.positions.emplace_back(p[0], p[1], p[2]);
-    }
-    out.face_vertices.reserve(3 * m.n_faces());
-    for (auto f : m.faces()) {
-        for (auto v : m.fv_range(f)) out.face_vertices.push_back(v.idx());
-        out.face_start.push_back(static_cast<int>(out.face_vertices.size()));
-    }
-    return out;
-}
+using detail::snapshot;
 
 }  // namespace
 
@@ -58,14 +44,14 @@ void size_weights(OpenMesh::Subdivider::Uniform::LoopT<Mesh>& loop, const Mesh& 
 
 LevelTrace loop(const TriMesh& mesh, const LoopOptions& options, int levels) {
     Mesh m = build(mesh, options);
-    LevelTrace trace{snapshot(m)};
+    LevelTrace trace{snapshot(m, 0)};
     OpenMesh::Subdivider::Uniform::LoopT<Mesh> loop;
     for (int l = 1; l <= levels; ++l) {
         size_weights(loop, m);
         loop.attach(m);
         loop(1);
         loop.detach();
-        trace.push_back(snapshot(m));
+        trace.push_back(snapshot(m, l));
     }
     return trace;
 }

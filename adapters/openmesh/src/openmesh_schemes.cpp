@@ -15,20 +15,7 @@ namespace {
 
 using Poly = OpenMesh::PolyMesh;  // DefaultTraitsDouble
 
-template <class M>
-PolyMesh snapshot(const M& m) {
-    PolyMesh out;
-    out.positions.reserve(m.n_vertices());
-    for (auto v : m.vertices()) {
-        const auto& p = m.point(v);
-        out.positions.emplace_back(p[0], p[1], p[2]);
-    }
-    for (auto f : m.faces()) {
-        for (auto v : m.fv_range(f)) out.face_vertices.push_back(v.idx());
-        out.face_start.push_back(static_cast<int>(out.face_vertices.size()));
-    }
-    return out;
-}
+using detail::snapshot;
 
 Poly to_poly(const PolyMesh& mesh) {
     reject_crease_tags(mesh, "OpenMesh");
@@ -48,13 +35,13 @@ Poly to_poly(const PolyMesh& mesh) {
 /// Every level of `levels` calls of one step of `Subdivider`.
 template <class Subdivider, class M>
 LevelTrace per_level(M m, int levels) {
-    LevelTrace trace{snapshot(m)};
+    LevelTrace trace{snapshot(m, 0)};
     Subdivider sub;
     for (int l = 1; l <= levels; ++l) {
         sub.attach(m);
         sub(1);
         sub.detach();
-        trace.push_back(snapshot(m));
+        trace.push_back(snapshot(m, l));
     }
     return trace;
 }
@@ -69,14 +56,14 @@ LevelTrace sqrt3(const TriMesh& mesh, int levels, bool one_call) {
     using Sqrt3 = OpenMesh::Subdivider::Uniform::Sqrt3T<detail::Mesh>;
     detail::Mesh base = detail::to_openmesh(mesh);
     if (!one_call) return per_level<Sqrt3>(base, levels);
-    LevelTrace trace{snapshot(base)};
+    LevelTrace trace{snapshot(base, 0)};
     for (int l = 1; l <= levels; ++l) {
         detail::Mesh m = base;
         Sqrt3 sub;
         sub.attach(m);
         sub(static_cast<size_t>(l));
         sub.detach();
-        trace.push_back(snapshot(m));
+        trace.push_back(snapshot(m, l));
     }
     return trace;
 }

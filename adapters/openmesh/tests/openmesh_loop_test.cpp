@@ -1,6 +1,8 @@
 // The OpenMesh adapter on meshes whose Loop refinement is known by hand.
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "crossdiv/adapters/openmesh.h"
 #include "crossdiv/datasets/bundled.h"
 
@@ -43,6 +45,26 @@ TEST(OpenMeshLoop, RejectsWhatItLacksAndBadFaces) {
     bad.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), Vec3(1, 1, 1)};
     bad.triangles = {{0, 1, 2}, {0, 1, 3}, {0, 1, 4}};  // edge (0, 1) in three faces
     EXPECT_THROW(openmesh::loop(bad, {LoopWeights::Loop, LoopBoundary::EdgeOnly}, 1), Rejected);
+}
+
+TEST(OpenMeshCatmullClark, AQuadNamingAVertexTwiceIsAnInvalidResultNamingTheFace) {
+    // add_face accepts the quad (1, 0, 0, 9) beside a 2x2 grid and stores a face whose vertex
+    // circulator never returns to its start. Reading it stops after as many corners as the
+    // mesh has halfedges, at once, instead of filling memory until std::bad_alloc.
+    PolyMesh m;
+    for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i) m.positions.emplace_back(i, j, 0.0);
+    for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 2; ++i) m.add_face({3 * j + i, 3 * j + i + 1, 3 * j + i + 4, 3 * j + i + 3});
+    m.positions.emplace_back(0.0, -1.0, 0.0);
+    m.add_face({1, 0, 0, 9});
+    try {
+        openmesh::catmull_clark(m, 1);
+        ADD_FAILURE() << "OpenMesh's face that never closes was read as a mesh";
+    } catch (const InvalidResult& e) {
+        EXPECT_NE(std::string(e.what()).find("OpenMesh's face 4 of the input as add_face stored it"), std::string::npos)
+            << e.what();
+    }
 }
 
 }  // namespace

@@ -100,6 +100,8 @@ IsolatedTrace run_here(const std::function<adapters::LevelTrace()>& fn) {
         r.trace = fn();
     } catch (const adapters::Rejected& e) {
         r.outcome = {RunStatus::Rejected, one_line(e.what()), 0};
+    } catch (const adapters::InvalidResult& e) {
+        r.outcome = {RunStatus::UnreadableOutput, one_line(e.what()), 0};
     } catch (const ImplementationFailure& e) {
         r.outcome = {e.status(), one_line(e.what()), 0};
     } catch (const std::exception& e) {

@@ -19,6 +19,14 @@ public:
     explicit Rejected(const std::string& why) : std::runtime_error(why) {}
 };
 
+/// The library made a result that is not a mesh (a face whose corners never close, a corner
+/// that names no vertex): the harness records it as the library's invalid output, naming the
+/// element, instead of reading on.
+class InvalidResult : public std::runtime_error {
+public:
+    explicit InvalidResult(const std::string& why) : std::runtime_error(why) {}
+};
+
 /// @throws Rejected when `mesh` has crease or corner tags and `library` has no crease rules:
 ///         refining it smooth would answer a different question.
 inline void reject_crease_tags(const PolyMesh& mesh, const char* library) {

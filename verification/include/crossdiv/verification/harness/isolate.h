@@ -23,7 +23,8 @@ enum class RunStatus {
     Timeout,           ///< still running at the time limit; killed
     ExitStatus,        ///< a program exited with a nonzero status
     NoOutput,          ///< a program exited 0 without writing its output file
-    UnreadableOutput,  ///< its output file does not parse (the message names file:line)
+    UnreadableOutput,  ///< its output does not read as a mesh: a program's file does not parse (the message
+                       ///< names file:line), a library's mesh has a face that never closes (adapters::InvalidResult)
     NonFiniteOutput,   ///< its output has a NaN or infinite coordinate
     WrongCount,        ///< its output has another number of vertices or faces than the scheme makes
     NotTriangles,      ///< its output has a face that is not a triangle where the scheme makes triangles
@@ -94,9 +95,8 @@ struct IsolatedTrace {
 };
 
 /// Memory an isolated run may take beyond what this process already holds (RLIMIT_AS in the
-/// child): a reference that allocates without bound on hostile input (OpenMesh 9's
-/// Catmull-Clark on a quad naming a vertex twice grew to 16.8 GB in 55 s before throwing
-/// std::bad_alloc) fails fast and is recorded, instead of taking the machine's memory. 6 GiB
+/// child): a reference that allocates without bound on hostile input fails fast and is
+/// recorded, instead of taking the machine's memory. 6 GiB
 /// is 15x what the largest comparison a reference is given (16M faces, about 150 bytes per
 /// face each) needs. Not applied under the address sanitizer, which reserves its shadow
 /// memory as address space.
