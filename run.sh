@@ -10,6 +10,24 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 
+# The time of every phase: with CROSSDIV_PHASE_LOG set (.ci/run sets it), each phase appends
+# "SECONDS STATUS NAME" to that file when it ends, ok or failed, so a slow phase is visible in
+# every CI log.
+phase_name=""
+phase_start=0
+end_phase() {
+  if [ -n "$phase_name" ] && [ -n "${CROSSDIV_PHASE_LOG:-}" ]; then
+    echo "$((SECONDS - phase_start)) $1 $phase_name" >> "$CROSSDIV_PHASE_LOG"
+  fi
+  phase_name=""
+}
+begin_phase() {
+  end_phase ok
+  phase_name="$1"
+  phase_start=$SECONDS
+}
+trap 'if [ $? -eq 0 ]; then end_phase ok; else end_phase failed; fi' EXIT
+
 # Debian packages the build, the references and the tests need (meshlab, xvfb and xauth: the
 # external MeshLab reference of the default suite, run as meshlabserver under Xvfb; python3-skimage:
 # scikit-image's marching cubes, the isosurface reference).
@@ -56,33 +74,51 @@ run_ctest() {
     grep -v -E '^ +Start +[0-9]+: |Passed +[0-9.]+ sec$'
 }
 
+# CROSSDIV_WERROR=ON (CI) turns every compiler warning into an error.
+configure() {
+  cmake "$@" -DCMAKE_COMPILE_WARNING_AS_ERROR="${CROSSDIV_WERROR:-OFF}"
+}
+
 build() {
-  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+  begin_phase configure
+  configure -S . -B build -DCMAKE_BUILD_TYPE=Release
+  begin_phase "release build"
   cmake --build build -j2   # 2 jobs: CGAL translation units need ~1 GB each
 }
 
 case "${1:-}" in
   main)
+    begin_phase apt
     install_missing
     build
     # The benchmark first, so that the suite's report includes its timing section.
+    begin_phase bench
     ./build/verification/crossdiv bench --out out
+    begin_phase suite
     ./build/verification/crossdiv suite --out out
     # The report as a reader opens it: headless Chromium, screenshots in out/screenshots.
+    begin_phase "browser check"
     /usr/bin/python3 reports/check_viewer.py out --screenshots
     ;;
   test)
+    begin_phase apt
     install_missing
     build
+    begin_phase "release tests"
     run_ctest build
     ;;
   sanitize)
     PACKAGES="$PACKAGES $SANITIZE_PACKAGES"
+    begin_phase apt
     install_missing
-    # -O1 -g: usable stacks at a bearable speed; NDEBUG as in the release build, so the
-    # reference libraries take the same code paths (CGAL's assertions among them).
-    CC=clang CXX=clang++ cmake -S . -B build-sanitize -DCROSSDIV_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g -DNDEBUG"
+    # -O1: usable stacks at a bearable speed; -gline-tables-only: file and line in every
+    # sanitizer report, without the full debug information that costs compile and link time;
+    # NDEBUG as in the release build, so the reference libraries take the same code paths
+    # (CGAL's assertions among them).
+    begin_phase configure
+    CC=clang CXX=clang++ configure -S . -B build-sanitize -DCROSSDIV_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG"
+    begin_phase "sanitizer build"
     cmake --build build-sanitize -j2
     # handle_segv=0: a deliberate crash (the isolation tests) dies by its signal, as the
     # harness expects; any sanitizer report fails the test that caused it.
@@ -92,8 +128,10 @@ case "${1:-}" in
     export ASAN_OPTIONS=handle_segv=0:detect_leaks=1:abort_on_error=0:max_allocation_size_mb=6144
     export LSAN_OPTIONS="suppressions=$PWD/fuzz/sanitizer-suppressions.txt"
     export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+    begin_phase "sanitizer tests"
     run_ctest build-sanitize
     # Two targets at a time: one per core of the 2-core machines this runs on.
+    begin_phase fuzzers
     CROSSDIV_FUZZ_PARALLEL=2 fuzz/run_fuzzers.sh build-sanitize "${2:-30}"
     ;;
   *)

@@ -6,6 +6,7 @@
 #include "crossdiv/mesh/poly_connectivity.h"
 #include "crossdiv/subdiv/catmull_clark.h"
 #include "test_meshes.h"
+#include "test_points.h"
 
 namespace crossdiv {
 namespace {
@@ -17,9 +18,7 @@ constexpr CatmullClarkOptions kMidpointAverage{CatmullClarkBoundary::MidpointAve
 using test::cube;
 using test::square;
 
-void expect_near(const Vec3& a, const Vec3& b) {
-    EXPECT_NEAR((a - b).norm(), 0.0, 1e-15) << a.transpose() << " vs " << b.transpose();
-}
+using test::expect_near;
 
 TEST(PolyConnectivity, CubeIsClosedWithTwelveEdges) {
     const PolyMesh m = cube();

@@ -16,6 +16,7 @@
 #include "crossdiv/subdiv/doo_sabin.h"
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/subdiv/sqrt3.h"
+#include "loop_test_meshes.h"
 #include "test_meshes.h"
 
 namespace crossdiv {
@@ -25,7 +26,7 @@ using test::cube;
 using test::octahedron;
 
 const CatmullClarkOptions kCC{CatmullClarkBoundary::EdgeOnly};
-const LoopOptions kLoop{LoopWeights::Loop, LoopBoundary::EdgeOnly};
+using test::kLoopEdge;
 
 /// The cube with all twelve edges tagged `s`.
 PolyMesh creased_cube(float s) {
@@ -185,7 +186,7 @@ TEST(CatmullClarkCreases, ZeroSharpnessTagsChangeNothing) {
 }
 
 TEST(LoopCreases, EquatorCreaseByHand) {
-    const PolyMesh r = loop_subdivide(with_equator(octahedron(), kSharpnessInfinite), kLoop, 1);
+    const PolyMesh r = loop_subdivide(with_equator(octahedron(), kSharpnessInfinite), kLoopEdge, 1);
     expect_point(r.positions[0], 0.75, 0.0, 0.0);  // 3/4 itself + 1/8 (0,1,0) + 1/8 (0,-1,0)
     // The pole has no sharp edge: Loop's valence-4 mask, 1 - 4 beta = 33/64 (beta = 31/256).
     expect_point(r.positions[4], 0.0, 0.0, 33.0 / 64.0);
@@ -205,7 +206,7 @@ TEST(LoopCreases, CornerAndDartByHand) {
     PolyMesh m = octahedron();
     m.creases.vertices.push_back({4, kSharpnessInfinite});  // the pole stays
     m.creases.edges.push_back({0, 2, kSharpnessInfinite});  // a dart at each end
-    const PolyMesh r = loop_subdivide(m, kLoop, 1);
+    const PolyMesh r = loop_subdivide(m, kLoopEdge, 1);
     expect_point(r.positions[4], 0.0, 0.0, 1.0);
     expect_point(r.positions[0], 33.0 / 64.0, 0.0, 0.0);  // a dart keeps the smooth mask
     ASSERT_EQ(r.creases.vertices.size(), 1u);
@@ -213,7 +214,7 @@ TEST(LoopCreases, CornerAndDartByHand) {
     // Corner sharpness 0.5 at the pole: half the corner, half the smooth point.
     PolyMesh half = octahedron();
     half.creases.vertices.push_back({4, 0.5f});
-    EXPECT_DOUBLE_EQ(loop_subdivide(half, kLoop, 1).positions[4].z(), 0.5 + 0.5 * 33.0 / 64.0);
+    EXPECT_DOUBLE_EQ(loop_subdivide(half, kLoopEdge, 1).positions[4].z(), 0.5 + 0.5 * 33.0 / 64.0);
 }
 
 TEST(LoopCreases, ZeroSharpnessMatchesTheFastDriver) {
@@ -223,7 +224,7 @@ TEST(LoopCreases, ZeroSharpnessMatchesTheFastDriver) {
     constexpr double kRounding = 4e-16;
     PolyMesh tagged = octahedron();
     tagged.creases.edges.push_back({0, 2, 0.0f});
-    const PolyMesh a = loop_subdivide(octahedron(), kLoop, 1), t = loop_subdivide(tagged, kLoop, 1);
+    const PolyMesh a = loop_subdivide(octahedron(), kLoopEdge, 1), t = loop_subdivide(tagged, kLoopEdge, 1);
     ASSERT_EQ(a.face_vertices, t.face_vertices);
     for (size_t v = 0; v < a.positions.size(); ++v) EXPECT_LE((a.positions[v] - t.positions[v]).norm(), kRounding);
     auto sorted = [](std::vector<Vec3> p) {
@@ -232,8 +233,8 @@ TEST(LoopCreases, ZeroSharpnessMatchesTheFastDriver) {
         });
         return p;
     };
-    const std::vector<Vec3> a3 = sorted(loop_subdivide(octahedron(), kLoop, 3).positions),
-                            t3 = sorted(loop_subdivide(tagged, kLoop, 3).positions);
+    const std::vector<Vec3> a3 = sorted(loop_subdivide(octahedron(), kLoopEdge, 3).positions),
+                            t3 = sorted(loop_subdivide(tagged, kLoopEdge, 3).positions);
     ASSERT_EQ(a3.size(), t3.size());
     double worst = 0;
     for (size_t v = 0; v < a3.size(); ++v) worst = std::max(worst, (a3[v] - t3[v]).norm());
@@ -246,17 +247,17 @@ TEST(Creases, BadTagsNameTheTag) {
     m.source.file = "oct.obj";
     m.creases.edge_line = {17};
     try {
-        loop_subdivide(m, kLoop, 1);
+        loop_subdivide(m, kLoopEdge, 1);
         FAIL() << "no error";
     } catch (const InputError& e) {
         EXPECT_STREQ(e.what(), "crease tag (4, 5) (oct.obj:17): vertices 4 and 5 share no edge");
     }
     PolyMesh neg = octahedron();
     neg.creases.vertices.push_back({9, 1.0f});
-    EXPECT_THROW(loop_subdivide(neg, kLoop, 1), InputError);
+    EXPECT_THROW(loop_subdivide(neg, kLoopEdge, 1), InputError);
     PolyMesh nan = octahedron();
     nan.creases.edges.push_back({0, 2, std::nanf("")});
-    EXPECT_THROW(loop_subdivide(nan, kLoop, 1), InputError);
+    EXPECT_THROW(loop_subdivide(nan, kLoopEdge, 1), InputError);
 }
 
 TEST(Creases, SchemesWithoutCreaseRulesRefuseTags) {

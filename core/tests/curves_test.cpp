@@ -17,12 +17,13 @@
 #include "crossdiv/error.h"
 #include "crossdiv/io/curve_io.h"
 #include "parse_errors.h"
+#include "test_points.h"
 
 using namespace crossdiv;
 
 namespace {
 
-Vec3 v(double x, double y, double z = 0) { return {x, y, z}; }
+using crossdiv::test::v;
 // A cubic whose de Casteljau levels at t = 1/2 are exact binary fractions.
 const std::vector<Vec3> kCubic{v(0, 0), v(1, 2), v(3, 2), v(4, 0)};
 

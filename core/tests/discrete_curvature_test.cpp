@@ -13,12 +13,13 @@
 
 #include "crossdiv/error.h"
 #include "crossdiv/mesh/discrete_curvature.h"
+#include "test_points.h"
 
 using namespace crossdiv;
 
 namespace {
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
+using crossdiv::test::kEps;
 constexpr double kPi = std::numbers::pi;
 
 TriMesh octahedron() {

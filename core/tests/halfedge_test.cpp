@@ -19,7 +19,7 @@ namespace {
 
 // The unit square (0,0) (1,0) (1,1) (0,1) as two triangles along the diagonal 0-2. Edges in
 // TriConnectivity's order: 0-1, 1-2, 2-0 (e2, the diagonal, runs 2->0 in face 0), 2-3, 3-0.
-TriMesh square() {
+TriMesh two_triangle_square() {
     TriMesh m;
     m.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
     m.triangles = {{0, 1, 2}, {0, 2, 3}};
@@ -69,7 +69,7 @@ std::vector<Triangle> canonical(std::vector<Triangle> faces) {
 }
 
 TEST(HalfedgeMesh, SquareHasOneBoundaryLoopOfFour) {
-    const HalfedgeMesh m = HalfedgeMesh::from_triangles(square());
+    const HalfedgeMesh m = HalfedgeMesh::from_triangles(two_triangle_square());
     EXPECT_EQ(issues_text(m), "");
     EXPECT_EQ(m.num_edges(), 5);
     EXPECT_EQ(m.num_halfedges(), 10);
@@ -90,11 +90,11 @@ TEST(HalfedgeMesh, SquareHasOneBoundaryLoopOfFour) {
     EXPECT_EQ(m.valence(VertexId(0)), 3);
     EXPECT_EQ(m.valence(VertexId(1)), 2);
     EXPECT_TRUE(m.is_boundary(VertexId(1)));
-    EXPECT_EQ(m.triangles(), square().triangles);  // built and converted back without reordering
+    EXPECT_EQ(m.triangles(), two_triangle_square().triangles);  // built and converted back without reordering
 }
 
 TEST(HalfedgeMesh, FlipReplacesTheDiagonal) {
-    HalfedgeMesh m = HalfedgeMesh::from_triangles(square());
+    HalfedgeMesh m = HalfedgeMesh::from_triangles(two_triangle_square());
     ASSERT_EQ(m.flip(EdgeId(2)), FlipRefusal::None);
     EXPECT_EQ(issues_text(m), "");
     // Before: f0 = (a, b, c) = (2, 0, 1) along 2->0, f1 = (b, a, d) = (0, 2, 3).
@@ -105,13 +105,13 @@ TEST(HalfedgeMesh, FlipReplacesTheDiagonal) {
     EXPECT_EQ(m.valence(VertexId(1)), 3);
     // Flipping back restores the original faces (rotated to the new half-edges).
     ASSERT_EQ(m.flip(EdgeId(2)), FlipRefusal::None);
-    EXPECT_EQ(canonical(m.triangles()), canonical(square().triangles));
+    EXPECT_EQ(canonical(m.triangles()), canonical(two_triangle_square().triangles));
 }
 
 TEST(HalfedgeMesh, FlipRefusalsLeaveTheMeshUnchanged) {
-    HalfedgeMesh sq = HalfedgeMesh::from_triangles(square());
+    HalfedgeMesh sq = HalfedgeMesh::from_triangles(two_triangle_square());
     EXPECT_EQ(sq.flip(EdgeId(0)), FlipRefusal::BoundaryEdge);
-    EXPECT_EQ(sq.triangles(), square().triangles);
+    EXPECT_EQ(sq.triangles(), two_triangle_square().triangles);
 
     // Every vertex of a tetrahedron has valence 3: the other diagonal is already an edge.
     HalfedgeMesh tet = HalfedgeMesh::from_triangles(tetrahedron());
@@ -125,8 +125,8 @@ TEST(HalfedgeMesh, FlipRefusalsLeaveTheMeshUnchanged) {
 }
 
 TEST(HalfedgeMesh, SplitInteriorEdgeMakesFourFaces) {
-    HalfedgeMesh m = HalfedgeMesh::from_triangles(square());
-    std::vector<Vec3> p = square().positions;
+    HalfedgeMesh m = HalfedgeMesh::from_triangles(two_triangle_square());
+    std::vector<Vec3> p = two_triangle_square().positions;
     const VertexId v = split_at_midpoint(m, p, EdgeId(2));
     EXPECT_EQ(issues_text(m), "");
     EXPECT_EQ(v, VertexId(4));
@@ -142,8 +142,8 @@ TEST(HalfedgeMesh, SplitInteriorEdgeMakesFourFaces) {
 }
 
 TEST(HalfedgeMesh, SplitBoundaryEdgeMakesTwoFacesAndLengthensTheLoop) {
-    HalfedgeMesh m = HalfedgeMesh::from_triangles(square());
-    std::vector<Vec3> p = square().positions;
+    HalfedgeMesh m = HalfedgeMesh::from_triangles(two_triangle_square());
+    std::vector<Vec3> p = two_triangle_square().positions;
     const VertexId v = split_at_midpoint(m, p, EdgeId(0));  // 0-1, on the boundary
     EXPECT_EQ(issues_text(m), "");
     EXPECT_EQ(p[v.idx], Vec3(0.5, 0, 0));
@@ -159,7 +159,7 @@ TEST(HalfedgeMesh, SplitBoundaryEdgeMakesTwoFacesAndLengthensTheLoop) {
 }
 
 TEST(HalfedgeValidity, NamesTheVertexWhoseHalfedgeDoesNotLeaveIt) {
-    HalfedgeMesh m = HalfedgeMesh::from_triangles(square());
+    HalfedgeMesh m = HalfedgeMesh::from_triangles(two_triangle_square());
     m.set_vertex_halfedge(VertexId(3), HalfedgeId(0));  // half-edge 0 leaves vertex 0
     const auto issues = check_halfedge_mesh(m);
     ASSERT_EQ(issues.size(), 1u) << issues_text(m);
@@ -212,7 +212,7 @@ TEST(VertexNormals, WeightingsOnTwoPerpendicularFaces) {
 }
 
 TEST(VertexNormals, IsolatedVertexAndOutOfRangeIndex) {
-    TriMesh m = square();
+    TriMesh m = two_triangle_square();
     m.positions.emplace_back(5, 5, 5);
     EXPECT_EQ(vertex_normals(m, NormalWeighting::Area)[4], Vec3::Zero());
     m.triangles.push_back({0, 1, 9});
@@ -225,7 +225,7 @@ TEST(VertexNormals, IsolatedVertexAndOutOfRangeIndex) {
 TEST(LoopSplitFlip, EqualsIndexBasedLoopBitForBit) {
     TriMesh colored = grid(3);
     for (const Vec3& p : colored.positions) colored.colors.push_back(0.1 * p);
-    for (const TriMesh& base : {tetrahedron(), square(), grid(3), colored})
+    for (const TriMesh& base : {tetrahedron(), two_triangle_square(), grid(3), colored})
         for (LoopWeights w : kAllLoopWeights)
             for (LoopBoundary b : {LoopBoundary::EdgeOnly, LoopBoundary::EdgeAndCorner}) {
                 const LoopOptions opt{w, b};
@@ -252,7 +252,7 @@ TEST(LoopSplitFlip, RefusesADoubledTriangleNamingTheEdge) {
 }
 
 TEST(LoopSplitFlip, RefusesWhatLoopRefuses) {
-    TriMesh m = square();
+    TriMesh m = two_triangle_square();
     m.positions[2].x() = std::nan("");
     EXPECT_THROW(loop_by_split_and_flip(m, {LoopWeights::Loop, LoopBoundary::EdgeOnly}), InputError);
 }

@@ -16,16 +16,15 @@
 #include "crossdiv/io/curve_io.h"
 
 #include "parse_errors.h"
+#include "test_points.h"
 
 using namespace crossdiv;
 
 namespace {
 
-Vec3 v(double x, double y, double z = 0) { return {x, y, z}; }
+using crossdiv::test::v;
 
-void expect_near(const Vec3& got, const Vec3& want, double tol = 1e-15) {
-    EXPECT_LE((got - want).norm(), tol) << got.transpose() << " vs " << want.transpose();
-}
+using crossdiv::test::expect_near;
 
 std::vector<Vec3> random_points(int n, unsigned seed) {
     std::mt19937 rng(seed);

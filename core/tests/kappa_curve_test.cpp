@@ -14,14 +14,15 @@
 #include "crossdiv/mesh/tri_mesh.h"
 
 #include "parse_errors.h"
+#include "test_points.h"
 
 using namespace crossdiv;
 
 namespace {
 
-Vec3 v(double x, double y) { return {x, y, 0}; }
+using crossdiv::test::v;
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
+using crossdiv::test::kEps;
 
 /// The regular n-gon of circumradius 1, counterclockwise from (1, 0).
 std::vector<Vec3> regular_polygon(int n) {

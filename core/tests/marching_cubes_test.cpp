@@ -14,6 +14,7 @@
 
 #include "crossdiv/error.h"
 #include "crossdiv/mesh/mesh_checks.h"
+#include "crossdiv/surfaces/surface_mesh.h"
 #include "crossdiv/volume/marching_cubes.h"
 
 using namespace crossdiv;
@@ -38,12 +39,6 @@ EdgeCounts edge_counts(const TriMesh& m) {
     EdgeCounts c;
     for (const auto& [e, n] : uses) ++c.edges, c.boundary += n == 1, c.over_two += n > 2;
     return c;
-}
-
-double signed_volume(const TriMesh& m) {
-    double v = 0;
-    for (const Triangle& t : m.triangles) v += m.positions[t[0]].dot(m.positions[t[1]].cross(m.positions[t[2]])) / 6;
-    return v;
 }
 
 bool has_errors(const TriMesh& m) {

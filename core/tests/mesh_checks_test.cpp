@@ -15,7 +15,7 @@ PolyMesh mesh_of(std::vector<Vec3> p, std::vector<std::vector<int>> faces) {
     return m;
 }
 
-std::vector<Vec3> square() { return {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0), Vec3(0.5, 0.5, 1)}; }
+std::vector<Vec3> pyramid_points() { return {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0), Vec3(0.5, 0.5, 1)}; }
 
 /// The one issue of `kind`, failing the test unless there is exactly one.
 std::string only(const std::vector<MeshIssue>& issues, MeshIssueKind kind) {
@@ -28,7 +28,7 @@ std::string only(const std::vector<MeshIssue>& issues, MeshIssueKind kind) {
 }
 
 TEST(MeshChecks, CleanMeshHasNoIssues) {
-    EXPECT_TRUE(check_mesh(mesh_of(square(), {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}})).empty());
+    EXPECT_TRUE(check_mesh(mesh_of(pyramid_points(), {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}})).empty());
 }
 
 TEST(MeshChecks, ARepeatedVertexInALargePolygonIsReportedOncePerValue) {
@@ -50,28 +50,28 @@ TEST(MeshChecks, ARepeatedVertexInALargePolygonIsReportedOncePerValue) {
 }
 
 TEST(MeshChecks, EachIssueNamesItsElement) {
-    EXPECT_EQ(only(check_mesh(mesh_of(square(), {{0, 1, 9}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}})),
+    EXPECT_EQ(only(check_mesh(mesh_of(pyramid_points(), {{0, 1, 9}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}})),
                    MeshIssueKind::IndexOutOfRange),
               "face 0: vertex index 9 out of range [0, 5)");
-    EXPECT_EQ(only(check_mesh(mesh_of(square(), {{0, 1, 1}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}})),
+    EXPECT_EQ(only(check_mesh(mesh_of(pyramid_points(), {{0, 1, 1}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}})),
                    MeshIssueKind::RepeatedVertex),
               "face 0: repeated vertex 1");
-    EXPECT_NE(only(check_mesh(mesh_of(square(), {{0, 1, 4}, {1, 0, 2}, {0, 1, 3}})), MeshIssueKind::NonManifoldEdge)
+    EXPECT_NE(only(check_mesh(mesh_of(pyramid_points(), {{0, 1, 4}, {1, 0, 2}, {0, 1, 3}})), MeshIssueKind::NonManifoldEdge)
                   .find("edge (0, 1) is shared by 3 faces"),
               std::string::npos);
-    EXPECT_NE(only(check_mesh(mesh_of(square(), {{0, 1, 4}, {0, 1, 2}})), MeshIssueKind::InconsistentOrientation)
+    EXPECT_NE(only(check_mesh(mesh_of(pyramid_points(), {{0, 1, 4}, {0, 1, 2}})), MeshIssueKind::InconsistentOrientation)
                   .find("edge (0, 1): face 0 and face 1"),
               std::string::npos);
     std::vector<Vec3> bow = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(-1, 0, 0), Vec3(-1, -1, 0)};
     EXPECT_NE(only(check_mesh(mesh_of(bow, {{0, 1, 2}, {0, 3, 4}})), MeshIssueKind::NonManifoldVertex)
                   .find("vertex 0 is non-manifold"),
               std::string::npos);
-    EXPECT_EQ(only(check_mesh(mesh_of(square(), {{0, 1, 2}, {0, 2, 3}})), MeshIssueKind::IsolatedVertex),
+    EXPECT_EQ(only(check_mesh(mesh_of(pyramid_points(), {{0, 1, 2}, {0, 2, 3}})), MeshIssueKind::IsolatedVertex),
               "vertex 4 is used by no face");
     std::vector<Vec3> line = {Vec3(0, 0, 0), Vec3(1, 1, 1), Vec3(3, 3, 3)};
     EXPECT_NE(only(check_mesh(mesh_of(line, {{0, 1, 2}})), MeshIssueKind::ZeroAreaFace).find("face 0: zero area"),
               std::string::npos);
-    std::vector<Vec3> bad = square();
+    std::vector<Vec3> bad = pyramid_points();
     bad[3].z() = std::nan("");
     EXPECT_EQ(only(check_mesh(mesh_of(bad, {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}})),
                    MeshIssueKind::NonFiniteCoordinate),
@@ -79,13 +79,13 @@ TEST(MeshChecks, EachIssueNamesItsElement) {
 }
 
 TEST(MeshChecks, SeverityErrorsVersusWarnings) {
-    for (const MeshIssue& i : check_mesh(mesh_of(square(), {{0, 1, 2}, {0, 2, 3}})))
+    for (const MeshIssue& i : check_mesh(mesh_of(pyramid_points(), {{0, 1, 2}, {0, 2, 3}})))
         EXPECT_EQ(i.severity, Severity::Warning) << i.message;
 }
 
 TEST(MeshChecks, MessagesCarryFileLinesWhenKnown) {
-    PolyMesh m = mesh_of(square(), {{0, 1, 1}});
-    m.source = {"a.obj", {1, 2, 3, 4, 5}, {7}, {}};
+    PolyMesh m = mesh_of(pyramid_points(), {{0, 1, 1}});
+    m.source = {"a.obj", {1, 2, 3, 4, 5}, {7}, {}, {}};
     const auto issues = check_mesh(m);
     EXPECT_EQ(only(issues, MeshIssueKind::RepeatedVertex), "face 0 (a.obj:7): repeated vertex 1");
 }

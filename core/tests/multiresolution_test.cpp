@@ -9,6 +9,7 @@
 #include "crossdiv/error.h"
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/subdiv/multiresolution.h"
+#include "loop_test_meshes.h"
 #include "test_meshes.h"
 #include "test_points.h"
 
@@ -17,10 +18,10 @@ namespace {
 
 using test::largest_difference;
 
-const LoopOptions kLoop{LoopWeights::Loop, LoopBoundary::EdgeOnly};
+using test::kLoopEdge;
 
 /// The octahedron refined once (valences 4 and 6), and an open patch of it (a boundary).
-TriMesh closed_base() { return loop_subdivide(to_tri_mesh(test::octahedron()), kLoop, 1); }
+TriMesh closed_base() { return loop_subdivide(to_tri_mesh(test::octahedron()), kLoopEdge, 1); }
 
 std::vector<Vec3> with_detail(const LoopMultiresolution& m, const TriMesh& base, double amount, unsigned seed) {
     return test::perturbed(m.subdivide(base.positions), amount, seed);
@@ -29,7 +30,7 @@ std::vector<Vec3> with_detail(const LoopMultiresolution& m, const TriMesh& base,
 TEST(Multiresolution, ASubdivisionSurfaceHasItsBaseAndNoDetail) {
     TriMesh base = closed_base();
     base.positions[3] += Vec3(0.2, -0.1, 0.3);
-    const LoopMultiresolution m(base, kLoop, 3);
+    const LoopMultiresolution m(base, kLoopEdge, 3);
     const MultiresolutionDecomposition d = m.decompose(m.subdivide(base.positions));
     EXPECT_LT(largest_difference(d.base, base.positions), 1e-13);
     for (const std::vector<Vec3>& level : d.details)
@@ -38,7 +39,7 @@ TEST(Multiresolution, ASubdivisionSurfaceHasItsBaseAndNoDetail) {
 
 TEST(Multiresolution, RecomposingTheDecompositionGivesTheInputBack) {
     for (const TriMesh& base : {closed_base(), to_tri_mesh(test::octahedron())}) {
-        const LoopMultiresolution m(base, kLoop, 3);
+        const LoopMultiresolution m(base, kLoopEdge, 3);
         const std::vector<Vec3> fine = with_detail(m, base, 0.05, 1);
         EXPECT_LT(largest_difference(m.recompose(m.decompose(fine)), fine), 1e-14 * 2);  // the diagonal is 2
     }
@@ -46,7 +47,7 @@ TEST(Multiresolution, RecomposingTheDecompositionGivesTheInputBack) {
 
 TEST(Multiresolution, ARigidMotionCommutes) {
     const TriMesh base = closed_base();
-    const LoopMultiresolution m(base, kLoop, 3);
+    const LoopMultiresolution m(base, kLoopEdge, 3);
     const std::vector<Vec3> fine = with_detail(m, base, 0.05, 2);
     const Eigen::Matrix3d r = Eigen::AngleAxisd(0.7, Vec3(1, 2, -0.5).normalized()).toRotationMatrix();
     const Vec3 shift(3, -1, 2);
@@ -63,7 +64,7 @@ TEST(Multiresolution, ARigidMotionCommutes) {
 
 TEST(Multiresolution, AnEditMovesOnlyItsReach) {
     const TriMesh base = closed_base();
-    const LoopMultiresolution m(base, kLoop, 3);
+    const LoopMultiresolution m(base, kLoopEdge, 3);
     for (double amount : {0.0, 0.05}) {
         const std::vector<Vec3> fine = amount > 0 ? with_detail(m, base, amount, 3) : m.subdivide(base.positions);
         MultiresolutionDecomposition d = m.decompose(fine);
@@ -95,8 +96,8 @@ TEST(Multiresolution, AnEditMovesOnlyItsReach) {
 
 TEST(Multiresolution, RefusesWrongCountsAndLevels) {
     const TriMesh base = closed_base();
-    EXPECT_THROW(LoopMultiresolution(base, kLoop, 0), InputError);
-    const LoopMultiresolution m(base, kLoop, 2);
+    EXPECT_THROW(LoopMultiresolution(base, kLoopEdge, 0), InputError);
+    const LoopMultiresolution m(base, kLoopEdge, 2);
     EXPECT_THROW(m.decompose(base.positions), InputError);
     MultiresolutionDecomposition d = m.decompose(m.subdivide(base.positions));
     d.details.pop_back();

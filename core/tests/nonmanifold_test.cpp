@@ -11,11 +11,12 @@
 #include "crossdiv/subdiv/catmull_clark.h"
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/subdiv/nonmanifold.h"
+#include "loop_test_meshes.h"
 
 namespace crossdiv {
 namespace {
 
-const LoopOptions kLoop{LoopWeights::Loop, LoopBoundary::EdgeOnly};
+using test::kLoopEdge;
 
 /// Three triangles on the edge (0, 1): vertices 2, 3, 4 are their tips.
 PolyMesh book3() {
@@ -33,7 +34,7 @@ TEST(NonManifold, AnEdgeOfThreeFacesIsSharpAndItsEndsAreCorners) {
     EXPECT_THROW(loop_subdivide(m, {LoopWeights::Loop, LoopBoundary::EdgeOnly, CreaseMethod::Uniform,
                                     NonManifoldRule::Refuse}, 1),
                  NonManifoldInput);
-    const PolyMesh r = loop_subdivide(m, kLoop, 1);
+    const PolyMesh r = loop_subdivide(m, kLoopEdge, 1);
     ASSERT_EQ(r.num_vertices(), 5 + 7);  // 7 edges: the shared one and two per page
     ASSERT_EQ(r.num_faces(), 12);
     // Ends of the non-manifold edge: corners, they stay.
@@ -60,7 +61,7 @@ TEST(NonManifold, ABowtieVertexIsACornerAndTheFansAreRefinedApart) {
     m.add_face({0, 2, 1});
     m.add_face({0, 3, 4});
     EXPECT_EQ(nonmanifold_vertices(m), std::vector<int>{0});
-    const PolyMesh r = loop_subdivide(m, kLoop, 1);
+    const PolyMesh r = loop_subdivide(m, kLoopEdge, 1);
     EXPECT_EQ(r.positions[0], m.positions[0]);
     // Vertex 1 is an ordinary boundary corner of its triangle: crease rule on its two edges.
     EXPECT_TRUE(r.positions[1].isApprox(0.75 * m.positions[1] + 0.125 * (m.positions[0] + m.positions[2])));
@@ -121,7 +122,7 @@ TEST(NonManifold, AnInteriorNonManifoldCreaseKeepsTheCreaseRule) {
         m.add_face({1, 2, q + 2});
         m.add_face({1, q + 2, q + 1});
     }
-    const PolyMesh r = loop_subdivide(m, kLoop, 1);
+    const PolyMesh r = loop_subdivide(m, kLoopEdge, 1);
     EXPECT_TRUE(r.positions[1].isApprox(0.75 * m.positions[1] + 0.125 * (m.positions[0] + m.positions[2])));
     EXPECT_FALSE(r.positions[1].isApprox(m.positions[1]));  // not a corner
     EXPECT_EQ(r.positions[0], m.positions[0]);              // p0 ends the seam: sharpened
@@ -142,7 +143,7 @@ TEST(NonManifold, ADuplicateFaceSharesItsEdgesAndKeepsTheEdgesInsideItsCopiesApa
     dup.add_face({0, 2, 1});  // face 0 again, from another corner
     // Level 1: the copy joins face 0's three edges (same direction: non-manifold, sharp), so
     // there are still 7 edges; vertex 2 ends two non-manifold edges and is a corner.
-    const PolyMesh l1 = loop_subdivide(dup, kLoop, 1);
+    const PolyMesh l1 = loop_subdivide(dup, kLoopEdge, 1);
     ASSERT_EQ(l1.num_vertices(), 5 + 7);
     ASSERT_EQ(l1.num_faces(), 16);
     EXPECT_EQ(l1.positions[2], dup.positions[2]);
@@ -151,7 +152,7 @@ TEST(NonManifold, ADuplicateFaceSharesItsEdgesAndKeepsTheEdgesInsideItsCopiesApa
     // The 3 edges inside the copy have the same ends as those inside face 0 but are other
     // edges (OpenSubdiv derives child edges per face): 3 pairs of coincident points, where
     // completing the level from its face-vertices would have made 35 vertices.
-    const PolyMesh l2 = loop_subdivide(dup, kLoop, 2);
+    const PolyMesh l2 = loop_subdivide(dup, kLoopEdge, 2);
     EXPECT_EQ(l2.num_vertices(), 12 + 26);
     EXPECT_EQ(coincident_pairs(l2), 3);
     // Catmull-Clark: the two copies' face points coincide at level 1 (16 = 5 + 4 + 7
@@ -172,7 +173,7 @@ TEST(NonManifold, AFaceNamingAVertexTwiceHasADegenerateEdgeAndTwoInstancesOfAPai
     EXPECT_EQ(std::count(edges.begin(), edges.end(), std::array<int, 2>{0, 0}), 1);
     EXPECT_EQ(std::count(edges.begin(), edges.end(), std::array<int, 2>{2, 0}), 1);
     EXPECT_EQ(std::count(edges.begin(), edges.end(), std::array<int, 2>{0, 2}), 1);
-    const PolyMesh r = loop_subdivide(m, kLoop, 1);
+    const PolyMesh r = loop_subdivide(m, kLoopEdge, 1);
     ASSERT_EQ(r.num_vertices(), 5 + 9);
     // Vertex 0 (a corner) stays, the degenerate edge's point is at it, and both instances
     // of {0, 2} have their point at the midpoint.
@@ -187,7 +188,7 @@ TEST(NonManifold, AFaceNamingAVertexTwiceHasADegenerateEdgeAndTwoInstancesOfAPai
 TEST(NonManifold, SharpnessTagsOnANonManifoldMeshAreRefused) {
     PolyMesh tagged = book3();
     tagged.creases.edges.push_back({0, 2, 2.0f});
-    EXPECT_THROW(loop_subdivide(tagged, kLoop, 1), InputError);
+    EXPECT_THROW(loop_subdivide(tagged, kLoopEdge, 1), InputError);
 }
 
 }  // namespace

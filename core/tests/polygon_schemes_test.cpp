@@ -11,6 +11,7 @@
 #include "crossdiv/subdiv/doo_sabin.h"
 #include "crossdiv/subdiv/sqrt3.h"
 #include "test_meshes.h"
+#include "test_points.h"
 
 namespace crossdiv {
 namespace {
@@ -19,12 +20,10 @@ namespace {
 // few-term sum of numbers of size ~1.
 constexpr double kHand = 1e-15;
 
-void expect_near(const Vec3& a, const Vec3& b) {
-    EXPECT_NEAR((a - b).norm(), 0.0, kHand) << a.transpose() << " vs " << b.transpose();
-}
+using test::expect_near;  // within 1e-15, as kHand
 
 // The regular tetrahedron on alternate cube corners, outward faces; valence 3 everywhere.
-PolyMesh tetrahedron() {
+PolyMesh regular_tetrahedron() {
     PolyMesh m;
     m.positions = {Vec3(1, 1, 1), Vec3(1, -1, -1), Vec3(-1, 1, -1), Vec3(-1, -1, 1)};
     m.add_face({0, 1, 2});
@@ -72,7 +71,7 @@ TEST(Sqrt3Mask, KobbeltAlphaAtValence3And6) {
 }
 
 TEST(Sqrt3, TetrahedronOneStepByHand) {
-    const PolyMesh r = sqrt3_subdivide(tetrahedron(), {Sqrt3Parity::CountFromInput}, 1);
+    const PolyMesh r = sqrt3_subdivide(regular_tetrahedron(), {Sqrt3Parity::CountFromInput}, 1);
     // 4 old + 4 centroids; two faces per edge (6 edges).
     ASSERT_EQ(r.num_vertices(), 8);
     ASSERT_EQ(r.num_faces(), 12);
@@ -220,7 +219,7 @@ TEST(Butterfly, TetrahedronClassicIsTheMidpointModifiedIsNot) {
     // Classic: 1/2 (a0 + a1) + 1/8 (b0 + b1) - 1/16 (4 wing points). On a tetrahedron every
     // wing point is b0 or b1, twice each, so the b terms cancel: the midpoint (1, 0, 0) of
     // v0 = (1,1,1), v1 = (1,-1,-1).
-    const PolyMesh t = tetrahedron();
+    const PolyMesh t = regular_tetrahedron();
     const PolyConnectivity c = build_poly_connectivity(t);
     int e01 = -1;
     for (int e = 0; e < c.num_edges(); ++e)

@@ -15,12 +15,13 @@
 #include "crossdiv/io/curve_io.h"
 
 #include "parse_errors.h"
+#include "test_points.h"
 
 using namespace crossdiv;
 
 namespace {
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
+using crossdiv::test::kEps;
 
 Quat random_unit(std::mt19937& rng) {
     std::normal_distribution<double> g;

@@ -17,12 +17,13 @@
 #include "crossdiv/surfaces/generalized_cylinder.h"
 #include "crossdiv/surfaces/revolution.h"
 #include "crossdiv/surfaces/sweep_surface.h"
+#include "test_points.h"
 
 using namespace crossdiv;
 
 namespace {
 
-constexpr double kEps = 2.220446049250313e-16;
+using crossdiv::test::kEps;
 
 /// A bicubic patch whose control points are the grid (c/3, r/3, z(r, c)).
 BezierPatch grid_patch(double (*z)(int, int)) {

@@ -14,14 +14,15 @@
 #include "crossdiv/surfaces/surface_mesh.h"
 #include "crossdiv/surfaces/sweep_corners.h"
 #include "crossdiv/surfaces/sweep_surface.h"
+#include "test_points.h"
 
 using namespace crossdiv;
 
 namespace {
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
+using crossdiv::test::kEps;
 
-CurveFile swp(const std::string& text) {
+CurveFile corners_swp(const std::string& text) {
     std::istringstream in(text);
     return read_swp(in, "corners.swp");
 }
@@ -70,7 +71,7 @@ TEST(SweepCorners, SquareFrameHasTheExactVolume) {
                              "[4 1.3333333333333333 0] [4 2.6666666666666665 0] [4 4 0] [2.6666666666666665 4 0] "
                              "[1.3333333333333333 4 0] [0 4 0] [0 2.6666666666666665 0] [0 1.3333333333333333 0] [0 0 0]\n";
     for (FrameMethod m : {FrameMethod::Recursive, FrameMethod::DoubleReflection}) {
-        const CurveFile f = swp(square_profile("box", a) + path + "gcyl frame box path\n");
+        const CurveFile f = corners_swp(square_profile("box", a) + path + "gcyl frame box path\n");
         SweepOptions o;
         o.frames = m;
         const SweepSurface s = build_sweep(f, 0, o);
@@ -89,7 +90,7 @@ TEST(SweepCorners, SquareFrameHasTheExactVolume) {
 // Wall thickness at each corner: every ring point lies at its profile distance from the
 // arriving tube's axis line and from the leaving one's.
 TEST(SweepCorners, KeepTheWallThicknessAtEveryCorner) {
-    const CurveFile f = swp("crc2 round 8 6 [0.3 0] [0.15 0.26] [-0.15 0.26] [-0.3 0] [-0.15 -0.26] [0.15 -0.26]\n"
+    const CurveFile f = corners_swp("crc2 round 8 6 [0.3 0] [0.15 0.26] [-0.15 0.26] [-0.3 0] [-0.15 -0.26] [0.15 -0.26]\n"
                             "bez3 path 6 10 [0 0 0] [1 0 0] [2 0 0] [3 0 0] [3.5 1 0.2] [4 2 0.5] [4 3 1] "
                             "[3 3.5 2] [2 4 2.5] [1 4 3]\n"
                             "gcyl tube round path\n");
@@ -115,7 +116,7 @@ TEST(SweepCorners, KeepTheWallThicknessAtEveryCorner) {
 }
 
 TEST(SweepCorners, RefuseATurnBackOnItself) {
-    const CurveFile f = swp("circ ring 8 0.2\nbez3 path 2 7 [0 0 0] [1 0 0] [2 0 0] [3 0 0] [2 0.01 0] [1 0.01 0] [0 0.01 0]\n"
+    const CurveFile f = corners_swp("circ ring 8 0.2\nbez3 path 2 7 [0 0 0] [1 0 0] [2 0 0] [3 0 0] [2 0.01 0] [1 0.01 0] [0 0.01 0]\n"
                             "gcyl tube ring path\n");
     try {
         build_sweep(f, 0, {});

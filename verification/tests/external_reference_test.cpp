@@ -19,14 +19,15 @@
 #include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/verification/suite/manifest.h"
 #include "crossdiv/verification/suite/runner.h"
+#include "test_inputs.h"
 
 namespace crossdiv::verification {
 namespace {
 
 namespace fs = std::filesystem;
-const std::string kSource = CROSSDIV_SOURCE_DIR;
+using test::kSource;
 
-TriMesh bundled(const std::string& name) { return to_tri_mesh(datasets::bundled_mesh(name), "test"); }
+using test::bundled;
 
 ProgramSpec float_program(const std::string& name) {
     ProgramSpec spec;

@@ -15,20 +15,21 @@
 #include "crossdiv/verification/comparisons/shrink.h"
 #include "crossdiv/verification/implementations/program_implementation.h"
 #include "crossdiv/verification/implementations/registry.h"
+#include "test_inputs.h"
 
 namespace crossdiv::verification {
 namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kSource = CROSSDIV_SOURCE_DIR;
+using test::kSource;
 const std::string kStudent = "python3 " + kSource + "/examples/subjects/python-loop/loop.py {in} {levels} {out}";
 
 std::string misbehaving(const std::string& mode) {
     return "python3 " + kSource + "/verification/tests/subjects/misbehaving_subject.py " + mode + " {in} {levels} {out}";
 }
 
-TriMesh bundled(const std::string& name) { return to_tri_mesh(datasets::bundled_mesh(name), "test"); }
+using test::bundled;
 
 LoopComparison compare_with(const Implementation& subject, const std::string& mesh, int levels) {
     LoopComparisonRequest req;

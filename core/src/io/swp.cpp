@@ -22,16 +22,16 @@ struct NamedSpline {
     SplineKeyword spline;
 };
 constexpr NamedSpline kSplines[] = {
-    {"bez2", CurveType::BezierChain, 2},      {"bez3", CurveType::BezierChain, 3},
-    {"bsp2", CurveType::BSpline, 2},          {"bsp3", CurveType::BSpline, 3},
-    {"crm2", CurveType::CatmullRom, 2},       {"crm3", CurveType::CatmullRom, 3},
-    {"crc2", CurveType::CatmullRomClosed, 2}, {"crc3", CurveType::CatmullRomClosed, 3},
-    {"tcb2", CurveType::Tcb, 2},              {"tcb3", CurveType::Tcb, 3},
-    {"tcc2", CurveType::TcbClosed, 2},        {"tcc3", CurveType::TcbClosed, 3},
-    {"ovh2", CurveType::BesselOverhauser, 2}, {"ovh3", CurveType::BesselOverhauser, 3},
-    {"ovc2", CurveType::BesselOverhauserClosed, 2}, {"ovc3", CurveType::BesselOverhauserClosed, 3},
-    {"kpc2", CurveType::KappaClosed, 2},
-    {"cam3", CurveType::CameraPath, 3},
+    {"bez2", {CurveType::BezierChain, 2}},      {"bez3", {CurveType::BezierChain, 3}},
+    {"bsp2", {CurveType::BSpline, 2}},          {"bsp3", {CurveType::BSpline, 3}},
+    {"crm2", {CurveType::CatmullRom, 2}},       {"crm3", {CurveType::CatmullRom, 3}},
+    {"crc2", {CurveType::CatmullRomClosed, 2}}, {"crc3", {CurveType::CatmullRomClosed, 3}},
+    {"tcb2", {CurveType::Tcb, 2}},              {"tcb3", {CurveType::Tcb, 3}},
+    {"tcc2", {CurveType::TcbClosed, 2}},        {"tcc3", {CurveType::TcbClosed, 3}},
+    {"ovh2", {CurveType::BesselOverhauser, 2}}, {"ovh3", {CurveType::BesselOverhauser, 3}},
+    {"ovc2", {CurveType::BesselOverhauserClosed, 2}}, {"ovc3", {CurveType::BesselOverhauserClosed, 3}},
+    {"kpc2", {CurveType::KappaClosed, 2}},
+    {"cam3", {CurveType::CameraPath, 3}},
 };
 
 const char* kKnown =

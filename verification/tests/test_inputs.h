@@ -1,0 +1,18 @@
+#pragma once
+// Inputs shared by the tests that run programs: the source tree (where the bundled subjects
+// and program adapters are) and the bundled meshes as triangle meshes. One definition for the
+// whole test binary, whose files are compiled in batches (CMake's unity build).
+#include <string>
+
+#include "crossdiv/datasets/bundled.h"
+#include "crossdiv/mesh/tri_mesh.h"
+
+namespace crossdiv::verification::test {
+
+/// The source tree this build was configured from.
+inline const std::string kSource = CROSSDIV_SOURCE_DIR;
+
+/// The bundled mesh `name` as triangles, its source named "test".
+inline TriMesh bundled(const std::string& name) { return to_tri_mesh(datasets::bundled_mesh(name), "test"); }
+
+}  // namespace crossdiv::verification::test
