@@ -22,7 +22,8 @@ struct MeshTopology {
     std::vector<std::array<int, 2>> edge_list;  ///< sorted endpoint pairs, sorted
 };
 
-/// Computes the topology by sorting edge keys (no maps).
+/// Computes the topology by a counting sort of the edges (no maps), in time linear in the corners.
+/// @throws std::invalid_argument naming the face when a face names a vertex the mesh lacks.
 MeshTopology mesh_topology(const PolyMesh& mesh);
 
 /// Where a face's canonical listing starts: its lexicographically least rotation, orientation
