@@ -428,6 +428,10 @@ int run_edgecases(const std::string& dir) {
 
 int run_diff(const std::string& in, const SchemeArgs& flags, const std::string& against, const std::string& out_dir,
              const Implementation* subject, double timeout, const std::string& subject_command) {
+    if (flags.scheme != "loop") {
+        if (subject) throw InputError("a subject is shrunk under the Loop scheme so far (--scheme loop)");
+        return run_scheme_diff(in, flags.poly(), against, out_dir, timeout);
+    }
     PolyMesh input = load_input(in, flags.tag_policy());
     const SchemeArgs s = with_tag_rules(flags, input);
     s.require_size(input, in);

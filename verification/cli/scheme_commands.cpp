@@ -23,6 +23,7 @@
 #include "crossdiv/verification/comparisons/limit_comparison.h"
 #include "crossdiv/verification/comparisons/crease_comparison.h"
 #include "crossdiv/verification/comparisons/scheme_comparison.h"
+#include "crossdiv/verification/comparisons/shrink.h"
 #include "crossdiv/verification/implementations/registry.h"
 
 namespace crossdiv::cli {
@@ -204,6 +205,38 @@ int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeAr
     fmt::print("\n{}\n", all_agree ? "every reference agrees (and every property holds)"
                                     : "some references disagree or a property fails (see above)");
     return all_agree ? 0 : 1;
+}
+
+int run_scheme_diff(const std::string& in, const PolySchemeArgs& s, const std::string& against, const std::string& out_dir,
+                    double timeout) {
+    if (against.empty()) throw InputError("diff: name the diverging reference (--against)");
+    SchemeRequest req;
+    req.scheme = scheme_from_string(s.scheme);
+    req.levels = s.levels;
+    req.timeout_seconds = timeout;
+    req.references = {against};
+    PolyMesh mesh = load_input(in, s.unknown_tags);  // boundary none tags holes on it
+    require_refined_size(mesh, req.scheme, s.levels, s.max_faces, in, "--max-faces");
+    req.rule = rule_with_tags(req.scheme, s, mesh);
+    const SchemeShrinkResult r = shrink_scheme_divergence(mesh, in, req);
+    const ShrinkSymptom symptom{ShrinkSymptom::Kind::ReferenceDiverges, r.divergence_class, RunStatus::Ok};
+    fmt::print("{} ({} faces): {}: {}\n", in, mesh.num_faces(), describe(symptom, "core", against),
+               r.original.runs[0].explanation);
+    std::filesystem::create_directories(out_dir);
+    const std::string ring = (std::filesystem::path(out_dir) / "neighbourhood.obj").string();
+    const std::string minimal = (std::filesystem::path(out_dir) / "minimal.obj").string();
+    write_mesh(ring, r.neighbourhood);
+    write_mesh(minimal, r.minimal);
+    fmt::print("neighbourhood: {} ({} faces, {})\n", ring, r.neighbourhood.num_faces(),
+               r.k ? fmt::format("{}-ring of the coarse vertex nearest the worst vertex", r.k) : std::string("the whole mesh"));
+    const SchemeReferenceRun& last = r.minimal_comparison.runs.at(0);
+    fmt::print("minimal:       {} ({} faces, {} vertices) after {} comparisons: {} {} core ({})\n", minimal,
+               r.minimal.num_faces(), r.minimal.num_vertices(), r.tests, against,
+               last.verdict == Verdict::Diverge ? "diverges from" : "no longer diverges from", to_string(last.divergence_class));
+    fmt::print("               {}\n", last.explanation);
+    fmt::print("reproduce:     crossdiv compare {} --scheme {} --boundary {} --levels {} --against {}\n", minimal, s.scheme,
+               r.original.rule, s.levels, against);
+    return 0;
 }
 
 namespace {

@@ -54,6 +54,12 @@ std::vector<size_t> vertex_counts(const std::vector<PolyMesh>& levels);
 int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeArgs& s, const std::string& against,
                        const std::string& json_path, double timeout, bool no_isolate);
 
+/// `crossdiv diff IN --scheme catmull-clark --against REF`: shrinks REF's divergence from core
+/// (shrink_scheme_divergence), writes OUT_DIR/neighbourhood.obj and OUT_DIR/minimal.obj and
+/// prints the compare line that reproduces the minimal one.
+int run_scheme_diff(const std::string& in, const PolySchemeArgs& s, const std::string& against, const std::string& out_dir,
+                    double timeout);
+
 struct LimitArgs {
     std::string input, scheme = "loop", weights = "loop", boundary = "edge-only", against, json, out;
     int levels = 0;

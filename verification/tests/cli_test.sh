@@ -128,6 +128,11 @@ expect edgecases 0 'genus-3.obj +closed slab with three holes' -- "$crossdiv" ed
 expect diff-corner 0 'minimal: .* \(1 faces, 3 vertices\)' -- "$crossdiv" diff bundled:open-patch --boundary edge-and-corner --levels 2 --against openmesh --out "$tmp/diff"
 expect diff-reproduces 1 'corner-rule' -- "$crossdiv" compare "$tmp/diff/minimal.obj" --boundary edge-and-corner --levels 2 --against openmesh
 expect diff-nothing 2 'does not diverge' -- "$crossdiv" diff bundled:torus --against cgal --out "$tmp/diff2"
+# Every scheme shrinks: OpenMesh's Catmull-Clark boundary rule on one face, reproduced by the printed line.
+expect diff-catmull-clark 0 'minimal: .* \(1 faces, .*openmesh diverges from core \(boundary-rule\)' -- \
+  "$crossdiv" diff bundled:open-patch --scheme catmull-clark --levels 2 --against openmesh --out "$tmp/diff-cc"
+expect diff-catmull-clark-reproduces 1 'boundary-rule: openmesh applies the midpoint-average boundary rule' -- \
+  "$crossdiv" compare "$tmp/diff-cc/minimal.obj" --scheme catmull-clark --boundary edge-only --levels 2 --against openmesh
 if [ "$sanitized" != sanitized ]; then
 expect bench 0 'goal \(warm\): core .* faster than the fastest reference .* bandwidth floor' -- "$crossdiv" bench --quick --repeats 1 --out "$tmp/suite"
 expect bench-cold 0 'goal \(cold\): core .*\(target 1x\)' -- "$crossdiv" bench --quick --repeats 1 --only loop --cold

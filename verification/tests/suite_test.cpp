@@ -21,6 +21,7 @@
 #include "crossdiv/verification/suite/manifest.h"
 #include "crossdiv/verification/suite/outputs.h"
 #include "crossdiv/verification/suite/runner.h"
+#include "library_guard.h"
 
 namespace crossdiv::verification {
 namespace {
@@ -339,6 +340,61 @@ TEST(Shrink, WarrenWeightsShrinkToOneIrregularFanAndTheResultIsOneMinimal) {
 TEST(Shrink, RefusesWhenThereIsNothingToShrink) {
     const LoopComparisonRequest req = against("opensubdiv", {LoopWeights::Loop, LoopBoundary::EdgeOnly}, 1);
     EXPECT_THROW(shrink_divergence(to_tri_mesh(datasets::bundled_mesh("torus"), "t"), "torus", req), InputError);
+}
+
+SchemeRequest catmull_clark_against(const std::string& reference, int levels) {
+    SchemeRequest req;
+    req.scheme = Scheme::CatmullClark;
+    req.rule.catmull_clark.boundary = CatmullClarkBoundary::EdgeOnly;
+    req.levels = levels;
+    req.references = {reference};
+    return req;
+}
+
+TEST(Shrink, CatmullClarksBoundaryRuleShrinksToOneFaceAndNamesOpenMeshsRule) {
+    CROSSDIV_REQUIRE_LIBRARIES("openmesh");
+    // OpenMesh's Catmull-Clark moves boundary vertices by the midpoint-average rule, core's
+    // edge-only rule by the boundary B-spline mask. A single face is all boundary: the rule
+    // shows there, and ddmin ends with it.
+    const SchemeShrinkResult r =
+        shrink_scheme_divergence(datasets::bundled_mesh("open-patch"), "open-patch", catmull_clark_against("openmesh", 2));
+    EXPECT_EQ(r.divergence_class, DivergenceClass::BoundaryRule);
+    EXPECT_EQ(r.original.runs.at(0).divergence_class, DivergenceClass::BoundaryRule);
+    EXPECT_LT(r.neighbourhood.num_faces(), datasets::bundled_mesh("open-patch").num_faces());
+    EXPECT_EQ(r.minimal.num_faces(), 1);
+    ASSERT_EQ(r.minimal_comparison.runs.size(), 1u);
+    EXPECT_EQ(r.minimal_comparison.runs[0].verdict, Verdict::Diverge);
+    EXPECT_EQ(r.minimal_comparison.runs[0].divergence_class, DivergenceClass::BoundaryRule);
+    EXPECT_NE(r.minimal_comparison.runs[0].explanation.find("midpoint-average"), std::string::npos)
+        << r.minimal_comparison.runs[0].explanation;
+}
+
+TEST(Shrink, APolygonSchemeThatAgreesHasNothingToShrink) {
+    CROSSDIV_REQUIRE_LIBRARIES("opensubdiv");
+    EXPECT_THROW(shrink_scheme_divergence(datasets::bundled_mesh("open-patch"), "open-patch",
+                                          catmull_clark_against("opensubdiv", 1)),
+                 InputError);
+}
+
+TEST(Shrink, APolygonSubmeshKeepsTheTagsOfWhatItKeeps) {
+    // Three quads in a row (vertices 0..7: bottom 0 1 2 3, top 4 5 6 7); the middle quad is a
+    // hole, edges (1, 5) and (2, 3) are creased, vertex 0 and 3 are corners. Keeping faces 1
+    // and 2 drops vertices 0 and 4: the crease (1, 5) and the corner 3 remain, renumbered.
+    PolyMesh m;
+    for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 4; ++i) m.positions.emplace_back(i, j, 0.0);
+    for (int i = 0; i < 3; ++i) m.add_face({i, i + 1, i + 5, i + 4});
+    m.creases.holes = {1};
+    m.creases.edges = {{1, 5, 2.5f}, {2, 3, 10.0f}};
+    m.creases.vertices = {{0, 10.0f}, {3, 1.0f}};
+    m.creases.method = CreaseMethod::Chaikin;
+    const PolyMesh s = submesh(m, {1, 2});
+    ASSERT_EQ(s.num_vertices(), 6);  // 1 2 3 5 6 7 -> 0 1 2 3 4 5
+    EXPECT_EQ(s.face_vertices, (std::vector<int>{0, 1, 4, 3, 1, 2, 5, 4}));
+    EXPECT_EQ(s.creases.holes, (std::vector<int>{0}));
+    EXPECT_EQ(s.creases.edges, (std::vector<SharpEdge>{{0, 3, 2.5f}, {1, 2, 10.0f}}));
+    EXPECT_EQ(s.creases.vertices, (std::vector<SharpVertex>{{2, 1.0f}}));
+    EXPECT_EQ(s.creases.method, CreaseMethod::Chaikin);
 }
 
 TEST(Bench, EveryImplementationMakesTheSameOutputSize) {

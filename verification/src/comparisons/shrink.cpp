@@ -1,6 +1,8 @@
 #include "crossdiv/verification/comparisons/shrink.h"
 
 #include <algorithm>
+#include <numeric>
+#include <span>
 
 #include "crossdiv/error.h"
 #include "crossdiv/subdiv/loop.h"
@@ -64,24 +66,74 @@ std::optional<std::pair<int, int>> symptom_site(const LoopComparison& c, const S
     return std::nullopt;
 }
 
+/// The corners of face f, for either kind of mesh.
+std::span<const int> corners(const TriMesh& m, int f) { return m.triangles[static_cast<size_t>(f)]; }
+std::span<const int> corners(const PolyMesh& m, int f) { return {m.face(f), static_cast<size_t>(m.face_size(f))}; }
+
 /// Faces with a vertex within k rings of `seeds`.
-std::vector<int> ring_faces(const TriMesh& m, std::vector<int> seeds, int k) {
+template <class Mesh>
+std::vector<int> ring_faces(const Mesh& m, const std::vector<int>& seeds, int k) {
     std::vector<char> in(static_cast<size_t>(m.num_vertices()), 0);
     for (int s : seeds) in[s] = 1;
     std::vector<int> faces;
     for (int ring = 0; ring < k; ++ring) {
         faces.clear();
         for (int f = 0; f < m.num_faces(); ++f)
-            for (int v : m.triangles[f])
+            for (int v : corners(m, f))
                 if (in[v]) {
                     faces.push_back(f);
                     break;
                 }
         if (ring + 1 < k)
             for (int f : faces)
-                for (int v : m.triangles[f]) in[v] = 1;
+                for (int v : corners(m, f)) in[v] = 1;
     }
     return faces;
+}
+
+/// Step 1 of shrinking: the smallest k-ring around `seeds` (up to 4 rings) that still shows
+/// the symptom, into `neighbourhood`; returns k, or 0 when the whole mesh was needed.
+template <class Mesh, class StillShows>
+int shrink_to_neighbourhood(const Mesh& mesh, const std::vector<int>& seeds, StillShows&& shows, Mesh& neighbourhood) {
+    neighbourhood = mesh;
+    if (seeds.empty()) return 0;
+    for (int k = 1; k <= 4; ++k) {
+        Mesh candidate = submesh(mesh, ring_faces(mesh, seeds, k));
+        if (candidate.num_faces() >= mesh.num_faces()) break;
+        if (shows(candidate)) {
+            neighbourhood = std::move(candidate);
+            return k;
+        }
+    }
+    return 0;
+}
+
+/// Step 2: ddmin over the neighbourhood's faces: try keeping only the complement of one of n
+/// chunks; on success shrink n, else refine the split, until chunks are single faces.
+template <class Mesh, class StillShows>
+Mesh shrink_faces(const Mesh& neighbourhood, StillShows&& shows) {
+    std::vector<int> all(static_cast<size_t>(neighbourhood.num_faces()));
+    std::iota(all.begin(), all.end(), 0);
+    const std::vector<int> faces =
+        ddmin(std::move(all), [&](const std::vector<int>& keep) { return shows(submesh(neighbourhood, keep)); });
+    return submesh(neighbourhood, faces);
+}
+
+/// The verdict a polygon scheme's divergence keeps while shrinking: the one reference
+/// diverges with this class, and core refines the candidate.
+std::optional<DivergenceClass> divergence_of(const SchemeComparison& c) {
+    if (!c.core_error.empty() || c.runs.size() != 1 || c.runs[0].verdict != Verdict::Diverge) return std::nullopt;
+    return c.runs[0].divergence_class;
+}
+
+/// The coarse vertex nearest the worst refined vertex of the diverging reference.
+std::vector<int> nearest_coarse_vertex(const PolyMesh& mesh, const SchemeComparison& c) {
+    if (c.runs.empty() || c.runs[0].comparison.worst.empty() || mesh.num_vertices() == 0) return {};
+    const Vec3 at = c.runs[0].comparison.worst[0].ours;
+    int best = 0;
+    for (int v = 1; v < mesh.num_vertices(); ++v)
+        if ((mesh.positions[v] - at).squaredNorm() < (mesh.positions[best] - at).squaredNorm()) best = v;
+    return {best};
 }
 
 }  // namespace
@@ -121,6 +173,37 @@ std::optional<ShrinkSymptom> symptom_of(const LoopComparison& c) {
     return std::nullopt;
 }
 
+PolyMesh submesh(const PolyMesh& mesh, const std::vector<int>& faces) {
+    std::vector<int> remap(static_cast<size_t>(mesh.num_vertices()), -1);
+    for (int f : faces)
+        for (int v : corners(mesh, f)) remap[static_cast<size_t>(v)] = 0;
+    PolyMesh out;
+    for (int v = 0; v < mesh.num_vertices(); ++v)
+        if (remap[static_cast<size_t>(v)] == 0) {
+            remap[static_cast<size_t>(v)] = out.num_vertices();
+            out.positions.push_back(mesh.positions[static_cast<size_t>(v)]);
+            if (!mesh.colors.empty()) out.colors.push_back(mesh.colors[static_cast<size_t>(v)]);
+        }
+    std::vector<char> hole(static_cast<size_t>(mesh.num_faces()), 0);
+    for (int f : mesh.creases.holes) hole[static_cast<size_t>(f)] = 1;
+    for (int f : faces) {
+        if (hole[static_cast<size_t>(f)]) out.creases.holes.push_back(out.num_faces());
+        std::vector<int> c;
+        for (int v : corners(mesh, f)) c.push_back(remap[static_cast<size_t>(v)]);
+        out.add_face(c);
+    }
+    for (const SharpEdge& e : mesh.creases.edges)
+        if (remap[static_cast<size_t>(e.a)] >= 0 && remap[static_cast<size_t>(e.b)] >= 0)
+            out.creases.edges.push_back({remap[static_cast<size_t>(e.a)], remap[static_cast<size_t>(e.b)], e.sharpness});
+    for (const SharpVertex& c : mesh.creases.vertices)
+        if (remap[static_cast<size_t>(c.v)] >= 0) out.creases.vertices.push_back({remap[static_cast<size_t>(c.v)], c.sharpness});
+    std::sort(out.creases.holes.begin(), out.creases.holes.end());
+    out.creases.method = mesh.creases.method;
+    out.creases.boundary = mesh.creases.boundary;
+    out.creases.smooth_triangles = mesh.creases.smooth_triangles;
+    return out;
+}
+
 TriMesh submesh(const TriMesh& mesh, const std::vector<int>& faces) {
     std::vector<int> remap(static_cast<size_t>(mesh.num_vertices()), -1);
     std::vector<char> used(remap.size(), 0);
@@ -156,33 +239,40 @@ ShrinkResult shrink_divergence(const TriMesh& mesh, const std::string& name, con
     }
     r.symptom = *symptom;
 
-    // 1. The neighbourhood: the smallest k-ring around the symptom's coarse ancestors that
-    //    still shows it (up to 4 rings; else the whole mesh).
-    r.neighbourhood = mesh;
+    // 1. The neighbourhood of the symptom's coarse ancestors; 2. ddmin over its faces.
+    const auto shows = [&](const TriMesh& candidate) { return still_shows(candidate, req, r.symptom, r.tests); };
+    std::vector<int> seeds;
     if (const auto site = symptom_site(r.original, r.symptom)) {
         LoopRefiner refiner(mesh, req.options);
         refiner.refine(site->first);
-        const std::vector<int> seeds = coarse_ancestors(refiner, site->second);
-        for (int k = 1; k <= 4; ++k) {
-            TriMesh candidate = submesh(mesh, ring_faces(mesh, seeds, k));
-            if (candidate.num_faces() >= mesh.num_faces()) break;
-            if (still_shows(candidate, req, r.symptom, r.tests)) {
-                r.k = k;
-                r.neighbourhood = std::move(candidate);
-                break;
-            }
-        }
+        seeds = coarse_ancestors(refiner, site->second);
     }
-
-    // 2. ddmin over the neighbourhood's faces: try keeping only the complement of one of n
-    //    chunks; on success shrink n, else refine the split, until chunks are single faces.
-    std::vector<int> all(static_cast<size_t>(r.neighbourhood.num_faces()));
-    for (size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
-    const std::vector<int> faces = ddmin(std::move(all), [&](const std::vector<int>& keep) {
-        return still_shows(submesh(r.neighbourhood, keep), req, r.symptom, r.tests);
-    });
-    r.minimal = submesh(r.neighbourhood, faces);
+    r.k = shrink_to_neighbourhood(mesh, seeds, shows, r.neighbourhood);
+    r.minimal = shrink_faces(r.neighbourhood, shows);
     r.minimal_comparison = compare_loop(r.minimal, "minimal", req);
+    return r;
+}
+
+SchemeShrinkResult shrink_scheme_divergence(const PolyMesh& mesh, const std::string& name, const SchemeRequest& req) {
+    if (req.references.size() != 1) throw InputError("shrinking compares against exactly one reference");
+    SchemeShrinkResult r;
+    r.original = compare_scheme(mesh, name, req);
+    if (!r.original.core_error.empty()) throw InputError(name + ": core refuses the input: " + r.original.core_error);
+    const std::optional<DivergenceClass> divergence = divergence_of(r.original);
+    if (!divergence) {
+        const SchemeReferenceRun& run = r.original.runs.at(0);
+        throw InputError(name + ": " + run.reference + " does not diverge from core (" + std::string(to_string(run.verdict)) +
+                         ": " + run.explanation + "); nothing to shrink");
+    }
+    r.divergence_class = *divergence;
+    const auto shows = [&](const PolyMesh& candidate) {
+        if (candidate.num_faces() == 0) return false;
+        ++r.tests;
+        return divergence_of(compare_scheme(candidate, "candidate", req)) == r.divergence_class;
+    };
+    r.k = shrink_to_neighbourhood(mesh, nearest_coarse_vertex(mesh, r.original), shows, r.neighbourhood);
+    r.minimal = shrink_faces(r.neighbourhood, shows);
+    r.minimal_comparison = compare_scheme(r.minimal, "minimal", req);
     return r;
 }
 

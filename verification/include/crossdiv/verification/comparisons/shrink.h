@@ -1,7 +1,7 @@
 #pragma once
 /// @file
-/// Shrinking a disagreement to a small mesh that still shows it: the neighbourhood of the
-/// worst vertex (the smallest k-ring of its coarse ancestors that still shows the symptom),
+/// Shrinking a disagreement to a small mesh that still shows it, for every scheme: the
+/// neighbourhood of the worst vertex (the smallest k-ring of its coarse ancestors that still shows the symptom),
 /// then delta debugging over faces (Zeller and Hildebrandt, "Simplifying and Isolating
 /// Failure-Inducing Input", IEEE TSE 2002: ddmin, removing complements) while the symptom
 /// persists unchanged.
@@ -13,8 +13,10 @@
 
 #include <string>
 
+#include "crossdiv/mesh/poly_mesh.h"
 #include "crossdiv/mesh/tri_mesh.h"
 #include "crossdiv/verification/comparisons/loop_comparison.h"
+#include "crossdiv/verification/comparisons/scheme_comparison.h"
 
 namespace crossdiv::verification {
 
@@ -52,7 +54,30 @@ struct ShrinkResult {
 ///        no symptom (nothing to shrink), or for bad input.
 ShrinkResult shrink_divergence(const TriMesh& mesh, const std::string& name, const LoopComparisonRequest& request);
 
+/// A divergence of a polygon scheme (Catmull-Clark, Doo-Sabin, sqrt3, the Butterflies) from
+/// one reference, shrunk as a Loop divergence is: the smallest k-ring that still shows it
+/// around the coarse vertex nearest the worst refined vertex, then ddmin over its polygons,
+/// while the reference keeps diverging with the same class.
+struct SchemeShrinkResult {
+    SchemeComparison original;  ///< the comparison on the whole input
+    DivergenceClass divergence_class = DivergenceClass::None;  ///< what must persist
+    int k = 0;                  ///< ring size of the neighbourhood (0: the whole mesh was needed)
+    PolyMesh neighbourhood;     ///< faces within k rings of the seed
+    PolyMesh minimal;           ///< after delta debugging
+    SchemeComparison minimal_comparison;
+    int tests = 0;  ///< comparisons run while shrinking
+};
+
+/// @param request exactly one reference. @throws InputError if that reference does not
+///        diverge on the input (nothing to shrink), or for bad input.
+SchemeShrinkResult shrink_scheme_divergence(const PolyMesh& mesh, const std::string& name, const SchemeRequest& request);
+
 /// The faces of `mesh` listed in `faces`, with unused vertices dropped (order kept).
 TriMesh submesh(const TriMesh& mesh, const std::vector<int>& faces);
+
+/// The polygons of `mesh` listed in `faces`, with unused vertices dropped (order kept); the
+/// crease and corner tags of the kept vertices, the holes among the kept faces and the
+/// file's scheme options come along.
+PolyMesh submesh(const PolyMesh& mesh, const std::vector<int>& faces);
 
 }  // namespace crossdiv::verification
