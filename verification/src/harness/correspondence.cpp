@@ -3,6 +3,7 @@
 #include "harness/point_cloud.h"
 
 #include <algorithm>
+#include <bit>
 #include <cstdint>
 #include <limits>
 #include <numeric>
@@ -27,40 +28,54 @@ struct Provenance {
     bool operator==(const Provenance&) const = default;
 };
 
-struct ProvenanceHash {
-    size_t operator()(const Provenance& p) const {
-        const uint64_t h = (static_cast<uint64_t>(static_cast<uint32_t>(p.face)) << 32) | static_cast<uint32_t>(p.local);
-        return static_cast<size_t>(h * 0x9E3779B97F4A7C15ull ^ (h >> 29));
-    }
-};
-
-struct CycleHash {
-    size_t operator()(const std::vector<int>& c) const {
-        uint64_t h = c.size();
-        for (int v : c) h = (h ^ static_cast<uint32_t>(v)) * 0x100000001B3ull;
-        return static_cast<size_t>(h);
-    }
-};
-
-std::vector<int> rotated(std::vector<int> cycle, size_t start) {
-    std::rotate(cycle.begin(), cycle.begin() + static_cast<std::ptrdiff_t>(start), cycle.end());
-    return cycle;
-}
-
-/// Our coarse faces by their canonical oriented corner cycle. Of a cycle listed twice (a
+/// Our coarse faces by their canonical oriented corner cycle (listed from its least
+/// rotation), in a flat open-addressing table: a refinement names one parent per child face,
+/// millions of them, looked up with no list made per face. Of a cycle listed twice (a
 /// duplicate face) the first: the copies' edges are the same edges, and their children are
 /// told apart only by symmetry (match_next_level pairs them in order).
-using FaceIndex = std::unordered_map<std::vector<int>, int, CycleHash>;  // verification, not a kernel
-
-FaceIndex index_faces(const PolyMesh& coarse) {
-    FaceIndex index;
-    index.reserve(static_cast<size_t>(coarse.num_faces()));
-    for (int f = 0; f < coarse.num_faces(); ++f) {
-        std::vector<int> cycle(coarse.face(f), coarse.face(f) + coarse.face_size(f));
-        index.emplace(rotated(cycle, least_rotation(cycle)), f);
+class FaceIndex {
+public:
+    explicit FaceIndex(const PolyMesh& coarse) : coarse_(coarse), first_(static_cast<size_t>(coarse.num_faces())) {
+        slots_.assign(std::bit_ceil(2 * first_.size() + 2), -1);
+        for (int f = 0; f < coarse.num_faces(); ++f) {
+            const std::span<const int> cycle = face(f);
+            first_[static_cast<size_t>(f)] = least_rotation(cycle);
+            size_t at = slot(cycle, first_[static_cast<size_t>(f)]);
+            if (slots_[at] < 0) slots_[at] = f;
+        }
     }
-    return index;
-}
+
+    /// Our first face whose cycle, listed from its least rotation, is `cycle` listed from
+    /// `first`; -1 when we have none.
+    int find(std::span<const int> cycle, size_t first) const { return slots_[slot(cycle, first)]; }
+
+private:
+    std::span<const int> face(int f) const { return {coarse_.face(f), static_cast<size_t>(coarse_.face_size(f))}; }
+
+    /// The slot of `cycle` from `first`: the one holding its face, or the empty one where it would go.
+    size_t slot(std::span<const int> cycle, size_t first) const {
+        const size_t n = cycle.size(), mask = slots_.size() - 1;
+        uint64_t h = n;
+        for (size_t k = 0; k < n; ++k) h = (h ^ static_cast<uint32_t>(cycle[(first + k) % n])) * 0x100000001B3ull;
+        for (size_t at = static_cast<size_t>(h ^ (h >> 31)) & mask;; at = (at + 1) & mask) {
+            const int f = slots_[at];
+            if (f < 0 || same_cycle(f, cycle, first)) return at;
+        }
+    }
+
+    bool same_cycle(int f, std::span<const int> cycle, size_t first) const {
+        const std::span<const int> ours = face(f);
+        const size_t n = cycle.size(), from = first_[static_cast<size_t>(f)];
+        if (ours.size() != n) return false;
+        for (size_t k = 0; k < n; ++k)
+            if (ours[(from + k) % n] != cycle[(first + k) % n]) return false;
+        return true;
+    }
+
+    const PolyMesh& coarse_;
+    std::vector<size_t> first_;  ///< per face: where its least rotation starts
+    std::vector<int> slots_;     ///< a face, or -1; a power of two, at most half full
+};
 
 std::string cycle_text(const std::vector<int>& cycle) {
     std::string s = "(";
@@ -105,18 +120,20 @@ std::vector<Provenance> read_provenance(const PolyMesh& fine, const std::vector<
     constexpr int kNone = std::numeric_limits<int>::max();
     std::vector<Provenance> edge_of(static_cast<size_t>(n), {kNone, -1});
     std::vector<int> face_of(static_cast<size_t>(n), kNone);
-    // Names parent `listing` (coarse corners in fine numbering) and puts each edge point
+    // Names parent `fine_listing` (coarse corners in fine numbering) and puts each edge point
     // given as (vertex, place in the listing) on its edge.
-    const auto name_parent = [&](std::vector<int> listing, int child, std::initializer_list<std::pair<int, int>> points,
-                                 int face_point) {
-        for (int& v : listing) v = to_ours[static_cast<size_t>(v)];
+    std::vector<int> listing;  // the parent in our numbering; reused, one parent per child face
+    const auto name_parent = [&](std::span<const int> fine_listing, int child,
+                                 std::initializer_list<std::pair<int, int>> points, int face_point) {
+        listing.clear();
+        for (int v : fine_listing) listing.push_back(to_ours[static_cast<size_t>(v)]);
         const size_t start = least_rotation(listing);
-        const auto it = our_faces.find(rotated(listing, start));
-        if (it == our_faces.end()) {
+        const int p = our_faces.find(listing, start);
+        if (p < 0) {
             why = "face " + std::to_string(child) + " is a child of " + cycle_text(listing) + ", not a face of ours";
             return false;
         }
-        const int m = static_cast<int>(listing.size()), p = it->second;
+        const int m = static_cast<int>(listing.size());
         for (auto [v, place] : points) {
             const Provenance here{p, (place - static_cast<int>(start) + m) % m};
             Provenance& e = edge_of[static_cast<size_t>(v)];
@@ -150,21 +167,23 @@ std::vector<Provenance> read_provenance(const PolyMesh& fine, const std::vector<
             why = "triangle " + std::to_string(f) + " at old vertex " + std::to_string(a) + " is not a corner child";
             return {};
         }
-        if (!name_parent({a, b, cc}, f, {{x, 0}, {y, 2}}, -1)) return {};
+        const int parent[3] = {a, b, cc};
+        if (!name_parent(parent, f, {{x, 0}, {y, 2}}, -1)) return {};
     }
     // Quads by face point, each group chained around it: quad i's next edge point is quad
     // i+1's previous one.
     std::sort(quads.begin(), quads.end(), [](const Corner& l, const Corner& r) {
         return l.face_point != r.face_point ? l.face_point < r.face_point : l.prev < r.prev;
     });
+    std::vector<int> corners;  // of one face point's parent, in fine numbering
+    std::vector<size_t> ring;
     for (size_t s = 0, e = 0; s < quads.size(); s = e) {
         while (e < quads.size() && quads[e].face_point == quads[s].face_point) ++e;
         const auto group = std::span(quads).subspan(s, e - s);
-        std::vector<int> listing;
-        std::vector<size_t> ring;
-        listing.reserve(group.size());
+        corners.clear();
+        ring.clear();
         for (size_t at = 0, steps = 0; steps < group.size(); ++steps) {
-            listing.push_back(group[at].a);
+            corners.push_back(group[at].a);
             ring.push_back(at);
             const int next_edge_point = group[at].next;
             const auto it = std::lower_bound(group.begin(), group.end(), next_edge_point,
@@ -176,9 +195,9 @@ std::vector<Provenance> read_provenance(const PolyMesh& fine, const std::vector<
                 return {};
             }
         }
-        if (!name_parent(listing, group[0].child, {}, group[0].face_point)) return {};
+        if (!name_parent(corners, group[0].child, {}, group[0].face_point)) return {};
         for (size_t i = 0; i < ring.size(); ++i)  // quad i's next edge point is on the listing's edge i
-            if (!name_parent(listing, group[0].child, {{group[ring[i]].next, static_cast<int>(i)}}, -1)) return {};
+            if (!name_parent(corners, group[0].child, {{group[ring[i]].next, static_cast<int>(i)}}, -1)) return {};
     }
 
     std::vector<Provenance> out(static_cast<size_t>(n));
@@ -253,7 +272,7 @@ std::string match_next_level(const std::vector<int>& prev, const PolyMesh& our_c
     if (ref_fine.num_vertices() != our_fine.num_vertices())
         return "reference has " + std::to_string(ref_fine.num_vertices()) + " vertices, ours " +
                std::to_string(our_fine.num_vertices());
-    const FaceIndex faces = index_faces(our_coarse);
+    const FaceIndex faces(our_coarse);
     std::vector<int> identity(static_cast<size_t>(our_coarse.num_vertices()));
     std::iota(identity.begin(), identity.end(), 0);
     std::string why;
@@ -262,20 +281,29 @@ std::string match_next_level(const std::vector<int>& prev, const PolyMesh& our_c
     const std::vector<Provenance> theirs = read_provenance(ref_fine, prev, faces, why);
     if (theirs.empty()) return why;
 
-    std::unordered_map<Provenance, int, ProvenanceHash> our_vertex;  // -1: shared by several; verification, not a kernel
-    our_vertex.reserve(ours.size());
+    // Our vertex of each provenance, in one array with a place for every old vertex, face and
+    // corner of our coarse level (an edge point is named by a face and an edge of it, and a
+    // face's edges are its corners): kAbsent, kShared (several of ours), or the vertex.
+    constexpr int kAbsent = -2, kShared = -1;
+    const size_t n_vertices = static_cast<size_t>(our_coarse.num_vertices()), n_faces = static_cast<size_t>(our_coarse.num_faces());
+    const auto place = [&](const Provenance& p) {
+        if (p.face < 0) return static_cast<size_t>(p.local);
+        if (p.local < 0) return n_vertices + static_cast<size_t>(p.face);
+        return n_vertices + n_faces + static_cast<size_t>(our_coarse.face_start[static_cast<size_t>(p.face)] + p.local);
+    };
+    std::vector<int> our_vertex(n_vertices + n_faces + our_coarse.face_vertices.size(), kAbsent);
     for (size_t i = 0; i < ours.size(); ++i) {
-        auto [it, fresh] = our_vertex.emplace(ours[i], static_cast<int>(i));
-        if (!fresh) it->second = -1;
+        int& at = our_vertex[place(ours[i])];
+        at = at == kAbsent ? static_cast<int>(i) : kShared;
     }
     std::vector<char> our_shared(ours.size()), their_shared(theirs.size());
-    for (size_t i = 0; i < ours.size(); ++i) our_shared[i] = our_vertex.at(ours[i]) < 0;
+    for (size_t i = 0; i < ours.size(); ++i) our_shared[i] = our_vertex[place(ours[i])] == kShared;
     next.assign(theirs.size(), -1);
     for (size_t v = 0; v < theirs.size(); ++v) {
-        const auto it = our_vertex.find(theirs[v]);
-        if (it == our_vertex.end()) return "new vertex " + std::to_string(v) + " sits on an edge or face we do not have";
-        their_shared[v] = it->second < 0;
-        if (!their_shared[v]) next[v] = it->second;
+        const int ours_at = our_vertex[place(theirs[v])];
+        if (ours_at == kAbsent) return "new vertex " + std::to_string(v) + " sits on an edge or face we do not have";
+        their_shared[v] = ours_at == kShared;
+        if (!their_shared[v]) next[v] = ours_at;
     }
     if (std::find(our_shared.begin(), our_shared.end(), 1) != our_shared.end()) {
         const Copies our_copies = group_copies(our_fine, ours, our_shared);

@@ -50,9 +50,24 @@ CanonicalFaces canonical_faces(const PolyMesh& m, const std::vector<int>* map) {
         c.corners.insert(c.corners.end(), cycle.begin(), cycle.begin() + static_cast<std::ptrdiff_t>(first));
         c.start.push_back(static_cast<int>(c.corners.size()));
     });
-    c.order.resize(c.start.size() - 1);
-    std::iota(c.order.begin(), c.order.end(), 0);
-    std::sort(c.order.begin(), c.order.end(), [&](int i, int j) { return c.before(i, c, j); });
+    // Ordered by first corner by a counting sort (a listing starts at its least vertex, so a
+    // bucket holds some of the faces around one vertex), then within each bucket by the rest.
+    const int faces = static_cast<int>(c.start.size()) - 1;
+    int lowest = 0, highest = -1;
+    for (int f = 0; f < faces; ++f)
+        if (c.start[f + 1] > c.start[f]) {
+            lowest = std::min(lowest, c.corners[static_cast<size_t>(c.start[f])]);
+            highest = std::max(highest, c.corners[static_cast<size_t>(c.start[f])]);
+        }
+    const auto bucket = [&](int f) { return c.start[f + 1] > c.start[f] ? c.corners[static_cast<size_t>(c.start[f])] - lowest + 1 : 0; };
+    std::vector<int> first(static_cast<size_t>(highest - lowest + 3), 0);
+    for (int f = 0; f < faces; ++f) ++first[static_cast<size_t>(bucket(f)) + 1];
+    std::partial_sum(first.begin(), first.end(), first.begin());
+    c.order.resize(static_cast<size_t>(faces));
+    std::vector<int> fill(first.begin(), first.end() - 1);
+    for (int f = 0; f < faces; ++f) c.order[static_cast<size_t>(fill[static_cast<size_t>(bucket(f))]++)] = f;
+    for (size_t b = 0; b + 1 < first.size(); ++b)
+        std::sort(c.order.begin() + first[b], c.order.begin() + first[b + 1], [&](int i, int j) { return c.before(i, c, j); });
     return c;
 }
 
