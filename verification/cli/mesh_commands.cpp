@@ -556,7 +556,7 @@ struct CompareArgs {
     ProgramArgs programs;
     std::string subject_result;
     void add_to(CLI::App& app) {
-        app.add_option("inputs", inputs, "Mesh files, bundled:NAME, bundled:all, course:all, cgal:all")->required();
+        app.add_option("inputs", inputs, "Mesh files, bundled:NAME, edgecase:NAME, dir:FOLDER (every mesh file in it), dir:FOLDER/*.obj, bundled:all, edgecases:all, polygons:all, course:all, cgal:all")->required();
         scheme.add_scheme_options(app, kMaxComparedFaces);
         app.add_option("--against", against,
                        "Comma-separated references (default: every one that has the scheme; sqrt3 also has "

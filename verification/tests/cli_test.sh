@@ -128,6 +128,16 @@ expect edgecases 0 'genus-3.obj +closed slab with three holes' -- "$crossdiv" ed
 expect diff-corner 0 'minimal: .* \(1 faces, 3 vertices\)' -- "$crossdiv" diff bundled:open-patch --boundary edge-and-corner --levels 2 --against openmesh --out "$tmp/diff"
 expect diff-reproduces 1 'corner-rule' -- "$crossdiv" compare "$tmp/diff/minimal.obj" --boundary edge-and-corner --levels 2 --against openmesh
 expect diff-nothing 2 'does not diverge' -- "$crossdiv" diff bundled:torus --against cgal --out "$tmp/diff2"
+# A folder of the user's own: each mesh file its own comparison, in name order.
+mkdir -p "$tmp/own"
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n' > "$tmp/own/a-quad.obj"
+printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' > "$tmp/own/b-triangle.off"
+printf 'not a mesh\n' > "$tmp/own/readme.txt"
+expect dir-input-quad 1 'a-quad.obj \(4 vertices, 1 faces\) catmull-clark' -- \
+  "$crossdiv" compare "dir:$tmp/own" --scheme catmull-clark --levels 1
+expect dir-input-triangle 1 'b-triangle.off \(3 vertices, 1 faces\) catmull-clark' -- \
+  "$crossdiv" compare "dir:$tmp/own" --scheme catmull-clark --levels 1
+expect dir-input-absent 2 'dir:.*/nowhere: .*/nowhere is not a folder' -- "$crossdiv" compare "dir:$tmp/nowhere"
 # Every scheme shrinks: OpenMesh's Catmull-Clark boundary rule on one face, reproduced by the printed line.
 expect diff-catmull-clark 0 'minimal: .* \(1 faces, .*openmesh diverges from core \(boundary-rule\)' -- \
   "$crossdiv" diff bundled:open-patch --scheme catmull-clark --levels 2 --against openmesh --out "$tmp/diff-cc"

@@ -178,6 +178,34 @@ TEST(Inputs, AMistypedInputNameIsNamedAsSuchNotAsAFileFormat) {
     }
 }
 
+/// The message of the InputError that expanding `spec` throws, or "accepted".
+std::string expansion_error(const std::string& spec) {
+    try {
+        expand_inputs({spec});
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "accepted";
+}
+
+TEST(Inputs, AFolderIsEveryMeshFileInItInNameOrderAndAPatternItsMatchingFiles) {
+    const fs::path d = temp_dir("dir");
+    fs::create_directories(d / "sub" / "inner.obj");  // a folder, whatever its name
+    for (const char* name : {"b.OFF", "a.obj", "c.ply", "notes.txt", "sub/d.txt"}) write(d / name, "");
+    const std::string a = (d / "a.obj").string(), b = (d / "b.OFF").string(), c = (d / "c.ply").string();
+    EXPECT_EQ(expand_inputs({"dir:" + d.string()}), (std::vector<std::string>{a, b, c}));
+    EXPECT_EQ(expand_inputs({"dir:" + (d / "*.obj").string()}), (std::vector<std::string>{a}));
+    EXPECT_EQ(expand_inputs({"dir:" + (d / "[bc]*").string(), "bundled:cube"}), (std::vector<std::string>{b, c, "bundled:cube"}));
+    EXPECT_EQ(expand_inputs({"dir:" + (d / "*.txt").string()}), (std::vector<std::string>{(d / "notes.txt").string()}));
+    // A folder the user names must be there and hold what it is asked for.
+    EXPECT_NE(expansion_error("dir:" + (d / "absent").string()).find("absent is not a folder"), std::string::npos);
+    EXPECT_NE(expansion_error("dir:" + (d / "sub").string()).find("no mesh file (.obj, .off, .ply, .dae, .stl) in"),
+              std::string::npos);
+    EXPECT_NE(expansion_error("dir:" + (d / "*.stl").string()).find("matches *.stl"), std::string::npos);
+    EXPECT_NE(expansion_error("dir:").find("names no folder"), std::string::npos);
+    fs::remove_all(d);
+}
+
 TEST(OutputSize, TheFinalLevelIsCountedBeforeAnyWork) {
     const PolyMesh tetra = datasets::bundled_mesh("tetrahedron");  // 4 triangles, 12 corners
     EXPECT_EQ(refined_face_count(tetra, Scheme::Loop, 0), 4);

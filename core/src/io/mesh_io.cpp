@@ -18,6 +18,11 @@ std::string extension(const std::string& path) {
 
 }  // namespace
 
+std::span<const std::string_view> mesh_extensions() {
+    static constexpr std::string_view kExtensions[] = {".obj", ".off", ".ply"};
+    return kExtensions;
+}
+
 PolyMesh read_mesh(const std::string& path) {
     const std::string ext = extension(path);
     if (ext != "obj" && ext != "off" && ext != "ply")

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <fnmatch.h>
 
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/datasets/edge_cases.h"
@@ -12,10 +13,50 @@
 
 namespace crossdiv::verification {
 
+namespace {
+
+/// Whether the last component of a `dir:` input is a pattern (fnmatch's * ? [).
+bool is_pattern(const std::string& name) { return name.find_first_of("*?[") != std::string::npos; }
+
+/// The mesh files of a user's folder, `dir:PATH` (every file a reader takes) or
+/// `dir:PATH/PATTERN` (the files whose names match PATTERN), sorted by name, not recursive.
+/// A folder the user names must exist and hold a mesh: an empty expansion would let a suite
+/// pass that compared nothing.
+std::vector<std::string> folder_inputs(const std::string& spec) {
+    namespace fs = std::filesystem;
+    const std::string path = spec.substr(4);
+    if (path.empty()) throw InputError("'dir:' names no folder (dir:PATH, or dir:PATH/*.obj)");
+    fs::path folder(path);
+    std::string pattern;
+    if (is_pattern(folder.filename().string())) {
+        pattern = folder.filename().string();
+        folder = folder.parent_path().empty() ? fs::path(".") : folder.parent_path();
+    }
+    std::error_code ec;
+    if (!fs::is_directory(folder, ec)) throw InputError(spec + ": " + folder.string() + " is not a folder");
+    std::vector<std::string> files;
+    for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+        if (!it->is_regular_file(ec)) continue;
+        const std::string name = it->path().filename().string();
+        if (pattern.empty() ? readable_mesh_file(name) : fnmatch(pattern.c_str(), name.c_str(), 0) == 0)
+            files.push_back(it->path().string());
+    }
+    if (ec) throw InputError(spec + ": cannot list " + folder.string() + ": " + ec.message());
+    if (files.empty())
+        throw InputError(spec + ": " + (pattern.empty() ? "no mesh file (.obj, .off, .ply, .dae, .stl) in " + folder.string()
+                                                        : "no file of " + folder.string() + " matches " + pattern));
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+}  // namespace
+
 std::vector<std::string> expand_inputs(const std::vector<std::string>& specs) {
     std::vector<std::string> out;
     for (const std::string& s : specs) {
-        if (s == "bundled:all") {
+        if (s.starts_with("dir:")) {
+            for (std::string& f : folder_inputs(s)) out.push_back(std::move(f));
+        } else if (s == "bundled:all") {
             for (const auto& b : datasets::bundled_meshes()) out.push_back("bundled:" + b.name);
         } else if (s == "polygons:all") {
             for (const auto& b : datasets::polygon_meshes()) out.push_back("bundled:" + b.name);
@@ -47,7 +88,7 @@ PolyMesh read_input(const std::string& spec) {
     if (const size_t colon = spec.find(':'); colon != std::string::npos && colon > 0 &&
                                              spec.find('/') > colon && !std::filesystem::exists(spec))
         throw InputError("'" + spec + "' is neither a file nor a known input name (known: bundled:NAME, " +
-                         "edgecase:NAME, and the collections bundled:all, polygons:all, edgecases:all, " +
+                         "edgecase:NAME, dir:FOLDER, and the collections bundled:all, polygons:all, edgecases:all, " +
                          "course:all, meshedit:all, cgal:all)");
     return read_mesh(spec);
 }

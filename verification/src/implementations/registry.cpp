@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cctype>
 #include <memory>
+#include <string_view>
 
+#include "crossdiv/io/mesh_io.h"
 #include "library_implementations.h"
 #ifdef CROSSDIV_HAS_ASSIMP
 #include "crossdiv/adapters/assimp.h"
@@ -141,13 +143,31 @@ std::vector<const Implementation*> select_references(bool Capabilities::*capabil
     });
 }
 
+namespace {
+
+/// Whether `path` ends in `ext` (lower case, with its dot), the path's case ignored.
+bool ends_in(const std::string& path, std::string_view ext) {
+    return path.size() > ext.size() && std::equal(ext.rbegin(), ext.rend(), path.rbegin(), [](char a, char b) {
+               return a == std::tolower(static_cast<unsigned char>(b));
+           });
+}
+
+}  // namespace
+
+bool readable_mesh_file(const std::string& path) {
+    for (std::string_view ext : mesh_extensions())
+        if (ends_in(path, ext)) return true;
+#ifdef CROSSDIV_HAS_ASSIMP
+    for (const std::string& ext : adapters::assimp::extensions())
+        if (ends_in(path, ext)) return true;
+#endif
+    return false;
+}
+
 std::optional<PolyMesh> read_with_input_adapter([[maybe_unused]] const std::string& path) {
 #ifdef CROSSDIV_HAS_ASSIMP
     for (const std::string& ext : adapters::assimp::extensions())
-        if (path.size() > ext.size() && std::equal(ext.rbegin(), ext.rend(), path.rbegin(), [](char a, char b) {
-                return a == std::tolower(static_cast<unsigned char>(b));
-            }))
-            return adapters::assimp::read_mesh(path);
+        if (ends_in(path, ext)) return adapters::assimp::read_mesh(path);
 #endif
     return std::nullopt;
 }

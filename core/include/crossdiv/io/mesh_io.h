@@ -7,6 +7,7 @@
 #include <iosfwd>
 #include <span>
 #include <string>
+#include <string_view>
 
 #include "crossdiv/mesh/poly_mesh.h"
 
@@ -35,6 +36,9 @@ PolyMesh read_off(std::istream& in, const std::string& name);
 /// @throws ParseError with `name:line` (in binary data, the line of the element's
 ///         declaration and the record's index), NonFiniteNumber for NaN or infinity.
 PolyMesh read_ply(std::istream& in, const std::string& name);
+
+/// The extensions read_mesh takes: ".obj", ".off", ".ply" (compared without case).
+std::span<const std::string_view> mesh_extensions();
 
 /// Reads a mesh file, choosing the format by extension (.obj, .off, .ply).
 /// @throws InputError if the file cannot be opened or the extension is unknown, ParseError

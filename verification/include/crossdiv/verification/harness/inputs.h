@@ -1,8 +1,10 @@
 #pragma once
 /// @file
-/// Input names the CLI accepts: a mesh file (.obj, .off; .dae, .ply, .stl through Assimp), `bundled:NAME`, `edgecase:NAME`, or a
+/// Input names the CLI accepts: a mesh file (.obj, .off, .ply; .dae, .stl through Assimp), `bundled:NAME`, `edgecase:NAME`, or a
 /// collection: `bundled:all`, `edgecases:all`, `course:all` (../shared/data/c3100/objs),
-/// `meshedit:all` (../shared/data/meshedit/dae), `cgal:all` (datasets/cgal).
+/// `meshedit:all` (../shared/data/meshedit/dae), `cgal:all` (datasets/cgal), and a user's own
+/// folder: `dir:PATH` (every mesh file in it) or `dir:PATH/PATTERN` (its files matching a
+/// shell pattern, `dir:meshes/*.obj`), not recursive, relative to the working directory.
 
 #include <string>
 #include <vector>
@@ -12,7 +14,8 @@
 namespace crossdiv::verification {
 
 /// Expands collections into single inputs, in a stable order. A collection whose folder is
-/// absent expands to nothing. @throws InputError for an unknown collection.
+/// absent expands to nothing (optional data); a `dir:` folder that is absent or holds no
+/// mesh is an error. @throws InputError for an unknown collection or such a folder.
 std::vector<std::string> expand_inputs(const std::vector<std::string>& specs);
 
 /// What loading does with a shape-file tag the reader does not know (MeshSource::unknown_tags).

@@ -65,6 +65,10 @@ std::vector<const Implementation*> select_references(Scheme scheme, const std::v
 std::vector<const Implementation*> select_references(bool Capabilities::*capability, const std::vector<std::string>& names,
                                                      const char* what);
 
+/// Whether `path` has an extension that core's readers (.obj, .off, .ply) or an input adapter
+/// of this build (Assimp: .dae, .stl) take, compared without case.
+bool readable_mesh_file(const std::string& path);
+
 /// Reads `path` through the input adapter built for its extension (Assimp: .dae, .ply, .stl);
 /// nothing when no input adapter of this build takes it. @throws InputError naming the file.
 std::optional<PolyMesh> read_with_input_adapter(const std::string& path);
