@@ -219,8 +219,7 @@ int run_scheme_diff(const std::string& in, const PolySchemeArgs& s, const std::s
     require_refined_size(mesh, req.scheme, s.levels, s.max_faces, in, "--max-faces");
     req.rule = rule_with_tags(req.scheme, s, mesh);
     const SchemeShrinkResult r = shrink_scheme_divergence(mesh, in, req);
-    const ShrinkSymptom symptom{ShrinkSymptom::Kind::ReferenceDiverges, r.divergence_class, RunStatus::Ok};
-    fmt::print("{} ({} faces): {}: {}\n", in, mesh.num_faces(), describe(symptom, "core", against),
+    fmt::print("{} ({} faces): {}: {}\n", in, mesh.num_faces(), describe(r.symptom, "core", against),
                r.original.runs[0].explanation);
     std::filesystem::create_directories(out_dir);
     const std::string ring = (std::filesystem::path(out_dir) / "neighbourhood.obj").string();
@@ -229,11 +228,11 @@ int run_scheme_diff(const std::string& in, const PolySchemeArgs& s, const std::s
     write_mesh(minimal, r.minimal);
     fmt::print("neighbourhood: {} ({} faces, {})\n", ring, r.neighbourhood.num_faces(),
                r.k ? fmt::format("{}-ring of the coarse vertex nearest the worst vertex", r.k) : std::string("the whole mesh"));
-    const SchemeReferenceRun& last = r.minimal_comparison.runs.at(0);
-    fmt::print("minimal:       {} ({} faces, {} vertices) after {} comparisons: {} {} core ({})\n", minimal,
-               r.minimal.num_faces(), r.minimal.num_vertices(), r.tests, against,
-               last.verdict == Verdict::Diverge ? "diverges from" : "no longer diverges from", to_string(last.divergence_class));
-    fmt::print("               {}\n", last.explanation);
+    const std::optional<ShrinkSymptom> minimal_symptom = symptom_of(r.minimal_comparison);
+    fmt::print("minimal:       {} ({} faces, {} vertices) after {} comparisons: {}\n", minimal, r.minimal.num_faces(),
+               r.minimal.num_vertices(), r.tests,
+               minimal_symptom ? describe(*minimal_symptom, "core", against) : std::string("no symptom"));
+    if (!r.minimal_comparison.runs.empty()) fmt::print("               {}\n", r.minimal_comparison.runs[0].explanation);
     fmt::print("reproduce:     crossdiv compare {} --scheme {} --boundary {} --levels {} --against {}\n", minimal, s.scheme,
                r.original.rule, s.levels, against);
     return 0;

@@ -143,6 +143,9 @@ expect diff-catmull-clark 0 'minimal: .* \(1 faces, .*openmesh diverges from cor
   "$crossdiv" diff bundled:open-patch --scheme catmull-clark --levels 2 --against openmesh --out "$tmp/diff-cc"
 expect diff-catmull-clark-reproduces 1 'boundary-rule: openmesh applies the midpoint-average boundary rule' -- \
   "$crossdiv" compare "$tmp/diff-cc/minimal.obj" --scheme catmull-clark --boundary edge-only --levels 2 --against openmesh
+# A reference that fails shrinks too: OpenMesh's broken face, to the quad naming a vertex twice and a neighbour.
+expect diff-reference-fails 0 'minimal: .* \(2 faces, .*openmesh fails \(unreadable-output\)' -- \
+  "$crossdiv" diff edgecase:repeated-vertex-quad --scheme catmull-clark --levels 2 --against openmesh --out "$tmp/diff-fails"
 if [ "$sanitized" != sanitized ]; then
 expect bench 0 'goal \(warm\): core .* faster than the fastest reference .* bandwidth floor' -- "$crossdiv" bench --quick --repeats 1 --out "$tmp/suite"
 expect bench-cold 0 'goal \(cold\): core .*\(target 1x\)' -- "$crossdiv" bench --quick --repeats 1 --only loop --cold

@@ -264,7 +264,7 @@ TEST(ShrinkSubject, AFailureShrinksToTheSmallestInputThatStillFailsTheSameWay) {
     const auto subject = program(misbehaving("closed-only"));
     const ShrinkResult r = shrink_divergence(bundled("open-patch"), "open-patch", subject_alone(*subject, 1));
     EXPECT_EQ(r.symptom.kind, ShrinkSymptom::Kind::SubjectFails);
-    EXPECT_EQ(r.symptom.subject_status, RunStatus::ExitStatus);
+    EXPECT_EQ(r.symptom.status, RunStatus::ExitStatus);
     EXPECT_EQ(r.minimal.num_faces(), 1);
     EXPECT_EQ(r.minimal_comparison.subject_outcome.status, RunStatus::ExitStatus);
 }

@@ -10,6 +10,7 @@
 #include <set>
 
 #include "crossdiv/datasets/bundled.h"
+#include "crossdiv/datasets/edge_cases.h"
 #include "crossdiv/error.h"
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/verification/bench/bench.h"
@@ -386,7 +387,8 @@ TEST(Shrink, CatmullClarksBoundaryRuleShrinksToOneFaceAndNamesOpenMeshsRule) {
     // shows there, and ddmin ends with it.
     const SchemeShrinkResult r =
         shrink_scheme_divergence(datasets::bundled_mesh("open-patch"), "open-patch", catmull_clark_against("openmesh", 2));
-    EXPECT_EQ(r.divergence_class, DivergenceClass::BoundaryRule);
+    EXPECT_EQ(r.symptom.kind, ShrinkSymptom::Kind::ReferenceDiverges);
+    EXPECT_EQ(r.symptom.divergence_class, DivergenceClass::BoundaryRule);
     EXPECT_EQ(r.original.runs.at(0).divergence_class, DivergenceClass::BoundaryRule);
     EXPECT_LT(r.neighbourhood.num_faces(), datasets::bundled_mesh("open-patch").num_faces());
     EXPECT_EQ(r.minimal.num_faces(), 1);
@@ -395,6 +397,33 @@ TEST(Shrink, CatmullClarksBoundaryRuleShrinksToOneFaceAndNamesOpenMeshsRule) {
     EXPECT_EQ(r.minimal_comparison.runs[0].divergence_class, DivergenceClass::BoundaryRule);
     EXPECT_NE(r.minimal_comparison.runs[0].explanation.find("midpoint-average"), std::string::npos)
         << r.minimal_comparison.runs[0].explanation;
+}
+
+TEST(Shrink, AReferenceThatReturnsABrokenMeshShrinksToTheQuadsThatBreakIt) {
+    CROSSDIV_REQUIRE_LIBRARIES("openmesh");
+    // OpenMesh stores the quad naming a vertex twice as a face that never closes, so it fails
+    // (unreadable-output) on the repeated-vertex edge case. Measured: beside one neighbour
+    // across its proper edge it does so; alone, the quad stops OpenMesh on an assertion
+    // (ref-crashed), and the neighbour alone diverges by the boundary rule: two faces remain.
+    const SchemeRequest req = catmull_clark_against("openmesh", 2);
+    const SchemeShrinkResult r =
+        shrink_scheme_divergence(datasets::edge_case("repeated-vertex-quad").mesh, "repeated-vertex-quad", req);
+    EXPECT_EQ(r.symptom.kind, ShrinkSymptom::Kind::ReferenceFails);
+    EXPECT_EQ(r.symptom.status, RunStatus::UnreadableOutput);
+    EXPECT_EQ(describe(r.symptom, "core", "openmesh"), "openmesh fails (unreadable-output)");
+    ASSERT_EQ(r.minimal.num_faces(), 2);
+    int naming_twice = 0;
+    for (int f = 0; f < 2; ++f) {
+        const int* q = r.minimal.face(f);
+        naming_twice += r.minimal.face_size(f) == 4 && (q[0] == q[1] || q[1] == q[2] || q[2] == q[3] || q[3] == q[0]);
+        const SchemeComparison alone = compare_scheme(submesh(r.minimal, {f}), "alone", req);
+        ASSERT_EQ(alone.runs.size(), 1u);
+        EXPECT_NE(symptom_of(alone), r.symptom) << "face " << f << ": " << alone.runs[0].explanation;
+        EXPECT_TRUE(alone.runs[0].verdict == Verdict::RefCrashed ||
+                    alone.runs[0].divergence_class == DivergenceClass::BoundaryRule)
+            << "face " << f << ": " << alone.runs[0].explanation;
+    }
+    EXPECT_EQ(naming_twice, 1);
 }
 
 TEST(Shrink, APolygonSchemeThatAgreesHasNothingToShrink) {

@@ -119,11 +119,27 @@ Mesh shrink_faces(const Mesh& neighbourhood, StillShows&& shows) {
     return submesh(neighbourhood, faces);
 }
 
-/// The verdict a polygon scheme's divergence keeps while shrinking: the one reference
-/// diverges with this class, and core refines the candidate.
-std::optional<DivergenceClass> divergence_of(const SchemeComparison& c) {
-    if (!c.core_error.empty() || c.runs.size() != 1 || c.runs[0].verdict != Verdict::Diverge) return std::nullopt;
-    return c.runs[0].divergence_class;
+/// Whether a reference's failure is one to shrink: a crash, an exception, a lie about its
+/// result. Not a refusal (a verdict on the input) nor a timeout (each candidate would wait
+/// out the time limit).
+bool shrinkable_failure(RunStatus status) {
+    return status != RunStatus::Ok && status != RunStatus::Rejected && status != RunStatus::Timeout &&
+           status != RunStatus::Unavailable;
+}
+
+/// The symptom of one reference's run: it diverges with a class, or fails in a shrinkable way.
+template <class Run>
+std::optional<ShrinkSymptom> reference_symptom(const Run& run) {
+    ShrinkSymptom s;
+    if (run.verdict == Verdict::Diverge) {
+        s.kind = ShrinkSymptom::Kind::ReferenceDiverges;
+        s.divergence_class = run.divergence_class;
+        return s;
+    }
+    if (!shrinkable_failure(run.outcome.status)) return std::nullopt;
+    s.kind = ShrinkSymptom::Kind::ReferenceFails;
+    s.status = run.outcome.status;
+    return s;
 }
 
 /// The coarse vertex nearest the worst refined vertex of the diverging reference.
@@ -142,7 +158,8 @@ std::string describe(const ShrinkSymptom& s, const std::string& subject, const s
     switch (s.kind) {
         case ShrinkSymptom::Kind::ReferenceDiverges:
             return reference + " diverges from " + subject + " (" + to_string(s.divergence_class) + ")";
-        case ShrinkSymptom::Kind::SubjectFails: return subject + " fails (" + std::string(to_string(s.subject_status)) + ")";
+        case ShrinkSymptom::Kind::ReferenceFails: return reference + " fails (" + std::string(to_string(s.status)) + ")";
+        case ShrinkSymptom::Kind::SubjectFails: return subject + " fails (" + std::string(to_string(s.status)) + ")";
         case ShrinkSymptom::Kind::SubjectUnmatched: return subject + "'s vertices match none of core's";
         case ShrinkSymptom::Kind::SubjectFollowsNoRule: return "no named rule fits " + subject;
     }
@@ -153,7 +170,7 @@ std::optional<ShrinkSymptom> symptom_of(const LoopComparison& c) {
     ShrinkSymptom s;
     if (c.subject_outcome.status != RunStatus::Ok) {
         s.kind = ShrinkSymptom::Kind::SubjectFails;
-        s.subject_status = c.subject_outcome.status;
+        s.status = c.subject_outcome.status;
         return s;
     }
     if (!c.subject_unmatched.empty()) {
@@ -161,10 +178,8 @@ std::optional<ShrinkSymptom> symptom_of(const LoopComparison& c) {
         return s;
     }
     if (!c.runs.empty()) {
-        if (c.runs.size() != 1 || c.runs[0].verdict != Verdict::Diverge) return std::nullopt;
-        s.kind = ShrinkSymptom::Kind::ReferenceDiverges;
-        s.divergence_class = c.runs[0].divergence_class;
-        return s;
+        if (c.runs.size() != 1) return std::nullopt;
+        return reference_symptom(c.runs[0]);
     }
     if (c.rules && !c.rules->rule) {
         s.kind = ShrinkSymptom::Kind::SubjectFollowsNoRule;
@@ -204,6 +219,11 @@ PolyMesh submesh(const PolyMesh& mesh, const std::vector<int>& faces) {
     return out;
 }
 
+std::optional<ShrinkSymptom> symptom_of(const SchemeComparison& c) {
+    if (!c.core_error.empty() || c.runs.size() != 1) return std::nullopt;
+    return reference_symptom(c.runs[0]);
+}
+
 TriMesh submesh(const TriMesh& mesh, const std::vector<int>& faces) {
     std::vector<int> remap(static_cast<size_t>(mesh.num_vertices()), -1);
     std::vector<char> used(remap.size(), 0);
@@ -229,7 +249,7 @@ ShrinkResult shrink_divergence(const TriMesh& mesh, const std::string& name, con
     if (!symptom) {
         std::string what = r.original.subject + " shows nothing to shrink";
         if (!r.original.runs.empty())
-            what = r.original.runs[0].reference + " does not diverge from " + r.original.subject + " (" +
+            what = r.original.runs[0].reference + " does not diverge from " + r.original.subject + " nor fail (" +
                    to_string(r.original.runs[0].verdict) + ": " + r.original.runs[0].explanation + ")";
         else if (r.original.rules && r.original.rules->rule)
             what = r.original.subject + " follows the named rule weights=" +
@@ -258,17 +278,17 @@ SchemeShrinkResult shrink_scheme_divergence(const PolyMesh& mesh, const std::str
     SchemeShrinkResult r;
     r.original = compare_scheme(mesh, name, req);
     if (!r.original.core_error.empty()) throw InputError(name + ": core refuses the input: " + r.original.core_error);
-    const std::optional<DivergenceClass> divergence = divergence_of(r.original);
-    if (!divergence) {
+    const std::optional<ShrinkSymptom> symptom = symptom_of(r.original);
+    if (!symptom) {
         const SchemeReferenceRun& run = r.original.runs.at(0);
-        throw InputError(name + ": " + run.reference + " does not diverge from core (" + std::string(to_string(run.verdict)) +
-                         ": " + run.explanation + "); nothing to shrink");
+        throw InputError(name + ": " + run.reference + " does not diverge from core nor fail (" +
+                         std::string(to_string(run.verdict)) + ": " + run.explanation + "); nothing to shrink");
     }
-    r.divergence_class = *divergence;
+    r.symptom = *symptom;
     const auto shows = [&](const PolyMesh& candidate) {
         if (candidate.num_faces() == 0) return false;
         ++r.tests;
-        return divergence_of(compare_scheme(candidate, "candidate", req)) == r.divergence_class;
+        return symptom_of(compare_scheme(candidate, "candidate", req)) == r.symptom;
     };
     r.k = shrink_to_neighbourhood(mesh, nearest_coarse_vertex(mesh, r.original), shows, r.neighbourhood);
     r.minimal = shrink_faces(r.neighbourhood, shows);
