@@ -309,11 +309,7 @@ int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, cons
     req.levels = s.levels;
     req.timeout_seconds = timeout;
     req.isolate = !no_isolate;
-    for (size_t b = 0, e; b < against.size(); b = e + 1) {
-        e = against.find(',', b);
-        if (e == std::string::npos) e = against.size();
-        if (e > b) req.references.push_back(against.substr(b, e - b));
-    }
+    req.references = split_commas(against);
     select_references(Scheme::Loop, req.references);  // fail early on a typo
 
     const std::vector<std::string> inputs = expand_inputs(specs);
@@ -456,18 +452,11 @@ int run_diff(const std::string& in, const SchemeArgs& flags, const std::string& 
     else
         fmt::print("{} ({} faces): {}{}\n", in, mesh.num_faces(), describe(r.symptom, under_test, against),
                    r.original.runs.empty() ? "" : ": " + r.original.runs[0].explanation);
-    std::filesystem::create_directories(out_dir);
-    const std::string ring = (std::filesystem::path(out_dir) / "neighbourhood.obj").string();
-    const std::string minimal = (std::filesystem::path(out_dir) / "minimal.obj").string();
-    write_mesh(ring, to_poly_mesh(r.neighbourhood));
-    write_mesh(minimal, to_poly_mesh(r.minimal));
-    fmt::print("neighbourhood: {} ({} faces, {})\n", ring, r.neighbourhood.num_faces(),
-               r.k ? fmt::format("{}-ring of the worst vertex's coarse ancestors", r.k) : std::string("the whole mesh"));
     const std::optional<ShrinkSymptom> minimal_symptom = symptom_of(r.minimal_comparison);
-    fmt::print("minimal:       {} ({} faces, {} vertices) after {} comparisons: {}\n", minimal, r.minimal.num_faces(),
-               r.minimal.num_vertices(), r.tests,
-               minimal_symptom ? describe(*minimal_symptom, under_test, against) : std::string("no symptom"));
-    if (!r.minimal_comparison.runs.empty()) fmt::print("               {}\n", r.minimal_comparison.runs[0].explanation);
+    const std::string minimal =
+        write_shrunk(out_dir, to_poly_mesh(r.neighbourhood), r.k, "the worst vertex's coarse ancestors", to_poly_mesh(r.minimal),
+                     r.tests, minimal_symptom ? describe(*minimal_symptom, under_test, against) : std::string("no symptom"),
+                     r.minimal_comparison.runs.empty() ? std::string() : r.minimal_comparison.runs[0].explanation);
     if (r.minimal_comparison.subject != "core") print_subject(r.minimal_comparison);
     const std::string subject_args =
         subject ? fmt::format(" --subject-name {} --subject '{}'", subject->name(), subject_command) : std::string();

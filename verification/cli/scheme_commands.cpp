@@ -207,6 +207,21 @@ int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeAr
     return all_agree ? 0 : 1;
 }
 
+std::string write_shrunk(const std::string& out_dir, const PolyMesh& neighbourhood, int k, const std::string& seed,
+                         const PolyMesh& minimal, int tests, const std::string& minimal_shows, const std::string& explanation) {
+    std::filesystem::create_directories(out_dir);
+    const std::string ring = (std::filesystem::path(out_dir) / "neighbourhood.obj").string();
+    const std::string minimal_file = (std::filesystem::path(out_dir) / "minimal.obj").string();
+    write_mesh(ring, neighbourhood);
+    write_mesh(minimal_file, minimal);
+    fmt::print("neighbourhood: {} ({} faces, {})\n", ring, neighbourhood.num_faces(),
+               k ? fmt::format("{}-ring of {}", k, seed) : std::string("the whole mesh"));
+    fmt::print("minimal:       {} ({} faces, {} vertices) after {} comparisons: {}\n", minimal_file, minimal.num_faces(),
+               minimal.num_vertices(), tests, minimal_shows);
+    if (!explanation.empty()) fmt::print("               {}\n", explanation);
+    return minimal_file;
+}
+
 int run_scheme_diff(const std::string& in, const PolySchemeArgs& s, const std::string& against, const std::string& out_dir,
                     double timeout) {
     if (against.empty()) throw InputError("diff: name the diverging reference (--against)");
@@ -221,18 +236,11 @@ int run_scheme_diff(const std::string& in, const PolySchemeArgs& s, const std::s
     const SchemeShrinkResult r = shrink_scheme_divergence(mesh, in, req);
     fmt::print("{} ({} faces): {}: {}\n", in, mesh.num_faces(), describe(r.symptom, "core", against),
                r.original.runs[0].explanation);
-    std::filesystem::create_directories(out_dir);
-    const std::string ring = (std::filesystem::path(out_dir) / "neighbourhood.obj").string();
-    const std::string minimal = (std::filesystem::path(out_dir) / "minimal.obj").string();
-    write_mesh(ring, r.neighbourhood);
-    write_mesh(minimal, r.minimal);
-    fmt::print("neighbourhood: {} ({} faces, {})\n", ring, r.neighbourhood.num_faces(),
-               r.k ? fmt::format("{}-ring of the coarse vertex nearest the worst vertex", r.k) : std::string("the whole mesh"));
     const std::optional<ShrinkSymptom> minimal_symptom = symptom_of(r.minimal_comparison);
-    fmt::print("minimal:       {} ({} faces, {} vertices) after {} comparisons: {}\n", minimal, r.minimal.num_faces(),
-               r.minimal.num_vertices(), r.tests,
-               minimal_symptom ? describe(*minimal_symptom, "core", against) : std::string("no symptom"));
-    if (!r.minimal_comparison.runs.empty()) fmt::print("               {}\n", r.minimal_comparison.runs[0].explanation);
+    const std::string minimal =
+        write_shrunk(out_dir, r.neighbourhood, r.k, "the coarse vertex nearest the worst vertex", r.minimal, r.tests,
+                     minimal_symptom ? describe(*minimal_symptom, "core", against) : std::string("no symptom"),
+                     r.minimal_comparison.runs.empty() ? std::string() : r.minimal_comparison.runs[0].explanation);
     fmt::print("reproduce:     crossdiv compare {} --scheme {} --boundary {} --levels {} --against {}\n", minimal, s.scheme,
                r.original.rule, s.levels, against);
     return 0;

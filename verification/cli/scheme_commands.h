@@ -54,6 +54,13 @@ std::vector<size_t> vertex_counts(const std::vector<PolyMesh>& levels);
 int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeArgs& s, const std::string& against,
                        const std::string& json_path, double timeout, bool no_isolate);
 
+/// What `crossdiv diff` writes and prints of a shrunk input, for every scheme: OUT_DIR/
+/// neighbourhood.obj (the k-ring around `seed`, or the whole mesh when k is 0) and
+/// OUT_DIR/minimal.obj, a line for each, with what the minimal input still shows and the
+/// comparison's explanation. Returns the minimal file's path, for the reproduce line.
+std::string write_shrunk(const std::string& out_dir, const PolyMesh& neighbourhood, int k, const std::string& seed,
+                         const PolyMesh& minimal, int tests, const std::string& minimal_shows, const std::string& explanation);
+
 /// `crossdiv diff IN --scheme catmull-clark --against REF`: shrinks REF's divergence from core
 /// (shrink_scheme_divergence), writes OUT_DIR/neighbourhood.obj and OUT_DIR/minimal.obj and
 /// prints the compare line that reproduces the minimal one.

@@ -70,6 +70,21 @@ std::optional<std::pair<int, int>> symptom_site(const LoopComparison& c, const S
 std::span<const int> corners(const TriMesh& m, int f) { return m.triangles[static_cast<size_t>(f)]; }
 std::span<const int> corners(const PolyMesh& m, int f) { return {m.face(f), static_cast<size_t>(m.face_size(f))}; }
 
+/// The vertices the listed faces use, in their order, appended to `positions`; returns each
+/// vertex's new index, -1 for the vertices left out.
+template <class Mesh>
+std::vector<int> kept_vertices(const Mesh& mesh, const std::vector<int>& faces, std::vector<Vec3>& positions) {
+    std::vector<int> remap(static_cast<size_t>(mesh.num_vertices()), -1);
+    for (int f : faces)
+        for (int v : corners(mesh, f)) remap[static_cast<size_t>(v)] = 0;
+    for (int v = 0; v < mesh.num_vertices(); ++v)
+        if (remap[static_cast<size_t>(v)] == 0) {
+            remap[static_cast<size_t>(v)] = static_cast<int>(positions.size());
+            positions.push_back(mesh.positions[static_cast<size_t>(v)]);
+        }
+    return remap;
+}
+
 /// Faces with a vertex within k rings of `seeds`.
 template <class Mesh>
 std::vector<int> ring_faces(const Mesh& m, const std::vector<int>& seeds, int k) {
@@ -189,23 +204,17 @@ std::optional<ShrinkSymptom> symptom_of(const LoopComparison& c) {
 }
 
 PolyMesh submesh(const PolyMesh& mesh, const std::vector<int>& faces) {
-    std::vector<int> remap(static_cast<size_t>(mesh.num_vertices()), -1);
-    for (int f : faces)
-        for (int v : corners(mesh, f)) remap[static_cast<size_t>(v)] = 0;
     PolyMesh out;
-    for (int v = 0; v < mesh.num_vertices(); ++v)
-        if (remap[static_cast<size_t>(v)] == 0) {
-            remap[static_cast<size_t>(v)] = out.num_vertices();
-            out.positions.push_back(mesh.positions[static_cast<size_t>(v)]);
-            if (!mesh.colors.empty()) out.colors.push_back(mesh.colors[static_cast<size_t>(v)]);
-        }
+    const std::vector<int> remap = kept_vertices(mesh, faces, out.positions);
+    if (!mesh.colors.empty())
+        for (int v = 0; v < mesh.num_vertices(); ++v)
+            if (remap[static_cast<size_t>(v)] >= 0) out.colors.push_back(mesh.colors[static_cast<size_t>(v)]);
     std::vector<char> hole(static_cast<size_t>(mesh.num_faces()), 0);
     for (int f : mesh.creases.holes) hole[static_cast<size_t>(f)] = 1;
     for (int f : faces) {
         if (hole[static_cast<size_t>(f)]) out.creases.holes.push_back(out.num_faces());
-        std::vector<int> c;
-        for (int v : corners(mesh, f)) c.push_back(remap[static_cast<size_t>(v)]);
-        out.add_face(c);
+        for (int v : corners(mesh, f)) out.face_vertices.push_back(remap[static_cast<size_t>(v)]);
+        out.face_start.push_back(static_cast<int>(out.face_vertices.size()));
     }
     for (const SharpEdge& e : mesh.creases.edges)
         if (remap[static_cast<size_t>(e.a)] >= 0 && remap[static_cast<size_t>(e.b)] >= 0)
@@ -225,17 +234,12 @@ std::optional<ShrinkSymptom> symptom_of(const SchemeComparison& c) {
 }
 
 TriMesh submesh(const TriMesh& mesh, const std::vector<int>& faces) {
-    std::vector<int> remap(static_cast<size_t>(mesh.num_vertices()), -1);
-    std::vector<char> used(remap.size(), 0);
-    for (int f : faces)
-        for (int v : mesh.triangles[f]) used[v] = 1;
     TriMesh out;
-    for (int v = 0; v < mesh.num_vertices(); ++v)
-        if (used[v]) {
-            remap[v] = out.num_vertices();
-            out.positions.push_back(mesh.positions[v]);
-        }
-    for (int f : faces) out.triangles.push_back({remap[mesh.triangles[f][0]], remap[mesh.triangles[f][1]], remap[mesh.triangles[f][2]]});
+    const std::vector<int> remap = kept_vertices(mesh, faces, out.positions);
+    for (int f : faces) {
+        const Triangle& t = mesh.triangles[static_cast<size_t>(f)];
+        out.triangles.push_back({remap[static_cast<size_t>(t[0])], remap[static_cast<size_t>(t[1])], remap[static_cast<size_t>(t[2])]});
+    }
     return out;
 }
 

@@ -123,8 +123,8 @@ std::vector<Provenance> read_provenance(const PolyMesh& fine, const std::vector<
     // Names parent `fine_listing` (coarse corners in fine numbering) and puts each edge point
     // given as (vertex, place in the listing) on its edge.
     std::vector<int> listing;  // the parent in our numbering; reused, one parent per child face
-    const auto name_parent = [&](std::span<const int> fine_listing, int child,
-                                 std::initializer_list<std::pair<int, int>> points, int face_point) {
+    const auto name_parent = [&](std::span<const int> fine_listing, int child, std::span<const std::pair<int, int>> points,
+                                 int face_point) {
         listing.clear();
         for (int v : fine_listing) listing.push_back(to_ours[static_cast<size_t>(v)]);
         const size_t start = least_rotation(listing);
@@ -168,7 +168,8 @@ std::vector<Provenance> read_provenance(const PolyMesh& fine, const std::vector<
             return {};
         }
         const int parent[3] = {a, b, cc};
-        if (!name_parent(parent, f, {{x, 0}, {y, 2}}, -1)) return {};
+        const std::pair<int, int> edge_points[2] = {{x, 0}, {y, 2}};
+        if (!name_parent(parent, f, edge_points, -1)) return {};
     }
     // Quads by face point, each group chained around it: quad i's next edge point is quad
     // i+1's previous one.
@@ -176,15 +177,16 @@ std::vector<Provenance> read_provenance(const PolyMesh& fine, const std::vector<
         return l.face_point != r.face_point ? l.face_point < r.face_point : l.prev < r.prev;
     });
     std::vector<int> corners;  // of one face point's parent, in fine numbering
-    std::vector<size_t> ring;
+    std::vector<std::pair<int, int>> edge_points;  // its edge points with their places in `corners`
     for (size_t s = 0, e = 0; s < quads.size(); s = e) {
         while (e < quads.size() && quads[e].face_point == quads[s].face_point) ++e;
         const auto group = std::span(quads).subspan(s, e - s);
         corners.clear();
-        ring.clear();
+        edge_points.clear();
         for (size_t at = 0, steps = 0; steps < group.size(); ++steps) {
+            // quad `at`'s next edge point is on the listing's edge `steps`
+            edge_points.emplace_back(group[at].next, static_cast<int>(steps));
             corners.push_back(group[at].a);
-            ring.push_back(at);
             const int next_edge_point = group[at].next;
             const auto it = std::lower_bound(group.begin(), group.end(), next_edge_point,
                                              [](const Corner& q, int v) { return q.prev < v; });
@@ -195,9 +197,7 @@ std::vector<Provenance> read_provenance(const PolyMesh& fine, const std::vector<
                 return {};
             }
         }
-        if (!name_parent(corners, group[0].child, {}, group[0].face_point)) return {};
-        for (size_t i = 0; i < ring.size(); ++i)  // quad i's next edge point is on the listing's edge i
-            if (!name_parent(corners, group[0].child, {{group[ring[i]].next, static_cast<int>(i)}}, -1)) return {};
+        if (!name_parent(corners, group[0].child, edge_points, group[0].face_point)) return {};
     }
 
     std::vector<Provenance> out(static_cast<size_t>(n));

@@ -42,9 +42,12 @@ std::vector<std::string> folder_inputs(const std::string& spec) {
             files.push_back(it->path().string());
     }
     if (ec) throw InputError(spec + ": cannot list " + folder.string() + ": " + ec.message());
-    if (files.empty())
-        throw InputError(spec + ": " + (pattern.empty() ? "no mesh file (.obj, .off, .ply, .dae, .stl) in " + folder.string()
-                                                        : "no file of " + folder.string() + " matches " + pattern));
+    if (files.empty() && pattern.empty()) {
+        std::string known;
+        for (const std::string& ext : readable_mesh_extensions()) known += (known.empty() ? "" : ", ") + ext;
+        throw InputError(spec + ": no mesh file (" + known + ") in " + folder.string());
+    }
+    if (files.empty()) throw InputError(spec + ": no file of " + folder.string() + " matches " + pattern);
     std::sort(files.begin(), files.end());
     return files;
 }

@@ -154,14 +154,17 @@ bool ends_in(const std::string& path, std::string_view ext) {
 
 }  // namespace
 
-bool readable_mesh_file(const std::string& path) {
-    for (std::string_view ext : mesh_extensions())
-        if (ends_in(path, ext)) return true;
+std::vector<std::string> readable_mesh_extensions() {
+    std::vector<std::string> all(mesh_extensions().begin(), mesh_extensions().end());
 #ifdef CROSSDIV_HAS_ASSIMP
-    for (const std::string& ext : adapters::assimp::extensions())
-        if (ends_in(path, ext)) return true;
+    all.insert(all.end(), adapters::assimp::extensions().begin(), adapters::assimp::extensions().end());
 #endif
-    return false;
+    return all;
+}
+
+bool readable_mesh_file(const std::string& path) {
+    const std::vector<std::string> all = readable_mesh_extensions();
+    return std::any_of(all.begin(), all.end(), [&](const std::string& ext) { return ends_in(path, ext); });
 }
 
 std::optional<PolyMesh> read_with_input_adapter([[maybe_unused]] const std::string& path) {

@@ -65,8 +65,11 @@ std::vector<const Implementation*> select_references(Scheme scheme, const std::v
 std::vector<const Implementation*> select_references(bool Capabilities::*capability, const std::vector<std::string>& names,
                                                      const char* what);
 
-/// Whether `path` has an extension that core's readers (.obj, .off, .ply) or an input adapter
-/// of this build (Assimp: .dae, .stl) take, compared without case.
+/// The extensions core's readers (.obj, .off, .ply) and the input adapters of this build
+/// (Assimp: .dae, .stl) take, lower case with their dot.
+std::vector<std::string> readable_mesh_extensions();
+
+/// Whether `path` ends in one of readable_mesh_extensions(), compared without case.
 bool readable_mesh_file(const std::string& path);
 
 /// Reads `path` through the input adapter built for its extension (Assimp: .dae, .ply, .stl);
