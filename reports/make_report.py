@@ -14,7 +14,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 from report import sections, viewer  # noqa: E402
 from report.model import render_html, render_markdown  # noqa: E402
-from report.records import halfedge_cases, split_cases  # noqa: E402
+from report.records import halfedge_cases, scheme_cases, split_cases  # noqa: E402
 from report.records import SCHEMA_VERSION, fmt  # noqa: E402
 
 
@@ -35,6 +35,7 @@ def load(folder):
 def build(results, bench, folder, figdir):
     """(title, intro lines, sections) of the report."""
     mesh, curves, surfaces, studies = split_cases(results["cases"])
+    schemes = scheme_cases(results["cases"])
     s = results["summary"]
     refs = ", ".join(f"{r['name']} ({r['version']})" for r in results.get("references", []))
     intro = [f"- manifest: `{results.get('manifest')}`, shard {results.get('shard')}, {s['cases']} cases, "
@@ -45,10 +46,10 @@ def build(results, bench, folder, figdir):
     subject = sections.subject_section(mesh)
     body = [viewer.first_screen(results["cases"], mesh, [r["name"] for r in results.get("references", [])], folder), sections.outcomes_section(s),
             *([subject] if subject else []), *before,
-            sections.catalogue_section(sections.catalogue_rows(mesh, curves + surfaces + studies +
+            sections.catalogue_section(sections.catalogue_rows(mesh + schemes, curves + surfaces + studies +
                                                               halfedge_cases(results["cases"]))), *after,
             sections.curve_section(curves, bench, figdir), sections.surface_section(surfaces, bench, figdir),
-            sections.halfedge_section(halfedge_cases(results["cases"])),
+            sections.schemes_section(schemes), sections.halfedge_section(halfedge_cases(results["cases"])),
             sections.studies_section(studies, figdir), sections.timing_section(bench, figdir)]
     return f"crossdiv conformance report: suite {results.get('suite')}", intro, [b for b in body if b is not None]
 

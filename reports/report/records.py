@@ -7,7 +7,7 @@ import math
 import os
 
 # The study operations of the suite (verification/src/suite/operations.cpp).
-STUDIES = ("catmull-clark", "schemes", "creases", "limit-positions", "vertex-age", "curvature", "isosurface", "fitting", "multiresolution", "spectrum", "convergence")
+STUDIES = ("schemes", "creases", "limit-positions", "vertex-age", "curvature", "isosurface", "fitting", "multiresolution", "spectrum", "convergence")
 
 # Outcome categories of the summary matrix, in legend order, with their colours.
 CATEGORIES = [
@@ -45,6 +45,15 @@ def category(case, run=None):
     if o not in dict(CATEGORIES):
         raise ValueError(f"unknown outcome '{o}' in {case.get('id')}")
     return o
+
+
+# The refinement comparisons of the schemes other than Loop, one operation per scheme.
+SCHEMES = ("catmull-clark", "doo-sabin", "sqrt3", "butterfly", "modified-butterfly")
+
+
+def scheme_cases(cases):
+    """The comparison cases of the schemes other than Loop."""
+    return [c for c in cases if c.get("operation") in SCHEMES]
 
 
 def is_mesh_case(case):

@@ -31,15 +31,11 @@ namespace {
 
 using namespace crossdiv::verification;
 
-/// The rule a run uses on `mesh`: the flags, the file's tags where no flag is given
-/// (tag_rules.h; `none` tags the boundary faces of `mesh` as holes), the notes printed.
+/// The rule a run uses on `mesh` (rule_with_tags), its notes printed.
 SchemeRule rule_with_tags(Scheme scheme, const PolySchemeArgs& s, PolyMesh& mesh) {
-    const TagRules tags = resolve_tag_rules(scheme, s.boundary, mesh);
-    for (const std::string& note : tags.notes) fmt::print("note: {}\n", note);
-    SchemeRule rule = rule_from_boundary_name(scheme, tags.boundary);
-    rule.catmull_clark.creasing = crease_method(s.creasing, mesh);
-    rule.catmull_clark.smooth_triangles = tags.smooth_triangles;
-    rule.catmull_clark.nonmanifold = s.nonmanifold;
+    std::vector<std::string> notes;
+    const SchemeRule rule = verification::rule_with_tags(scheme, {s.boundary, s.creasing, s.nonmanifold}, mesh, notes);
+    for (const std::string& note : notes) fmt::print("note: {}\n", note);
     return rule;
 }
 
@@ -54,12 +50,6 @@ void write_json(const std::string& path, const nlohmann::json& j) {
     fmt::print("results written to {}\n", path);
 }
 
-CreaseMethod crease_method(const std::string& flag, const PolyMesh& mesh) {
-    if (flag == "uniform") return CreaseMethod::Uniform;
-    if (flag == "chaikin") return CreaseMethod::Chaikin;
-    if (!flag.empty()) throw InputError("--crease-method: '" + flag + "' is not uniform or chaikin");
-    return mesh.creases.method.value_or(CreaseMethod::Uniform);
-}
 
 bool compare_loop_creases(const PolyMesh& mesh, const std::string& name, const std::string& weights,
                           const std::string& boundary, CreaseMethod method, int levels, double timeout, bool isolate,

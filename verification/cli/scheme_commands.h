@@ -26,10 +26,6 @@ struct PolySchemeArgs {
     NonManifoldRule nonmanifold = NonManifoldRule::OpenSubdiv;                      ///< --nonmanifold
 };
 
-/// The crease decay a run uses: `--crease-method` when given, else the input's
-/// `t creasemethod` tag, else uniform (OpenSubdiv's default).
-CreaseMethod crease_method(const std::string& flag, const PolyMesh& mesh);
-
 /// `crossdiv compare INPUT --scheme loop` for a crease-tagged input: OpenSubdiv, the only
 /// reference with creases, level by level; prints the table and returns whether it agrees.
 bool compare_loop_creases(const PolyMesh& mesh, const std::string& name, const std::string& weights,

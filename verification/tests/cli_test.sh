@@ -116,6 +116,13 @@ for f in results.json results.csv junit.xml report.md index.html figures/summary
   expect "suite-wrote-$f" 0 "$f" -- ls "$tmp/suite/$f"
 done
 expect suite-report-catalogue 0 'diverge \(corner-rule\)' -- cat "$tmp/suite/report.md"
+# Every scheme per input: a folder of the user's meshes, each its own Catmull-Clark case, in
+# the report's table of every scheme against its references.
+mkdir -p "$tmp/quads"
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0.2\nv 0 1 0\nf 1 2 3 4\n' > "$tmp/quads/open-quad.obj"
+printf 'suite cc\ncase dir:%s catmull-clark levels=2\n' "$tmp/quads" > "$tmp/cc.suite"
+expect suite-scheme-per-input 0 'open-quad.obj \| catmull-clark boundary=default L2 weak tol=1e-12: opensubdiv agree, openmesh diverge \(boundary-rule\), cgal agree' -- "$crossdiv" suite "$tmp/cc.suite" --out "$tmp/cc" --jobs 1
+expect suite-scheme-report 0 '\| catmull-clark \| 2 \| edge-only \| openmesh \| midpoint-average \| diverge \(boundary-rule\) \| 1 \|' -- cat "$tmp/cc/report.md"
 printf 'suite cli\ncase bundled:all loop levels=many\n' > "$tmp/bad.suite"
 expect suite-bad-manifest 2 'bad.suite:2: levels=many is not a finite number' -- "$crossdiv" suite "$tmp/bad.suite" --out "$tmp/bad"
 printf 'suite none\n' > "$tmp/none.suite"

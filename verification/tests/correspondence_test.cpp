@@ -126,6 +126,31 @@ TEST(Correspondence, FallsBackToPositionsWhenOldVerticesAreMoved) {
     EXPECT_EQ(c.ref_to_ours[12], 0);
 }
 
+TEST(Correspondence, CopiesOfAVertexAtOnePlaceAreToldApartByTheirFaces) {
+    // Two quads cut open along their shared edge: vertices 1 and 4, 2 and 7 are copies at one
+    // place. The reference numbers the copies the other way round; only its faces tell which
+    // copy is which (by position either would do, and the wrong one breaks both faces).
+    PolyMesh ours;
+    ours.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0),
+                      Vec3(1, 0, 0), Vec3(2, 0, 0), Vec3(2, 1, 0), Vec3(1, 1, 0)};
+    ours.add_face({0, 1, 2, 3});
+    ours.add_face({4, 5, 6, 7});
+    PolyMesh ref;
+    ref.positions = ours.positions;  // the copies coincide: the swapped numbering moves nothing
+    ref.add_face({0, 4, 7, 3});
+    ref.add_face({1, 5, 6, 2});
+    const Correspondence c = match_nearest_and_faces(ours, ref);
+    ASSERT_EQ(c.method, MatchMethod::NearestAndFaces) << c.note;
+    EXPECT_EQ(c.ref_to_ours, (std::vector<int>{0, 4, 7, 3, 1, 5, 6, 2}));
+    // Copies no face uses are paired by position, each with one of ours.
+    ours.positions.push_back(Vec3(5, 5, 5));
+    ours.positions.push_back(Vec3(5, 5, 5));
+    ref.positions = ours.positions;
+    const Correspondence isolated = match_nearest_and_faces(ours, ref);
+    ASSERT_EQ(isolated.method, MatchMethod::NearestAndFaces) << isolated.note;
+    EXPECT_EQ(isolated.ref_to_ours[8] + isolated.ref_to_ours[9], 17);
+}
+
 TEST(Correspondence, NearestRefusesANonBijection) {
     const std::vector<Vec3> ours = {Vec3(0, 0, 0), Vec3(1, 0, 0)};
     const std::vector<Vec3> ref = {Vec3(0.1, 0, 0), Vec3(0.2, 0, 0)};

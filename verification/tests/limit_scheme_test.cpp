@@ -135,9 +135,15 @@ TEST(BfrComparison, ExactAtLevelOneDyadicPointsEvenOnIrregularFaces) {
 TEST(LimitChecks, UnknownStudyIsRefused) {
     EXPECT_THROW(find_operation("eigen"), InputError);
     const auto& ops = suite_operations();
-    // catmull-clark, schemes, creases, limit-positions, vertex-age, curvature, isosurface, fitting,
+    // schemes, creases, limit-positions, vertex-age, curvature, isosurface, fitting,
     // multiresolution, pages, spectrum, convergence
-    EXPECT_EQ(std::count_if(ops.begin(), ops.end(), [](const SuiteOperation& op) { return op.kind == OperationKind::Study; }), 12);
+    EXPECT_EQ(std::count_if(ops.begin(), ops.end(), [](const SuiteOperation& op) { return op.kind == OperationKind::Study; }), 11);
+    // A comparison operation per scheme, each named after its scheme.
+    for (Scheme s : all_schemes()) {
+        const SuiteOperation& op = find_operation(to_string(s));
+        EXPECT_EQ(op.kind, OperationKind::Comparison);
+        EXPECT_EQ(op.scheme, s);
+    }
 }
 
 // The curvature study: every check holds (second-order convergence of core on the sphere and

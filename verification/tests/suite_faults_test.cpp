@@ -123,6 +123,8 @@ std::unique_ptr<Implementation> core_with_slip(Scheme scheme, std::function<bool
 
 TEST(SuiteFaults, TheJobsThatCoverEachFeaturePassWithCore) {
     const SuiteRun run = run_default_jobs({{"edits", ""}, {"normals", ""}, {"spectrum", ""}, {"schemes", ""},
+                                           {"catmull-clark", "bundled:"}, {"doo-sabin", "bundled:"},
+                                           {"sqrt3", "bundled:"}, {"modified-butterfly", "bundled:"},
                                            {"surfaces", "surface:vase"}, {"loop", "weights=warren"}});
     EXPECT_EQ(run.failures, 0) << junit_failures(run.junit);
 }
@@ -195,7 +197,20 @@ TEST(SuiteFaults, AModifiedButterflyWeightSlipFails) {
             for (size_t v = static_cast<size_t>(nv); v < fine.positions.size(); ++v)
                 if (count[v] > 0) fine.positions[v] += 0.5 * (fine.positions[v] - ends[v] / count[v]);
         }));
-    expect_failures_naming({{"schemes", ""}}, {"modified-butterfly"});
+    expect_failures_naming({{"modified-butterfly", "bundled:"}}, {"modified-butterfly"});
+}
+
+TEST(SuiteFaults, ACatmullClarkVertexWeightSlipFails) {
+    // Each vertex point moved a quarter further from its old position than the rule puts it:
+    // the weight (n - 3) / n of the old vertex mistyped smaller, at every vertex, boundary
+    // vertices too.
+    const ScopedCoreImplementation fault(core_with_slip(
+        Scheme::CatmullClark, [](const SchemeRule&) { return true; },
+        [](const PolyMesh& coarse, PolyMesh& fine) {
+            for (size_t v = 0; v < coarse.positions.size(); ++v)
+                fine.positions[v] += 0.25 * (fine.positions[v] - coarse.positions[v]);
+        }));
+    expect_failures_naming({{"catmull-clark", "bundled:"}}, {"catmull-clark"});
 }
 
 TEST(SuiteFaults, ATessellationThatDropsItsLastPointFails) {

@@ -69,7 +69,16 @@ TEST(Manifest, ReadsEveryKey) {
 TEST(Manifest, ErrorsNameTheFileAndLine) {
     const fs::path d = temp_dir("bad");
     const std::vector<std::pair<std::string, std::string>> bad = {
-        {"suite s\ncase bundled:all sqrt3\n", ":2: unknown operation 'sqrt3'"},
+        {"suite s\ncase bundled:all sqrt4\n", ":2: unknown operation 'sqrt4'"},
+        {"suite s\ncase bundled:all catmull-clark weights=loop\n",
+         ":2: unknown key 'weights' (known: boundary, crease-method, levels, against, tier, tolerance)"},
+        {"suite s\ncase bundled:all doo-sabin crease-method=chaikin\n",
+         ":2: unknown key 'crease-method' (known: boundary, levels, against, tier, tolerance)"},
+        {"suite s\ncase bundled:all catmull-clark boundary=reflected-wings\n",
+         ":2: catmull-clark has no boundary rule 'reflected-wings'"},
+        {"suite s\ncase bundled:all catmull-clark crease-method=sharp\n", ":2: crease method 'sharp' is not uniform or chaikin"},
+        {"suite s\ncase bundled:all sqrt3 against=opensubdiv\n", ":2: "},
+        {"suite s\ncase bundled:all sqrt3 levels=7\n", ":2: levels must be an integer 1..6"},
         {"suite s\n\ncase bundled:all loop levels=zero\n", ":3: levels=zero is not a finite number"},
         {"suite s\ncase bundled:all loop tier=loose\n", ":2: unknown tier 'loose'"},
         {"suite s\ncase bundled:all loop against=blender\n", ":2: unknown or not built reference 'blender'"},
@@ -89,6 +98,77 @@ TEST(Manifest, ErrorsNameTheFileAndLine) {
             EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
         }
     }
+}
+
+TEST(Manifest, ReadsTheKeysOfEveryScheme) {
+    const fs::path d = temp_dir("scheme-keys");
+    const Manifest m = read_manifest(write(d / "a.suite",
+                                           "suite s\ntimeout 7\n"
+                                           "case bundled:all catmull-clark boundary=edge-and-corner crease-method=chaikin "
+                                           "levels=3 against=opensubdiv,cgal tier=strict\n"
+                                           "case polygons:all doo-sabin\n"));
+    ASSERT_EQ(m.entries.size(), 2u);
+    const ManifestEntry& cc = m.entries[0];
+    EXPECT_EQ(cc.scheme_request.scheme, Scheme::CatmullClark);
+    EXPECT_EQ(cc.rule_flags.boundary, "edge-and-corner");
+    EXPECT_EQ(cc.rule_flags.creasing, "chaikin");
+    EXPECT_EQ(cc.scheme_request.levels, 3);
+    EXPECT_EQ(cc.scheme_request.references, (std::vector<std::string>{"opensubdiv", "cgal"}));
+    EXPECT_EQ(cc.scheme_request.tier, Tier::Strict);
+    EXPECT_EQ(cc.scheme_request.timeout_seconds, 7);
+    const ManifestEntry& ds = m.entries[1];
+    EXPECT_EQ(ds.scheme_request.scheme, Scheme::DooSabin);
+    EXPECT_EQ(ds.rule_flags.boundary, "");  // the input's tags, then the default
+    EXPECT_EQ(ds.scheme_request.levels, 1);
+    std::vector<std::string> having;  // without against=, every reference that has the scheme
+    for (const Implementation* r : references_for(Scheme::DooSabin)) having.push_back(r->name());
+    EXPECT_EQ(ds.scheme_request.references, having);
+    const std::vector<SuiteJob> jobs = expand_jobs(m);
+    EXPECT_EQ(jobs.front().id, "bundled:" + datasets::bundled_meshes().front().name +
+                                   " | catmull-clark boundary=edge-and-corner crease-method=chaikin L3 strict");
+    EXPECT_EQ(jobs.back().id, "bundled:" + datasets::polygon_meshes().back().name + " | doo-sabin boundary=default L1 weak tol=1e-12");
+    // A subject replaces core in the loop cases only, so far.
+    EXPECT_THROW(read_manifest(write(d / "b.suite", "suite s\nsubject s command='a {out}'\ncase bundled:all sqrt3\n")),
+                 ParseError);
+}
+
+TEST(Suite, ACaseOfAnySchemeOverAFolderRunsEachMeshAsItsOwnCase) {
+    CROSSDIV_REQUIRE_LIBRARIES("opensubdiv", "openmesh");
+    const fs::path d = temp_dir("scheme-folder");
+    fs::create_directories(d / "meshes");
+    // A closed quad cube, where every reference agrees, and one open quad, where OpenMesh's
+    // boundary rule (the midpoint-average rule) parts from OpenSubdiv's.
+    write(d / "meshes" / "cube.obj",
+          "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+          "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n");
+    write(d / "meshes" / "quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0.2\nv 0 1 0\nf 1 2 3 4\n");
+    const Manifest m = read_manifest(write(d / "f.suite", "suite s\ncase dir:" + (d / "meshes").string() +
+                                                             " catmull-clark levels=2 against=opensubdiv,openmesh\n"));
+    const std::vector<SuiteJob> jobs = expand_jobs(m);
+    ASSERT_EQ(jobs.size(), 2u);
+    const std::vector<CaseRecord> records = run_jobs(jobs, 1, (d / "out").string(), [](int, int, const CaseRecord&) {});
+    ASSERT_EQ(records.size(), 2u);
+    for (const CaseRecord& c : records) {
+        EXPECT_EQ(c.operation, "catmull-clark");
+        EXPECT_EQ(c.levels, 2);
+        EXPECT_EQ(c.boundary, "edge-only");  // the rule core applied: the default
+        ASSERT_EQ(c.runs.size(), 2u) << c.id;
+        EXPECT_EQ(c.runs[0].reference, "opensubdiv");
+        EXPECT_EQ(c.runs[0].outcome.verdict, Verdict::Agree) << c.runs[0].explanation;
+        EXPECT_LE(c.runs[0].measured, 1e-15);  // the same stencils, summed in OpenSubdiv's order
+    }
+    const CaseRecord& cube = records[0].input.ends_with("cube.obj") ? records[0] : records[1];
+    const CaseRecord& quad = records[0].input.ends_with("quad.obj") ? records[0] : records[1];
+    EXPECT_EQ(cube.runs[1].outcome.verdict, Verdict::Agree) << cube.runs[1].explanation;
+    EXPECT_EQ(quad.runs[1].outcome.verdict, Verdict::Diverge);
+    EXPECT_EQ(quad.runs[1].outcome.cls, DivergenceClass::BoundaryRule) << quad.runs[1].explanation;
+    // The record reads back as the workers and `crossdiv merge` read it.
+    const CaseRecord back = case_record_from_json(to_json(quad));
+    EXPECT_EQ(back.boundary, "edge-only");
+    EXPECT_EQ(back.runs[1].outcome.cls, DivergenceClass::BoundaryRule);
+    EXPECT_DOUBLE_EQ(back.runs[1].measured, quad.runs[1].measured);
+    EXPECT_GT(back.runs[1].measured, 0.01);
+    fs::remove_all(d);
 }
 
 TEST(Manifest, TheDefaultSuiteReadsAndCoversEveryBundledMeshAndTheCatalog) {

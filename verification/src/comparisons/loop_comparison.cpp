@@ -190,21 +190,6 @@ std::vector<const Implementation*> selected_references(const LoopComparisonReque
 
 }  // namespace
 
-const char* to_string(Tier tier) {
-    switch (tier) {
-        case Tier::Strict: return "strict";
-        case Tier::Weak: return "weak";
-        case Tier::Geometric: return "geometric";
-    }
-    return "unknown";
-}
-
-Tier tier_from_string(const std::string& name) {
-    for (Tier t : {Tier::Strict, Tier::Weak, Tier::Geometric})
-        if (name == to_string(t)) return t;
-    throw InputError("unknown tier '" + name + "' (known: strict, weak, geometric)");
-}
-
 bool LoopComparison::all_agree() const {
     for (const ReferenceRun& r : runs)
         if (r.verdict != Verdict::Agree) return false;

@@ -103,6 +103,8 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
     out.scheme = req.scheme;
     out.rule = rule_name(req.scheme, req.rule);
     out.levels = req.levels;
+    out.tier = req.tier;
+    out.tolerance = req.tolerance;
     out.input_vertices = input.num_vertices();
     out.input_faces = input.num_faces();
 
@@ -193,6 +195,20 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
             if (!beyond_valence_table(ref, req.scheme, ref_rule, input, *it.trace, tolerance, why)) return std::nullopt;
             return Classification{DivergenceClass::ValenceLimit, why};
         };
+        // The tier the run is held to: a float reference to the weak tier at the float bound.
+        const Tier tier = in_float && req.tier == Tier::Strict ? Tier::Weak : req.tier;
+        if (tier == Tier::Geometric) {
+            const double d = bounding_box_diagonal(ours.positions);
+            run.hausdorff_rel = hausdorff_vertex_sets(ours.positions, theirs.positions) / (d > 0 ? d : 1);
+        }
+        const bool geometric_agree = tier == Tier::Geometric && run.hausdorff_rel <= tolerance;
+        const std::string geometric_why = "vertex-set Hausdorff distance " + sci(run.hausdorff_rel) + " <= " + sci(tolerance);
+        if (run.correspondence.method == MatchMethod::None && geometric_agree) {
+            run.verdict = Verdict::Agree;
+            run.explanation = geometric_why + " (no vertex correspondence: " + run.correspondence.note + ")";
+            out.runs.push_back(std::move(run));
+            continue;
+        }
         if (run.correspondence.method == MatchMethod::None) {
             // Without a correspondence only the valence-table and topology tests of the ladder
             // can be run.
@@ -228,10 +244,15 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
         const MeshComparison with_rule = compare_meshes(same_rule_mesh, theirs, run.correspondence.ref_to_ours);
         run.max_rel_with_reference_rule = with_rule.max_rel;
         const bool rule_explains = rules_differ && with_rule.topology_equal() && with_rule.max_rel <= tolerance;
-        if (run.comparison.topology_equal() && run.comparison.max_rel <= tolerance) {
+        const bool within_tier = tier == Tier::Strict ? run.comparison.topology_equal() && run.comparison.max_abs == 0.0
+                                 : tier == Tier::Weak ? run.comparison.topology_equal() && run.comparison.max_rel <= tolerance
+                                                      : geometric_agree;
+        if (within_tier) {
             run.verdict = Verdict::Agree;
-            run.explanation = "max relative error " + sci(run.comparison.max_rel) + " <= " + sci(tolerance) +
-                              (in_float ? " (float tier)" : "");
+            run.explanation = tier == Tier::Strict    ? std::string("bitwise identical")
+                              : tier == Tier::Geometric ? geometric_why
+                                                        : "max relative error " + sci(run.comparison.max_rel) + " <= " +
+                                                              sci(tolerance) + (in_float ? " (float tier)" : "");
         } else {
             run.verdict = Verdict::Diverge;
             const bool same_faces = run.comparison.topology_equal();
@@ -311,7 +332,8 @@ nlohmann::json to_json(const SchemeComparison& c) {
         json run = {{"reference", r.reference},
                     {"version", r.version},
                     {"rule", r.rule},
-                    {"outcome", r.outcome.summary()},
+                    {"status", to_string(r.outcome.status)},
+                    {"status_message", r.outcome.message},
                     {"seconds", r.outcome.seconds},
                     {"verdict", to_string(r.verdict)},
                     {"divergence_class", to_string(r.divergence_class)},
@@ -324,10 +346,12 @@ nlohmann::json to_json(const SchemeComparison& c) {
             run["rms_rel"] = finite(r.comparison.rms_rel);
             run["max_rel_with_reference_rule"] = finite(r.max_rel_with_reference_rule);
         }
+        if (c.tier == Tier::Geometric) run["hausdorff_rel"] = finite(r.hausdorff_rel);
         runs.push_back(run);
     }
     return {{"input", c.input},           {"scheme", to_string(c.scheme)}, {"rule", c.rule},
-            {"levels", c.levels},         {"input_vertices", c.input_vertices}, {"input_faces", c.input_faces},
+            {"levels", c.levels},         {"tier", to_string(c.tier)}, {"tolerance_rel", finite(c.tolerance)},
+            {"input_vertices", c.input_vertices}, {"input_faces", c.input_faces},
             {"core_seconds", c.core_seconds}, {"core_error", c.core_error}, {"all_agree", c.all_agree()},
             {"runs", runs}};
 }

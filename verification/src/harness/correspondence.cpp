@@ -387,7 +387,18 @@ Correspondence match_nearest_and_faces(const PolyMesh& ours, const PolyMesh& ref
     tree.buildIndex();
     std::vector<unsigned> nearest(n);
     std::vector<double> d2(n);
-    for (size_t i = 0; i < n; ++i) tree.knnSearch(ref.positions[i].data(), 1, &nearest[i], &d2[i]);
+    // A reference vertex with two of ours exactly as near (copies of a vertex at one place: a
+    // seam cut open, a duplicate face's corners) is placed by the faces alone: by position it
+    // would take either copy, and the wrong one blocks the faces around both.
+    std::vector<char> tied(n, 0);
+    for (size_t i = 0; i < n; ++i) {
+        unsigned two[2] = {0, 0};
+        double two_d2[2] = {0, 0};
+        const size_t found = tree.knnSearch(ref.positions[i].data(), std::min<size_t>(2, n), two, two_d2);
+        nearest[i] = two[0];
+        d2[i] = two_d2[0];
+        tied[i] = found == 2 && two_d2[1] == two_d2[0];
+    }
     std::vector<int> order(n);
     std::iota(order.begin(), order.end(), 0);
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return d2[a] < d2[b]; });
@@ -404,7 +415,7 @@ Correspondence match_nearest_and_faces(const PolyMesh& ours, const PolyMesh& ref
     };
     std::vector<int> map(n, -1), taken_by(n, -1);
     for (int i : order)
-        if (taken_by[nearest[i]] < 0 && mutual(i)) {
+        if (!tied[i] && taken_by[nearest[i]] < 0 && mutual(i)) {
             map[i] = static_cast<int>(nearest[i]);
             taken_by[nearest[i]] = i;
         }
@@ -441,6 +452,20 @@ Correspondence match_nearest_and_faces(const PolyMesh& ours, const PolyMesh& ref
                 placed = true;
             }
         }
+    }
+    // Tied vertices no face placed (copies no face uses): any free copy of ours at that place.
+    for (size_t i = 0; i < n; ++i) {
+        if (!tied[i] || map[i] >= 0) continue;
+        constexpr size_t kCopies = 8;
+        unsigned near[kCopies];
+        double near_d2[kCopies];
+        const size_t found = tree.knnSearch(ref.positions[i].data(), std::min(kCopies, n), near, near_d2);
+        for (size_t k = 0; k < found && near_d2[k] == d2[i]; ++k)
+            if (taken_by[near[k]] < 0) {
+                map[i] = static_cast<int>(near[k]);
+                taken_by[near[k]] = static_cast<int>(i);
+                break;
+            }
     }
     std::vector<int> left_ref, left_ours;
     for (size_t i = 0; i < n; ++i) {

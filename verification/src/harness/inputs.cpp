@@ -65,6 +65,8 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& specs) {
             for (const auto& b : datasets::polygon_meshes()) out.push_back("bundled:" + b.name);
         } else if (s == "edgecases:all") {
             for (const auto& c : datasets::edge_cases()) out.push_back("edgecase:" + c.name);
+        } else if (s == "polygon-edgecases:all") {
+            for (const auto& c : datasets::polygon_edge_cases()) out.push_back("edgecase:" + c.name);
         } else if (s == "course:all") {
             for (const auto& f : datasets::course_mesh_files()) out.push_back(f);
         } else if (s == "meshedit:all") {
@@ -72,7 +74,7 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& specs) {
         } else if (s == "cgal:all") {
             for (const auto& f : datasets::cgal_mesh_files()) out.push_back(f);
         } else if (s.ends_with(":all")) {
-            throw InputError("unknown collection '" + s + "' (known: bundled:all, polygons:all, edgecases:all, course:all, meshedit:all, cgal:all)");
+            throw InputError("unknown collection '" + s + "' (known: bundled:all, polygons:all, edgecases:all, polygon-edgecases:all, course:all, meshedit:all, cgal:all)");
         } else {
             out.push_back(s);
         }
@@ -92,6 +94,7 @@ PolyMesh read_input(const std::string& spec) {
                                              spec.find('/') > colon && !std::filesystem::exists(spec))
         throw InputError("'" + spec + "' is neither a file nor a known input name (known: bundled:NAME, " +
                          "edgecase:NAME, dir:FOLDER, and the collections bundled:all, polygons:all, edgecases:all, " +
+                         "polygon-edgecases:all, " +
                          "course:all, meshedit:all, cgal:all)");
     return read_mesh(spec);
 }

@@ -43,4 +43,21 @@ TagRules resolve_tag_rules(Scheme scheme, const std::string& boundary_flag, Poly
     return out;
 }
 
+CreaseMethod crease_method(const std::string& flag, const PolyMesh& mesh) {
+    if (flag == "uniform") return CreaseMethod::Uniform;
+    if (flag == "chaikin") return CreaseMethod::Chaikin;
+    if (!flag.empty()) throw InputError("crease method '" + flag + "' is not uniform or chaikin");
+    return mesh.creases.method.value_or(CreaseMethod::Uniform);
+}
+
+SchemeRule rule_with_tags(Scheme scheme, const RuleFlags& flags, PolyMesh& mesh, std::vector<std::string>& notes) {
+    const TagRules tags = resolve_tag_rules(scheme, flags.boundary, mesh);
+    notes.insert(notes.end(), tags.notes.begin(), tags.notes.end());
+    SchemeRule rule = rule_from_boundary_name(scheme, tags.boundary);
+    rule.catmull_clark.creasing = crease_method(flags.creasing, mesh);
+    rule.catmull_clark.smooth_triangles = tags.smooth_triangles;
+    rule.catmull_clark.nonmanifold = flags.nonmanifold;
+    return rule;
+}
+
 }  // namespace crossdiv::verification

@@ -54,7 +54,25 @@ RunRecord run_from_json(const json& j) {
             r.worst_valence = p["worst"][0].value("valence", -1);
             r.worst_boundary = p["worst"][0].value("boundary", false) ? 1 : 0;
         }
+    } else {
+        // A comparison of another scheme keeps its figures at the run's top level.
+        r.measured = number(j, "max_rel");
+        r.rms = number(j, "rms_rel");
     }
+    return r;
+}
+
+/// What every comparison's reference run records: its JSON, verdict, class, how it ended.
+template <class Run>
+RunRecord reference_run(const json& detail, const Run& run) {
+    RunRecord r;
+    r.detail = detail;
+    r.reference = run.reference;
+    r.outcome = {run.verdict, run.divergence_class};
+    r.status = to_string(run.outcome.status);
+    r.seconds = run.outcome.seconds;
+    r.hausdorff = run.hausdorff_rel;
+    r.explanation = run.explanation;
     return r;
 }
 
@@ -91,14 +109,7 @@ CaseRecord case_record(const LoopComparison& comparison) {
     }
     for (size_t i = 0; i < comparison.runs.size(); ++i) {
         const ReferenceRun& run = comparison.runs[i];
-        RunRecord r;
-        r.detail = runs[i];
-        r.reference = run.reference;
-        r.outcome = {run.verdict, run.divergence_class};
-        r.status = to_string(run.outcome.status);
-        r.seconds = run.outcome.seconds;
-        r.hausdorff = run.hausdorff_rel;
-        r.explanation = run.explanation;
+        RunRecord r = reference_run(runs[i], run);
         if (run.outcome.status == RunStatus::Ok) {
             r.measured = run.comparison.max_rel;
             r.rms = run.comparison.rms_rel;
@@ -106,6 +117,31 @@ CaseRecord case_record(const LoopComparison& comparison) {
                 r.worst_valence = run.comparison.worst[0].valence;
                 r.worst_boundary = run.comparison.worst[0].boundary ? 1 : 0;
             }
+        }
+        c.runs.push_back(std::move(r));
+    }
+    return c;
+}
+
+CaseRecord case_record(const SchemeComparison& comparison) {
+    CaseRecord c;
+    c.detail = to_json(comparison);
+    const json runs = c.detail["runs"];
+    c.detail.erase("runs");
+    c.input = comparison.input;
+    c.operation = to_string(comparison.scheme);
+    c.boundary = comparison.rule;
+    c.tier = to_string(comparison.tier);
+    c.levels = comparison.levels;
+    c.tolerance = comparison.tolerance;
+    c.core_seconds = comparison.core_seconds;
+    c.core_error = comparison.core_error;
+    for (size_t i = 0; i < comparison.runs.size(); ++i) {
+        const SchemeReferenceRun& run = comparison.runs[i];
+        RunRecord r = reference_run(runs[i], run);
+        if (run.outcome.status == RunStatus::Ok && run.correspondence.method != MatchMethod::None) {
+            r.measured = run.comparison.max_rel;
+            r.rms = run.comparison.rms_rel;
         }
         c.runs.push_back(std::move(r));
     }
@@ -145,8 +181,9 @@ json to_json(const CaseRecord& c) {
     json j = c.detail;
     j["input"] = c.input;
     j["operation"] = c.operation;
-    if (!c.weights.empty()) {
-        j["options"] = {{"weights", c.weights}, {"boundary", c.boundary}};
+    if (c.levels > 0) {
+        j["options"] = {{"boundary", c.boundary}};
+        if (!c.weights.empty()) j["options"]["weights"] = c.weights;
         j["levels"] = c.levels;
         j["tier"] = c.tier;
         j["tolerance_rel"] = finite_or_null(c.tolerance);

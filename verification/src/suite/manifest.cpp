@@ -46,35 +46,82 @@ auto at_line(const std::string& file, int line, F&& parse) {
     }
 }
 
-/// The keys of a loop case: its rules, levels, references, tier and tolerance.
-void parse_loop_keys(const std::string& file, int line, std::istringstream& words, LoopComparisonRequest& r) {
-    r.options = {LoopWeights::Loop, LoopBoundary::EdgeOnly};
+/// The keys every comparison case takes: levels, references, tier and tolerance. False for a
+/// key that is not one of them.
+template <class Request>
+bool parse_comparison_key(const std::string& file, int line, Scheme scheme, const std::string& key, const std::string& value,
+                          Request& r) {
+    if (key == "levels") {
+        const double l = parse_number(file, line, key, value);
+        if (l != std::floor(l) || l < 1 || l > 6) throw ParseError(file, line, "levels must be an integer 1..6");
+        r.levels = static_cast<int>(l);
+    } else if (key == "against") {
+        r.references = split(value, ',');
+        at_line(file, line, [&] { return select_references(scheme, r.references); });
+    } else if (key == "tier") {
+        r.tier = at_line(file, line, [&] { return tier_from_string(value); });
+    } else if (key == "tolerance") {
+        r.tolerance = parse_number(file, line, key, value);
+        if (!(r.tolerance >= 0)) throw ParseError(file, line, "tolerance must be >= 0");
+    } else {
+        return false;
+    }
+    return true;
+}
+
+/// Splits a case's key=value words, handing each to `parse` (false: an unknown key).
+template <class Parse>
+void parse_keys(const std::string& file, int line, std::istringstream& words, const std::string& known, Parse&& parse) {
     for (std::string kv; words >> kv;) {
         const size_t eq = kv.find('=');
         if (eq == std::string::npos) throw ParseError(file, line, "expected key=value, got '" + kv + "'");
         const std::string key = kv.substr(0, eq), value = kv.substr(eq + 1);
-        if (key == "weights") {
-            r.options.weights = at_line(file, line, [&] { return loop_weights_from_string(value); });
-        } else if (key == "boundary") {
-            if (value != "edge-only" && value != "edge-and-corner")
-                throw ParseError(file, line, "boundary must be edge-only or edge-and-corner");
-            r.options.boundary = loop_boundary_from_string(value);
-        } else if (key == "levels") {
-            const double l = parse_number(file, line, key, value);
-            if (l != std::floor(l) || l < 1 || l > 6) throw ParseError(file, line, "levels must be an integer 1..6");
-            r.levels = static_cast<int>(l);
-        } else if (key == "against") {
-            r.references = split(value, ',');
-            at_line(file, line, [&] { return select_references(Scheme::Loop, r.references); });
-        } else if (key == "tier") {
-            r.tier = at_line(file, line, [&] { return tier_from_string(value); });
-        } else if (key == "tolerance") {
-            r.tolerance = parse_number(file, line, key, value);
-            if (!(r.tolerance >= 0)) throw ParseError(file, line, "tolerance must be >= 0");
-        } else {
-            throw ParseError(file, line, "unknown key '" + key + "' (known: weights, boundary, levels, against, tier, tolerance)");
-        }
+        if (!parse(key, value)) throw ParseError(file, line, "unknown key '" + key + "' (known: " + known + ")");
     }
+}
+
+/// The keys of a loop case: its rules, levels, references, tier and tolerance.
+void parse_loop_keys(const std::string& file, int line, std::istringstream& words, LoopComparisonRequest& r) {
+    r.options = {LoopWeights::Loop, LoopBoundary::EdgeOnly};
+    parse_keys(file, line, words, "weights, boundary, levels, against, tier, tolerance",
+               [&](const std::string& key, const std::string& value) {
+                   if (key == "weights") {
+                       r.options.weights = at_line(file, line, [&] { return loop_weights_from_string(value); });
+                   } else if (key == "boundary") {
+                       if (value != "edge-only" && value != "edge-and-corner")
+                           throw ParseError(file, line, "boundary must be edge-only or edge-and-corner");
+                       r.options.boundary = loop_boundary_from_string(value);
+                   } else {
+                       return parse_comparison_key(file, line, Scheme::Loop, key, value, r);
+                   }
+                   return true;
+               });
+}
+
+/// The keys of another scheme's case: its boundary rule (and Catmull-Clark's crease decay),
+/// levels, references, tier and tolerance. The rule is checked here and resolved per input
+/// against the input's tags when the job runs.
+void parse_scheme_keys(const std::string& file, int line, std::istringstream& words, Scheme scheme, SchemeRequest& r,
+                       RuleFlags& flags) {
+    r.scheme = scheme;
+    const bool creases = scheme == Scheme::CatmullClark;
+    parse_keys(file, line, words,
+               std::string("boundary, ") + (creases ? "crease-method, " : "") + "levels, against, tier, tolerance",
+               [&](const std::string& key, const std::string& value) {
+                   if (key == "boundary") {
+                       // `none` is OpenSubdiv's VTX_BOUNDARY_NONE: edge-only with the boundary
+                       // faces made holes, per input (resolve_tag_rules).
+                       if (value != "none" || scheme != Scheme::CatmullClark)
+                           at_line(file, line, [&] { return rule_from_boundary_name(scheme, value); });
+                       flags.boundary = value;
+                   } else if (key == "crease-method" && creases) {
+                       at_line(file, line, [&] { return crease_method(value, PolyMesh{}); });
+                       flags.creasing = value;
+                   } else {
+                       return parse_comparison_key(file, line, scheme, key, value, r);
+                   }
+                   return true;
+               });
 }
 
 ManifestEntry parse_case(const std::string& file, int line, std::istringstream& words) {
@@ -84,29 +131,42 @@ ManifestEntry parse_case(const std::string& file, int line, std::istringstream& 
     if (!(words >> inputs >> op)) throw ParseError(file, line, "expected: case INPUTS OPERATION [key=value ...]");
     e.inputs = split(inputs, ',');
     e.operation = at_line(file, line, [&] { return &find_operation(op); });
-    if (e.operation->kind == OperationKind::Comparison) {
-        parse_loop_keys(file, line, words, e.request);
-        // Without against=, the references registered so far: a `reference` statement joins
-        // the cases after it.
-        if (e.request.references.empty())
-            for (const Implementation* r : references_for(Scheme::Loop)) e.request.references.push_back(r->name());
-    } else if (std::string extra; words >> extra) {
+    if (e.operation->kind != OperationKind::Comparison) {
         // The checks and studies carry their own named tolerances (tolerances.h).
-        throw ParseError(file, line, "the " + op + " operation takes no keys, got '" + extra + "'");
+        if (std::string extra; words >> extra)
+            throw ParseError(file, line, "the " + op + " operation takes no keys, got '" + extra + "'");
+        return e;
     }
+    const Scheme scheme = e.operation->scheme;
+    std::vector<std::string>& references = scheme == Scheme::Loop ? e.request.references : e.scheme_request.references;
+    if (scheme == Scheme::Loop) parse_loop_keys(file, line, words, e.request);
+    else parse_scheme_keys(file, line, words, scheme, e.scheme_request, e.rule_flags);
+    // Without against=, the references registered so far: a `reference` statement joins
+    // the cases after it.
+    if (references.empty())
+        for (const Implementation* r : references_for(scheme)) references.push_back(r->name());
     return e;
 }
 
-/// The id's description of an entry: the operation, and a loop case's keys.
+/// The id's description of an entry: the operation, and a comparison's keys.
 std::string describe_entry(const ManifestEntry& e) {
     if (e.operation->kind != OperationKind::Comparison) return e.operation->name;
-    const LoopComparisonRequest& r = e.request;
-    std::string s = e.operation->name + " weights=" + std::string(to_string(r.options.weights)) +
-                    " boundary=" + std::string(to_string(r.options.boundary)) + " L" + std::to_string(r.levels) + " " +
-                    to_string(r.tier);
-    if (r.tier != Tier::Strict) {
+    const bool loop = e.operation->scheme == Scheme::Loop;
+    const Tier tier = loop ? e.request.tier : e.scheme_request.tier;
+    const double tolerance = loop ? e.request.tolerance : e.scheme_request.tolerance;
+    std::string s = e.operation->name;
+    if (loop) {
+        s += " weights=" + std::string(to_string(e.request.options.weights)) +
+             " boundary=" + std::string(to_string(e.request.options.boundary));
+    } else {
+        // The rule the case names; an input's tags may still choose where it names none.
+        s += " boundary=" + (e.rule_flags.boundary.empty() ? std::string("default") : e.rule_flags.boundary);
+        if (!e.rule_flags.creasing.empty()) s += " crease-method=" + e.rule_flags.creasing;
+    }
+    s += " L" + std::to_string(loop ? e.request.levels : e.scheme_request.levels) + " " + to_string(tier);
+    if (tier != Tier::Strict) {
         char buf[32];
-        std::snprintf(buf, sizeof buf, "%g", r.tolerance);
+        std::snprintf(buf, sizeof buf, "%g", tolerance);
         s += std::string(" tol=") + buf;
     }
     if (e.subject) s += " subject=" + e.subject->name;
@@ -276,7 +336,7 @@ Manifest read_manifest(std::istream& in, const std::string& path, const std::str
         } else if (keyword == "case") {
             m.entries.push_back(parse_case(path, line, words));
             m.entries.back().subject = subject;
-            if (subject && m.entries.back().operation->kind != OperationKind::Comparison)
+            if (subject && m.entries.back().operation->name != "loop")
                 throw ParseError(path, line, "a subject is compared in the loop operation only; put the " +
                                                  m.entries.back().operation->name + " cases before the subject statement");
         } else {
@@ -288,6 +348,7 @@ Manifest read_manifest(std::istream& in, const std::string& path, const std::str
     if (m.name.empty()) throw ParseError(path, 1, "the manifest has no 'suite NAME' line");
     for (ManifestEntry& e : m.entries) {
         e.request.timeout_seconds = m.timeout_seconds;
+        e.scheme_request.timeout_seconds = m.timeout_seconds;
         e.max_faces = m.max_faces;
     }
     return m;

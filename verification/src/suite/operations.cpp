@@ -8,6 +8,7 @@
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/verification/comparisons/shrink.h"
 #include "crossdiv/verification/implementations/registry.h"
+#include "crossdiv/verification/implementations/tag_rules.h"
 #include "crossdiv/verification/harness/inputs.h"
 #include "crossdiv/verification/harness/output_size.h"
 #include "crossdiv/verification/implementations/program_implementation.h"
@@ -116,6 +117,20 @@ CaseRecord run_loop(const SuiteJob& job, const std::string& out_dir) {
     return rec;
 }
 
+/// Another scheme's case: core against every reference of the case, under the rule the case
+/// names or the input's tags ask for (what the tags resolved to is noted in the record).
+CaseRecord run_scheme(const SuiteJob& job, const std::string&) {
+    const ManifestEntry& entry = *job.entry;
+    SchemeRequest req = entry.scheme_request;
+    PolyMesh input = load_input(job.input);
+    require_refined_size(input, req.scheme, req.levels, entry.max_faces, job.input, "the manifest's max-faces");
+    std::vector<std::string> notes;
+    req.rule = rule_with_tags(req.scheme, entry.rule_flags, input, notes);
+    CaseRecord rec = case_record(compare_scheme(input, job.input, req));
+    if (!notes.empty()) rec.detail["notes"] = notes;
+    return rec;
+}
+
 CaseRecord run_curves(const SuiteJob& job, const std::string&) {
     return case_record(job.input == "curves:synthetic" ? check_synthetic()
                                                        : check_curve_file(load_curve_input(job.input), job.input));
@@ -166,6 +181,16 @@ const std::vector<SuiteOperation>& suite_operations() {
     static const std::vector<SuiteOperation> ops = {
         {"loop", OperationKind::Comparison, "core against every reference on a mesh, under the case's rules and tier",
          expand_inputs, run_loop},
+        {"catmull-clark", OperationKind::Comparison, "core's Catmull-Clark against every reference that has it, under the case's rule and tier",
+         expand_inputs, run_scheme, Scheme::CatmullClark},
+        {"doo-sabin", OperationKind::Comparison, "core's Doo-Sabin against every reference that has it", expand_inputs,
+         run_scheme, Scheme::DooSabin},
+        {"sqrt3", OperationKind::Comparison, "core's sqrt3 against every reference that has it", expand_inputs, run_scheme,
+         Scheme::Sqrt3},
+        {"butterfly", OperationKind::Comparison, "core's classic Butterfly against every reference that has it",
+         expand_inputs, run_scheme, Scheme::Butterfly},
+        {"modified-butterfly", OperationKind::Comparison, "core's modified Butterfly against every reference that has it",
+         expand_inputs, run_scheme, Scheme::ModifiedButterfly},
         {"curves", OperationKind::Checks, "curve files against Eigen and exact properties", expand_curve_inputs, run_curves},
         {"surfaces", OperationKind::Checks, "surface files built and checked as closed surfaces", expand_surface_inputs,
          run_surfaces},
@@ -173,9 +198,7 @@ const std::vector<SuiteOperation>& suite_operations() {
          expand_inputs, run_edits},
         {"normals", OperationKind::Checks, "vertex normals against OpenMesh's and CGAL's calls and the angle oracle",
          expand_inputs, run_normals},
-        {"catmull-clark", OperationKind::Study, "Catmull-Clark against its references on the catalog",
-         one_collection<kCatalog>, run_study<catmull_clark_study>},
-        {"schemes", OperationKind::Study, "Doo-Sabin, sqrt3 and modified Butterfly against theirs; Butterfly properties",
+        {"schemes", OperationKind::Study, "the Butterfly properties on the bundled meshes; the rule oracles of Doo-Sabin, sqrt3 and the classic Butterfly",
          one_collection<kCatalog>, run_study<schemes_study>},
         {"creases", OperationKind::Study, "the crease catalog against OpenSubdiv", one_collection<kCreases>,
          run_study<creases_study>},

@@ -25,10 +25,17 @@ using nlohmann::json;
 /// A job that made no record: core refused its input, or failed.
 CaseRecord failed_job(const SuiteJob& job, const std::string& why, bool ours_failed) {
     CaseRecord c = failed_case(job.input, job.entry->operation->name, why, ours_failed);
-    if (job.entry->operation->kind == OperationKind::Comparison) {
+    if (job.entry->operation->kind != OperationKind::Comparison) return c;
+    if (job.entry->operation->scheme == Scheme::Loop) {
         const LoopComparisonRequest& r = job.entry->request;
         c.weights = to_string(r.options.weights);
         c.boundary = to_string(r.options.boundary);
+        c.levels = r.levels;
+        c.tier = to_string(r.tier);
+        c.tolerance = r.tolerance;
+    } else {
+        const SchemeRequest& r = job.entry->scheme_request;
+        c.boundary = job.entry->rule_flags.boundary.empty() ? "default" : job.entry->rule_flags.boundary;
         c.levels = r.levels;
         c.tier = to_string(r.tier);
         c.tolerance = r.tolerance;

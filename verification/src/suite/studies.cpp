@@ -11,7 +11,6 @@
 #include "crossdiv/subdiv/catmull_clark.h"
 #include "crossdiv/subdiv/vertex_age.h"
 #include "crossdiv/verification/comparisons/limit_comparison.h"
-#include "crossdiv/verification/comparisons/scheme_comparison.h"
 #include "crossdiv/verification/harness/tolerances.h"
 #include "crossdiv/verification/properties/loop_rule_oracle.h"
 #include "crossdiv/verification/properties/rule_oracle.h"
@@ -33,66 +32,16 @@ Check decided(const std::string& reference, const std::string& name, const std::
     return {subject, name, reference, measured, tolerance, unit, note, outcome};
 }
 
-/// One check per reference run of a scheme comparison, with the run's verdict and class; a
-/// run without a result or a vertex correspondence measured nothing (NaN, "measured -").
-void add_scheme_runs(const SchemeComparison& c, double tolerance, std::vector<Check>& checks) {
-    for (const SchemeReferenceRun& r : c.runs) {
-        const bool measured = r.outcome.status == RunStatus::Ok && r.correspondence.method != MatchMethod::None;
-        checks.push_back(decided(r.reference, std::string(to_string(c.scheme)) + " " + c.rule + " L" + std::to_string(c.levels),
-                                 c.input, measured ? r.comparison.max_rel : NAN, tolerance, "rel",
-                                 r.rule + " rule: " + r.explanation, {r.verdict, r.divergence_class}));
-    }
-}
-
 }  // namespace
 
-CheckReport catmull_clark_study() {
-    CheckReport out;
-    std::vector<Check>& runs = out.checks;
-    json rows = json::array();
-    // The catalog, then every edge case (triangles and polygons): Catmull-Clark refines them all.
-    std::vector<std::pair<std::string, PolyMesh>> meshes;
-    for (auto& b : datasets::catalog_meshes()) meshes.emplace_back("bundled:" + b.name, std::move(b.mesh));
-    for (auto& e : datasets::edge_cases()) meshes.emplace_back("edgecase:" + e.name, std::move(e.mesh));
-    for (auto& e : datasets::polygon_edge_cases()) meshes.emplace_back("edgecase:" + e.name, std::move(e.mesh));
-    for (CatmullClarkBoundary rule : {CatmullClarkBoundary::EdgeOnly, CatmullClarkBoundary::EdgeAndCorner}) {
-        for (const auto& [name, mesh] : meshes) {
-            SchemeRequest req;
-            req.rule.catmull_clark = {rule};
-            req.levels = 2;
-            req.timeout_seconds = 60;
-            const SchemeComparison c = compare_scheme(mesh, name, req);
-            rows.push_back(to_json(c));
-            add_scheme_runs(c, req.tolerance, runs);
-        }
-    }
-    out.tables = {{"catmull_clark", rows}};
-    return out;
-}
-
-/// Doo-Sabin, sqrt3 and both Butterflies against their references (sqrt3 to 3 levels, so
-/// that a boundary step and the step after it are both seen; the classic Butterfly has an
-/// external reference only, MeshLab's, when the manifest registers it), and the Butterfly
-/// properties of both variants.
+/// The Butterfly properties of both variants on the bundled meshes, and the rules no library
+/// has in full (Doo-Sabin's Chaikin boundary, sqrt3's parities, the classic Butterfly's wings)
+/// against the points written out from their sources. The comparisons of each scheme with its
+/// references are the per-input cases of its own operation.
 CheckReport schemes_study() {
     CheckReport out;
     std::vector<Check>& runs = out.checks;
-    json rows = json::array(), properties = json::array();
-    const std::vector<datasets::BundledMesh> meshes = datasets::catalog_meshes();
-    for (const auto& [scheme, levels] : {std::pair{Scheme::DooSabin, 2}, {Scheme::Sqrt3, 3}, {Scheme::ModifiedButterfly, 2},
-                                                 {Scheme::Butterfly, 2}})
-        for (const auto& b : meshes) {
-            // The triangle schemes' refusal of polygons is tested elsewhere.
-            if (scheme != Scheme::DooSabin && !b.mesh.all_triangles())
-                continue;
-            SchemeRequest req;
-            req.scheme = scheme;
-            req.levels = levels;
-            req.timeout_seconds = 60;
-            const SchemeComparison c = compare_scheme(b.mesh, "bundled:" + b.name, req);
-            rows.push_back(to_json(c));
-            add_scheme_runs(c, req.tolerance, runs);
-        }
+    json properties = json::array();
     for (const auto& b : datasets::bundled_meshes())
         for (ButterflyVariant v : {ButterflyVariant::Classic, ButterflyVariant::Modified}) {
             const ButterflyProperties p = check_butterfly_properties(b.mesh, "bundled:" + b.name, v, 2);
@@ -129,7 +78,7 @@ CheckReport schemes_study() {
         runs.push_back(check("published points", "butterfly rule oracle", std::string(to_string(w)), v.worst_rel,
                              tolerances::kAgreementRelative, "rel", v.detail));
     }
-    out.tables = {{"schemes", rows}, {"butterfly_properties", properties}};
+    out.tables = {{"butterfly_properties", properties}};
     return out;
 }
 

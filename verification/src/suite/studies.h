@@ -7,11 +7,8 @@
 
 namespace crossdiv::verification {
 
-/// Catmull-Clark against OpenSubdiv, OpenMesh and CGAL on the catalog, both OpenSubdiv
-/// boundary rules, 2 levels; every divergence classified.
-CheckReport catmull_clark_study();
-/// Doo-Sabin (CGAL), sqrt3 (OpenMesh, CGAL; per level and in one call, 3 levels), the
-/// modified Butterfly (OpenMesh), and the Butterfly properties of both variants.
+/// The Butterfly properties of both variants on the bundled meshes, and the rule oracles of
+/// Doo-Sabin's boundaries, sqrt3's parities and the classic Butterfly's wings.
 CheckReport schemes_study();
 /// The crease catalog against OpenSubdiv, and the crease-cube figure.
 CheckReport creases_study();

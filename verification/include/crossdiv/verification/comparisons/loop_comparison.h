@@ -17,21 +17,13 @@
 #include "crossdiv/verification/harness/mesh_comparison.h"
 #include "crossdiv/verification/harness/correspondence.h"
 #include "crossdiv/verification/harness/isolate.h"
+#include "crossdiv/verification/harness/tier.h"
 #include "crossdiv/verification/harness/tolerances.h"
 #include "crossdiv/verification/comparisons/rule_identification.h"
 #include "crossdiv/verification/implementations/implementation.h"
 
 namespace crossdiv::verification {
 
-/// How close is close enough (the tiers of OpenSubdiv's hbr/far regressions, plus one).
-enum class Tier {
-    Strict,     ///< bitwise: identical topology and every coordinate equal
-    Weak,       ///< identical topology, max distance <= tolerance * diagonal at every level
-    Geometric,  ///< vertex-set Hausdorff distance <= tolerance * diagonal; topology may differ
-};
-const char* to_string(Tier tier);
-/// @throws InputError for a name other than strict, weak, geometric.
-Tier tier_from_string(const std::string& name);
 
 struct LoopComparisonRequest {
     LoopOptions options{LoopWeights::Loop, LoopBoundary::EdgeOnly};

@@ -15,6 +15,7 @@
 #include "crossdiv/verification/harness/mesh_comparison.h"
 #include "crossdiv/verification/harness/correspondence.h"
 #include "crossdiv/verification/harness/isolate.h"
+#include "crossdiv/verification/harness/tier.h"
 #include "crossdiv/verification/harness/tolerances.h"
 #include "crossdiv/verification/implementations/scheme.h"
 
@@ -31,6 +32,11 @@ struct SchemeRequest {
     std::vector<std::string> references;  ///< names; every one that has the scheme when empty
     double timeout_seconds = 120;
     bool isolate = true;
+    /// How close is close enough. The tolerance is the weak and geometric tiers' bar, and the
+    /// bar of the classification ladder in every tier (a rule explains a divergence when core
+    /// with that rule agrees within it); a reference that computes in float is held to the
+    /// float tier (weak, tolerances::kFloatAgreementUlps) whatever the tier.
+    Tier tier = Tier::Weak;
     double tolerance = tolerances::kAgreementRelative;  ///< relative to our diagonal
 };
 
@@ -54,6 +60,7 @@ struct SchemeReferenceRun {
     DivergenceClass divergence_class = DivergenceClass::None;
     std::string explanation;  ///< one sentence with the measured figures
     double max_rel_with_reference_rule = NAN;  ///< core re-run with the reference's rule
+    double hausdorff_rel = NAN;  ///< geometric tier: vertex-set Hausdorff distance / our diagonal
 };
 
 struct SchemeComparison {
@@ -61,6 +68,8 @@ struct SchemeComparison {
     Scheme scheme = Scheme::CatmullClark;
     std::string rule;  ///< our requested rule
     int levels = 0;
+    Tier tier = Tier::Weak;
+    double tolerance = NAN;
     int input_vertices = 0, input_faces = 0;
     double core_seconds = 0;
     std::string core_error;  ///< non-empty: core refused the input (the message)

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "crossdiv/mesh/poly_mesh.h"
+#include "crossdiv/subdiv/nonmanifold_rule.h"
 #include "crossdiv/verification/implementations/scheme.h"
 
 namespace crossdiv::verification {
@@ -29,5 +30,24 @@ struct TagRules {
 ///         boundary rules, when no flag names the rule; for `none` on such a scheme; and
 ///         for a mesh `none` cannot tag (build_poly_connectivity's errors).
 TagRules resolve_tag_rules(Scheme scheme, const std::string& boundary_flag, PolyMesh& mesh);
+
+/// The crease decay a run uses: `flag` ("uniform" or "chaikin") when given, else the input's
+/// `t creasemethod` tag, else uniform (OpenSubdiv's default).
+/// @throws InputError for another flag.
+CreaseMethod crease_method(const std::string& flag, const PolyMesh& mesh);
+
+/// What a command's flags or a manifest case's keys say of a polygon scheme's rule; an empty
+/// name leaves it to the file's tags, then to the default.
+struct RuleFlags {
+    std::string boundary;  ///< rule_from_boundary_name's names
+    std::string creasing;  ///< crease_method's flag
+    NonManifoldRule nonmanifold = NonManifoldRule::OpenSubdiv;
+};
+
+/// The rule a run uses on `mesh`: the flags, the file's tags where no flag is given
+/// (resolve_tag_rules; `none` tags the boundary faces of `mesh` as holes), and the notes to
+/// show the user.
+/// @throws InputError as resolve_tag_rules, rule_from_boundary_name and crease_method.
+SchemeRule rule_with_tags(Scheme scheme, const RuleFlags& flags, PolyMesh& mesh, std::vector<std::string>& notes);
 
 }  // namespace crossdiv::verification

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "crossdiv/verification/comparisons/loop_comparison.h"
+#include "crossdiv/verification/comparisons/scheme_comparison.h"
 #include "crossdiv/verification/harness/verdict.h"
 #include "crossdiv/verification/properties/check.h"
 
@@ -47,7 +48,8 @@ struct CaseRecord {
     std::string id;         ///< "input | operation and its keys"
     int manifest_line = 0;
     std::string input, operation;
-    /// The keys of a Loop comparison case (empty / 0 / NaN otherwise).
+    /// The keys of a refinement comparison case (empty / 0 / NaN otherwise): Loop's weights
+    /// and boundary rule, or another scheme's rule (its boundary option's name) in `boundary`.
     std::string weights, boundary, tier;
     int levels = 0;
     double tolerance = NAN;
@@ -68,6 +70,8 @@ bool is_failure(const CaseRecord& c, const RunRecord& r);
 
 /// A Loop comparison as a case (the job's identity is filled in by the runner).
 CaseRecord case_record(const LoopComparison& comparison);
+/// A comparison of another scheme as a case, under the operation named after the scheme.
+CaseRecord case_record(const SchemeComparison& comparison);
 /// The checks of one input (curves, surfaces, a study) as a case.
 CaseRecord case_record(const CheckReport& report);
 /// A job that made no result: core refused the input (`ours_failed` false) or failed.

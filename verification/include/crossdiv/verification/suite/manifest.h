@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "crossdiv/verification/comparisons/loop_comparison.h"
+#include "crossdiv/verification/comparisons/scheme_comparison.h"
+#include "crossdiv/verification/implementations/tag_rules.h"
 #include "crossdiv/verification/harness/output_size.h"
 #include "crossdiv/verification/implementations/program_implementation.h"
 
@@ -35,9 +37,13 @@ struct ManifestEntry {
     std::vector<std::string> inputs;   ///< as the operation's expand() accepts them (collections allowed)
     const SuiteOperation* operation = nullptr;
     LoopComparisonRequest request;     ///< loop: rules, levels, references, tier, tolerance
+    /// Another scheme's comparison: levels, references, tier, tolerance; its rule is resolved
+    /// per input from `rule_flags` and the input's tags (rule_with_tags).
+    SchemeRequest scheme_request;
+    RuleFlags rule_flags;              ///< another scheme's boundary= and crease-method= keys
     /// The implementation under test (the last `subject` statement before the case); none: core.
     std::shared_ptr<const ManifestSubject> subject;
-    /// loop: a job whose final level would have more faces is refused before any work
+    /// A comparison: a job whose final level would have more faces is refused before any work
     /// (the manifest's `max-faces` statement; harness/output_size.h).
     long long max_faces = kMaxComparedFaces;
 };

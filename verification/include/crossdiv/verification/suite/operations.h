@@ -4,12 +4,13 @@
 /// expands its inputs and turns one job into a typed CaseRecord.
 ///
 ///   loop             core against every reference on a mesh, under the case's rules and tier
+///   catmull-clark, doo-sabin, sqrt3, butterfly, modified-butterfly
+///                    the same for each other scheme: core against every reference that has it
 ///   curves           a curve file (or the synthetic studies) against Eigen and exact properties
 ///   surfaces         a surface file (or the studies) built and checked as closed surfaces
 ///   edits            a mesh: seeded flip and split sequences against OpenMesh and CGAL
 ///   normals          a mesh: vertex normals against OpenMesh's and CGAL's, the angle oracle
-///   catmull-clark    Catmull-Clark against its references on the catalog, both OpenSubdiv rules
-///   schemes          Doo-Sabin, sqrt3, modified Butterfly against theirs; Butterfly properties
+///   schemes          the Butterfly properties and the rule oracles of Doo-Sabin, sqrt3, the Butterflies
 ///   creases          the crease catalog against OpenSubdiv, and the crease-cube figure
 ///   limit-positions  limit positions and normals against OpenSubdiv's Limit(), and Bfr at (u, v)
 ///   vertex-age       the level each vertex was born at, every scheme, against the topology
@@ -24,12 +25,13 @@
 
 #include "crossdiv/verification/suite/case_record.h"
 #include "crossdiv/verification/suite/manifest.h"
+#include "crossdiv/verification/implementations/scheme.h"
 
 namespace crossdiv::verification {
 
 /// How an operation's records read.
 enum class OperationKind {
-    Comparison,  ///< one run per reference (loop); takes rule keys
+    Comparison,  ///< one run per reference (a scheme's refinement); takes rule keys
     Checks,      ///< one run per measured check of an input file (curves, surfaces)
     Study,       ///< one job over a fixed catalog, measured checks and tables
 };
@@ -44,6 +46,7 @@ struct SuiteOperation {
     /// Runs one job; core's refusal of an input is recorded, not thrown.
     /// @param out_dir where side files (error fields) go.
     CaseRecord (*run)(const SuiteJob& job, const std::string& out_dir);
+    Scheme scheme = Scheme::Loop;  ///< a comparison's scheme
 };
 
 /// Every operation, in the order above.
