@@ -5,12 +5,14 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <optional>
 #include <string>
 
 #include "crossdiv/mesh/mesh_checks.h"
 #include "crossdiv/mesh/poly_mesh.h"
 #include "crossdiv/subdiv/catmull_clark.h"
+#include "crossdiv/subdiv/catmull_clark_streaming.h"
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/subdiv/loop_streaming.h"
 #include "fuzz_input.h"
@@ -48,10 +50,42 @@ inline void streaming_matches_ring_walk(const PolyMesh& mesh) {
     }
 }
 
+/// The streaming Catmull-Clark driver makes what the stencil driver makes, bit for bit, or
+/// refuses with the same message (catmull_clark_streaming.h); a difference aborts.
+inline void streaming_matches_stencils(const PolyMesh& mesh) {
+    const CatmullClarkOptions o{CatmullClarkBoundary::EdgeAndCorner};
+    std::optional<PolyMesh> stencils, stream;
+    std::string stencil_refusal, stream_refusal;
+    try {
+        stencils = catmull_clark_subdivide(mesh, o, 2);
+    } catch (const InputError& e) {
+        stencil_refusal = e.what();
+    }
+    try {
+        stream = catmull_clark_subdivide_streaming(mesh, o, 2);
+    } catch (const InputError& e) {
+        stream_refusal = e.what();
+    }
+    // Bits, not values: a NaN color (the positions are checked finite) is the same NaN.
+    const auto same_bits = [](const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+        return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3)) == 0);
+    };
+    const bool same = stencils ? stream && stream->face_vertices == stencils->face_vertices &&
+                                     same_bits(stream->positions, stencils->positions) &&
+                                     same_bits(stream->colors, stencils->colors)
+                               : !stream && stream_refusal == stencil_refusal;
+    if (!same) {
+        std::fprintf(stderr, "streaming Catmull-Clark %s where the stencil driver %s\n",
+                     stream ? "refined" : stream_refusal.c_str(), stencils ? "refined" : stencil_refusal.c_str());
+        std::abort();
+    }
+}
+
 inline void refine_what_parses(const PolyMesh& mesh) {
     (void)check_mesh(mesh);
     if (mesh.face_vertices.size() > kMaxRefinedCorners) return;
     refuse_or_answer([&] { (void)catmull_clark_subdivide(mesh, {CatmullClarkBoundary::EdgeAndCorner}, 2); });
+    streaming_matches_stencils(mesh);
     refuse_or_answer([&] { (void)loop_subdivide(mesh, {LoopWeights::Loop, LoopBoundary::EdgeOnly}, 2); });
     streaming_matches_ring_walk(mesh);
 }

@@ -11,9 +11,9 @@
 namespace crossdiv {
 namespace {
 
-constexpr CatmullClarkOptions kEdgeOnly{CatmullClarkBoundary::EdgeOnly};
-constexpr CatmullClarkOptions kEdgeAndCorner{CatmullClarkBoundary::EdgeAndCorner};
-constexpr CatmullClarkOptions kMidpointAverage{CatmullClarkBoundary::MidpointAverage};
+using test::kEdgeAndCorner;
+using test::kEdgeOnly;
+using test::kMidpointAverage;
 
 using test::cube;
 using test::square;

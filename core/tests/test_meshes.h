@@ -4,8 +4,14 @@
 #include <array>
 
 #include "crossdiv/mesh/poly_mesh.h"
+#include "crossdiv/subdiv/catmull_clark_mask.h"
 
 namespace crossdiv::test {
+
+/// Catmull-Clark's boundary rules, as the tests name them.
+inline constexpr CatmullClarkOptions kEdgeOnly{CatmullClarkBoundary::EdgeOnly};
+inline constexpr CatmullClarkOptions kEdgeAndCorner{CatmullClarkBoundary::EdgeAndCorner};
+inline constexpr CatmullClarkOptions kMidpointAverage{CatmullClarkBoundary::MidpointAverage};
 
 /// The cube [-1, 1]^3 as six outward quads; vertex i = (+-1, +-1, +-1) by the bits of i,
 /// every vertex of valence 3.

@@ -170,23 +170,27 @@ def error_pictures(mesh_cases, folder, figdir):
 
 
 def timing(records, figdir):
-    """Log-log time against output size for every implementation, warm solid and cold dashed
-    (the same colour per implementation)."""
-    fig, ax = plt.subplots(figsize=(7, 4.5))
-    for i, impl in enumerate(dict.fromkeys(r["impl"] for r in records)):
-        for memory, style in (("warm", "-"), ("cold", "--")):
-            rows = sorted((r for r in records if r["impl"] == impl and r.get("memory", "warm") == memory
-                           and r.get("status", "ok") == "ok"), key=lambda r: r["output_faces"])
-            if rows:
-                ax.plot([r["output_faces"] for r in rows], [r["median_ms"] for r in rows], style, marker="o",
-                        color=f"C{i}", label=f"{impl} ({memory})")
-    ax.set_xscale("log")
-    ax.set_yscale("log")
-    ax.set_xlabel("output faces")
-    ax.set_ylabel("median time (ms)")
-    ax.set_title("Loop subdivision time against output size (single thread)", fontsize=9)
-    ax.legend()
-    ax.grid(True, which="both", alpha=0.3)
+    """Log-log time against output size for every implementation, one panel per scheme, warm
+    solid and cold dashed (the same colour per implementation)."""
+    schemes = list(dict.fromkeys(r.get("scheme", "loop") for r in records))
+    fig, axes = plt.subplots(1, len(schemes), figsize=(7 * len(schemes), 4.5), squeeze=False)
+    impls = list(dict.fromkeys(r["impl"] for r in records))
+    for ax, scheme in zip(axes[0], schemes):
+        for i, impl in enumerate(impls):
+            for memory, style in (("warm", "-"), ("cold", "--")):
+                rows = sorted((r for r in records if r["impl"] == impl and r.get("scheme", "loop") == scheme
+                               and r.get("memory", "warm") == memory and r.get("status", "ok") == "ok"),
+                              key=lambda r: r["output_faces"])
+                if rows:
+                    ax.plot([r["output_faces"] for r in rows], [r["median_ms"] for r in rows], style, marker="o",
+                            color=f"C{i}", label=f"{impl} ({memory})")
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("output faces")
+        ax.set_ylabel("median time (ms)")
+        ax.set_title(f"{scheme} subdivision time against output size (single thread)", fontsize=9)
+        ax.legend(fontsize=7)
+        ax.grid(True, which="both", alpha=0.3)
     return save(fig, figdir, "timing.png")
 
 

@@ -543,27 +543,28 @@ def timing_section(bench, figdir):
         return s.add(Text("No bench.json in this folder: run `crossdiv bench --out DIR` to add the timing section."))
     if records:
         def key(r):
-            return r["input"], r["levels"], r.get("memory", "warm")
+            return r.get("scheme", "loop"), r["input"], r["levels"], r.get("memory", "warm")
         core = {key(r): r["median_ms"] for r in records if r["impl"] == "core"}
         s.add(Text(f"`crossdiv bench`: median of {bench.get('repeats', '?')} runs, single thread, ratio = time / core time on "
                    f"the same input in the same memory regime (above 1: slower than core); warm keeps freed memory between "
                    f"repeats, cold returns it to the kernel (page faults paid). {bench.get('note', '')}"),
               Figure(figures.timing(records, figdir), "timing"),
-              Table(["input", "levels", "memory", "impl", "input faces", "output faces", "median ms", "ratio to core",
-                     "peak RSS MB"],
-                    [(r["input"], r["levels"], r.get("memory", "warm"), r["impl"], r["input_faces"], r["output_faces"],
+              Table(["scheme", "input", "levels", "memory", "impl", "input faces", "output faces", "median ms",
+                     "ratio to core", "peak RSS MB"],
+                    [(r.get("scheme", "loop"), r["input"], r["levels"], r.get("memory", "warm"), r["impl"], r["input_faces"],
+                      r["output_faces"],
                       fmt(r["median_ms"], ".2f"), fmt(r["median_ms"] / core[key(r)], ".2f") if core.get(key(r)) else "-",
                       fmt(r.get("peak_rss_mb"), ".0f")) for r in records]))
         goals = bench.get("goals") or []
         if goals:
             bw = bench.get("bandwidth") or {}
-            s.add(Text(f"Goals, at every input of at least 300000 output faces: warm, core at least 4x faster than the "
-                       f"fastest reference; cold, no slower. The floor is the output's bytes (24 per vertex, 12 per "
-                       f"triangle) written at the write bandwidth measured in the same run "
-                       f"({fmt(bw.get('write_gbs'), '.1f')} GB/s; copy {fmt(bw.get('copy_gbs'), '.1f')} GB/s)."),
-                  Table(["input", "levels", "memory", "output faces", "core ms", "fastest reference", "its ms", "ratio",
-                         "target", "floor ms", "core / floor", "goal"],
-                        [(g["input"], g["levels"], g["memory"], g["output_faces"], fmt(g["core_ms"], ".2f"),
+            s.add(Text(f"Goals, for Loop and Catmull-Clark at every input of at least 300000 output faces: warm, core "
+                       f"at least 4x faster than the fastest reference; cold, no slower. The floor is the output's bytes "
+                       f"(24 per vertex, 12 per triangle or 16 per quad) written at the write bandwidth measured in the "
+                       f"same run ({fmt(bw.get('write_gbs'), '.1f')} GB/s; copy {fmt(bw.get('copy_gbs'), '.1f')} GB/s)."),
+                  Table(["scheme", "input", "levels", "memory", "output faces", "core ms", "fastest reference", "its ms",
+                         "ratio", "target", "floor ms", "core / floor", "goal"],
+                        [(g.get("scheme", "loop"), g["input"], g["levels"], g["memory"], g["output_faces"], fmt(g["core_ms"], ".2f"),
                           g["fastest_reference"], fmt(g["fastest_reference_ms"], ".2f"), fmt(g["ratio"], ".2f"),
                           fmt(g["target_ratio"], ".0f"), fmt(g.get("floor_ms"), ".2f"), fmt(g.get("core_over_floor"), ".1f"),
                           "met" if g["met"] else "NOT met") for g in goals]))

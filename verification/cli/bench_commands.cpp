@@ -1,4 +1,4 @@
-// The bench subcommand of the crossdiv CLI: core Loop against the references side by side,
+// The bench subcommand of the crossdiv CLI: core Loop and Catmull-Clark against the references side by side,
 // the curve tessellation and evaluation tables, the adaptive sweep.
 #include "bench_commands.h"
 
@@ -52,7 +52,7 @@ nlohmann::json print_valence_bench(const std::vector<int>& valences, int repeats
 }
 
 /// The sections `crossdiv bench` runs, each by name.
-inline constexpr const char* kBenchSections[] = {"loop", "valence", "stencils", "curves", "sweep"};
+inline constexpr const char* kBenchSections[] = {"loop", "catmull-clark", "valence", "stencils", "curves", "sweep"};
 
 struct BenchArgs {
     std::string json, out;
@@ -66,10 +66,10 @@ struct BenchArgs {
         app.add_option("--repeats", repeats, "Timed runs per measurement")->check(CLI::Range(1, 64))->capture_default_str();
         app.add_flag("--quick", quick, "Two mesh sizes only (320 and 20000 faces), valence 1000 only");
         CLI::Option* c = app.add_flag(
-            "--cold", cold, "Loop rows cold only: freed memory returned to the kernel between repeats (page faults counted)");
-        app.add_flag("--warm", warm, "Loop rows warm only: freed memory kept between repeats (by default both, in turn)")
+            "--cold", cold, "Loop and Catmull-Clark rows cold only: freed memory returned to the kernel between repeats (page faults counted)");
+        app.add_flag("--warm", warm, "Loop and Catmull-Clark rows warm only: freed memory kept between repeats (by default both, in turn)")
             ->excludes(c);
-        app.add_option("--only", only, "Run only these sections (loop, valence, stencils, curves, sweep)")
+        app.add_option("--only", only, "Run only these sections (loop, catmull-clark, valence, stencils, curves, sweep)")
             ->check(CLI::IsMember(std::vector<std::string>(std::begin(kBenchSections), std::end(kBenchSections))));
         app.add_option("--valences", valences, "The valence rows' valences (default 1000 10000 100000)")
             ->check(CLI::Range(3, 10000000));
@@ -117,23 +117,22 @@ nlohmann::json print_stencil_bench(bool quick, int repeats) {
 #endif
 }
 
-/// The Loop rows: core against each reference on tori of growing size, warm and cold; the goal
-/// at every size of at least kBenchGoalMinFaces output faces; and the floor that memory
-/// bandwidth sets (the output's bytes written at the write bandwidth measured in this run).
-nlohmann::json print_loop_bench(const BenchArgs& a, nlohmann::json& goals_json, nlohmann::json& bandwidth_json) {
-    const LoopOptions options{LoopWeights::Loop, LoopBoundary::EdgeOnly};
-    const std::vector<BenchInput> inputs = default_bench_inputs(a.quick);
+/// One scheme's rows: core against each reference on meshes of growing size, warm and cold.
+std::vector<BenchRecord> print_scheme_rows(const BenchArgs& a, Scheme scheme) {
+    const bool loop = scheme == Scheme::Loop;
+    const std::vector<BenchInput> inputs = loop ? default_bench_inputs(a.quick) : default_catmull_clark_bench_inputs(a.quick);
     std::vector<bool> regimes;  // cold?
     if (!a.cold) regimes.push_back(false);
     if (!a.warm) regimes.push_back(true);
     std::vector<BenchRecord> records;
     for (bool cold : regimes) {
-        fmt::print("Loop (weights=loop boundary=edge-only), single thread, median of {} runs after one warm-up{}\n", a.repeats,
+        fmt::print("{}, single thread, median of {} runs after one warm-up{}\n",
+                   loop ? "Loop (weights=loop boundary=edge-only)" : "Catmull-Clark (boundary=edge-only)", a.repeats,
                    cold ? ", freed memory returned to the kernel (cold)" : ", freed memory kept (warm)");
         fmt::print("{:<12} {:>6} {:<11} {:>11} {:>12} {:>10} {:>9} {:>8}\n", "input", "levels", "impl", "input faces",
                    "output faces", "median ms", "x core", "RSS MB");
         for (const BenchInput& in : inputs) {
-            std::vector<BenchRecord> r = run_bench({in}, options, a.repeats, cold);
+            std::vector<BenchRecord> r = run_bench({in}, SchemeRule{}, a.repeats, cold);
             const double core_ms = r.front().median_ms;
             for (const BenchRecord& b : r) {
                 if (b.status != "ok")
@@ -147,6 +146,19 @@ nlohmann::json print_loop_bench(const BenchArgs& a, nlohmann::json& goals_json, 
         }
         fmt::print("\n");
     }
+    return records;
+}
+
+/// The refinement rows of Loop and Catmull-Clark (the sections asked for), the goal at every
+/// size of at least kBenchGoalMinFaces output faces, and the floor that memory bandwidth sets
+/// (the output's bytes written at the write bandwidth measured in this run).
+nlohmann::json print_refinement_bench(const BenchArgs& a, nlohmann::json& goals_json, nlohmann::json& bandwidth_json) {
+    std::vector<BenchRecord> records;
+    for (Scheme scheme : {Scheme::Loop, Scheme::CatmullClark}) {
+        if (!a.runs(to_string(scheme))) continue;
+        const std::vector<BenchRecord> r = print_scheme_rows(a, scheme);
+        records.insert(records.end(), r.begin(), r.end());
+    }
     const Bandwidth bw = measure_bandwidth(a.repeats);
     bandwidth_json = {{"write_gbs", bw.write_gbs}, {"copy_gbs", bw.copy_gbs}, {"buffer_bytes", bw.buffer_bytes}};
     fmt::print("memory bandwidth here: write {:.1f} GB/s, copy {:.1f} GB/s (best of {} passes over {} MiB)\n", bw.write_gbs,
@@ -154,11 +166,12 @@ nlohmann::json print_loop_bench(const BenchArgs& a, nlohmann::json& goals_json, 
     goals_json = nlohmann::json::array();
     for (const BenchGoal& g : bench_goals(records)) {
         // The floor: writing the output once at the measured write bandwidth.
-        const double floor_ms = loop_output_bytes(g.output_faces) / (bw.write_gbs * 1e9) * 1e3;
-        fmt::print("goal ({}): core {:.2f}x faster than the fastest reference ({}) on {} at {} levels ({} output faces, "
+        const double bytes = g.scheme == "loop" ? loop_output_bytes(g.output_faces) : catmull_clark_output_bytes(g.output_faces);
+        const double floor_ms = bytes / (bw.write_gbs * 1e9) * 1e3;
+        fmt::print("goal ({} {}): core {:.2f}x faster than the fastest reference ({}) on {} at {} levels ({} output faces, "
                    "core {:.2f} ms, peak RSS {:.0f} MB): {} (target {}x); bandwidth floor {:.2f} ms, core {:.1f}x above it\n",
-                   g.memory, g.ratio, g.fastest_reference, g.input, g.levels, g.output_faces, g.core_ms, g.core_peak_rss_mb,
-                   g.met() ? "met" : "NOT met", g.target, floor_ms, g.core_ms / floor_ms);
+                   g.scheme, g.memory, g.ratio, g.fastest_reference, g.input, g.levels, g.output_faces, g.core_ms,
+                   g.core_peak_rss_mb, g.met() ? "met" : "NOT met", g.target, floor_ms, g.core_ms / floor_ms);
         nlohmann::json j = to_json(g);
         j["floor_ms"] = floor_ms;
         j["core_over_floor"] = g.core_ms / floor_ms;
@@ -173,7 +186,8 @@ nlohmann::json print_loop_bench(const BenchArgs& a, nlohmann::json& goals_json, 
 int bench_command(const BenchArgs& a) {
     nlohmann::json goals, bandwidth;
     const nlohmann::json null;
-    const nlohmann::json loop = a.runs("loop") ? print_loop_bench(a, goals, bandwidth) : null;
+    const nlohmann::json loop =
+        a.runs("loop") || a.runs("catmull-clark") ? print_refinement_bench(a, goals, bandwidth) : null;
     std::vector<int> valences = a.valences;
     if (valences.empty()) valences.assign(std::begin(kBenchValences), a.quick ? std::begin(kBenchValences) + 1 : std::end(kBenchValences));
     const nlohmann::json valence = a.runs("valence") ? print_valence_bench(valences, a.repeats) : null;
@@ -185,8 +199,8 @@ int bench_command(const BenchArgs& a) {
                                 {"curves", curves.is_null() ? null : curves["tessellation"]},
                                 {"curve_timing", curves.is_null() ? null : curves["timing"]},
                                 {"flattening_goal", curves.is_null() ? null : curves["goal"]}, {"adaptive_sweep", surfaces},
-                                {"note", "references timed through their native refinement (loop_native), output kept "
-                                         "in the library's own structures"}};
+                                {"note", "references timed through their native refinement (loop_native, catmull_clark_native), "
+                                         "output kept in the library's own structures"}};
     std::vector<std::string> paths;
     if (!a.json.empty()) paths.push_back(a.json);
     if (!a.out.empty()) paths.push_back((std::filesystem::path(a.out) / "bench.json").string());
@@ -204,7 +218,7 @@ int bench_command(const BenchArgs& a) {
 }  // namespace
 
 void add_bench_command(CLI::App& app, int& status) {
-    add_command<BenchArgs>(app, "bench", "Time core Loop against the references side by side (ratios, memory)", status,
+    add_command<BenchArgs>(app, "bench", "Time core Loop and Catmull-Clark against the references side by side (ratios, memory)", status,
                            bench_command);
 }
 

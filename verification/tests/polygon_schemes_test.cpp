@@ -9,7 +9,10 @@
 #include "crossdiv/verification/implementations/callback_implementation.h"
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/mesh/poly_connectivity.h"
+#include "crossdiv/subdiv/catmull_clark.h"
+#include "crossdiv/subdiv/catmull_clark_streaming.h"
 #include "crossdiv/subdiv/sqrt3.h"
+#include "crossdiv/verification/harness/inputs.h"
 #include "crossdiv/verification/properties/butterfly_properties.h"
 #include "crossdiv/verification/harness/correspondence.h"
 #include "crossdiv/verification/comparisons/scheme_comparison.h"
@@ -33,6 +36,46 @@ int max_valence(const PolyMesh& m) {
 // sit on one another's places (here every pair's positions swapped, as a wrong weight that
 // moves vertices far can do) breaks the match with every count equal: unexplained, a failure.
 // A reference that drops a face changes the counts: topology.
+// The streaming Catmull-Clark driver (what core runs and the bench times) against the stencil
+// driver on every input the suite has: every bundled, polygon, edge-case, CGAL and course mesh,
+// every boundary rule, 1 to 3 levels: the same faces and the same bits, or the same refusal.
+TEST(CatmullClarkStreaming, IsTheStencilDriverBitForBitOnEveryInput) {
+    int compared = 0, refused = 0;
+    for (const std::string& in : expand_inputs({"bundled:all", "polygons:all", "edgecases:all", "polygon-edgecases:all",
+                                                 "cgal:all", "course:all"})) {
+        const PolyMesh mesh = load_input(in);
+        for (CatmullClarkBoundary b :
+             {CatmullClarkBoundary::EdgeOnly, CatmullClarkBoundary::EdgeAndCorner, CatmullClarkBoundary::MidpointAverage})
+            for (int levels = 1; levels <= (mesh.num_faces() > 2000 ? 1 : 3); ++levels) {
+                const CatmullClarkOptions o{b};
+                std::string streaming_error, stencil_error;
+                PolyMesh a, r;
+                try {
+                    a = catmull_clark_subdivide_streaming(mesh, o, levels);
+                } catch (const InputError& e) {
+                    streaming_error = e.what();
+                }
+                try {
+                    r = catmull_clark_subdivide(mesh, o, levels);
+                } catch (const InputError& e) {
+                    stencil_error = e.what();
+                }
+                ASSERT_EQ(streaming_error, stencil_error) << in;
+                if (!stencil_error.empty()) {
+                    ++refused;
+                    continue;
+                }
+                ++compared;
+                ASSERT_EQ(a.face_vertices, r.face_vertices) << in << " L" << levels;
+                ASSERT_EQ(a.face_start, r.face_start) << in;
+                ASSERT_EQ(a.positions, r.positions) << in << " " << to_string(b) << " L" << levels;
+                ASSERT_EQ(a.colors, r.colors) << in;
+            }
+    }
+    EXPECT_GT(compared, 300);
+    EXPECT_GT(refused, 0);  // the edge cases no rule refines
+}
+
 TEST(DooSabinComparison, OnlyAMeasuredTopologyDifferenceIsClassifiedTopology) {
     register_reference(make_callback_implementation("swapped-doo-sabin", {Scheme::DooSabin},
                                                     [](const PolyMesh& mesh, const RefineRequest& request) {

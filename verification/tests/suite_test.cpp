@@ -535,16 +535,29 @@ TEST(Shrink, APolygonSubmeshKeepsTheTagsOfWhatItKeeps) {
 }
 
 TEST(Bench, EveryImplementationMakesTheSameOutputSize) {
-    const std::vector<BenchInput> in = {{"octahedron", to_tri_mesh(datasets::bundled_mesh("octahedron"), "t"), 2}};
-    const auto records = run_bench(in, {LoopWeights::Loop, LoopBoundary::EdgeOnly}, 1, false);
+    const std::vector<BenchInput> in = {
+        {"octahedron", to_tri_mesh(datasets::bundled_mesh("octahedron"), "t"), 2, Scheme::Loop, PolyMesh{}}};
+    const auto records = run_bench(in, SchemeRule{}, 1, false);  // Loop's weights, edge-only
     ASSERT_EQ(records.size(), 1 + references_for(Scheme::Loop).size());
     EXPECT_EQ(records[0].impl, "core");
     for (const BenchRecord& r : records) {
         EXPECT_EQ(r.status, "ok") << r.impl;
+        EXPECT_EQ(r.scheme, "loop");
         EXPECT_EQ(r.output_faces, 8 * 16) << r.impl;
         EXPECT_EQ(r.repeats, 1);
         EXPECT_GT(r.peak_rss_mb, 0);
         EXPECT_LE(r.min_ms, r.median_ms);
+    }
+    // Catmull-Clark on a quad mesh, every reference that has it in its own structures.
+    const std::vector<BenchInput> quads = {
+        {"quad-torus", TriMesh{}, 2, Scheme::CatmullClark, datasets::bundled_mesh("quad-torus")}};
+    const auto cc = run_bench(quads, SchemeRule{}, 1, false);
+    ASSERT_EQ(cc.size(), 1 + references_for(Scheme::CatmullClark).size());
+    for (const BenchRecord& r : cc) {
+        EXPECT_EQ(r.status, "ok") << r.impl;
+        EXPECT_EQ(r.scheme, "catmull-clark");
+        EXPECT_EQ(r.input_faces, 96);
+        EXPECT_EQ(r.output_faces, 96 * 16) << r.impl;
     }
 }
 

@@ -99,6 +99,12 @@ LevelTrace catmull_clark(const PolyMesh& mesh, int levels) {
     });
 }
 
+size_t catmull_clark_native(const PolyMesh& mesh, int levels) {
+    Mesh m = build_polygons(mesh);
+    CGAL::Subdivision_method_3::CatmullClark_subdivision(m, CGAL::parameters::number_of_iterations(levels));
+    return m.number_of_faces();
+}
+
 LevelTrace doo_sabin(const PolyMesh& mesh, int levels) {
     return per_level(build_polygons(mesh), levels, [](Mesh& m, int n) {
         CGAL::Subdivision_method_3::DooSabin_subdivision(m, CGAL::parameters::number_of_iterations(n));

@@ -52,6 +52,15 @@ LevelTrace catmull_clark(const PolyMesh& mesh, int levels) {
     return per_level<OpenMesh::Subdivider::Uniform::CatmullClarkT<Poly>>(to_poly(mesh), levels);
 }
 
+size_t catmull_clark_native(const PolyMesh& mesh, int levels) {
+    Poly m = to_poly(mesh);
+    OpenMesh::Subdivider::Uniform::CatmullClarkT<Poly> sub;
+    sub.attach(m);
+    sub(static_cast<size_t>(levels));
+    sub.detach();
+    return m.n_faces();
+}
+
 LevelTrace sqrt3(const TriMesh& mesh, int levels, bool one_call) {
     using Sqrt3 = OpenMesh::Subdivider::Uniform::Sqrt3T<detail::Mesh>;
     detail::Mesh base = detail::to_openmesh(mesh);

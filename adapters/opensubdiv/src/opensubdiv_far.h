@@ -122,6 +122,20 @@ inline PolyMesh level_mesh(const Far::TopologyLevel& level, const Point3* points
     return m;
 }
 
+/// The refiner's last level, positions interpolated level by level in double into one buffer
+/// and kept there (the native refinements `crossdiv bench` times); its face count.
+inline size_t interpolate_native(const Far::TopologyRefiner& refiner, const std::vector<Vec3>& positions) {
+    std::vector<Point3> points = base_points(refiner, positions);
+    Far::PrimvarRefinerReal<double> primvar(refiner);
+    Point3* src = points.data();
+    for (int level = 1; level <= refiner.GetMaxLevel(); ++level) {
+        Point3* dst = src + refiner.GetLevel(level - 1).GetNumVertices();
+        primvar.Interpolate(level, src, dst);
+        src = dst;
+    }
+    return static_cast<size_t>(refiner.GetLevel(refiner.GetMaxLevel()).GetNumFaces());
+}
+
 /// Every level of a refined refiner, positions interpolated level by level in double.
 inline LevelTrace interpolate_trace(const Far::TopologyRefiner& refiner, const std::vector<Vec3>& positions,
                                     std::vector<Point3>* all_points = nullptr) {

@@ -46,16 +46,7 @@ LevelTrace loop(const TriMesh& mesh, const LoopOptions& options, int levels) {
 }
 
 size_t loop_native(const TriMesh& mesh, const LoopOptions& options, int levels) {
-    const std::unique_ptr<Far::TopologyRefiner> refiner = refine_topology(mesh, options, levels, false);
-    std::vector<Point3> points = base_points(*refiner, mesh.positions);
-    Far::PrimvarRefinerReal<double> primvar(*refiner);
-    Point3* src = points.data();
-    for (int level = 1; level <= levels; ++level) {
-        Point3* dst = src + refiner->GetLevel(level - 1).GetNumVertices();
-        primvar.Interpolate(level, src, dst);
-        src = dst;
-    }
-    return static_cast<size_t>(refiner->GetLevel(levels).GetNumFaces());
+    return interpolate_native(*refine_topology(mesh, options, levels, false), mesh.positions);
 }
 
 struct LoopFrames::Impl {

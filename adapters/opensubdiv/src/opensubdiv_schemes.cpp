@@ -65,6 +65,12 @@ LevelTrace catmull_clark(const PolyMesh& mesh, const CatmullClarkOptions& option
     return interpolate_trace(*refiner, mesh.positions);
 }
 
+size_t catmull_clark_native(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels) {
+    std::unique_ptr<Far::TopologyRefiner> refiner = make_refiner(mesh, Sdc::SCHEME_CATMARK, catmark_options(options));
+    refine_uniform(*refiner, levels, false);
+    return interpolate_native(*refiner, mesh.positions);
+}
+
 std::vector<int> boundary_none_holes(const PolyMesh& mesh, bool loop) {
     Sdc::Options sdc = sdc_options(false, mesh.creases.method.value_or(CreaseMethod::Uniform));
     sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_NONE);

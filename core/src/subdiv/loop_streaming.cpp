@@ -13,6 +13,7 @@
 #include "crossdiv/error.h"
 #include "crossdiv/subdiv/loop.h"
 #include "finite_level.h"
+#include "stream_twins.h"
 
 namespace crossdiv {
 namespace {
@@ -69,30 +70,8 @@ std::optional<StreamTopology> stream_input(const TriMesh& mesh) {
             key[3 * i + j] = 2 * std::max(a, b) + (a < b);
         }
     }
-    // Half-edges by their lesser end.
-    std::vector<int> start(static_cast<size_t>(nv) + 1, 0), order(static_cast<size_t>(nh));
-    for (int h = 0; h < nh; ++h) ++start[lesser[h] + 1];
-    for (int v = 0; v < nv; ++v) start[v + 1] += start[v];
-    {
-        std::vector<int> fill(start.begin(), start.end() - 1);
-        for (int h = 0; h < nh; ++h) order[fill[lesser[h]]++] = h;
-    }
-    // Twins: in a bucket, the half-edges with the same greater end; one each way, or one alone.
-    std::vector<int> twin(static_cast<size_t>(nh), -1), stamp(static_cast<size_t>(nv), -1), first(static_cast<size_t>(nv));
-    for (int lo = 0; lo < nv; ++lo)
-        for (int k = start[lo]; k < start[lo + 1]; ++k) {
-            const int h = order[k], hi = key[h] >> 1;
-            if (stamp[hi] != lo) {
-                stamp[hi] = lo;
-                first[hi] = h;
-                continue;
-            }
-            const int g = first[hi];
-            if (g < 0 || key[g] == key[h]) return std::nullopt;  // a third face, or two the same way
-            twin[g] = h;
-            twin[h] = g;
-            first[hi] = -1;  // taken: one more half-edge on this edge is a fault
-        }
+    std::vector<int> twin(static_cast<size_t>(nh), -1);
+    if (!detail::stream_twins(nv, lesser, key, twin)) return std::nullopt;
     // Every vertex's corners in one fan: walk forward (across each outgoing edge) from the
     // first unvisited corner and, on a boundary, backward too; a second walk at a vertex is a
     // second fan (a bowtie). Corner c's outgoing half-edge is c itself; its incoming one is the

@@ -13,6 +13,8 @@
 
 #include "crossdiv/adapters/reference.h"
 #include "crossdiv/datasets/edge_cases.h"
+#include "crossdiv/mesh/poly_connectivity.h"
+#include "crossdiv/subdiv/catmull_clark.h"
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/verification/implementations/registry.h"
 
@@ -92,15 +94,20 @@ BenchRecord time_in_child(const Refine& refine, int repeats, bool cold) {
 
 }  // namespace
 
-std::vector<BenchRecord> run_bench(const std::vector<BenchInput>& inputs, const LoopOptions& options, int repeats,
-                                   bool cold) {
+std::vector<BenchRecord> run_bench(const std::vector<BenchInput>& inputs, const SchemeRule& rule, int repeats, bool cold) {
     std::vector<BenchRecord> out;
     for (const BenchInput& in : inputs) {
-        RefineRequest request{Scheme::Loop, {}, in.levels};
-        request.rule.loop = options;
+        const RefineRequest request{in.scheme, rule, in.levels};
+        const bool triangles = in.scheme == Scheme::Loop;
+        // On a closed polygon mesh the boundary rule is moot: every implementation of the
+        // scheme refines it alike (OpenMesh's Catmull-Clark has only its own boundary rule).
+        const bool closed = !triangles && [&] {
+            const PolyConnectivity c = build_poly_connectivity(in.polygons);
+            return std::none_of(c.twin.begin(), c.twin.end(), [](int t) { return t < 0; });
+        }();
         std::vector<const Implementation*> impls;
         for (const Implementation* impl : implementations())
-            if (impl->has(Scheme::Loop) && impl->applies(Scheme::Loop, request.rule)) impls.push_back(impl);
+            if (impl->has(in.scheme) && (closed || impl->applies(in.scheme, request.rule))) impls.push_back(impl);
         // The repeats in rounds, every implementation in turn within a round (each in a child
         // of its own, warmed up once): the speed of a shared virtual machine drifts over
         // seconds, and a drift should weigh on every implementation alike, not on whichever
@@ -112,8 +119,12 @@ std::vector<BenchRecord> run_bench(const std::vector<BenchInput>& inputs, const 
                 const int runs = repeats / rounds + (round < repeats % rounds ? 1 : 0);
                 BenchRecord& r = recs[i];
                 if (r.status != "ok") continue;  // it failed: recorded once, not run again
-                const BenchRecord part =
-                    time_in_child([&] { return impls[i]->refine_native(in.mesh, request); }, runs, cold);
+                const BenchRecord part = time_in_child(
+                    [&] {
+                        return triangles ? impls[i]->refine_native(in.mesh, request)
+                                         : impls[i]->refine_polygons_native(in.polygons, request);
+                    },
+                    runs, cold);
                 if (part.status != "ok") {
                     r = part;
                     continue;
@@ -125,9 +136,10 @@ std::vector<BenchRecord> run_bench(const std::vector<BenchInput>& inputs, const 
         for (size_t i = 0; i < impls.size(); ++i) {
             BenchRecord& r = recs[i];
             r.impl = impls[i]->name();
+            r.scheme = to_string(in.scheme);
             r.input = in.name;
             r.levels = in.levels;
-            r.input_faces = in.mesh.num_faces();
+            r.input_faces = triangles ? in.mesh.num_faces() : in.polygons.num_faces();
             r.memory = cold ? "cold" : "warm";
             if (r.status == "ok" && !r.runs_ms.empty()) {
                 r.repeats = static_cast<int>(r.runs_ms.size());
@@ -145,11 +157,26 @@ std::vector<BenchInput> default_bench_inputs(bool quick) {
     std::vector<BenchInput> in;
     auto add = [&](int faces, int levels) {
         TriMesh m = to_tri_mesh(datasets::benchmark_mesh(faces), "benchmark");
-        in.push_back({"torus-" + std::to_string(m.num_faces()), std::move(m), levels});
+        in.push_back({"torus-" + std::to_string(m.num_faces()), std::move(m), levels, Scheme::Loop, PolyMesh{}});
     };
     for (int faces : quick ? std::vector<int>{320, 20000} : std::vector<int>{320, 1280, 5120, 20000})
         for (int levels : {1, 2}) add(faces, levels);
     if (!quick) add(20000, 3);
+    return in;
+}
+
+std::vector<BenchInput> default_catmull_clark_bench_inputs(bool quick) {
+    std::vector<BenchInput> in;
+    auto add = [&](int quads, int levels) {
+        // One level of the irregular triangle torus: quads only, the old vertices keeping their
+        // valences 4 to 8, the face points of valence 3.
+        PolyMesh m = catmull_clark_subdivide(datasets::benchmark_mesh(quads / 3), {CatmullClarkBoundary::EdgeOnly}, 1);
+        const std::string name = "quads-" + std::to_string(m.num_faces());
+        in.push_back({name, TriMesh{}, levels, Scheme::CatmullClark, std::move(m)});
+    };
+    for (int quads : quick ? std::vector<int>{1200, 19200} : std::vector<int>{1200, 4800, 19200})
+        for (int levels : {1, 2}) add(quads, levels);
+    if (!quick) add(4800, 3);
     return in;
 }
 
@@ -207,11 +234,11 @@ std::vector<BenchGoal> bench_goals(const std::vector<BenchRecord>& records) {
         if (core.impl != "core" || core.output_faces < kBenchGoalMinFaces || core.status != "ok") continue;
         const BenchRecord* fastest = nullptr;
         for (const BenchRecord& r : records)
-            if (r.impl != "core" && r.input == core.input && r.levels == core.levels && r.memory == core.memory &&
-                r.status == "ok" && (!fastest || r.median_ms < fastest->median_ms))
+            if (r.impl != "core" && r.scheme == core.scheme && r.input == core.input && r.levels == core.levels &&
+                r.memory == core.memory && r.status == "ok" && (!fastest || r.median_ms < fastest->median_ms))
                 fastest = &r;
         if (!fastest) continue;
-        goals.push_back({core.input, core.levels, core.memory, core.output_faces, core.median_ms, fastest->impl,
+        goals.push_back({core.scheme, core.input, core.levels, core.memory, core.output_faces, core.median_ms, fastest->impl,
                          fastest->median_ms, fastest->median_ms / core.median_ms,
                          core.memory == "cold" ? kBenchColdGoalRatio : kBenchGoalRatio, core.peak_rss_mb});
     }
@@ -219,7 +246,7 @@ std::vector<BenchGoal> bench_goals(const std::vector<BenchRecord>& records) {
 }
 
 nlohmann::json to_json(const BenchGoal& g) {
-    return {{"input", g.input}, {"levels", g.levels}, {"memory", g.memory}, {"output_faces", g.output_faces},
+    return {{"scheme", g.scheme}, {"input", g.input}, {"levels", g.levels}, {"memory", g.memory}, {"output_faces", g.output_faces},
             {"core_ms", g.core_ms}, {"fastest_reference", g.fastest_reference}, {"fastest_reference_ms", g.fastest_reference_ms},
             {"ratio", g.ratio}, {"target_ratio", g.target}, {"met", g.met()}, {"core_peak_rss_mb", g.core_peak_rss_mb}};
 }
@@ -227,6 +254,11 @@ nlohmann::json to_json(const BenchGoal& g) {
 double loop_output_bytes(long long output_faces) {
     const double faces = static_cast<double>(output_faces);
     return faces / 2 * sizeof(Vec3) + faces * sizeof(Triangle);
+}
+
+double catmull_clark_output_bytes(long long output_faces) {
+    const double faces = static_cast<double>(output_faces);
+    return faces * sizeof(Vec3) + faces * 4 * sizeof(int);
 }
 
 Bandwidth measure_bandwidth(int repeats) {

@@ -45,6 +45,11 @@ public:
         return cg::loop_native(mesh, closest_rule(r.scheme, r.rule).loop, r.levels);
     }
 
+    size_t refine_polygons_native(const PolyMesh& mesh, const RefineRequest& r) const override {
+        if (r.scheme != Scheme::CatmullClark) return Implementation::refine_polygons_native(mesh, r);
+        return cg::catmull_clark_native(mesh, r.levels);
+    }
+
     std::vector<NamedNormals> vertex_normals(const TriMesh& mesh) const override {
         NamedNormals n{"cgal", "PMP::compute_vertex_normals", {}, {}};
         try {

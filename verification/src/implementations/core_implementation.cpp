@@ -3,6 +3,7 @@
 #include "crossdiv/mesh/discrete_curvature.h"
 #include "crossdiv/subdiv/butterfly.h"
 #include "crossdiv/subdiv/catmull_clark.h"
+#include "crossdiv/subdiv/catmull_clark_streaming.h"
 #include "crossdiv/subdiv/doo_sabin.h"
 #include "crossdiv/subdiv/limit.h"
 #include "crossdiv/subdiv/loop.h"
@@ -42,7 +43,7 @@ Capabilities core_capabilities() {
 PolyMesh subdivide(const PolyMesh& mesh, const RefineRequest& r, int levels) {
     switch (r.scheme) {
         case Scheme::Loop: return loop_subdivide(mesh, r.rule.loop, levels);
-        case Scheme::CatmullClark: return catmull_clark_subdivide(mesh, r.rule.catmull_clark, levels);
+        case Scheme::CatmullClark: return catmull_clark_subdivide_streaming(mesh, r.rule.catmull_clark, levels);
         case Scheme::DooSabin: return doo_sabin_subdivide(mesh, r.rule.doo_sabin, levels);
         case Scheme::Sqrt3: return sqrt3_subdivide(mesh, r.rule.sqrt3, levels);
         case Scheme::Butterfly: return butterfly_subdivide(mesh, ButterflyVariant::Classic, levels, r.rule.butterfly_wings);
@@ -84,6 +85,12 @@ public:
         if (r.scheme != Scheme::Loop) return Implementation::refine_native(mesh, r);
         // The fastest way core makes the last level: the streaming driver (loop_streaming.h).
         return loop_subdivide_streaming(mesh, r.rule.loop, r.levels).triangles.size();
+    }
+
+    size_t refine_polygons_native(const PolyMesh& mesh, const RefineRequest& r) const override {
+        if (r.scheme != Scheme::CatmullClark) return Implementation::refine_polygons_native(mesh, r);
+        // The streaming driver (catmull_clark_streaming.h).
+        return catmull_clark_subdivide_streaming(mesh, r.rule.catmull_clark, r.levels).num_faces();
     }
 
     adapters::LimitPoints limit_points(const PolyMesh& mesh, const RefineRequest& r) const override {

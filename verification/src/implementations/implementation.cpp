@@ -94,6 +94,10 @@ size_t Implementation::refine_native(const TriMesh& mesh, const RefineRequest& r
     return refine(to_poly_mesh(mesh), request).back().num_faces();
 }
 
+size_t Implementation::refine_polygons_native(const PolyMesh& mesh, const RefineRequest& request) const {
+    return refine_last(mesh, request).num_faces();
+}
+
 adapters::LimitPoints Implementation::limit_points(const PolyMesh&, const RefineRequest&) const { lacks("limit positions"); }
 
 adapters::LimitEvaluation Implementation::limit_surface(const PolyMesh&, Scheme scheme, int,

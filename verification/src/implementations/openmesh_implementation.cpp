@@ -41,6 +41,11 @@ public:
         return om::loop_native(mesh, closest_rule(r.scheme, r.rule).loop, r.levels);
     }
 
+    size_t refine_polygons_native(const PolyMesh& mesh, const RefineRequest& r) const override {
+        if (r.scheme != Scheme::CatmullClark) return Implementation::refine_polygons_native(mesh, r);
+        return om::catmull_clark_native(mesh, r.levels);
+    }
+
     std::vector<NamedNormals> vertex_normals(const TriMesh& mesh) const override {
         std::vector<NamedNormals> out;
         for (auto [name, method, m] : {std::tuple{"openmesh-correct", "PolyMeshT::calc_vertex_normal_correct", om::NormalMethod::Correct},

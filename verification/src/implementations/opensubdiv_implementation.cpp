@@ -39,6 +39,12 @@ public:
         return osd::loop_native(mesh, closest_rule(r.scheme, r.rule).loop, r.levels);
     }
 
+    size_t refine_polygons_native(const PolyMesh& mesh, const RefineRequest& r) const override {
+        if (r.scheme != Scheme::CatmullClark) return Implementation::refine_polygons_native(mesh, r);
+        check_refinable(r.scheme);
+        return osd::catmull_clark_native(mesh, closest_rule(r.scheme, r.rule).catmull_clark, r.levels);
+    }
+
     adapters::LimitPoints limit_points(const PolyMesh& mesh, const RefineRequest& r) const override {
         check_refinable(r.scheme);
         if (r.scheme == Scheme::Loop) return osd::loop_limit(triangles_for(mesh, r.scheme), r.rule.loop, r.levels);

@@ -36,6 +36,10 @@ size_t loop_native(const TriMesh& mesh, const LoopOptions& options, int levels);
 /// @throws Rejected when Surface_mesh refuses a face, naming it.
 LevelTrace catmull_clark(const PolyMesh& mesh, int levels);
 
+/// The same refinement in one call of `levels` iterations, kept in CGAL's Surface_mesh: what
+/// `crossdiv bench` times. Returns the number of output faces. @throws as catmull_clark().
+size_t catmull_clark_native(const PolyMesh& mesh, int levels);
+
 /// DooSabin_subdivision, one call of one iteration per level (DooSabin_mask_3). CGAL's DQQ
 /// refinement makes faces for the interior only: at a border it drops the faces of border
 /// edges and vertices, which the harness classifies. @throws as catmull_clark().

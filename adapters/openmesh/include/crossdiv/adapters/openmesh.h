@@ -35,6 +35,10 @@ size_t loop_native(const TriMesh& mesh, const LoopOptions& options, int levels);
 /// @throws Rejected naming the face OpenMesh refuses.
 LevelTrace catmull_clark(const PolyMesh& mesh, int levels);
 
+/// The same refinement in one call of `levels` steps, kept in OpenMesh's structures: what
+/// `crossdiv bench` times. Returns the number of output faces. @throws as catmull_clark().
+size_t catmull_clark_native(const PolyMesh& mesh, int levels);
+
 /// Sqrt3T. Its generation counter (boundary refined on odd generations) is a mesh property
 /// that lives for one call, so the trace is made of fresh calls of k = 1 .. levels steps when
 /// `one_call` is true, and of `levels` calls of one step (boundary never refined) when false.

@@ -88,6 +88,12 @@ bool supports(const CatmullClarkOptions& options);
 /// @throws Rejected for the midpoint-average rule or when Far's factory reports an error.
 LevelTrace catmull_clark(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels);
 
+/// The same refinement in the library's own structures (Far's topology without the last
+/// level's edges, PrimvarRefinerReal<double> level by level into one buffer), nothing
+/// converted back: what `crossdiv bench` times. Returns the number of output faces.
+/// @throws as catmull_clark().
+size_t catmull_clark_native(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels);
+
 /// Limit positions and limit normals of every vertex of a refined level, by
 /// PrimvarRefinerReal<double>::Limit (with its two tangents; the normal is their normalized
 /// cross product, zero where they are parallel). `level` is that level's mesh in Far's order.

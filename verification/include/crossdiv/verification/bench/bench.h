@@ -1,8 +1,8 @@
 #pragma once
 /// @file
-/// Side-by-side timing of Loop subdivision: core against each reference's native
-/// refinement (adapters' loop_native: the library's own structures, nothing converted back),
-/// single thread, each (input, levels, implementation) in its own child process so that its
+/// Side-by-side timing of Loop and Catmull-Clark subdivision: core against each reference's
+/// native refinement (adapters' loop_native and catmull_clark_native: the library's own
+/// structures, nothing converted back), single thread, each (input, levels, implementation) in its own child process so that its
 /// peak resident memory can be read from the kernel (wait4's ru_maxrss).
 
 #include <functional>
@@ -14,6 +14,7 @@
 
 #include "crossdiv/mesh/tri_mesh.h"
 #include "crossdiv/subdiv/loop_mask.h"
+#include "crossdiv/verification/implementations/scheme.h"
 
 namespace crossdiv::verification {
 
@@ -36,8 +37,10 @@ inline constexpr int kBenchRounds = 3;
 
 struct BenchInput {
     std::string name;
-    TriMesh mesh;
+    TriMesh mesh;  ///< Loop's input
     int levels;
+    Scheme scheme = Scheme::Loop;
+    PolyMesh polygons;  ///< Catmull-Clark's input
 };
 
 /// Times every implementation on every input: `repeats` runs each, spread over kBenchRounds
@@ -45,12 +48,16 @@ struct BenchInput {
 /// by one run), median reported. A reference that fails is recorded with its status. Unless `cold`, the
 /// child keeps freed memory (glibc mallopt) so repeats do not pay first-touch page faults
 /// again; the same setting applies to every implementation.
-std::vector<BenchRecord> run_bench(const std::vector<BenchInput>& inputs, const LoopOptions& options, int repeats,
-                                   bool cold);
+/// Each input is refined by its scheme under `rule` (the member of that scheme).
+std::vector<BenchRecord> run_bench(const std::vector<BenchInput>& inputs, const SchemeRule& rule, int repeats, bool cold);
 
 /// The default series: benchmark_mesh() tori of about 320, 1280, 5120 and 20000 faces at 1
 /// and 2 levels, and 20000 faces at 3 levels (1.28M output faces).
 std::vector<BenchInput> default_bench_inputs(bool quick);
+/// Catmull-Clark's series: quad meshes with extraordinary vertices (one Catmull-Clark level of
+/// the irregular benchmark torus: valences 3 to 8) of about 1200, 4800 and 19200 quads at 1
+/// and 2 levels, and 4800 quads at 3 levels (307k output faces); quick: 1200 and 19200.
+std::vector<BenchInput> default_catmull_clark_bench_inputs(bool quick);
 
 nlohmann::json to_json(const BenchRecord& r);
 
@@ -79,7 +86,7 @@ double median_ms(int repeats, const std::function<void()>& f);
 std::vector<double> interleaved_median_ms(int repeats, const std::vector<std::function<void()>>& fs);
 
 /// The performance goals, at every input whose output has at least kBenchGoalMinFaces faces:
-/// warm, core Loop at least kBenchGoalRatio times faster than the fastest reference; cold
+/// warm, core (Loop, Catmull-Clark) at least kBenchGoalRatio times faster than the fastest reference; cold
 /// (freed memory returned to the kernel, page faults paid), no slower than it.
 inline constexpr double kBenchGoalRatio = 4.0;
 inline constexpr double kBenchColdGoalRatio = 1.0;
@@ -87,6 +94,7 @@ inline constexpr long long kBenchGoalMinFaces = 300000;
 
 /// How one measured input stands against its goal.
 struct BenchGoal {
+    std::string scheme;
     std::string input;
     int levels = 0;
     std::string memory;  ///< "warm" or "cold"
@@ -107,6 +115,9 @@ std::vector<BenchGoal> bench_goals(const std::vector<BenchRecord>& records);
 /// The bytes of a Loop level of `output_faces` triangles on a closed mesh (V = F/2 + 2 - 2g;
 /// F/2 for the tori): 24 per vertex, 12 per triangle, the least any implementation writes.
 double loop_output_bytes(long long output_faces);
+/// The bytes of a Catmull-Clark level of `output_faces` quads on a closed genus-1 mesh (V = F):
+/// 24 per vertex, 16 per quad.
+double catmull_clark_output_bytes(long long output_faces);
 
 /// Memory bandwidth measured here and now: the best of `repeats` passes that write (fill) and
 /// that copy a buffer far larger than the caches, in GB/s (bytes moved per second: a copy

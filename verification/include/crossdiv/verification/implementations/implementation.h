@@ -145,6 +145,9 @@ public:
     /// The same refinement kept in the implementation's own structures, for timing; returns
     /// the number of output faces.
     virtual size_t refine_native(const TriMesh& mesh, const RefineRequest& request) const;
+    /// The same for a polygon scheme on a polygon mesh (Catmull-Clark): the implementation's
+    /// fastest way, its own mesh built from ours and nothing converted back.
+    virtual size_t refine_polygons_native(const PolyMesh& mesh, const RefineRequest& request) const;
     /// `request.levels` levels, then the limit position and normal of every vertex of that level.
     virtual adapters::LimitPoints limit_points(const PolyMesh& mesh, const RefineRequest& request) const;
     /// The limit surface of face `face` at each (u, v) (boundary rule edge-only).
