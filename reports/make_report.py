@@ -14,7 +14,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 from report import sections, viewer  # noqa: E402
 from report.model import render_html, render_markdown  # noqa: E402
-from report.records import halfedge_cases, scheme_cases, split_cases  # noqa: E402
+from report.records import halfedge_cases, split_cases  # noqa: E402
 from report.records import SCHEMA_VERSION, fmt  # noqa: E402
 
 
@@ -34,8 +34,7 @@ def load(folder):
 
 def build(results, bench, folder, figdir):
     """(title, intro lines, sections) of the report."""
-    mesh, curves, surfaces, studies = split_cases(results["cases"])
-    schemes = scheme_cases(results["cases"])
+    mesh, curves, surfaces, studies, schemes = split_cases(results)
     s = results["summary"]
     refs = ", ".join(f"{r['name']} ({r['version']})" for r in results.get("references", []))
     intro = [f"- manifest: `{results.get('manifest')}`, shard {results.get('shard')}, {s['cases']} cases, "

@@ -6,8 +6,6 @@ case without runs); nothing here derives it again.
 import math
 import os
 
-# The study operations of the suite (verification/src/suite/operations.cpp).
-STUDIES = ("schemes", "creases", "limit-positions", "vertex-age", "curvature", "isosurface", "fitting", "multiresolution", "spectrum", "convergence")
 
 # Outcome categories of the summary matrix, in legend order, with their colours.
 CATEGORIES = [
@@ -25,7 +23,7 @@ CATEGORIES = [
 
 
 # The results.json this script reads (verification/include/crossdiv/verification/suite/report.h).
-SCHEMA_VERSION = 3
+SCHEMA_VERSION = 4
 
 
 def outcome(case, run=None):
@@ -47,15 +45,6 @@ def category(case, run=None):
     return o
 
 
-# The refinement comparisons of the schemes other than Loop, one operation per scheme.
-SCHEMES = ("catmull-clark", "doo-sabin", "sqrt3", "butterfly", "modified-butterfly")
-
-
-def scheme_cases(cases):
-    """The comparison cases of the schemes other than Loop."""
-    return [c for c in cases if c.get("operation") in SCHEMES]
-
-
 def is_mesh_case(case):
     return case.get("operation") == "loop"
 
@@ -64,10 +53,17 @@ def is_mesh_case(case):
 HALFEDGE = ("edits", "normals")
 
 
-def split_cases(cases):
-    """(mesh comparisons, curve checks, surface checks, studies) of a results.json."""
-    pick = lambda ops: [c for c in cases if c.get("operation") in ops]  # noqa: E731
-    return pick(("loop",)), pick(("curves",)), pick(("surfaces",)), pick(STUDIES)
+def split_cases(results):
+    """(Loop comparisons, curve checks, surface checks, studies, the other schemes' comparisons)
+    of a results.json, by the kind crossdiv lists for each operation (results.json "operations"):
+    a new study or scheme needs no change here."""
+    kinds = {o["name"]: o for o in results["operations"]}
+    cases = results["cases"]
+    pick = lambda keep: [c for c in cases if c.get("operation") in kinds and keep(kinds[c["operation"]])]  # noqa: E731
+    loop = pick(lambda o: o["kind"] == "comparison" and o.get("scheme") == "loop")
+    schemes = pick(lambda o: o["kind"] == "comparison" and o.get("scheme") != "loop")
+    studies = pick(lambda o: o["kind"] == "study")
+    return loop, pick(lambda o: o["name"] == "curves"), pick(lambda o: o["name"] == "surfaces"), studies, schemes
 
 
 def halfedge_cases(cases):

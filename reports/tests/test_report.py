@@ -81,7 +81,14 @@ def results_fixture():
                                       "regular_characteristic_map": True}]},
              "runs": [{"reference": "closed form", "subject": "loop n=3", "check": "spectrum", "measured": 1e-16,
                        "tolerance": 1e-12, "unit": "abs", "verdict": "agree", "outcome": "agree", "explanation": ""}]}
-    return {"tool": "crossdiv suite", "schema_version": 3, "suite": "tiny", "manifest": "tiny.suite", "shard": "1/1",
+    # Every operation as crossdiv lists them (a study's kind is what makes it one).
+    operations = ([{"name": s, "kind": "comparison", "scheme": s}
+                   for s in ("loop", "catmull-clark", "doo-sabin", "sqrt3", "butterfly", "modified-butterfly")] +
+                  [{"name": c, "kind": "checks"} for c in ("curves", "surfaces", "edits", "normals")] +
+                  [{"name": s, "kind": "study"} for s in ("schemes", "creases", "limit-positions", "vertex-age", "curvature",
+                                                          "isosurface", "fitting", "multiresolution", "pages", "spectrum",
+                                                          "convergence")])
+    return {"tool": "crossdiv suite", "schema_version": 4, "suite": "tiny", "operations": operations, "manifest": "tiny.suite", "shard": "1/1",
             "workers": 1, "seconds": 1.0, "references": [{"name": "opensubdiv", "version": "3.5"},
                                                           {"name": "cgal", "version": "5.5"}],
             "summary": {"cases": 4, "runs": 5, "failures": 1,
@@ -119,11 +126,34 @@ def test_a_small_suite_folder_renders_every_section(tmp_path):
 
 
 def test_cases_are_split_by_operation_and_outcomes_read_not_derived():
-    mesh, curves, surfaces, studies = split_cases(results_fixture()["cases"])
-    assert [len(mesh), len(curves), len(surfaces), len(studies)] == [2, 1, 0, 1]
+    mesh, curves, surfaces, studies, schemes = split_cases(results_fixture())
+    assert [len(mesh), len(curves), len(surfaces), len(studies), len(schemes)] == [2, 1, 0, 1, 0]
     assert category(mesh[0], mesh[0]["runs"][1]) == "diverge (classified)"
     assert category(curves[0], curves[0]["runs"][0]) == "diverge (unexplained)"
     assert category(mesh[1]) == "ours-rejected"
+
+
+def test_a_scheme_case_is_told_by_its_kind_and_counted_per_rule_and_reference(tmp_path):
+    results = results_fixture()
+    cc = {"input": "bundled:open-patch", "operation": "catmull-clark", "job": 4,
+          "id": "bundled:open-patch | catmull-clark boundary=default L2 weak tol=1e-12",
+          "options": {"boundary": "edge-only"}, "levels": 2, "tier": "weak", "tolerance_rel": 1e-12, "runs": [
+              {"reference": "opensubdiv", "rule": "edge-only", "status": "ok", "verdict": "agree", "divergence_class": "",
+               "outcome": "agree", "max_rel": 1e-16, "explanation": ""},
+              {"reference": "openmesh", "rule": "midpoint-average", "status": "ok", "verdict": "diverge",
+               "divergence_class": "boundary-rule", "outcome": "diverge (boundary-rule)", "max_rel": 0.02,
+               "explanation": "openmesh applies the midpoint-average boundary rule"}]}
+    results["cases"].append(cc)
+    mesh, curves, surfaces, studies, schemes = split_cases(results)
+    assert schemes == [cc] and cc not in mesh + studies
+    (tmp_path / "results.json").write_text(json.dumps(results))
+    make_report.main(str(tmp_path))
+    md = (tmp_path / "report.md").read_text()
+    assert "## Every scheme against its references" in md
+    [table] = [t for t in tables_of(md) if [h.strip() for h in t[0]][:3] == ["scheme", "levels", "requested rule"]]
+    assert sorted(tuple(c.strip() for c in row) for row in table[2:]) == [
+        ("catmull-clark", "2", "edge-only", "openmesh", "midpoint-average", "diverge (boundary-rule)", "1"),
+        ("catmull-clark", "2", "edge-only", "opensubdiv", "edge-only", "agree", "1")]
 
 
 def test_the_coverage_table_is_the_same_in_readme_and_reports():

@@ -13,7 +13,7 @@
 #include "crossdiv/error.h"
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/mesh/discrete_curvature.h"
-#include "crossdiv/verification/harness/inputs.h"
+#include "crossdiv/verification/implementations/inputs.h"
 #include "crossdiv/verification/harness/tolerances.h"
 #include "crossdiv/verification/implementations/registry.h"
 

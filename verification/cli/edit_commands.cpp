@@ -11,7 +11,7 @@
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/mesh/halfedge_mesh.h"
 #include "crossdiv/mesh/halfedge_validity.h"
-#include "crossdiv/verification/harness/inputs.h"
+#include "crossdiv/verification/implementations/inputs.h"
 #include "crossdiv/verification/comparisons/normals_comparison.h"
 
 namespace crossdiv::cli {

@@ -6,7 +6,7 @@
 
 #include "command.h"
 #include "crossdiv/verification/properties/curve_checks.h"
-#include "crossdiv/verification/suite/editor_page.h"
+#include "crossdiv/verification/pages/editor_page.h"
 
 namespace crossdiv::cli {
 namespace {

@@ -10,7 +10,7 @@
 #include "crossdiv/error.h"
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/verification/comparisons/limit_fitting_run.h"
-#include "crossdiv/verification/harness/inputs.h"
+#include "crossdiv/verification/implementations/inputs.h"
 #include "crossdiv/verification/implementations/registry.h"
 
 namespace crossdiv::cli {

@@ -20,8 +20,8 @@
 #include "crossdiv/subdiv/loop_split_flip.h"
 #include "crossdiv/verification/comparisons/loop_comparison.h"
 #include "crossdiv/verification/comparisons/shrink.h"
-#include "crossdiv/verification/harness/inputs.h"
-#include "crossdiv/verification/harness/output_size.h"
+#include "crossdiv/verification/implementations/inputs.h"
+#include "crossdiv/verification/implementations/output_size.h"
 #include "crossdiv/verification/implementations/tag_rules.h"
 #include "crossdiv/subdiv/hole_faces.h"
 #include "crossdiv/verification/implementations/program_implementation.h"
@@ -46,7 +46,7 @@ struct SchemeArgs {
     std::string nonmanifold = "opensubdiv";
 
     /// The scheme options; `max_faces_default` is the command's --max-faces default
-    /// (harness/output_size.h: one implementation alone, or several side by side).
+    /// (implementations/output_size.h: one implementation alone, or several side by side).
     void add_scheme_options(CLI::App& app, long long max_faces_default) {
         app.add_option("--scheme", scheme, "Subdivision scheme")
             ->check(CLI::IsMember({"loop", "catmull-clark", "doo-sabin", "sqrt3", "butterfly", "modified-butterfly"}))

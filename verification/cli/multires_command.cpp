@@ -7,7 +7,7 @@
 #include "crossdiv/error.h"
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/verification/comparisons/multiresolution_checks.h"
-#include "crossdiv/verification/harness/inputs.h"
+#include "crossdiv/verification/implementations/inputs.h"
 #include "crossdiv/verification/harness/tolerances.h"
 
 namespace crossdiv::cli {

@@ -13,8 +13,8 @@
 #include "crossdiv/error.h"
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/verification/properties/butterfly_properties.h"
-#include "crossdiv/verification/harness/inputs.h"
-#include "crossdiv/verification/harness/output_size.h"
+#include "crossdiv/verification/implementations/inputs.h"
+#include "crossdiv/verification/implementations/output_size.h"
 #include "crossdiv/verification/implementations/tag_rules.h"
 #include "crossdiv/subdiv/hole_faces.h"
 #include "crossdiv/subdiv/limit.h"
@@ -57,7 +57,7 @@ bool compare_loop_creases(const PolyMesh& mesh, const std::string& name, const s
     if (weights != "loop")
         throw InputError(name + ": crease and hole tags are compared with Loop's weights (OpenSubdiv's)");
     CreaseRequest req;
-    req.loop = true;
+    req.scheme = Scheme::Loop;
     req.method = method;
     req.edge_and_corner = boundary == "edge-and-corner";
     req.levels = levels;
@@ -151,13 +151,8 @@ int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeAr
     for (size_t i = 0; i < inputs.size(); ++i) {
         SchemeRequest this_req = req;
         this_req.rule = rules[i];
-        if (!meshes[i].creases.empty() && req.references.empty()) {
-            // Only OpenSubdiv has crease and hole rules; the others would refuse the tags.
-            this_req.references = {"opensubdiv"};
-            fmt::print("\nnote: {} has {}; compared with opensubdiv, the one reference with crease and hole rules\n",
-                       inputs[i], meshes[i].creases.describe());
-        }
         const SchemeComparison c = compare_scheme(meshes[i], inputs[i], this_req);
+        for (const std::string& note : c.notes) fmt::print("\nnote: {}\n", note);
         fmt::print("\n{} ({} vertices, {} faces) {} boundary={} levels={} (core {:.3f} s)\n", c.input, c.input_vertices,
                    c.input_faces, to_string(c.scheme), c.rule, c.levels, c.core_seconds);
         if (!c.core_error.empty()) fmt::print("  core refused: {}\n", c.core_error);
@@ -174,9 +169,7 @@ int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeAr
             // The classic scheme has no reference: its verdict is its properties.
             const ButterflyVariant v = req.scheme == Scheme::Butterfly ? ButterflyVariant::Classic : ButterflyVariant::Modified;
             const ButterflyProperties p = check_butterfly_properties(meshes[i], inputs[i], v, s.levels);
-            const bool holds = p.core_error.empty() && p.max_interpolation_move == 0.0 &&
-                               p.max_plane_residual <= tolerances::kPlaneReproduction &&
-                               p.regular_edges_published == p.regular_edges;
+            const bool holds = p.hold();
             if (!p.core_error.empty())
                 fmt::print("  properties: not measured (core refused the input)\n");
             else

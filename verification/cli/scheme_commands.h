@@ -9,7 +9,7 @@
 
 #include "crossdiv/mesh/poly_mesh.h"
 #include "crossdiv/subdiv/nonmanifold_rule.h"
-#include "crossdiv/verification/harness/inputs.h"
+#include "crossdiv/verification/implementations/inputs.h"
 
 namespace crossdiv::cli {
 

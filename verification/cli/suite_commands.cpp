@@ -11,6 +11,7 @@
 #include "crossdiv/error.h"
 #include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/verification/suite/manifest.h"
+#include "crossdiv/verification/suite/operations.h"
 #include "crossdiv/verification/suite/outputs.h"
 #include "crossdiv/verification/suite/report.h"
 #include "crossdiv/verification/suite/runner.h"
@@ -85,7 +86,7 @@ int run_suite(const std::string& manifest_path, const std::string& out, int jobs
     const nlohmann::json header = {
         {"tool", "crossdiv suite"}, {"schema_version", kResultsSchemaVersion}, {"suite", manifest.name}, {"manifest", manifest.file},
         {"shard", fmt::format("{}/{}", shard_i, shard_n)}, {"jobs_total", all.size()}, {"jobs_run", mine.size()},
-        {"workers", jobs}, {"references", refs}, {"curve_references", curve_refs},
+        {"workers", jobs}, {"references", refs}, {"curve_references", curve_refs}, {"operations", operations_json()},
         {"seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()}};
     const SuiteSummary summary = write_suite_outputs(out, header, records);
     print_curve_tables(records);

@@ -31,7 +31,7 @@ TEST(CreaseComparison, OpenSubdivAgreesOnEveryCreaseMesh) {
     constexpr double kTagsMatter = 1e-3;
     int runs = 0;
     for (const CreaseComparison& c : compare_crease_catalog()) {
-        SCOPED_TRACE(c.input + " " + c.scheme + " " + c.method);
+        SCOPED_TRACE(c.input + " " + to_string(c.scheme) + " " + c.method);
         EXPECT_EQ(c.verdict, Verdict::Agree) << c.explanation << c.core_error;
         EXPECT_TRUE(c.faces_equal);
         ASSERT_EQ(c.max_rel_per_level.size(), 3u);

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "crossdiv/verification/comparisons/loop_comparison.h"
-#include "crossdiv/verification/harness/inputs.h"
-#include "crossdiv/verification/suite/divergence_view_file.h"
+#include "crossdiv/verification/implementations/inputs.h"
+#include "crossdiv/verification/pages/divergence_view_file.h"
 
 namespace crossdiv::verification {
 namespace {

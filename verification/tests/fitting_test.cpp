@@ -9,7 +9,7 @@
 #include "crossdiv/verification/comparisons/limit_fitting_run.h"
 #include "crossdiv/verification/harness/tolerances.h"
 #include "crossdiv/verification/implementations/registry.h"
-#include "crossdiv/verification/suite/fitting_study.h"
+#include "crossdiv/verification/studies/fitting_study.h"
 
 namespace crossdiv::verification {
 namespace {

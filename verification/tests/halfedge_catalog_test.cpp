@@ -12,7 +12,7 @@
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/subdiv/loop_split_flip.h"
 #include "crossdiv/verification/comparisons/edit_differential.h"
-#include "crossdiv/verification/harness/inputs.h"
+#include "crossdiv/verification/implementations/inputs.h"
 #include "crossdiv/verification/comparisons/normals_comparison.h"
 
 namespace crossdiv::verification {

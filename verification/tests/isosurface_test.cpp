@@ -8,7 +8,7 @@
 
 #include "crossdiv/datasets/implicit_surfaces.h"
 #include "crossdiv/verification/comparisons/isosurface_comparison.h"
-#include "crossdiv/verification/suite/isosurface_study.h"
+#include "crossdiv/verification/studies/isosurface_study.h"
 
 namespace crossdiv::verification {
 namespace {

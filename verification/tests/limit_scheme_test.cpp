@@ -14,7 +14,7 @@
 #include "crossdiv/mesh/poly_connectivity.h"
 #include "crossdiv/verification/comparisons/bfr_comparison.h"
 #include "crossdiv/verification/suite/operations.h"
-#include "crossdiv/verification/suite/curvature_study.h"
+#include "crossdiv/verification/studies/curvature_study.h"
 #include "crossdiv/verification/comparisons/limit_comparison.h"
 #include "crossdiv/verification/comparisons/scheme_comparison.h"
 #include "scheme_test_catalog.h"

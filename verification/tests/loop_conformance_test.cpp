@@ -11,7 +11,7 @@
 
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/datasets/edge_cases.h"
-#include "crossdiv/verification/harness/inputs.h"
+#include "crossdiv/verification/implementations/inputs.h"
 #include "crossdiv/verification/comparisons/loop_comparison.h"
 #include "crossdiv/verification/comparisons/scheme_comparison.h"
 #include "crossdiv/verification/harness/mesh_topology.h"

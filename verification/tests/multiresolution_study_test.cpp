@@ -4,7 +4,7 @@
 
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/verification/comparisons/multiresolution_checks.h"
-#include "crossdiv/verification/suite/multiresolution_study.h"
+#include "crossdiv/verification/studies/multiresolution_study.h"
 
 namespace crossdiv::verification {
 namespace {

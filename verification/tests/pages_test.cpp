@@ -7,9 +7,9 @@
 #include <sstream>
 
 #include "crossdiv/io/curve_io.h"
-#include "crossdiv/verification/suite/editor_page.h"
-#include "crossdiv/verification/suite/levels_page.h"
-#include "crossdiv/verification/suite/page_arrays.h"
+#include "crossdiv/verification/pages/editor_page.h"
+#include "crossdiv/verification/pages/levels_page.h"
+#include "crossdiv/verification/pages/page_arrays.h"
 
 namespace crossdiv::verification {
 namespace {

@@ -12,7 +12,7 @@
 #include "crossdiv/subdiv/catmull_clark.h"
 #include "crossdiv/subdiv/catmull_clark_streaming.h"
 #include "crossdiv/subdiv/sqrt3.h"
-#include "crossdiv/verification/harness/inputs.h"
+#include "crossdiv/verification/implementations/inputs.h"
 #include "crossdiv/verification/properties/butterfly_properties.h"
 #include "crossdiv/verification/harness/correspondence.h"
 #include "crossdiv/verification/comparisons/scheme_comparison.h"

@@ -29,7 +29,7 @@ std::vector<PolyMesh> core_levels(const PolyMesh& mesh, const CreaseRequest& req
     std::vector<PolyMesh> out;
     PolyMesh current = mesh;
     for (int l = 0; l < req.levels; ++l) {
-        current = req.loop ? loop_subdivide(current, loop_options(req), 1)
+        current = req.scheme == Scheme::Loop ? loop_subdivide(current, loop_options(req), 1)
                            : catmull_clark_subdivide(current, catmull_clark_options(req), 1);
         out.push_back(current);
     }
@@ -41,7 +41,7 @@ std::vector<PolyMesh> core_levels(const PolyMesh& mesh, const CreaseRequest& req
 CreaseComparison compare_creases(const PolyMesh& mesh, const std::string& name, const CreaseRequest& req) {
     CreaseComparison c;
     c.input = name;
-    c.scheme = req.loop ? "loop" : "catmull-clark";
+    c.scheme = req.scheme;
     c.method = std::string(to_string(req.method));
     c.levels = req.levels;
     c.edge_tags = static_cast<int>(mesh.creases.edges.size());
@@ -67,7 +67,7 @@ CreaseComparison compare_creases(const PolyMesh& mesh, const std::string& name, 
     }
 
     // The references with crease rules for the scheme: OpenSubdiv.
-    const Scheme scheme = req.loop ? Scheme::Loop : Scheme::CatmullClark;
+    const Scheme scheme = req.scheme;
     const Implementation* ref = nullptr;
     for (const Implementation* i : references_for(scheme))
         if (i->support(scheme)->creases) ref = ref ? ref : i;
@@ -131,11 +131,11 @@ CreaseComparison compare_creases(const PolyMesh& mesh, const std::string& name, 
 std::vector<CreaseComparison> compare_crease_catalog() {
     std::vector<CreaseComparison> out;
     for (const datasets::BundledMesh& b : datasets::crease_meshes())
-        for (bool loop : {false, true}) {
-            if (loop && !b.mesh.all_triangles()) continue;
+        for (Scheme scheme : {Scheme::CatmullClark, Scheme::Loop}) {
+            if (scheme == Scheme::Loop && !b.mesh.all_triangles()) continue;
             for (CreaseMethod method : {CreaseMethod::Uniform, CreaseMethod::Chaikin}) {
                 CreaseRequest req;
-                req.loop = loop;
+                req.scheme = scheme;
                 req.method = method;
                 out.push_back(compare_creases(b.mesh, "bundled:" + b.name, req));
             }
@@ -147,7 +147,7 @@ nlohmann::json to_json(const CreaseComparison& c) {
     auto num = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
     nlohmann::json levels = nlohmann::json::array();
     for (double x : c.max_rel_per_level) levels.push_back(num(x));
-    nlohmann::json j = {{"input", c.input},          {"scheme", c.scheme},           {"method", c.method},
+    nlohmann::json j = {{"input", c.input},          {"scheme", to_string(c.scheme)}, {"method", c.method},
                         {"levels", c.levels},        {"edge_tags", c.edge_tags},     {"vertex_tags", c.vertex_tags}, {"hole_tags", c.hole_tags},
                         {"verdict", to_string(c.verdict)},      {"max_rel", num(c.max_rel)},    {"max_rel_per_level", levels},
                         {"faces_equal", c.faces_equal}, {"effect_of_tags", num(c.effect_of_tags)},

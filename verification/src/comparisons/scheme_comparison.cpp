@@ -108,7 +108,16 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
     out.input_vertices = input.num_vertices();
     out.input_faces = input.num_faces();
 
-    const std::vector<const Implementation*> refs = select_references(req.scheme, req.references);
+    std::vector<const Implementation*> refs = select_references(req.scheme, req.references);
+    if (req.references.empty() && !input.creases.empty()) {
+        // Only references with crease rules read the tags; the others would refuse them.
+        std::erase_if(refs, [&](const Implementation* r) { return !r->support(req.scheme)->creases; });
+        std::string names;
+        for (const Implementation* r : refs) names += (names.empty() ? "" : ", ") + r->name();
+        out.notes.push_back(name + " has " + input.creases.describe() + "; compared with " +
+                            (names.empty() ? std::string("no reference (none has crease rules)") : names) +
+                            ", the references with crease and hole rules");
+    }
 
     // Core under the requested rule, and under each reference's rule when it differs.
     PolyMesh ours;
@@ -349,11 +358,13 @@ nlohmann::json to_json(const SchemeComparison& c) {
         if (c.tier == Tier::Geometric) run["hausdorff_rel"] = finite(r.hausdorff_rel);
         runs.push_back(run);
     }
-    return {{"input", c.input},           {"scheme", to_string(c.scheme)}, {"rule", c.rule},
+    json out = {{"input", c.input},           {"scheme", to_string(c.scheme)}, {"rule", c.rule},
             {"levels", c.levels},         {"tier", to_string(c.tier)}, {"tolerance_rel", finite(c.tolerance)},
             {"input_vertices", c.input_vertices}, {"input_faces", c.input_faces},
             {"core_seconds", c.core_seconds}, {"core_error", c.core_error}, {"all_agree", c.all_agree()},
             {"runs", runs}};
+    if (!c.notes.empty()) out["notes"] = c.notes;
+    return out;
 }
 
 }  // namespace crossdiv::verification

@@ -141,6 +141,14 @@ const char* to_string(RunStatus status) {
     return "unknown";
 }
 
+RunStatus run_status_from_string(const std::string& name) {
+    for (RunStatus s : {RunStatus::Ok, RunStatus::Rejected, RunStatus::Threw, RunStatus::Crashed, RunStatus::Timeout,
+                        RunStatus::ExitStatus, RunStatus::NoOutput, RunStatus::UnreadableOutput, RunStatus::NonFiniteOutput,
+                        RunStatus::WrongCount, RunStatus::NotTriangles, RunStatus::Unavailable})
+        if (name == to_string(s)) return s;
+    throw InputError("unknown run status '" + name + "'");
+}
+
 std::string RunOutcome::summary() const {
     if (status == RunStatus::Ok || status == RunStatus::Timeout) return to_string(status);
     return std::string(to_string(status)) + ": " + message;

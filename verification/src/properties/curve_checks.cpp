@@ -24,7 +24,7 @@ using nlohmann::json;
 
 namespace {
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
+using tolerances::kEps;
 /// Parameters per segment at which evaluations are compared: the knots (t = 0, 1) and
 /// interior points that are not binary fractions, so no algorithm is exact by accident.
 constexpr int kSamplesPerSegment = 64;

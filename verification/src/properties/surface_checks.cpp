@@ -24,8 +24,7 @@ using nlohmann::json;
 
 namespace {
 
-constexpr double kEps = 2.220446049250313e-16;
-
+using tolerances::kEps;
 
 /// Largest |signed distance| of the mesh from an implicit surface, sampled on every
 /// triangle at the barycentric points (i, j, k) / 6: the mesh-to-surface distance.

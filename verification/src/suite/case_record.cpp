@@ -38,7 +38,7 @@ RunRecord run_from_json(const json& j) {
     r.check = text(j, "check");
     r.subject = text(j, "subject");
     r.outcome = {verdict_from_string(text(j, "verdict")), divergence_class_from_string(text(j, "divergence_class"))};
-    r.status = text(j, "status");
+    if (const std::string status = text(j, "status"); !status.empty()) r.status = run_status_from_string(status);
     r.explanation = text(j, "explanation");
     r.seconds = number(j, "seconds");
     r.hausdorff = number(j, "hausdorff_rel");
@@ -69,7 +69,7 @@ RunRecord reference_run(const json& detail, const Run& run) {
     r.detail = detail;
     r.reference = run.reference;
     r.outcome = {run.verdict, run.divergence_class};
-    r.status = to_string(run.outcome.status);
+    r.status = run.outcome.status;
     r.seconds = run.outcome.seconds;
     r.hausdorff = run.hausdorff_rel;
     r.explanation = run.explanation;

@@ -9,21 +9,21 @@
 #include "crossdiv/verification/comparisons/shrink.h"
 #include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/verification/implementations/tag_rules.h"
-#include "crossdiv/verification/harness/inputs.h"
-#include "crossdiv/verification/harness/output_size.h"
+#include "crossdiv/verification/implementations/inputs.h"
+#include "crossdiv/verification/implementations/output_size.h"
 #include "crossdiv/verification/implementations/program_implementation.h"
 #include "crossdiv/verification/properties/curve_checks.h"
-#include "crossdiv/verification/properties/halfedge_checks.h"
+#include "crossdiv/verification/comparisons/halfedge_checks.h"
 #include "crossdiv/verification/properties/surface_checks.h"
 #include "crossdiv/verification/harness/json_text.h"
 #include "crossdiv/verification/suite/features_under_test.h"
-#include "crossdiv/verification/suite/curvature_study.h"
-#include "crossdiv/verification/suite/fitting_study.h"
-#include "crossdiv/verification/suite/isosurface_study.h"
-#include "crossdiv/verification/suite/multiresolution_study.h"
-#include "crossdiv/verification/suite/pages_study.h"
-#include "crossdiv/verification/suite/divergence_view_file.h"
-#include "suite/studies.h"
+#include "crossdiv/verification/studies/curvature_study.h"
+#include "crossdiv/verification/studies/fitting_study.h"
+#include "crossdiv/verification/studies/isosurface_study.h"
+#include "crossdiv/verification/studies/multiresolution_study.h"
+#include "crossdiv/verification/studies/pages_study.h"
+#include "crossdiv/verification/pages/divergence_view_file.h"
+#include "crossdiv/verification/studies/studies.h"
 
 namespace crossdiv::verification {
 namespace {
@@ -127,7 +127,7 @@ CaseRecord run_scheme(const SuiteJob& job, const std::string&) {
     std::vector<std::string> notes;
     req.rule = rule_with_tags(req.scheme, entry.rule_flags, input, notes);
     CaseRecord rec = case_record(compare_scheme(input, job.input, req));
-    if (!notes.empty()) rec.detail["notes"] = notes;
+    for (const std::string& note : notes) rec.detail["notes"].push_back(note);
     return rec;
 }
 
@@ -222,6 +222,25 @@ const std::vector<SuiteOperation>& suite_operations() {
          one_collection<kFans>, run_study<convergence_study>},
     };
     return ops;
+}
+
+const char* to_string(OperationKind kind) {
+    switch (kind) {
+        case OperationKind::Comparison: return "comparison";
+        case OperationKind::Checks: return "checks";
+        case OperationKind::Study: return "study";
+    }
+    return "unknown";
+}
+
+nlohmann::json operations_json() {
+    json out = json::array();
+    for (const SuiteOperation& op : suite_operations()) {
+        json o = {{"name", op.name}, {"kind", to_string(op.kind)}};
+        if (op.kind == OperationKind::Comparison) o["scheme"] = to_string(op.scheme);
+        out.push_back(std::move(o));
+    }
+    return out;
 }
 
 const SuiteOperation& find_operation(std::string_view name) {

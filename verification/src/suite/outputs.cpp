@@ -83,7 +83,7 @@ std::string csv(const std::vector<CaseRecord>& cases) {
             out << c.job << "," << csv_field(c.input) << "," << c.operation << "," << c.weights << "," << c.boundary << ","
                 << (c.levels > 0 ? std::to_string(c.levels) : "") << "," << c.tier << ","
                 << number_or_empty(!c.weights.empty() ? c.tolerance : r ? r->tolerance : NAN) << ","
-                << csv_field(r ? r->label() : "") << "," << (r ? r->status : "") << ","
+                << csv_field(r ? r->label() : "") << "," << (r && r->status ? to_string(*r->status) : "") << ","
                 << csv_field(r ? outcome_label(c, *r) : outcome_label(c)) << "," << number_or_empty(r ? r->measured : NAN)
                 << "," << number_or_empty(r ? r->rms : NAN) << "," << number_or_empty(r ? r->hausdorff : NAN) << ","
                 << (r && r->worst_valence >= 0 ? std::to_string(r->worst_valence) : "") << ","

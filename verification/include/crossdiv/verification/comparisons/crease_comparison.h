@@ -13,11 +13,12 @@
 #include "crossdiv/mesh/poly_mesh.h"
 #include "crossdiv/verification/harness/verdict.h"
 #include "crossdiv/verification/harness/tolerances.h"
+#include "crossdiv/verification/implementations/scheme.h"
 
 namespace crossdiv::verification {
 
 struct CreaseRequest {
-    bool loop = false;  ///< Loop, else Catmull-Clark
+    Scheme scheme = Scheme::CatmullClark;  ///< Loop or Catmull-Clark, the schemes with crease rules
     CreaseMethod method = CreaseMethod::Uniform;
     bool edge_and_corner = false;  ///< the boundary rule: edge-and-corner, else edge-only
     int levels = 3;
@@ -27,7 +28,9 @@ struct CreaseRequest {
 };
 
 struct CreaseComparison {
-    std::string input, scheme, method;
+    std::string input;
+    Scheme scheme = Scheme::CatmullClark;
+    std::string method;
     int levels = 0;
     int edge_tags = 0, vertex_tags = 0, hole_tags = 0;
     std::string core_error;  ///< non-empty: core refused the mesh (the message)

@@ -29,7 +29,9 @@ struct SchemeRequest {
     Scheme scheme = Scheme::CatmullClark;
     SchemeRule rule;
     int levels = 1;
-    std::vector<std::string> references;  ///< names; every one that has the scheme when empty
+    /// Names; when empty, every one that has the scheme (those with crease rules, for an
+    /// input with crease, corner or hole tags).
+    std::vector<std::string> references;
     double timeout_seconds = 120;
     bool isolate = true;
     /// How close is close enough. The tolerance is the weak and geometric tiers' bar, and the
@@ -73,6 +75,7 @@ struct SchemeComparison {
     int input_vertices = 0, input_faces = 0;
     double core_seconds = 0;
     std::string core_error;  ///< non-empty: core refused the input (the message)
+    std::vector<std::string> notes;  ///< how the references were chosen, when not as asked
     std::vector<SchemeReferenceRun> runs;
     bool all_agree() const;
 };

@@ -34,6 +34,8 @@ enum class RunStatus {
 /// "ok", "rejected", "threw", "crashed", "timeout", "exit-status", "no-output",
 /// "unreadable-output", "non-finite-output", "wrong-count", "not-triangles", "unavailable".
 const char* to_string(RunStatus status);
+/// The status to_string names. @throws InputError for another name.
+RunStatus run_status_from_string(const std::string& name);
 
 /// Whether the run made a result that is not a mesh of the scheme (an implementation that lies).
 inline bool is_invalid_output(RunStatus status) {

@@ -3,7 +3,12 @@
 /// Every tolerance of the harness, each with its reason. Distances are relative to the
 /// bounding-box diagonal of the refined mesh, so they mean the same on any mesh scale.
 
+#include <limits>
+
 namespace crossdiv::tolerances {
+
+/// The unit the ulp-counted bounds below are multiplied by: the spacing of doubles at 1.
+inline constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 /// Two Loop refinements agree when the largest vertex distance is at most this times the
 /// bounding-box diagonal. Each level forms sums of up to n+1 terms with weights below 1, so

@@ -27,6 +27,14 @@ struct ButterflyProperties {
     double max_plane_residual = 0;      ///< relative to the diagonal
     int regular_edges = 0;              ///< edges of the input with a regular, interior stencil
     int regular_edges_published = 0;    ///< ... whose weights are exactly the published ones
+
+    /// Whether all three hold: core refined the input, no old vertex moved, planes are
+    /// reproduced within tolerances::kPlaneReproduction, every regular edge has the published
+    /// stencil.
+    bool hold() const {
+        return core_error.empty() && max_interpolation_move == 0.0 && max_plane_residual <= tolerances::kPlaneReproduction &&
+               regular_edges_published == regular_edges;
+    }
 };
 
 /// Measures the three properties over `levels` levels of `variant`.

@@ -45,6 +45,19 @@ inline Check count_check(const std::string& subject, const std::string& check, c
     return {subject, check, reference, count, 0, "count", note};
 }
 
+/// A measured check, reference first: `measured` against `tolerance` in `unit`.
+inline Check measured_check(const std::string& reference, const std::string& name, const std::string& subject,
+                            double measured, double tolerance, const std::string& unit, const std::string& note) {
+    return {subject, name, reference, measured, tolerance, unit, note, std::nullopt};
+}
+
+/// A check whose outcome was decided by a comparison (a refusal, a classified divergence).
+inline Check decided_check(const std::string& reference, const std::string& name, const std::string& subject,
+                           double measured, double tolerance, const std::string& unit, const std::string& note,
+                           Outcome outcome) {
+    return {subject, name, reference, measured, tolerance, unit, note, outcome};
+}
+
 /// All checks of one input, and the tables of figures they came from.
 struct CheckReport {
     std::string input;

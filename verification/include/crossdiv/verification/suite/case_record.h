@@ -8,11 +8,13 @@
 
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "crossdiv/verification/comparisons/loop_comparison.h"
 #include "crossdiv/verification/comparisons/scheme_comparison.h"
+#include "crossdiv/verification/harness/isolate.h"
 #include "crossdiv/verification/harness/verdict.h"
 #include "crossdiv/verification/properties/check.h"
 
@@ -23,7 +25,7 @@ struct RunRecord {
     std::string reference;       ///< the implementation or kind of reference it is compared with
     std::string subject, check;  ///< checks: what was checked and which property (empty for comparisons)
     Outcome outcome;
-    std::string status;          ///< comparisons: how the reference run ended ("ok", "rejected", ...)
+    std::optional<RunStatus> status;  ///< comparisons: how the reference run ended (none for a check)
     double measured = NAN;       ///< comparisons: max distance / diagonal; checks: the measured value
     double rms = NAN;            ///< comparisons: RMS distance / diagonal
     double hausdorff = NAN;      ///< comparisons, geometric tier: vertex-set Hausdorff / diagonal

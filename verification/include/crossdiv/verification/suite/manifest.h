@@ -11,7 +11,7 @@
 #include "crossdiv/verification/comparisons/loop_comparison.h"
 #include "crossdiv/verification/comparisons/scheme_comparison.h"
 #include "crossdiv/verification/implementations/tag_rules.h"
-#include "crossdiv/verification/harness/output_size.h"
+#include "crossdiv/verification/implementations/output_size.h"
 #include "crossdiv/verification/implementations/program_implementation.h"
 
 namespace crossdiv::verification {
@@ -44,7 +44,7 @@ struct ManifestEntry {
     /// The implementation under test (the last `subject` statement before the case); none: core.
     std::shared_ptr<const ManifestSubject> subject;
     /// A comparison: a job whose final level would have more faces is refused before any work
-    /// (the manifest's `max-faces` statement; harness/output_size.h).
+    /// (the manifest's `max-faces` statement; implementations/output_size.h).
     long long max_faces = kMaxComparedFaces;
 };
 

@@ -52,6 +52,12 @@ struct SuiteOperation {
 /// Every operation, in the order above.
 const std::vector<SuiteOperation>& suite_operations();
 
+/// "comparison", "checks", "study".
+const char* to_string(OperationKind kind);
+/// Every operation's name, kind and (a comparison) scheme, as results.json lists them: what
+/// the report reads to tell the kinds of cases apart.
+nlohmann::json operations_json();
+
 /// @throws InputError naming the unknown operation and the known ones.
 const SuiteOperation& find_operation(std::string_view name);
 

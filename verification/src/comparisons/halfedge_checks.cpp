@@ -1,4 +1,4 @@
-#include "crossdiv/verification/properties/halfedge_checks.h"
+#include "crossdiv/verification/comparisons/halfedge_checks.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include "crossdiv/error.h"
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/subdiv/loop_split_flip.h"
-#include "crossdiv/verification/harness/inputs.h"
+#include "crossdiv/verification/implementations/inputs.h"
 #include "crossdiv/verification/harness/tolerances.h"
 #include "crossdiv/verification/harness/vector_angle.h"
 #include "crossdiv/verification/implementations/registry.h"

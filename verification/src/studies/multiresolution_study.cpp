@@ -1,13 +1,13 @@
 // The multiresolution study: decompose, recompose, move rigidly and edit, on every bundled
 // triangle mesh; the torus edited for the figure.
-#include "crossdiv/verification/suite/multiresolution_study.h"
+#include "crossdiv/verification/studies/multiresolution_study.h"
 
 #include <fmt/format.h>
 
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/verification/comparisons/multiresolution_checks.h"
 #include "crossdiv/verification/harness/tolerances.h"
-#include "suite/studies.h"
+#include "crossdiv/verification/studies/studies.h"
 
 namespace crossdiv::verification {
 

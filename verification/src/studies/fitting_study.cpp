@@ -1,7 +1,7 @@
 // The fitting study: exact recovery of control points from their own limit surface on the
 // catalog, and closest-point fitting of Loop and Catmull-Clark limit surfaces to the CGAL demo
 // meshes and the course bunny, with CGAL's Hausdorff distance at every iteration.
-#include "crossdiv/verification/suite/fitting_study.h"
+#include "crossdiv/verification/studies/fitting_study.h"
 
 #include <fmt/format.h>
 
@@ -13,7 +13,7 @@
 #include "crossdiv/verification/comparisons/limit_fitting_run.h"
 #include "crossdiv/verification/harness/tolerances.h"
 #include "crossdiv/verification/implementations/registry.h"
-#include "suite/studies.h"
+#include "crossdiv/verification/studies/studies.h"
 
 namespace crossdiv::verification {
 

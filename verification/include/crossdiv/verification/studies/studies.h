@@ -1,6 +1,14 @@
 #pragma once
-// The studies of schemes and limit behaviour, each a suite operation over a fixed catalog
-// (operations.h): measured checks, each with its named tolerance, and the full tables.
+/// @file
+/// The studies of schemes and limit behaviour, each a suite operation over a fixed catalog
+/// (operations.h): measured checks, each with its named tolerance, and the full tables. One
+/// file per study in src/studies/ (the larger ones have their own header beside this one).
+///
+/// Adding a study: its file in src/studies/ (a function returning a CheckReport), its
+/// declaration here, one line in suite_operations() (operations.cpp: its name, the catalog it
+/// runs over, a one-line description), and its line in reports/suite-manifest.md. The report
+/// finds it by its kind in results.json; a section of its own for its tables goes in
+/// reports/report/sections.py.
 
 #include "crossdiv/mesh/poly_mesh.h"
 #include "crossdiv/verification/properties/check.h"
@@ -25,7 +33,7 @@ CheckReport spectrum_study();
 /// The convergence table, valence 3..12, levels 1..8.
 CheckReport convergence_study();
 
-/// A mesh as {positions, faces} for the report's figures.
+/// A mesh as {positions, faces} for the report's figures (mesh_json.cpp).
 nlohmann::json mesh_json(const PolyMesh& m);
 
 }  // namespace crossdiv::verification

@@ -1,7 +1,7 @@
 // The isosurface study: marching cubes against exact implicit surfaces as the grid is refined,
 // the asymptotic decider against the minority rule on a field whose faces are ambiguous, and
 // scikit-image's marching cubes (Lewiner's MC33 table and the 1987 table) on the same samples.
-#include "crossdiv/verification/suite/isosurface_study.h"
+#include "crossdiv/verification/studies/isosurface_study.h"
 
 #include <fmt/format.h>
 
@@ -11,7 +11,7 @@
 #include "crossdiv/verification/harness/convergence_order.h"
 #include "crossdiv/verification/harness/tolerances.h"
 #include "crossdiv/verification/implementations/registry.h"
-#include "suite/studies.h"
+#include "crossdiv/verification/studies/studies.h"
 
 namespace crossdiv::verification {
 

@@ -1,4 +1,4 @@
-#include "crossdiv/verification/suite/page_arrays.h"
+#include "crossdiv/verification/pages/page_arrays.h"
 
 namespace crossdiv::verification {
 

@@ -1,4 +1,4 @@
-#include "crossdiv/verification/suite/editor_page.h"
+#include "crossdiv/verification/pages/editor_page.h"
 
 #include <cmath>
 #include <filesystem>

@@ -1,12 +1,12 @@
-#include "crossdiv/verification/suite/levels_page.h"
+#include "crossdiv/verification/pages/levels_page.h"
 
 #include <filesystem>
 #include <fstream>
 
 #include "crossdiv/error.h"
 #include "crossdiv/verification/harness/mesh_topology.h"
-#include "crossdiv/verification/suite/editor_page.h"
-#include "crossdiv/verification/suite/page_arrays.h"
+#include "crossdiv/verification/pages/editor_page.h"
+#include "crossdiv/verification/pages/page_arrays.h"
 
 namespace crossdiv::verification {
 

@@ -1,4 +1,4 @@
-#include "crossdiv/verification/harness/output_size.h"
+#include "crossdiv/verification/implementations/output_size.h"
 
 #include <limits>
 

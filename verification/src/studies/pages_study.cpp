@@ -1,4 +1,4 @@
-#include "crossdiv/verification/suite/pages_study.h"
+#include "crossdiv/verification/studies/pages_study.h"
 
 #include <filesystem>
 
@@ -6,8 +6,8 @@
 #include "crossdiv/datasets/bundled_curves.h"
 #include "crossdiv/verification/harness/mesh_topology.h"
 #include "crossdiv/verification/implementations/registry.h"
-#include "crossdiv/verification/suite/editor_page.h"
-#include "crossdiv/verification/suite/levels_page.h"
+#include "crossdiv/verification/pages/editor_page.h"
+#include "crossdiv/verification/pages/levels_page.h"
 
 namespace crossdiv::verification {
 namespace {

@@ -1,4 +1,4 @@
-#include "crossdiv/verification/suite/divergence_view_file.h"
+#include "crossdiv/verification/pages/divergence_view_file.h"
 
 #include <cmath>
 #include <cstring>
@@ -8,7 +8,7 @@
 #include "crossdiv/error.h"
 #include "crossdiv/mesh/tri_mesh.h"
 #include "crossdiv/verification/harness/json_text.h"
-#include "crossdiv/verification/suite/page_arrays.h"
+#include "crossdiv/verification/pages/page_arrays.h"
 
 namespace crossdiv::verification {
 namespace {

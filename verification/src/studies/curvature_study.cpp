@@ -19,8 +19,8 @@
 #include "crossdiv/verification/harness/convergence_order.h"
 #include "crossdiv/verification/harness/tolerances.h"
 #include "crossdiv/verification/implementations/registry.h"
-#include "crossdiv/verification/suite/curvature_study.h"
-#include "suite/studies.h"
+#include "crossdiv/verification/studies/curvature_study.h"
+#include "crossdiv/verification/studies/studies.h"
 
 namespace crossdiv::verification {
 namespace {

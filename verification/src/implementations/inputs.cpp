@@ -1,4 +1,4 @@
-#include "crossdiv/verification/harness/inputs.h"
+#include "crossdiv/verification/implementations/inputs.h"
 
 #include <algorithm>
 #include <cctype>
