@@ -43,7 +43,7 @@ def build(results, bench, folder, figdir):
              f"- references: {refs}"]
     before, after = sections.mesh_sections(results, mesh, folder, figdir)
     subject = sections.subject_section(mesh)
-    body = [viewer.first_screen(results["cases"], mesh, [r["name"] for r in results.get("references", [])], folder), sections.outcomes_section(s),
+    body = [viewer.first_screen(results["cases"], mesh + schemes, [r["name"] for r in results.get("references", [])], folder), sections.outcomes_section(s),
             *([subject] if subject else []), *before,
             sections.catalogue_section(sections.catalogue_rows(mesh + schemes, curves + surfaces + studies +
                                                               halfedge_cases(results["cases"]))), *after,

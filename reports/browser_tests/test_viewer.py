@@ -21,13 +21,15 @@ import check_viewer  # noqa: E402
 CROSSDIV = os.path.abspath(os.environ.get("CROSSDIV_BIN") or os.path.join(REPORTS, "..", "build", "verification", "crossdiv"))
 
 # Two divergences with a known cause: OpenMesh and CGAL lack Loop's corner rule (open-patch),
-# and no reference has Warren's weights (octahedron); a case where all agree; and the pages
-# study's curve editor and subdivision-levels pages.
+# and no reference has Warren's weights (octahedron); a case where all agree; the pages
+# study's curve editor and subdivision-levels pages; and a polygon scheme's divergence:
+# OpenMesh's Catmull-Clark boundary rule on the quad grid.
 MANIFEST = """suite viewer-test
 case bundled:open-patch  loop weights=loop boundary=edge-and-corner levels=2 tier=weak tolerance=1e-12 against=opensubdiv,openmesh
 case bundled:octahedron  loop weights=warren boundary=edge-only levels=2 tier=weak tolerance=1e-12 against=opensubdiv
 case bundled:tetrahedron loop weights=loop boundary=edge-only levels=1 tier=weak tolerance=1e-12 against=opensubdiv
 case catalog pages
+case bundled:quad-grid   catmull-clark levels=2 tier=weak tolerance=1e-12 against=opensubdiv,openmesh
 """
 
 
@@ -47,10 +49,25 @@ def report(tmp_path_factory):
     return run_suite(str(tmp_path_factory.mktemp("viewer")), MANIFEST)
 
 
+def show_case(driver, text):
+    """Shows the first case of the viewer whose id contains `text`, and waits for it."""
+    index = driver.execute_script("return window.CROSSDIV_VIEWS.findIndex((e) => e.id.includes(arguments[0]))", text)
+    assert index >= 0, f"no view of a case with {text}"
+    driver.execute_script("window.crossdivViewer.ready = false;"
+                          "window.crossdivViewer.show(arguments[0]).then(() => { window.crossdivViewer.ready = true; })", index)
+    check_viewer.wait_for(driver, "return window.crossdivViewer.ready === true", f"the view of {text}")
+
+
+def open_report(driver, report):
+    """Opens the report's index.html and waits for its viewer."""
+    driver.get("file://" + os.path.abspath(os.path.join(report, "index.html")))
+    check_viewer.wait_for(driver, "return window.crossdivViewer && window.crossdivViewer.ready === true", "the viewer")
+
+
 def test_every_divergence_has_a_view_and_the_page_needs_no_network(report):
     views = sorted(os.listdir(os.path.join(report, "views")))
-    # The agreeing tetrahedron has none; both divergences were shrunk to a minimal input.
-    assert views == ["job0-minimal.obj", "job0.js", "job1-minimal.obj", "job1.js"]
+    # The agreeing tetrahedron has none; every divergence was shrunk to a minimal input.
+    assert views == ["job0-minimal.obj", "job0.js", "job1-minimal.obj", "job1.js", "job4-minimal.obj", "job4.js"]
     for name in ("three.min.js", "OrbitControls.js", "viewer.js"):
         assert os.path.getsize(os.path.join(report, "viewer", name)) > 1000
     with open(os.path.join(report, "index.html")) as f:
@@ -89,8 +106,7 @@ def test_a_representative_link_opens_its_case_in_the_viewer(report):
     from selenium.webdriver.common.by import By
     driver = check_viewer.browser()
     try:
-        driver.get("file://" + os.path.abspath(os.path.join(report, "index.html")))
-        check_viewer.wait_for(driver, "return window.crossdivViewer && window.crossdivViewer.ready === true", "the viewer")
+        open_report(driver, report)
         links = [a for a in driver.find_elements(By.CSS_SELECTOR, "a[data-view]") if "octahedron" in a.text]
         assert links, "no link to the octahedron's view"
         links[0].click()
@@ -113,6 +129,36 @@ def test_the_curve_and_levels_pages_draw_and_are_linked(report):
         assert os.path.getsize(os.path.join(report, "screenshots", shot)) > 5000
 
 
+def test_a_polygon_scheme_case_is_drawn_with_its_polygons_and_its_minimal_input(report):
+    # OpenMesh's midpoint-average boundary on the quad grid: the view of every level, the
+    # wireframe of the quads' own edges (no fan diagonal), each reference's last level, the
+    # divergence shrunk to one quad whose reproduce line shows it again.
+    seen = check_viewer.check(report, case="quad-grid")
+    assert any(line.startswith("picked v") and "2 reference(s)" in line for line in seen), seen
+    assert seen[-1] == "no console error", seen
+    with open(os.path.join(report, "results.json")) as f:
+        [case] = [c for c in json.load(f)["cases"] if c["operation"] == "catmull-clark"]
+    assert case["view"] == "views/job4.js" and case["minimal"]["faces"] == 1, case
+    assert "boundary-rule" in case["minimal"]["symptom"]
+    driver = check_viewer.browser()
+    try:
+        open_report(driver, report)
+        show_case(driver, "quad-grid")
+        # Every level's wireframe has the quads' edges: E = 2 n (n + 1) on an n x n grid.
+        edges = driver.execute_script("return window.crossdivViewer.state.view.levels.map((l) => l.edges.length / 2)")
+        faces = driver.execute_script("return window.crossdivViewer.state.view.levels.map((l) => l.sizes.length)")
+        sides = [round(f ** 0.5) for f in faces]
+        assert edges == [2 * n * (n + 1) for n in sides], (edges, faces)
+        panel = driver.find_element(By.CSS_SELECTOR, "#crossdiv-viewer .cv-info").text
+        assert f"{faces[-1]} faces" in panel, panel
+        assert not check_viewer.console_errors(driver)
+    finally:
+        driver.quit()
+    run = subprocess.run([CROSSDIV, "compare", case["minimal"]["mesh"], "--scheme", "catmull-clark", "--boundary", "edge-only",
+                          "--levels", "2", "--against", "openmesh"], cwd=report, capture_output=True, text=True, timeout=120)
+    assert run.returncode == 1 and "boundary-rule" in run.stdout, run.stdout + run.stderr
+
+
 def test_a_blank_levels_view_fails_the_check(report, tmp_path):
     # The check must fail when a level draws nothing: a level whose triangles are gone.
     broken = tmp_path / "blank"
@@ -132,7 +178,7 @@ def test_a_shrunk_case_shows_its_minimal_input_which_reproduces_it(report):
         cases = json.load(f)["cases"]
     # Both divergent cases shrink: the open patch to one triangle, the octahedron (Warren's
     # weights, a valence-4 vertex) to that vertex's fan.
-    shrunk = {c["input"]: c["minimal"] for c in cases if "minimal" in c}
+    shrunk = {c["input"]: c["minimal"] for c in cases if "minimal" in c and c["operation"] == "loop"}
     assert sorted(shrunk) == ["bundled:octahedron", "bundled:open-patch"], shrunk
     assert shrunk["bundled:octahedron"]["faces"] == 4 and "weight-family" in shrunk["bundled:octahedron"]["symptom"]
     minimal = shrunk["bundled:open-patch"]
@@ -144,21 +190,14 @@ def test_a_shrunk_case_shows_its_minimal_input_which_reproduces_it(report):
     assert run.returncode == 1 and "corner-rule" in run.stdout, run.stdout + run.stderr
     driver = check_viewer.browser()
     try:
-        driver.get("file://" + os.path.abspath(os.path.join(report, "index.html")))
-        check_viewer.wait_for(driver, "return window.crossdivViewer && window.crossdivViewer.ready === true", "the viewer")
-        index = driver.execute_script("return window.CROSSDIV_VIEWS.findIndex((e) => e.id.includes('open-patch'))")
-        driver.execute_script("window.crossdivViewer.ready = false;"
-                              "window.crossdivViewer.show(arguments[0]).then(() => { window.crossdivViewer.ready = true; })", index)
-        check_viewer.wait_for(driver, "return window.crossdivViewer.ready === true", "the open patch's view")
+        open_report(driver, report)
+        show_case(driver, "open-patch")
         box = driver.find_element(By.CSS_SELECTOR, "#crossdiv-viewer .cv-minimal")
         assert "1 face(s) still show that" in box.text and minimal["mesh"] in box.text, box.text
         lit = check_viewer.differing_pixels(box.find_element(By.TAG_NAME, "canvas").screenshot_as_png, (255, 255, 255))
         assert lit > 500, f"the minimal input's canvas is blank ({lit} pixels drawn)"
         # The next case shows its own.
-        other = driver.execute_script("return window.CROSSDIV_VIEWS.findIndex((e) => e.id.includes('octahedron'))")
-        driver.execute_script("window.crossdivViewer.ready = false;"
-                              "window.crossdivViewer.show(arguments[0]).then(() => { window.crossdivViewer.ready = true; })", other)
-        check_viewer.wait_for(driver, "return window.crossdivViewer.ready === true", "the octahedron's view")
+        show_case(driver, "octahedron")
         assert "4 face(s) still show that" in box.text and "weight-family" in box.text, box.text
         assert not check_viewer.console_errors(driver)
     finally:

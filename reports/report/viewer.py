@@ -96,14 +96,15 @@ def matrix_table(cases, libraries):
 
 
 def view_entries(mesh_cases):
-    """The cases with a 3D view, as the viewer lists them: failures first, then one per
-    divergence class (its first case), then the rest in job order."""
+    """The cases with a 3D view (of every scheme), as the viewer lists them: failures first, then
+    one per divergence class (its first case), then the rest in job order."""
     entries = []
     for c in mesh_cases:
         if "view" not in c:
             continue
         diverging = [r for r in c["runs"] if r["verdict"] == "diverge"]
-        worst = max(diverging, key=lambda r: r.get("positions", {}).get("max_rel") or 0, default=None)
+        # A Loop run keeps its figures under "positions", another scheme's at the run's top level.
+        worst = max(diverging, key=lambda r: r.get("positions", {}).get("max_rel", r.get("max_rel")) or 0, default=None)
         classes = sorted({r.get("divergence_class") or r["verdict"] for r in diverging})
         entries.append({"job": c["job"], "id": c["id"], "view": c["view"], "classes": classes,
                         "failure": any(_kind(c, r) == "failure" for r in c["runs"]),

@@ -26,6 +26,7 @@
       levels: data.levels.map((l) => ({
         positions: new Float64Array(bytes(l.positions)),
         triangles: new Int32Array(bytes(l.triangles)),
+        sizes: l.sizes ? new Int32Array(bytes(l.sizes)) : null,
         origins: l.origins ? new Int32Array(bytes(l.origins)) : null,
       })),
       references: {},
@@ -35,7 +36,8 @@
     for (const level of view.levels) describeVertices(level);
     if (data.minimal) {
       const m = data.minimal;
-      view.minimal = Object.assign({}, m, { positions: new Float64Array(bytes(m.positions)), triangles: new Int32Array(bytes(m.triangles)) });
+      view.minimal = Object.assign({}, m, { positions: new Float64Array(bytes(m.positions)), triangles: new Int32Array(bytes(m.triangles)),
+                                            sizes: m.sizes ? new Int32Array(bytes(m.sizes)) : null });
       describeVertices(view.minimal);
     }
     loaded[data.job] = view;
@@ -53,14 +55,32 @@
     });
   }
 
+  // The faces' corner cycles: the triangles, or with `sizes` the polygons they fan (a face of
+  // n corners is n - 2 triangles from its first corner: v0 v1 v2, v0 v2 v3, ...).
+  function faceCycles(level) {
+    const t = level.triangles, cycles = [];
+    if (!level.sizes) {
+      for (let i = 0; i < t.length; i += 3) cycles.push([t[i], t[i + 1], t[i + 2]]);
+      return cycles;
+    }
+    let i = 0;
+    for (const n of level.sizes) {
+      const cycle = [t[i], t[i + 1]];
+      for (let k = 0; k < n - 2; ++k, i += 3) cycle.push(t[i + 2]);
+      cycles.push(cycle);
+    }
+    return cycles;
+  }
+
   // Valence (distinct neighbours) and boundary (an edge with one face) of every vertex, and the
-  // edges for the wireframe; linear in the mesh size (each edge keyed once in a Map).
+  // edges for the wireframe (the polygons' edges, not their fans'); linear in the mesh size
+  // (each edge keyed once in a Map).
   function describeVertices(level) {
-    const n = level.positions.length / 3, t = level.triangles;
+    const n = level.positions.length / 3;
     const uses = new Map();
-    for (let i = 0; i < t.length; i += 3)
-      for (let k = 0; k < 3; ++k) {
-        const a = t[i + k], b = t[i + (k + 1) % 3];
+    for (const cycle of faceCycles(level))
+      for (let k = 0; k < cycle.length; ++k) {
+        const a = cycle[k], b = cycle[(k + 1) % cycle.length];
         const key = a < b ? a * n + b : b * n + a;
         uses.set(key, (uses.get(key) || 0) + 1);
       }
@@ -105,11 +125,13 @@
   function vec(p) { return "(" + Array.from(p, (c) => Number.isFinite(c) ? c.toPrecision(12) : "NaN").join(", ") + ")"; }
 
   // The level-0 vertices a vertex of `level` descends from: through the vertex points it is
-  // one vertex, through edge points the ends of each edge, level by level.
+  // one vertex, through edge points the ends of each edge, level by level; none where a level
+  // has no provenance (the schemes other than Loop).
   function ancestors(view, level, vertex) {
     let set = new Set([vertex]);
     for (let l = level; l >= 1; --l) {
       const o = view.levels[l].origins, next = new Set();
+      if (!o) return [];
       for (const v of set) {
         next.add(o[2 * v]);
         if (o[2 * v + 1] >= 0) next.add(o[2 * v + 1]);
@@ -123,6 +145,7 @@
     const L = view.levels[level];
     const where = (L.boundary[v] ? "boundary" : "interior") + ", valence " + L.valence[v];
     if (level === 0) return "input vertex, " + where;
+    if (!L.origins) return "vertex of level " + level + ", " + where;
     const a = L.origins[2 * v], b = L.origins[2 * v + 1];
     return (b < 0 ? "vertex point of v" + a : "edge point of edge (v" + a + ", v" + b + ")") + " of level " + (level - 1) + ", " + where;
   }
@@ -256,7 +279,8 @@
       this.controls.update();
     }
     this.info.innerHTML = "<b>" + escapeHtml(entry.id) + "</b><br>" + escapeHtml(entry.runs.map((r) => r.reference + ": " + r.outcome).join("; ")) +
-      "<br>level " + level + ": " + L.valence.length + " vertices, " + L.triangles.length / 3 + " triangles; " +
+      "<br>level " + level + ": " + L.valence.length + " vertices, " +
+      (L.sizes ? L.sizes.length + " faces; " : L.triangles.length / 3 + " triangles; ") +
       (dist.mapped ? "largest distance to " + escapeHtml(reference) + " " + fmt(dist.max) + " at v" + dist.worst + " (colour scale 0 .. " + fmt(dist.max) + ")"
                    : escapeHtml(reference) + " has no vertex map at this level (grey)");
     this.draw();
@@ -299,7 +323,8 @@
     const run = entry.runs.find((r) => r.reference === reference);
     this.pickedInfo = { level, vertex, cls: vertexClass(view, level, vertex), valence: L.valence[vertex], ancestors: roots, rows };
     this.picked.innerHTML = "<b>v" + vertex + "</b> at level " + level + (vertex === entry.worst_vertex && level === view.levels.length - 1 ? " (the case's worst vertex)" : "") +
-      "<br>" + escapeHtml(this.pickedInfo.cls) + "<br>descends from input vertices " + roots.map((a) => "v" + a).join(", ") +
+      "<br>" + escapeHtml(this.pickedInfo.cls) +
+      (roots.length ? "<br>descends from input vertices " + roots.map((a) => "v" + a).join(", ") : "") +
       (run ? "<br>" + escapeHtml(reference) + ": " + escapeHtml(run.outcome) + (run.explanation ? " — " + escapeHtml(run.explanation) : "") : "") +
       "<table><tr><th>implementation</th><th>position</th><th>distance</th></tr>" +
       rows.map((r) => "<tr><td>" + r.map(escapeHtml).join("</td><td>") + "</td></tr>").join("") + "</table>";

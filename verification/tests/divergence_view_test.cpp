@@ -7,8 +7,10 @@
 #include <string>
 
 #include "crossdiv/verification/comparisons/loop_comparison.h"
+#include "crossdiv/verification/comparisons/scheme_comparison.h"
 #include "crossdiv/verification/implementations/inputs.h"
 #include "crossdiv/verification/pages/divergence_view_file.h"
+#include "library_guard.h"
 
 namespace crossdiv::verification {
 namespace {
@@ -48,6 +50,50 @@ TEST(DivergenceView, AReferenceWithoutAMapAtALevelIsNull) {
     EXPECT_NE(script.find("\"ref\":[null,\""), std::string::npos) << script;
     // Origins (0, -1) (1, -1) (0, 1): 00000000 FFFFFFFF 01000000 FFFFFFFF 00000000 01000000.
     EXPECT_NE(script.find("\"origins\":\"AAAAAP////8BAAAA/////wAAAAABAAAA\""), std::string::npos) << script;
+}
+
+TEST(DivergenceView, APolygonLevelNamesItsFaceSizes) {
+    PolyMesh quad;
+    quad.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
+    quad.add_face({0, 1, 2, 3});
+    DivergenceView view;
+    view.levels = {quad};
+    const std::string script = divergence_view_script(view, 0, "core");
+    // The quad fanned into (0, 1, 2) (0, 2, 3), and its one size, 4: 04000000.
+    EXPECT_NE(script.find("\"triangles\":\"AAAAAAEAAAACAAAAAAAAAAIAAAADAAAA\""), std::string::npos) << script;
+    EXPECT_NE(script.find("\"sizes\":\"BAAAAA==\""), std::string::npos) << script;
+    EXPECT_EQ(divergence_view_script(DivergenceView{{triangle()}, {}, {}, {}}, 0, "core").find("sizes"), std::string::npos);
+}
+
+TEST(DivergenceView, ACatmullClarkBoundaryRuleDivergenceKeepsEveryLevelAndEachReferencesLast) {
+    CROSSDIV_REQUIRE_LIBRARIES("opensubdiv", "openmesh");
+    SchemeRequest req;
+    req.levels = 2;
+    req.references = {"opensubdiv", "openmesh"};
+    req.view_max_faces = 1000;
+    const PolyMesh input = load_input("bundled:quad-grid");
+    const SchemeComparison c = compare_scheme(input, "bundled:quad-grid", req);
+    ASSERT_TRUE(c.view.has_value());
+    const DivergenceView& v = *c.view;
+    ASSERT_EQ(v.levels.size(), 3u);  // Catmull-Clark is primal: every level, in core's numbering
+    EXPECT_EQ(v.levels[2].num_faces(), 16 * input.num_faces());
+    EXPECT_TRUE(v.origins.empty());  // no provenance drawn for a polygon scheme yet
+    for (const char* ref : {"opensubdiv", "openmesh"}) {
+        const auto& at = v.references.at(ref);
+        ASSERT_EQ(at.size(), 3u);
+        EXPECT_TRUE(at[0].empty() && at[1].empty());  // matched at the last level only
+        ASSERT_EQ(at[2].size(), v.levels[2].positions.size());
+    }
+    // OpenSubdiv sits on core; OpenMesh's midpoint-average corners do not (a corner of the
+    // grid is vertex 0, kept first).
+    EXPECT_LE((v.references.at("opensubdiv")[2][0] - v.levels[2].positions[0]).norm(), 1e-15);
+    EXPECT_GT((v.references.at("openmesh")[2][0] - v.levels[2].positions[0]).norm(), 1e-3);
+    // No view when every reference agrees, or past the size limit.
+    req.references = {"opensubdiv"};
+    EXPECT_FALSE(compare_scheme(input, "bundled:quad-grid", req).view.has_value());
+    req.references = {"opensubdiv", "openmesh"};
+    req.view_max_faces = 10;
+    EXPECT_FALSE(compare_scheme(input, "bundled:quad-grid", req).view.has_value());
 }
 
 TEST(DivergenceView, ACornerRuleDivergenceKeepsEveryLevelAndEachReference) {

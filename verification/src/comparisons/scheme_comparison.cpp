@@ -2,10 +2,12 @@
 
 #include "crossdiv/verification/harness/mesh_topology.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <map>
 
 #include "crossdiv/error.h"
 #include "harness/sci.h"
@@ -143,6 +145,8 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
             break;
         }
 
+    // For the 3D view: each matched reference's last level in our numbering.
+    std::map<std::string, std::vector<Vec3>> at_last_level;
     for (const Implementation* impl : refs) {
         const Implementation& ref = *impl;
         SchemeReferenceRun run;
@@ -250,6 +254,13 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
         run.comparison = compare_meshes(ours, theirs, rules_differ && ours.num_vertices() != same_rule_mesh.num_vertices()
                                                           ? no_map
                                                           : run.correspondence.ref_to_ours);
+        if (req.view_max_faces > 0 && !(rules_differ && ours.num_vertices() != same_rule_mesh.num_vertices())) {
+            std::vector<Vec3>& mapped = at_last_level[ref.name()];
+            mapped.assign(ours.positions.size(), Vec3::Constant(NAN));
+            for (size_t i = 0; i < run.correspondence.ref_to_ours.size(); ++i)
+                if (const int v = run.correspondence.ref_to_ours[i]; v >= 0 && v < ours.num_vertices())
+                    mapped[v] = theirs.positions[i];
+        }
         const MeshComparison with_rule = compare_meshes(same_rule_mesh, theirs, run.correspondence.ref_to_ours);
         run.max_rel_with_reference_rule = with_rule.max_rel;
         const bool rule_explains = rules_differ && with_rule.topology_equal() && with_rule.max_rel <= tolerance;
@@ -329,6 +340,21 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
             run.explanation = found.explanation;
         }
         out.runs.push_back(std::move(run));
+    }
+    const bool diverges = std::any_of(out.runs.begin(), out.runs.end(), [](const SchemeReferenceRun& r) {
+        return r.verdict == Verdict::Diverge;
+    });
+    if (diverges && req.view_max_faces > 0 && out.core_error.empty() && ours.num_faces() <= req.view_max_faces) {
+        // Every level of a primal scheme; the input and the last level of the others (their
+        // levels are matched by position at the last level only).
+        DivergenceView& view = out.view.emplace();
+        if (!our_levels.empty()) view.levels.assign(our_levels.begin(), our_levels.end());
+        else view.levels = {input, ours};
+        for (auto& [name, positions] : at_last_level) {
+            std::vector<std::vector<Vec3>>& levels = view.references[name];
+            levels.resize(view.levels.size());
+            levels.back() = std::move(positions);
+        }
     }
     return out;
 }

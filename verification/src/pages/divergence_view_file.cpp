@@ -35,8 +35,10 @@ std::string divergence_view_script(const DivergenceView& view, int job, const st
     using nlohmann::json;
     json levels = json::array();
     for (size_t l = 0; l < view.levels.size(); ++l) {
-        json level{{"positions", positions64(view.levels[l])}, {"triangles", triangles32(view.levels[l])}};
-        if (l >= 1) level["origins"] = origins32(view.origins.at(l - 1));
+        const PolyMesh& m = view.levels[l];
+        json level{{"positions", positions64(m)}, {"triangles", triangles32(m)}};
+        if (!m.all_triangles()) level["sizes"] = face_sizes32(m);
+        if (l >= 1 && l - 1 < view.origins.size()) level["origins"] = origins32(view.origins[l - 1]);
         levels.push_back(std::move(level));
     }
     json references = json::object();
@@ -50,11 +52,13 @@ std::string divergence_view_script(const DivergenceView& view, int job, const st
         references[name] = std::move(per_level);
     }
     json data{{"job", job}, {"subject", subject}, {"levels", levels}, {"references", references}};
-    if (const auto& m = view.minimal)
+    if (const auto& m = view.minimal) {
         data["minimal"] = {{"reference", m->reference},     {"symptom", m->symptom},
                            {"tests", m->tests},             {"faces", m->mesh.num_faces()},
                            {"positions", positions64(m->mesh)}, {"triangles", triangles32(m->mesh)},
                            {"reproduce", m->reproduce}};
+        if (!m->mesh.all_triangles()) data["minimal"]["sizes"] = face_sizes32(m->mesh);
+    }
     return "crossdivView(" + json_text(data) + ");\n";
 }
 

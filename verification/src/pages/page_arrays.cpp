@@ -24,6 +24,12 @@ std::string positions64(const PolyMesh& mesh) {
     return base64(xyz);
 }
 
+std::string face_sizes32(const PolyMesh& mesh) {
+    std::vector<int32_t> sizes(static_cast<size_t>(mesh.num_faces()));
+    for (int f = 0; f < mesh.num_faces(); ++f) sizes[f] = mesh.face_size(f);
+    return base64(sizes);
+}
+
 std::string triangles32(const PolyMesh& mesh) {
     std::vector<int32_t> corners;
     for (int f = 0; f < mesh.num_faces(); ++f) {

@@ -70,19 +70,43 @@ std::optional<MinimalDivergence> shrink_for_view(const TriMesh& mesh, const std:
     return std::nullopt;
 }
 
-/// Writes the case's 3D view, when it has one, as views/jobN.js (and its minimal input as
-/// views/jobN-minimal.obj) and names it in the case.
-void write_view(const LoopComparison& c, const SuiteJob& job, const std::string& out_dir, CaseRecord& rec) {
-    if (!c.view) return;
+/// The case's divergence from a library reference of another scheme shrunk, as shrink_for_view
+/// shrinks Loop's (crossdiv diff --scheme S).
+std::optional<MinimalDivergence> shrink_scheme_for_view(const PolyMesh& mesh, const std::string& input,
+                                                        const SchemeRequest& req, const SchemeComparison& c,
+                                                        const std::string& obj_name) {
+    if (mesh.num_faces() > kShrinkMaxFaces) return std::nullopt;
+    for (const SchemeReferenceRun& run : c.runs) {
+        if (run.verdict != Verdict::Diverge || find_implementation(run.reference).confines_itself()) continue;
+        SchemeRequest one = req;
+        one.references = {run.reference};
+        one.view_max_faces = 0;
+        try {
+            const SchemeShrinkResult r = shrink_scheme_divergence(mesh, input, one);
+            return MinimalDivergence{run.reference, describe(r.symptom, "core", run.reference), r.minimal, r.tests,
+                                     "crossdiv compare " + obj_name + " --scheme " + to_string(req.scheme) + " --boundary " +
+                                         boundary_name(req.scheme, req.rule) + " --levels " + std::to_string(req.levels) +
+                                         " --against " + run.reference};
+        } catch (const InputError&) {
+            // Nothing to shrink here (the symptom needs the whole input, or a refusal): the view stands alone.
+        }
+    }
+    return std::nullopt;
+}
+
+/// Writes the case's 3D view as views/jobN.js (and its minimal input as views/jobN-minimal.obj)
+/// and names it in the case.
+void write_view(const DivergenceView& view, const std::string& subject, const SuiteJob& job, const std::string& out_dir,
+                CaseRecord& rec) {
     const std::string name = "views/job" + std::to_string(job.index) + ".js";
     fs::create_directories(fs::path(out_dir) / "views");
-    write_divergence_view(*c.view, job.index, c.subject, (fs::path(out_dir) / name).string());
+    write_divergence_view(view, job.index, subject, (fs::path(out_dir) / name).string());
     rec.detail["view"] = name;
-    if (c.view->minimal) {
+    if (view.minimal) {
         const std::string obj = minimal_obj_name(job);
-        write_mesh((fs::path(out_dir) / obj).string(), c.view->minimal->mesh);
-        rec.detail["minimal"] = {{"mesh", obj}, {"reference", c.view->minimal->reference},
-                                 {"faces", c.view->minimal->mesh.num_faces()}, {"symptom", c.view->minimal->symptom}};
+        write_mesh((fs::path(out_dir) / obj).string(), view.minimal->mesh);
+        rec.detail["minimal"] = {{"mesh", obj}, {"reference", view.minimal->reference},
+                                 {"faces", view.minimal->mesh.num_faces()}, {"symptom", view.minimal->symptom}};
     }
 }
 
@@ -113,21 +137,25 @@ CaseRecord run_loop(const SuiteJob& job, const std::string& out_dir) {
         refused.empty() ? compare_loop(mesh, job.input, req) : compare_loop_refused(mesh, job.input, req, refused);
     if (c.view) c.view->minimal = shrink_for_view(mesh, job.input, req, c, minimal_obj_name(job));
     CaseRecord rec = case_record(c);
-    write_view(c, job, out_dir, rec);
+    if (c.view) write_view(*c.view, c.subject, job, out_dir, rec);
     return rec;
 }
 
 /// Another scheme's case: core against every reference of the case, under the rule the case
 /// names or the input's tags ask for (what the tags resolved to is noted in the record).
-CaseRecord run_scheme(const SuiteJob& job, const std::string&) {
+CaseRecord run_scheme(const SuiteJob& job, const std::string& out_dir) {
     const ManifestEntry& entry = *job.entry;
     SchemeRequest req = entry.scheme_request;
+    req.view_max_faces = kViewMaxFaces;
     PolyMesh input = load_input(job.input);
     require_refined_size(input, req.scheme, req.levels, entry.max_faces, job.input, "the manifest's max-faces");
     std::vector<std::string> notes;
     req.rule = rule_with_tags(req.scheme, entry.rule_flags, input, notes);
-    CaseRecord rec = case_record(compare_scheme(input, job.input, req));
+    SchemeComparison c = compare_scheme(input, job.input, req);
+    if (c.view) c.view->minimal = shrink_scheme_for_view(input, job.input, req, c, minimal_obj_name(job));
+    CaseRecord rec = case_record(c);
     for (const std::string& note : notes) rec.detail["notes"].push_back(note);
+    if (c.view) write_view(*c.view, "core", job, out_dir, rec);
     return rec;
 }
 

@@ -17,6 +17,7 @@
 #include "crossdiv/verification/harness/mesh_comparison.h"
 #include "crossdiv/verification/harness/correspondence.h"
 #include "crossdiv/verification/harness/isolate.h"
+#include "crossdiv/verification/comparisons/divergence_view.h"
 #include "crossdiv/verification/harness/tier.h"
 #include "crossdiv/verification/harness/tolerances.h"
 #include "crossdiv/verification/comparisons/rule_identification.h"
@@ -42,30 +43,6 @@ struct LoopComparisonRequest {
     /// each reference's positions (the report's 3D view), if the last level has at most this
     /// many faces.
     int view_max_faces = 0;
-};
-
-/// What the report's 3D viewer shows of a case where some reference diverges: the
-/// implementation under test's levels 0..N with each vertex's provenance, and each matched
-/// reference's positions at every level in that numbering.
-/// A case's divergence shrunk to a small input that still shows it (comparisons/shrink.h, as
-/// `crossdiv diff` shrinks), shown beside the case's 3D view.
-struct MinimalDivergence {
-    std::string reference;  ///< the reference whose divergence was shrunk
-    std::string symptom;    ///< what persisted: "opensubdiv diverges from core (corner-rule)"
-    PolyMesh mesh;          ///< the minimal input
-    int tests = 0;          ///< comparisons run while shrinking
-    std::string reproduce;  ///< the crossdiv compare line that shows it on the minimal mesh's file
-};
-
-struct DivergenceView {
-    std::vector<PolyMesh> levels;                    ///< levels 0..N of the implementation under test
-    std::vector<std::vector<VertexOrigin>> origins;  ///< origins[l-1]: where each vertex of level l came from
-    /// Per reference, its positions at levels 0..N in our numbering: an empty level has no
-    /// vertex map there (a match by position sees the last level only); NaN marks a vertex
-    /// the reference has no match for.
-    std::map<std::string, std::vector<std::vector<Vec3>>> references;
-    /// The divergence of one library reference shrunk, when the suite made one.
-    std::optional<MinimalDivergence> minimal;
 };
 
 /// The outcome of one reference on one input.

@@ -7,10 +7,12 @@
 /// (loop_comparison.h), which matches vertices level by level through provenance.
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "crossdiv/mesh/poly_mesh.h"
+#include "crossdiv/verification/comparisons/divergence_view.h"
 #include "crossdiv/verification/harness/verdict.h"
 #include "crossdiv/verification/harness/mesh_comparison.h"
 #include "crossdiv/verification/harness/correspondence.h"
@@ -40,6 +42,9 @@ struct SchemeRequest {
     /// float tier (weak, tolerances::kFloatAgreementUlps) whatever the tier.
     Tier tier = Tier::Weak;
     double tolerance = tolerances::kAgreementRelative;  ///< relative to our diagonal
+    /// Keep, when some reference diverges, core's levels with each matched reference's last
+    /// level (the report's 3D view), if core's last level has at most this many faces.
+    int view_max_faces = 0;
 };
 
 /// One reference on one input.
@@ -77,6 +82,7 @@ struct SchemeComparison {
     std::string core_error;  ///< non-empty: core refused the input (the message)
     std::vector<std::string> notes;  ///< how the references were chosen, when not as asked
     std::vector<SchemeReferenceRun> runs;
+    std::optional<DivergenceView> view;  ///< see SchemeRequest::view_max_faces
     bool all_agree() const;
 };
 

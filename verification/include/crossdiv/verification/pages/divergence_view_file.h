@@ -8,8 +8,10 @@
 /// The script calls `crossdivView({...})` with (schema in reports/results-schema.md):
 /// - `job`, `subject` (the implementation under test);
 /// - `levels[l]`: `positions` (float64 xyz per vertex), `triangles` (int32 corners; a polygon is
-///   fanned from its first corner), and for l >= 1 `origins` (int32 pairs: the vertex point of
-///   old vertex a as (a, -1), the edge point of old edge (a, b) as (a, b));
+///   fanned from its first corner), `sizes` when some face is not a triangle (int32 corners per
+///   face: the viewer draws the polygons' edges, not the fans'), and for l >= 1 where the
+///   provenance is known (Loop) `origins` (int32 pairs: the vertex point of old vertex a as
+///   (a, -1), the edge point of old edge (a, b) as (a, b));
 /// - `references[name][l]`: float32 xyz per vertex, the reference's position minus ours (NaN:
 ///   unmatched), or null where the reference has no vertex map at level l. An offset in float32
 ///   keeps the reference's value to 1e-7 of its distance from ours, far finer than any
@@ -20,7 +22,7 @@
 
 #include <string>
 
-#include "crossdiv/verification/comparisons/loop_comparison.h"
+#include "crossdiv/verification/comparisons/divergence_view.h"
 
 namespace crossdiv::verification {
 

@@ -31,6 +31,9 @@ std::string base64(const std::vector<T>& values) {
 std::string positions64(const PolyMesh& mesh);
 /// int32 corners of triangles; a polygon is fanned from its first corner.
 std::string triangles32(const PolyMesh& mesh);
+/// Every face's number of corners as int32 (with triangles32, the faces drawn as polygons: a
+/// face of n corners is n - 2 of the triangles, fanned from its first corner).
+std::string face_sizes32(const PolyMesh& mesh);
 /// int32 vertex pairs, one per edge (MeshTopology::edge_list).
 std::string edges32(const std::vector<std::array<int, 2>>& edges);
 

@@ -1,0 +1,40 @@
+#pragma once
+/// @file
+/// What the report's 3D viewer shows of a case where some reference diverges, for every
+/// scheme: the implementation under test's levels with each vertex's provenance where it is
+/// known, and each matched reference's positions in that numbering; and, when the suite made
+/// one, the divergence shrunk to a small input (comparisons/shrink.h, as `crossdiv diff`).
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "crossdiv/mesh/poly_mesh.h"
+#include "crossdiv/subdiv/loop.h"
+
+namespace crossdiv::verification {
+
+/// A case's divergence shrunk to a small input that still shows it, shown beside its view.
+struct MinimalDivergence {
+    std::string reference;  ///< the reference whose divergence was shrunk
+    std::string symptom;    ///< what persisted: "opensubdiv diverges from core (corner-rule)"
+    PolyMesh mesh;          ///< the minimal input
+    int tests = 0;          ///< comparisons run while shrinking
+    std::string reproduce;  ///< the crossdiv compare line that shows it on the minimal mesh's file
+};
+
+struct DivergenceView {
+    std::vector<PolyMesh> levels;  ///< levels 0..N of the implementation under test (polygons as polygons)
+    /// origins[l-1]: where each vertex of level l came from (a vertex or an edge of level l-1);
+    /// Loop's levels have them; a level without them shows no provenance.
+    std::vector<std::vector<VertexOrigin>> origins;
+    /// Per reference, its positions at levels 0..N in our numbering: an empty level has no
+    /// vertex map there (a match by position sees the last level only); NaN marks a vertex
+    /// the reference has no match for.
+    std::map<std::string, std::vector<std::vector<Vec3>>> references;
+    /// The divergence of one library reference shrunk, when the suite made one.
+    std::optional<MinimalDivergence> minimal;
+};
+
+}  // namespace crossdiv::verification
