@@ -13,6 +13,7 @@
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/io/volume_io.h"
 #include "crossdiv/verification/comparisons/isosurface_comparison.h"
+#include "crossdiv/verification/implementations/registry.h"
 
 namespace crossdiv::cli {
 namespace {
@@ -88,7 +89,8 @@ int run_isosurface(const IsosurfaceArgs& a) {
     }
     for (const std::string& ref : references) {
         const std::string method = ref == "skimage" ? "lewiner" : "lorensen";
-        const verification::SkimageRun run = verification::run_skimage_marching_cubes(grid, options, method);
+        const verification::IsosurfaceRun run =
+            verification::run_isosurface(verification::find_implementation("skimage"), grid, options, method);
         if (run.outcome.status != verification::RunStatus::Ok) {
             fmt::print("  {}: {}\n", ref, run.outcome.summary());
             continue;

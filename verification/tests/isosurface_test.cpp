@@ -8,6 +8,7 @@
 
 #include "crossdiv/datasets/implicit_surfaces.h"
 #include "crossdiv/verification/comparisons/isosurface_comparison.h"
+#include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/verification/studies/isosurface_study.h"
 
 namespace crossdiv::verification {
@@ -66,7 +67,7 @@ TEST(CompareIsosurfaces, AQuadSplitTheOtherWayIsAnotherTriangulation) {
 }
 
 TEST(SkimageOutcome, FailuresAreTheReferencesAndVerticesDecide) {
-    SkimageRun run;
+    IsosurfaceRun run;
     run.outcome.status = RunStatus::Unavailable;
     EXPECT_EQ(skimage_outcome(run, nullptr).verdict, Verdict::RefUnavailable);
     run.outcome.status = RunStatus::Timeout;
@@ -81,11 +82,26 @@ TEST(SkimageOutcome, FailuresAreTheReferencesAndVerticesDecide) {
     EXPECT_EQ(skimage_outcome(run, &c).cls, DivergenceClass::Unexplained);
 }
 
+TEST(IsosurfaceImplementations, ScikitImageIsOneAndTheOthersRefuse) {
+    // scikit-image is reached as every implementation is: through the registry, by capability.
+    const std::vector<const Implementation*> have = references_with(&Capabilities::isosurface);
+    ASSERT_EQ(have.size(), 1u);
+    EXPECT_EQ(have[0]->name(), "skimage");
+    EXPECT_EQ(have[0]->kind(), ImplementationKind::Program);
+    EXPECT_TRUE(have[0]->confines_itself());
+    const ScalarGrid grid = sphere_grid(5);
+    // A method it lacks, and an implementation without marching cubes: refusals, recorded.
+    EXPECT_EQ(run_isosurface(*have[0], grid, {}, "dual-contouring").outcome.status, RunStatus::Rejected);
+    const IsosurfaceRun core = run_isosurface(core_implementation(), grid, {}, "lewiner");
+    EXPECT_EQ(core.outcome.status, RunStatus::Rejected);
+    EXPECT_NE(core.outcome.message.find("core has no isosurfaces"), std::string::npos) << core.outcome.message;
+}
+
 // scikit-image (installed by run.sh) on the same samples: every crossing matches to float32
 // rounding, and its faces are oriented as ours.
 TEST(SkimageMarchingCubes, MatchesEveryCrossingOfASphere) {
     const ScalarGrid grid = sphere_grid(21);
-    const SkimageRun run = run_skimage_marching_cubes(grid, {}, "lewiner");
+    const IsosurfaceRun run = run_isosurface(find_implementation("skimage"), grid, {}, "lewiner");
     ASSERT_EQ(run.outcome.status, RunStatus::Ok) << run.outcome.summary();
     const IsosurfaceComparison c = compare_isosurfaces(marching_cubes(grid, {}).mesh, run.mesh, grid);
     EXPECT_EQ(c.ours_unmatched + c.theirs_unmatched, 0) << c.explanation;

@@ -5,20 +5,16 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
-#include <filesystem>
 #include <limits>
 #include <tuple>
 
 #include "crossdiv/io/mesh_io.h"
-#include "crossdiv/io/volume_io.h"
 #include "crossdiv/mesh/mesh_checks.h"
-#include "crossdiv/verification/harness/install_paths.h"
 #include "crossdiv/verification/harness/mesh_topology.h"
-#include "crossdiv/verification/harness/process.h"
-#include "crossdiv/verification/harness/temporary_folder.h"
 #include "crossdiv/verification/harness/tolerances.h"
-#include "crossdiv/verification/implementations/program_implementation.h"
+#include "crossdiv/adapters/reference.h"
 #include "harness/point_cloud.h"
 
 namespace crossdiv::verification {
@@ -48,41 +44,18 @@ const char* to_string(IsosurfaceAgreement a) {
     return "?";
 }
 
-SkimageRun run_skimage_marching_cubes(const ScalarGrid& grid, const IsosurfaceOptions& options, const std::string& method,
-                                      double timeout_seconds) {
-    SkimageRun run;
-    const TemporaryFolder folder("skimage");
-    const std::string volume = (folder.path() / "volume.mhd").string(), out = (folder.path() / "surface.obj").string();
-    const std::string err = (folder.path() / "stderr.txt").string();
-    write_metaimage(volume, grid);
-    // Debian's python has scikit-image; another python3 earlier on PATH may not.
-    const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-    const ProcessResult p = run_confined({python, adapters_dir() + "/skimage/skimage_marching_cubes.py", volume,
-                                          fmt::format("{:.17g}", options.level),
-                                          options.inside == InsideIs::Below ? "below" : "above", method, out},
-                                         {folder.path().string(), timeout_seconds, "", err});
-    run.outcome.seconds = p.seconds;
-    const std::string said = tail_of_file(err);
-    if (!p.started) {
-        run.outcome = {RunStatus::Unavailable, p.start_error, p.seconds};
-    } else if (p.timed_out) {
-        run.outcome = {RunStatus::Timeout, fmt::format("killed after {:.0f} s", timeout_seconds), p.seconds};
-    } else if (p.signal != 0) {
-        run.outcome = {RunStatus::Crashed, fmt::format("signal {}: {}", p.signal, said), p.seconds};
-    } else if (p.exit_code == 3) {
-        run.outcome = {RunStatus::Unavailable, said, p.seconds};  // scikit-image is not installed
-    } else if (p.exit_code != 0) {
-        run.outcome = {RunStatus::ExitStatus, fmt::format("exit status {}: {}", p.exit_code, said), p.seconds};
-    } else {
-        try {
-            const PolyMesh result = read_program_result(out, "skimage");
-            run.mesh = to_tri_mesh(result, "an isosurface");
-        } catch (const ImplementationFailure& e) {
-            run.outcome = {e.status(), e.what(), p.seconds};
-        } catch (const InputError& e) {
-            run.outcome = {RunStatus::NotTriangles, e.what(), p.seconds};
-        }
+IsosurfaceRun run_isosurface(const Implementation& implementation, const ScalarGrid& grid, const IsosurfaceOptions& options,
+                             const std::string& method) {
+    IsosurfaceRun run;
+    const auto t0 = std::chrono::steady_clock::now();
+    try {
+        run.mesh = implementation.isosurface(grid, options, method);
+    } catch (const ImplementationFailure& e) {
+        run.outcome = {e.status(), e.what(), 0};
+    } catch (const adapters::Rejected& e) {
+        run.outcome = {RunStatus::Rejected, e.what(), 0};
     }
+    run.outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return run;
 }
 

@@ -98,6 +98,10 @@ size_t Implementation::refine_polygons_native(const PolyMesh& mesh, const Refine
     return refine_last(mesh, request).num_faces();
 }
 
+TriMesh Implementation::isosurface(const ScalarGrid&, const IsosurfaceOptions&, const std::string&) const {
+    lacks("isosurfaces");
+}
+
 adapters::LimitPoints Implementation::limit_points(const PolyMesh&, const RefineRequest&) const { lacks("limit positions"); }
 
 adapters::LimitEvaluation Implementation::limit_surface(const PolyMesh&, Scheme scheme, int,

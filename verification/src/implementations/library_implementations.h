@@ -17,6 +17,7 @@ std::unique_ptr<Implementation> make_opensubdiv_implementation();
 std::vector<std::unique_ptr<Implementation>> make_openmesh_implementations();
 std::vector<std::unique_ptr<Implementation>> make_cgal_implementations();
 std::unique_ptr<Implementation> make_eigen_implementation();
+std::unique_ptr<Implementation> make_skimage_implementation();
 
 /// The scheme support of one rule list, for the declarations below.
 inline SchemeSupport supports(Scheme scheme, std::vector<SchemeRule> rules, bool creases = false, int max_valence = 0,

@@ -29,6 +29,9 @@ std::vector<std::unique_ptr<Implementation>> build() {
 #ifdef CROSSDIV_HAS_EIGEN_SPLINES
     all.push_back(detail::make_eigen_implementation());
 #endif
+    // A program (adapters/skimage): always listed; a machine without scikit-image makes its
+    // runs unavailable.
+    all.push_back(detail::make_skimage_implementation());
     return all;
 }
 

@@ -15,7 +15,7 @@
 
 namespace crossdiv::verification {
 
-Outcome skimage_outcome(const SkimageRun& run, const IsosurfaceComparison* c) {
+Outcome skimage_outcome(const IsosurfaceRun& run, const IsosurfaceComparison* c) {
     switch (run.outcome.status) {
         case RunStatus::Ok: break;
         case RunStatus::Unavailable: return {Verdict::RefUnavailable, DivergenceClass::None};
@@ -135,7 +135,7 @@ json ambiguity(CheckReport& out, json& figures) {
                                                                              row["decider"]["mesh_errors"].get<int>(),
                                          "the asymptotic decider: edges of one triangle plus check_mesh errors"));
         for (const char* method : {"lewiner", "lorensen"}) {
-            const SkimageRun run = run_skimage_marching_cubes(grid, {}, method);
+            const IsosurfaceRun run = run_isosurface(find_implementation("skimage"), grid, {}, method);
             row[std::string("skimage_") + method] =
                 run.outcome.status == RunStatus::Ok ? measures_json(measure_isosurface(run.mesh)) : json{{"failed", run.outcome.summary()}};
         }
@@ -153,7 +153,7 @@ json against_skimage(CheckReport& out) {
     grids.emplace_back("ambiguous field 17^3", datasets::ambiguous_field(17));
     for (const auto& [subject, grid] : grids) {
         const Isosurface ours = marching_cubes(grid, {});
-        const SkimageRun run = run_skimage_marching_cubes(grid, {}, "lewiner");
+        const IsosurfaceRun run = run_isosurface(find_implementation("skimage"), grid, {}, "lewiner");
         json row = {{"subject", subject}, {"status", to_string(run.outcome.status)}, {"seconds", run.outcome.seconds}};
         std::optional<IsosurfaceComparison> c;
         if (run.outcome.status == RunStatus::Ok) {

@@ -10,6 +10,7 @@
 
 #include "crossdiv/mesh/tri_mesh.h"
 #include "crossdiv/verification/harness/isolate.h"
+#include "crossdiv/verification/implementations/implementation.h"
 #include "crossdiv/volume/marching_cubes.h"
 
 namespace crossdiv::verification {
@@ -27,14 +28,15 @@ struct IsosurfaceMeasures {
 };
 IsosurfaceMeasures measure_isosurface(const TriMesh& mesh);
 
-/// A run of scikit-image's marching cubes (adapters/skimage/skimage_marching_cubes.py).
-struct SkimageRun {
-    RunOutcome outcome;  ///< ok, or how the program failed (unavailable when not installed)
+/// A run of an implementation's marching cubes (Implementation::isosurface).
+struct IsosurfaceRun {
+    RunOutcome outcome;  ///< ok, or how it failed (unavailable when the program is not installed)
     TriMesh mesh;
 };
-/// scikit-image's method: "lewiner" (MC33) or "lorensen" (1987).
-SkimageRun run_skimage_marching_cubes(const ScalarGrid& grid, const IsosurfaceOptions& options, const std::string& method,
-                                      double timeout_seconds = 120);
+/// `implementation`'s isosurface by `method` ("lewiner" or "lorensen" for scikit-image), its
+/// failure recorded in the outcome, never thrown.
+IsosurfaceRun run_isosurface(const Implementation& implementation, const ScalarGrid& grid, const IsosurfaceOptions& options,
+                             const std::string& method);
 
 /// How two isosurfaces of the same samples relate, from the closest to the farthest.
 enum class IsosurfaceAgreement {

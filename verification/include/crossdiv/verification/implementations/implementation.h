@@ -19,6 +19,7 @@
 #include "crossdiv/mesh/tri_mesh.h"
 #include "crossdiv/verification/harness/isolate.h"
 #include "crossdiv/verification/implementations/scheme.h"
+#include "crossdiv/volume/marching_cubes.h"
 
 namespace crossdiv::verification {
 
@@ -63,6 +64,7 @@ struct Capabilities {
     bool curvatures = false;          ///< per-vertex principal curvatures of a triangle mesh
     bool hausdorff_distance = false;  ///< two-sided Hausdorff distance between triangle meshes
     bool simplification = false;      ///< edge-collapse simplification to an edge budget
+    bool isosurface = false;          ///< marching cubes of a sampled scalar field
     Precision precision = Precision::Double;
 };
 
@@ -170,6 +172,11 @@ public:
     /// The mesh with edges collapsed until fewer than `edges` remain, topology kept.
     /// @throws adapters::Rejected for a mesh it cannot take, naming the element.
     virtual TriMesh simplify(const TriMesh& mesh, int edges) const;
+    /// The isosurface of `grid` at `options.level` by the implementation's marching cubes named
+    /// `method` (scikit-image: "lewiner", MC33, or "lorensen", 1987).
+    /// @throws ImplementationFailure naming how the run failed (RunStatus::Unavailable when the
+    ///         implementation is not on this machine), adapters::Rejected for a method it lacks.
+    virtual TriMesh isosurface(const ScalarGrid& grid, const IsosurfaceOptions& options, const std::string& method) const;
 
 protected:
     /// adapters::Rejected("<name> has no <what>").

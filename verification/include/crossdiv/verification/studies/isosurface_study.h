@@ -19,6 +19,6 @@ CheckReport isosurface_study();
 /// The outcome of a comparison with scikit-image as the suite counts it: identical agrees, the
 /// same vertices in other triangles diverge by triangulation or topology, other vertices are
 /// unexplained; a failed run is the reference's failure.
-Outcome skimage_outcome(const SkimageRun& run, const IsosurfaceComparison* comparison);
+Outcome skimage_outcome(const IsosurfaceRun& run, const IsosurfaceComparison* comparison);
 
 }  // namespace crossdiv::verification
