@@ -76,6 +76,32 @@ TEST(CatmullClarkStreaming, IsTheStencilDriverBitForBitOnEveryInput) {
     EXPECT_GT(refused, 0);  // the edge cases no rule refines
 }
 
+// Two named causes at once, as on real models (Debian's sweethome3d-furniture: a cap and a hot
+// dog): OpenMesh's midpoint-average boundary and the isolated vertex it moves. Core with that
+// boundary rule agrees at every vertex a face uses: the boundary rule, with the isolated vertex
+// named too, not an unexplained divergence.
+TEST(CatmullClarkComparison, ABoundaryRuleBesideAnIsolatedVertexIsNamedBoth) {
+    CROSSDIV_REQUIRE_LIBRARIES("openmesh");
+    PolyMesh m;
+    m.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0.1), Vec3(0, 1, 0), Vec3(1, 1, 0.3),
+                   Vec3(2, 1, 0), Vec3(0, 2, 0.2), Vec3(1, 2, 0), Vec3(2, 2, 0), Vec3(5, 5, 5)};
+    for (const std::vector<int>& f : std::vector<std::vector<int>>{{0, 1, 4, 3}, {1, 2, 5, 4}, {3, 4, 7, 6}, {4, 5, 8, 7}})
+        m.add_face(f);
+    SchemeRequest req;
+    req.references = {"openmesh"};
+    const SchemeComparison c = compare_scheme(m, "open grid and an isolated vertex", req);
+    ASSERT_EQ(c.runs.size(), 1u);
+    const SchemeReferenceRun& r = c.runs[0];
+    ASSERT_EQ(r.verdict, Verdict::Diverge) << r.explanation;
+    EXPECT_EQ(r.divergence_class, DivergenceClass::BoundaryRule) << r.explanation;
+    EXPECT_NE(r.explanation.find("isolated-vertex-handling too"), std::string::npos) << r.explanation;
+    // Without the isolated vertex, the boundary rule alone.
+    m.positions.pop_back();
+    const SchemeComparison alone = compare_scheme(m, "open grid", req);
+    EXPECT_EQ(alone.runs[0].divergence_class, DivergenceClass::BoundaryRule);
+    EXPECT_EQ(alone.runs[0].explanation.find("isolated"), std::string::npos) << alone.runs[0].explanation;
+}
+
 TEST(DooSabinComparison, OnlyAMeasuredTopologyDifferenceIsClassifiedTopology) {
     register_reference(make_callback_implementation("swapped-doo-sabin", {Scheme::DooSabin},
                                                     [](const PolyMesh& mesh, const RefineRequest& request) {
