@@ -67,6 +67,26 @@ TEST(NonManifold, ABowtieVertexIsACornerAndTheFansAreRefinedApart) {
     EXPECT_TRUE(r.positions[1].isApprox(0.75 * m.positions[1] + 0.125 * (m.positions[0] + m.positions[2])));
 }
 
+TEST(NonManifold, CatmullClarksMidpointAverageBoundaryBesideABowtie) {
+    // The same two triangles under Catmull-Clark's midpoint-average rule (OpenMesh's): the
+    // bowtie vertex keeps OpenSubdiv's corner rule, a manifold boundary vertex takes the rule's
+    // mask (2/3 itself, 1/6 each boundary neighbour) where edge-only takes 3/4 and 1/8.
+    PolyMesh m;
+    m.positions = {Vec3(0, 0, 0), Vec3(1, 0.5, 0.2), Vec3(1, -0.5, 0), Vec3(-1, 0.5, 0), Vec3(-1, -0.5, 0.3)};
+    m.add_face({0, 2, 1});
+    m.add_face({0, 3, 4});
+    const PolyMesh r = catmull_clark_subdivide(m, {CatmullClarkBoundary::MidpointAverage}, 1);
+    EXPECT_EQ(r.positions[0], m.positions[0]);
+    EXPECT_TRUE(r.positions[1].isApprox(2.0 / 3.0 * m.positions[1] + (m.positions[0] + m.positions[2]) / 6.0))
+        << r.positions[1].transpose();
+    const PolyMesh e = catmull_clark_subdivide(m, {CatmullClarkBoundary::EdgeOnly}, 1);
+    EXPECT_TRUE(e.positions[1].isApprox(0.75 * m.positions[1] + 0.125 * (m.positions[0] + m.positions[2])));
+    // The refusal under NonManifoldRule::Refuse stands.
+    CatmullClarkOptions refuse{CatmullClarkBoundary::MidpointAverage};
+    refuse.nonmanifold = NonManifoldRule::Refuse;
+    EXPECT_THROW(catmull_clark_subdivide(m, refuse, 1), NonManifoldInput);
+}
+
 /// An open fan of four triangles around vertex 0 (spokes 1..5 on a half circle, lifted), and
 /// the same fan turned and shifted: vertices 6..10, joined at vertex 0 in a bowtie.
 PolyMesh fan4(bool bowtie) {

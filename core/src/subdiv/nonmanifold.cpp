@@ -331,9 +331,6 @@ RefinementStep loop_nonmanifold_step(const PolyMesh& mesh, const LoopOptions& op
 
 RefinementStep catmull_clark_nonmanifold_step(const PolyMesh& mesh, const CatmullClarkOptions& options) {
     require_untagged(mesh);
-    if (options.boundary == CatmullClarkBoundary::MidpointAverage)
-        throw InputError("the non-manifold rules are OpenSubdiv's, whose boundary is edge-only or edge-and-corner; the "
-                         "midpoint-average boundary rule has none");
     const int nv = mesh.num_vertices(), nf = mesh.num_faces();
     const int nc = static_cast<int>(mesh.face_vertices.size());
     if (4LL * nc > INT_MAX)
@@ -343,8 +340,17 @@ RefinementStep catmull_clark_nonmanifold_step(const PolyMesh& mesh, const Catmul
     RefinementStep step(nv);
     StencilTable& st = step.stencils;
     st.reserve(static_cast<size_t>(nv) + nf + ne, 8 * static_cast<size_t>(nc) + nv);
+    const bool midpoint_average = options.boundary == CatmullClarkBoundary::MidpointAverage;
     for (int v = 0; v < nv; ++v) {
-        if (!add_sharp_vertex_row(st, t, v)) {
+        if (midpoint_average && t.rule[static_cast<size_t>(v)] == VertexRule::Crease && !t.nonmanifold_vertex[static_cast<size_t>(v)]) {
+            // A manifold boundary vertex under the midpoint-average rule (the manifold driver's
+            // mask); the non-manifold vertices keep OpenSubdiv's rules.
+            const int faces = t.vertex_corner_start[v + 1] - t.vertex_corner_start[v];
+            const CatmullClarkBoundaryMask m = catmull_clark_boundary_vertex_mask(CatmullClarkBoundary::MidpointAverage, faces);
+            st.add(t.crease_ends[static_cast<size_t>(v)][0], m.neighbor);
+            st.add(t.crease_ends[static_cast<size_t>(v)][1], m.neighbor);
+            st.add(v, m.self);
+        } else if (!add_sharp_vertex_row(st, t, v)) {
             // Smooth or dart: a manifold interior vertex, as many faces as edges.
             const int n = t.vertex_edge_start[v + 1] - t.vertex_edge_start[v];
             const CatmullClarkVertexMask m = catmull_clark_interior_vertex_mask(n);

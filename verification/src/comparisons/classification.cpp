@@ -88,10 +88,19 @@ std::optional<Classification> nonmanifold_handling(const std::vector<char>& reac
         ref_to_ours.size() != static_cast<size_t>(ref.num_vertices()))
         return std::nullopt;
     const double diagonal = bounding_box_diagonal(ours.positions);
-    int differing = 0;
+    // A vertex no face uses is the other named cause a reference may show beside these
+    // (isolated-vertex-handling): counted apart, never in the reach.
+    std::vector<char> used(static_cast<size_t>(ours.num_vertices()), 0);
+    for (int v : ours.face_vertices) used[static_cast<size_t>(v)] = 1;
+    int differing = 0, isolated = 0;
     for (size_t i = 0; i < ref_to_ours.size(); ++i) {
         const int v = ref_to_ours[i];
+        if (v < 0 || v >= ours.num_vertices()) return std::nullopt;
         if ((ours.positions[static_cast<size_t>(v)] - ref.positions[i]).norm() / diagonal <= tolerance) continue;
+        if (!used[static_cast<size_t>(v)]) {
+            ++isolated;
+            continue;
+        }
         if (!reach[static_cast<size_t>(v)]) return std::nullopt;
         ++differing;
     }
@@ -100,7 +109,10 @@ std::optional<Classification> nonmanifold_handling(const std::vector<char>& reac
                           reference + " refines the non-manifold vertices by another rule than OpenSubdiv's, which core "
                           "follows: all " + std::to_string(differing) + " vertices that differ" + against + " (by up to " +
                           detail::sci(max_rel) + ") lie where they reach (" + std::to_string(reached) + " of " +
-                          std::to_string(ours.num_vertices()) + " vertices)"};
+                          std::to_string(ours.num_vertices()) + " vertices)" +
+                          (isolated ? "; " + std::to_string(isolated) + " vertices no face uses differ too "
+                                                                        "(isolated-vertex-handling)"
+                                    : "")};
 }
 
 bool measured_topology_difference(const TopologyCounts& ours, const TopologyCounts& ref, bool face_sets_equal,

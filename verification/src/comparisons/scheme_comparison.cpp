@@ -322,12 +322,17 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
             };
             tests.nonmanifold = [&]() -> std::optional<Classification> {
                 // Measured: core took OpenSubdiv's non-manifold rules here, and every vertex
-                // that differs by more than the tolerance lies where the non-manifold vertices reach.
-                if (!same_faces || req.scheme != Scheme::CatmullClark ||
-                    req.rule.catmull_clark.nonmanifold != NonManifoldRule::OpenSubdiv)
+                // that differs by more than the tolerance from core under the reference's own
+                // rule (its boundary rule too) lies where the non-manifold vertices reach.
+                if (req.scheme != Scheme::CatmullClark || req.rule.catmull_clark.nonmanifold != NonManifoldRule::OpenSubdiv)
                     return std::nullopt;
-                return nonmanifold_handling(nonmanifold_reach(level_view(our_levels)), ours, theirs,
-                                            run.correspondence.ref_to_ours, tolerance, ref.name(), run.comparison.max_rel);
+                const bool own_rule = !rules_differ || same_rule_levels.empty();
+                const PolyMesh& core_rule = own_rule ? ours : same_rule_mesh;
+                if (!(own_rule ? same_faces : with_rule.topology_equal())) return std::nullopt;
+                return nonmanifold_handling(nonmanifold_reach(level_view(own_rule ? our_levels : same_rule_levels)), core_rule,
+                                            theirs, run.correspondence.ref_to_ours, tolerance, ref.name(),
+                                            own_rule ? run.comparison.max_rel : with_rule.max_rel,
+                                            own_rule ? "" : " from core with " + run.rule);
             };
             tests.valence_table = valence_table;
             tests.topology = [&]() -> std::optional<Classification> {

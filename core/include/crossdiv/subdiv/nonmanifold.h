@@ -59,7 +59,9 @@ namespace crossdiv {
 RefinementStep loop_nonmanifold_step(const PolyMesh& mesh, const LoopOptions& options);
 
 /// One Catmull-Clark level likewise: vertex points, face points, edge points; one quad per
-/// corner. @throws InputError as loop_nonmanifold_step, and for the midpoint-average rule.
+/// corner. Under the midpoint-average boundary rule (OpenMesh's, which OpenSubdiv lacks) a
+/// manifold boundary vertex takes that rule's mask, and the non-manifold vertices OpenSubdiv's
+/// rules above. @throws InputError as loop_nonmanifold_step.
 RefinementStep catmull_clark_nonmanifold_step(const PolyMesh& mesh, const CatmullClarkOptions& options);
 
 /// The ends of each edge of `mesh`, in the order the steps number their edge points (the
