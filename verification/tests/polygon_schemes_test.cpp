@@ -76,6 +76,15 @@ TEST(CatmullClarkStreaming, IsTheStencilDriverBitForBitOnEveryInput) {
     EXPECT_GT(refused, 0);  // the edge cases no rule refines
 }
 
+/// OpenMesh's run of one Catmull-Clark level of `m` against core's edge-only rule.
+SchemeReferenceRun openmesh_catmull_clark(const PolyMesh& m) {
+    SchemeRequest req;
+    req.references = {"openmesh"};
+    const SchemeComparison c = compare_scheme(m, "test mesh", req);
+    EXPECT_EQ(c.runs.size(), 1u);
+    return c.runs.at(0);
+}
+
 // Two named causes at once, as on real models (Debian's sweethome3d-furniture: a cap and a hot
 // dog): OpenMesh's midpoint-average boundary and the isolated vertex it moves. Core with that
 // boundary rule agrees at every vertex a face uses: the boundary rule, with the isolated vertex
@@ -87,19 +96,15 @@ TEST(CatmullClarkComparison, ABoundaryRuleBesideAnIsolatedVertexIsNamedBoth) {
                    Vec3(2, 1, 0), Vec3(0, 2, 0.2), Vec3(1, 2, 0), Vec3(2, 2, 0), Vec3(5, 5, 5)};
     for (const std::vector<int>& f : std::vector<std::vector<int>>{{0, 1, 4, 3}, {1, 2, 5, 4}, {3, 4, 7, 6}, {4, 5, 8, 7}})
         m.add_face(f);
-    SchemeRequest req;
-    req.references = {"openmesh"};
-    const SchemeComparison c = compare_scheme(m, "open grid and an isolated vertex", req);
-    ASSERT_EQ(c.runs.size(), 1u);
-    const SchemeReferenceRun& r = c.runs[0];
+    const SchemeReferenceRun r = openmesh_catmull_clark(m);
     ASSERT_EQ(r.verdict, Verdict::Diverge) << r.explanation;
     EXPECT_EQ(r.divergence_class, DivergenceClass::BoundaryRule) << r.explanation;
     EXPECT_NE(r.explanation.find("isolated-vertex-handling too"), std::string::npos) << r.explanation;
     // Without the isolated vertex, the boundary rule alone.
     m.positions.pop_back();
-    const SchemeComparison alone = compare_scheme(m, "open grid", req);
-    EXPECT_EQ(alone.runs[0].divergence_class, DivergenceClass::BoundaryRule);
-    EXPECT_EQ(alone.runs[0].explanation.find("isolated"), std::string::npos) << alone.runs[0].explanation;
+    const SchemeReferenceRun alone = openmesh_catmull_clark(m);
+    EXPECT_EQ(alone.divergence_class, DivergenceClass::BoundaryRule);
+    EXPECT_EQ(alone.explanation.find("isolated"), std::string::npos) << alone.explanation;
 }
 
 // A bowtie far from an open boundary, as on real models (Debian's sweethome3d-furniture: 22 of
@@ -117,11 +122,7 @@ TEST(CatmullClarkComparison, ABoundaryRuleBesideABowtieIsNonManifoldHandling) {
     // A quad hanging from the far corner (vertex 15) alone: a bowtie there.
     m.positions.insert(m.positions.end(), {Vec3(4, 3, 0.5), Vec3(4, 4, 0.2), Vec3(3, 4, 0.4)});
     m.add_face({15, 16, 17, 18});
-    SchemeRequest req;
-    req.references = {"openmesh"};
-    const SchemeComparison c = compare_scheme(m, "grid with a bowtie", req);
-    ASSERT_EQ(c.runs.size(), 1u);
-    const SchemeReferenceRun& r = c.runs[0];
+    const SchemeReferenceRun r = openmesh_catmull_clark(m);
     ASSERT_EQ(r.verdict, Verdict::Diverge) << r.explanation;
     EXPECT_EQ(r.divergence_class, DivergenceClass::NonManifoldHandling) << r.explanation;
     EXPECT_NE(r.explanation.find("from core with midpoint-average"), std::string::npos) << r.explanation;
