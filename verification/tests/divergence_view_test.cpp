@@ -88,6 +88,16 @@ TEST(DivergenceView, ACatmullClarkBoundaryRuleDivergenceKeepsEveryLevelAndEachRe
     // grid is vertex 0, kept first).
     EXPECT_LE((v.references.at("opensubdiv")[2][0] - v.levels[2].positions[0]).norm(), 1e-15);
     EXPECT_GT((v.references.at("openmesh")[2][0] - v.levels[2].positions[0]).norm(), 1e-3);
+    // A scheme that is not primal shows every level too (sqrt3: a face point per face).
+    SchemeRequest sqrt3;
+    sqrt3.scheme = Scheme::Sqrt3;
+    sqrt3.levels = 2;
+    sqrt3.references = {"openmesh"};  // per level: it never refines the boundary (parity)
+    sqrt3.view_max_faces = 1000;
+    const SchemeComparison s = compare_scheme(load_input("bundled:open-patch"), "bundled:open-patch", sqrt3);
+    ASSERT_TRUE(s.view.has_value());
+    ASSERT_EQ(s.view->levels.size(), 3u);
+    EXPECT_EQ(s.view->levels[1].num_vertices(), s.view->levels[0].num_vertices() + s.view->levels[0].num_faces());
     // No view when every reference agrees, or past the size limit.
     req.references = {"opensubdiv"};
     EXPECT_FALSE(compare_scheme(input, "bundled:quad-grid", req).view.has_value());

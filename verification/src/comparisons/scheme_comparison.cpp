@@ -362,11 +362,13 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
         return r.verdict == Verdict::Diverge;
     });
     if (diverges && req.view_max_faces > 0 && out.core_error.empty() && ours.num_faces() <= req.view_max_faces) {
-        // Every level of a primal scheme; the input and the last level of the others (their
-        // levels are matched by position at the last level only).
+        // Every level of core (a scheme that is not primal is refined again for them, the
+        // mesh being small); the references are matched at the last level.
         DivergenceView& view = out.view.emplace();
-        if (!our_levels.empty()) view.levels.assign(our_levels.begin(), our_levels.end());
-        else view.levels = {input, ours};
+        adapters::LevelTrace levels =
+            our_levels.empty() ? core_implementation().refine(input, {req.scheme, req.rule, req.levels}) : our_levels;
+        levels.back() = ours;  // the level the references were matched to
+        view.levels.assign(levels.begin(), levels.end());
         for (auto& [name, positions] : at_last_level) {
             std::vector<std::vector<Vec3>>& levels = view.references[name];
             levels.resize(view.levels.size());
