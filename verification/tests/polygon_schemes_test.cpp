@@ -76,6 +76,35 @@ TEST(CatmullClarkStreaming, IsTheStencilDriverBitForBitOnEveryInput) {
     EXPECT_GT(refused, 0);  // the edge cases no rule refines
 }
 
+// The tiers serve every scheme: strict asks for the same bits (OpenSubdiv's Catmull-Clark on the
+// closed quad cube sums in core's order), geometric for the vertex sets within the tolerance
+// (OpenMesh's other boundary rule on the open grid moves the boundary by about 1e-2 of the
+// diagonal: inside 0.05, outside 1e-4).
+TEST(CatmullClarkComparison, TheTiersHoldEveryScheme) {
+    CROSSDIV_REQUIRE_LIBRARIES("opensubdiv", "openmesh");
+    SchemeRequest strict;
+    strict.levels = 2;
+    strict.references = {"opensubdiv"};
+    strict.tier = Tier::Strict;
+    const SchemeComparison s = compare_scheme(datasets::bundled_mesh("quad-cube"), "bundled:quad-cube", strict);
+    ASSERT_EQ(s.runs.size(), 1u);
+    EXPECT_EQ(s.runs[0].verdict, Verdict::Agree) << s.runs[0].explanation;
+    EXPECT_EQ(s.runs[0].explanation, "bitwise identical");
+    SchemeRequest geometric;
+    geometric.references = {"openmesh"};
+    geometric.tier = Tier::Geometric;
+    geometric.tolerance = 0.05;
+    const PolyMesh grid = datasets::bundled_mesh("quad-grid");
+    const SchemeComparison g = compare_scheme(grid, "bundled:quad-grid", geometric);
+    EXPECT_EQ(g.runs[0].verdict, Verdict::Agree) << g.runs[0].explanation;
+    EXPECT_GT(g.runs[0].hausdorff_rel, 1e-4);
+    EXPECT_LE(g.runs[0].hausdorff_rel, 0.05);
+    geometric.tolerance = 1e-4;
+    const SchemeComparison tight = compare_scheme(grid, "bundled:quad-grid", geometric);
+    EXPECT_EQ(tight.runs[0].verdict, Verdict::Diverge);
+    EXPECT_EQ(tight.runs[0].divergence_class, DivergenceClass::BoundaryRule) << tight.runs[0].explanation;
+}
+
 /// OpenMesh's run of one Catmull-Clark level of `m` against core's edge-only rule.
 SchemeReferenceRun openmesh_catmull_clark(const PolyMesh& m) {
     SchemeRequest req;

@@ -40,7 +40,7 @@ using Ints = std::vector<int, Unfilled<int>>;
 
 /// A level's connectivity as the passes read it, in PolyConnectivity's conventions. The input
 /// level (any polygons) keeps its faces' next, prev and face arrays; a refined level has quads
-/// only, whose are closed forms (Quads).
+/// only, whose next, prev and face are closed forms (Quads).
 struct Level {
     int nv = 0, nf = 0;
     std::vector<int> corner_vertex;  ///< the faces' corners, face after face (the output's at the last level)

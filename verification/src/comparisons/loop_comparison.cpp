@@ -380,10 +380,11 @@ LoopComparison compare_loop(const TriMesh& input, const std::string& name, const
                                                                in_float ? largest_valence() : 0, req.levels);
             // Two named causes at once: the rule explains every vertex a face uses, and only
             // vertices no face uses differ beyond that (a reference that moves them).
-            const bool but_isolated = !within(up_to_rounding, c2, e2, NAN) && c2.topology_equal() &&
+            const bool agrees_with_rule = within(up_to_rounding, c2, e2, NAN);
+            const bool but_isolated = !agrees_with_rule && c2.topology_equal() &&
                                       only_isolated_vertices_differ(same_rule.levels.back(), trace.back(),
                                                                     run.correspondence.ref_to_ours, up_to_rounding.tolerance);
-            if (!within(up_to_rounding, c2, e2, NAN) && !but_isolated) {
+            if (!agrees_with_rule && !but_isolated) {
                 still = "; with " + describe(run.ran_with) + " still " + sci(c2.max_rel);
                 return std::nullopt;
             }

@@ -263,14 +263,6 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
         }
         const MeshComparison with_rule = compare_meshes(same_rule_mesh, theirs, run.correspondence.ref_to_ours);
         run.max_rel_with_reference_rule = with_rule.max_rel;
-        // The reference's rule explains the divergence when core with that rule agrees, or
-        // agrees at every vertex a face uses: a reference can have two named causes at once
-        // (OpenMesh's boundary rule on a model with isolated vertices, which it moves).
-        const bool rule_agrees = rules_differ && with_rule.topology_equal() && with_rule.max_rel <= tolerance;
-        const bool rule_agrees_but_isolated =
-            rules_differ && !rule_agrees && with_rule.topology_equal() &&
-            only_isolated_vertices_differ(same_rule_mesh, theirs, run.correspondence.ref_to_ours, tolerance);
-        const bool rule_explains = rule_agrees || rule_agrees_but_isolated;
         const bool within_tier = tier == Tier::Strict ? run.comparison.topology_equal() && run.comparison.max_abs == 0.0
                                  : tier == Tier::Weak ? run.comparison.topology_equal() && run.comparison.max_rel <= tolerance
                                                       : geometric_agree;
@@ -301,7 +293,15 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
             };
             std::string oracle_failed;  // the requested rule's oracle, when it fails
             tests.reference_rule = [&]() -> std::optional<Classification> {
-                if (!rule_explains) return std::nullopt;
+                // The reference's rule explains the divergence when core with that rule agrees,
+                // or agrees at every vertex a face uses: a reference can have two named causes
+                // at once (OpenMesh's boundary rule on a model with isolated vertices, which it
+                // moves).
+                if (!rules_differ || !with_rule.topology_equal()) return std::nullopt;
+                const bool rule_agrees = with_rule.max_rel <= tolerance;
+                if (!rule_agrees &&
+                    !only_isolated_vertices_differ(same_rule_mesh, theirs, run.correspondence.ref_to_ours, tolerance))
+                    return std::nullopt;
                 // A rule difference explains the divergence only if core's requested rule is
                 // the published one (rule_oracle.h).
                 const RuleVerdict oracle = check_core_rule(req.scheme, req.rule);
@@ -369,10 +369,10 @@ SchemeComparison compare_scheme(const PolyMesh& input, const std::string& name, 
             our_levels.empty() ? core_implementation().refine(input, {req.scheme, req.rule, req.levels}) : our_levels;
         levels.back() = ours;  // the level the references were matched to
         view.levels.assign(levels.begin(), levels.end());
-        for (auto& [name, positions] : at_last_level) {
-            std::vector<std::vector<Vec3>>& levels = view.references[name];
-            levels.resize(view.levels.size());
-            levels.back() = std::move(positions);
+        for (auto& [reference, positions] : at_last_level) {
+            std::vector<std::vector<Vec3>>& per_level = view.references[reference];
+            per_level.resize(view.levels.size());
+            per_level.back() = std::move(positions);
         }
     }
     return out;

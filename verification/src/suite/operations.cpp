@@ -43,55 +43,56 @@ std::string minimal_obj_name(const SuiteJob& job) { return "views/job" + std::to
 /// 0.03 to 0.08 s a case); larger inputs would take seconds each, and `crossdiv diff` is there.
 constexpr int kShrinkMaxFaces = 500;
 
-/// The case's first divergence from a library reference shrunk to a minimal input, as `crossdiv
-/// diff` shrinks it, for the viewer; nothing when core is not what is under test, when every
-/// divergent reference is a program (each comparison would start it again), or when the input
-/// is too large or cannot be shrunk (a refusal, no symptom left on the whole input).
-std::optional<MinimalDivergence> shrink_for_view(const TriMesh& mesh, const std::string& input,
-                                                 const LoopComparisonRequest& req, const LoopComparison& c,
-                                                 const std::string& obj_name) {
-    if (req.subject || mesh.num_faces() > kShrinkMaxFaces) return std::nullopt;
-    for (const ReferenceRun& run : c.runs) {
+/// The first divergence from a library reference among `runs` that shrinks (`shrink(name)`,
+/// as `crossdiv diff` shrinks; it throws InputError when the symptom needs the whole input or
+/// is a refusal). A reference that is a program is passed over: each comparison would start it
+/// again.
+template <class Runs, class Shrink>
+std::optional<MinimalDivergence> first_shrunk(const Runs& runs, Shrink&& shrink) {
+    for (const auto& run : runs) {
         if (run.verdict != Verdict::Diverge || find_implementation(run.reference).confines_itself()) continue;
-        LoopComparisonRequest one = req;
-        one.references = {run.reference};
-        one.view_max_faces = 0;
         try {
-            const ShrinkResult r = shrink_divergence(mesh, input, one);
-            const std::string levels = std::to_string(req.levels);
-            return MinimalDivergence{run.reference, describe(r.symptom, "core", run.reference), to_poly_mesh(r.minimal), r.tests,
-                                     "crossdiv compare " + obj_name + " --weights " + std::string(to_string(req.options.weights)) +
-                                         " --boundary " + std::string(to_string(req.options.boundary)) + " --levels " + levels +
-                                         " --against " + run.reference};
+            return shrink(run.reference);
         } catch (const InputError&) {
-            // Nothing to shrink here (the symptom needs the whole input, or a refusal): the view stands alone.
+            // Nothing to shrink here: the view stands alone.
         }
     }
     return std::nullopt;
 }
 
-/// The case's divergence from a library reference of another scheme shrunk, as shrink_for_view
-/// shrinks Loop's (crossdiv diff --scheme S).
+/// The case's first divergence from a library reference shrunk to a minimal input, for the
+/// viewer; nothing when core is not what is under test or the input is too large.
+std::optional<MinimalDivergence> shrink_for_view(const TriMesh& mesh, const std::string& input,
+                                                 const LoopComparisonRequest& req, const LoopComparison& c,
+                                                 const std::string& obj_name) {
+    if (req.subject || mesh.num_faces() > kShrinkMaxFaces) return std::nullopt;
+    return first_shrunk(c.runs, [&](const std::string& reference) {
+        LoopComparisonRequest one = req;
+        one.references = {reference};
+        one.view_max_faces = 0;
+        const ShrinkResult r = shrink_divergence(mesh, input, one);
+        return MinimalDivergence{reference, describe(r.symptom, "core", reference), to_poly_mesh(r.minimal), r.tests,
+                                 "crossdiv compare " + obj_name + " --weights " + std::string(to_string(req.options.weights)) +
+                                     " --boundary " + std::string(to_string(req.options.boundary)) + " --levels " +
+                                     std::to_string(req.levels) + " --against " + reference};
+    });
+}
+
+/// The same for another scheme's case (crossdiv diff --scheme S).
 std::optional<MinimalDivergence> shrink_scheme_for_view(const PolyMesh& mesh, const std::string& input,
                                                         const SchemeRequest& req, const SchemeComparison& c,
                                                         const std::string& obj_name) {
     if (mesh.num_faces() > kShrinkMaxFaces) return std::nullopt;
-    for (const SchemeReferenceRun& run : c.runs) {
-        if (run.verdict != Verdict::Diverge || find_implementation(run.reference).confines_itself()) continue;
+    return first_shrunk(c.runs, [&](const std::string& reference) {
         SchemeRequest one = req;
-        one.references = {run.reference};
+        one.references = {reference};
         one.view_max_faces = 0;
-        try {
-            const SchemeShrinkResult r = shrink_scheme_divergence(mesh, input, one);
-            return MinimalDivergence{run.reference, describe(r.symptom, "core", run.reference), r.minimal, r.tests,
-                                     "crossdiv compare " + obj_name + " --scheme " + to_string(req.scheme) + " --boundary " +
-                                         boundary_name(req.scheme, req.rule) + " --levels " + std::to_string(req.levels) +
-                                         " --against " + run.reference};
-        } catch (const InputError&) {
-            // Nothing to shrink here (the symptom needs the whole input, or a refusal): the view stands alone.
-        }
-    }
-    return std::nullopt;
+        const SchemeShrinkResult r = shrink_scheme_divergence(mesh, input, one);
+        return MinimalDivergence{reference, describe(r.symptom, "core", reference), r.minimal, r.tests,
+                                 "crossdiv compare " + obj_name + " --scheme " + to_string(req.scheme) + " --boundary " +
+                                     boundary_name(req.scheme, req.rule) + " --levels " + std::to_string(req.levels) +
+                                     " --against " + reference};
+    });
 }
 
 /// Writes the case's 3D view as views/jobN.js (and its minimal input as views/jobN-minimal.obj)
