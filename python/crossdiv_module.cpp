@@ -18,7 +18,7 @@
 #include "crossdiv/io/curve_io.h"
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/subdiv/loop.h"
-#include "crossdiv/verification/comparisons/loop_comparison.h"
+#include "crossdiv/verification/comparisons/refinement_comparison.h"
 #include "crossdiv/verification/harness/json_text.h"
 #include "crossdiv/verification/implementations/callback_implementation.h"
 #include "crossdiv/verification/implementations/registry.h"
@@ -250,8 +250,8 @@ PYBIND11_MODULE(crossdiv, m) {
              const std::string& weights, const std::string& boundary, std::vector<std::string> references,
              const std::string& tier, double tolerance, py::object subject, const std::string& subject_name,
              double timeout) {
-              LoopComparisonRequest req;
-              req.options = {loop_weights_from_string(weights), loop_boundary_from_string(boundary)};
+              RefinementRequest req;
+              req.rule.loop = {loop_weights_from_string(weights), loop_boundary_from_string(boundary)};
               if (levels < 1 || levels > 12) throw InputError("levels must be in 1..12 (got " + std::to_string(levels) + ")");
               req.levels = levels;
               req.references = std::move(references);
@@ -265,7 +265,8 @@ PYBIND11_MODULE(crossdiv, m) {
                   req.subject = under_test.get();
               }
               const PolyMesh mesh = mesh_from(V, F);
-              return json_to_python(to_json(compare_loop(to_tri_mesh(mesh, "compare"), "python", req)));
+              (void)to_tri_mesh(mesh, "compare");  // a polygon is refused by name
+              return json_to_python(to_json(compare_refinement(mesh, "python", req)));
           },
           py::arg("V"), py::arg("F"), py::arg("levels") = 2, py::arg("weights") = "loop", py::arg("boundary") = "edge-only",
           py::arg("references") = std::vector<std::string>{}, py::arg("tier") = "weak", py::arg("tolerance") = 1e-12,

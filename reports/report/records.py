@@ -23,7 +23,7 @@ CATEGORIES = [
 
 
 # The results.json this script reads (verification/include/crossdiv/verification/suite/report.h).
-SCHEMA_VERSION = 4
+SCHEMA_VERSION = 5
 
 
 def outcome(case, run=None):

@@ -27,7 +27,7 @@ def catalogue_rows(mesh_cases, check_cases):
                 values = f"core {vec(w['core'])}; " + "; ".join(f"{n} {vec(p)}" for n, p in sorted(w["references"].items()))
             rows.append({"case": c["id"], "reference": r["reference"], "outcome": outcome(c, r),
                          "class": r.get("divergence_class") or r["verdict"],
-                         "max_rel": r.get("positions", {}).get("max_rel", r.get("max_rel")),
+                         "max_rel": r.get("positions", {}).get("max_rel"),
                          "worst": f"v{w['ours_index']} valence {w['valence']} {'boundary' if w['boundary'] else 'interior'}"
                          if diverges else "-", "values": values, "explanation": r.get("explanation", "")})
     for c in check_cases:

@@ -103,8 +103,7 @@ def view_entries(mesh_cases):
         if "view" not in c:
             continue
         diverging = [r for r in c["runs"] if r["verdict"] == "diverge"]
-        # A Loop run keeps its figures under "positions", another scheme's at the run's top level.
-        worst = max(diverging, key=lambda r: r.get("positions", {}).get("max_rel", r.get("max_rel")) or 0, default=None)
+        worst = max(diverging, key=lambda r: r.get("positions", {}).get("max_rel") or 0, default=None)
         classes = sorted({r.get("divergence_class") or r["verdict"] for r in diverging})
         entries.append({"job": c["job"], "id": c["id"], "view": c["view"], "classes": classes,
                         "failure": any(_kind(c, r) == "failure" for r in c["runs"]),

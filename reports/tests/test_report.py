@@ -88,7 +88,7 @@ def results_fixture():
                   [{"name": s, "kind": "study"} for s in ("schemes", "creases", "limit-positions", "vertex-age", "curvature",
                                                           "isosurface", "fitting", "multiresolution", "pages", "spectrum",
                                                           "convergence")])
-    return {"tool": "crossdiv suite", "schema_version": 4, "suite": "tiny", "operations": operations, "manifest": "tiny.suite", "shard": "1/1",
+    return {"tool": "crossdiv suite", "schema_version": 5, "suite": "tiny", "operations": operations, "manifest": "tiny.suite", "shard": "1/1",
             "workers": 1, "seconds": 1.0, "references": [{"name": "opensubdiv", "version": "3.5"},
                                                           {"name": "cgal", "version": "5.5"}],
             "summary": {"cases": 4, "runs": 5, "failures": 1,
@@ -139,9 +139,9 @@ def test_a_scheme_case_is_told_by_its_kind_and_counted_per_rule_and_reference(tm
           "id": "bundled:open-patch | catmull-clark boundary=default L2 weak tol=1e-12",
           "options": {"boundary": "edge-only"}, "levels": 2, "tier": "weak", "tolerance_rel": 1e-12, "runs": [
               {"reference": "opensubdiv", "rule": "edge-only", "status": "ok", "verdict": "agree", "divergence_class": "",
-               "outcome": "agree", "max_rel": 1e-16, "explanation": ""},
+               "outcome": "agree", "positions": {"max_rel": 1e-16}, "explanation": ""},
               {"reference": "openmesh", "rule": "midpoint-average", "status": "ok", "verdict": "diverge",
-               "divergence_class": "boundary-rule", "outcome": "diverge (boundary-rule)", "max_rel": 0.02,
+               "divergence_class": "boundary-rule", "outcome": "diverge (boundary-rule)", "positions": {"max_rel": 0.02},
                "explanation": "openmesh applies the midpoint-average boundary rule"}]}
     results["cases"].append(cc)
     mesh, curves, surfaces, studies, schemes = split_cases(results)

@@ -18,7 +18,7 @@
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/subdiv/loop_streaming.h"
 #include "crossdiv/subdiv/loop_split_flip.h"
-#include "crossdiv/verification/comparisons/loop_comparison.h"
+#include "crossdiv/verification/comparisons/refinement_comparison.h"
 #include "crossdiv/verification/comparisons/shrink.h"
 #include "crossdiv/verification/implementations/inputs.h"
 #include "crossdiv/verification/implementations/output_size.h"
@@ -196,7 +196,7 @@ int run_subdivide(const std::string& in, const SchemeArgs& flags, const std::str
 }
 
 /// The subject's run, its match to core and the rule fits of each vertex class.
-void print_subject(const LoopComparison& c) {
+void print_subject(const RefinementComparison& c) {
     if (c.subject_outcome.status != RunStatus::Ok) {
         fmt::print("  subject '{}' failed: {}\n", c.subject, c.subject_outcome.summary());
         return;
@@ -228,15 +228,15 @@ void print_subject(const LoopComparison& c) {
                                                : std::string("no named rule fits"));
 }
 
-void print_table(const LoopComparison& c) {
+void print_table(const RefinementComparison& c) {
     fmt::print("\n{} ({} vertices, {} faces) loop weights={} boundary={} levels={} (core {:.3f} s)\n", c.input,
-               c.input_vertices, c.input_faces, to_string(c.options.weights), to_string(c.options.boundary), c.levels,
+               c.input_vertices, c.input_faces, to_string(c.rule.loop.weights), to_string(c.rule.loop.boundary), c.levels,
                c.core_seconds);
     if (!c.core_error.empty()) fmt::print("  core refuses the input: {}\n", c.core_error);
     if (c.subject != "core") print_subject(c);
     fmt::print("  {:<11} {:<9} {:<13} {:<9} {:<8} {:>10} {:>10}  {}\n", "reference", "status", "verdict", "match",
                "topology", "max rel", "rms rel", "class / explanation");
-    for (const ReferenceRun& r : c.runs) {
+    for (const RefinementRun& r : c.runs) {
         // Measured columns only where both refined: not when core refused the input.
         const bool ok = r.outcome.status == RunStatus::Ok && r.verdict != Verdict::OursRejected;
         fmt::print("  {:<11} {:<9} {:<13} {:<9} {:<8} {:>10} {:>10}  {}{}\n", r.reference,
@@ -263,14 +263,14 @@ struct SubjectVerdict {
     std::set<std::string> classes;
     int inputs = 0, failures = 0, unexplained = 0;
 
-    void add(const LoopComparison& c) {
+    void add(const RefinementComparison& c) {
         ++inputs;
         if (c.subject_failed()) {
             ++failures;
             return;
         }
         if (c.rules) rules.add(*c.rules);
-        for (const ReferenceRun& r : c.runs) {
+        for (const RefinementRun& r : c.runs) {
             auto& [agree, runs] = reference_agreement[r.reference];
             ++runs;
             agree += r.verdict == Verdict::Agree;
@@ -292,7 +292,7 @@ struct SubjectVerdict {
 
 /// Whether the subject fails or follows no named rule on this input: what `crossdiv diff
 /// --subject` shrinks.
-bool symptom_of_subject(const LoopComparison& c) { return c.subject_failed() || (c.rules && !c.rules->rule); }
+bool symptom_of_subject(const RefinementComparison& c) { return c.subject_failed() || (c.rules && !c.rules->rule); }
 
 /// `subject_command`: the subject's command template, for the `crossdiv diff` line that shrinks
 /// what no named rule explains (empty for result files, which cannot be rerun).
@@ -303,9 +303,9 @@ int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, cons
         if (subject) throw InputError("a subject is compared under the Loop scheme so far (--scheme loop)");
         return run_scheme_compare(specs, s.poly(), against, json_path, timeout, no_isolate);
     }
-    LoopComparisonRequest req;
+    RefinementRequest req;
     req.subject = subject;
-    req.options = s.options();
+    req.rule.loop = s.options();
     req.levels = s.levels;
     req.timeout_seconds = timeout;
     req.isolate = !no_isolate;
@@ -319,7 +319,7 @@ int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, cons
     // (non-manifold, degenerate) is a recorded outcome, as in the suite: the references still
     // run on it and the batch goes on. Crease-tagged inputs are compared with OpenSubdiv
     // alone, level by level (the Loop comparison's other references have no crease rules).
-    std::vector<TriMesh> meshes;
+    std::vector<PolyMesh> meshes;
     std::vector<PolyMesh> tagged(inputs.size());
     std::vector<std::string> refused(inputs.size());
     std::vector<SchemeArgs> rules(inputs.size(), s);  // each input's, its tags resolved
@@ -332,9 +332,10 @@ int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, cons
             meshes.emplace_back();
             continue;
         }
-        meshes.push_back(to_tri_mesh(m, "Loop subdivision"));
+        const TriMesh triangles = to_tri_mesh(m, "Loop subdivision");
+        meshes.push_back(std::move(m));
         try {
-            check_loop_input(meshes.back(), rules[i].options());
+            check_loop_input(triangles, rules[i].options());
         } catch (const InputError& e) {
             refused[i] = e.what();
         }
@@ -361,14 +362,13 @@ int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, cons
                        refused[i]);
             continue;
         }
-        LoopComparisonRequest this_req = req;
-        this_req.options = rules[i].options();
-        const LoopComparison c = refused[i].empty() ? compare_loop(meshes[i], inputs[i], this_req)
-                                                    : compare_loop_refused(meshes[i], inputs[i], this_req, refused[i]);
+        RefinementRequest this_req = req;
+        this_req.rule.loop = rules[i].options();
+        const RefinementComparison c = compare_refinement(meshes[i], inputs[i], this_req);
         print_table(c);
         if (!subject_command.empty() && symptom_of_subject(c))
             fmt::print("  shrink it:   crossdiv diff {} --levels {} --weights {} --boundary {} --subject-name {} --subject '{}'\n",
-                       inputs[i], s.levels, s.weights, to_string(req.options.boundary), subject->name(), subject_command);
+                       inputs[i], s.levels, s.weights, to_string(this_req.rule.loop.boundary), subject->name(), subject_command);
         all_agree &= c.all_agree();
         if (subject) verdict.add(c);
         results.push_back(to_json(c));
@@ -433,8 +433,8 @@ int run_diff(const std::string& in, const SchemeArgs& flags, const std::string& 
     s.require_size(input, in);
     const TriMesh mesh = to_tri_mesh(input, "Loop subdivision");
     check_loop_input(mesh, s.options());
-    LoopComparisonRequest req;
-    req.options = s.options();
+    RefinementRequest req;
+    req.rule.loop = s.options();
     req.levels = s.levels;
     req.subject = subject;
     req.timeout_seconds = timeout;
@@ -445,7 +445,7 @@ int run_diff(const std::string& in, const SchemeArgs& flags, const std::string& 
         req.references = {against};
         select_references(Scheme::Loop, {against});
     }
-    const ShrinkResult r = shrink_divergence(mesh, in, req);
+    const ShrinkResult r = shrink_divergence(input, in, req);
     const std::string under_test = subject ? "subject '" + subject->name() + "'" : std::string("core");
     if (r.symptom.kind == ShrinkSymptom::Kind::SubjectFails)
         fmt::print("{} ({} faces): {} failed: {}\n", in, mesh.num_faces(), under_test, r.original.subject_outcome.summary());
@@ -454,7 +454,7 @@ int run_diff(const std::string& in, const SchemeArgs& flags, const std::string& 
                    r.original.runs.empty() ? "" : ": " + r.original.runs[0].explanation);
     const std::optional<ShrinkSymptom> minimal_symptom = symptom_of(r.minimal_comparison);
     const std::string minimal =
-        write_shrunk(out_dir, to_poly_mesh(r.neighbourhood), r.k, "the worst vertex's coarse ancestors", to_poly_mesh(r.minimal),
+        write_shrunk(out_dir, r.neighbourhood, r.k, "the worst vertex's coarse ancestors", r.minimal,
                      r.tests, minimal_symptom ? describe(*minimal_symptom, under_test, against) : std::string("no symptom"),
                      r.minimal_comparison.runs.empty() ? std::string() : r.minimal_comparison.runs[0].explanation);
     if (r.minimal_comparison.subject != "core") print_subject(r.minimal_comparison);

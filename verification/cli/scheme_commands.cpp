@@ -22,7 +22,7 @@
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/verification/comparisons/limit_comparison.h"
 #include "crossdiv/verification/comparisons/crease_comparison.h"
-#include "crossdiv/verification/comparisons/scheme_comparison.h"
+#include "crossdiv/verification/comparisons/refinement_comparison.h"
 #include "crossdiv/verification/comparisons/shrink.h"
 #include "crossdiv/verification/implementations/registry.h"
 
@@ -128,13 +128,13 @@ int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const s
 
 int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeArgs& s, const std::string& against,
                        const std::string& json_path, double timeout, bool no_isolate) {
-    SchemeRequest req;
+    RefinementRequest req;
     req.scheme = scheme_from_string(s.scheme);
     req.rule = rule_from_boundary_name(req.scheme, s.boundary);
     req.levels = s.levels;
     req.timeout_seconds = timeout;
     req.isolate = !no_isolate;
-    // compare_scheme refuses a name that lacks the scheme, naming those that have it.
+    // compare_refinement refuses a name that lacks the scheme, naming those that have it.
     req.references = split_commas(against);
 
     const std::vector<std::string> inputs = expand_inputs(specs);
@@ -149,15 +149,15 @@ int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeAr
     nlohmann::json results = nlohmann::json::array();
     bool all_agree = true;
     for (size_t i = 0; i < inputs.size(); ++i) {
-        SchemeRequest this_req = req;
+        RefinementRequest this_req = req;
         this_req.rule = rules[i];
-        const SchemeComparison c = compare_scheme(meshes[i], inputs[i], this_req);
+        const RefinementComparison c = compare_refinement(meshes[i], inputs[i], this_req);
         for (const std::string& note : c.notes) fmt::print("\nnote: {}\n", note);
         fmt::print("\n{} ({} vertices, {} faces) {} boundary={} levels={} (core {:.3f} s)\n", c.input, c.input_vertices,
-                   c.input_faces, to_string(c.scheme), c.rule, c.levels, c.core_seconds);
+                   c.input_faces, to_string(c.scheme), c.rule_name, c.levels, c.core_seconds);
         if (!c.core_error.empty()) fmt::print("  core refused: {}\n", c.core_error);
         fmt::print("  {:<17} {:<21} {:<13} {:>10}  {}\n", "reference", "rule", "verdict", "max rel", "class / explanation");
-        for (const SchemeReferenceRun& r : c.runs)
+        for (const RefinementRun& r : c.runs)
             fmt::print("  {:<17} {:<21} {:<13} {:>10}  {}{}\n", r.reference, r.rule, to_string(r.verdict),
                        !std::isfinite(r.comparison.max_rel) || r.correspondence.method == MatchMethod::None
                            ? "-"
@@ -208,7 +208,7 @@ std::string write_shrunk(const std::string& out_dir, const PolyMesh& neighbourho
 int run_scheme_diff(const std::string& in, const PolySchemeArgs& s, const std::string& against, const std::string& out_dir,
                     double timeout) {
     if (against.empty()) throw InputError("diff: name the diverging reference (--against)");
-    SchemeRequest req;
+    RefinementRequest req;
     req.scheme = scheme_from_string(s.scheme);
     req.levels = s.levels;
     req.timeout_seconds = timeout;
@@ -216,7 +216,7 @@ int run_scheme_diff(const std::string& in, const PolySchemeArgs& s, const std::s
     PolyMesh mesh = load_input(in, s.unknown_tags);  // boundary none tags holes on it
     require_refined_size(mesh, req.scheme, s.levels, s.max_faces, in, "--max-faces");
     req.rule = rule_with_tags(req.scheme, s, mesh);
-    const SchemeShrinkResult r = shrink_scheme_divergence(mesh, in, req);
+    const ShrinkResult r = shrink_divergence(mesh, in, req);
     fmt::print("{} ({} faces): {}: {}\n", in, mesh.num_faces(), describe(r.symptom, "core", against),
                r.original.runs[0].explanation);
     const std::optional<ShrinkSymptom> minimal_symptom = symptom_of(r.minimal_comparison);
@@ -225,7 +225,7 @@ int run_scheme_diff(const std::string& in, const PolySchemeArgs& s, const std::s
                      minimal_symptom ? describe(*minimal_symptom, "core", against) : std::string("no symptom"),
                      r.minimal_comparison.runs.empty() ? std::string() : r.minimal_comparison.runs[0].explanation);
     fmt::print("reproduce:     crossdiv compare {} --scheme {} --boundary {} --levels {} --against {}\n", minimal, s.scheme,
-               r.original.rule, s.levels, against);
+               boundary_name(req.scheme, req.rule), s.levels, against);
     return 0;
 }
 
@@ -280,9 +280,7 @@ int run_limit(const LimitArgs& a) {
     bool ok = true;
     if (!a.against.empty()) {
         if (a.against != "opensubdiv") throw InputError("limit: only opensubdiv has limit positions, not '" + a.against + "'");
-        const LimitComparison c = request.scheme == Scheme::Loop
-                                      ? compare_loop_limit(mesh, a.input, request.rule.loop, a.levels)
-                                      : compare_catmull_clark_limit(mesh, a.input, request.rule.catmull_clark, a.levels);
+        const LimitComparison c = compare_limit(mesh, a.input, request);
         fmt::print("against opensubdiv: {} ({})\n", to_string(c.verdict), c.explanation);
         ok = c.verdict == Verdict::Agree;
         j["comparison"] = to_json(c);

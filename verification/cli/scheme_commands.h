@@ -58,7 +58,7 @@ std::string write_shrunk(const std::string& out_dir, const PolyMesh& neighbourho
                          const PolyMesh& minimal, int tests, const std::string& minimal_shows, const std::string& explanation);
 
 /// `crossdiv diff IN --scheme catmull-clark --against REF`: shrinks REF's divergence from core
-/// (shrink_scheme_divergence), writes OUT_DIR/neighbourhood.obj and OUT_DIR/minimal.obj and
+/// (shrink_divergence), writes OUT_DIR/neighbourhood.obj and OUT_DIR/minimal.obj and
 /// prints the compare line that reproduces the minimal one.
 int run_scheme_diff(const std::string& in, const PolySchemeArgs& s, const std::string& against, const std::string& out_dir,
                     double timeout);

@@ -6,7 +6,7 @@
 
 #include "crossdiv/datasets/edge_cases.h"
 #include "crossdiv/verification/comparisons/classification.h"
-#include "crossdiv/verification/comparisons/loop_comparison.h"
+#include "crossdiv/verification/comparisons/refinement_comparison.h"
 #include "crossdiv/verification/harness/correspondence.h"
 #include "crossdiv/verification/harness/mesh_comparison.h"
 #include "crossdiv/verification/harness/mesh_topology.h"
@@ -33,11 +33,11 @@ TEST(Compare, ACornerRuleBesideAnIsolatedVertexIsNamedBoth) {
     m.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0.1), Vec3(0, 1, 0), Vec3(1, 1, 0.3),
                    Vec3(2, 1, 0), Vec3(0, 2, 0.2), Vec3(1, 2, 0), Vec3(2, 2, 0), Vec3(5, 5, 5)};
     m.triangles = {{0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}, {3, 4, 7}, {3, 7, 6}, {4, 5, 8}, {4, 8, 7}};
-    LoopComparisonRequest req;
-    req.options = {LoopWeights::Loop, LoopBoundary::EdgeAndCorner};
+    RefinementRequest req;
+    req.rule.loop = {LoopWeights::Loop, LoopBoundary::EdgeAndCorner};
     req.levels = 2;
     req.references = {"openmesh"};
-    const LoopComparison c = compare_loop(m, "open grid and an isolated vertex", req);
+    const RefinementComparison c = compare_refinement(to_poly_mesh(m), "open grid and an isolated vertex", req);
     ASSERT_EQ(c.runs.size(), 1u);
     EXPECT_EQ(c.runs[0].verdict, Verdict::Diverge) << c.runs[0].explanation;
     EXPECT_EQ(c.runs[0].divergence_class, DivergenceClass::CornerRule) << c.runs[0].explanation;

@@ -9,7 +9,7 @@
 #include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/verification/comparisons/crease_comparison.h"
-#include "crossdiv/verification/comparisons/scheme_comparison.h"
+#include "crossdiv/verification/comparisons/refinement_comparison.h"
 #include "crossdiv/verification/harness/correspondence.h"
 #include "crossdiv/verification/harness/mesh_comparison.h"
 #include "crossdiv/verification/implementations/tag_rules.h"
@@ -53,11 +53,12 @@ TEST(CreaseComparison, ChaikinAndUniformDecayDifferWhereSharpnessVaries) {
 }
 
 TEST(CreaseComparison, ReferencesWithoutCreaseRulesRefuseTaggedMeshes) {
-    SchemeRequest req;
+    RefinementRequest req;
+    req.scheme = Scheme::CatmullClark;
     req.levels = 1;
-    const SchemeComparison c = compare_scheme(datasets::bundled_mesh("crease-cube-top"), "crease-cube-top", req);
+    const RefinementComparison c = compare_refinement(datasets::bundled_mesh("crease-cube-top"), "crease-cube-top", req);
     ASSERT_TRUE(c.core_error.empty()) << c.core_error;
-    for (const SchemeReferenceRun& r : c.runs) {
+    for (const RefinementRun& r : c.runs) {
         SCOPED_TRACE(r.reference);
         if (r.reference == "opensubdiv") {
             EXPECT_EQ(r.verdict, Verdict::Agree) << r.explanation;

@@ -6,8 +6,7 @@
 #include <cstring>
 #include <string>
 
-#include "crossdiv/verification/comparisons/loop_comparison.h"
-#include "crossdiv/verification/comparisons/scheme_comparison.h"
+#include "crossdiv/verification/comparisons/refinement_comparison.h"
 #include "crossdiv/verification/implementations/inputs.h"
 #include "crossdiv/verification/pages/divergence_view_file.h"
 #include "library_guard.h"
@@ -65,14 +64,15 @@ TEST(DivergenceView, APolygonLevelNamesItsFaceSizes) {
     EXPECT_EQ(divergence_view_script(DivergenceView{{triangle()}, {}, {}, {}}, 0, "core").find("sizes"), std::string::npos);
 }
 
-TEST(DivergenceView, ACatmullClarkBoundaryRuleDivergenceKeepsEveryLevelAndEachReferencesLast) {
+TEST(DivergenceView, ACatmullClarkBoundaryRuleDivergenceKeepsEveryLevelOfCoreAndOfEachReference) {
     CROSSDIV_REQUIRE_LIBRARIES("opensubdiv", "openmesh");
-    SchemeRequest req;
+    RefinementRequest req;
+    req.scheme = Scheme::CatmullClark;
     req.levels = 2;
     req.references = {"opensubdiv", "openmesh"};
     req.view_max_faces = 1000;
     const PolyMesh input = load_input("bundled:quad-grid");
-    const SchemeComparison c = compare_scheme(input, "bundled:quad-grid", req);
+    const RefinementComparison c = compare_refinement(input, "bundled:quad-grid", req);
     ASSERT_TRUE(c.view.has_value());
     const DivergenceView& v = *c.view;
     ASSERT_EQ(v.levels.size(), 3u);  // Catmull-Clark is primal: every level, in core's numbering
@@ -81,39 +81,39 @@ TEST(DivergenceView, ACatmullClarkBoundaryRuleDivergenceKeepsEveryLevelAndEachRe
     for (const char* ref : {"opensubdiv", "openmesh"}) {
         const auto& at = v.references.at(ref);
         ASSERT_EQ(at.size(), 3u);
-        EXPECT_TRUE(at[0].empty() && at[1].empty());  // matched at the last level only
-        ASSERT_EQ(at[2].size(), v.levels[2].positions.size());
+        for (size_t l = 0; l < 3; ++l)  // matched level by level through provenance
+            ASSERT_EQ(at[l].size(), v.levels[l].positions.size()) << ref << " level " << l;
     }
     // OpenSubdiv sits on core; OpenMesh's midpoint-average corners do not (a corner of the
     // grid is vertex 0, kept first).
     EXPECT_LE((v.references.at("opensubdiv")[2][0] - v.levels[2].positions[0]).norm(), 1e-15);
     EXPECT_GT((v.references.at("openmesh")[2][0] - v.levels[2].positions[0]).norm(), 1e-3);
     // A scheme that is not primal shows every level too (sqrt3: a face point per face).
-    SchemeRequest sqrt3;
+    RefinementRequest sqrt3;
     sqrt3.scheme = Scheme::Sqrt3;
     sqrt3.levels = 2;
     sqrt3.references = {"openmesh"};  // per level: it never refines the boundary (parity)
     sqrt3.view_max_faces = 1000;
-    const SchemeComparison s = compare_scheme(load_input("bundled:open-patch"), "bundled:open-patch", sqrt3);
+    const RefinementComparison s = compare_refinement(load_input("bundled:open-patch"), "bundled:open-patch", sqrt3);
     ASSERT_TRUE(s.view.has_value());
     ASSERT_EQ(s.view->levels.size(), 3u);
     EXPECT_EQ(s.view->levels[1].num_vertices(), s.view->levels[0].num_vertices() + s.view->levels[0].num_faces());
     // No view when every reference agrees, or past the size limit.
     req.references = {"opensubdiv"};
-    EXPECT_FALSE(compare_scheme(input, "bundled:quad-grid", req).view.has_value());
+    EXPECT_FALSE(compare_refinement(input, "bundled:quad-grid", req).view.has_value());
     req.references = {"opensubdiv", "openmesh"};
     req.view_max_faces = 10;
-    EXPECT_FALSE(compare_scheme(input, "bundled:quad-grid", req).view.has_value());
+    EXPECT_FALSE(compare_refinement(input, "bundled:quad-grid", req).view.has_value());
 }
 
 TEST(DivergenceView, ACornerRuleDivergenceKeepsEveryLevelAndEachReference) {
-    LoopComparisonRequest req;
-    req.options = {LoopWeights::Loop, LoopBoundary::EdgeAndCorner};
+    RefinementRequest req;
+    req.rule.loop = {LoopWeights::Loop, LoopBoundary::EdgeAndCorner};
     req.levels = 2;
     req.references = {"opensubdiv", "openmesh"};
     req.view_max_faces = 1000;
     const PolyMesh input = load_input("bundled:open-patch");
-    const LoopComparison c = compare_loop(to_tri_mesh(input, "test"), "bundled:open-patch", req);
+    const RefinementComparison c = compare_refinement(input, "bundled:open-patch", req);
     ASSERT_TRUE(c.view.has_value());
     const DivergenceView& v = *c.view;
     ASSERT_EQ(v.levels.size(), 3u);
@@ -134,10 +134,10 @@ TEST(DivergenceView, ACornerRuleDivergenceKeepsEveryLevelAndEachReference) {
         EXPECT_LT((v.references.at("opensubdiv")[2][i] - v.levels[2].positions[i]).norm(), 1e-12) << i;
 
     req.view_max_faces = 0;  // not asked for
-    EXPECT_FALSE(compare_loop(to_tri_mesh(input, "test"), "bundled:open-patch", req).view.has_value());
+    EXPECT_FALSE(compare_refinement(input, "bundled:open-patch", req).view.has_value());
     req.view_max_faces = 1000;
-    req.options.boundary = LoopBoundary::EdgeOnly;  // every reference agrees: nothing to view
-    EXPECT_FALSE(compare_loop(to_tri_mesh(input, "test"), "bundled:open-patch", req).view.has_value());
+    req.rule.loop.boundary = LoopBoundary::EdgeOnly;  // every reference agrees: nothing to view
+    EXPECT_FALSE(compare_refinement(input, "bundled:open-patch", req).view.has_value());
 }
 
 }  // namespace

@@ -10,8 +10,7 @@
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/datasets/edge_cases.h"
 #include "crossdiv/error.h"
-#include "crossdiv/verification/comparisons/loop_comparison.h"
-#include "crossdiv/verification/comparisons/scheme_comparison.h"
+#include "crossdiv/verification/comparisons/refinement_comparison.h"
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/verification/harness/mesh_topology.h"
 #include "crossdiv/verification/implementations/callback_implementation.h"
@@ -38,11 +37,11 @@ ProgramSpec float_program(const std::string& name) {
     return spec;
 }
 
-LoopComparison compare_against(const std::string& reference, const std::string& mesh, int levels) {
-    LoopComparisonRequest req;
+RefinementComparison compare_against(const std::string& reference, const std::string& mesh, int levels) {
+    RefinementRequest req;
     req.levels = levels;
     req.references = {reference};
-    return compare_loop(bundled(mesh), mesh, req);
+    return compare_refinement(datasets::bundled_mesh(mesh), mesh, req);
 }
 
 std::string write_manifest(const std::string& name, const std::string& text) {
@@ -57,9 +56,9 @@ std::string write_manifest(const std::string& name, const std::string& text) {
 // the same output held to the double tier would not (it is 1e-8 off, 1e4 times the bound).
 TEST(ExternalReference, AFloatProgramAgreesInTheFloatTierOnly) {
     register_reference(make_program_implementation(float_program("float-loop")));
-    const LoopComparison c = compare_against("float-loop", "icosahedron", 2);
+    const RefinementComparison c = compare_against("float-loop", "icosahedron", 2);
     ASSERT_EQ(c.runs.size(), 1u);
-    const ReferenceRun& r = c.runs[0];
+    const RefinementRun& r = c.runs[0];
     EXPECT_EQ(r.verdict, Verdict::Agree) << r.explanation;
     EXPECT_NE(r.explanation.find("float tier"), std::string::npos) << r.explanation;
     EXPECT_GT(r.comparison.max_rel, 1e-12);  // float rounding, which the double tier would refuse
@@ -68,12 +67,12 @@ TEST(ExternalReference, AFloatProgramAgreesInTheFloatTierOnly) {
     ProgramSpec as_double = float_program("float-loop-as-double");
     as_double.precision = Precision::Double;
     register_reference(make_program_implementation(as_double));
-    const LoopComparison d = compare_against("float-loop-as-double", "icosahedron", 2);
+    const RefinementComparison d = compare_against("float-loop-as-double", "icosahedron", 2);
     EXPECT_EQ(d.runs[0].verdict, Verdict::Diverge);
 }
 
 /// The single run of `c` ended with `status`, verdict `verdict`, its explanation saying `says`.
-void expect_failed_run(const LoopComparison& c, RunStatus status, Verdict verdict, const std::string& says) {
+void expect_failed_run(const RefinementComparison& c, RunStatus status, Verdict verdict, const std::string& says) {
     ASSERT_EQ(c.runs.size(), 1u);
     EXPECT_EQ(c.runs[0].outcome.status, status);
     EXPECT_EQ(c.runs[0].verdict, verdict);
@@ -167,20 +166,20 @@ TEST(Callback, IsComparedAndItsRuleNamed) {
     const auto warren = make_callback_implementation("mine", {Scheme::Loop}, [](const PolyMesh& m, const RefineRequest& r) {
         return to_poly_mesh(loop_subdivide(to_tri_mesh(m, "mine"), {LoopWeights::Warren, LoopBoundary::EdgeOnly}, r.levels));
     });
-    LoopComparisonRequest req;
+    RefinementRequest req;
     req.levels = 2;
     req.subject = warren.get();
-    const LoopComparison c = compare_loop(bundled("icosahedron"), "icosahedron", req);
+    const RefinementComparison c = compare_refinement(datasets::bundled_mesh("icosahedron"), "icosahedron", req);
     ASSERT_FALSE(c.subject_failed()) << c.subject_outcome.summary();
     ASSERT_TRUE(c.rules && c.rules->rule);
     EXPECT_EQ(*c.rules->rule, (LoopOptions{LoopWeights::Warren, LoopBoundary::EdgeOnly}));
-    for (const ReferenceRun& r : c.runs) EXPECT_EQ(r.divergence_class, DivergenceClass::WeightFamily) << r.reference;
+    for (const RefinementRun& r : c.runs) EXPECT_EQ(r.divergence_class, DivergenceClass::WeightFamily) << r.reference;
 
     const auto crashing = make_callback_implementation("crashing", {Scheme::Loop}, [](const PolyMesh&, const RefineRequest&) -> PolyMesh {
         std::abort();
     });
     req.subject = crashing.get();
-    const LoopComparison d = compare_loop(bundled("tetrahedron"), "tetrahedron", req);
+    const RefinementComparison d = compare_refinement(datasets::bundled_mesh("tetrahedron"), "tetrahedron", req);
     EXPECT_EQ(d.subject_outcome.status, RunStatus::Crashed);
     EXPECT_TRUE(d.subject_failed());
 }
@@ -241,13 +240,13 @@ public:
 
 TEST(LibraryReference, PastItsValenceTableIsAValenceLimitEvenWithoutACorrespondence) {
     register_reference(std::make_unique<ShortTableLibrary>());
-    SchemeRequest req;
+    RefinementRequest req;
     req.scheme = Scheme::Sqrt3;
     req.levels = 3;
     req.references = {"short-table"};
-    const SchemeComparison c = compare_scheme(datasets::bundled_mesh("pole-64"), "pole-64", req);
+    const RefinementComparison c = compare_refinement(datasets::bundled_mesh("pole-64"), "pole-64", req);
     ASSERT_EQ(c.runs.size(), 1u);
-    const SchemeReferenceRun& r = c.runs[0];
+    const RefinementRun& r = c.runs[0];
     EXPECT_EQ(r.correspondence.method, MatchMethod::None) << r.correspondence.note;  // level 3 cannot be matched
     EXPECT_EQ(r.verdict, Verdict::Diverge);
     EXPECT_EQ(r.divergence_class, DivergenceClass::ValenceLimit) << r.explanation;
@@ -267,20 +266,20 @@ TEST(MeshLab, AgreesWithCoreUnderEachOfItsWeightFamilies) {
         << "meshlab is unavailable (apt-get install meshlab xvfb xauth)";
     for (LoopWeights w : {LoopWeights::Loop, LoopWeights::Regularity, LoopWeights::Continuity})
         for (const char* mesh : {"cube-asymmetric", "fan-5", "open-patch"}) {
-            LoopComparisonRequest req;
+            RefinementRequest req;
             req.levels = 2;
-            req.options = {w, LoopBoundary::EdgeOnly};
+            req.rule.loop = {w, LoopBoundary::EdgeOnly};
             req.references = {"meshlab"};
-            const LoopComparison c = compare_loop(bundled(mesh), mesh, req);
+            const RefinementComparison c = compare_refinement(datasets::bundled_mesh(mesh), mesh, req);
             ASSERT_EQ(c.runs.size(), 1u);
             EXPECT_EQ(c.runs[0].verdict, Verdict::Agree) << to_string(w) << " " << mesh << ": " << c.runs[0].explanation;
         }
     // Warren's weights MeshLab lacks: it runs Loop's, and the difference is the weight family.
-    LoopComparisonRequest req;
+    RefinementRequest req;
     req.levels = 2;
-    req.options = {LoopWeights::Warren, LoopBoundary::EdgeOnly};
+    req.rule.loop = {LoopWeights::Warren, LoopBoundary::EdgeOnly};
     req.references = {"meshlab"};
-    const LoopComparison c = compare_loop(bundled("icosahedron"), "icosahedron", req);
+    const RefinementComparison c = compare_refinement(datasets::bundled_mesh("icosahedron"), "icosahedron", req);
     EXPECT_EQ(c.runs[0].divergence_class, DivergenceClass::WeightFamily) << c.runs[0].explanation;
 }
 
@@ -293,14 +292,13 @@ TEST(MeshLab, ReadsEachFanOfABowtieAloneInTheTunedEdgeMask) {
     const Manifest m = read_manifest(kSource + "/verification/suites/default.suite");
     ASSERT_TRUE(is_built("meshlab"));
     const PolyMesh bowtie = datasets::edge_case("bowtie-open-fans").mesh;
-    const TriMesh tri = to_tri_mesh(bowtie, "test");
     for (LoopWeights w : {LoopWeights::Regularity, LoopWeights::Continuity}) {
         SCOPED_TRACE(to_string(w));
-        LoopComparisonRequest req;
+        RefinementRequest req;
         req.levels = 1;
-        req.options = {w, LoopBoundary::EdgeOnly};
+        req.rule.loop = {w, LoopBoundary::EdgeOnly};
         req.references = {"meshlab"};
-        const LoopComparison c = compare_loop(tri, "bowtie-open-fans", req);
+        const RefinementComparison c = compare_refinement(bowtie, "bowtie-open-fans", req);
         ASSERT_EQ(c.runs.size(), 1u);
         const MeshComparison& mc = c.runs[0].comparison;
         ASSERT_TRUE(mc.topology_equal()) << c.runs[0].explanation;
@@ -309,7 +307,7 @@ TEST(MeshLab, ReadsEachFanOfABowtieAloneInTheTunedEdgeMask) {
         EXPECT_GT(mc.worst[0].distance, 0.01 * mc.diagonal);  // measured: 0.062 of the diagonal
         // Float rounding (measured: 3e-8 of the diagonal), far below the tuned mask's effect.
         EXPECT_LE(mc.worst[1].distance, 1e-6 * mc.diagonal);
-        const PolyMesh tuned = loop_subdivide(bowtie, req.options, 1);
+        const PolyMesh tuned = loop_subdivide(bowtie, req.rule.loop, 1);
         const PolyMesh plain = loop_subdivide(bowtie, {LoopWeights::Loop, LoopBoundary::EdgeOnly}, 1);
         double moved = 0.0;
         for (int v = bowtie.num_vertices(); v < tuned.num_vertices(); ++v)
@@ -326,12 +324,12 @@ TEST(MeshLab, ButterflyTakesTheOppositeVertexForAWingBeyondTheBoundary) {
     ASSERT_TRUE(is_built("meshlab"));
     for (const char* mesh : {"icosahedron", "open-patch", "cube-asymmetric"}) {
         for (ButterflyWings wings : kAllButterflyWings) {
-            SchemeRequest req;
+            RefinementRequest req;
             req.scheme = Scheme::Butterfly;
             req.rule.butterfly_wings = wings;
             req.levels = 2;
             req.references = {"meshlab"};
-            const SchemeComparison c = compare_scheme(datasets::bundled_mesh(mesh), mesh, req);
+            const RefinementComparison c = compare_refinement(datasets::bundled_mesh(mesh), mesh, req);
             ASSERT_EQ(c.runs.size(), 1u);
             const bool open = std::string(mesh) == "open-patch";
             if (!open || wings == ButterflyWings::OppositeVertex) {

@@ -16,7 +16,7 @@
 #include "crossdiv/verification/suite/operations.h"
 #include "crossdiv/verification/studies/curvature_study.h"
 #include "crossdiv/verification/comparisons/limit_comparison.h"
-#include "crossdiv/verification/comparisons/scheme_comparison.h"
+#include "crossdiv/verification/comparisons/refinement_comparison.h"
 #include "scheme_test_catalog.h"
 
 namespace crossdiv::verification {
@@ -27,12 +27,13 @@ using test::open_mesh;
 
 TEST(CatmullClarkComparison, EveryReferenceAgreesOrDivergesByItsDocumentedRule) {
     for (const auto& b : catalog()) {
-        SchemeRequest req;
+        RefinementRequest req;
+        req.scheme = Scheme::CatmullClark;
         req.rule.catmull_clark = {CatmullClarkBoundary::EdgeOnly};
         req.levels = 2;
-        const SchemeComparison c = compare_scheme(b.mesh, b.name, req);
+        const RefinementComparison c = compare_refinement(b.mesh, b.name, req);
         ASSERT_TRUE(c.core_error.empty()) << b.name << ": " << c.core_error;
-        for (const SchemeReferenceRun& r : c.runs) {
+        for (const RefinementRun& r : c.runs) {
             SCOPED_TRACE(b.name + " vs " + r.reference);
             if (r.reference == "openmesh" && open_mesh(b.mesh)) {
                 // OpenMesh's boundary vertex is 2/3, 1/6, 1/6: measured, and explained by it.
@@ -49,11 +50,12 @@ TEST(CatmullClarkComparison, EveryReferenceAgreesOrDivergesByItsDocumentedRule) 
 }
 
 TEST(CatmullClarkComparison, CgalLacksTheCornerRule) {
-    SchemeRequest req;
+    RefinementRequest req;
+    req.scheme = Scheme::CatmullClark;
     req.rule.catmull_clark = {CatmullClarkBoundary::EdgeAndCorner};
     req.levels = 2;
     req.references = {"cgal", "opensubdiv"};
-    const SchemeComparison c = compare_scheme(datasets::bundled_mesh("quad-grid"), "quad-grid", req);
+    const RefinementComparison c = compare_refinement(datasets::bundled_mesh("quad-grid"), "quad-grid", req);
     ASSERT_EQ(c.runs.size(), 2u);
     EXPECT_EQ(c.runs[0].divergence_class, DivergenceClass::CornerRule);
     EXPECT_EQ(c.runs[1].verdict, Verdict::Agree);
@@ -62,21 +64,20 @@ TEST(CatmullClarkComparison, CgalLacksTheCornerRule) {
 TEST(LimitComparison, LoopAndCatmullClarkAgreeWithOpenSubdivClosedAndOpen) {
     for (const char* name : {"icosahedron", "open-patch", "pole-64", "fan-7"})
         for (int levels : {0, 2}) {
-            const LimitComparison c = compare_loop_limit(datasets::bundled_mesh(name), name,
-                                                         {LoopWeights::Loop, LoopBoundary::EdgeAndCorner}, levels);
+            const LimitComparison c = compare_limit(datasets::bundled_mesh(name), name,
+                                                    {Scheme::Loop, rule_from_boundary_name(Scheme::Loop, "edge-and-corner"), levels});
             EXPECT_EQ(c.verdict, Verdict::Agree) << name << " L" << levels << ": " << c.explanation;
             EXPECT_GT(c.normals_compared, 0);
         }
     for (const char* name : {"quad-cube", "quad-grid", "prism-5", "tetrahedron"})
         for (int levels : {1, 3}) {
-            const LimitComparison c = compare_catmull_clark_limit(datasets::bundled_mesh(name), name,
-                                                                  {CatmullClarkBoundary::EdgeOnly}, levels);
+            const LimitComparison c = compare_limit(datasets::bundled_mesh(name), name, {Scheme::CatmullClark, {}, levels});
             EXPECT_EQ(c.verdict, Verdict::Agree) << name << " L" << levels << ": " << c.explanation;
         }
     // Warren: OpenSubdiv has Loop's weights only, and says so.
-    EXPECT_EQ(compare_loop_limit(datasets::bundled_mesh("icosahedron"), "icosahedron",
-                                 {LoopWeights::Warren, LoopBoundary::EdgeOnly}, 0).verdict,
-              Verdict::RefRejected);
+    RefineRequest warren{Scheme::Loop, {}, 0};
+    warren.rule.loop.weights = LoopWeights::Warren;
+    EXPECT_EQ(compare_limit(datasets::bundled_mesh("icosahedron"), "icosahedron", warren).verdict, Verdict::RefRejected);
 }
 
 TEST(Spectrum, MatchesThePublishedClosedFormsAndIsRegular) {

@@ -12,8 +12,7 @@
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/datasets/edge_cases.h"
 #include "crossdiv/verification/implementations/inputs.h"
-#include "crossdiv/verification/comparisons/loop_comparison.h"
-#include "crossdiv/verification/comparisons/scheme_comparison.h"
+#include "crossdiv/verification/comparisons/refinement_comparison.h"
 #include "crossdiv/verification/harness/mesh_topology.h"
 #include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/verification/harness/tolerances.h"
@@ -98,21 +97,21 @@ TEST_P(LoopConformance, CoreAgreesWithEachReferenceOrDivergesByTheMissingRule) {
     const Case& c = GetParam();
     const PolyMesh input = load_input(c.input);
     const RuleFootprint fp = footprint(input);
-    LoopComparisonRequest req;
-    req.options = c.options;
+    RefinementRequest req;
+    req.rule.loop = c.options;
     req.levels = c.levels;
-    const LoopComparison result = compare_loop(to_tri_mesh(input, "Loop"), c.input, req);
+    const RefinementComparison result = compare_refinement(input, c.input, req);
     ASSERT_EQ(result.runs.size(), references_for(Scheme::Loop).size());
 
-    for (const ReferenceRun& r : result.runs) {
+    for (const RefinementRun& r : result.runs) {
         SCOPED_TRACE(r.reference + ": " + r.explanation);
         ASSERT_EQ(r.outcome.status, RunStatus::Ok) << r.outcome.summary();
         ASSERT_NE(r.correspondence.method, MatchMethod::None) << r.correspondence.note;
         EXPECT_TRUE(r.comparison.topology_equal());
         ASSERT_EQ(r.level_max_rel.size(), static_cast<size_t>(c.levels));
 
-        const bool weights_missing = r.ran_with.weights != c.options.weights;
-        const bool boundary_missing = r.ran_with.boundary != c.options.boundary;
+        const bool weights_missing = r.ran_with.loop.weights != c.options.weights;
+        const bool boundary_missing = r.ran_with.loop.boundary != c.options.boundary;
         const bool expect_diverge =
             (weights_missing && fp.curved_irregular_interior) || (boundary_missing && fp.curved_one_face_corner);
         if (!expect_diverge) {
@@ -141,13 +140,13 @@ TEST(LoopConformance, NonManifoldCatalogAgreesWithOpenSubdivAndTheOthersAreClass
         if (c.valid_loop_input) continue;
         for (LoopBoundary b : {LoopBoundary::EdgeOnly, LoopBoundary::EdgeAndCorner}) {
             SCOPED_TRACE(c.name + " " + std::string(to_string(b)));
-            LoopComparisonRequest req;
-            req.options = {LoopWeights::Loop, b};
+            RefinementRequest req;
+            req.rule.loop = {LoopWeights::Loop, b};
             req.levels = 3;
             req.references = {"opensubdiv", "openmesh", "cgal"};
-            const LoopComparison cmp = compare_loop(to_tri_mesh(c.mesh, "test"), c.name, req);
+            const RefinementComparison cmp = compare_refinement(c.mesh, c.name, req);
             ASSERT_TRUE(cmp.core_error.empty()) << cmp.core_error;
-            for (const ReferenceRun& r : cmp.runs) {
+            for (const RefinementRun& r : cmp.runs) {
                 SCOPED_TRACE(r.reference);
                 if (r.reference == "opensubdiv") {
                     EXPECT_EQ(r.verdict, Verdict::Agree) << r.explanation;
@@ -228,14 +227,14 @@ TEST(LoopConformance, CatmullClarkOnEveryNonManifoldAndPolygonEdgeCaseAgreesWith
     for (const datasets::EdgeCase& c : cases)
         for (CatmullClarkBoundary b : {CatmullClarkBoundary::EdgeOnly, CatmullClarkBoundary::EdgeAndCorner}) {
             SCOPED_TRACE(c.name + " " + std::string(to_string(b)));
-            SchemeRequest req;
+            RefinementRequest req;
             req.scheme = Scheme::CatmullClark;
             req.rule.catmull_clark.boundary = b;
             req.levels = 2;
             if (!c.mesh.creases.empty()) req.references = {"opensubdiv"};  // the one with crease and hole rules
-            const SchemeComparison cmp = compare_scheme(c.mesh, c.name, req);
+            const RefinementComparison cmp = compare_refinement(c.mesh, c.name, req);
             ASSERT_TRUE(cmp.core_error.empty()) << cmp.core_error;
-            for (const SchemeReferenceRun& r : cmp.runs) {
+            for (const RefinementRun& r : cmp.runs) {
                 SCOPED_TRACE(r.reference);
                 if (r.reference == "opensubdiv") {
                     EXPECT_EQ(r.verdict, Verdict::Agree) << r.explanation;

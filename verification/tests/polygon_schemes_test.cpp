@@ -15,7 +15,7 @@
 #include "crossdiv/verification/implementations/inputs.h"
 #include "crossdiv/verification/properties/butterfly_properties.h"
 #include "crossdiv/verification/harness/correspondence.h"
-#include "crossdiv/verification/comparisons/scheme_comparison.h"
+#include "crossdiv/verification/comparisons/refinement_comparison.h"
 #include "scheme_test_catalog.h"
 
 namespace crossdiv::verification {
@@ -82,34 +82,37 @@ TEST(CatmullClarkStreaming, IsTheStencilDriverBitForBitOnEveryInput) {
 // diagonal: inside 0.05, outside 1e-4).
 TEST(CatmullClarkComparison, TheTiersHoldEveryScheme) {
     CROSSDIV_REQUIRE_LIBRARIES("opensubdiv", "openmesh");
-    SchemeRequest strict;
+    RefinementRequest strict;
+    strict.scheme = Scheme::CatmullClark;
     strict.levels = 2;
     strict.references = {"opensubdiv"};
     strict.tier = Tier::Strict;
-    const SchemeComparison s = compare_scheme(datasets::bundled_mesh("quad-cube"), "bundled:quad-cube", strict);
+    const RefinementComparison s = compare_refinement(datasets::bundled_mesh("quad-cube"), "bundled:quad-cube", strict);
     ASSERT_EQ(s.runs.size(), 1u);
     EXPECT_EQ(s.runs[0].verdict, Verdict::Agree) << s.runs[0].explanation;
     EXPECT_EQ(s.runs[0].explanation, "bitwise identical");
-    SchemeRequest geometric;
+    RefinementRequest geometric;
+    geometric.scheme = Scheme::CatmullClark;
     geometric.references = {"openmesh"};
     geometric.tier = Tier::Geometric;
     geometric.tolerance = 0.05;
     const PolyMesh grid = datasets::bundled_mesh("quad-grid");
-    const SchemeComparison g = compare_scheme(grid, "bundled:quad-grid", geometric);
+    const RefinementComparison g = compare_refinement(grid, "bundled:quad-grid", geometric);
     EXPECT_EQ(g.runs[0].verdict, Verdict::Agree) << g.runs[0].explanation;
     EXPECT_GT(g.runs[0].hausdorff_rel, 1e-4);
     EXPECT_LE(g.runs[0].hausdorff_rel, 0.05);
     geometric.tolerance = 1e-4;
-    const SchemeComparison tight = compare_scheme(grid, "bundled:quad-grid", geometric);
+    const RefinementComparison tight = compare_refinement(grid, "bundled:quad-grid", geometric);
     EXPECT_EQ(tight.runs[0].verdict, Verdict::Diverge);
     EXPECT_EQ(tight.runs[0].divergence_class, DivergenceClass::BoundaryRule) << tight.runs[0].explanation;
 }
 
 /// OpenMesh's run of one Catmull-Clark level of `m` against core's edge-only rule.
-SchemeReferenceRun openmesh_catmull_clark(const PolyMesh& m) {
-    SchemeRequest req;
+RefinementRun openmesh_catmull_clark(const PolyMesh& m) {
+    RefinementRequest req;
+    req.scheme = Scheme::CatmullClark;
     req.references = {"openmesh"};
-    const SchemeComparison c = compare_scheme(m, "test mesh", req);
+    const RefinementComparison c = compare_refinement(m, "test mesh", req);
     EXPECT_EQ(c.runs.size(), 1u);
     return c.runs.at(0);
 }
@@ -125,13 +128,13 @@ TEST(CatmullClarkComparison, ABoundaryRuleBesideAnIsolatedVertexIsNamedBoth) {
                    Vec3(2, 1, 0), Vec3(0, 2, 0.2), Vec3(1, 2, 0), Vec3(2, 2, 0), Vec3(5, 5, 5)};
     for (const std::vector<int>& f : std::vector<std::vector<int>>{{0, 1, 4, 3}, {1, 2, 5, 4}, {3, 4, 7, 6}, {4, 5, 8, 7}})
         m.add_face(f);
-    const SchemeReferenceRun r = openmesh_catmull_clark(m);
+    const RefinementRun r = openmesh_catmull_clark(m);
     ASSERT_EQ(r.verdict, Verdict::Diverge) << r.explanation;
     EXPECT_EQ(r.divergence_class, DivergenceClass::BoundaryRule) << r.explanation;
     EXPECT_NE(r.explanation.find("isolated-vertex-handling too"), std::string::npos) << r.explanation;
     // Without the isolated vertex, the boundary rule alone.
     m.positions.pop_back();
-    const SchemeReferenceRun alone = openmesh_catmull_clark(m);
+    const RefinementRun alone = openmesh_catmull_clark(m);
     EXPECT_EQ(alone.divergence_class, DivergenceClass::BoundaryRule);
     EXPECT_EQ(alone.explanation.find("isolated"), std::string::npos) << alone.explanation;
 }
@@ -151,7 +154,7 @@ TEST(CatmullClarkComparison, ABoundaryRuleBesideABowtieIsNonManifoldHandling) {
     // A quad hanging from the far corner (vertex 15) alone: a bowtie there.
     m.positions.insert(m.positions.end(), {Vec3(4, 3, 0.5), Vec3(4, 4, 0.2), Vec3(3, 4, 0.4)});
     m.add_face({15, 16, 17, 18});
-    const SchemeReferenceRun r = openmesh_catmull_clark(m);
+    const RefinementRun r = openmesh_catmull_clark(m);
     ASSERT_EQ(r.verdict, Verdict::Diverge) << r.explanation;
     EXPECT_EQ(r.divergence_class, DivergenceClass::NonManifoldHandling) << r.explanation;
     EXPECT_NE(r.explanation.find("from core with midpoint-average"), std::string::npos) << r.explanation;
@@ -174,11 +177,11 @@ TEST(DooSabinComparison, OnlyAMeasuredTopologyDifferenceIsClassifiedTopology) {
                                                             r.add_face(std::vector<int>(full.face(f), full.face(f) + full.face_size(f)));
                                                         return r;
                                                     }));
-    SchemeRequest req;
+    RefinementRequest req;
     req.scheme = Scheme::DooSabin;
     req.levels = 1;
     req.references = {"swapped-doo-sabin", "face-dropping-doo-sabin"};
-    const SchemeComparison c = compare_scheme(datasets::bundled_mesh("cube-asymmetric"), "cube-asymmetric", req);
+    const RefinementComparison c = compare_refinement(datasets::bundled_mesh("cube-asymmetric"), "cube-asymmetric", req);
     ASSERT_EQ(c.runs.size(), 2u);
     EXPECT_EQ(c.runs[0].verdict, Verdict::Diverge);
     EXPECT_EQ(c.runs[0].divergence_class, DivergenceClass::Unexplained) << c.runs[0].explanation;
@@ -189,14 +192,14 @@ TEST(DooSabinComparison, OnlyAMeasuredTopologyDifferenceIsClassifiedTopology) {
 TEST(DooSabinComparison, CgalAgreesOnClosedMeshesAndDropsBorderFacesOnOpenOnes) {
     CROSSDIV_REQUIRE_LIBRARIES("cgal");
     for (const auto& b : catalog()) {
-        SchemeRequest req;
+        RefinementRequest req;
         req.scheme = Scheme::DooSabin;
         req.levels = 2;
         req.references = {"cgal"};
-        const SchemeComparison c = compare_scheme(b.mesh, b.name, req);
+        const RefinementComparison c = compare_refinement(b.mesh, b.name, req);
         ASSERT_TRUE(c.core_error.empty()) << b.name << ": " << c.core_error;
         ASSERT_EQ(c.runs.size(), 1u);
-        const SchemeReferenceRun& r = c.runs[0];
+        const RefinementRun& r = c.runs[0];
         SCOPED_TRACE(b.name);
         if (open_mesh(b.mesh)) {
             EXPECT_EQ(r.divergence_class, DivergenceClass::BorderFacesDropped) << r.explanation;
@@ -211,13 +214,13 @@ TEST(Sqrt3Comparison, OneCallAgreesPerLevelCallsNeverRefineTheBoundary) {
     CROSSDIV_REQUIRE_LIBRARIES("cgal", "openmesh");
     for (const auto& b : catalog()) {
         if (!b.mesh.all_triangles()) continue;
-        SchemeRequest req;
+        RefinementRequest req;
         req.scheme = Scheme::Sqrt3;
         req.levels = 3;  // steps 0, 1 (boundary), 2
-        const SchemeComparison c = compare_scheme(b.mesh, b.name, req);
+        const RefinementComparison c = compare_refinement(b.mesh, b.name, req);
         ASSERT_TRUE(c.core_error.empty()) << b.name << ": " << c.core_error;
         ASSERT_EQ(c.runs.size(), 4u);
-        for (const SchemeReferenceRun& r : c.runs) {
+        for (const RefinementRun& r : c.runs) {
             SCOPED_TRACE(b.name + " vs " + r.reference);
             const bool one_call = r.reference.find("one-call") != std::string::npos;
             if (r.reference.rfind("openmesh", 0) == 0 && max_valence(b.mesh) > 49) {
@@ -241,10 +244,10 @@ TEST(Sqrt3Comparison, OneCallAgreesPerLevelCallsNeverRefineTheBoundary) {
 TEST(ModifiedButterflyComparison, OpenMeshAgreesOnEveryTriangleMesh) {
     CROSSDIV_REQUIRE_LIBRARIES("openmesh");
     for (const auto& b : datasets::bundled_meshes()) {
-        SchemeRequest req;
+        RefinementRequest req;
         req.scheme = Scheme::ModifiedButterfly;
         req.levels = 2;
-        const SchemeComparison c = compare_scheme(b.mesh, b.name, req);
+        const RefinementComparison c = compare_refinement(b.mesh, b.name, req);
         ASSERT_EQ(c.runs.size(), 1u);
         EXPECT_EQ(c.runs[0].verdict, Verdict::Agree) << b.name << ": " << c.runs[0].explanation;
     }

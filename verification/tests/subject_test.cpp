@@ -11,7 +11,7 @@
 #include "crossdiv/error.h"
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/subdiv/loop.h"
-#include "crossdiv/verification/comparisons/loop_comparison.h"
+#include "crossdiv/verification/comparisons/refinement_comparison.h"
 #include "crossdiv/verification/comparisons/shrink.h"
 #include "crossdiv/verification/implementations/program_implementation.h"
 #include "crossdiv/verification/implementations/registry.h"
@@ -31,11 +31,11 @@ std::string misbehaving(const std::string& mode) {
 
 using test::bundled;
 
-LoopComparison compare_with(const Implementation& subject, const std::string& mesh, int levels) {
-    LoopComparisonRequest req;
+RefinementComparison compare_with(const Implementation& subject, const std::string& mesh, int levels) {
+    RefinementRequest req;
     req.levels = levels;
     req.subject = &subject;
-    return compare_loop(bundled(mesh), mesh, req);
+    return compare_refinement(datasets::bundled_mesh(mesh), mesh, req);
 }
 
 std::unique_ptr<Implementation> program(const std::string& command, double timeout = 60,
@@ -74,7 +74,7 @@ TEST(Program, RunsFromAFolderWhoseNameAShellWouldInterpret) {
     fs::copy_file(kSource + "/examples/subjects/python-loop/loop.py", base / "loop.py", fs::copy_options::overwrite_existing);
     const std::string command = "python3 \"" + (base / "loop.py").string() + "\" {in} {levels} {out}";
     const auto subject = program(command);
-    const LoopComparison c = compare_with(*subject, "octahedron", 1);
+    const RefinementComparison c = compare_with(*subject, "octahedron", 1);
     EXPECT_EQ(c.subject_outcome.status, RunStatus::Ok) << c.subject_outcome.summary();
     ASSERT_TRUE(c.rules && c.rules->rule);
     EXPECT_EQ(c.rules->rule->weights, LoopWeights::Warren);  // the assignment's 3/(8n), 3/32 at valence 4
@@ -120,7 +120,7 @@ class ProgramFailure : public ::testing::TestWithParam<Failure> {};
 TEST_P(ProgramFailure, IsNamedAndNothingIsCompared) {
     const Failure f = GetParam();
     const auto subject = program(misbehaving(f.mode), 3);
-    const LoopComparison c = compare_with(*subject, "icosahedron", 2);
+    const RefinementComparison c = compare_with(*subject, "icosahedron", 2);
     EXPECT_EQ(c.subject_outcome.status, f.status) << c.subject_outcome.summary();
     EXPECT_NE(c.subject_outcome.message.find(f.in_message), std::string::npos) << c.subject_outcome.message;
     EXPECT_TRUE(c.subject_failed());
@@ -145,14 +145,14 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(Program, ThatCannotStartIsRecorded) {
     const auto subject = program("/nonexistent/loop {in} {out}");
-    const LoopComparison c = compare_with(*subject, "tetrahedron", 1);
+    const RefinementComparison c = compare_with(*subject, "tetrahedron", 1);
     EXPECT_EQ(c.subject_outcome.status, RunStatus::Crashed);
     EXPECT_NE(c.subject_outcome.message.find("cannot start"), std::string::npos) << c.subject_outcome.message;
 }
 
 TEST(Program, InAnotherNumberingIsMatchedByPositionAndAgrees) {
     const auto subject = program(misbehaving("shuffle"));
-    const LoopComparison c = compare_with(*subject, "open-patch", 2);
+    const RefinementComparison c = compare_with(*subject, "open-patch", 2);
     ASSERT_FALSE(c.subject_failed()) << c.subject_outcome.summary() << c.subject_unmatched;
     // Old vertices are not first, so provenance cannot match it: positions do, at every level.
     EXPECT_EQ(c.subject_match.method, MatchMethod::Nearest);
@@ -160,7 +160,7 @@ TEST(Program, InAnotherNumberingIsMatchedByPositionAndAgrees) {
     EXPECT_EQ(*c.rules->rule, (LoopOptions{LoopWeights::Loop, LoopBoundary::EdgeOnly}));
     EXPECT_EQ(c.rules->classified_level, 1);
     ASSERT_FALSE(c.runs.empty());
-    for (const ReferenceRun& r : c.runs) EXPECT_EQ(r.verdict, Verdict::Agree) << r.reference << ": " << r.explanation;
+    for (const RefinementRun& r : c.runs) EXPECT_EQ(r.verdict, Verdict::Agree) << r.reference << ": " << r.explanation;
 }
 
 const RuleFit& fit(const VertexClassRow& row, LoopWeights w, LoopBoundary b) {
@@ -178,7 +178,7 @@ const VertexClassRow& row(const RuleIdentification& id, VertexClass cls, int val
 TEST(RuleIdentification, TheCourseStudentFollowsWarrenAtInteriorVerticesAndHasNoCornerRule) {
     const auto subject = program(kStudent);
     // The icosahedron: every vertex of valence 5, where Warren's beta 3/40 differs from Loop's.
-    const LoopComparison ico = compare_with(*subject, "icosahedron", 2);
+    const RefinementComparison ico = compare_with(*subject, "icosahedron", 2);
     ASSERT_TRUE(ico.rules);
     const VertexClassRow& v5 = row(*ico.rules, VertexClass::InteriorVertex, 5);
     EXPECT_EQ(v5.count, 12);
@@ -187,12 +187,12 @@ TEST(RuleIdentification, TheCourseStudentFollowsWarrenAtInteriorVerticesAndHasNo
     EXPECT_EQ(row(*ico.rules, VertexClass::InteriorEdgePoint).count, 30);
     ASSERT_TRUE(ico.rules->rule);
     EXPECT_EQ(ico.rules->rule->weights, LoopWeights::Warren);
-    for (const ReferenceRun& r : ico.runs) {
+    for (const RefinementRun& r : ico.runs) {
         EXPECT_EQ(r.verdict, Verdict::Diverge) << r.reference << ": " << r.explanation;
         EXPECT_EQ(r.divergence_class, DivergenceClass::WeightFamily) << r.reference << ": " << r.explanation;
     }
     // The open patch: its two one-face corners are moved by the boundary mask (no corner rule).
-    const LoopComparison patch = compare_with(*subject, "open-patch", 2);
+    const RefinementComparison patch = compare_with(*subject, "open-patch", 2);
     ASSERT_TRUE(patch.rules);
     const VertexClassRow& corner = row(*patch.rules, VertexClass::Corner);
     EXPECT_EQ(corner.count, 2);
@@ -210,7 +210,7 @@ TEST(RuleIdentification, TheCourseStudentFollowsWarrenAtInteriorVerticesAndHasNo
 
 TEST(RuleIdentification, FinalLevelOnlyIdentifiesTheWholeMeshRule) {
     const auto subject = program(kStudent, 60, LevelMode::Final);
-    const LoopComparison c = compare_with(*subject, "icosahedron", 2);
+    const RefinementComparison c = compare_with(*subject, "icosahedron", 2);
     ASSERT_TRUE(c.rules);
     EXPECT_EQ(c.rules->classified_level, 0);
     EXPECT_TRUE(c.rules->rows.empty());
@@ -222,19 +222,19 @@ TEST(ResultFile, ASubmittedResultIsComparedAtItsLevel) {
     const std::string path = (std::filesystem::temp_directory_path() / "crossdiv_result_file_test.obj").string();
     write_mesh(path, to_poly_mesh(loop_subdivide(bundled("octahedron"), {LoopWeights::Loop, LoopBoundary::EdgeOnly}, 2)));
     const auto subject = make_result_file_implementation("submitted", path, Scheme::Loop);
-    const LoopComparison c = compare_with(*subject, "octahedron", 2);
+    const RefinementComparison c = compare_with(*subject, "octahedron", 2);
     ASSERT_FALSE(c.subject_failed()) << c.subject_outcome.summary();
-    for (const ReferenceRun& r : c.runs) EXPECT_EQ(r.verdict, Verdict::Agree) << r.reference << ": " << r.explanation;
+    for (const RefinementRun& r : c.runs) EXPECT_EQ(r.verdict, Verdict::Agree) << r.reference << ": " << r.explanation;
     // At another level its counts are wrong: named, not compared.
-    const LoopComparison wrong = compare_with(*subject, "octahedron", 1);
+    const RefinementComparison wrong = compare_with(*subject, "octahedron", 1);
     EXPECT_EQ(wrong.subject_outcome.status, RunStatus::WrongCount) << wrong.subject_outcome.summary();
     std::filesystem::remove(path);
 }
 
 // Shrinking driven by a subject: what no named rule explains, or a failure, down to a mesh
 // small enough to read.
-LoopComparisonRequest subject_alone(const Implementation& subject, int levels) {
-    LoopComparisonRequest req;
+RefinementRequest subject_alone(const Implementation& subject, int levels) {
+    RefinementRequest req;
     req.levels = levels;
     req.subject = &subject;
     req.without_references = true;
@@ -246,7 +246,7 @@ TEST(ShrinkSubject, ABoundaryLeftInPlaceShrinksToTwoTriangles) {
     // place is the corner rule), so the smallest mesh showing it has a boundary vertex with
     // two faces: two triangles.
     const auto subject = program(misbehaving("keep-boundary"));
-    const ShrinkResult r = shrink_divergence(bundled("open-patch"), "open-patch", subject_alone(*subject, 2));
+    const ShrinkResult r = shrink_divergence(datasets::bundled_mesh("open-patch"), "open-patch", subject_alone(*subject, 2));
     EXPECT_EQ(r.symptom.kind, ShrinkSymptom::Kind::SubjectFollowsNoRule);
     EXPECT_EQ(r.minimal.num_faces(), 2);
     EXPECT_EQ(r.minimal.num_vertices(), 4);
@@ -262,7 +262,7 @@ TEST(ShrinkSubject, ABoundaryLeftInPlaceShrinksToTwoTriangles) {
 
 TEST(ShrinkSubject, AFailureShrinksToTheSmallestInputThatStillFailsTheSameWay) {
     const auto subject = program(misbehaving("closed-only"));
-    const ShrinkResult r = shrink_divergence(bundled("open-patch"), "open-patch", subject_alone(*subject, 1));
+    const ShrinkResult r = shrink_divergence(datasets::bundled_mesh("open-patch"), "open-patch", subject_alone(*subject, 1));
     EXPECT_EQ(r.symptom.kind, ShrinkSymptom::Kind::SubjectFails);
     EXPECT_EQ(r.symptom.status, RunStatus::ExitStatus);
     EXPECT_EQ(r.minimal.num_faces(), 1);
@@ -271,11 +271,11 @@ TEST(ShrinkSubject, AFailureShrinksToTheSmallestInputThatStillFailsTheSameWay) {
 
 TEST(ShrinkSubject, AgainstAReferenceKeepsTheReferencesDivergenceClass) {
     const auto subject = program(misbehaving("keep-boundary"));
-    LoopComparisonRequest req;
+    RefinementRequest req;
     req.levels = 1;
     req.subject = subject.get();
     req.references = {"opensubdiv"};
-    const ShrinkResult r = shrink_divergence(bundled("open-patch"), "open-patch", req);
+    const ShrinkResult r = shrink_divergence(datasets::bundled_mesh("open-patch"), "open-patch", req);
     EXPECT_EQ(r.symptom.kind, ShrinkSymptom::Kind::ReferenceDiverges);
     EXPECT_EQ(r.symptom.divergence_class, DivergenceClass::Unexplained);
     EXPECT_EQ(r.minimal.num_faces(), 2);
@@ -284,7 +284,7 @@ TEST(ShrinkSubject, AgainstAReferenceKeepsTheReferencesDivergenceClass) {
 
 TEST(ShrinkSubject, ASubjectThatFollowsANamedRuleHasNothingToShrink) {
     const auto student = program(kStudent);
-    EXPECT_THROW(shrink_divergence(bundled("open-patch"), "open-patch", subject_alone(*student, 1)), InputError);
+    EXPECT_THROW(shrink_divergence(datasets::bundled_mesh("open-patch"), "open-patch", subject_alone(*student, 1)), InputError);
 }
 
 }  // namespace

@@ -56,8 +56,8 @@ TEST(Manifest, ReadsEveryKey) {
     const ManifestEntry& e = m.entries[0];
     EXPECT_EQ(e.line, 4);
     EXPECT_EQ(e.inputs, (std::vector<std::string>{"bundled:tetrahedron", "bundled:fan-5"}));
-    EXPECT_EQ(e.request.options.weights, LoopWeights::Warren);
-    EXPECT_EQ(e.request.options.boundary, LoopBoundary::EdgeAndCorner);
+    EXPECT_EQ(e.request.rule.loop.weights, LoopWeights::Warren);
+    EXPECT_EQ(e.request.rule.loop.boundary, LoopBoundary::EdgeAndCorner);
     EXPECT_EQ(e.request.levels, 2);
     EXPECT_EQ(e.request.references, std::vector<std::string>{"opensubdiv"});
     EXPECT_EQ(e.request.tier, Tier::Geometric);
@@ -109,20 +109,20 @@ TEST(Manifest, ReadsTheKeysOfEveryScheme) {
                                            "case polygons:all doo-sabin\n"));
     ASSERT_EQ(m.entries.size(), 2u);
     const ManifestEntry& cc = m.entries[0];
-    EXPECT_EQ(cc.scheme_request.scheme, Scheme::CatmullClark);
+    EXPECT_EQ(cc.request.scheme, Scheme::CatmullClark);
     EXPECT_EQ(cc.rule_flags.boundary, "edge-and-corner");
     EXPECT_EQ(cc.rule_flags.creasing, "chaikin");
-    EXPECT_EQ(cc.scheme_request.levels, 3);
-    EXPECT_EQ(cc.scheme_request.references, (std::vector<std::string>{"opensubdiv", "cgal"}));
-    EXPECT_EQ(cc.scheme_request.tier, Tier::Strict);
-    EXPECT_EQ(cc.scheme_request.timeout_seconds, 7);
+    EXPECT_EQ(cc.request.levels, 3);
+    EXPECT_EQ(cc.request.references, (std::vector<std::string>{"opensubdiv", "cgal"}));
+    EXPECT_EQ(cc.request.tier, Tier::Strict);
+    EXPECT_EQ(cc.request.timeout_seconds, 7);
     const ManifestEntry& ds = m.entries[1];
-    EXPECT_EQ(ds.scheme_request.scheme, Scheme::DooSabin);
+    EXPECT_EQ(ds.request.scheme, Scheme::DooSabin);
     EXPECT_EQ(ds.rule_flags.boundary, "");  // the input's tags, then the default
-    EXPECT_EQ(ds.scheme_request.levels, 1);
+    EXPECT_EQ(ds.request.levels, 1);
     std::vector<std::string> having;  // without against=, every reference that has the scheme
     for (const Implementation* r : references_for(Scheme::DooSabin)) having.push_back(r->name());
-    EXPECT_EQ(ds.scheme_request.references, having);
+    EXPECT_EQ(ds.request.references, having);
     const std::vector<SuiteJob> jobs = expand_jobs(m);
     EXPECT_EQ(jobs.front().id, "bundled:" + datasets::bundled_meshes().front().name +
                                    " | catmull-clark boundary=edge-and-corner crease-method=chaikin L3 strict");
@@ -389,10 +389,10 @@ TEST(Suite, ShardsMergeIntoTheSameResultsAsOneRun) {
 }
 
 /// A request against one reference.
-LoopComparisonRequest against(const std::string& reference, LoopOptions options, int levels, Tier tier = Tier::Weak,
+RefinementRequest against(const std::string& reference, LoopOptions options, int levels, Tier tier = Tier::Weak,
                               double tolerance = tolerances::kAgreementRelative) {
-    LoopComparisonRequest req;
-    req.options = options;
+    RefinementRequest req;
+    req.rule.loop = options;
     req.levels = levels;
     req.references = {reference};
     req.tier = tier;
@@ -403,24 +403,24 @@ LoopComparisonRequest against(const std::string& reference, LoopOptions options,
 TEST(Tiers, ARuleDifferenceIsClassifiedTheSameInEveryTier) {
     // Warren against OpenSubdiv (Loop weights only) on the icosahedron moves vertices by 7e-3
     // of the diagonal. Whatever the tier, the rerun with Loop's weights explains it.
-    const TriMesh ico = to_tri_mesh(datasets::bundled_mesh("icosahedron"), "test");
+    const PolyMesh ico = datasets::bundled_mesh("icosahedron");
     const LoopOptions warren{LoopWeights::Warren, LoopBoundary::EdgeOnly};
     for (const auto& [tier, tol] : std::vector<std::pair<Tier, double>>{
              {Tier::Strict, 0.0}, {Tier::Weak, 1e-12}, {Tier::Geometric, 1e-6}}) {
-        const LoopComparison c = compare_loop(ico, "icosahedron", against("opensubdiv", warren, 2, tier, tol));
+        const RefinementComparison c = compare_refinement(ico, "icosahedron", against("opensubdiv", warren, 2, tier, tol));
         EXPECT_EQ(c.runs[0].verdict, Verdict::Diverge) << to_string(tier);
         EXPECT_EQ(c.runs[0].divergence_class, DivergenceClass::WeightFamily) << to_string(tier) << ": " << c.runs[0].explanation;
     }
     // The geometric tier at a tolerance above what the rule moves calls it agreement.
-    const LoopComparison loose = compare_loop(ico, "icosahedron", against("opensubdiv", warren, 2, Tier::Geometric, 0.05));
+    const RefinementComparison loose = compare_refinement(ico, "icosahedron", against("opensubdiv", warren, 2, Tier::Geometric, 0.05));
     EXPECT_EQ(loose.runs[0].verdict, Verdict::Agree);
     EXPECT_GT(loose.runs[0].hausdorff_rel, 1e-4);
     EXPECT_LT(loose.runs[0].hausdorff_rel, 0.05);
 }
 
 TEST(Shrink, CornerRuleOnTheOpenPatchShrinksToOneTriangle) {
-    const TriMesh patch = to_tri_mesh(datasets::bundled_mesh("open-patch"), "test");
-    const LoopComparisonRequest req = against("openmesh", {LoopWeights::Loop, LoopBoundary::EdgeAndCorner}, 2);
+    const PolyMesh patch = datasets::bundled_mesh("open-patch");
+    const RefinementRequest req = against("openmesh", {LoopWeights::Loop, LoopBoundary::EdgeAndCorner}, 2);
     const ShrinkResult r = shrink_divergence(patch, "open-patch", req);
     EXPECT_EQ(r.symptom.divergence_class, DivergenceClass::CornerRule);
     EXPECT_LE(r.neighbourhood.num_faces(), 4);
@@ -430,8 +430,8 @@ TEST(Shrink, CornerRuleOnTheOpenPatchShrinksToOneTriangle) {
 }
 
 TEST(Shrink, WarrenWeightsShrinkToOneIrregularFanAndTheResultIsOneMinimal) {
-    const TriMesh ico = to_tri_mesh(datasets::bundled_mesh("icosahedron"), "test");
-    const LoopComparisonRequest req = against("opensubdiv", {LoopWeights::Warren, LoopBoundary::EdgeOnly}, 1);
+    const PolyMesh ico = datasets::bundled_mesh("icosahedron");
+    const RefinementRequest req = against("opensubdiv", {LoopWeights::Warren, LoopBoundary::EdgeOnly}, 1);
     const ShrinkResult r = shrink_divergence(ico, "icosahedron", req);
     EXPECT_EQ(r.symptom.divergence_class, DivergenceClass::WeightFamily);
     EXPECT_LE(r.minimal.num_faces(), 5);
@@ -440,19 +440,19 @@ TEST(Shrink, WarrenWeightsShrinkToOneIrregularFanAndTheResultIsOneMinimal) {
         std::vector<int> keep;
         for (int g = 0; g < r.minimal.num_faces(); ++g)
             if (g != f) keep.push_back(g);
-        const TriMesh smaller = submesh(r.minimal, keep);
-        const LoopComparison c = compare_loop(smaller, "smaller", req);
+        const PolyMesh smaller = submesh(r.minimal, keep);
+        const RefinementComparison c = compare_refinement(smaller, "smaller", req);
         EXPECT_FALSE(c.runs[0].verdict == Verdict::Diverge && c.runs[0].divergence_class == DivergenceClass::WeightFamily) << f;
     }
 }
 
 TEST(Shrink, RefusesWhenThereIsNothingToShrink) {
-    const LoopComparisonRequest req = against("opensubdiv", {LoopWeights::Loop, LoopBoundary::EdgeOnly}, 1);
-    EXPECT_THROW(shrink_divergence(to_tri_mesh(datasets::bundled_mesh("torus"), "t"), "torus", req), InputError);
+    const RefinementRequest req = against("opensubdiv", {LoopWeights::Loop, LoopBoundary::EdgeOnly}, 1);
+    EXPECT_THROW(shrink_divergence(datasets::bundled_mesh("torus"), "torus", req), InputError);
 }
 
-SchemeRequest catmull_clark_against(const std::string& reference, int levels) {
-    SchemeRequest req;
+RefinementRequest catmull_clark_against(const std::string& reference, int levels) {
+    RefinementRequest req;
     req.scheme = Scheme::CatmullClark;
     req.rule.catmull_clark.boundary = CatmullClarkBoundary::EdgeOnly;
     req.levels = levels;
@@ -465,8 +465,8 @@ TEST(Shrink, CatmullClarksBoundaryRuleShrinksToOneFaceAndNamesOpenMeshsRule) {
     // OpenMesh's Catmull-Clark moves boundary vertices by the midpoint-average rule, core's
     // edge-only rule by the boundary B-spline mask. A single face is all boundary: the rule
     // shows there, and ddmin ends with it.
-    const SchemeShrinkResult r =
-        shrink_scheme_divergence(datasets::bundled_mesh("open-patch"), "open-patch", catmull_clark_against("openmesh", 2));
+    const ShrinkResult r =
+        shrink_divergence(datasets::bundled_mesh("open-patch"), "open-patch", catmull_clark_against("openmesh", 2));
     EXPECT_EQ(r.symptom.kind, ShrinkSymptom::Kind::ReferenceDiverges);
     EXPECT_EQ(r.symptom.divergence_class, DivergenceClass::BoundaryRule);
     EXPECT_EQ(r.original.runs.at(0).divergence_class, DivergenceClass::BoundaryRule);
@@ -485,9 +485,9 @@ TEST(Shrink, AReferenceThatReturnsABrokenMeshShrinksToTheQuadsThatBreakIt) {
     // (unreadable-output) on the repeated-vertex edge case. Measured: beside one neighbour
     // across its proper edge it does so; alone, the quad stops OpenMesh on an assertion
     // (ref-crashed), and the neighbour alone diverges by the boundary rule: two faces remain.
-    const SchemeRequest req = catmull_clark_against("openmesh", 2);
-    const SchemeShrinkResult r =
-        shrink_scheme_divergence(datasets::edge_case("repeated-vertex-quad").mesh, "repeated-vertex-quad", req);
+    const RefinementRequest req = catmull_clark_against("openmesh", 2);
+    const ShrinkResult r =
+        shrink_divergence(datasets::edge_case("repeated-vertex-quad").mesh, "repeated-vertex-quad", req);
     EXPECT_EQ(r.symptom.kind, ShrinkSymptom::Kind::ReferenceFails);
     EXPECT_EQ(r.symptom.status, RunStatus::UnreadableOutput);
     EXPECT_EQ(describe(r.symptom, "core", "openmesh"), "openmesh fails (unreadable-output)");
@@ -496,7 +496,7 @@ TEST(Shrink, AReferenceThatReturnsABrokenMeshShrinksToTheQuadsThatBreakIt) {
     for (int f = 0; f < 2; ++f) {
         const int* q = r.minimal.face(f);
         naming_twice += r.minimal.face_size(f) == 4 && (q[0] == q[1] || q[1] == q[2] || q[2] == q[3] || q[3] == q[0]);
-        const SchemeComparison alone = compare_scheme(submesh(r.minimal, {f}), "alone", req);
+        const RefinementComparison alone = compare_refinement(submesh(r.minimal, {f}), "alone", req);
         ASSERT_EQ(alone.runs.size(), 1u);
         EXPECT_NE(symptom_of(alone), r.symptom) << "face " << f << ": " << alone.runs[0].explanation;
         EXPECT_TRUE(alone.runs[0].verdict == Verdict::RefCrashed ||
@@ -508,7 +508,7 @@ TEST(Shrink, AReferenceThatReturnsABrokenMeshShrinksToTheQuadsThatBreakIt) {
 
 TEST(Shrink, APolygonSchemeThatAgreesHasNothingToShrink) {
     CROSSDIV_REQUIRE_LIBRARIES("opensubdiv");
-    EXPECT_THROW(shrink_scheme_divergence(datasets::bundled_mesh("open-patch"), "open-patch",
+    EXPECT_THROW(shrink_divergence(datasets::bundled_mesh("open-patch"), "open-patch",
                                           catmull_clark_against("opensubdiv", 1)),
                  InputError);
 }

@@ -5,7 +5,7 @@
 #include "crossdiv/mesh/halfedge_mesh.h"
 #include "crossdiv/mesh/mesh_checks.h"
 #include "crossdiv/verification/bench/bench.h"
-#include "crossdiv/verification/comparisons/scheme_comparison.h"
+#include "crossdiv/verification/comparisons/refinement_comparison.h"
 
 namespace crossdiv::verification {
 namespace {

@@ -20,29 +20,34 @@ namespace {
 
 using detail::sci;
 
-struct CoreLimit {
-    PolyMesh level;
-    LimitResult limit;
-};
+/// OpenSubdiv's limit points of `request` as three meshes {level, positions, normals} (the
+/// isolation ships a LevelTrace).
+adapters::LevelTrace reference_limit(const PolyMesh& input, const RefineRequest& request) {
+    const std::vector<const Implementation*> refs = select_references(&Capabilities::limit_positions, {}, "limit");
+    if (refs.empty()) throw adapters::Rejected("OpenSubdiv is not built into this binary");
+    const adapters::LimitPoints l = refs.front()->limit_points(input, request);
+    PolyMesh positions, normals;
+    positions.positions = l.position;
+    normals.positions = l.normal;
+    return {l.level, positions, normals};
+}
 
-/// Compares core's limit with OpenSubdiv's; `reference` runs the adapter and returns
-/// {level, limit positions, limit normals} as three meshes (the isolation ships a LevelTrace).
-LimitComparison compare(const std::string& name, const std::string& scheme, const std::string& rule, int levels,
-                        const std::function<CoreLimit()>& core,
-                        const std::function<adapters::LevelTrace()>& reference, bool isolate) {
+}  // namespace
+
+LimitComparison compare_limit(const PolyMesh& input, const std::string& name, const RefineRequest& request, bool isolate) {
     LimitComparison out;
     out.input = name;
-    out.scheme = scheme;
-    out.rule = rule;
-    out.levels = levels;
-    CoreLimit ours;
+    out.scheme = request.scheme;
+    out.rule = rule_name(request.scheme, request.rule);
+    out.levels = request.levels;
+    adapters::LimitPoints ours;
     try {
-        ours = core();
+        ours = core_implementation().limit_points(input, request);
         out.vertices = ours.level.num_vertices();
     } catch (const InputError& e) {
         out.core_error = e.what();
     }
-    const IsolatedTrace it = run_isolated(reference, 300, isolate);
+    const IsolatedTrace it = run_isolated([&] { return reference_limit(input, request); }, 300, isolate);
     out.outcome = it.outcome;
     if (const std::optional<EarlyVerdict> early = verdict_before_comparing(it.outcome, out.core_error, out.core_error)) {
         out.verdict = early->verdict;
@@ -60,10 +65,10 @@ LimitComparison compare(const std::string& name, const std::string& scheme, cons
     out.max_rel_position = 0;
     out.max_normal_angle = 0;
     for (size_t i = 0; i < c.ref_to_ours.size(); ++i) {
-        const int v = c.ref_to_ours[i];
-        out.max_rel_position = std::max(out.max_rel_position, (ours.limit.position[v] - t[1].positions[i]).norm() / diagonal);
-        const Vec3& n = ours.limit.normal[v];
-        if (std::isnan(n.x())) continue;
+        const size_t v = static_cast<size_t>(c.ref_to_ours[i]);
+        out.max_rel_position = std::max(out.max_rel_position, (ours.position[v] - t[1].positions[i]).norm() / diagonal);
+        const Vec3& n = ours.normal[v];
+        if (std::isnan(n.x())) continue;  // core computes no boundary normal
         ++out.normals_compared;
         const Vec3& m = t[2].positions[i];
         out.max_normal_angle = std::max(out.max_normal_angle, std::atan2(n.cross(m).norm(), n.dot(m)));
@@ -78,57 +83,10 @@ LimitComparison compare(const std::string& name, const std::string& scheme, cons
     return out;
 }
 
-/// OpenSubdiv's limit points of `request` as three meshes {level, positions, normals} (the
-/// isolation ships a LevelTrace).
-adapters::LevelTrace reference_limit(const PolyMesh& input, const RefineRequest& request) {
-    const std::vector<const Implementation*> refs = select_references(&Capabilities::limit_positions, {}, "limit");
-    if (refs.empty()) throw adapters::Rejected("OpenSubdiv is not built into this binary");
-    const adapters::LimitPoints l = refs.front()->limit_points(input, request);
-    PolyMesh positions, normals;
-    positions.positions = l.position;
-    normals.positions = l.normal;
-    return {l.level, positions, normals};
-}
-
-}  // namespace
-
-LimitComparison compare_loop_limit(const PolyMesh& input, const std::string& name, const LoopOptions& options,
-                                   int levels, bool isolate) {
-    return compare(
-        name, "loop", std::string(to_string(options.weights)) + " " + std::string(to_string(options.boundary)), levels,
-        [&] {
-            const TriMesh level = loop_subdivide(to_tri_mesh(input, "Loop subdivision"), options, levels);
-            return CoreLimit{to_poly_mesh(level), loop_limit(level, options)};
-        },
-        [&] {
-            RefineRequest r{Scheme::Loop, {}, levels};
-            r.rule.loop = options;
-            return reference_limit(input, r);
-        },
-        isolate);
-}
-
-LimitComparison compare_catmull_clark_limit(const PolyMesh& input, const std::string& name,
-                                            const CatmullClarkOptions& options, int levels, bool isolate) {
-    return compare(
-        name, "catmull-clark", std::string(to_string(options.boundary)), levels,
-        [&] {
-            PolyMesh level = catmull_clark_subdivide(input, options, levels);
-            LimitResult limit = catmull_clark_limit(level, options);
-            return CoreLimit{std::move(level), std::move(limit)};
-        },
-        [&] {
-            RefineRequest r{Scheme::CatmullClark, {}, levels};
-            r.rule.catmull_clark = options;
-            return reference_limit(input, r);
-        },
-        isolate);
-}
-
 nlohmann::json to_json(const LimitComparison& c) {
     const auto finite = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
     return {{"input", c.input},
-            {"scheme", c.scheme},
+            {"scheme", to_string(c.scheme)},
             {"rule", c.rule},
             {"levels", c.levels},
             {"vertices", c.vertices},

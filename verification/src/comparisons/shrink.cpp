@@ -6,34 +6,28 @@
 
 #include "crossdiv/error.h"
 #include "crossdiv/subdiv/loop.h"
+#include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/verification/harness/ddmin.h"
 
 namespace crossdiv::verification {
 namespace {
 
-/// Whether `m` still shows `symptom`. A candidate core refuses (under the request's
-/// non-manifold rule) does not count.
-bool still_shows(const TriMesh& m, const LoopComparisonRequest& req, const ShrinkSymptom& symptom, int& tests) {
+/// Whether `m` still shows `symptom` (a candidate core refuses does not).
+bool still_shows(const PolyMesh& m, const RefinementRequest& req, const ShrinkSymptom& symptom, int& tests) {
     if (m.num_faces() == 0) return false;
     ++tests;
-    try {
-        check_loop_input(m, req.options);
-    } catch (const InputError&) {
-        return false;
-    }
-    return symptom_of(compare_loop(m, "candidate", req)) == symptom;
+    return symptom_of(compare_refinement(m, "candidate", req)) == symptom;
 }
 
-/// Coarse vertices the vertex `v` of the refiner's last level descends from (through edge
-/// points' ends).
-std::vector<int> coarse_ancestors(const LoopRefiner& refiner, int v) {
+/// The coarse vertices that vertex `v` of the last level descends from (through edge points'
+/// ends), by `origins` (origins[l-1]: level l's).
+std::vector<int> coarse_ancestors(const std::vector<std::vector<VertexOrigin>>& origins, int v) {
     std::vector<int> current = {v};
-    for (int l = refiner.num_levels() - 1; l >= 1; --l) {
-        const std::vector<VertexOrigin> origins = refiner.origins(l);
+    for (size_t l = origins.size(); l-- > 0;) {
         std::vector<int> parents;
         for (int u : current) {
-            parents.push_back(origins[u].a);
-            if (origins[u].is_edge_point()) parents.push_back(origins[u].b);
+            parents.push_back(origins[l][static_cast<size_t>(u)].a);
+            if (origins[l][static_cast<size_t>(u)].is_edge_point()) parents.push_back(origins[l][static_cast<size_t>(u)].b);
         }
         std::sort(parents.begin(), parents.end());
         parents.erase(std::unique(parents.begin(), parents.end()), parents.end());
@@ -45,7 +39,7 @@ std::vector<int> coarse_ancestors(const LoopRefiner& refiner, int v) {
 /// Where the symptom shows, as (level, vertex in core's numbering at that level): the worst
 /// vertex of the diverging reference, or of the vertex class no named rule fits worst. None
 /// for a subject that fails (its failure has no place).
-std::optional<std::pair<int, int>> symptom_site(const LoopComparison& c, const ShrinkSymptom& s) {
+std::optional<std::pair<int, int>> symptom_site(const RefinementComparison& c, const ShrinkSymptom& s) {
     if (s.kind == ShrinkSymptom::Kind::ReferenceDiverges && !c.runs.empty() && !c.runs[0].comparison.worst.empty())
         return std::pair{c.levels, c.runs[0].comparison.worst[0].ours_index};
     if (s.kind == ShrinkSymptom::Kind::SubjectFollowsNoRule && c.rules && c.rules->classified_level > 0) {
@@ -66,14 +60,12 @@ std::optional<std::pair<int, int>> symptom_site(const LoopComparison& c, const S
     return std::nullopt;
 }
 
-/// The corners of face f, for either kind of mesh.
-std::span<const int> corners(const TriMesh& m, int f) { return m.triangles[static_cast<size_t>(f)]; }
+/// The corners of face f.
 std::span<const int> corners(const PolyMesh& m, int f) { return {m.face(f), static_cast<size_t>(m.face_size(f))}; }
 
 /// The vertices the listed faces use, in their order, appended to `positions`; returns each
 /// vertex's new index, -1 for the vertices left out.
-template <class Mesh>
-std::vector<int> kept_vertices(const Mesh& mesh, const std::vector<int>& faces, std::vector<Vec3>& positions) {
+std::vector<int> kept_vertices(const PolyMesh& mesh, const std::vector<int>& faces, std::vector<Vec3>& positions) {
     std::vector<int> remap(static_cast<size_t>(mesh.num_vertices()), -1);
     for (int f : faces)
         for (int v : corners(mesh, f)) remap[static_cast<size_t>(v)] = 0;
@@ -86,8 +78,7 @@ std::vector<int> kept_vertices(const Mesh& mesh, const std::vector<int>& faces, 
 }
 
 /// Faces with a vertex within k rings of `seeds`.
-template <class Mesh>
-std::vector<int> ring_faces(const Mesh& m, const std::vector<int>& seeds, int k) {
+std::vector<int> ring_faces(const PolyMesh& m, const std::vector<int>& seeds, int k) {
     std::vector<char> in(static_cast<size_t>(m.num_vertices()), 0);
     for (int s : seeds) in[s] = 1;
     std::vector<int> faces;
@@ -108,12 +99,12 @@ std::vector<int> ring_faces(const Mesh& m, const std::vector<int>& seeds, int k)
 
 /// Step 1 of shrinking: the smallest k-ring around `seeds` (up to 4 rings) that still shows
 /// the symptom, into `neighbourhood`; returns k, or 0 when the whole mesh was needed.
-template <class Mesh, class StillShows>
-int shrink_to_neighbourhood(const Mesh& mesh, const std::vector<int>& seeds, StillShows&& shows, Mesh& neighbourhood) {
+template <class StillShows>
+int shrink_to_neighbourhood(const PolyMesh& mesh, const std::vector<int>& seeds, StillShows&& shows, PolyMesh& neighbourhood) {
     neighbourhood = mesh;
     if (seeds.empty()) return 0;
     for (int k = 1; k <= 4; ++k) {
-        Mesh candidate = submesh(mesh, ring_faces(mesh, seeds, k));
+        PolyMesh candidate = submesh(mesh, ring_faces(mesh, seeds, k));
         if (candidate.num_faces() >= mesh.num_faces()) break;
         if (shows(candidate)) {
             neighbourhood = std::move(candidate);
@@ -125,8 +116,8 @@ int shrink_to_neighbourhood(const Mesh& mesh, const std::vector<int>& seeds, Sti
 
 /// Step 2: ddmin over the neighbourhood's faces: try keeping only the complement of one of n
 /// chunks; on success shrink n, else refine the split, until chunks are single faces.
-template <class Mesh, class StillShows>
-Mesh shrink_faces(const Mesh& neighbourhood, StillShows&& shows) {
+template <class StillShows>
+PolyMesh shrink_faces(const PolyMesh& neighbourhood, StillShows&& shows) {
     std::vector<int> all(static_cast<size_t>(neighbourhood.num_faces()));
     std::iota(all.begin(), all.end(), 0);
     const std::vector<int> faces =
@@ -143,8 +134,7 @@ bool shrinkable_failure(RunStatus status) {
 }
 
 /// The symptom of one reference's run: it diverges with a class, or fails in a shrinkable way.
-template <class Run>
-std::optional<ShrinkSymptom> reference_symptom(const Run& run) {
+std::optional<ShrinkSymptom> reference_symptom(const RefinementRun& run) {
     ShrinkSymptom s;
     if (run.verdict == Verdict::Diverge) {
         s.kind = ShrinkSymptom::Kind::ReferenceDiverges;
@@ -157,10 +147,9 @@ std::optional<ShrinkSymptom> reference_symptom(const Run& run) {
     return s;
 }
 
-/// The coarse vertex nearest the worst refined vertex of the diverging reference.
-std::vector<int> nearest_coarse_vertex(const PolyMesh& mesh, const SchemeComparison& c) {
-    if (c.runs.empty() || c.runs[0].comparison.worst.empty() || mesh.num_vertices() == 0) return {};
-    const Vec3 at = c.runs[0].comparison.worst[0].ours;
+/// The coarse vertex nearest `at`.
+std::vector<int> nearest_coarse_vertex(const PolyMesh& mesh, const Vec3& at) {
+    if (mesh.num_vertices() == 0) return {};
     int best = 0;
     for (int v = 1; v < mesh.num_vertices(); ++v)
         if ((mesh.positions[v] - at).squaredNorm() < (mesh.positions[best] - at).squaredNorm()) best = v;
@@ -181,7 +170,8 @@ std::string describe(const ShrinkSymptom& s, const std::string& subject, const s
     return "unknown";
 }
 
-std::optional<ShrinkSymptom> symptom_of(const LoopComparison& c) {
+std::optional<ShrinkSymptom> symptom_of(const RefinementComparison& c) {
+    if (!c.core_error.empty()) return std::nullopt;
     ShrinkSymptom s;
     if (c.subject_outcome.status != RunStatus::Ok) {
         s.kind = ShrinkSymptom::Kind::SubjectFails;
@@ -228,75 +218,42 @@ PolyMesh submesh(const PolyMesh& mesh, const std::vector<int>& faces) {
     return out;
 }
 
-std::optional<ShrinkSymptom> symptom_of(const SchemeComparison& c) {
-    if (!c.core_error.empty() || c.runs.size() != 1) return std::nullopt;
-    return reference_symptom(c.runs[0]);
-}
-
-TriMesh submesh(const TriMesh& mesh, const std::vector<int>& faces) {
-    TriMesh out;
-    const std::vector<int> remap = kept_vertices(mesh, faces, out.positions);
-    for (int f : faces) {
-        const Triangle& t = mesh.triangles[static_cast<size_t>(f)];
-        out.triangles.push_back({remap[static_cast<size_t>(t[0])], remap[static_cast<size_t>(t[1])], remap[static_cast<size_t>(t[2])]});
-    }
-    return out;
-}
-
-ShrinkResult shrink_divergence(const TriMesh& mesh, const std::string& name, const LoopComparisonRequest& req) {
+ShrinkResult shrink_divergence(const PolyMesh& mesh, const std::string& name, const RefinementRequest& req) {
     const bool no_reference = req.without_references;
     if (no_reference ? !req.subject : req.references.size() != 1)
         throw InputError("shrinking compares against exactly one reference, or a subject with none");
     ShrinkResult r;
-    r.original = compare_loop(mesh, name, req);
+    r.original = compare_refinement(mesh, name, req);
+    if (!r.original.core_error.empty()) throw InputError(name + ": core refuses the input: " + r.original.core_error);
     const std::optional<ShrinkSymptom> symptom = symptom_of(r.original);
     if (!symptom) {
         std::string what = r.original.subject + " shows nothing to shrink";
         if (!r.original.runs.empty())
             what = r.original.runs[0].reference + " does not diverge from " + r.original.subject + " nor fail (" +
                    to_string(r.original.runs[0].verdict) + ": " + r.original.runs[0].explanation + ")";
-        else if (r.original.rules && r.original.rules->rule)
-            what = r.original.subject + " follows the named rule weights=" +
-                   std::string(to_string(r.original.rules->rule->weights)) +
-                   " boundary=" + std::string(to_string(r.original.rules->rule->boundary));
+        else if (r.original.rules && r.original.rules->rule) {
+            SchemeRule followed = req.rule;
+            followed.loop = *r.original.rules->rule;
+            what = r.original.subject + " follows the named rule " + rule_name(req.scheme, followed);
+        }
         throw InputError(name + ": " + what + "; nothing to shrink");
     }
     r.symptom = *symptom;
 
-    // 1. The neighbourhood of the symptom's coarse ancestors; 2. ddmin over its faces.
-    const auto shows = [&](const TriMesh& candidate) { return still_shows(candidate, req, r.symptom, r.tests); };
+    // 1. The neighbourhood of the symptom's coarse ancestors (through core's provenance, where
+    // it has it, else the coarse vertex nearest the site); 2. ddmin over its faces.
+    const auto shows = [&](const PolyMesh& candidate) { return still_shows(candidate, req, r.symptom, r.tests); };
     std::vector<int> seeds;
     if (const auto site = symptom_site(r.original, r.symptom)) {
-        LoopRefiner refiner(mesh, req.options);
-        refiner.refine(site->first);
-        seeds = coarse_ancestors(refiner, site->second);
+        const Refinement core = core_implementation().refine_with_provenance(mesh, {req.scheme, req.rule, site->first});
+        if (static_cast<int>(core.origins.size()) == site->first)
+            seeds = coarse_ancestors(core.origins, site->second);
+        else
+            seeds = nearest_coarse_vertex(mesh, core.levels.back().positions[static_cast<size_t>(site->second)]);
     }
     r.k = shrink_to_neighbourhood(mesh, seeds, shows, r.neighbourhood);
     r.minimal = shrink_faces(r.neighbourhood, shows);
-    r.minimal_comparison = compare_loop(r.minimal, "minimal", req);
-    return r;
-}
-
-SchemeShrinkResult shrink_scheme_divergence(const PolyMesh& mesh, const std::string& name, const SchemeRequest& req) {
-    if (req.references.size() != 1) throw InputError("shrinking compares against exactly one reference");
-    SchemeShrinkResult r;
-    r.original = compare_scheme(mesh, name, req);
-    if (!r.original.core_error.empty()) throw InputError(name + ": core refuses the input: " + r.original.core_error);
-    const std::optional<ShrinkSymptom> symptom = symptom_of(r.original);
-    if (!symptom) {
-        const SchemeReferenceRun& run = r.original.runs.at(0);
-        throw InputError(name + ": " + run.reference + " does not diverge from core nor fail (" +
-                         std::string(to_string(run.verdict)) + ": " + run.explanation + "); nothing to shrink");
-    }
-    r.symptom = *symptom;
-    const auto shows = [&](const PolyMesh& candidate) {
-        if (candidate.num_faces() == 0) return false;
-        ++r.tests;
-        return symptom_of(compare_scheme(candidate, "candidate", req)) == r.symptom;
-    };
-    r.k = shrink_to_neighbourhood(mesh, nearest_coarse_vertex(mesh, r.original), shows, r.neighbourhood);
-    r.minimal = shrink_faces(r.neighbourhood, shows);
-    r.minimal_comparison = compare_scheme(r.minimal, "minimal", req);
+    r.minimal_comparison = compare_refinement(r.minimal, "minimal", req);
     return r;
 }
 

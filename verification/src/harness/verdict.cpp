@@ -34,7 +34,6 @@ constexpr std::array kClasses = {
     std::pair{DivergenceClass::ValenceLimit, "valence-limit"},
     std::pair{DivergenceClass::Topology, "topology"},
     std::pair{DivergenceClass::Triangulation, "triangulation"},
-    std::pair{DivergenceClass::AmbiguousCorrespondence, "ambiguous-correspondence"},
     std::pair{DivergenceClass::Unexplained, "unexplained"},
     std::pair{DivergenceClass::NonManifoldHandling, "non-manifold-handling"},
     std::pair{DivergenceClass::OrientationHandling, "orientation-handling"},

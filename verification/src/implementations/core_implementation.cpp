@@ -8,6 +8,7 @@
 #include "crossdiv/subdiv/limit.h"
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/subdiv/loop_streaming.h"
+#include "crossdiv/subdiv/nonmanifold.h"
 #include "crossdiv/subdiv/sqrt3.h"
 #include "library_implementations.h"
 
@@ -60,23 +61,43 @@ public:
     /// Core refuses bad input with InputError (naming the element), which callers record as
     /// core's refusal; it is never turned into adapters::Rejected.
     adapters::LevelTrace refine(const PolyMesh& mesh, const RefineRequest& r) const override {
-        adapters::LevelTrace trace{mesh};
+        return refine_with_provenance(mesh, r).levels;
+    }
+
+    /// Loop's levels carry their provenance: the refiner's, or on a mesh that is not a
+    /// manifold the edges in the order the non-manifold steps number their edge points.
+    Refinement refine_with_provenance(const PolyMesh& mesh, const RefineRequest& r) const override {
+        Refinement out{{mesh}, {}};
+        adapters::LevelTrace& trace = out.levels;
         if (r.scheme == Scheme::Loop && mesh.creases.empty()) {
             try {
                 LoopRefiner refiner(to_tri_mesh(mesh, "Loop subdivision"), r.rule.loop);
                 refiner.refine(r.levels);
-                for (int l = 1; l <= r.levels; ++l) trace.push_back(to_poly_mesh(refiner.mesh(l)));
-                return trace;
+                for (int l = 1; l <= r.levels; ++l) {
+                    trace.push_back(to_poly_mesh(refiner.mesh(l)));
+                    out.origins.push_back(refiner.origins(l));
+                }
+                return out;
             } catch (const NonManifoldInput&) {
                 // Not a manifold: loop_subdivide takes OpenSubdiv's rules level by level below
                 // (or refuses, under NonManifoldRule::Refuse).
             }
+            for (int l = 1; l <= r.levels; ++l) {
+                std::vector<VertexOrigin> origins;
+                const PolyMesh& coarse = trace.back();
+                PolyMesh fine = subdivide(coarse, r, 1);  // refuses first, under NonManifoldRule::Refuse
+                for (int v = 0; v < coarse.num_vertices(); ++v) origins.push_back({v, -1});
+                for (const auto& [a, b] : nonmanifold_edges(coarse)) origins.push_back({a, b});
+                trace.push_back(std::move(fine));
+                out.origins.push_back(std::move(origins));
+            }
+            return out;
         }
         // sqrt3 counts its boundary generations from the input: each level is its own call
         // from the input. The other schemes' levels are the same one step at a time.
         for (int l = 1; l <= r.levels; ++l)
             trace.push_back(r.scheme == Scheme::Sqrt3 ? subdivide(mesh, r, l) : subdivide(trace.back(), r, 1));
-        return trace;
+        return out;
     }
 
     PolyMesh refine_last(const PolyMesh& mesh, const RefineRequest& r) const override { return subdivide(mesh, r, r.levels); }

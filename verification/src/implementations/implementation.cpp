@@ -86,6 +86,10 @@ adapters::LevelTrace Implementation::refine(const PolyMesh&, const RefineRequest
     lacks(to_string(request.scheme));
 }
 
+Refinement Implementation::refine_with_provenance(const PolyMesh& mesh, const RefineRequest& request) const {
+    return {refine(mesh, request), {}};
+}
+
 PolyMesh Implementation::refine_last(const PolyMesh& mesh, const RefineRequest& request) const {
     return refine(mesh, request).back();
 }

@@ -20,11 +20,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool makes_triangles(Scheme scheme) {
-    return scheme == Scheme::Loop || scheme == Scheme::Sqrt3 || scheme == Scheme::Butterfly ||
-           scheme == Scheme::ModifiedButterfly;
-}
-
 bool all_triangles(const PolyMesh& mesh) {
     for (int f = 0; f < mesh.num_faces(); ++f)
         if (mesh.face_size(f) != 3) return false;
@@ -260,7 +255,7 @@ void check_program_result(const PolyMesh& result, Scheme scheme, const PolyMesh&
     for (int v = 0; v < result.num_vertices(); ++v)
         if (!result.positions[static_cast<size_t>(v)].allFinite())
             throw ImplementationFailure(RunStatus::NonFiniteOutput, file + ": " + result.source.describe_vertex(v) + " is not finite");
-    if (makes_triangles(scheme) && all_triangles(input))
+    if (traits(scheme).triangles && all_triangles(input))
         for (int f = 0; f < result.num_faces(); ++f)
             if (result.face_size(f) != 3)
                 throw ImplementationFailure(RunStatus::NotTriangles, file + ": " + result.source.describe_face(f) + " has " +

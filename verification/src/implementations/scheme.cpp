@@ -26,6 +26,21 @@ std::vector<Scheme> polygon_schemes() {
     return {Scheme::CatmullClark, Scheme::DooSabin, Scheme::Sqrt3, Scheme::Butterfly, Scheme::ModifiedButterfly};
 }
 
+const SchemeTraits& traits(Scheme scheme) {
+    //                                           primal triangles sdc_tags
+    static const SchemeTraits loop{true, true, true}, catmull_clark{true, false, true}, doo_sabin{false, false, false},
+        sqrt3{false, true, false}, butterfly{true, true, false};
+    switch (scheme) {
+        case Scheme::Loop: return loop;
+        case Scheme::CatmullClark: return catmull_clark;
+        case Scheme::DooSabin: return doo_sabin;
+        case Scheme::Sqrt3: return sqrt3;
+        case Scheme::Butterfly:
+        case Scheme::ModifiedButterfly: return butterfly;
+    }
+    return loop;
+}
+
 Scheme scheme_from_string(std::string_view name) {
     return variant_from_string<Scheme>(name, all_schemes(), "scheme");
 }

@@ -8,7 +8,7 @@ namespace crossdiv::verification {
 
 TagRules resolve_tag_rules(Scheme scheme, const std::string& boundary_flag, PolyMesh& mesh) {
     TagRules out;
-    const bool osd_rules = scheme == Scheme::Loop || scheme == Scheme::CatmullClark;
+    const bool osd_rules = traits(scheme).sdc_tags;
     const std::string file = mesh.source.file.empty() ? std::string("the mesh") : mesh.source.file;
     const std::optional<BoundaryTag>& tag = mesh.creases.boundary;
     std::string asked = boundary_flag;

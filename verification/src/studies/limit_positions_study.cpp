@@ -17,7 +17,7 @@ CheckReport limit_positions_study() {
     json rows = json::array();
     const auto add = [&](const LimitComparison& c) {
         rows.push_back(to_json(c));
-        const std::string what = c.scheme + " " + c.rule + " L" + std::to_string(c.levels);
+        const std::string what = std::string(to_string(c.scheme)) + " " + c.rule + " L" + std::to_string(c.levels);
         if (c.verdict != Verdict::Agree && c.verdict != Verdict::Diverge) {
             runs.push_back(decided_check("opensubdiv", "limit position " + what, c.input, NAN, tolerances::kLimitAgreementRelative,
                                    "rel", c.explanation, {c.verdict, DivergenceClass::None}));
@@ -31,12 +31,14 @@ CheckReport limit_positions_study() {
                                  std::to_string(c.normals_compared) + " interior vertices"));
     };
     for (const auto& b : datasets::bundled_meshes())
-        for (LoopBoundary rule : {LoopBoundary::EdgeOnly, LoopBoundary::EdgeAndCorner})
-            for (int levels : {0, 2}) add(compare_loop_limit(b.mesh, "bundled:" + b.name, {LoopWeights::Loop, rule}, levels));
+        for (const char* boundary : {"edge-only", "edge-and-corner"})
+            for (int levels : {0, 2})
+                add(compare_limit(b.mesh, "bundled:" + b.name, {Scheme::Loop, rule_from_boundary_name(Scheme::Loop, boundary), levels}));
     for (const auto& b : datasets::catalog_meshes())
-        for (CatmullClarkBoundary rule : {CatmullClarkBoundary::EdgeOnly, CatmullClarkBoundary::EdgeAndCorner})
+        for (const char* boundary : {"edge-only", "edge-and-corner"})
             for (int levels : {1, 3})  // level 0 of a mesh with non-quads has no limit mask
-                add(compare_catmull_clark_limit(b.mesh, "bundled:" + b.name, {rule}, levels));
+                add(compare_limit(b.mesh, "bundled:" + b.name,
+                                  {Scheme::CatmullClark, rule_from_boundary_name(Scheme::CatmullClark, boundary), levels}));
     // Bfr at (u, v): exact on regular faces, measured on irregular ones.
     json bfr_rows = json::array();
     for (const auto& b : datasets::catalog_meshes())

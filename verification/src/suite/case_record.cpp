@@ -46,7 +46,7 @@ RunRecord run_from_json(const json& j) {
         r.measured = number(j, "measured");
         r.tolerance = number(j, "tolerance");
         r.unit = text(j, "unit");
-    } else if (j.contains("positions")) {
+    } else if (j.contains("positions")) {  // a comparison's run that was matched
         const json& p = j["positions"];
         r.measured = number(p, "max_rel");
         r.rms = number(p, "rms_rel");
@@ -54,17 +54,13 @@ RunRecord run_from_json(const json& j) {
             r.worst_valence = p["worst"][0].value("valence", -1);
             r.worst_boundary = p["worst"][0].value("boundary", false) ? 1 : 0;
         }
-    } else {
-        // A comparison of another scheme keeps its figures at the run's top level.
-        r.measured = number(j, "max_rel");
-        r.rms = number(j, "rms_rel");
     }
     return r;
 }
 
-/// What every comparison's reference run records: its JSON, verdict, class, how it ended.
-template <class Run>
-RunRecord reference_run(const json& detail, const Run& run) {
+/// What a comparison's reference run records: its JSON, verdict, class, how it ended, and its
+/// figures where it was matched.
+RunRecord reference_run(const json& detail, const RefinementRun& run) {
     RunRecord r;
     r.detail = detail;
     r.reference = run.reference;
@@ -73,6 +69,14 @@ RunRecord reference_run(const json& detail, const Run& run) {
     r.seconds = run.outcome.seconds;
     r.hausdorff = run.hausdorff_rel;
     r.explanation = run.explanation;
+    if (run.outcome.status == RunStatus::Ok && run.correspondence.method != MatchMethod::None) {
+        r.measured = run.comparison.max_rel;
+        r.rms = run.comparison.rms_rel;
+        if (!run.comparison.worst.empty()) {
+            r.worst_valence = run.comparison.worst[0].valence;
+            r.worst_boundary = run.comparison.worst[0].boundary ? 1 : 0;
+        }
+    }
     return r;
 }
 
@@ -86,15 +90,19 @@ std::string outcome_label(const CaseRecord& c) { return c.ours_failed ? "ours-fa
 
 bool is_failure(const CaseRecord& c, const RunRecord& r) { return c.ours_failed || r.outcome.is_failure(); }
 
-CaseRecord case_record(const LoopComparison& comparison) {
+CaseRecord case_record(const RefinementComparison& comparison) {
     CaseRecord c;
     c.detail = to_json(comparison);
     const json runs = c.detail["runs"];
     c.detail.erase("runs");
     c.input = comparison.input;
-    c.operation = "loop";
-    c.weights = to_string(comparison.options.weights);
-    c.boundary = to_string(comparison.options.boundary);
+    c.operation = to_string(comparison.scheme);
+    if (comparison.scheme == Scheme::Loop) {
+        c.weights = to_string(comparison.rule.loop.weights);
+        c.boundary = to_string(comparison.rule.loop.boundary);
+    } else {
+        c.boundary = comparison.rule_name;
+    }
     c.tier = to_string(comparison.tier);
     c.levels = comparison.levels;
     c.tolerance = comparison.tolerance;
@@ -107,44 +115,7 @@ CaseRecord case_record(const LoopComparison& comparison) {
                        (comparison.subject_outcome.status != RunStatus::Ok ? comparison.subject_outcome.summary()
                                                                            : comparison.subject_unmatched);
     }
-    for (size_t i = 0; i < comparison.runs.size(); ++i) {
-        const ReferenceRun& run = comparison.runs[i];
-        RunRecord r = reference_run(runs[i], run);
-        if (run.outcome.status == RunStatus::Ok) {
-            r.measured = run.comparison.max_rel;
-            r.rms = run.comparison.rms_rel;
-            if (!run.comparison.worst.empty()) {
-                r.worst_valence = run.comparison.worst[0].valence;
-                r.worst_boundary = run.comparison.worst[0].boundary ? 1 : 0;
-            }
-        }
-        c.runs.push_back(std::move(r));
-    }
-    return c;
-}
-
-CaseRecord case_record(const SchemeComparison& comparison) {
-    CaseRecord c;
-    c.detail = to_json(comparison);
-    const json runs = c.detail["runs"];
-    c.detail.erase("runs");
-    c.input = comparison.input;
-    c.operation = to_string(comparison.scheme);
-    c.boundary = comparison.rule;
-    c.tier = to_string(comparison.tier);
-    c.levels = comparison.levels;
-    c.tolerance = comparison.tolerance;
-    c.core_seconds = comparison.core_seconds;
-    c.core_error = comparison.core_error;
-    for (size_t i = 0; i < comparison.runs.size(); ++i) {
-        const SchemeReferenceRun& run = comparison.runs[i];
-        RunRecord r = reference_run(runs[i], run);
-        if (run.outcome.status == RunStatus::Ok && run.correspondence.method != MatchMethod::None) {
-            r.measured = run.comparison.max_rel;
-            r.rms = run.comparison.rms_rel;
-        }
-        c.runs.push_back(std::move(r));
-    }
+    for (size_t i = 0; i < comparison.runs.size(); ++i) c.runs.push_back(reference_run(runs[i], comparison.runs[i]));
     return c;
 }
 

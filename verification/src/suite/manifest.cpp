@@ -48,9 +48,8 @@ auto at_line(const std::string& file, int line, F&& parse) {
 
 /// The keys every comparison case takes: levels, references, tier and tolerance. False for a
 /// key that is not one of them.
-template <class Request>
 bool parse_comparison_key(const std::string& file, int line, Scheme scheme, const std::string& key, const std::string& value,
-                          Request& r) {
+                          RefinementRequest& r) {
     if (key == "levels") {
         const double l = parse_number(file, line, key, value);
         if (l != std::floor(l) || l < 1 || l > 6) throw ParseError(file, line, "levels must be an integer 1..6");
@@ -81,16 +80,16 @@ void parse_keys(const std::string& file, int line, std::istringstream& words, co
 }
 
 /// The keys of a loop case: its rules, levels, references, tier and tolerance.
-void parse_loop_keys(const std::string& file, int line, std::istringstream& words, LoopComparisonRequest& r) {
-    r.options = {LoopWeights::Loop, LoopBoundary::EdgeOnly};
+void parse_loop_keys(const std::string& file, int line, std::istringstream& words, RefinementRequest& r) {
+    r.rule.loop = {LoopWeights::Loop, LoopBoundary::EdgeOnly};
     parse_keys(file, line, words, "weights, boundary, levels, against, tier, tolerance",
                [&](const std::string& key, const std::string& value) {
                    if (key == "weights") {
-                       r.options.weights = at_line(file, line, [&] { return loop_weights_from_string(value); });
+                       r.rule.loop.weights = at_line(file, line, [&] { return loop_weights_from_string(value); });
                    } else if (key == "boundary") {
                        if (value != "edge-only" && value != "edge-and-corner")
                            throw ParseError(file, line, "boundary must be edge-only or edge-and-corner");
-                       r.options.boundary = loop_boundary_from_string(value);
+                       r.rule.loop.boundary = loop_boundary_from_string(value);
                    } else {
                        return parse_comparison_key(file, line, Scheme::Loop, key, value, r);
                    }
@@ -101,9 +100,8 @@ void parse_loop_keys(const std::string& file, int line, std::istringstream& word
 /// The keys of another scheme's case: its boundary rule (and Catmull-Clark's crease decay),
 /// levels, references, tier and tolerance. The rule is checked here and resolved per input
 /// against the input's tags when the job runs.
-void parse_scheme_keys(const std::string& file, int line, std::istringstream& words, Scheme scheme, SchemeRequest& r,
+void parse_scheme_keys(const std::string& file, int line, std::istringstream& words, Scheme scheme, RefinementRequest& r,
                        RuleFlags& flags) {
-    r.scheme = scheme;
     const bool creases = scheme == Scheme::CatmullClark;
     parse_keys(file, line, words,
                std::string("boundary, ") + (creases ? "crease-method, " : "") + "levels, against, tier, tolerance",
@@ -138,9 +136,10 @@ ManifestEntry parse_case(const std::string& file, int line, std::istringstream& 
         return e;
     }
     const Scheme scheme = e.operation->scheme;
-    std::vector<std::string>& references = scheme == Scheme::Loop ? e.request.references : e.scheme_request.references;
+    e.request.scheme = scheme;
+    std::vector<std::string>& references = e.request.references;
     if (scheme == Scheme::Loop) parse_loop_keys(file, line, words, e.request);
-    else parse_scheme_keys(file, line, words, scheme, e.scheme_request, e.rule_flags);
+    else parse_scheme_keys(file, line, words, scheme, e.request, e.rule_flags);
     // Without against=, the references registered so far: a `reference` statement joins
     // the cases after it.
     if (references.empty())
@@ -152,18 +151,17 @@ ManifestEntry parse_case(const std::string& file, int line, std::istringstream& 
 std::string describe_entry(const ManifestEntry& e) {
     if (e.operation->kind != OperationKind::Comparison) return e.operation->name;
     const bool loop = e.operation->scheme == Scheme::Loop;
-    const Tier tier = loop ? e.request.tier : e.scheme_request.tier;
-    const double tolerance = loop ? e.request.tolerance : e.scheme_request.tolerance;
+    const Tier tier = e.request.tier;
+    const double tolerance = e.request.tolerance;
     std::string s = e.operation->name;
     if (loop) {
-        s += " weights=" + std::string(to_string(e.request.options.weights)) +
-             " boundary=" + std::string(to_string(e.request.options.boundary));
+        s += " " + rule_name(Scheme::Loop, e.request.rule);
     } else {
         // The rule the case names; an input's tags may still choose where it names none.
         s += " boundary=" + (e.rule_flags.boundary.empty() ? std::string("default") : e.rule_flags.boundary);
         if (!e.rule_flags.creasing.empty()) s += " crease-method=" + e.rule_flags.creasing;
     }
-    s += " L" + std::to_string(loop ? e.request.levels : e.scheme_request.levels) + " " + to_string(tier);
+    s += " L" + std::to_string(e.request.levels) + " " + to_string(tier);
     if (tier != Tier::Strict) {
         char buf[32];
         std::snprintf(buf, sizeof buf, "%g", tolerance);
@@ -348,7 +346,6 @@ Manifest read_manifest(std::istream& in, const std::string& path, const std::str
     if (m.name.empty()) throw ParseError(path, 1, "the manifest has no 'suite NAME' line");
     for (ManifestEntry& e : m.entries) {
         e.request.timeout_seconds = m.timeout_seconds;
-        e.scheme_request.timeout_seconds = m.timeout_seconds;
         e.max_faces = m.max_faces;
     }
     return m;

@@ -62,35 +62,22 @@ std::optional<MinimalDivergence> first_shrunk(const Runs& runs, Shrink&& shrink)
 
 /// The case's first divergence from a library reference shrunk to a minimal input, for the
 /// viewer; nothing when core is not what is under test or the input is too large.
-std::optional<MinimalDivergence> shrink_for_view(const TriMesh& mesh, const std::string& input,
-                                                 const LoopComparisonRequest& req, const LoopComparison& c,
+std::optional<MinimalDivergence> shrink_for_view(const PolyMesh& mesh, const std::string& input,
+                                                 const RefinementRequest& req, const RefinementComparison& c,
                                                  const std::string& obj_name) {
     if (req.subject || mesh.num_faces() > kShrinkMaxFaces) return std::nullopt;
     return first_shrunk(c.runs, [&](const std::string& reference) {
-        LoopComparisonRequest one = req;
+        RefinementRequest one = req;
         one.references = {reference};
         one.view_max_faces = 0;
         const ShrinkResult r = shrink_divergence(mesh, input, one);
-        return MinimalDivergence{reference, describe(r.symptom, "core", reference), to_poly_mesh(r.minimal), r.tests,
-                                 "crossdiv compare " + obj_name + " --weights " + std::string(to_string(req.options.weights)) +
-                                     " --boundary " + std::string(to_string(req.options.boundary)) + " --levels " +
-                                     std::to_string(req.levels) + " --against " + reference};
-    });
-}
-
-/// The same for another scheme's case (crossdiv diff --scheme S).
-std::optional<MinimalDivergence> shrink_scheme_for_view(const PolyMesh& mesh, const std::string& input,
-                                                        const SchemeRequest& req, const SchemeComparison& c,
-                                                        const std::string& obj_name) {
-    if (mesh.num_faces() > kShrinkMaxFaces) return std::nullopt;
-    return first_shrunk(c.runs, [&](const std::string& reference) {
-        SchemeRequest one = req;
-        one.references = {reference};
-        one.view_max_faces = 0;
-        const SchemeShrinkResult r = shrink_scheme_divergence(mesh, input, one);
+        const std::string rule = req.scheme == Scheme::Loop
+                                     ? " --weights " + std::string(to_string(req.rule.loop.weights)) + " --boundary " +
+                                           std::string(to_string(req.rule.loop.boundary))
+                                     : " --scheme " + std::string(to_string(req.scheme)) + " --boundary " +
+                                           boundary_name(req.scheme, req.rule);
         return MinimalDivergence{reference, describe(r.symptom, "core", reference), r.minimal, r.tests,
-                                 "crossdiv compare " + obj_name + " --scheme " + to_string(req.scheme) + " --boundary " +
-                                     boundary_name(req.scheme, req.rule) + " --levels " + std::to_string(req.levels) +
+                                 "crossdiv compare " + obj_name + rule + " --levels " + std::to_string(req.levels) +
                                      " --against " + reference};
     });
 }
@@ -111,52 +98,35 @@ void write_view(const DivergenceView& view, const std::string& subject, const Su
     }
 }
 
-CaseRecord run_loop(const SuiteJob& job, const std::string& out_dir) {
-    LoopComparisonRequest req = job.entry->request;
+/// A comparison case: the implementation under test (core, or the manifest's subject program or
+/// its result file for this input) against every reference of the case, under the rule the
+/// case names or, for a scheme other than Loop, the input's tags ask for (what the tags
+/// resolved to is noted in the record).
+CaseRecord run_refinement(const SuiteJob& job, const std::string& out_dir) {
+    const ManifestEntry& entry = *job.entry;
+    RefinementRequest req = entry.request;
     req.view_max_faces = kViewMaxFaces;
-    // The implementation under test: core, the manifest's subject program, or its result file
-    // for this input.
     std::unique_ptr<Implementation> result_file;
-    if (const auto& s = job.entry->subject) {
+    if (const auto& s = entry.subject) {
         if (s->program) {
             req.subject = s->program.get();
         } else {
-            result_file = make_result_file_implementation(s->name, s->result_path(job.input, req.levels), Scheme::Loop);
+            result_file = make_result_file_implementation(s->name, s->result_path(job.input, req.levels), req.scheme);
             req.subject = result_file.get();
         }
     }
-    const PolyMesh input = load_input(job.input);
-    require_refined_size(input, Scheme::Loop, req.levels, job.entry->max_faces, job.input, "the manifest's max-faces");
-    const TriMesh mesh = to_tri_mesh(input, "Loop subdivision");
-    std::string refused;
-    try {
-        check_loop_input(mesh, req.options);
-    } catch (const InputError& e) {
-        refused = e.what();
-    }
-    LoopComparison c =
-        refused.empty() ? compare_loop(mesh, job.input, req) : compare_loop_refused(mesh, job.input, req, refused);
-    if (c.view) c.view->minimal = shrink_for_view(mesh, job.input, req, c, minimal_obj_name(job));
-    CaseRecord rec = case_record(c);
-    if (c.view) write_view(*c.view, c.subject, job, out_dir, rec);
-    return rec;
-}
-
-/// Another scheme's case: core against every reference of the case, under the rule the case
-/// names or the input's tags ask for (what the tags resolved to is noted in the record).
-CaseRecord run_scheme(const SuiteJob& job, const std::string& out_dir) {
-    const ManifestEntry& entry = *job.entry;
-    SchemeRequest req = entry.scheme_request;
-    req.view_max_faces = kViewMaxFaces;
     PolyMesh input = load_input(job.input);
     require_refined_size(input, req.scheme, req.levels, entry.max_faces, job.input, "the manifest's max-faces");
     std::vector<std::string> notes;
-    req.rule = rule_with_tags(req.scheme, entry.rule_flags, input, notes);
-    SchemeComparison c = compare_scheme(input, job.input, req);
-    if (c.view) c.view->minimal = shrink_scheme_for_view(input, job.input, req, c, minimal_obj_name(job));
+    if (req.scheme == Scheme::Loop)
+        (void)to_tri_mesh(input, "Loop subdivision");  // a polygon is refused by name, as the CLI does
+    else
+        req.rule = rule_with_tags(req.scheme, entry.rule_flags, input, notes);
+    RefinementComparison c = compare_refinement(input, job.input, req);
+    if (c.view) c.view->minimal = shrink_for_view(input, job.input, req, c, minimal_obj_name(job));
     CaseRecord rec = case_record(c);
     for (const std::string& note : notes) rec.detail["notes"].push_back(note);
-    if (c.view) write_view(*c.view, "core", job, out_dir, rec);
+    if (c.view) write_view(*c.view, c.subject, job, out_dir, rec);
     return rec;
 }
 
@@ -209,17 +179,17 @@ CaseRecord run_pages(const SuiteJob& job, const std::string& out_dir) {
 const std::vector<SuiteOperation>& suite_operations() {
     static const std::vector<SuiteOperation> ops = {
         {"loop", OperationKind::Comparison, "core against every reference on a mesh, under the case's rules and tier",
-         expand_inputs, run_loop},
+         expand_inputs, run_refinement},
         {"catmull-clark", OperationKind::Comparison, "core's Catmull-Clark against every reference that has it, under the case's rule and tier",
-         expand_inputs, run_scheme, Scheme::CatmullClark},
+         expand_inputs, run_refinement, Scheme::CatmullClark},
         {"doo-sabin", OperationKind::Comparison, "core's Doo-Sabin against every reference that has it", expand_inputs,
-         run_scheme, Scheme::DooSabin},
-        {"sqrt3", OperationKind::Comparison, "core's sqrt3 against every reference that has it", expand_inputs, run_scheme,
+         run_refinement, Scheme::DooSabin},
+        {"sqrt3", OperationKind::Comparison, "core's sqrt3 against every reference that has it", expand_inputs, run_refinement,
          Scheme::Sqrt3},
         {"butterfly", OperationKind::Comparison, "core's classic Butterfly against every reference that has it",
-         expand_inputs, run_scheme, Scheme::Butterfly},
+         expand_inputs, run_refinement, Scheme::Butterfly},
         {"modified-butterfly", OperationKind::Comparison, "core's modified Butterfly against every reference that has it",
-         expand_inputs, run_scheme, Scheme::ModifiedButterfly},
+         expand_inputs, run_refinement, Scheme::ModifiedButterfly},
         {"curves", OperationKind::Checks, "curve files against Eigen and exact properties", expand_curve_inputs, run_curves},
         {"surfaces", OperationKind::Checks, "surface files built and checked as closed surfaces", expand_surface_inputs,
          run_surfaces},

@@ -26,20 +26,16 @@ using nlohmann::json;
 CaseRecord failed_job(const SuiteJob& job, const std::string& why, bool ours_failed) {
     CaseRecord c = failed_case(job.input, job.entry->operation->name, why, ours_failed);
     if (job.entry->operation->kind != OperationKind::Comparison) return c;
-    if (job.entry->operation->scheme == Scheme::Loop) {
-        const LoopComparisonRequest& r = job.entry->request;
-        c.weights = to_string(r.options.weights);
-        c.boundary = to_string(r.options.boundary);
-        c.levels = r.levels;
-        c.tier = to_string(r.tier);
-        c.tolerance = r.tolerance;
+    const RefinementRequest& r = job.entry->request;
+    if (r.scheme == Scheme::Loop) {
+        c.weights = to_string(r.rule.loop.weights);
+        c.boundary = to_string(r.rule.loop.boundary);
     } else {
-        const SchemeRequest& r = job.entry->scheme_request;
         c.boundary = job.entry->rule_flags.boundary.empty() ? "default" : job.entry->rule_flags.boundary;
-        c.levels = r.levels;
-        c.tier = to_string(r.tier);
-        c.tolerance = r.tolerance;
     }
+    c.levels = r.levels;
+    c.tier = to_string(r.tier);
+    c.tolerance = r.tolerance;
     return c;
 }
 

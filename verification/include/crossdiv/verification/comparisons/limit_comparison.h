@@ -14,11 +14,14 @@
 #include "crossdiv/subdiv/loop_mask.h"
 #include "crossdiv/verification/harness/verdict.h"
 #include "crossdiv/verification/harness/isolate.h"
+#include "crossdiv/verification/implementations/scheme.h"
 
 namespace crossdiv::verification {
 
 struct LimitComparison {
-    std::string input, scheme, rule;
+    std::string input;
+    Scheme scheme = Scheme::Loop;
+    std::string rule;  ///< rule_name of the request
     int levels = 0;
     int vertices = 0;             ///< of the level whose limit is taken
     std::string core_error;       ///< core refused (the message)
@@ -30,13 +33,11 @@ struct LimitComparison {
     std::string explanation;
 };
 
-/// Loop: `levels` levels of core then core's limit masks, against OpenSubdiv with the same
-/// levels and Limit(). Vertices matched by nearest position (the levels agree to rounding).
-LimitComparison compare_loop_limit(const PolyMesh& input, const std::string& name, const LoopOptions& options,
-                                   int levels, bool isolate = true);
-/// Catmull-Clark, as compare_loop_limit.
-LimitComparison compare_catmull_clark_limit(const PolyMesh& input, const std::string& name,
-                                            const CatmullClarkOptions& options, int levels, bool isolate = true);
+/// Loop or Catmull-Clark: `request.levels` levels of core then core's limit masks (through
+/// core's implementation), against OpenSubdiv with the same levels and Limit(). Vertices
+/// matched by nearest position (the levels agree to rounding).
+LimitComparison compare_limit(const PolyMesh& input, const std::string& name, const RefineRequest& request,
+                              bool isolate = true);
 
 nlohmann::json to_json(const LimitComparison& c);
 

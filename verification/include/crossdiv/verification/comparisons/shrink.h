@@ -15,9 +15,7 @@
 #include <string>
 
 #include "crossdiv/mesh/poly_mesh.h"
-#include "crossdiv/mesh/tri_mesh.h"
-#include "crossdiv/verification/comparisons/loop_comparison.h"
-#include "crossdiv/verification/comparisons/scheme_comparison.h"
+#include "crossdiv/verification/comparisons/refinement_comparison.h"
 
 namespace crossdiv::verification {
 
@@ -39,47 +37,27 @@ struct ShrinkSymptom {
 /// "the subject fails (crashed)", "no named rule fits the subject".
 std::string describe(const ShrinkSymptom& symptom, const std::string& subject, const std::string& reference);
 
-/// The symptom of a comparison, when it has one.
-std::optional<ShrinkSymptom> symptom_of(const LoopComparison& comparison);
-/// The symptom of a polygon scheme's comparison with one reference, when it has one (core
-/// refines the input, and the reference diverges or fails).
-std::optional<ShrinkSymptom> symptom_of(const SchemeComparison& comparison);
+/// The symptom of a comparison, when it has one: core refines the input, and the subject
+/// fails or follows no named rule, or the one reference diverges or fails.
+std::optional<ShrinkSymptom> symptom_of(const RefinementComparison& comparison);
 
 struct ShrinkResult {
-    LoopComparison original;  ///< the comparison on the whole input
-    ShrinkSymptom symptom;    ///< what must persist
-    int k = 0;                ///< ring size of the neighbourhood (0: the whole mesh was needed)
-    TriMesh neighbourhood;    ///< faces within k rings of the worst vertex's coarse ancestors
-    TriMesh minimal;          ///< after delta debugging
-    LoopComparison minimal_comparison;
+    RefinementComparison original;  ///< the comparison on the whole input
+    ShrinkSymptom symptom;          ///< what must persist
+    int k = 0;                      ///< ring size of the neighbourhood (0: the whole mesh was needed)
+    PolyMesh neighbourhood;         ///< faces within k rings of the symptom's coarse vertices
+    PolyMesh minimal;               ///< after delta debugging
+    RefinementComparison minimal_comparison;
     int tests = 0;  ///< comparisons run while shrinking
 };
 
+/// Shrinks the symptom of the comparison of `mesh` under any scheme. The neighbourhood's
+/// seeds are the coarse ancestors of the vertex where the symptom shows, where core's
+/// refinement carries provenance (Loop), else the coarse vertex nearest it.
 /// @param request at most one reference; none only with a subject (whose failure or lack of a
 ///        named rule is then shrunk). @throws InputError if the comparison of the input shows
-///        no symptom (nothing to shrink), or for bad input.
-ShrinkResult shrink_divergence(const TriMesh& mesh, const std::string& name, const LoopComparisonRequest& request);
-
-/// A divergence or failure of one reference under a polygon scheme (Catmull-Clark, Doo-Sabin,
-/// sqrt3, the Butterflies), shrunk as a Loop divergence is: the smallest k-ring that still
-/// shows it around the coarse vertex nearest the worst refined vertex, then ddmin over its
-/// polygons, while the reference keeps diverging with the same class or failing the same way.
-struct SchemeShrinkResult {
-    SchemeComparison original;  ///< the comparison on the whole input
-    ShrinkSymptom symptom;      ///< what must persist
-    int k = 0;                  ///< ring size of the neighbourhood (0: the whole mesh was needed)
-    PolyMesh neighbourhood;     ///< faces within k rings of the seed
-    PolyMesh minimal;           ///< after delta debugging
-    SchemeComparison minimal_comparison;
-    int tests = 0;  ///< comparisons run while shrinking
-};
-
-/// @param request exactly one reference. @throws InputError if that reference neither
-///        diverges nor fails on the input (nothing to shrink), or for bad input.
-SchemeShrinkResult shrink_scheme_divergence(const PolyMesh& mesh, const std::string& name, const SchemeRequest& request);
-
-/// The faces of `mesh` listed in `faces`, with unused vertices dropped (order kept).
-TriMesh submesh(const TriMesh& mesh, const std::vector<int>& faces);
+///        no symptom (nothing to shrink), core refuses it, or for bad input.
+ShrinkResult shrink_divergence(const PolyMesh& mesh, const std::string& name, const RefinementRequest& request);
 
 /// The polygons of `mesh` listed in `faces`, with unused vertices dropped (order kept); the
 /// crease and corner tags of the kept vertices, the holes among the kept faces and the

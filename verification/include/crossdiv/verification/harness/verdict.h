@@ -48,7 +48,6 @@ enum class DivergenceClass {
     ValenceLimit,              ///< the reference's weight table ends below the input's valence
     Topology,                  ///< the refined connectivity differs
     Triangulation,             ///< the same vertices and topology, other triangles over them (isosurface polygons)
-    AmbiguousCorrespondence,   ///< same counts, but no one-to-one vertex match
     Unexplained,               ///< none of the above: a failure
     // For OursRejected, the input handling the reference shows; NonManifoldHandling also for
     // a divergence confined to where the non-manifold vertices reach, when core refined them
@@ -61,7 +60,7 @@ enum class DivergenceClass {
 
 /// "" for None, else the class's name in results.json ("weight-family", "corner-rule",
 /// "weight-family+corner-rule", "boundary-rule", "border-faces-dropped", "parity", "wing-rule", "triangle-rule", "normal-rule", "rounding",
-/// "isolated-vertex-handling", "valence-limit", "topology", "triangulation", "ambiguous-correspondence",
+/// "isolated-vertex-handling", "valence-limit", "topology", "triangulation",
 /// "unexplained", "non-manifold-handling", "orientation-handling", "degenerate-face-handling",
 /// "invalid-input-handling").
 const char* to_string(DivergenceClass cls);

@@ -17,6 +17,7 @@
 
 #include "crossdiv/adapters/reference.h"
 #include "crossdiv/mesh/tri_mesh.h"
+#include "crossdiv/subdiv/loop.h"
 #include "crossdiv/verification/harness/isolate.h"
 #include "crossdiv/verification/implementations/scheme.h"
 #include "crossdiv/volume/marching_cubes.h"
@@ -104,6 +105,16 @@ public:
     virtual std::vector<Vec3> positions() const = 0;
 };
 
+/// Levels 0..N of a refinement with, where the implementation knows it, where each refined
+/// vertex was born.
+struct Refinement {
+    adapters::LevelTrace levels;
+    /// origins[l-1]: for each vertex of level l, the vertex {v, -1} or the edge {a, b} of
+    /// level l-1 it was born from. Empty when the implementation does not say (the
+    /// correspondence then infers it from the faces: match_by_provenance).
+    std::vector<std::vector<VertexOrigin>> origins;
+};
+
 /// Which spline an implementation is asked to evaluate.
 enum class SplineKind {
     UniformCubicBSpline,  ///< control points p_0..p_n, knots 0..n+4, parameter u in [0, n-2]
@@ -141,6 +152,9 @@ public:
     /// (levels[0]: the input as it stored it). It applies closest_rule(request).
     /// @throws adapters::Rejected when it refuses the mesh, the scheme or the tags.
     virtual adapters::LevelTrace refine(const PolyMesh& mesh, const RefineRequest& request) const;
+    /// refine() with each refined vertex's origin where the implementation knows it (core's
+    /// Loop); the base gives refine()'s levels and no origins.
+    virtual Refinement refine_with_provenance(const PolyMesh& mesh, const RefineRequest& request) const;
     /// The last level of refine(), for callers that compare only that one; an implementation
     /// that can make it without the levels before it overrides this.
     virtual PolyMesh refine_last(const PolyMesh& mesh, const RefineRequest& request) const;

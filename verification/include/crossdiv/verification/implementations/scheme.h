@@ -24,8 +24,24 @@ const char* to_string(Scheme scheme);
 Scheme scheme_from_string(std::string_view name);
 /// Every scheme, in the order above.
 std::vector<Scheme> all_schemes();
-/// The schemes other than Loop, which share the polygon comparison (scheme_comparison.h).
+/// The schemes other than Loop.
 std::vector<Scheme> polygon_schemes();
+
+/// What the harness needs to know of a scheme's shape, in one place.
+struct SchemeTraits {
+    /// Keeps the old vertices, first and in their order, and splits each face around new
+    /// edge points (and a face point, for a polygon): a triangle into four (Loop, the
+    /// Butterflies), an n-gon into n quads (Catmull-Clark). Such levels are matched through
+    /// provenance (match_by_provenance), level by level; the others (Doo-Sabin's dual faces,
+    /// sqrt3's rotated split) by position.
+    bool primal = false;
+    /// Refines triangle meshes only, and makes triangles.
+    bool triangles = false;
+    /// Has OpenSubdiv's crease, corner and hole rules (Sdc semantics; core and Far share them).
+    bool sdc_tags = false;
+};
+/// The traits of `scheme`.
+const SchemeTraits& traits(Scheme scheme);
 
 /// The named variant of each scheme; only the member of the scheme at hand is read. The
 /// Butterflies have none (the variant is the scheme).

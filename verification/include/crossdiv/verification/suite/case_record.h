@@ -12,8 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "crossdiv/verification/comparisons/loop_comparison.h"
-#include "crossdiv/verification/comparisons/scheme_comparison.h"
+#include "crossdiv/verification/comparisons/refinement_comparison.h"
 #include "crossdiv/verification/harness/isolate.h"
 #include "crossdiv/verification/harness/verdict.h"
 #include "crossdiv/verification/properties/check.h"
@@ -70,10 +69,9 @@ std::string outcome_label(const CaseRecord& c);
 /// Whether a run counts as a failure (JUnit, exit status): core failed, or it diverges unexplained.
 bool is_failure(const CaseRecord& c, const RunRecord& r);
 
-/// A Loop comparison as a case (the job's identity is filled in by the runner).
-CaseRecord case_record(const LoopComparison& comparison);
-/// A comparison of another scheme as a case, under the operation named after the scheme.
-CaseRecord case_record(const SchemeComparison& comparison);
+/// A comparison as a case under the operation named after its scheme (the job's identity is
+/// filled in by the runner).
+CaseRecord case_record(const RefinementComparison& comparison);
 /// The checks of one input (curves, surfaces, a study) as a case.
 CaseRecord case_record(const CheckReport& report);
 /// A job that made no result: core refused the input (`ours_failed` false) or failed.

@@ -8,8 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "crossdiv/verification/comparisons/loop_comparison.h"
-#include "crossdiv/verification/comparisons/scheme_comparison.h"
+#include "crossdiv/verification/comparisons/refinement_comparison.h"
 #include "crossdiv/verification/implementations/tag_rules.h"
 #include "crossdiv/verification/implementations/output_size.h"
 #include "crossdiv/verification/implementations/program_implementation.h"
@@ -36,10 +35,10 @@ struct ManifestEntry {
     int line = 0;                      ///< in the manifest file
     std::vector<std::string> inputs;   ///< as the operation's expand() accepts them (collections allowed)
     const SuiteOperation* operation = nullptr;
-    LoopComparisonRequest request;     ///< loop: rules, levels, references, tier, tolerance
-    /// Another scheme's comparison: levels, references, tier, tolerance; its rule is resolved
-    /// per input from `rule_flags` and the input's tags (rule_with_tags).
-    SchemeRequest scheme_request;
+    /// A comparison's scheme, levels, references, tier and tolerance, and Loop's rule (weights=,
+    /// boundary=); another scheme's rule is resolved per input from `rule_flags` and the
+    /// input's tags (rule_with_tags).
+    RefinementRequest request;
     RuleFlags rule_flags;              ///< another scheme's boundary= and crease-method= keys
     /// The implementation under test (the last `subject` statement before the case); none: core.
     std::shared_ptr<const ManifestSubject> subject;

@@ -12,6 +12,6 @@ namespace crossdiv::verification {
 int render_report(const std::string& dir);
 
 /// The schema version of results.json that this build writes (reports/results-schema.md).
-inline constexpr int kResultsSchemaVersion = 4;
+inline constexpr int kResultsSchemaVersion = 5;
 
 }  // namespace crossdiv::verification

@@ -1,0 +1,708 @@
+#include "crossdiv/verification/comparisons/refinement_comparison.h"
+
+#include <algorithm>
+#include <chrono>
+#include <deque>
+
+#include "crossdiv/error.h"
+#include "harness/sci.h"
+#include "crossdiv/verification/comparisons/classification.h"
+#include "crossdiv/verification/harness/mesh_topology.h"
+#include "crossdiv/verification/implementations/registry.h"
+#include "crossdiv/verification/properties/rule_oracle.h"
+
+namespace crossdiv::verification {
+namespace {
+
+using detail::sci;
+
+/// Core's refinement of the input under one rule: levels 0..N (0 the input) and, where core
+/// gives it, each refined vertex's origin; or why core refused.
+struct CoreRun {
+    SchemeRule rule;
+    Refinement refinement;
+    std::string error;
+    const adapters::LevelTrace& levels() const { return refinement.levels; }
+    const PolyMesh& last() const { return refinement.levels.back(); }
+};
+
+/// Core's refinements of one input, each rule's made once, through core's implementation.
+class CoreRuns {
+public:
+    CoreRuns(const PolyMesh& input, Scheme scheme, int levels) : input_(input), scheme_(scheme), levels_(levels) {}
+
+    /// The run under `rule` (its error set when core refuses). A deque: earlier runs stay
+    /// where they are while later ones are added.
+    const CoreRun& with(const SchemeRule& rule) {
+        for (const CoreRun& run : runs_)
+            if (same_rule(scheme_, run.rule, rule)) return run;
+        CoreRun& run = runs_.emplace_back();
+        run.rule = rule;
+        try {
+            run.refinement = core_implementation().refine_with_provenance(input_, {scheme_, rule, levels_});
+        } catch (const InputError& e) {
+            run.error = e.what();
+            run.refinement.levels = {input_};
+        }
+        return run;
+    }
+
+private:
+    const PolyMesh& input_;
+    Scheme scheme_;
+    int levels_;
+    std::deque<CoreRun> runs_;
+};
+
+/// The correspondence's vertex map at level `l` of `last`: its level map when matched level by
+/// level, the last level's map when matched by position (nullptr at the levels before).
+const std::vector<int>* level_map(const Correspondence& c, size_t l, size_t last) {
+    if (l < c.level_maps.size()) return &c.level_maps[l];
+    return l == last ? &c.ref_to_ours : nullptr;
+}
+
+/// Max relative error at each level 1..N that has a map (every level when matched through
+/// provenance, the last one when by position). Positions only: topology is compared once, at
+/// the end. A level `ours` lacks (a level the subject was not asked for) is skipped.
+std::vector<double> level_errors(const adapters::LevelTrace& ours, const adapters::LevelTrace& ref, const Correspondence& c) {
+    std::vector<double> e;
+    for (size_t l = 1; l < ref.size() && l < ours.size(); ++l) {
+        if (ours[l].num_vertices() == 0) continue;
+        if (const std::vector<int>* map = level_map(c, l, ref.size() - 1))
+            e.push_back(max_relative_distance(ours[l], ref[l], *map));
+    }
+    return e;
+}
+
+/// The weak tier: the same faces, and every compared level within `tolerance`.
+bool within_weak(const MeshComparison& c, const std::vector<double>& level_errors, double tolerance) {
+    if (!c.topology_equal() || !(c.max_rel <= tolerance)) return false;
+    return std::all_of(level_errors.begin(), level_errors.end(), [&](double e) { return e <= tolerance; });
+}
+
+/// A reference's vertices in our numbering (`ref_to_ours`: ours for each of its vertices);
+/// NaN where none of its vertices maps.
+std::vector<Vec3> in_our_numbering(const PolyMesh& ref, const std::vector<int>& ref_to_ours, int our_vertices) {
+    std::vector<Vec3> mapped(static_cast<size_t>(our_vertices), Vec3::Constant(NAN));
+    for (size_t i = 0; i < ref_to_ours.size(); ++i)
+        if (ref_to_ours[i] >= 0 && ref_to_ours[i] < our_vertices) mapped[static_cast<size_t>(ref_to_ours[i])] = ref.positions[i];
+    return mapped;
+}
+
+/// A reference's levels 0..N in our numbering, each where the correspondence has a map for it.
+std::vector<std::vector<Vec3>> levels_in_our_numbering(const adapters::LevelTrace& ours, const adapters::LevelTrace& ref,
+                                                       const Correspondence& c) {
+    std::vector<std::vector<Vec3>> out(ref.size());
+    for (size_t l = 0; l < ref.size() && l < ours.size(); ++l) {
+        const std::vector<int>* map = level_map(c, l, ref.size() - 1);
+        if (!map || map->empty() || map->size() != ref[l].positions.size()) continue;
+        out[l] = in_our_numbering(ref[l], *map, ours[l].num_vertices());
+    }
+    return out;
+}
+
+/// What the reference's rule does, for the explanation.
+std::string rule_effect(Scheme scheme, const std::string& ref, const std::string& requested, const std::string& rule,
+                        int levels) {
+    switch (scheme) {
+        case Scheme::Loop: return ref + " has no " + requested + " and applies " + rule;
+        case Scheme::DooSabin: return ref + " drops the faces of border edges and vertices";
+        case Scheme::Sqrt3:
+            return ref + (rule == "restart-each-level"
+                              ? " counts generations per call, and was called once per level, so it never refined the boundary"
+                              : " counts generations from the input (one call of " + std::to_string(levels) + " levels)");
+        case Scheme::Butterfly:
+        case Scheme::ModifiedButterfly:
+            return ref + (rule == "opposite-vertex-wings"
+                              ? " takes a wing point beyond the boundary to be the triangle's own opposite vertex"
+                              : " reflects a wing point beyond the boundary across the wing edge");
+        case Scheme::CatmullClark: break;
+    }
+    return ref + " applies the " + rule + " boundary rule";
+}
+
+/// When the reference's weight table is shorter than the input's largest valence: whether at
+/// level 1 exactly the vertices beyond the table differ from `ours` (core's level 1 under the
+/// reference's rule; the others agree within `tolerance`); fills `explanation` with the
+/// figures. Later levels inherit the difference from them.
+bool beyond_valence_table(const Implementation& ref, Scheme scheme, const PolyMesh& input, const PolyMesh& ours,
+                          const adapters::LevelTrace& trace, double tolerance, std::string& explanation) {
+    const SchemeSupport* support = ref.support(scheme);
+    if (!support || support->max_valence <= 0 || trace.size() < 2) return false;
+    const int max_valence = support->max_valence;
+    const MeshTopology topo = mesh_topology(input);
+    int beyond = 0, largest = 0;
+    for (int v = 0; v < input.num_vertices(); ++v) {
+        beyond += topo.valence[v] > max_valence;
+        largest = std::max(largest, topo.valence[v]);
+    }
+    if (beyond == 0) return false;
+    const Correspondence c = match_nearest_and_faces(ours, trace[1]);
+    if (c.method == MatchMethod::None) return false;
+    const std::vector<double> d = vertex_distances(ours, trace[1], c.ref_to_ours);
+    const double diagonal = bounding_box_diagonal(ours.positions);
+    int differing = 0, non_finite = 0;
+    double worst = 0;
+    for (size_t i = 0; i < d.size(); ++i) {
+        if (d[i] <= tolerance * diagonal) continue;  // a non-finite position differs too
+        const int v = c.ref_to_ours[i];  // core keeps old vertices first, in input order
+        if (v >= input.num_vertices() || topo.valence[v] <= max_valence) return false;
+        ++differing;
+        if (std::isfinite(d[i])) worst = std::max(worst, d[i] / diagonal);
+        else ++non_finite;
+    }
+    if (differing != beyond) return false;
+    explanation = ref.name() + "'s weight table ends at valence " + std::to_string(max_valence) + " (" +
+                  support->valence_table + ") and what it reads past the table is undefined; at level 1 exactly the " +
+                  std::to_string(beyond) + " vertices of larger valence (up to " + std::to_string(largest) + ") differ, " +
+                  (non_finite == differing ? std::string("all to non-finite positions")
+                                           : "by up to " + sci(worst) + " of the diagonal" +
+                                                 (non_finite ? " (" + std::to_string(non_finite) + " non-finite)" : "")) +
+                  ", and every other vertex agrees";
+    return true;
+}
+
+/// Whether core refines a non-manifold input of `scheme` by OpenSubdiv's rules under `rule`.
+bool takes_nonmanifold_rules(Scheme scheme, const SchemeRule& rule) {
+    if (scheme == Scheme::Loop) return rule.loop.nonmanifold == NonManifoldRule::OpenSubdiv;
+    if (scheme == Scheme::CatmullClark) return rule.catmull_clark.nonmanifold == NonManifoldRule::OpenSubdiv;
+    return false;
+}
+
+/// The subject's levels renumbered into core's (level 0 the input): level by level through
+/// provenance where the subject keeps old vertices first (as the libraries do), else each
+/// level matched by position to core's level. Levels the subject did not make stay empty.
+/// The method is the weakest one any level needed; None when some level has no bijection
+/// (the note says which).
+Correspondence renumber_subject(const adapters::LevelTrace& core, const adapters::LevelTrace& trace,
+                                adapters::LevelTrace& subject) {
+    subject.assign(core.size(), PolyMesh{});
+    subject[0] = core[0];
+    Correspondence c = match_by_provenance(level_view(core), trace);
+    if (c.method == MatchMethod::Order || c.method == MatchMethod::Topology) {
+        for (size_t l = 1; l < trace.size() && l < core.size(); ++l) subject[l] = renumber(trace[l], c.level_maps[l]);
+        return c;
+    }
+    const std::string topological = c.note;
+    c = Correspondence{};
+    c.method = MatchMethod::Nearest;
+    for (size_t l = 1; l < trace.size() && l < core.size(); ++l) {
+        if (trace[l].num_vertices() == 0) continue;
+        const Correspondence m = match_nearest_and_faces(core[l], trace[l]);
+        if (m.method == MatchMethod::None) {
+            c.method = MatchMethod::None;
+            c.note = "level " + std::to_string(l) + ": " + m.note + " (" + topological + ")";
+            return c;
+        }
+        if (m.method == MatchMethod::NearestAndFaces) c.method = MatchMethod::NearestAndFaces;
+        subject[l] = renumber(trace[l], m.ref_to_ours);
+        c.ref_to_ours = m.ref_to_ours;
+    }
+    c.note = topological;
+    return c;
+}
+
+/// The references of the request; for a tagged input without named references, only those
+/// with crease rules (the others would refuse the tags), said in a note.
+std::vector<const Implementation*> chosen_references(const PolyMesh& input, const std::string& name,
+                                                     const RefinementRequest& req, std::vector<std::string>& notes) {
+    if (req.without_references) return {};
+    std::vector<const Implementation*> refs = select_references(req.scheme, req.references);
+    if (req.references.empty() && !input.creases.empty()) {
+        std::erase_if(refs, [&](const Implementation* r) { return !r->support(req.scheme)->creases; });
+        std::string names;
+        for (const Implementation* r : refs) names += (names.empty() ? "" : ", ") + r->name();
+        notes.push_back(name + " has " + input.creases.describe() + "; compared with " +
+                        (names.empty() ? std::string("no reference (none has crease rules)") : names) +
+                        ", the references with crease and hole rules");
+    }
+    return refs;
+}
+
+std::string counts(const PolyMesh& m) {
+    return std::to_string(m.num_faces()) + " faces and " + std::to_string(m.num_vertices()) + " vertices";
+}
+
+}  // namespace
+
+PolyMesh subdivide(Scheme scheme, const SchemeRule& rule, const PolyMesh& mesh, int levels) {
+    return core_implementation().refine_last(mesh, {scheme, rule, levels});
+}
+
+bool RefinementComparison::all_agree() const {
+    if (!core_error.empty() || runs.empty()) return false;
+    return std::all_of(runs.begin(), runs.end(), [](const RefinementRun& r) { return r.verdict == Verdict::Agree; });
+}
+
+RefinementComparison compare_refinement(const PolyMesh& input, const std::string& name, const RefinementRequest& req) {
+    if (req.subject && req.scheme != Scheme::Loop)
+        throw InputError("a subject is compared under the Loop scheme so far, not " + std::string(to_string(req.scheme)));
+    RefinementComparison out;
+    out.input = name;
+    out.scheme = req.scheme;
+    out.rule = req.rule;
+    out.rule_name = rule_name(req.scheme, req.rule);
+    out.levels = req.levels;
+    out.tier = req.tier;
+    out.tolerance = req.tolerance;
+    out.input_vertices = input.num_vertices();
+    out.input_faces = input.num_faces();
+    const std::vector<const Implementation*> refs = chosen_references(input, name, req, out.notes);
+    const bool primal = traits(req.scheme).primal;
+
+    const auto t0 = std::chrono::steady_clock::now();
+    CoreRuns core(input, req.scheme, req.levels);
+    const CoreRun& requested = core.with(req.rule);
+    out.core_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    out.core_error = requested.error;
+
+    // The implementation under test: core with the requested rule, or the subject in core's
+    // numbering with the rule it is measured to follow (none when no named rule fits).
+    const adapters::LevelTrace* under_test = &requested.levels();
+    adapters::LevelTrace subject;
+    std::optional<SchemeRule> subject_rule = req.rule;
+    const std::string subject_name = req.subject ? req.subject->name() : "core";
+    if (req.subject && out.core_error.empty()) {
+        out.subject = subject_name;
+        IsolatedTrace iso = refine_isolated(*req.subject, input, {req.scheme, req.rule, req.levels}, req.timeout_seconds,
+                                            req.isolate);
+        out.subject_outcome = iso.outcome;
+        if (iso.outcome.status != RunStatus::Ok) return out;
+        out.subject_match = renumber_subject(requested.levels(), *iso.trace, subject);
+        if (out.subject_match.method == MatchMethod::None) {
+            out.subject_unmatched = "no vertex correspondence with core's refinement: " + out.subject_match.note;
+            return out;
+        }
+        std::vector<std::vector<PolyMesh>> by_rule;
+        for (const LoopOptions& o : loop_named_rules()) {
+            SchemeRule r = req.rule;
+            r.loop = o;
+            const adapters::LevelTrace& levels = core.with(r).levels();
+            by_rule.emplace_back(levels.begin() + 1, levels.end());
+        }
+        out.rules = identify_loop_rule(input, {subject.begin() + 1, subject.end()}, by_rule, requested.refinement.origins,
+                                       req.rule.loop, req.tolerance);
+        subject_rule.reset();
+        if (out.rules->rule) {
+            subject_rule = req.rule;
+            subject_rule->loop = *out.rules->rule;
+        }
+        under_test = &subject;
+    }
+    const PolyMesh& ours = under_test->back();
+
+    // Counted once, when first needed: the input's largest valence (the float tier's bound)
+    // and its interior vertices' valences (where a rule's oracle checks its vertex mask).
+    std::optional<MeshTopology> topology;
+    auto input_topology = [&]() -> const MeshTopology& {
+        if (!topology) topology = mesh_topology(input);
+        return *topology;
+    };
+    auto largest_valence = [&] {
+        int largest = 0;
+        for (int v : input_topology().valence) largest = std::max(largest, v);
+        return largest;
+    };
+    auto interior_valences = [&] {
+        std::vector<int> list;
+        const MeshTopology& t = input_topology();
+        for (size_t v = 0; v < t.valence.size(); ++v)
+            if (!t.boundary_vertex[v] && t.valence[v] >= 3) list.push_back(t.valence[v]);
+        std::sort(list.begin(), list.end());
+        list.erase(std::unique(list.begin(), list.end()), list.end());
+        return list;
+    };
+
+    // Each matched reference's last level in our numbering (every implementation's value at
+    // the case's worst vertex) and, for the 3D view, every level it was matched at.
+    std::map<std::string, std::vector<Vec3>> in_our_order;
+    const bool keep_view = req.view_max_faces > 0 && out.core_error.empty() && ours.num_faces() <= req.view_max_faces;
+    std::map<std::string, std::vector<std::vector<Vec3>>> at_each_level;
+    for (const Implementation* impl : refs) {
+        const Implementation& ref = *impl;
+        RefinementRun run;
+        run.reference = ref.name();
+        run.version = ref.version();
+        run.ran_with = ref.closest_rule(req.scheme, req.rule);
+        run.rule = rule_name(req.scheme, run.ran_with);
+        const bool rules_differ = !same_rule(req.scheme, run.ran_with, req.rule);
+        // Asked for the rule it applies: a program is handed the rule as it is asked.
+        IsolatedTrace iso = refine_isolated(ref, input, {req.scheme, run.ran_with, req.levels}, req.timeout_seconds, req.isolate);
+        run.outcome = iso.outcome;
+        const std::string made = iso.trace ? "core refuses the input (" + out.core_error + "); " + ref.name() + " refines it to " +
+                                                 counts(iso.trace->back())
+                                           : std::string();
+        if (const std::optional<EarlyVerdict> early = verdict_before_comparing(run.outcome, out.core_error, made)) {
+            run.verdict = early->verdict;
+            run.explanation = early->explanation;
+            // The class names what the input breaks, from the checker's first error.
+            if (run.verdict == Verdict::OursRejected) run.divergence_class = input_handling_class(input);
+            out.runs.push_back(std::move(run));
+            continue;
+        }
+        const adapters::LevelTrace& trace = *iso.trace;
+        const PolyMesh& theirs = trace.back();
+
+        // A reference that computes in float is held to the float tier: the weak tier at the
+        // float bound (tolerances::kFloatAgreementUlps), whatever tier the case asks of doubles.
+        const bool in_float = ref.capabilities().precision == Precision::Float;
+        const double tolerance =
+            in_float ? agreement_tolerance(ours, true, req.tolerance, largest_valence(), req.levels) : req.tolerance;
+        const Tier tier = in_float && req.tier == Tier::Strict ? Tier::Weak : req.tier;
+        if (tier == Tier::Geometric) {
+            const double d = bounding_box_diagonal(ours.positions);
+            run.hausdorff_rel = hausdorff_vertex_sets(ours.positions, theirs.positions) / (d > 0 ? d : 1);
+        }
+        const std::string geometric_why = "vertex-set Hausdorff distance " + sci(run.hausdorff_rel) + " <= " + sci(tolerance);
+
+        // Core with the reference's rule, to measure what the rule explains (and to match a
+        // scheme that is not primal against); a rule core has only for manifold meshes
+        // (OpenMesh's midpoint-average on a bowtie) is not measured.
+        std::string no_same_rule;
+        auto core_with_reference_rule = [&]() -> const CoreRun* {
+            const CoreRun& s = core.with(run.ran_with);  // the requested run itself when the rules are the same
+            if (s.error.empty()) return &s;
+            no_same_rule = "; core cannot apply " + ref.name() + "'s " + run.rule + " rule here (" + s.error + ")";
+            return nullptr;
+        };
+        // Match through provenance where the scheme gives it (positions play no part: a rule
+        // that moves vertices far is matched too), else by position against core with the
+        // reference's rule, which then coincide up to rounding even where the requested rule
+        // moves vertices or makes others.
+        const CoreRun* matched_to = &requested;
+        if (primal) run.correspondence = match_by_provenance(level_view(requested.levels()), trace);
+        if (!primal || run.correspondence.method == MatchMethod::None) {
+            const std::string why = run.correspondence.note;
+            if (const CoreRun* with = core_with_reference_rule()) matched_to = with;
+            run.correspondence = match_nearest_and_faces(matched_to->last(), theirs);
+            if (!why.empty()) run.correspondence.note = why + (run.correspondence.note.empty() ? "" : "; " + run.correspondence.note);
+        }
+        // The map holds for the implementation under test where its numbering is that of the
+        // run it was matched to: always for a primal scheme (rules do not change its faces).
+        const bool map_holds = primal || matched_to == &requested || matched_to->last().num_vertices() == ours.num_vertices();
+        const std::vector<int> no_map;
+        const std::vector<int>& map = map_holds ? run.correspondence.ref_to_ours : no_map;
+
+        // A reference whose weight table ends below the input's valence reads past it: what it
+        // puts at those vertices is undefined (OpenMesh's Sqrt3T reads whatever lies beyond its
+        // vector), and only level 1, where nothing else has yet mixed it in, shows it. The test
+        // stands whether or not the final levels could be matched.
+        const DivergenceTest valence_table = [&]() -> std::optional<Classification> {
+            const CoreRun* s = core_with_reference_rule();
+            std::string why;
+            if (!s || s->levels().size() < 2 ||
+                !beyond_valence_table(ref, req.scheme, input, s->levels()[1], trace, tolerance, why))
+                return std::nullopt;
+            return Classification{DivergenceClass::ValenceLimit, why};
+        };
+
+        if (run.correspondence.method == MatchMethod::None) {
+            if (tier == Tier::Geometric && run.hausdorff_rel <= tolerance) {
+                run.verdict = Verdict::Agree;
+                run.explanation = geometric_why + " (no vertex correspondence: " + run.correspondence.note + ")";
+                out.runs.push_back(std::move(run));
+                continue;
+            }
+            // Without a correspondence only the valence-table and topology tests of the ladder
+            // can be run. With equal counts that is no measured topology difference: a rule
+            // that moves vertices far (a wrong weight) breaks a match by position too.
+            run.verdict = Verdict::Diverge;
+            const PolyMesh& against = matched_to->last();
+            const std::string unmatched = "no vertex bijection with core's " + rule_name(req.scheme, matched_to->rule) +
+                                          " refinement (" + run.correspondence.note + "); " + counts(theirs) +
+                                          " against core's " + counts(against);
+            DivergenceTests only_topology;
+            only_topology.valence_table = valence_table;
+            only_topology.topology = [&]() -> std::optional<Classification> {
+                if (!measured_topology_difference(topology_counts(against), topology_counts(theirs), false, MatchMethod::None))
+                    return std::nullopt;
+                return Classification{DivergenceClass::Topology, unmatched};
+            };
+            only_topology.unexplained = [&] { return unmatched + ": the same counts, so not a topology difference"; };
+            const Classification c = classify_divergence(only_topology);
+            run.divergence_class = c.cls;
+            run.explanation = c.explanation;
+            out.runs.push_back(std::move(run));
+            continue;
+        }
+
+        run.comparison = compare_meshes(ours, theirs, map);
+        if (map_holds) {
+            run.level_max_rel = level_errors(*under_test, trace, run.correspondence);
+            in_our_order[ref.name()] = in_our_numbering(theirs, map, ours.num_vertices());
+            if (keep_view) at_each_level[ref.name()] = levels_in_our_numbering(*under_test, trace, run.correspondence);
+        }
+        const bool within_tier = tier == Tier::Strict      ? run.comparison.topology_equal() && run.comparison.max_abs == 0.0
+                                 : tier == Tier::Geometric ? run.hausdorff_rel <= tolerance
+                                                           : within_weak(run.comparison, run.level_max_rel, tolerance);
+        if (within_tier) {
+            run.verdict = Verdict::Agree;
+            run.explanation = tier == Tier::Strict      ? std::string("bitwise identical")
+                              : tier == Tier::Geometric ? geometric_why
+                                                        : "max relative error " + sci(run.comparison.max_rel) + " <= " +
+                                                              sci(tolerance) + (in_float ? " (float tier)" : "");
+            out.runs.push_back(std::move(run));
+            continue;
+        }
+
+        // The ladder (classification.h), each test measured.
+        run.verdict = Verdict::Diverge;
+        const std::string worst = run.comparison.worst.empty()
+                                      ? ""
+                                      : " (worst: our vertex " + std::to_string(run.comparison.worst[0].ours_index) +
+                                            ", valence " + std::to_string(run.comparison.worst[0].valence) +
+                                            (run.comparison.worst[0].boundary ? ", boundary" : ", interior") + ")";
+        const bool same_faces = run.comparison.topology_equal();
+        const std::string faces = counts(theirs) + " against core's " + counts(ours);
+        DivergenceTests tests;
+        tests.isolated_vertices = [&]() -> std::optional<Classification> {
+            if (!same_faces || !only_isolated_vertices_differ(ours, theirs, map, tolerance)) return std::nullopt;
+            return Classification{DivergenceClass::IsolatedVertexHandling,
+                                  "only vertices no face uses differ, by up to " + sci(run.comparison.max_rel) + worst};
+        };
+        tests.rounding = [&]() -> std::optional<Classification> {
+            const double ulps = run.comparison.max_abs / ulp_of_largest_coordinate(ours);
+            if (!same_faces || !(ulps <= tolerances::kRoundingUlps)) return std::nullopt;
+            return Classification{DivergenceClass::Rounding, "differs by " + sci(run.comparison.max_rel) +
+                                                                 " of the diagonal, which is " + sci(ulps) +
+                                                                 " ulps of the largest coordinate" + worst};
+        };
+        // The rule the implementation under test applies, as seen against this reference: the
+        // requested one for core; of the named rules that fit a subject, the one nearest the
+        // reference's (on a closed mesh both boundary rules fit, and only the weights can
+        // tell them apart).
+        std::optional<SchemeRule> applied_rule = subject_rule;
+        if (req.subject && out.rules)
+            if (const std::optional<LoopOptions> nearest = nearest_fitting_rule(*out.rules, run.ran_with.loop)) {
+                applied_rule = req.rule;
+                applied_rule->loop = *nearest;
+            }
+        std::string still;  // what core with the reference's rule still differs by, when it does
+        tests.reference_rule = [&]() -> std::optional<Classification> {
+            if (!applied_rule || same_rule(req.scheme, run.ran_with, *applied_rule)) return std::nullopt;
+            const CoreRun* with_rule = core_with_reference_rule();
+            if (!with_rule) return std::nullopt;
+            const CoreRun& with = *with_rule;
+            // Measured, not assumed: core re-run with the reference's rule. Whatever the tier,
+            // the rule explains the divergence only if core with it equals the reference up to
+            // rounding (the weak tier at its tolerance; strict would demand bits, geometric
+            // would accept what the rule itself moves).
+            const MeshComparison c2 = compare_meshes(with.last(), theirs, run.correspondence.ref_to_ours);
+            run.max_rel_with_reference_rule = c2.max_rel;
+            const std::vector<double> e2 = level_errors(with.levels(), trace, run.correspondence);
+            const double bar = tier == Tier::Weak ? tolerance
+                                                  : agreement_tolerance(with.last(), in_float, tolerances::kAgreementRelative,
+                                                                        in_float ? largest_valence() : 0, req.levels);
+            // Two named causes at once: the rule explains every vertex a face uses, and only
+            // vertices no face uses differ beyond that (a reference that moves them).
+            const bool agrees_with_rule = within_weak(c2, e2, bar);
+            const bool but_isolated = !agrees_with_rule && c2.topology_equal() &&
+                                      only_isolated_vertices_differ(with.last(), theirs, run.correspondence.ref_to_ours, bar);
+            const std::string rule = rule_name(req.scheme, *applied_rule);
+            if (!agrees_with_rule && !but_isolated) {
+                still = "; with " + ref.name() + "'s " + run.rule + " rule still " + sci(c2.max_rel);
+                return std::nullopt;
+            }
+            // A rule difference explains the divergence only if the rule under test is the
+            // published one: core's version of it must pass the oracle that does not read its
+            // masks, at the input's interior valences too (rule_oracle.h).
+            const RuleVerdict oracle = check_core_rule(req.scheme, *applied_rule, interior_valences());
+            if (oracle.known && !oracle.passed) {
+                still = "; " + rule + " fails its oracle: " + oracle.detail;
+                return std::nullopt;
+            }
+            const std::string agrees =
+                but_isolated ? "core with " + run.rule + " agrees at every vertex a face uses; only vertices no face uses "
+                                                         "differ beyond that (isolated-vertex-handling too), by up to " +
+                                   sci(c2.max_rel)
+                             : "core with " + run.rule + " agrees to " + sci(c2.max_rel);
+            const std::string differs =
+                same_faces ? " differs by " + sci(run.comparison.max_rel) + " of the diagonal" + worst
+                           : " makes different faces (" + faces + ")";
+            const DivergenceClass cls = rule_difference_class(req.scheme, run.ran_with, *applied_rule);
+            if (req.subject)
+                return Classification{cls, subject_name + " applies " + rule + ", " + ref.name() + " " + run.rule + " (" +
+                                               agrees + "); they" + differs};
+            return Classification{cls, rule_effect(req.scheme, ref.name(), rule, run.rule, req.levels) + ": " + agrees +
+                                           "; core's " + rule + differs};
+        };
+        tests.valence_table = valence_table;
+        tests.nonmanifold = [&]() -> std::optional<Classification> {
+            // Measured: core took OpenSubdiv's non-manifold rules here, and every vertex that
+            // differs by more than the tolerance from core under the reference's own rule (the
+            // boundary or corner rule it may lack) lies where the non-manifold vertices reach.
+            if (!same_faces || !takes_nonmanifold_rules(req.scheme, req.rule) || !primal) return std::nullopt;
+            const bool own_rule = !applied_rule || same_rule(req.scheme, run.ran_with, *applied_rule);
+            // (Measured against the requested rule when core has the reference's only for manifolds.)
+            const CoreRun* with = own_rule ? nullptr : core_with_reference_rule();
+            const PolyMesh& core_rule = with ? with->last() : ours;
+            std::optional<Classification> c =
+                nonmanifold_handling(nonmanifold_reach(level_view(requested.levels())), core_rule, theirs,
+                                     run.correspondence.ref_to_ours, tolerance, ref.name(), run.comparison.max_rel,
+                                     with ? " from core with " + run.rule : "");
+            if (c) c->explanation += worst;
+            return c;
+        };
+        tests.topology = [&]() -> std::optional<Classification> {
+            if (same_faces || !measured_topology_difference(run.comparison.ours, run.comparison.ref, false,
+                                                            run.correspondence.method))
+                return std::nullopt;
+            return Classification{DivergenceClass::Topology,
+                                  "refined topology differs: " + faces + "; " + std::to_string(run.comparison.faces_only_in_ref) +
+                                      " faces only in " + ref.name() + ", " +
+                                      std::to_string(run.comparison.faces_only_in_ours) + " only in core"};
+        };
+        tests.unexplained = [&] {
+            if (!same_faces)
+                return faces + "; the face sets differ only under a match by position (" +
+                       to_string(run.correspondence.method) + "), which a vertex moved far breaks: not a topology difference";
+            if (req.subject && !subject_rule)
+                return subject_name + " follows no named rule; differs by " + sci(run.comparison.max_rel) + worst;
+            if (!rules_differ) return "same rules, differs by " + sci(run.comparison.max_rel) + worst;
+            return "differs by " + sci(run.comparison.max_rel) + worst + (still.empty() ? no_same_rule : still);
+        };
+        const Classification found = classify_divergence(tests);
+        run.divergence_class = found.cls;
+        run.explanation = found.explanation;
+        out.runs.push_back(std::move(run));
+    }
+
+    const RefinementRun* worst_run = nullptr;
+    for (const RefinementRun& r : out.runs)
+        if (r.verdict == Verdict::Diverge && !r.comparison.worst.empty() &&
+            (!worst_run || r.comparison.worst[0].distance > worst_run->comparison.worst[0].distance))
+            worst_run = &r;
+    const bool diverges =
+        std::any_of(out.runs.begin(), out.runs.end(), [](const RefinementRun& r) { return r.verdict == Verdict::Diverge; });
+    if (diverges && keep_view) {
+        DivergenceView& view = out.view.emplace();
+        view.levels.assign(under_test->begin(), under_test->end());
+        view.origins = requested.refinement.origins;
+        view.references = std::move(at_each_level);
+    }
+    if (worst_run) {
+        const WorstVertex& w = worst_run->comparison.worst[0];
+        out.worst_vertex = CaseWorstVertex{w.ours_index, w.valence, w.boundary, w.ours, std::nullopt, {}};
+        if (req.subject) out.worst_vertex->core_with_requested_rule = requested.last().positions[static_cast<size_t>(w.ours_index)];
+        for (const auto& [reference, positions] : in_our_order)
+            out.worst_vertex->reference_positions[reference] = positions[static_cast<size_t>(w.ours_index)];
+    }
+    return out;
+}
+
+namespace {
+
+nlohmann::json subject_json(const RefinementComparison& c) {
+    using nlohmann::json;
+    auto finite = [](double x) { return std::isfinite(x) ? json(x) : json(nullptr); };
+    auto describe = [&](const LoopOptions& o) {
+        SchemeRule r = c.rule;
+        r.loop = o;
+        return rule_name(c.scheme, r);
+    };
+    auto fits = [&](const std::vector<RuleFit>& list) {
+        json a = json::array();
+        for (const RuleFit& f : list) a.push_back({{"rule", describe(f.rule)}, {"max_rel", finite(f.max_rel)}, {"fits", f.fits}});
+        return a;
+    };
+    json s = {{"name", c.subject},
+              {"status", to_string(c.subject_outcome.status)},
+              {"status_message", c.subject_outcome.message},
+              {"seconds", c.subject_outcome.seconds},
+              {"unmatched", c.subject_unmatched}};
+    if (c.subject_outcome.status == RunStatus::Ok)
+        s["match"] = {{"method", to_string(c.subject_match.method)}, {"note", c.subject_match.note}};
+    if (c.rules) {
+        json rows = json::array();
+        for (const VertexClassRow& r : c.rules->rows)
+            rows.push_back({{"class", to_string(r.cls)}, {"valence", r.valence}, {"count", r.count},
+                            {"worst_vertex", r.worst_vertex}, {"fits", fits(r.fits)}});
+        s["rules"] = {{"classified_level", c.rules->classified_level},
+                      {"rule", c.rules->rule ? json(describe(*c.rules->rule)) : json(nullptr)},
+                      {"whole", fits(c.rules->whole)},
+                      {"classes", rows}};
+    }
+    return s;
+}
+
+}  // namespace
+
+nlohmann::json to_json(const RefinementComparison& c) {
+    using nlohmann::json;
+    auto loop_options = [](const SchemeRule& r) {
+        return json{{"weights", std::string(to_string(r.loop.weights))}, {"boundary", std::string(to_string(r.loop.boundary))}};
+    };
+    auto topo = [](const TopologyCounts& t) {
+        return json{{"vertices", t.vertices}, {"edges", t.edges}, {"faces", t.faces}, {"euler", t.euler},
+                    {"boundary_loops", t.boundary_loops}};
+    };
+    auto vec = [](const Vec3& v) { return json::array({v.x(), v.y(), v.z()}); };
+    auto finite = [](double x) { return std::isfinite(x) ? json(x) : json(nullptr); };
+    json worst = nullptr;
+    if (c.worst_vertex) {
+        json at = json::object();
+        for (const auto& [name, p] : c.worst_vertex->reference_positions) at[name] = p.allFinite() ? vec(p) : json(nullptr);
+        worst = {{"ours_index", c.worst_vertex->ours_index}, {"valence", c.worst_vertex->valence},
+                 {"boundary", c.worst_vertex->boundary}, {"core", vec(c.worst_vertex->core)}, {"references", at}};
+        if (c.worst_vertex->core_with_requested_rule) {
+            // The subject's value under "subject"; "core" is then core's with the requested rule.
+            worst["subject"] = worst["core"];
+            worst["core"] = vec(*c.worst_vertex->core_with_requested_rule);
+        }
+    }
+    json runs = json::array();
+    for (const RefinementRun& r : c.runs) {
+        json worst_list = json::array();
+        for (const WorstVertex& w : r.comparison.worst)
+            worst_list.push_back({{"ours_index", w.ours_index}, {"ref_index", w.ref_index}, {"valence", w.valence},
+                                  {"boundary", w.boundary}, {"ours", vec(w.ours)}, {"ref", vec(w.ref)}, {"distance", w.distance}});
+        json run = {{"reference", r.reference},
+                    {"version", r.version},
+                    {"rule", r.rule},
+                    {"status", to_string(r.outcome.status)},
+                    {"status_message", r.outcome.message},
+                    {"seconds", r.outcome.seconds},
+                    {"verdict", to_string(r.verdict)},
+                    {"divergence_class", to_string(r.divergence_class)},
+                    {"explanation", r.explanation}};
+        if (c.scheme == Scheme::Loop) run["ran_with"] = loop_options(r.ran_with);
+        if (!std::isnan(r.hausdorff_rel)) run["hausdorff_rel"] = finite(r.hausdorff_rel);
+        if (r.outcome.status == RunStatus::Ok && c.core_error.empty()) {
+            run["match"] = {{"method", to_string(r.correspondence.method)}, {"note", r.correspondence.note}};
+            if (r.correspondence.method != MatchMethod::None) {
+                run["topology"] = {{"core", topo(r.comparison.ours)},
+                                   {"reference", topo(r.comparison.ref)},
+                                   {"face_sets_equal", r.comparison.face_sets_equal},
+                                   {"faces_only_in_core", r.comparison.faces_only_in_ours},
+                                   {"faces_only_in_reference", r.comparison.faces_only_in_ref}};
+                json levels = json::array();
+                for (double e : r.level_max_rel) levels.push_back(finite(e));
+                run["positions"] = {{"diagonal", r.comparison.diagonal},  {"max_abs", finite(r.comparison.max_abs)},
+                                    {"rms_abs", finite(r.comparison.rms_abs)}, {"max_rel", finite(r.comparison.max_rel)},
+                                    {"rms_rel", finite(r.comparison.rms_rel)}, {"level_max_rel", levels},
+                                    {"max_rel_with_reference_rule", finite(r.max_rel_with_reference_rule)},
+                                    {"worst", worst_list}};
+            }
+        }
+        runs.push_back(run);
+    }
+    json out = {{"input", c.input},
+                {"input_vertices", c.input_vertices},
+                {"input_faces", c.input_faces},
+                {"scheme", to_string(c.scheme)},
+                {"rule", c.rule_name},
+                {"levels", c.levels},
+                {"core_seconds", c.core_seconds},
+                {"tier", to_string(c.tier)},
+                {"tolerance_rel", finite(c.tolerance)},
+                {"core_error", c.core_error},
+                {"all_agree", c.all_agree()},
+                {"runs", runs},
+                {"worst_vertex", worst}};
+    if (c.scheme == Scheme::Loop) out["options"] = loop_options(c.rule);
+    if (!c.notes.empty()) out["notes"] = c.notes;
+    if (c.subject != "core") out["subject"] = subject_json(c);
+    return out;
+}
+
+}  // namespace crossdiv::verification
