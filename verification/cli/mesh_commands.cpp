@@ -317,55 +317,50 @@ int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, cons
     // Load every input before running anything: a file that cannot be read, or is not a
     // triangle mesh, is bad input (exit 2). A triangle mesh whose topology core refuses
     // (non-manifold, degenerate) is a recorded outcome, as in the suite: the references still
-    // run on it and the batch goes on. Crease-tagged inputs are compared with OpenSubdiv
-    // alone, level by level (the Loop comparison's other references have no crease rules).
+    // run on it and the batch goes on. A crease-tagged input is compared with the references
+    // that have crease rules (OpenSubdiv), under the tags' creasing method.
     std::vector<PolyMesh> meshes;
-    std::vector<PolyMesh> tagged(inputs.size());
     std::vector<std::string> refused(inputs.size());
-    std::vector<SchemeArgs> rules(inputs.size(), s);  // each input's, its tags resolved
+    std::vector<LoopOptions> rules;  // each input's, its tags resolved
     for (size_t i = 0; i < inputs.size(); ++i) {
         PolyMesh m = load_input(inputs[i], s.tag_policy());
         s.require_size(m, inputs[i]);
-        rules[i] = with_tag_rules(s, m);
-        if (!m.creases.empty()) {
-            tagged[i] = std::move(m);
-            meshes.emplace_back();
-            continue;
-        }
-        const TriMesh triangles = to_tri_mesh(m, "Loop subdivision");
+        LoopOptions rule = with_tag_rules(s, m).options();
+        rule.creasing = crease_method(s.creasing, m);
+        if (!m.creases.empty() && rule.weights != LoopWeights::Loop)
+            throw InputError(inputs[i] + ": crease and hole tags are compared with Loop's weights (OpenSubdiv's)");
+        PolyMesh faces_only = m;  // a polygon is refused by name, tagged or not
+        faces_only.creases = {};
+        const TriMesh triangles = to_tri_mesh(faces_only, "Loop subdivision");
+        if (m.creases.empty()) try {
+                check_loop_input(triangles, rule);
+            } catch (const InputError& e) {
+                refused[i] = e.what();
+            }
         meshes.push_back(std::move(m));
-        try {
-            check_loop_input(triangles, rules[i].options());
-        } catch (const InputError& e) {
-            refused[i] = e.what();
-        }
+        rules.push_back(rule);
     }
     nlohmann::json results = nlohmann::json::array();
     bool all_agree = true;
     SubjectVerdict verdict;
     for (size_t i = 0; i < inputs.size(); ++i) {
-        if (!tagged[i].creases.empty()) {
-            if (subject) {
-                fmt::print("\n{}: {}; a subject is compared on untagged meshes so far (skipped)\n", inputs[i],
-                           tagged[i].creases.describe());
-                continue;
-            }
-            nlohmann::json record;
-            all_agree &= compare_loop_creases(tagged[i], inputs[i], s.weights, rules[i].boundary,
-                                                   crease_method(s.creasing, tagged[i]), s.levels, timeout,
-                                                   !no_isolate, record);
-            results.push_back(record);
+        if (subject && !meshes[i].creases.empty()) {
+            fmt::print("\n{}: {}; a subject is compared on untagged meshes so far (skipped)\n", inputs[i],
+                       meshes[i].creases.describe());
             continue;
         }
-        if (!refused[i].empty() && subject) {
+        if (subject && !refused[i].empty()) {
             fmt::print("\n{}: core refuses it ({}); a subject is measured where core refines (skipped)\n", inputs[i],
                        refused[i]);
             continue;
         }
         RefinementRequest this_req = req;
-        this_req.rule.loop = rules[i].options();
+        this_req.rule.loop = rules[i];
         const RefinementComparison c = compare_refinement(meshes[i], inputs[i], this_req);
+        for (const std::string& note : c.notes) fmt::print("\nnote: {}\n", note);
         print_table(c);
+        if (!meshes[i].creases.empty())
+            fmt::print("  tags: {}, {} decay\n", meshes[i].creases.describe(), to_string(rules[i].creasing));
         if (!subject_command.empty() && symptom_of_subject(c))
             fmt::print("  shrink it:   crossdiv diff {} --levels {} --weights {} --boundary {} --subject-name {} --subject '{}'\n",
                        inputs[i], s.levels, s.weights, to_string(this_req.rule.loop.boundary), subject->name(), subject_command);

@@ -51,34 +51,6 @@ void write_json(const std::string& path, const nlohmann::json& j) {
 }
 
 
-bool compare_loop_creases(const PolyMesh& mesh, const std::string& name, const std::string& weights,
-                          const std::string& boundary, CreaseMethod method, int levels, double timeout, bool isolate,
-                          nlohmann::json& record) {
-    if (weights != "loop")
-        throw InputError(name + ": crease and hole tags are compared with Loop's weights (OpenSubdiv's)");
-    CreaseRequest req;
-    req.scheme = Scheme::Loop;
-    req.method = method;
-    req.edge_and_corner = boundary == "edge-and-corner";
-    req.levels = levels;
-    req.timeout_seconds = timeout;
-    req.isolate = isolate;
-    const CreaseComparison c = compare_creases(mesh, name, req);
-    fmt::print("\n{} ({} vertices, {} faces) loop with {}, {} decay, boundary={}, levels={}\n", name,
-               mesh.num_vertices(), mesh.num_faces(), mesh.creases.describe(), c.method,
-               req.edge_and_corner ? "edge-and-corner" : "edge-only", levels);
-    if (!c.core_error.empty()) fmt::print("  core refused: {}\n", c.core_error);
-    fmt::print("  {:<11} {:<13} {:>10}  {}\n", "reference", "verdict", "max rel", "per level / explanation");
-    std::string per_level;
-    for (double d : c.max_rel_per_level) per_level += fmt::format("{:.3g} ", d);
-    fmt::print("  {:<11} {:<13} {:>10}  {}{}\n", "opensubdiv", to_string(c.verdict),
-               std::isfinite(c.max_rel) ? fmt::format("{:.3g}", c.max_rel) : "-", per_level,
-               c.divergence_class == DivergenceClass::None ? c.explanation
-                                                             : std::string(to_string(c.divergence_class)) + ": " + c.explanation);
-    record = to_json(c);
-    return c.verdict == Verdict::Agree;
-}
-
 void color_by_age(PolyMesh& result, const std::string& scheme, const std::vector<size_t>& counts) {
     const std::vector<int> born = vertex_birth_levels(counts, scheme_from_string(scheme) == Scheme::DooSabin);
     const int levels = static_cast<int>(counts.size()) - 1;

@@ -26,12 +26,6 @@ struct PolySchemeArgs {
     NonManifoldRule nonmanifold = NonManifoldRule::OpenSubdiv;                      ///< --nonmanifold
 };
 
-/// `crossdiv compare INPUT --scheme loop` for a crease-tagged input: OpenSubdiv, the only
-/// reference with creases, level by level; prints the table and returns whether it agrees.
-bool compare_loop_creases(const PolyMesh& mesh, const std::string& name, const std::string& weights,
-                          const std::string& boundary, CreaseMethod method, int levels, double timeout, bool isolate,
-                          nlohmann::json& record);
-
 /// `crossdiv subdivide IN --scheme catmull-clark --impl core|opensubdiv|openmesh|cgal -o OUT`;
 /// `color` "age" colours the vertices by the level they were born at (color_by_age).
 int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const std::string& impl, const std::string& out,

@@ -1,39 +1,25 @@
 #include "crossdiv/verification/comparisons/crease_comparison.h"
-#include "crossdiv/verification/comparisons/classification.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/error.h"
-#include "crossdiv/subdiv/catmull_clark.h"
-#include "crossdiv/subdiv/loop.h"
+#include "crossdiv/verification/comparisons/refinement_comparison.h"
 #include "crossdiv/verification/harness/mesh_comparison.h"
-#include "crossdiv/verification/harness/correspondence.h"
-#include "crossdiv/verification/harness/isolate.h"
 #include "crossdiv/verification/implementations/registry.h"
 
 namespace crossdiv::verification {
 namespace {
 
-LoopOptions loop_options(const CreaseRequest& req) {
-    return {LoopWeights::Loop, req.edge_and_corner ? LoopBoundary::EdgeAndCorner : LoopBoundary::EdgeOnly, req.method};
-}
-
-CatmullClarkOptions catmull_clark_options(const CreaseRequest& req) {
-    return {req.edge_and_corner ? CatmullClarkBoundary::EdgeAndCorner : CatmullClarkBoundary::EdgeOnly, req.method};
-}
-
-/// Core's levels 1..N (each level refines the previous one, tags and all).
-std::vector<PolyMesh> core_levels(const PolyMesh& mesh, const CreaseRequest& req) {
-    std::vector<PolyMesh> out;
-    PolyMesh current = mesh;
-    for (int l = 0; l < req.levels; ++l) {
-        current = req.scheme == Scheme::Loop ? loop_subdivide(current, loop_options(req), 1)
-                           : catmull_clark_subdivide(current, catmull_clark_options(req), 1);
-        out.push_back(current);
-    }
-    return out;
+/// The rule of the request: Loop's weights (OpenSubdiv's) or Catmull-Clark, the boundary rule
+/// and the creasing method.
+SchemeRule crease_rule(const CreaseRequest& req) {
+    SchemeRule rule;
+    const bool corner = req.edge_and_corner;
+    rule.loop = {LoopWeights::Loop, corner ? LoopBoundary::EdgeAndCorner : LoopBoundary::EdgeOnly, req.method};
+    rule.catmull_clark = {corner ? CatmullClarkBoundary::EdgeAndCorner : CatmullClarkBoundary::EdgeOnly, req.method};
+    return rule;
 }
 
 }  // namespace
@@ -48,83 +34,56 @@ CreaseComparison compare_creases(const PolyMesh& mesh, const std::string& name, 
     c.vertex_tags = static_cast<int>(mesh.creases.vertices.size());
     c.hole_tags = static_cast<int>(mesh.creases.holes.size());
 
-    std::vector<PolyMesh> ours;
-    try {
-        ours = core_levels(mesh, req);
-        PolyMesh untagged = mesh;
-        untagged.creases = {};
-        const PolyMesh smooth = core_levels(untagged, req).back();
-        const double diag = bounding_box_diagonal(ours.back().positions);
-        double effect = 0;  // same order: the tags change weights, not topology, at one level
-        if (smooth.num_vertices() == ours.back().num_vertices() && req.levels == 1)
-            for (int v = 0; v < smooth.num_vertices(); ++v)
-                effect = std::max(effect, (smooth.positions[v] - ours.back().positions[v]).norm());
-        else
-            effect = hausdorff_vertex_sets(smooth.positions, ours.back().positions);
-        c.effect_of_tags = effect / diag;
-    } catch (const InputError& e) {
-        c.core_error = e.what();
-    }
-
-    // The references with crease rules for the scheme: OpenSubdiv.
-    const Scheme scheme = req.scheme;
-    const Implementation* ref = nullptr;
-    for (const Implementation* i : references_for(scheme))
-        if (i->support(scheme)->creases) ref = ref ? ref : i;
-    if (!ref) {
+    // The one comparison, against the references with crease rules (OpenSubdiv).
+    RefinementRequest r;
+    r.scheme = req.scheme;
+    r.rule = crease_rule(req);
+    r.levels = req.levels;
+    r.timeout_seconds = req.timeout_seconds;
+    r.isolate = req.isolate;
+    r.tolerance = req.tolerance;
+    for (const Implementation* i : references_for(req.scheme))
+        if (i->support(req.scheme)->creases) r.references.push_back(i->name());
+    if (r.references.empty()) {
         c.verdict = Verdict::RefRejected;
-        c.explanation = "this build has no OpenSubdiv";
+        c.explanation = "this build has no reference with crease rules (OpenSubdiv)";
         return c;
     }
-    RefineRequest r{scheme, {}, req.levels};
-    r.rule.loop = loop_options(req);
-    r.rule.catmull_clark = catmull_clark_options(req);
-    IsolatedTrace it = refine_isolated(*ref, mesh, r, req.timeout_seconds, req.isolate);
-    if (const std::optional<EarlyVerdict> early = verdict_before_comparing(
-            it.outcome, c.core_error, "core refused the tags; OpenSubdiv refined the mesh (Far only warns about a bad tag)")) {
-        c.verdict = early->verdict;
-        c.explanation = early->explanation;
+    r.references.resize(1);
+    const RefinementComparison cmp = compare_refinement(mesh, name, r);
+    c.core_error = cmp.core_error;
+    const RefinementRun& run = cmp.runs.front();
+    c.verdict = run.verdict;
+    c.divergence_class = run.divergence_class;
+    c.explanation = run.explanation;
+    if (run.outcome.status != RunStatus::Ok || !c.core_error.empty() || run.correspondence.method == MatchMethod::None)
         return c;
+    c.max_rel_per_level = run.level_max_rel;
+    c.max_rel = run.comparison.max_rel;
+    c.faces_equal = run.comparison.topology_equal();
+
+    // How far the tags move the surface: the tagged against the untagged refinement (the
+    // same order: the tags change weights, not topology, at one level).
+    PolyMesh untagged = mesh;
+    untagged.creases = {};
+    const PolyMesh tagged = subdivide(req.scheme, r.rule, mesh, req.levels);
+    const PolyMesh smooth = subdivide(req.scheme, r.rule, untagged, req.levels);
+    double effect = 0;
+    if (smooth.num_vertices() == tagged.num_vertices() && req.levels == 1)
+        for (int v = 0; v < smooth.num_vertices(); ++v)
+            effect = std::max(effect, (smooth.positions[v] - tagged.positions[v]).norm());
+    else
+        effect = hausdorff_vertex_sets(smooth.positions, tagged.positions);
+    c.effect_of_tags = effect / bounding_box_diagonal(tagged.positions);
+    if (c.verdict == Verdict::Agree) {
+        char buf[200];
+        const std::string holes = c.hole_tags ? ", " + std::to_string(c.hole_tags) + " hole" : std::string();
+        const double worst = *std::max_element(c.max_rel_per_level.begin(), c.max_rel_per_level.end());
+        std::snprintf(buf, sizeof buf, "%d edge and %d vertex%s tags, %s decay; worst level %.2e of the diagonal; the tags "
+                      "move the surface by %.2e", c.edge_tags, c.vertex_tags, holes.c_str(), c.method.c_str(), worst,
+                      c.effect_of_tags);
+        c.explanation = buf;
     }
-    // Matched level by level from provenance (positions play no part), else by position at
-    // each level; only the first can show a topology difference with equal counts.
-    std::vector<const PolyMesh*> our_levels{&mesh};
-    for (const PolyMesh& m : ours) our_levels.push_back(&m);
-    const Correspondence by_provenance = match_by_provenance(our_levels, *it.trace);
-    const bool provenance = by_provenance.method != MatchMethod::None;
-    c.faces_equal = true;
-    bool topology_differs = false;
-    for (int l = 1; l <= req.levels; ++l) {
-        const PolyMesh& theirs = (*it.trace)[static_cast<size_t>(l)];
-        const PolyMesh& level = ours[static_cast<size_t>(l - 1)];
-        const Correspondence m = provenance ? Correspondence{by_provenance.method, by_provenance.level_maps[static_cast<size_t>(l)], {}, ""}
-                                            : match_nearest_and_faces(level, theirs);
-        if (m.method == MatchMethod::None) {
-            c.verdict = Verdict::Diverge;
-            c.faces_equal = false;
-            const bool counts_differ = !(topology_counts(level) == topology_counts(theirs));
-            c.divergence_class = counts_differ ? DivergenceClass::Topology : DivergenceClass::Unexplained;
-            c.explanation = "level " + std::to_string(l) + ": no vertex bijection (" + m.note + ")" +
-                            (counts_differ ? "; the counts differ" : "; the same counts, so not a topology difference");
-            return c;
-        }
-        const MeshComparison mc = compare_meshes(level, theirs, m.ref_to_ours, 1);
-        c.faces_equal = c.faces_equal && mc.topology_equal();
-        topology_differs = topology_differs || (!mc.topology_equal() && measured_topology_difference(
-                                                                             mc.ours, mc.ref, false, m.method));
-        c.max_rel_per_level.push_back(mc.max_rel);
-    }
-    c.max_rel = c.max_rel_per_level.back();
-    const double worst = *std::max_element(c.max_rel_per_level.begin(), c.max_rel_per_level.end());
-    const bool agree = c.faces_equal && worst <= req.tolerance;
-    c.verdict = agree ? Verdict::Agree : Verdict::Diverge;
-    if (!agree) c.divergence_class = topology_differs ? DivergenceClass::Topology : DivergenceClass::Unexplained;
-    char buf[200];
-    const std::string holes = c.hole_tags ? ", " + std::to_string(c.hole_tags) + " hole" : std::string();
-    std::snprintf(buf, sizeof buf, "%d edge and %d vertex%s tags, %s decay; worst level %.2e of the diagonal; the tags "
-                  "move the surface by %.2e", c.edge_tags, c.vertex_tags, holes.c_str(), c.method.c_str(), worst,
-                  c.effect_of_tags);
-    c.explanation = buf;
     return c;
 }
 

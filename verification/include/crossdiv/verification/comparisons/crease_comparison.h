@@ -1,10 +1,11 @@
 #pragma once
 /// @file
 /// Creases (Loop and Catmull-Clark) against OpenSubdiv, the only reference with crease
-/// rules: core and Far refine the same tagged mesh under the same creasing method, every
-/// level is matched by position and faces (the two number refined edges differently from
-/// level 2 on), and the largest distance per level is reported. OpenMesh and CGAL refuse a
-/// tagged mesh (adapters::reject_crease_tags) rather than answer a smooth question.
+/// rules: the one comparison (refinement_comparison.h) of core and Far on the same tagged
+/// mesh under the same creasing method, every level matched through provenance and measured,
+/// and how far the tags move the surface (so that agreement tests the sharp rules, not the
+/// smooth ones). OpenMesh and CGAL refuse a tagged mesh (adapters::reject_crease_tags) rather
+/// than answer a smooth question.
 
 #include <nlohmann/json.hpp>
 #include <string>
@@ -36,7 +37,7 @@ struct CreaseComparison {
     std::string core_error;  ///< non-empty: core refused the mesh (the message)
     /// "agree", "diverge", "ours-rejected", "ref-rejected", "ref-crashed".
     Verdict verdict = Verdict::Agree;
-    DivergenceClass divergence_class = DivergenceClass::None;  ///< "topology" or "unexplained" for "diverge"
+    DivergenceClass divergence_class = DivergenceClass::None;  ///< the comparison's class for "diverge"
     std::string explanation;
     std::vector<double> max_rel_per_level;  ///< levels 1..N; the last is max_rel
     double max_rel = NAN;
