@@ -48,8 +48,10 @@ struct SchemeArgs {
     /// The scheme options; `max_faces_default` is the command's --max-faces default
     /// (implementations/output_size.h: one implementation alone, or several side by side).
     void add_scheme_options(CLI::App& app, long long max_faces_default) {
-        app.add_option("--scheme", scheme, "Subdivision scheme")
-            ->check(CLI::IsMember({"loop", "catmull-clark", "doo-sabin", "sqrt3", "butterfly", "modified-butterfly"}))
+        std::vector<std::string> schemes;
+        for (Scheme s : all_schemes()) schemes.push_back(to_string(s));
+        app.add_option("--scheme", scheme, "Subdivision scheme (bilinear: OpenSubdiv's, the 'simple' subdivision of modellers)")
+            ->check(CLI::IsMember(schemes))
             ->capture_default_str();
         app.add_option("--weights", weights,
                        "Weight family: loop (Loop 1987), warren (3/(8n)), or the Barthe-Kobbelt tunings "
@@ -61,12 +63,13 @@ struct SchemeArgs {
                        "midpoint-average (OpenMesh's); doo-sabin: chaikin-boundary (default) or drop-border-faces "
                        "(CGAL's); sqrt3, when the boundary is refined: count-from-input (default) or "
                        "restart-each-level (a library called once per level); the Butterflies, for a wing point "
-                       "beyond the boundary: reflected-wings (default) or opposite-vertex-wings (MeshLab's); loop and "
+                       "beyond the boundary: reflected-wings (default) or opposite-vertex-wings (MeshLab's); bilinear: linear "
+                       "(its one rule); loop and "
                        "catmull-clark also none (OpenSubdiv's VTX_BOUNDARY_NONE: edge-only, the faces at the boundary "
                        "not emitted). Default: the file's 't interpolateboundary' tag, else the scheme's default")
             ->check(CLI::IsMember({"edge-only", "edge-and-corner", "midpoint-average", "chaikin-boundary",
                                    "drop-border-faces", "count-from-input", "restart-each-level", "reflected-wings",
-                                   "opposite-vertex-wings", "none"}));
+                                   "opposite-vertex-wings", "linear", "none"}));
         app.add_option("--levels", levels, "Number of subdivision levels")->check(CLI::Range(0, 12))->capture_default_str();
         app.add_option("--crease-method", creasing,
                        "Decay of semi-sharp crease tags (loop, catmull-clark): uniform (OpenSubdiv's default) or "

@@ -45,8 +45,8 @@ TEST(ValenceBench, EachRowMeasuresTheWorkItNames) {
         EXPECT_TRUE(std::isfinite(r.ratio()));
         size[{std::string(datasets::to_string(r.shape)), r.command}] = r.size;
     }
-    // Every scheme on the triangle shapes, Catmull-Clark and Doo-Sabin on the polygon: 7 + 7 + 3.
-    EXPECT_EQ(size.size(), 17u);
+    // Every scheme on the triangle shapes; Catmull-Clark, Doo-Sabin and bilinear on the polygon: 8 + 8 + 4.
+    EXPECT_EQ(size.size(), 20u);
     // check: the input's corners.
     EXPECT_EQ((size[{"bicone", "check"}]), 6 * k);
     // Loop on the bicone (k + 2 vertices, 3k edges, 2k faces): (4k + 2) vertices + 8k faces.
@@ -55,6 +55,8 @@ TEST(ValenceBench, EachRowMeasuresTheWorkItNames) {
     EXPECT_EQ((size[{"bicone", "sqrt3"}]), (k + 2 + 2 * k) + 6 * k);
     // Catmull-Clark on the polygon: 1 face point, k edge points, k vertex points; k quads.
     EXPECT_EQ((size[{"polygon", "catmull-clark"}]), 3 * k + 1);
+    // Bilinear has Catmull-Clark's topology.
+    EXPECT_EQ((size[{"polygon", "bilinear"}]), 3 * k + 1);
     // Doo-Sabin on the polygon: k corner points and two Chaikin points per boundary edge;
     // the F-face, k E-faces and k V-faces.
     EXPECT_EQ((size[{"polygon", "doo-sabin"}]), 5 * k + 1);

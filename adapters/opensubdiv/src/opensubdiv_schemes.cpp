@@ -1,4 +1,4 @@
-// Catmull-Clark refinement and the limit positions of both schemes through Far.
+// Catmull-Clark and bilinear refinement and the limit positions of Loop and Catmull-Clark through Far.
 #include <Eigen/Geometry>  // cross()
 #include <memory>
 #include <string>
@@ -61,6 +61,13 @@ std::vector<int> triangle_corners(const TriMesh& mesh) {
 
 LevelTrace catmull_clark(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels) {
     std::unique_ptr<Far::TopologyRefiner> refiner = make_refiner(mesh, Sdc::SCHEME_CATMARK, catmark_options(options));
+    refine_uniform(*refiner, levels, true);
+    return interpolate_trace(*refiner, mesh.positions);
+}
+
+LevelTrace bilinear(const PolyMesh& mesh, int levels) {
+    reject_crease_tags(mesh, "OpenSubdiv's bilinear scheme (as compared here)");
+    std::unique_ptr<Far::TopologyRefiner> refiner = make_refiner(mesh, Sdc::SCHEME_BILINEAR, sdc_options(false, CreaseMethod::Uniform));
     refine_uniform(*refiner, levels, true);
     return interpolate_trace(*refiner, mesh.positions);
 }

@@ -329,6 +329,22 @@ RefinementStep loop_nonmanifold_step(const PolyMesh& mesh, const LoopOptions& op
     return step;
 }
 
+/// One quad per corner (v_c, E(c), F(f), E(prev c)) with the refined edges stated per corner:
+/// two halves per edge, and per corner the one from its edge's point to the face point
+/// (shared with the next corner's quad).
+void add_quads(const GeneralTopology& t, int nv, int nf, RefinementStep& step) {
+    const int nc = static_cast<int>(t.corner_face.size()), ne = t.num_edges(), face_point = nv, edge_point = nv + nf;
+    step.face_vertices.reserve(4 * static_cast<size_t>(nc));
+    step.corner_edges.reserve(4 * static_cast<size_t>(nc));
+    for (int c = 0; c < nc; ++c) {
+        const int p = t.prev(c);
+        step.add_face({t.vertex(c), edge_point + t.corner_edge[static_cast<size_t>(c)],
+                       face_point + t.corner_face[static_cast<size_t>(c)], edge_point + t.corner_edge[static_cast<size_t>(p)]});
+        step.corner_edges.insert(step.corner_edges.end(),
+                                 {t.child_half(c, true), 2 * ne + c, 2 * ne + p, t.child_half(p, false)});
+    }
+}
+
 RefinementStep catmull_clark_nonmanifold_step(const PolyMesh& mesh, const CatmullClarkOptions& options) {
     require_untagged(mesh);
     const int nv = mesh.num_vertices(), nf = mesh.num_faces();
@@ -336,7 +352,7 @@ RefinementStep catmull_clark_nonmanifold_step(const PolyMesh& mesh, const Catmul
     if (4LL * nc > INT_MAX)
         throw InputError("the next Catmull-Clark level would have more than 2^31 indices; use fewer levels");
     const GeneralTopology t = complete_topology(mesh, options.boundary == CatmullClarkBoundary::EdgeAndCorner);
-    const int ne = t.num_edges(), face_point = nv, edge_point = nv + nf;
+    const int ne = t.num_edges(), face_point = nv;
     RefinementStep step(nv);
     StencilTable& st = step.stencils;
     st.reserve(static_cast<size_t>(nv) + nf + ne, 8 * static_cast<size_t>(nc) + nv);
@@ -384,19 +400,18 @@ RefinementStep catmull_clark_nonmanifold_step(const PolyMesh& mesh, const Catmul
         }
         st.end_row();
     }
-    step.face_vertices.reserve(4 * static_cast<size_t>(nc));
-    step.corner_edges.reserve(4 * static_cast<size_t>(nc));
-    for (int c = 0; c < nc; ++c) {
-        const int p = t.prev(c);
-        step.add_face({t.vertex(c), edge_point + t.corner_edge[static_cast<size_t>(c)],
-                       face_point + t.corner_face[static_cast<size_t>(c)], edge_point + t.corner_edge[static_cast<size_t>(p)]});
-        // The child edges: two halves per edge, and per corner the one from its edge's point
-        // to the face point (shared with the next corner's quad).
-        step.corner_edges.insert(step.corner_edges.end(),
-                                 {t.child_half(c, true), 2 * ne + c, 2 * ne + p, t.child_half(p, false)});
-    }
+    add_quads(t, nv, nf, step);
     step.creases.holes = child_holes(mesh.creases.holes, [&](int f) { return mesh.face_start[f]; });
     return step;
+}
+
+std::vector<std::array<int, 2>> add_quad_split(const PolyMesh& mesh, RefinementStep& step) {
+    const GeneralTopology t = complete_topology(mesh, false);
+    add_quads(t, mesh.num_vertices(), mesh.num_faces(), step);
+    std::vector<std::array<int, 2>> ends;
+    ends.reserve(static_cast<size_t>(t.num_edges()));
+    for (int h : t.edge_first) ends.push_back({t.vertex(h), t.vertex(t.next(h))});
+    return ends;
 }
 
 std::vector<std::array<int, 2>> nonmanifold_edges(const PolyMesh& mesh) {

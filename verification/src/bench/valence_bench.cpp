@@ -46,8 +46,7 @@ std::vector<ValenceRow> run_valence_bench(const std::vector<int>& valences, int 
                 return static_cast<long long>(m.face_vertices.size());
             });
             for (const Scheme s : all_schemes()) {
-                const bool any_polygon = s == Scheme::CatmullClark || s == Scheme::DooSabin;
-                if (shape == datasets::ValenceShape::Polygon && !any_polygon) continue;
+                if (shape == datasets::ValenceShape::Polygon && traits(s).triangles) continue;
                 row(to_string(s), [s](const PolyMesh& m) {
                     const PolyMesh fine = subdivide(s, {}, m, 1);
                     return static_cast<long long>(fine.num_vertices()) + fine.num_faces();

@@ -116,7 +116,8 @@ std::string rule_effect(Scheme scheme, const std::string& ref, const std::string
             return ref + (rule == "opposite-vertex-wings"
                               ? " takes a wing point beyond the boundary to be the triangle's own opposite vertex"
                               : " reflects a wing point beyond the boundary across the wing edge");
-        case Scheme::CatmullClark: break;
+        case Scheme::CatmullClark:
+        case Scheme::Bilinear: break;
     }
     return ref + " applies the " + rule + " boundary rule";
 }

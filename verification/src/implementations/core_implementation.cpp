@@ -1,6 +1,7 @@
-// Core as an implementation: every scheme under every named rule, with crease tags for Loop
+// Core as an implementation: every scheme (bilinear too) under every named rule, with crease tags for Loop
 // and Catmull-Clark, limit positions for both, discrete curvature.
 #include "crossdiv/mesh/discrete_curvature.h"
+#include "crossdiv/subdiv/bilinear.h"
 #include "crossdiv/subdiv/butterfly.h"
 #include "crossdiv/subdiv/catmull_clark.h"
 #include "crossdiv/subdiv/catmull_clark_streaming.h"
@@ -34,7 +35,8 @@ Capabilities core_capabilities() {
                  supports(Scheme::Sqrt3, {sqrt3_rule(Sqrt3Parity::CountFromInput), sqrt3_rule(Sqrt3Parity::RestartEachLevel)}),
                  supports(Scheme::Butterfly, {butterfly_rule(ButterflyWings::Reflected), butterfly_rule(ButterflyWings::OppositeVertex)}),
                  supports(Scheme::ModifiedButterfly,
-                          {butterfly_rule(ButterflyWings::Reflected), butterfly_rule(ButterflyWings::OppositeVertex)})};
+                          {butterfly_rule(ButterflyWings::Reflected), butterfly_rule(ButterflyWings::OppositeVertex)}),
+                 supports(Scheme::Bilinear, {SchemeRule{}})};
     c.limit_positions = true;
     c.curvatures = true;
     return c;
@@ -50,6 +52,7 @@ PolyMesh subdivide(const PolyMesh& mesh, const RefineRequest& r, int levels) {
         case Scheme::Butterfly: return butterfly_subdivide(mesh, ButterflyVariant::Classic, levels, r.rule.butterfly_wings);
         case Scheme::ModifiedButterfly:
             return butterfly_subdivide(mesh, ButterflyVariant::Modified, levels, r.rule.butterfly_wings);
+        case Scheme::Bilinear: return bilinear_subdivide(mesh, levels);
     }
     throw InputError("unknown scheme");
 }

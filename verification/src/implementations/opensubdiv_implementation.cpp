@@ -1,5 +1,5 @@
 // OpenSubdiv (Far, Bfr) as an implementation: Loop and Catmull-Clark with their boundary
-// rules and crease tags, limit positions (PrimvarRefiner::Limit) and Bfr's limit surface.
+// rules and crease tags, bilinear, limit positions (PrimvarRefiner::Limit) and Bfr's limit surface.
 #include "crossdiv/adapters/opensubdiv.h"
 #include "library_implementations.h"
 
@@ -21,7 +21,8 @@ public:
                                                 catmull_clark_rule(CatmullClarkBoundary::EdgeAndCorner),
                                                 catmull_clark_rule(CatmullClarkBoundary::EdgeOnly, true),
                                                 catmull_clark_rule(CatmullClarkBoundary::EdgeAndCorner, true)},
-                                               true)},
+                                               true),
+                                      supports(Scheme::Bilinear, {SchemeRule{}})},
                           .limit_positions = true,
                           .limit_surface = true}) {}
 
@@ -29,6 +30,7 @@ public:
         check_refinable(r.scheme);
         const SchemeRule rule = closest_rule(r.scheme, r.rule);
         if (r.scheme == Scheme::CatmullClark) return osd::catmull_clark(mesh, rule.catmull_clark, r.levels);
+        if (r.scheme == Scheme::Bilinear) return osd::bilinear(mesh, r.levels);
         // Untagged triangle meshes go through Far's triangle path, tagged ones carry their tags.
         if (!mesh.creases.empty()) return osd::loop(mesh, rule.loop, r.levels);
         return osd::loop(triangles_for(mesh, r.scheme), rule.loop, r.levels);

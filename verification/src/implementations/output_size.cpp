@@ -10,7 +10,7 @@ long long refined_face_count(const PolyMesh& mesh, Scheme scheme, int levels) {
     if (levels <= 0) return mesh.num_faces();
     constexpr long long kMax = std::numeric_limits<long long>::max();
     const long long corners = static_cast<long long>(mesh.face_vertices.size());
-    long long faces = scheme == Scheme::CatmullClark ? corners
+    long long faces = scheme == Scheme::CatmullClark || scheme == Scheme::Bilinear ? corners
                       : scheme == Scheme::DooSabin   ? 2 * corners
                       : scheme == Scheme::Sqrt3      ? 3LL * mesh.num_faces()
                                                      : 4LL * mesh.num_faces();

@@ -240,6 +240,7 @@ std::optional<std::pair<long, long>> expected_counts(Scheme scheme, const PolyMe
                 corners = 3 * f;
                 break;
             case Scheme::CatmullClark:
+            case Scheme::Bilinear:
                 // A vertex per face and per edge; one quad and one new edge per face corner.
                 std::tie(v, e, f) = std::tuple{v + e + f, 2 * e + corners, corners};
                 corners = 4 * f;

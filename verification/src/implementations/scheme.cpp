@@ -14,22 +14,24 @@ const char* to_string(Scheme scheme) {
         case Scheme::Sqrt3: return "sqrt3";
         case Scheme::Butterfly: return "butterfly";
         case Scheme::ModifiedButterfly: return "modified-butterfly";
+        case Scheme::Bilinear: return "bilinear";
     }
     return "?";
 }
 
 std::vector<Scheme> all_schemes() {
-    return {Scheme::Loop, Scheme::CatmullClark, Scheme::DooSabin, Scheme::Sqrt3, Scheme::Butterfly, Scheme::ModifiedButterfly};
+    return {Scheme::Loop,      Scheme::CatmullClark,      Scheme::DooSabin, Scheme::Sqrt3,
+            Scheme::Butterfly, Scheme::ModifiedButterfly, Scheme::Bilinear};
 }
 
 std::vector<Scheme> polygon_schemes() {
-    return {Scheme::CatmullClark, Scheme::DooSabin, Scheme::Sqrt3, Scheme::Butterfly, Scheme::ModifiedButterfly};
+    return {Scheme::CatmullClark, Scheme::DooSabin, Scheme::Sqrt3, Scheme::Butterfly, Scheme::ModifiedButterfly, Scheme::Bilinear};
 }
 
 const SchemeTraits& traits(Scheme scheme) {
     //                                           primal triangles sdc_tags
     static const SchemeTraits loop{true, true, true}, catmull_clark{true, false, true}, doo_sabin{false, false, false},
-        sqrt3{false, true, false}, butterfly{true, true, false};
+        sqrt3{false, true, false}, butterfly{true, true, false}, bilinear{true, false, false};
     switch (scheme) {
         case Scheme::Loop: return loop;
         case Scheme::CatmullClark: return catmull_clark;
@@ -37,6 +39,7 @@ const SchemeTraits& traits(Scheme scheme) {
         case Scheme::Sqrt3: return sqrt3;
         case Scheme::Butterfly:
         case Scheme::ModifiedButterfly: return butterfly;
+        case Scheme::Bilinear: return bilinear;
     }
     return loop;
 }
@@ -56,6 +59,7 @@ std::string rule_name(Scheme scheme, const SchemeRule& rule) {
         case Scheme::Sqrt3: return std::string(to_string(rule.sqrt3.parity));
         case Scheme::Butterfly:
         case Scheme::ModifiedButterfly: return std::string(to_string(rule.butterfly_wings));
+        case Scheme::Bilinear: return "linear";
     }
     return "-";
 }
@@ -101,6 +105,11 @@ SchemeRule rule_from_boundary_name(Scheme scheme, std::string_view boundary) {
             return pick(std::array{Sqrt3Parity::CountFromInput, Sqrt3Parity::RestartEachLevel}, rule.sqrt3.parity);
         case Scheme::Butterfly:
         case Scheme::ModifiedButterfly: return pick(kAllButterflyWings, rule.butterfly_wings);
+        case Scheme::Bilinear:
+            // Every point is an average of the corners it lies between: there is nothing a
+            // boundary rule could change.
+            if (boundary == "linear") return rule;
+            throw InputError("bilinear has no boundary rule '" + std::string(boundary) + "' (its one rule is 'linear')");
     }
     throw InputError("unknown scheme");
 }

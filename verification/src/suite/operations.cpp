@@ -190,6 +190,8 @@ const std::vector<SuiteOperation>& suite_operations() {
          expand_inputs, run_refinement, Scheme::Butterfly},
         {"modified-butterfly", OperationKind::Comparison, "core's modified Butterfly against every reference that has it",
          expand_inputs, run_refinement, Scheme::ModifiedButterfly},
+        {"bilinear", OperationKind::Comparison, "core's bilinear subdivision against every reference that has it (OpenSubdiv)",
+         expand_inputs, run_refinement, Scheme::Bilinear},
         {"curves", OperationKind::Checks, "curve files against Eigen and exact properties", expand_curve_inputs, run_curves},
         {"surfaces", OperationKind::Checks, "surface files built and checked as closed surfaces", expand_surface_inputs,
          run_surfaces},

@@ -64,6 +64,13 @@ RefinementStep loop_nonmanifold_step(const PolyMesh& mesh, const LoopOptions& op
 /// rules above. @throws InputError as loop_nonmanifold_step.
 RefinementStep catmull_clark_nonmanifold_step(const PolyMesh& mesh, const CatmullClarkOptions& options);
 
+/// The faces of one level that splits each face into quads around a face point, as Far
+/// derives them under the rules above (Catmull-Clark's topology, and bilinear's, on any mesh):
+/// vertex points first, then face points, then edge points; one quad per corner (v_c, E(c),
+/// F(f), E(prev c)) added to `step`, its edges stated per corner. The stencils are the
+/// scheme's. Returns the ends of each edge, in edge-point order. @throws InputError as the steps.
+std::vector<std::array<int, 2>> add_quad_split(const PolyMesh& mesh, RefinementStep& step);
+
 /// The ends of each edge of `mesh`, in the order the steps number their edge points (the
 /// provenance of a refined level's edge points). @throws InputError as the steps.
 std::vector<std::array<int, 2>> nonmanifold_edges(const PolyMesh& mesh);

@@ -82,6 +82,12 @@ LimitEvaluation loop_limit_surface(const PolyMesh& mesh, int face, std::span<con
 /// rules (VTX_BOUNDARY_EDGE_ONLY, VTX_BOUNDARY_EDGE_AND_CORNER), not OpenMesh's midpoint-average.
 bool supports(const CatmullClarkOptions& options);
 
+/// `levels` uniform bilinear levels (Sdc::SCHEME_BILINEAR) of a polygon mesh, every level kept
+/// in Far's order (as catmull_clark()). Bilinear is compared without tags: its crease rules
+/// would change nothing and its holes no position.
+/// @throws Rejected for a tagged mesh or when Far's factory reports an error.
+LevelTrace bilinear(const PolyMesh& mesh, int levels);
+
 /// `levels` uniform Catmull-Clark levels of a polygon mesh (any face sizes), every level kept
 /// in Far's order (old vertices first, then one per face, then one per edge). Crease and
 /// corner tags and options.creasing go to Far as for loop(const PolyMesh&, ...).

@@ -16,9 +16,9 @@
 namespace crossdiv::verification {
 
 /// A refinement scheme.
-enum class Scheme { Loop, CatmullClark, DooSabin, Sqrt3, Butterfly, ModifiedButterfly };
+enum class Scheme { Loop, CatmullClark, DooSabin, Sqrt3, Butterfly, ModifiedButterfly, Bilinear };
 
-/// "loop", "catmull-clark", "doo-sabin", "sqrt3", "butterfly", "modified-butterfly".
+/// "loop", "catmull-clark", "doo-sabin", "sqrt3", "butterfly", "modified-butterfly", "bilinear".
 const char* to_string(Scheme scheme);
 /// @throws InputError naming the unknown scheme and the known ones.
 Scheme scheme_from_string(std::string_view name);
@@ -44,7 +44,7 @@ struct SchemeTraits {
 const SchemeTraits& traits(Scheme scheme);
 
 /// The named variant of each scheme; only the member of the scheme at hand is read. The
-/// Butterflies have none (the variant is the scheme).
+/// Butterflies have none (the variant is the scheme), bilinear none at all ("linear").
 struct SchemeRule {
     LoopOptions loop{LoopWeights::Loop, LoopBoundary::EdgeOnly};
     CatmullClarkOptions catmull_clark{CatmullClarkBoundary::EdgeOnly};
