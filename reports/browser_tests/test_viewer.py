@@ -151,6 +151,16 @@ def test_a_polygon_scheme_case_is_drawn_with_its_polygons_and_its_minimal_input(
         assert edges == [2 * n * (n + 1) for n in sides], (edges, faces)
         panel = driver.find_element(By.CSS_SELECTOR, "#crossdiv-viewer .cv-info").text
         assert f"{faces[-1]} faces" in panel, panel
+        # Provenance of a polygon scheme: level 1's first face point descends from the four
+        # corners of face 0, its first edge point from the two ends of an edge.
+        nv = driver.execute_script("return window.crossdivViewer.state.view.levels[0].positions.length / 3")
+        picked = []
+        for vertex in (nv, nv + faces[0]):
+            picked.append(driver.execute_script(
+                "const v = window.crossdivViewer; v.state.level = 1; v.state.vertex = arguments[0]; v.rebuild(false);"
+                "return v.pickedInfo", vertex))
+        assert picked[0]["cls"].startswith("face point of face 0 (v") and len(picked[0]["ancestors"]) == 4, picked[0]
+        assert picked[1]["cls"].startswith("edge point of edge (v") and len(picked[1]["ancestors"]) == 2, picked[1]
         assert not check_viewer.console_errors(driver)
     finally:
         driver.quit()

@@ -124,17 +124,27 @@
   function fmt(x) { return Number.isFinite(x) ? x.toPrecision(6) : "-"; }
   function vec(p) { return "(" + Array.from(p, (c) => Number.isFinite(c) ? c.toPrecision(12) : "NaN").join(", ") + ")"; }
 
-  // The level-0 vertices a vertex of `level` descends from: through the vertex points it is
-  // one vertex, through edge points the ends of each edge, level by level; none where a level
-  // has no provenance (the schemes other than Loop).
+  // The corners of face f of a level (faceCycles, read once per level).
+  function faceCorners(L, f) {
+    if (!L.cycles) L.cycles = faceCycles(L);
+    return L.cycles[f];
+  }
+
+  // The level-0 vertices a vertex of `level` descends from: through a vertex point one
+  // vertex, through an edge point the edge's ends, through a face point the face's corners,
+  // level by level; none where a level has no provenance (Doo-Sabin, sqrt3).
   function ancestors(view, level, vertex) {
     let set = new Set([vertex]);
     for (let l = level; l >= 1; --l) {
       const o = view.levels[l].origins, next = new Set();
       if (!o) return [];
       for (const v of set) {
-        next.add(o[2 * v]);
-        if (o[2 * v + 1] >= 0) next.add(o[2 * v + 1]);
+        const a = o[2 * v], b = o[2 * v + 1];
+        if (b === -2) for (const c of faceCorners(view.levels[l - 1], a)) next.add(c);
+        else {
+          next.add(a);
+          if (b >= 0) next.add(b);
+        }
       }
       set = next;
     }
@@ -147,7 +157,9 @@
     if (level === 0) return "input vertex, " + where;
     if (!L.origins) return "vertex of level " + level + ", " + where;
     const a = L.origins[2 * v], b = L.origins[2 * v + 1];
-    return (b < 0 ? "vertex point of v" + a : "edge point of edge (v" + a + ", v" + b + ")") + " of level " + (level - 1) + ", " + where;
+    const born = b === -2 ? "face point of face " + a + " (v" + faceCorners(view.levels[level - 1], a).join(", v") + ")"
+               : b < 0 ? "vertex point of v" + a : "edge point of edge (v" + a + ", v" + b + ")";
+    return born + " of level " + (level - 1) + ", " + where;
   }
 
   function Viewer(root, entries) {

@@ -43,12 +43,13 @@ TEST(DivergenceView, ArraysAreLittleEndianBase64ByHand) {
 TEST(DivergenceView, AReferenceWithoutAMapAtALevelIsNull) {
     DivergenceView view;
     view.levels = {triangle(), triangle()};
-    view.origins = {{{0, -1}, {1, -1}, {0, 1}}};
+    using Kind = VertexBirth::Kind;
+    view.births = {{{Kind::Vertex, 0, -1}, {Kind::Edge, 0, 1}, {Kind::Face, 0, -1}}};
     view.references["ref"] = {{}, {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}};
     const std::string script = divergence_view_script(view, 0, "core");
     EXPECT_NE(script.find("\"ref\":[null,\""), std::string::npos) << script;
-    // Origins (0, -1) (1, -1) (0, 1): 00000000 FFFFFFFF 01000000 FFFFFFFF 00000000 01000000.
-    EXPECT_NE(script.find("\"origins\":\"AAAAAP////8BAAAA/////wAAAAABAAAA\""), std::string::npos) << script;
+    // Origins (0, -1) (0, 1) (0, -2): 00000000 FFFFFFFF 00000000 01000000 00000000 FEFFFFFF.
+    EXPECT_NE(script.find("\"origins\":\"AAAAAP////8AAAAAAQAAAAAAAAD+////\""), std::string::npos) << script;
 }
 
 TEST(DivergenceView, APolygonLevelNamesItsFaceSizes) {
@@ -77,7 +78,22 @@ TEST(DivergenceView, ACatmullClarkBoundaryRuleDivergenceKeepsEveryLevelOfCoreAnd
     const DivergenceView& v = *c.view;
     ASSERT_EQ(v.levels.size(), 3u);  // Catmull-Clark is primal: every level, in core's numbering
     EXPECT_EQ(v.levels[2].num_faces(), 16 * input.num_faces());
-    EXPECT_TRUE(v.origins.empty());  // no provenance drawn for a polygon scheme yet
+    // Provenance at every level, read off core's faces: vertex points, then a face point per
+    // face, then an edge point per edge (Catmull-Clark's order).
+    ASSERT_EQ(v.births.size(), 2u);
+    for (size_t l = 1; l <= 2; ++l) ASSERT_EQ(v.births[l - 1].size(), v.levels[l].positions.size());
+    const int nv = input.num_vertices(), nf = input.num_faces();
+    EXPECT_EQ(v.births[0][0], (VertexBirth{VertexBirth::Kind::Vertex, 0, -1}));
+    EXPECT_EQ(v.births[0][static_cast<size_t>(nv)], (VertexBirth{VertexBirth::Kind::Face, 0, -1}));
+    const VertexBirth e = v.births[0][static_cast<size_t>(nv + nf)];
+    EXPECT_EQ(e.kind, VertexBirth::Kind::Edge);
+    bool a_side = false;  // (e.a, e.b) is a side of some input face
+    for (int f = 0; f < nf; ++f)
+        for (int k = 0; k < input.face_size(f); ++k) {
+            const int p = input.face(f)[k], q = input.face(f)[(k + 1) % input.face_size(f)];
+            a_side = a_side || (p == e.a && q == e.b) || (p == e.b && q == e.a);
+        }
+    EXPECT_TRUE(a_side) << e.a << " " << e.b;
     for (const char* ref : {"opensubdiv", "openmesh"}) {
         const auto& at = v.references.at(ref);
         ASSERT_EQ(at.size(), 3u);
@@ -98,6 +114,7 @@ TEST(DivergenceView, ACatmullClarkBoundaryRuleDivergenceKeepsEveryLevelOfCoreAnd
     ASSERT_TRUE(s.view.has_value());
     ASSERT_EQ(s.view->levels.size(), 3u);
     EXPECT_EQ(s.view->levels[1].num_vertices(), s.view->levels[0].num_vertices() + s.view->levels[0].num_faces());
+    EXPECT_TRUE(s.view->births.empty());  // sqrt3 rotates its edges: no provenance drawn
     // No view when every reference agrees, or past the size limit.
     req.references = {"opensubdiv"};
     EXPECT_FALSE(compare_refinement(input, "bundled:quad-grid", req).view.has_value());
@@ -117,9 +134,9 @@ TEST(DivergenceView, ACornerRuleDivergenceKeepsEveryLevelAndEachReference) {
     ASSERT_TRUE(c.view.has_value());
     const DivergenceView& v = *c.view;
     ASSERT_EQ(v.levels.size(), 3u);
-    ASSERT_EQ(v.origins.size(), 2u);
+    ASSERT_EQ(v.births.size(), 2u);
     EXPECT_EQ(v.levels[0].positions, input.positions);
-    for (int l = 1; l <= 2; ++l) EXPECT_EQ(v.origins[l - 1].size(), v.levels[l].positions.size());
+    for (int l = 1; l <= 2; ++l) EXPECT_EQ(v.births[l - 1].size(), v.levels[l].positions.size());
     // OpenSubdiv has the corner rule and agrees; OpenMesh lacks it: its offsets are largest at
     // the case's worst vertex, and equal to the worst vertex's recorded values.
     ASSERT_EQ(v.references.size(), 2u);

@@ -281,7 +281,7 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
             const adapters::LevelTrace& levels = core.with(r).levels();
             by_rule.emplace_back(levels.begin() + 1, levels.end());
         }
-        out.rules = identify_loop_rule(input, {subject.begin() + 1, subject.end()}, by_rule, requested.refinement.origins,
+        out.rules = identify_loop_rule(input, {subject.begin() + 1, subject.end()}, by_rule, requested.refinement.births,
                                        req.rule.loop, req.tolerance);
         subject_rule.reset();
         if (out.rules->rule) {
@@ -578,7 +578,7 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
     if (diverges && keep_view) {
         DivergenceView& view = out.view.emplace();
         view.levels.assign(under_test->begin(), under_test->end());
-        view.origins = requested.refinement.origins;
+        view.births = requested.refinement.births;
         view.references = std::move(at_each_level);
     }
     if (worst_run) {

@@ -16,8 +16,9 @@ std::string rule_text(const LoopOptions& o) {
     return "weights=" + std::string(to_string(o.weights)) + " boundary=" + std::string(to_string(o.boundary));
 }
 
-/// The class of each vertex of level l from its origin and level l-1's topology.
-std::vector<std::pair<VertexClass, int>> classify(const std::vector<VertexOrigin>& origins, const PolyMesh& parent) {
+/// The class of each vertex of level l from its birth and level l-1's topology (Loop: vertex
+/// and edge points only).
+std::vector<std::pair<VertexClass, int>> classify(const std::vector<VertexBirth>& births, const PolyMesh& parent) {
     const MeshTopology t = mesh_topology(parent);
     std::vector<int> faces_of(static_cast<size_t>(parent.num_vertices()), 0);
     for (int v : parent.face_vertices) ++faces_of[static_cast<size_t>(v)];
@@ -39,9 +40,9 @@ std::vector<std::pair<VertexClass, int>> classify(const std::vector<VertexOrigin
         return static_cast<int>(range.second - range.first);
     };
     std::vector<std::pair<VertexClass, int>> out;
-    out.reserve(origins.size());
-    for (const VertexOrigin& o : origins) {
-        if (o.is_edge_point()) {
+    out.reserve(births.size());
+    for (const VertexBirth& o : births) {
+        if (o.kind == VertexBirth::Kind::Edge) {
             out.push_back({edge_faces(o.a, o.b) == 1 ? VertexClass::BoundaryEdgePoint : VertexClass::InteriorEdgePoint, 0});
             continue;
         }
@@ -77,7 +78,7 @@ std::vector<LoopOptions> loop_named_rules() {
 
 RuleIdentification identify_loop_rule(const PolyMesh& input, const std::vector<PolyMesh>& subject,
                                       const std::vector<std::vector<PolyMesh>>& core,
-                                      const std::vector<std::vector<VertexOrigin>>& origins, const LoopOptions& requested,
+                                      const std::vector<std::vector<VertexBirth>>& births, const LoopOptions& requested,
                                       double tolerance) {
     const std::vector<LoopOptions> rules = loop_named_rules();
     RuleIdentification id;
@@ -104,7 +105,7 @@ RuleIdentification identify_loop_rule(const PolyMesh& input, const std::vector<P
     // Classes at level 1, the only level whose vertices see the rule of their class alone.
     if (subject.empty() || subject[0].num_vertices() == 0) return id;
     id.classified_level = 1;
-    const std::vector<std::pair<VertexClass, int>> cls = classify(origins[0], input);
+    const std::vector<std::pair<VertexClass, int>> cls = classify(births[0], input);
     const double d = bounding_box_diagonal(core[0][0].positions);
     for (size_t v = 0; v < cls.size(); ++v) {
         auto row = std::find_if(id.rows.begin(), id.rows.end(), [&](const VertexClassRow& x) {

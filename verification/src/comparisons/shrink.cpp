@@ -19,15 +19,21 @@ bool still_shows(const PolyMesh& m, const RefinementRequest& req, const ShrinkSy
     return symptom_of(compare_refinement(m, "candidate", req)) == symptom;
 }
 
-/// The coarse vertices that vertex `v` of the last level descends from (through edge points'
-/// ends), by `origins` (origins[l-1]: level l's).
-std::vector<int> coarse_ancestors(const std::vector<std::vector<VertexOrigin>>& origins, int v) {
+/// The coarse vertices that vertex `v` of the last level of `core` descends from (through
+/// edge points' ends and face points' corners).
+std::vector<int> coarse_ancestors(const Refinement& core, int v) {
     std::vector<int> current = {v};
-    for (size_t l = origins.size(); l-- > 0;) {
+    for (size_t l = core.births.size(); l-- > 0;) {
         std::vector<int> parents;
         for (int u : current) {
-            parents.push_back(origins[l][static_cast<size_t>(u)].a);
-            if (origins[l][static_cast<size_t>(u)].is_edge_point()) parents.push_back(origins[l][static_cast<size_t>(u)].b);
+            const VertexBirth& birth = core.births[l][static_cast<size_t>(u)];
+            if (birth.kind == VertexBirth::Kind::Face) {
+                const PolyMesh& coarse = core.levels[l];
+                parents.insert(parents.end(), coarse.face(birth.a), coarse.face(birth.a) + coarse.face_size(birth.a));
+                continue;
+            }
+            parents.push_back(birth.a);
+            if (birth.kind == VertexBirth::Kind::Edge) parents.push_back(birth.b);
         }
         std::sort(parents.begin(), parents.end());
         parents.erase(std::unique(parents.begin(), parents.end()), parents.end());
@@ -246,8 +252,8 @@ ShrinkResult shrink_divergence(const PolyMesh& mesh, const std::string& name, co
     std::vector<int> seeds;
     if (const auto site = symptom_site(r.original, r.symptom)) {
         const Refinement core = core_implementation().refine_with_provenance(mesh, {req.scheme, req.rule, site->first});
-        if (static_cast<int>(core.origins.size()) == site->first)
-            seeds = coarse_ancestors(core.origins, site->second);
+        if (static_cast<int>(core.births.size()) == site->first)
+            seeds = coarse_ancestors(core, site->second);
         else
             seeds = nearest_coarse_vertex(mesh, core.levels.back().positions[static_cast<size_t>(site->second)]);
     }

@@ -526,6 +526,30 @@ Correspondence match_refinement(const std::vector<const PolyMesh*>& ours, const 
     return c;
 }
 
+std::vector<VertexBirth> primal_births(const PolyMesh& coarse, const PolyMesh& fine) {
+    const FaceIndex faces(coarse);
+    std::vector<int> identity(static_cast<size_t>(coarse.num_vertices()));
+    std::iota(identity.begin(), identity.end(), 0);
+    std::string why;
+    const std::vector<Provenance> provenance = read_provenance(fine, identity, faces, why);
+    std::vector<VertexBirth> out;
+    out.reserve(provenance.size());
+    std::vector<int> cycle;
+    for (const Provenance& p : provenance) {
+        if (p.face < 0) {
+            out.push_back({VertexBirth::Kind::Vertex, p.local, -1});
+        } else if (p.local < 0) {
+            out.push_back({VertexBirth::Kind::Face, p.face, -1});
+        } else {
+            // The edge's place counts from the face's canonical first corner (least_rotation).
+            cycle.assign(coarse.face(p.face), coarse.face(p.face) + coarse.face_size(p.face));
+            const size_t m = cycle.size(), at = least_rotation(cycle) + static_cast<size_t>(p.local);
+            out.push_back({VertexBirth::Kind::Edge, cycle[at % m], cycle[(at + 1) % m]});
+        }
+    }
+    return out;
+}
+
 std::vector<const PolyMesh*> level_view(const adapters::LevelTrace& levels) {
     std::vector<const PolyMesh*> view;
     for (const PolyMesh& m : levels) view.push_back(&m);

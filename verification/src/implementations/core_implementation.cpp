@@ -57,6 +57,46 @@ PolyMesh subdivide(const PolyMesh& mesh, const RefineRequest& r, int levels) {
     throw InputError("unknown scheme");
 }
 
+/// Levels 0..N, with Loop's provenance when `births` is asked for.
+Refinement refinement(const PolyMesh& mesh, const RefineRequest& r, bool births) {
+    Refinement out{{mesh}, {}};
+    adapters::LevelTrace& trace = out.levels;
+    using Kind = VertexBirth::Kind;
+    if (r.scheme == Scheme::Loop && mesh.creases.empty()) {
+        try {
+            LoopRefiner refiner(to_tri_mesh(mesh, "Loop subdivision"), r.rule.loop);
+            refiner.refine(r.levels);
+            for (int l = 1; l <= r.levels; ++l) {
+                trace.push_back(to_poly_mesh(refiner.mesh(l)));
+                if (!births) continue;
+                std::vector<VertexBirth>& level = out.births.emplace_back();
+                for (const VertexOrigin& o : refiner.origins(l))
+                    level.push_back(o.is_edge_point() ? VertexBirth{Kind::Edge, o.a, o.b} : VertexBirth{Kind::Vertex, o.a, -1});
+            }
+            return out;
+        } catch (const NonManifoldInput&) {
+            // Not a manifold: loop_subdivide takes OpenSubdiv's rules level by level below
+            // (or refuses, under NonManifoldRule::Refuse).
+        }
+        for (int l = 1; l <= r.levels; ++l) {
+            const PolyMesh& coarse = trace.back();
+            PolyMesh fine = subdivide(coarse, r, 1);  // refuses first, under NonManifoldRule::Refuse
+            if (births) {
+                std::vector<VertexBirth>& level = out.births.emplace_back();
+                for (int v = 0; v < coarse.num_vertices(); ++v) level.push_back({Kind::Vertex, v, -1});
+                for (const auto& [a, b] : nonmanifold_edges(coarse)) level.push_back({Kind::Edge, a, b});
+            }
+            trace.push_back(std::move(fine));
+        }
+        return out;
+    }
+    // sqrt3 counts its boundary generations from the input: each level is its own call
+    // from the input. The other schemes' levels are the same one step at a time.
+    for (int l = 1; l <= r.levels; ++l)
+        trace.push_back(r.scheme == Scheme::Sqrt3 ? subdivide(mesh, r, l) : subdivide(trace.back(), r, 1));
+    return out;
+}
+
 class Core final : public Implementation {
 public:
     Core() : Implementation("core", "crossdiv", ImplementationKind::Core, core_capabilities()) {}
@@ -64,46 +104,22 @@ public:
     /// Core refuses bad input with InputError (naming the element), which callers record as
     /// core's refusal; it is never turned into adapters::Rejected.
     adapters::LevelTrace refine(const PolyMesh& mesh, const RefineRequest& r) const override {
-        return refine_with_provenance(mesh, r).levels;
+        return refinement(mesh, r, false).levels;
     }
 
-    /// Loop's levels carry their provenance: the refiner's, or on a mesh that is not a
-    /// manifold the edges in the order the non-manifold steps number their edge points.
+    /// Loop's levels carry the refiner's provenance (on a mesh that is not a manifold, the
+    /// edges in the order the non-manifold steps number their edge points); the other primal
+    /// schemes' are read off the faces of each level, whose numbering keeps the old vertices
+    /// first (primal_births). Doo-Sabin's and sqrt3's levels have none.
     Refinement refine_with_provenance(const PolyMesh& mesh, const RefineRequest& r) const override {
-        Refinement out{{mesh}, {}};
-        adapters::LevelTrace& trace = out.levels;
-        if (r.scheme == Scheme::Loop && mesh.creases.empty()) {
-            try {
-                LoopRefiner refiner(to_tri_mesh(mesh, "Loop subdivision"), r.rule.loop);
-                refiner.refine(r.levels);
-                for (int l = 1; l <= r.levels; ++l) {
-                    trace.push_back(to_poly_mesh(refiner.mesh(l)));
-                    out.origins.push_back(refiner.origins(l));
-                }
-                return out;
-            } catch (const NonManifoldInput&) {
-                // Not a manifold: loop_subdivide takes OpenSubdiv's rules level by level below
-                // (or refuses, under NonManifoldRule::Refuse).
-            }
-            for (int l = 1; l <= r.levels; ++l) {
-                std::vector<VertexOrigin> origins;
-                const PolyMesh& coarse = trace.back();
-                PolyMesh fine = subdivide(coarse, r, 1);  // refuses first, under NonManifoldRule::Refuse
-                for (int v = 0; v < coarse.num_vertices(); ++v) origins.push_back({v, -1});
-                for (const auto& [a, b] : nonmanifold_edges(coarse)) origins.push_back({a, b});
-                trace.push_back(std::move(fine));
-                out.origins.push_back(std::move(origins));
-            }
-            return out;
-        }
-        // sqrt3 counts its boundary generations from the input: each level is its own call
-        // from the input. The other schemes' levels are the same one step at a time.
-        for (int l = 1; l <= r.levels; ++l)
-            trace.push_back(r.scheme == Scheme::Sqrt3 ? subdivide(mesh, r, l) : subdivide(trace.back(), r, 1));
+        Refinement out = refinement(mesh, r, true);
+        if (out.births.empty() && traits(r.scheme).primal)
+            for (size_t l = 1; l < out.levels.size(); ++l) out.births.push_back(primal_births(out.levels[l - 1], out.levels[l]));
         return out;
     }
 
     PolyMesh refine_last(const PolyMesh& mesh, const RefineRequest& r) const override { return subdivide(mesh, r, r.levels); }
+
 
     size_t refine_native(const TriMesh& mesh, const RefineRequest& r) const override {
         if (r.scheme != Scheme::Loop) return Implementation::refine_native(mesh, r);

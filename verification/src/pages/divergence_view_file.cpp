@@ -13,10 +13,13 @@
 namespace crossdiv::verification {
 namespace {
 
-std::string origins32(const std::vector<VertexOrigin>& origins) {
+/// A pair per vertex: (v, -1) the vertex point of v, (a, b) the edge point of (a, b), (f, -2)
+/// the face point of face f.
+std::string origins32(const std::vector<VertexBirth>& births) {
     std::vector<int32_t> pairs;
-    pairs.reserve(2 * origins.size());
-    for (const VertexOrigin& o : origins) pairs.insert(pairs.end(), {o.a, o.is_edge_point() ? o.b : -1});
+    pairs.reserve(2 * births.size());
+    for (const VertexBirth& o : births)
+        pairs.insert(pairs.end(), {o.a, o.kind == VertexBirth::Kind::Edge ? o.b : o.kind == VertexBirth::Kind::Face ? -2 : -1});
     return base64(pairs);
 }
 
@@ -38,7 +41,8 @@ std::string divergence_view_script(const DivergenceView& view, int job, const st
         const PolyMesh& m = view.levels[l];
         json level{{"positions", positions64(m)}, {"triangles", triangles32(m)}};
         if (!m.all_triangles()) level["sizes"] = face_sizes32(m);
-        if (l >= 1 && l - 1 < view.origins.size()) level["origins"] = origins32(view.origins[l - 1]);
+        if (l >= 1 && l - 1 < view.births.size() && !view.births[l - 1].empty())
+            level["origins"] = origins32(view.births[l - 1]);
         levels.push_back(std::move(level));
     }
     json references = json::object();

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "crossdiv/mesh/poly_mesh.h"
-#include "crossdiv/subdiv/loop.h"
+#include "crossdiv/verification/harness/correspondence.h"
 
 namespace crossdiv::verification {
 
@@ -26,9 +26,10 @@ struct MinimalDivergence {
 
 struct DivergenceView {
     std::vector<PolyMesh> levels;  ///< levels 0..N of the implementation under test (polygons as polygons)
-    /// origins[l-1]: where each vertex of level l came from (a vertex or an edge of level l-1);
-    /// Loop's levels have them; a level without them shows no provenance.
-    std::vector<std::vector<VertexOrigin>> origins;
+    /// births[l-1]: where each vertex of level l was born (a vertex, an edge or a face of
+    /// level l-1); the primal schemes' levels have them, a level without them shows no
+    /// provenance.
+    std::vector<std::vector<VertexBirth>> births;
     /// Per reference, its positions at levels 0..N in our numbering: an empty level has no
     /// vertex map there (a match by position sees the last level only); NaN marks a vertex
     /// the reference has no match for.

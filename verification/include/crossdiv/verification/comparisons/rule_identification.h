@@ -24,6 +24,7 @@
 
 #include "crossdiv/mesh/poly_mesh.h"
 #include "crossdiv/subdiv/loop.h"
+#include "crossdiv/verification/harness/correspondence.h"
 
 namespace crossdiv::verification {
 
@@ -60,11 +61,11 @@ struct RuleIdentification {
 std::vector<LoopOptions> loop_named_rules();
 
 /// Classifies and measures. `subject[l-1]` and `core[r][l-1]` are level l in core's numbering
-/// (an empty subject level was not compared); `origins[l-1]` is core's provenance of level l;
+/// (an empty subject level was not compared); `births[l-1]` is core's provenance of level l;
 /// `input` is level 0. `core` has one entry per loop_named_rules() rule.
 RuleIdentification identify_loop_rule(const PolyMesh& input, const std::vector<PolyMesh>& subject,
                                       const std::vector<std::vector<PolyMesh>>& core,
-                                      const std::vector<std::vector<VertexOrigin>>& origins, const LoopOptions& requested,
+                                      const std::vector<std::vector<VertexBirth>>& births, const LoopOptions& requested,
                                       double tolerance);
 
 /// Of the named rules that fit the whole mesh, the one nearest `other`: `other` itself, else

@@ -17,7 +17,7 @@
 
 #include "crossdiv/adapters/reference.h"
 #include "crossdiv/mesh/tri_mesh.h"
-#include "crossdiv/subdiv/loop.h"
+#include "crossdiv/verification/harness/correspondence.h"
 #include "crossdiv/verification/harness/isolate.h"
 #include "crossdiv/verification/implementations/scheme.h"
 #include "crossdiv/volume/marching_cubes.h"
@@ -109,10 +109,10 @@ public:
 /// vertex was born.
 struct Refinement {
     adapters::LevelTrace levels;
-    /// origins[l-1]: for each vertex of level l, the vertex {v, -1} or the edge {a, b} of
-    /// level l-1 it was born from. Empty when the implementation does not say (the
-    /// correspondence then infers it from the faces: match_by_provenance).
-    std::vector<std::vector<VertexOrigin>> origins;
+    /// births[l-1]: for each vertex of level l, the vertex, edge or face of level l-1 it was
+    /// born from. Empty when the implementation does not say (the correspondence then infers
+    /// it from the faces: match_by_provenance).
+    std::vector<std::vector<VertexBirth>> births;
 };
 
 /// Which spline an implementation is asked to evaluate.
@@ -152,8 +152,8 @@ public:
     /// (levels[0]: the input as it stored it). It applies closest_rule(request).
     /// @throws adapters::Rejected when it refuses the mesh, the scheme or the tags.
     virtual adapters::LevelTrace refine(const PolyMesh& mesh, const RefineRequest& request) const;
-    /// refine() with each refined vertex's origin where the implementation knows it (core's
-    /// Loop); the base gives refine()'s levels and no origins.
+    /// refine() with each refined vertex's birth where the implementation knows it (core, for
+    /// every primal scheme); the base gives refine()'s levels and no births.
     virtual Refinement refine_with_provenance(const PolyMesh& mesh, const RefineRequest& request) const;
     /// The last level of refine(), for callers that compare only that one; an implementation
     /// that can make it without the levels before it overrides this.

@@ -10,8 +10,9 @@
 /// - `levels[l]`: `positions` (float64 xyz per vertex), `triangles` (int32 corners; a polygon is
 ///   fanned from its first corner), `sizes` when some face is not a triangle (int32 corners per
 ///   face: the viewer draws the polygons' edges, not the fans'), and for l >= 1 where the
-///   provenance is known (Loop) `origins` (int32 pairs: the vertex point of old vertex a as
-///   (a, -1), the edge point of old edge (a, b) as (a, b));
+///   provenance is known (the primal schemes) `origins` (int32 pairs: the vertex point of old
+///   vertex a as (a, -1), the edge point of old edge (a, b) as (a, b), the face point of old
+///   face f as (f, -2));
 /// - `references[name][l]`: float32 xyz per vertex, the reference's position minus ours (NaN:
 ///   unmatched), or null where the reference has no vertex map at level l. An offset in float32
 ///   keeps the reference's value to 1e-7 of its distance from ours, far finer than any
