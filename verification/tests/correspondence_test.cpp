@@ -9,6 +9,7 @@
 #include "crossdiv/datasets/edge_cases.h"
 #include "crossdiv/mesh/tri_mesh.h"
 #include "crossdiv/verification/harness/correspondence.h"
+#include "crossdiv/verification/harness/mesh_topology.h"
 #include "crossdiv/verification/implementations/registry.h"
 
 namespace crossdiv::verification {
@@ -149,6 +150,52 @@ TEST(Correspondence, CopiesOfAVertexAtOnePlaceAreToldApartByTheirFaces) {
     const Correspondence isolated = match_nearest_and_faces(ours, ref);
     ASSERT_EQ(isolated.method, MatchMethod::NearestAndFaces) << isolated.note;
     EXPECT_EQ(isolated.ref_to_ours[8] + isolated.ref_to_ours[9], 17);
+}
+
+/// A birth in terms that do not depend on how the level numbers its edges and its copies of
+/// a face: a vertex, an edge's two ends in order, a face's corner cycle from its least rotation.
+std::vector<int> normal_form(const VertexBirth& b, const PolyMesh& coarse) {
+    switch (b.kind) {
+        case VertexBirth::Kind::Vertex: return {0, b.a};
+        case VertexBirth::Kind::Edge: return {1, std::min(b.a, b.b), std::max(b.a, b.b)};
+        case VertexBirth::Kind::Face: {
+            std::vector<int> cycle(coarse.face(b.a), coarse.face(b.a) + coarse.face_size(b.a));
+            std::rotate(cycle.begin(), cycle.begin() + static_cast<long>(least_rotation(cycle)), cycle.end());
+            cycle.insert(cycle.begin(), 2);
+            return cycle;
+        }
+    }
+    return {};
+}
+
+// The provenance this testbed reads off a refined level's faces (primal_births, the reading
+// match_by_provenance makes of every reference) is the provenance Far itself records: its
+// child queries, on every level of Loop, Catmull-Clark and bilinear over the catalog and every
+// edge case, manifold or not (bowties, fins, duplicate faces, a vertex named twice).
+TEST(Correspondence, BirthsReadOffTheFacesAreFarsOwn) {
+    if (!is_built("opensubdiv")) GTEST_SKIP() << "OpenSubdiv is not built in";
+    const Implementation& osd = find_implementation("opensubdiv");
+    std::vector<std::pair<std::string, PolyMesh>> inputs;
+    for (const auto& b : datasets::catalog_meshes()) inputs.emplace_back(b.name, b.mesh);
+    for (const auto& e : datasets::edge_cases()) inputs.emplace_back(e.name, e.mesh);
+    for (const auto& e : datasets::polygon_edge_cases()) inputs.emplace_back(e.name, e.mesh);
+    int levels_read = 0;
+    for (const Scheme scheme : {Scheme::Loop, Scheme::CatmullClark, Scheme::Bilinear})
+        for (const auto& [name, mesh] : inputs) {
+            if (!mesh.creases.empty() || (traits(scheme).triangles && !mesh.all_triangles())) continue;
+            SCOPED_TRACE(std::string(to_string(scheme)) + " " + name);
+            const Refinement far = osd.refine_with_provenance(mesh, {scheme, SchemeRule{}, 2});
+            ASSERT_EQ(far.births.size(), 2u);
+            for (size_t l = 1; l <= 2; ++l) {
+                const PolyMesh& coarse = far.levels[l - 1];
+                const std::vector<VertexBirth> read = primal_births(coarse, far.levels[l]);
+                ASSERT_EQ(read.size(), far.births[l - 1].size()) << "level " << l;
+                for (size_t v = 0; v < read.size(); ++v)
+                    ASSERT_EQ(normal_form(read[v], coarse), normal_form(far.births[l - 1][v], coarse)) << "level " << l << " vertex " << v;
+                ++levels_read;
+            }
+        }
+    EXPECT_GT(levels_read, 150);
 }
 
 TEST(Correspondence, NearestRefusesANonBijection) {

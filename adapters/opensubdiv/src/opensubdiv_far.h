@@ -137,6 +137,29 @@ inline size_t interpolate_native(const Far::TopologyRefiner& refiner, const std:
 }
 
 /// Every level of a refined refiner, positions interpolated level by level in double.
+/// Where each vertex of each refined level was born, from Far's child queries on the level
+/// before (GetVertexChildVertex, GetEdgeChildVertex, GetFaceChildVertex): Far's own
+/// provenance, not inferred. Needs the full topology of every level but the last.
+inline LevelBirths child_births(const Far::TopologyRefiner& refiner) {
+    LevelBirths births;
+    for (int level = 1; level <= refiner.GetMaxLevel(); ++level) {
+        const Far::TopologyLevel& parent = refiner.GetLevel(level - 1);
+        std::vector<VertexBirth>& out = births.emplace_back(static_cast<size_t>(refiner.GetLevel(level).GetNumVertices()));
+        const auto set = [&](Far::Index child, VertexBirth birth) {
+            if (child >= 0) out[static_cast<size_t>(child)] = birth;  // INDEX_INVALID: no child (a hole)
+        };
+        for (int v = 0; v < parent.GetNumVertices(); ++v) set(parent.GetVertexChildVertex(v), {VertexBirth::Kind::Vertex, v, -1});
+        for (int e = 0; e < parent.GetNumEdges(); ++e) {
+            const Far::ConstIndexArray ends = parent.GetEdgeVertices(e);
+            set(parent.GetEdgeChildVertex(e), {VertexBirth::Kind::Edge, ends[0], ends[1]});
+        }
+        // Loop's triangle split has no face points (and Far no face-vertex table to ask).
+        if (refiner.GetSchemeType() != Sdc::SCHEME_LOOP)
+            for (int f = 0; f < parent.GetNumFaces(); ++f) set(parent.GetFaceChildVertex(f), {VertexBirth::Kind::Face, f, -1});
+    }
+    return births;
+}
+
 inline LevelTrace interpolate_trace(const Far::TopologyRefiner& refiner, const std::vector<Vec3>& positions,
                                     std::vector<Point3>* all_points = nullptr) {
     std::vector<Point3> points = base_points(refiner, positions);

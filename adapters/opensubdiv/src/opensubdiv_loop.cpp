@@ -41,8 +41,10 @@ std::unique_ptr<Far::TopologyRefiner> refine_topology(const TriMesh& mesh, const
 
 }  // namespace
 
-LevelTrace loop(const TriMesh& mesh, const LoopOptions& options, int levels) {
-    return interpolate_trace(*refine_topology(mesh, options, levels, true), mesh.positions);
+LevelTrace loop(const TriMesh& mesh, const LoopOptions& options, int levels, LevelBirths* births) {
+    const auto refiner = refine_topology(mesh, options, levels, true);
+    if (births) *births = child_births(*refiner);
+    return interpolate_trace(*refiner, mesh.positions);
 }
 
 size_t loop_native(const TriMesh& mesh, const LoopOptions& options, int levels) {

@@ -59,16 +59,18 @@ std::vector<int> triangle_corners(const TriMesh& mesh) {
 
 }  // namespace
 
-LevelTrace catmull_clark(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels) {
+LevelTrace catmull_clark(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels, LevelBirths* births) {
     std::unique_ptr<Far::TopologyRefiner> refiner = make_refiner(mesh, Sdc::SCHEME_CATMARK, catmark_options(options));
     refine_uniform(*refiner, levels, true);
+    if (births) *births = child_births(*refiner);
     return interpolate_trace(*refiner, mesh.positions);
 }
 
-LevelTrace bilinear(const PolyMesh& mesh, int levels) {
+LevelTrace bilinear(const PolyMesh& mesh, int levels, LevelBirths* births) {
     reject_crease_tags(mesh, "OpenSubdiv's bilinear scheme (as compared here)");
     std::unique_ptr<Far::TopologyRefiner> refiner = make_refiner(mesh, Sdc::SCHEME_BILINEAR, sdc_options(false, CreaseMethod::Uniform));
     refine_uniform(*refiner, levels, true);
+    if (births) *births = child_births(*refiner);
     return interpolate_trace(*refiner, mesh.positions);
 }
 
@@ -90,9 +92,10 @@ std::vector<int> boundary_none_holes(const PolyMesh& mesh, bool loop) {
     return holes;
 }
 
-LevelTrace loop(const PolyMesh& mesh, const LoopOptions& options, int levels) {
+LevelTrace loop(const PolyMesh& mesh, const LoopOptions& options, int levels, LevelBirths* births) {
     std::unique_ptr<Far::TopologyRefiner> refiner = make_refiner(mesh, Sdc::SCHEME_LOOP, loop_options(options));
     refine_uniform(*refiner, levels, true);
+    if (births) *births = child_births(*refiner);
     return interpolate_trace(*refiner, mesh.positions);
 }
 

@@ -27,15 +27,28 @@ public:
                           .limit_surface = true}) {}
 
     adapters::LevelTrace refine(const PolyMesh& mesh, const RefineRequest& r) const override {
-        check_refinable(r.scheme);
-        const SchemeRule rule = closest_rule(r.scheme, r.rule);
-        if (r.scheme == Scheme::CatmullClark) return osd::catmull_clark(mesh, rule.catmull_clark, r.levels);
-        if (r.scheme == Scheme::Bilinear) return osd::bilinear(mesh, r.levels);
-        // Untagged triangle meshes go through Far's triangle path, tagged ones carry their tags.
-        if (!mesh.creases.empty()) return osd::loop(mesh, rule.loop, r.levels);
-        return osd::loop(triangles_for(mesh, r.scheme), rule.loop, r.levels);
+        return levels(mesh, r, nullptr);
     }
 
+    /// Far's own provenance, from its child queries.
+    Refinement refine_with_provenance(const PolyMesh& mesh, const RefineRequest& r) const override {
+        Refinement out;
+        out.levels = levels(mesh, r, &out.births);
+        return out;
+    }
+
+private:
+    adapters::LevelTrace levels(const PolyMesh& mesh, const RefineRequest& r, adapters::LevelBirths* births) const {
+        check_refinable(r.scheme);
+        const SchemeRule rule = closest_rule(r.scheme, r.rule);
+        if (r.scheme == Scheme::CatmullClark) return osd::catmull_clark(mesh, rule.catmull_clark, r.levels, births);
+        if (r.scheme == Scheme::Bilinear) return osd::bilinear(mesh, r.levels, births);
+        // Untagged triangle meshes go through Far's triangle path, tagged ones carry their tags.
+        if (!mesh.creases.empty()) return osd::loop(mesh, rule.loop, r.levels, births);
+        return osd::loop(triangles_for(mesh, r.scheme), rule.loop, r.levels, births);
+    }
+
+public:
     size_t refine_native(const TriMesh& mesh, const RefineRequest& r) const override {
         if (r.scheme != Scheme::Loop) return Implementation::refine_native(mesh, r);
         return osd::loop_native(mesh, closest_rule(r.scheme, r.rule).loop, r.levels);

@@ -39,6 +39,16 @@ inline void reject_crease_tags(const PolyMesh& mesh, const char* library) {
 /// the library's own order.
 using LevelTrace = std::vector<PolyMesh>;
 
+/// Where a refined vertex was born, in the numbering of the level before.
+struct VertexBirth {
+    enum class Kind : unsigned char { Vertex, Edge, Face };
+    Kind kind = Kind::Vertex;
+    int a = -1, b = -1;  ///< Vertex: a; Edge: its ends a, b (a == b for a degenerate edge); Face: a, the face
+    bool operator==(const VertexBirth&) const = default;
+};
+/// births[l-1]: the birth of each vertex of level l of a LevelTrace.
+using LevelBirths = std::vector<std::vector<VertexBirth>>;
+
 /// A point of a limit surface with its first partial derivatives.
 struct LimitSample {
     Vec3 position, du, dv;

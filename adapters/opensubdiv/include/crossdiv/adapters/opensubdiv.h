@@ -30,13 +30,13 @@ bool supports(const LoopOptions& options);
 /// Limit() are available to later checks. Refined vertices: the parent level's vertices keep
 /// their indices, then one per edge (nv + edge index), as the trace shows.
 /// @throws Rejected for Warren weights or when Far's factory reports a topology error.
-LevelTrace loop(const TriMesh& mesh, const LoopOptions& options, int levels);
+LevelTrace loop(const TriMesh& mesh, const LoopOptions& options, int levels, LevelBirths* births = nullptr);
 
 /// Loop refinement of a polygon mesh of triangles with its crease and corner tags (the
 /// descriptor's creaseVertexIndexPairs/cornerVertexIndices) and options.creasing
 /// (CREASE_UNIFORM or CREASE_CHAIKIN). Far's factory rejects a face that is not a triangle.
 /// @throws Rejected as loop(), and when a tag names an edge the mesh does not have.
-LevelTrace loop(const PolyMesh& mesh, const LoopOptions& options, int levels);
+LevelTrace loop(const PolyMesh& mesh, const LoopOptions& options, int levels, LevelBirths* births = nullptr);
 
 /// The same refinement in the library's own structures, with nothing converted back: what
 /// `crossdiv bench` times. Returns the number of output faces. @throws as loop().
@@ -86,13 +86,14 @@ bool supports(const CatmullClarkOptions& options);
 /// in Far's order (as catmull_clark()). Bilinear is compared without tags: its crease rules
 /// would change nothing and its holes no position.
 /// @throws Rejected for a tagged mesh or when Far's factory reports an error.
-LevelTrace bilinear(const PolyMesh& mesh, int levels);
+LevelTrace bilinear(const PolyMesh& mesh, int levels, LevelBirths* births = nullptr);
 
 /// `levels` uniform Catmull-Clark levels of a polygon mesh (any face sizes), every level kept
 /// in Far's order (old vertices first, then one per face, then one per edge). Crease and
 /// corner tags and options.creasing go to Far as for loop(const PolyMesh&, ...).
 /// @throws Rejected for the midpoint-average rule or when Far's factory reports an error.
-LevelTrace catmull_clark(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels);
+/// With `births`, Far's own provenance of every refined vertex (its child queries).
+LevelTrace catmull_clark(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels, LevelBirths* births = nullptr);
 
 /// The same refinement in the library's own structures (Far's topology without the last
 /// level's edges, PrimvarRefinerReal<double> level by level into one buffer), nothing

@@ -66,13 +66,7 @@ Correspondence match_by_provenance(const std::vector<const PolyMesh*>& ours, con
 /// provenance failed.
 Correspondence match_refinement(const std::vector<const PolyMesh*>& ours, const adapters::LevelTrace& ref);
 
-/// Where a refined vertex was born, in the numbering of the level before.
-struct VertexBirth {
-    enum class Kind : unsigned char { Vertex, Edge, Face };
-    Kind kind = Kind::Vertex;
-    int a = -1, b = -1;  ///< Vertex: a; Edge: its ends a, b (a == b for a degenerate edge); Face: a, the face
-    bool operator==(const VertexBirth&) const = default;
-};
+using adapters::VertexBirth;
 
 /// Where each vertex of `fine` was born in `coarse`, for a primal refinement that keeps the
 /// coarse vertices first, in their order: read from the faces as match_by_provenance reads a

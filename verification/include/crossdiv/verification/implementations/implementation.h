@@ -112,7 +112,7 @@ struct Refinement {
     /// births[l-1]: for each vertex of level l, the vertex, edge or face of level l-1 it was
     /// born from. Empty when the implementation does not say (the correspondence then infers
     /// it from the faces: match_by_provenance).
-    std::vector<std::vector<VertexBirth>> births;
+    adapters::LevelBirths births;
 };
 
 /// Which spline an implementation is asked to evaluate.
@@ -153,7 +153,8 @@ public:
     /// @throws adapters::Rejected when it refuses the mesh, the scheme or the tags.
     virtual adapters::LevelTrace refine(const PolyMesh& mesh, const RefineRequest& request) const;
     /// refine() with each refined vertex's birth where the implementation knows it (core, for
-    /// every primal scheme); the base gives refine()'s levels and no births.
+    /// every primal scheme; OpenSubdiv, from Far's child queries); the base gives refine()'s
+    /// levels and no births.
     virtual Refinement refine_with_provenance(const PolyMesh& mesh, const RefineRequest& request) const;
     /// The last level of refine(), for callers that compare only that one; an implementation
     /// that can make it without the levels before it overrides this.
