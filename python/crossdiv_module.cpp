@@ -247,12 +247,14 @@ PYBIND11_MODULE(crossdiv, m) {
           "one per edge) as a scipy.sparse.csr_matrix.");
     m.def("compare",
           [](const py::array_t<double, py::array::c_style | py::array::forcecast>& V, const py::object& F, int levels,
-             const std::string& weights, const std::string& boundary, std::vector<std::string> references,
+             std::optional<std::string> weights, std::optional<std::string> boundary, std::vector<std::string> references,
              const std::string& tier, double tolerance, py::object subject, const std::string& subject_name,
-             double timeout) {
-              RefinementRequest req;
-              req.rule.loop = {loop_weights_from_string(weights), loop_boundary_from_string(boundary)};
+             double timeout, const std::string& scheme) {
               if (levels < 1 || levels > 12) throw InputError("levels must be in 1..12 (got " + std::to_string(levels) + ")");
+              const RefineRequest asked = request_for(scheme, levels, weights, boundary);
+              RefinementRequest req;
+              req.scheme = asked.scheme;
+              req.rule = asked.rule;
               req.levels = levels;
               req.references = std::move(references);
               req.tier = tier_from_string(tier);
@@ -265,13 +267,16 @@ PYBIND11_MODULE(crossdiv, m) {
                   req.subject = under_test.get();
               }
               const PolyMesh mesh = mesh_from(V, F);
-              (void)to_tri_mesh(mesh, "compare");  // a polygon is refused by name
+              if (traits(req.scheme).triangles) (void)to_tri_mesh(mesh, "compare");  // a polygon is refused by name
               return json_to_python(to_json(compare_refinement(mesh, "python", req)));
           },
-          py::arg("V"), py::arg("F"), py::arg("levels") = 2, py::arg("weights") = "loop", py::arg("boundary") = "edge-only",
+          py::arg("V"), py::arg("F"), py::arg("levels") = 2, py::arg("weights") = py::none(), py::arg("boundary") = py::none(),
           py::arg("references") = std::vector<std::string>{}, py::arg("tier") = "weak", py::arg("tolerance") = 1e-12,
           py::arg("subject") = py::none(), py::arg("subject_name") = "python", py::arg("timeout") = 120.0,
-          "Compares Loop subdivision of (V, F) by core (or `subject`) with each reference (all built when empty): "
+          py::arg("scheme") = "loop",
+          "Compares `scheme` (loop, catmull-clark, doo-sabin, sqrt3, butterfly, modified-butterfly, bilinear; "
+          "weights for Loop, boundary as crossdiv compare names them, each the scheme's default when None) of "
+          "(V, F) by core (or `subject`, Loop only so far) with each reference that has it (all built when empty): "
           "the same record as `crossdiv compare --json` (runs, verdicts, divergence classes, worst vertex; with a "
           "subject, the named rule it follows). subject(V, F) -> (V, F) refines one level; it runs in a child "
           "process with `timeout` seconds, so its exception, crash or hang is recorded, not raised.");

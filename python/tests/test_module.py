@@ -124,6 +124,24 @@ def test_compare_is_the_record_of_crossdiv_compare_json(tmp_path):
     assert {r["divergence_class"] for r in record["runs"]} == {"weight-family"}
 
 
+def test_compare_takes_every_scheme():
+    # A 2 x 2 grid of quads: OpenMesh's Catmull-Clark applies its midpoint-average boundary rule,
+    # OpenSubdiv's agrees; bilinear agrees with OpenSubdiv; a triangle scheme refuses the quads.
+    V = np.array([[x, y, 0.1 * ((x + 2 * y) % 3)] for y in range(3) for x in range(3)], dtype=float)
+    F = np.array([[3 * y + x, 3 * y + x + 1, 3 * y + x + 4, 3 * y + x + 3] for y in range(2) for x in range(2)])
+    cc = crossdiv.compare(V, F, scheme="catmull-clark", levels=2, references=["opensubdiv", "openmesh"])
+    assert cc["scheme"] == "catmull-clark" and cc["rule"] == "edge-only"
+    outcome = {r["reference"]: (r["verdict"], r["divergence_class"]) for r in cc["runs"]}
+    assert outcome == {"opensubdiv": ("agree", ""), "openmesh": ("diverge", "boundary-rule")}, outcome
+    bilinear = crossdiv.compare(V, F, scheme="bilinear", levels=2)
+    assert [(r["reference"], r["verdict"]) for r in bilinear["runs"]] == [("opensubdiv", "agree")]
+    assert len(bilinear["runs"][0]["positions"]["level_max_rel"]) == 2  # every level matched through provenance
+    with pytest.raises(ValueError, match="weights name a Loop weight family"):
+        crossdiv.compare(V, F, scheme="catmull-clark", weights="warren")
+    with pytest.raises(ValueError, match="has 4 corners"):
+        crossdiv.compare(V, F, scheme="sqrt3")
+
+
 def test_a_python_loop_is_identified_by_its_rule():
     V = np.array([[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]], dtype=float)
     F = np.array([[0, 2, 4], [2, 1, 4], [1, 3, 4], [3, 0, 4], [2, 0, 5], [1, 2, 5], [3, 1, 5], [0, 3, 5]])
