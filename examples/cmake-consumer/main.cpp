@@ -23,8 +23,8 @@ int main() {
         std::printf("mine: no named rule found (%s)\n", c.subject_outcome.summary().c_str());
         return 1;
     }
-    std::printf("mine follows weights=%s boundary=%s\n", std::string(to_string(c.rules->rule->weights)).c_str(),
-                std::string(to_string(c.rules->rule->boundary)).c_str());
+    std::printf("mine follows weights=%s boundary=%s\n", std::string(to_string(c.rules->rule->loop.weights)).c_str(),
+                std::string(to_string(c.rules->rule->loop.boundary)).c_str());
     for (const RefinementRun& run : c.runs) std::printf("  %s: %s %s\n", run.reference.c_str(), to_string(run.verdict), to_string(run.divergence_class));
-    return c.rules->rule->weights == LoopWeights::Warren ? 0 : 1;
+    return c.rules->rule->loop.weights == LoopWeights::Warren ? 0 : 1;
 }

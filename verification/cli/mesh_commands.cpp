@@ -28,6 +28,7 @@
 #include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/verification/suite/manifest.h"
 #include "edit_commands.h"
+#include "subject_report.h"
 #include "scheme_commands.h"
 
 namespace crossdiv::cli {
@@ -198,39 +199,6 @@ int run_subdivide(const std::string& in, const SchemeArgs& flags, const std::str
     return 0;
 }
 
-/// The subject's run, its match to core and the rule fits of each vertex class.
-void print_subject(const RefinementComparison& c) {
-    if (c.subject_outcome.status != RunStatus::Ok) {
-        fmt::print("  subject '{}' failed: {}\n", c.subject, c.subject_outcome.summary());
-        return;
-    }
-    if (!c.subject_unmatched.empty()) {
-        fmt::print("  subject '{}': {}\n", c.subject, c.subject_unmatched);
-        return;
-    }
-    fmt::print("  subject '{}' ran in {:.3f} s; vertices matched to core's by {}\n", c.subject, c.subject_outcome.seconds,
-               to_string(c.subject_match.method));
-    if (!c.rules) return;
-    const std::vector<LoopOptions> rules = loop_named_rules();
-    fmt::print("  {:<22} {:>7}", c.rules->classified_level ? fmt::format("class at level {}", c.rules->classified_level)
-                                                           : std::string("whole mesh"),
-               "count");
-    for (const LoopOptions& o : rules) fmt::print(" {:>16}", fmt::format("{}/{}", to_string(o.weights), to_string(o.boundary)));
-    fmt::print("\n");
-    auto cell = [](const RuleFit& f) { return fmt::format("{}{:.2g}", f.fits ? "= " : "  ", f.max_rel); };
-    for (const VertexClassRow& r : c.rules->rows) {
-        fmt::print("  {:<22} {:>7}", r.valence ? fmt::format("{} (valence {})", to_string(r.cls), r.valence) : to_string(r.cls),
-                   r.count);
-        for (const RuleFit& f : r.fits) fmt::print(" {:>16}", cell(f));
-        fmt::print("\n");
-    }
-    fmt::print("  {:<22} {:>7}", "every compared level", "");
-    for (const RuleFit& f : c.rules->whole) fmt::print(" {:>16}", cell(f));
-    fmt::print("\n  rule: {}\n", c.rules->rule ? "weights=" + std::string(to_string(c.rules->rule->weights)) + " boundary=" +
-                                                     std::string(to_string(c.rules->rule->boundary))
-                                               : std::string("no named rule fits"));
-}
-
 void print_table(const RefinementComparison& c) {
     fmt::print("\n{} ({} vertices, {} faces) loop weights={} boundary={} levels={} (core {:.3f} s)\n", c.input,
                c.input_vertices, c.input_faces, to_string(c.rule.loop.weights), to_string(c.rule.loop.boundary), c.levels,
@@ -259,53 +227,12 @@ void print_table(const RefinementComparison& c) {
     }
 }
 
-/// What the subject's runs over every input say, in one line, and whether it failed.
-struct SubjectVerdict {
-    RuleTally rules;
-    std::map<std::string, std::pair<int, int>> reference_agreement;  ///< agreeing runs, runs
-    std::set<std::string> classes;
-    int inputs = 0, failures = 0, unexplained = 0;
-
-    void add(const RefinementComparison& c) {
-        ++inputs;
-        if (c.subject_failed()) {
-            ++failures;
-            return;
-        }
-        if (c.rules) rules.add(*c.rules);
-        for (const RefinementRun& r : c.runs) {
-            auto& [agree, runs] = reference_agreement[r.reference];
-            ++runs;
-            agree += r.verdict == Verdict::Agree;
-            if (r.verdict == Verdict::Diverge) classes.insert(to_string(r.divergence_class));
-            unexplained += r.verdict == Verdict::Diverge && r.divergence_class == DivergenceClass::Unexplained;
-        }
-    }
-    std::string line(const std::string& name) const {
-        std::vector<std::string> agreeing;
-        for (const auto& [ref, counts] : reference_agreement)
-            if (counts.first == counts.second && counts.second > 0) agreeing.push_back(ref);
-        std::string refs = agreeing.empty() ? "agrees with no reference" : "agrees with " + fmt::format("{}", fmt::join(agreeing, ", "));
-        if (!classes.empty()) refs += fmt::format(" ({})", fmt::join(classes, ", "));
-        std::string s = fmt::format("subject '{}': {}; {}; {}", name, rules.rule_phrase(), refs, rules.core_phrase());
-        if (failures) s += fmt::format("; failed on {} of {} inputs", failures, inputs);
-        return s;
-    }
-};
-
-/// Whether the subject fails or follows no named rule on this input: what `crossdiv diff
-/// --subject` shrinks.
-bool symptom_of_subject(const RefinementComparison& c) { return c.subject_failed() || (c.rules && !c.rules->rule); }
-
 /// `subject_command`: the subject's command template, for the `crossdiv diff` line that shrinks
 /// what no named rule explains (empty for result files, which cannot be rerun).
 int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, const std::string& against,
                 const std::string& json_path, double timeout, bool no_isolate, const Implementation* subject,
                 const std::string& subject_command) {
-    if (s.scheme != "loop") {
-        if (subject) throw InputError("a subject is compared under the Loop scheme so far (--scheme loop)");
-        return run_scheme_compare(specs, s.poly(), against, json_path, timeout, no_isolate);
-    }
+    if (s.scheme != "loop") return run_scheme_compare(specs, s.poly(), against, json_path, timeout, no_isolate, subject, subject_command);
     RefinementRequest req;
     req.subject = subject;
     req.rule.loop = s.options();
@@ -345,7 +272,7 @@ int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, cons
     }
     nlohmann::json results = nlohmann::json::array();
     bool all_agree = true;
-    SubjectVerdict verdict;
+    SubjectVerdict verdict(Scheme::Loop);
     for (size_t i = 0; i < inputs.size(); ++i) {
         if (subject && !meshes[i].creases.empty()) {
             fmt::print("\n{}: {}; a subject is compared on untagged meshes so far (skipped)\n", inputs[i],
@@ -376,7 +303,7 @@ int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, cons
         // A subject fails when it fails to run or diverges unexplained; a named rule it follows
         // that a reference lacks is a diagnosis, not a failure.
         fmt::print("\n{}\n", verdict.line(subject->name()));
-        return verdict.failures || verdict.unexplained ? 1 : 0;
+        return verdict.failed() ? 1 : 0;
     }
     fmt::print("\n{}\n", all_agree ? "every reference agrees" : "some references disagree (see above)");
     return all_agree ? 0 : 1;
@@ -422,10 +349,7 @@ int run_edgecases(const std::string& dir) {
 
 int run_diff(const std::string& in, const SchemeArgs& flags, const std::string& against, const std::string& out_dir,
              const Implementation* subject, double timeout, const std::string& subject_command) {
-    if (flags.scheme != "loop") {
-        if (subject) throw InputError("a subject is shrunk under the Loop scheme so far (--scheme loop)");
-        return run_scheme_diff(in, flags.poly(), against, out_dir, timeout);
-    }
+    if (flags.scheme != "loop") return run_scheme_diff(in, flags.poly(), against, out_dir, timeout, subject, subject_command);
     PolyMesh input = load_input(in, flags.tag_policy());
     const SchemeArgs s = with_tag_rules(flags, input);
     s.require_size(input, in);
@@ -514,8 +438,8 @@ struct ProgramArgs {
     }
 
     /// Registers each --reference NAME=CMD (or NAME=command='CMD' key=value ...) as a
-    /// reference and returns the subject program, if any.
-    std::unique_ptr<Implementation> setup() const {
+    /// reference and returns the subject program, if any, an implementation of `scheme`.
+    std::unique_ptr<Implementation> setup(Scheme scheme) const {
         for (const std::string& s : references) {
             const size_t eq = s.find('=');
             if (eq == std::string::npos || eq == 0) throw InputError("--reference '" + s + "': expected NAME=CMD");
@@ -528,7 +452,7 @@ struct ProgramArgs {
         ProgramSpec spec;
         spec.name = subject_name;
         spec.command = subject;
-        spec.schemes = {Scheme::Loop};
+        spec.schemes = {scheme};
         spec.levels = level_mode_from_string(subject_levels);
         spec.timeout_seconds = timeout;
         return make_program_implementation(spec);
@@ -558,10 +482,10 @@ struct CompareArgs {
 };
 
 int compare_command(const CompareArgs& a) {
-    std::unique_ptr<Implementation> subject = a.programs.setup();
+    std::unique_ptr<Implementation> subject = a.programs.setup(scheme_from_string(a.scheme.scheme));
     if (!a.subject_result.empty()) {
         if (a.inputs.size() != 1) throw InputError("--subject-result compares one result file with one input");
-        subject = make_result_file_implementation(a.programs.subject_name, a.subject_result, Scheme::Loop);
+        subject = make_result_file_implementation(a.programs.subject_name, a.subject_result, scheme_from_string(a.scheme.scheme));
     }
     return run_compare(a.inputs, a.scheme, a.against, a.json, a.programs.timeout, a.no_isolate, subject.get(),
                        a.subject_result.empty() ? a.programs.subject : std::string());
@@ -595,7 +519,7 @@ struct DiffArgs {
     }
 };
 int diff_command(const DiffArgs& a) {
-    const std::unique_ptr<Implementation> subject = a.programs.setup();
+    const std::unique_ptr<Implementation> subject = a.programs.setup(scheme_from_string(a.scheme.scheme));
     return run_diff(a.input, a.scheme, a.against, a.out, subject.get(), a.programs.timeout, a.programs.subject);
 }
 

@@ -1,6 +1,7 @@
 #include "scheme_commands.h"
 
 #include "command.h"
+#include "subject_report.h"
 
 #include <fmt/core.h>
 
@@ -99,8 +100,10 @@ int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const s
 }
 
 int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeArgs& s, const std::string& against,
-                       const std::string& json_path, double timeout, bool no_isolate) {
+                       const std::string& json_path, double timeout, bool no_isolate, const Implementation* subject,
+                       const std::string& subject_command) {
     RefinementRequest req;
+    req.subject = subject;
     req.scheme = scheme_from_string(s.scheme);
     req.rule = rule_from_boundary_name(req.scheme, s.boundary);
     req.levels = s.levels;
@@ -120,6 +123,7 @@ int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeAr
     }
     nlohmann::json results = nlohmann::json::array();
     bool all_agree = true;
+    SubjectVerdict verdict(req.scheme);
     for (size_t i = 0; i < inputs.size(); ++i) {
         RefinementRequest this_req = req;
         this_req.rule = rules[i];
@@ -128,6 +132,13 @@ int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeAr
         fmt::print("\n{} ({} vertices, {} faces) {} boundary={} levels={} (core {:.3f} s)\n", c.input, c.input_vertices,
                    c.input_faces, to_string(c.scheme), c.rule_name, c.levels, c.core_seconds);
         if (!c.core_error.empty()) fmt::print("  core refused: {}\n", c.core_error);
+        if (subject) {
+            print_subject(c);
+            verdict.add(c);
+            if (!subject_command.empty() && symptom_of_subject(c))
+                fmt::print("  shrink it:   crossdiv diff {} --scheme {} --levels {} --boundary {} --subject-name {} --subject '{}'\n",
+                           inputs[i], s.scheme, s.levels, boundary_name(req.scheme, rules[i]), subject->name(), subject_command);
+        }
         fmt::print("  {:<17} {:<21} {:<13} {:>10}  {}\n", "reference", "rule", "verdict", "max rel", "class / explanation");
         for (const RefinementRun& r : c.runs)
             fmt::print("  {:<17} {:<21} {:<13} {:>10}  {}{}\n", r.reference, r.rule, to_string(r.verdict),
@@ -157,6 +168,10 @@ int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeAr
         results.push_back(record);
     }
     if (!json_path.empty()) write_json(json_path, {{"tool", "crossdiv compare"}, {"comparisons", results}});
+    if (subject) {
+        fmt::print("\n{}\n", verdict.line(subject->name()));
+        return verdict.failed() ? 1 : 0;
+    }
     fmt::print("\n{}\n", all_agree ? "every reference agrees (and every property holds)"
                                     : "some references disagree or a property fails (see above)");
     return all_agree ? 0 : 1;
@@ -178,26 +193,33 @@ std::string write_shrunk(const std::string& out_dir, const PolyMesh& neighbourho
 }
 
 int run_scheme_diff(const std::string& in, const PolySchemeArgs& s, const std::string& against, const std::string& out_dir,
-                    double timeout) {
-    if (against.empty()) throw InputError("diff: name the diverging reference (--against)");
+                    double timeout, const Implementation* subject, const std::string& subject_command) {
+    if (against.empty() && !subject)
+        throw InputError("diff: name the diverging reference (--against) or a subject (--subject)");
     RefinementRequest req;
     req.scheme = scheme_from_string(s.scheme);
     req.levels = s.levels;
     req.timeout_seconds = timeout;
-    req.references = {against};
+    req.subject = subject;
+    if (against.empty()) req.without_references = true;
+    else req.references = {against};
     PolyMesh mesh = load_input(in, s.unknown_tags);  // boundary none tags holes on it
     require_refined_size(mesh, req.scheme, s.levels, s.max_faces, in, "--max-faces");
     req.rule = rule_with_tags(req.scheme, s, mesh);
     const ShrinkResult r = shrink_divergence(mesh, in, req);
-    fmt::print("{} ({} faces): {}: {}\n", in, mesh.num_faces(), describe(r.symptom, "core", against),
-               r.original.runs[0].explanation);
+    const std::string under_test = subject ? "subject '" + subject->name() + "'" : std::string("core");
+    fmt::print("{} ({} faces): {}{}\n", in, mesh.num_faces(), describe(r.symptom, under_test, against),
+               r.original.runs.empty() ? "" : ": " + r.original.runs[0].explanation);
     const std::optional<ShrinkSymptom> minimal_symptom = symptom_of(r.minimal_comparison);
     const std::string minimal =
-        write_shrunk(out_dir, r.neighbourhood, r.k, "the coarse vertex nearest the worst vertex", r.minimal, r.tests,
-                     minimal_symptom ? describe(*minimal_symptom, "core", against) : std::string("no symptom"),
+        write_shrunk(out_dir, r.neighbourhood, r.k, "the symptom's coarse vertices", r.minimal, r.tests,
+                     minimal_symptom ? describe(*minimal_symptom, under_test, against) : std::string("no symptom"),
                      r.minimal_comparison.runs.empty() ? std::string() : r.minimal_comparison.runs[0].explanation);
-    fmt::print("reproduce:     crossdiv compare {} --scheme {} --boundary {} --levels {} --against {}\n", minimal, s.scheme,
-               boundary_name(req.scheme, req.rule), s.levels, against);
+    if (subject) print_subject(r.minimal_comparison);
+    const std::string subject_args =
+        subject ? " --subject-name " + subject->name() + " --subject '" + subject_command + "'" : std::string();
+    fmt::print("reproduce:     crossdiv compare {} --scheme {} --boundary {} --levels {}{}{}\n", minimal, s.scheme,
+               boundary_name(req.scheme, req.rule), s.levels, against.empty() ? "" : " --against " + against, subject_args);
     return 0;
 }
 

@@ -42,7 +42,8 @@ std::vector<size_t> vertex_counts(const std::vector<PolyMesh>& levels);
 /// `crossdiv compare INPUTS --scheme catmull-clark`: a table per input, exit 0 when every
 /// reference agrees, 1 otherwise (each divergence printed with its class).
 int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeArgs& s, const std::string& against,
-                       const std::string& json_path, double timeout, bool no_isolate);
+                       const std::string& json_path, double timeout, bool no_isolate,
+                       const verification::Implementation* subject = nullptr, const std::string& subject_command = {});
 
 /// What `crossdiv diff` writes and prints of a shrunk input, for every scheme: OUT_DIR/
 /// neighbourhood.obj (the k-ring around `seed`, or the whole mesh when k is 0) and
@@ -55,7 +56,8 @@ std::string write_shrunk(const std::string& out_dir, const PolyMesh& neighbourho
 /// (shrink_divergence), writes OUT_DIR/neighbourhood.obj and OUT_DIR/minimal.obj and
 /// prints the compare line that reproduces the minimal one.
 int run_scheme_diff(const std::string& in, const PolySchemeArgs& s, const std::string& against, const std::string& out_dir,
-                    double timeout);
+                    double timeout, const verification::Implementation* subject = nullptr,
+                    const std::string& subject_command = {});
 
 struct LimitArgs {
     std::string input, scheme = "loop", weights = "loop", boundary = "edge-only", against, json, out;

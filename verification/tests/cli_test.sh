@@ -237,6 +237,7 @@ expect split-flip 0 '768 faces, 1 level\(s\), split-flip\)' -- "$crossdiv" subdi
 expect cc-subdivide 0 '26 vertices, 24 faces, 1 level\(s\), catmull-clark edge-only core' -- "$crossdiv" subdivide bundled:quad-cube --scheme catmull-clark -o "$tmp/cc.obj"
 expect cc-compare 1 'openmesh +midpoint-average +diverge .*boundary-rule' -- "$crossdiv" compare bundled:quad-grid --scheme catmull-clark --levels 2
 expect cc-compare-closed 0 'every reference agrees' -- "$crossdiv" compare bundled:quad-torus --scheme catmull-clark --levels 2 --json "$tmp/cc.json"
+expect cc-subject-named 0 'rule: midpoint-average' -- "$crossdiv" compare bundled:quad-grid --scheme catmull-clark --levels 2 --subject-name mine --subject "$crossdiv subdivide {in} --scheme catmull-clark --boundary midpoint-average --levels {levels} -o {out}"
 expect cc-midpoint-loop 2 "loop has no boundary rule 'midpoint-average'" -- "$crossdiv" subdivide bundled:torus --boundary midpoint-average -o "$tmp/x.obj"
 expect limit-loop 0 'against opensubdiv: agree' -- "$crossdiv" limit bundled:open-patch --scheme loop --levels 2 --against opensubdiv -o "$tmp/lim.obj" --json "$tmp/lim.json"
 expect limit-cc-nonquad 2 'needs quads \(refine one level first\)' -- "$crossdiv" limit bundled:prism-5 --scheme catmull-clark
@@ -285,6 +286,7 @@ expect subject-rule 0 "subject 'student': Loop scheme, weights=warren at interio
   "$crossdiv" compare bundled:icosahedron --levels 2 --subject "$student" --subject-name student
 expect subject-crash 1 "subject 'subject' failed: crashed: signal 11" -- \
   "$crossdiv" compare bundled:tetrahedron --levels 1 --subject "python3 $root/verification/tests/subjects/misbehaving_subject.py crash {in} {levels} {out}"
+expect cc-subject-crash 1 "subject 'mine' failed: crashed" -- "$crossdiv" compare bundled:quad-grid --scheme catmull-clark --subject-name mine --subject "python3 $root/verification/tests/subjects/misbehaving_subject.py crash {in} {levels} {out}"
 expect subject-unexplained 1 "shrink it: +crossdiv diff bundled:open-patch --levels 1 .*--subject '.*keep-boundary" -- \
   "$crossdiv" compare bundled:open-patch --subject "python3 $root/verification/tests/subjects/misbehaving_subject.py keep-boundary {in} {levels} {out}"
 expect subject-diff 0 'minimal: .* \(2 faces, 4 vertices\) .*no named rule fits' -- \

@@ -156,7 +156,7 @@ TEST(Manifest, BadReferenceAndSubjectStatementsNameTheLine) {
     EXPECT_NE(error("reference w command='a {out}\n").find(":2: unclosed '"), std::string::npos);
     EXPECT_NE(error("reference opensubdiv command='a {out}'\n").find(":2: a reference named 'opensubdiv' exists already"),
               std::string::npos);
-    EXPECT_NE(error("subject s command='a {out}'\ncase catalog spectrum\n").find(":3: a subject is compared in the loop operation only"),
+    EXPECT_NE(error("subject s command='a {out}'\ncase catalog spectrum\n").find(":3: a subject is compared in the scheme comparisons only"),
               std::string::npos);
 }
 
@@ -172,7 +172,7 @@ TEST(Callback, IsComparedAndItsRuleNamed) {
     const RefinementComparison c = compare_refinement(datasets::bundled_mesh("icosahedron"), "icosahedron", req);
     ASSERT_FALSE(c.subject_failed()) << c.subject_outcome.summary();
     ASSERT_TRUE(c.rules && c.rules->rule);
-    EXPECT_EQ(*c.rules->rule, (LoopOptions{LoopWeights::Warren, LoopBoundary::EdgeOnly}));
+    EXPECT_EQ(c.rules->rule->loop, (LoopOptions{LoopWeights::Warren, LoopBoundary::EdgeOnly}));
     for (const RefinementRun& r : c.runs) EXPECT_EQ(r.divergence_class, DivergenceClass::WeightFamily) << r.reference;
 
     const auto crashing = make_callback_implementation("crashing", {Scheme::Loop}, [](const PolyMesh&, const RefineRequest&) -> PolyMesh {

@@ -12,6 +12,7 @@
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/datasets/edge_cases.h"
 #include "crossdiv/verification/implementations/inputs.h"
+#include "crossdiv/subdiv/loop.h"
 #include "crossdiv/verification/comparisons/refinement_comparison.h"
 #include "crossdiv/verification/harness/mesh_topology.h"
 #include "crossdiv/verification/implementations/registry.h"

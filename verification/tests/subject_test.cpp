@@ -13,6 +13,7 @@
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/verification/comparisons/refinement_comparison.h"
 #include "crossdiv/verification/comparisons/shrink.h"
+#include "crossdiv/verification/implementations/callback_implementation.h"
 #include "crossdiv/verification/implementations/program_implementation.h"
 #include "crossdiv/verification/implementations/registry.h"
 #include "test_inputs.h"
@@ -77,7 +78,7 @@ TEST(Program, RunsFromAFolderWhoseNameAShellWouldInterpret) {
     const RefinementComparison c = compare_with(*subject, "octahedron", 1);
     EXPECT_EQ(c.subject_outcome.status, RunStatus::Ok) << c.subject_outcome.summary();
     ASSERT_TRUE(c.rules && c.rules->rule);
-    EXPECT_EQ(c.rules->rule->weights, LoopWeights::Warren);  // the assignment's 3/(8n), 3/32 at valence 4
+    EXPECT_EQ(c.rules->rule->loop.weights, LoopWeights::Warren);  // the assignment's 3/(8n), 3/32 at valence 4
     EXPECT_FALSE(fs::exists("PWNED"));
     EXPECT_FALSE(fs::exists(base / "PWNED"));
     EXPECT_FALSE(fs::exists(fs::temp_directory_path() / "PWNED"));
@@ -157,7 +158,7 @@ TEST(Program, InAnotherNumberingIsMatchedByPositionAndAgrees) {
     // Old vertices are not first, so provenance cannot match it: positions do, at every level.
     EXPECT_EQ(c.subject_match.method, MatchMethod::Nearest);
     ASSERT_TRUE(c.rules && c.rules->rule);
-    EXPECT_EQ(*c.rules->rule, (LoopOptions{LoopWeights::Loop, LoopBoundary::EdgeOnly}));
+    EXPECT_EQ(c.rules->rule->loop, (LoopOptions{LoopWeights::Loop, LoopBoundary::EdgeOnly}));
     EXPECT_EQ(c.rules->classified_level, 1);
     ASSERT_FALSE(c.runs.empty());
     for (const RefinementRun& r : c.runs) EXPECT_EQ(r.verdict, Verdict::Agree) << r.reference << ": " << r.explanation;
@@ -165,7 +166,7 @@ TEST(Program, InAnotherNumberingIsMatchedByPositionAndAgrees) {
 
 const RuleFit& fit(const VertexClassRow& row, LoopWeights w, LoopBoundary b) {
     for (const RuleFit& f : row.fits)
-        if (f.rule == LoopOptions{w, b}) return f;
+        if (f.rule.loop == LoopOptions{w, b}) return f;
     throw std::logic_error("no such rule");
 }
 
@@ -186,7 +187,7 @@ TEST(RuleIdentification, TheCourseStudentFollowsWarrenAtInteriorVerticesAndHasNo
     EXPECT_FALSE(fit(v5, LoopWeights::Loop, LoopBoundary::EdgeOnly).fits);
     EXPECT_EQ(row(*ico.rules, VertexClass::InteriorEdgePoint).count, 30);
     ASSERT_TRUE(ico.rules->rule);
-    EXPECT_EQ(ico.rules->rule->weights, LoopWeights::Warren);
+    EXPECT_EQ(ico.rules->rule->loop.weights, LoopWeights::Warren);
     for (const RefinementRun& r : ico.runs) {
         EXPECT_EQ(r.verdict, Verdict::Diverge) << r.reference << ": " << r.explanation;
         EXPECT_EQ(r.divergence_class, DivergenceClass::WeightFamily) << r.reference << ": " << r.explanation;
@@ -215,7 +216,7 @@ TEST(RuleIdentification, FinalLevelOnlyIdentifiesTheWholeMeshRule) {
     EXPECT_EQ(c.rules->classified_level, 0);
     EXPECT_TRUE(c.rules->rows.empty());
     ASSERT_TRUE(c.rules->rule);
-    EXPECT_EQ(c.rules->rule->weights, LoopWeights::Warren);
+    EXPECT_EQ(c.rules->rule->loop.weights, LoopWeights::Warren);
 }
 
 TEST(ResultFile, ASubmittedResultIsComparedAtItsLevel) {
@@ -285,6 +286,89 @@ TEST(ShrinkSubject, AgainstAReferenceKeepsTheReferencesDivergenceClass) {
 TEST(ShrinkSubject, ASubjectThatFollowsANamedRuleHasNothingToShrink) {
     const auto student = program(kStudent);
     EXPECT_THROW(shrink_divergence(datasets::bundled_mesh("open-patch"), "open-patch", subject_alone(*student, 1)), InputError);
+}
+
+
+// Subjects of the other schemes: a callback in core's place, whose rule is named from core's
+// named rules of its scheme, class by class where the scheme is primal.
+std::unique_ptr<Implementation> core_as_subject(Scheme scheme, SchemeRule rule) {
+    return make_callback_implementation("mine", {scheme}, [scheme, rule](const PolyMesh& m, const RefineRequest& r) {
+        return core_implementation().refine_last(m, {scheme, rule, r.levels});
+    });
+}
+
+/// `subject` in core's place under `scheme` on a bundled mesh, two levels.
+RefinementComparison compare_scheme_subject(Scheme scheme, const Implementation& subject, const std::string& mesh,
+                                            bool with_references) {
+    RefinementRequest req;
+    req.scheme = scheme;
+    req.levels = 2;
+    req.subject = &subject;
+    req.without_references = !with_references;
+    return compare_refinement(datasets::bundled_mesh(mesh), mesh, req);
+}
+
+const VertexClassRow* class_row(const RuleIdentification& id, VertexClass cls, int valence = 0) {
+    for (const VertexClassRow& r : id.rows)
+        if (r.cls == cls && r.valence == valence) return &r;
+    return nullptr;
+}
+
+TEST(SchemeSubject, ACatmullClarkWithOpenMeshsBoundaryIsNamedClassByClass) {
+    const auto mine = core_as_subject(Scheme::CatmullClark, rule_from_boundary_name(Scheme::CatmullClark, "midpoint-average"));
+    const RefinementComparison c = compare_scheme_subject(Scheme::CatmullClark, *mine, "quad-grid", true);
+    ASSERT_FALSE(c.subject_failed()) << c.subject_outcome.summary() << c.subject_unmatched;
+    ASSERT_TRUE(c.rules && c.rules->rule);
+    EXPECT_EQ(c.rules->rule->catmull_clark.boundary, CatmullClarkBoundary::MidpointAverage);
+    // Level 1, class by class: the face points (quads) and the interior fit every rule; the
+    // boundary vertices only midpoint-average.
+    const VertexClassRow* faces = class_row(*c.rules, VertexClass::FacePoint, 4);
+    const VertexClassRow* boundary = class_row(*c.rules, VertexClass::BoundaryVertex);
+    ASSERT_TRUE(faces && boundary);
+    EXPECT_TRUE(std::all_of(faces->fits.begin(), faces->fits.end(), [](const RuleFit& f) { return f.fits; }));
+    for (const RuleFit& f : boundary->fits)
+        EXPECT_EQ(f.fits, f.rule.catmull_clark.boundary == CatmullClarkBoundary::MidpointAverage) << f.name;
+    for (const RefinementRun& r : c.runs) {
+        SCOPED_TRACE(r.reference + ": " + r.explanation);
+        if (r.rule.starts_with("midpoint-average")) EXPECT_EQ(r.verdict, Verdict::Agree);
+        else EXPECT_EQ(r.divergence_class, DivergenceClass::BoundaryRule);
+    }
+}
+
+TEST(SchemeSubject, ADooSabinThatDropsTheBorderIsMatchedInThatRulesNumbering) {
+    // Dropping the border faces changes the vertex set: the subject is matched to core under
+    // the rule whose levels it has, and named by it.
+    const auto mine = core_as_subject(Scheme::DooSabin, rule_from_boundary_name(Scheme::DooSabin, "drop-border-faces"));
+    const RefinementComparison c = compare_scheme_subject(Scheme::DooSabin, *mine, "quad-grid", false);
+    ASSERT_TRUE(c.rules && c.rules->rule) << c.subject_outcome.summary() << c.subject_unmatched;
+    EXPECT_EQ(rule_name(Scheme::DooSabin, *c.rules->rule), "drop-border-faces");
+    EXPECT_TRUE(c.rules->rows.empty());  // a dual scheme: the whole mesh only
+}
+
+TEST(SchemeSubject, AWrongWeightFitsNoRuleAndAFailureIsTheSubjectsForEveryScheme) {
+    // sqrt3 whose new points are pulled a thousandth of the way to vertex 0 (still matched by
+    // position, as a dual scheme is): no rule fits.
+    const auto off = make_callback_implementation("off", {Scheme::Sqrt3}, [](const PolyMesh& m, const RefineRequest& r) {
+        PolyMesh out = core_implementation().refine_last(m, r);
+        for (int v = m.num_vertices(); v < out.num_vertices(); ++v) out.positions[v] += 1e-3 * (out.positions[0] - out.positions[v]);
+        return out;
+    });
+    RefinementRequest req;
+    req.scheme = Scheme::Sqrt3;
+    req.levels = 1;
+    req.subject = off.get();
+    req.without_references = true;
+    const RefinementComparison c = compare_refinement(datasets::bundled_mesh("icosahedron"), "icosahedron", req);
+    ASSERT_TRUE(c.rules.has_value()) << c.subject_unmatched;
+    EXPECT_FALSE(c.rules->rule.has_value());
+    for (const Scheme scheme : {Scheme::CatmullClark, Scheme::Butterfly, Scheme::Bilinear}) {
+        const auto crashing = make_callback_implementation("crashing", {scheme}, [](const PolyMesh&, const RefineRequest&) -> PolyMesh {
+            std::abort();
+        });
+        const RefinementComparison failed = compare_scheme_subject(scheme, *crashing, "octahedron", false);
+        EXPECT_TRUE(failed.subject_failed()) << to_string(scheme);
+        EXPECT_EQ(failed.subject_outcome.status, RunStatus::Crashed) << to_string(scheme);
+    }
 }
 
 }  // namespace

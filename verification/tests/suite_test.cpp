@@ -127,8 +127,11 @@ TEST(Manifest, ReadsTheKeysOfEveryScheme) {
     EXPECT_EQ(jobs.front().id, "bundled:" + datasets::bundled_meshes().front().name +
                                    " | catmull-clark boundary=edge-and-corner crease-method=chaikin L3 strict");
     EXPECT_EQ(jobs.back().id, "bundled:" + datasets::polygon_meshes().back().name + " | doo-sabin boundary=default L1 weak tol=1e-12");
-    // A subject replaces core in the loop cases only, so far.
-    EXPECT_THROW(read_manifest(write(d / "b.suite", "suite s\nsubject s command='a {out}'\ncase bundled:all sqrt3\n")),
+    // A subject replaces core in the comparisons of every scheme, not in a study.
+    const Manifest with_subject = read_manifest(write(d / "b.suite", "suite s\nsubject s command='a {out}'\ncase bundled:all sqrt3\n"));
+    ASSERT_TRUE(with_subject.entries.at(0).subject);
+    EXPECT_EQ(with_subject.entries.at(0).subject->name, "s");
+    EXPECT_THROW(read_manifest(write(d / "c.suite", "suite s\nsubject s command='a {out}'\ncase catalog schemes\n")),
                  ParseError);
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstring>
 #include <deque>
 
 #include "crossdiv/error.h"
@@ -236,8 +237,6 @@ bool RefinementComparison::all_agree() const {
 }
 
 RefinementComparison compare_refinement(const PolyMesh& input, const std::string& name, const RefinementRequest& req) {
-    if (req.subject && req.scheme != Scheme::Loop)
-        throw InputError("a subject is compared under the Loop scheme so far, not " + std::string(to_string(req.scheme)));
     RefinementComparison out;
     out.input = name;
     out.scheme = req.scheme;
@@ -260,6 +259,7 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
     // The implementation under test: core with the requested rule, or the subject in core's
     // numbering with the rule it is measured to follow (none when no named rule fits).
     const adapters::LevelTrace* under_test = &requested.levels();
+    const CoreRun* numbered_as = &requested;  // the core run whose numbering the implementation under test has
     adapters::LevelTrace subject;
     std::optional<SchemeRule> subject_rule = req.rule;
     const std::string subject_name = req.subject ? req.subject->name() : "core";
@@ -269,25 +269,33 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
                                             req.isolate);
         out.subject_outcome = iso.outcome;
         if (iso.outcome.status != RunStatus::Ok) return out;
+        // Core's numbering under the requested rule; for a scheme whose rules change the
+        // vertex set (a Doo-Sabin border dropped, sqrt3's other parity), under the first named
+        // rule whose levels the subject's match.
+        const std::vector<SchemeRule> rules = named_rules(req.scheme);
         out.subject_match = renumber_subject(requested.levels(), *iso.trace, subject);
+        for (size_t r = 0; r < rules.size() && out.subject_match.method == MatchMethod::None && !primal; ++r) {
+            const CoreRun& other = core.with(rules[r]);
+            if (!other.error.empty() || &other == &requested) continue;
+            adapters::LevelTrace renumbered;
+            const Correspondence m = renumber_subject(other.levels(), *iso.trace, renumbered);
+            if (m.method == MatchMethod::None) continue;
+            out.subject_match = m;
+            subject = std::move(renumbered);
+            numbered_as = &other;
+        }
         if (out.subject_match.method == MatchMethod::None) {
             out.subject_unmatched = "no vertex correspondence with core's refinement: " + out.subject_match.note;
             return out;
         }
         std::vector<std::vector<PolyMesh>> by_rule;
-        for (const LoopOptions& o : loop_named_rules()) {
-            SchemeRule r = req.rule;
-            r.loop = o;
+        for (const SchemeRule& r : rules) {
             const adapters::LevelTrace& levels = core.with(r).levels();
             by_rule.emplace_back(levels.begin() + 1, levels.end());
         }
-        out.rules = identify_loop_rule(input, {subject.begin() + 1, subject.end()}, by_rule, requested.refinement.births,
-                                       req.rule.loop, req.tolerance);
-        subject_rule.reset();
-        if (out.rules->rule) {
-            subject_rule = req.rule;
-            subject_rule->loop = *out.rules->rule;
-        }
+        out.rules = identify_rule(req.scheme, input, {subject.begin() + 1, subject.end()}, by_rule,
+                                  numbered_as->refinement.births, req.rule, req.tolerance);
+        subject_rule = out.rules->rule;
         under_test = &subject;
     }
     const PolyMesh& ours = under_test->back();
@@ -380,7 +388,7 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
         }
         // The map holds for the implementation under test where its numbering is that of the
         // run it was matched to: always for a primal scheme (rules do not change its faces).
-        const bool map_holds = primal || matched_to == &requested || matched_to->last().num_vertices() == ours.num_vertices();
+        const bool map_holds = primal || matched_to == numbered_as || matched_to->last().num_vertices() == ours.num_vertices();
         const std::vector<int> no_map;
         const std::vector<int>& map = map_holds ? run.correspondence.ref_to_ours : no_map;
 
@@ -473,11 +481,7 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
         // reference's (on a closed mesh both boundary rules fit, and only the weights can
         // tell them apart).
         std::optional<SchemeRule> applied_rule = subject_rule;
-        if (req.subject && out.rules)
-            if (const std::optional<LoopOptions> nearest = nearest_fitting_rule(*out.rules, run.ran_with.loop)) {
-                applied_rule = req.rule;
-                applied_rule->loop = *nearest;
-            }
+        if (req.subject && out.rules) applied_rule = nearest_fitting_rule(*out.rules, run.ran_with);
         std::string still;  // what core with the reference's rule still differs by, when it does
         tests.reference_rule = [&]() -> std::optional<Classification> {
             if (!applied_rule || same_rule(req.scheme, run.ran_with, *applied_rule)) return std::nullopt;
@@ -517,15 +521,16 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
                                                          "differ beyond that (isolated-vertex-handling too), by up to " +
                                    sci(c2.max_rel)
                              : "core with " + run.rule + " agrees to " + sci(c2.max_rel);
-            const std::string differs =
-                same_faces ? " differs by " + sci(run.comparison.max_rel) + " of the diagonal" + worst
-                           : " makes different faces (" + faces + ")";
+            const auto differs = [&](const char* verb) {
+                return same_faces ? " " + std::string(verb) + " by " + sci(run.comparison.max_rel) + " of the diagonal" + worst
+                                  : " make" + std::string(verb[std::strlen(verb) - 1] == 's' ? "s" : "") + " different faces (" + faces + ")";
+            };
             const DivergenceClass cls = rule_difference_class(req.scheme, run.ran_with, *applied_rule);
             if (req.subject)
                 return Classification{cls, subject_name + " applies " + rule + ", " + ref.name() + " " + run.rule + " (" +
-                                               agrees + "); they" + differs};
+                                               agrees + "); they" + differs("differ")};
             return Classification{cls, rule_effect(req.scheme, ref.name(), rule, run.rule, req.levels) + ": " + agrees +
-                                           "; core's " + rule + differs};
+                                           "; core's " + rule + differs("differs")};
         };
         tests.valence_table = valence_table;
         tests.nonmanifold = [&]() -> std::optional<Classification> {
@@ -584,7 +589,8 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
     if (worst_run) {
         const WorstVertex& w = worst_run->comparison.worst[0];
         out.worst_vertex = CaseWorstVertex{w.ours_index, w.valence, w.boundary, w.ours, std::nullopt, {}};
-        if (req.subject) out.worst_vertex->core_with_requested_rule = requested.last().positions[static_cast<size_t>(w.ours_index)];
+        if (req.subject && numbered_as == &requested)
+            out.worst_vertex->core_with_requested_rule = requested.last().positions[static_cast<size_t>(w.ours_index)];
         for (const auto& [reference, positions] : in_our_order)
             out.worst_vertex->reference_positions[reference] = positions[static_cast<size_t>(w.ours_index)];
     }
@@ -596,14 +602,9 @@ namespace {
 nlohmann::json subject_json(const RefinementComparison& c) {
     using nlohmann::json;
     auto finite = [](double x) { return std::isfinite(x) ? json(x) : json(nullptr); };
-    auto describe = [&](const LoopOptions& o) {
-        SchemeRule r = c.rule;
-        r.loop = o;
-        return rule_name(c.scheme, r);
-    };
     auto fits = [&](const std::vector<RuleFit>& list) {
         json a = json::array();
-        for (const RuleFit& f : list) a.push_back({{"rule", describe(f.rule)}, {"max_rel", finite(f.max_rel)}, {"fits", f.fits}});
+        for (const RuleFit& f : list) a.push_back({{"rule", f.name}, {"max_rel", finite(f.max_rel)}, {"fits", f.fits}});
         return a;
     };
     json s = {{"name", c.subject},
@@ -619,7 +620,7 @@ nlohmann::json subject_json(const RefinementComparison& c) {
             rows.push_back({{"class", to_string(r.cls)}, {"valence", r.valence}, {"count", r.count},
                             {"worst_vertex", r.worst_vertex}, {"fits", fits(r.fits)}});
         s["rules"] = {{"classified_level", c.rules->classified_level},
-                      {"rule", c.rules->rule ? json(describe(*c.rules->rule)) : json(nullptr)},
+                      {"rule", c.rules->rule ? json(rule_name(c.scheme, *c.rules->rule)) : json(nullptr)},
                       {"whole", fits(c.rules->whole)},
                       {"classes", rows}};
     }

@@ -5,6 +5,7 @@
 
 #include "crossdiv/mesh/tri_mesh.h"
 #include "crossdiv/verification/harness/mesh_topology.h"
+#include "crossdiv/verification/implementations/registry.h"
 #include "harness/sci.h"
 
 namespace crossdiv::verification {
@@ -12,18 +13,12 @@ namespace {
 
 using detail::sci;
 
-std::string rule_text(const LoopOptions& o) {
-    return "weights=" + std::string(to_string(o.weights)) + " boundary=" + std::string(to_string(o.boundary));
-}
-
-/// The class of each vertex of level l from its birth and level l-1's topology (Loop: vertex
-/// and edge points only).
+/// The class of each vertex of level l from its birth and level l-1's topology.
 std::vector<std::pair<VertexClass, int>> classify(const std::vector<VertexBirth>& births, const PolyMesh& parent) {
     const MeshTopology t = mesh_topology(parent);
     std::vector<int> faces_of(static_cast<size_t>(parent.num_vertices()), 0);
     for (int v : parent.face_vertices) ++faces_of[static_cast<size_t>(v)];
-    // An edge is on the boundary when both ends are boundary vertices and it has one face:
-    // count each edge's faces by its sorted key.
+    // An edge is on the boundary when it has one face: count each edge's faces by its sorted key.
     std::vector<std::array<int, 2>> face_edges;
     for (int f = 0; f < parent.num_faces(); ++f) {
         const int* fv = parent.face(f);
@@ -42,6 +37,10 @@ std::vector<std::pair<VertexClass, int>> classify(const std::vector<VertexBirth>
     std::vector<std::pair<VertexClass, int>> out;
     out.reserve(births.size());
     for (const VertexBirth& o : births) {
+        if (o.kind == VertexBirth::Kind::Face) {
+            out.push_back({VertexClass::FacePoint, parent.face_size(o.a)});
+            continue;
+        }
         if (o.kind == VertexBirth::Kind::Edge) {
             out.push_back({edge_faces(o.a, o.b) == 1 ? VertexClass::BoundaryEdgePoint : VertexClass::InteriorEdgePoint, 0});
             continue;
@@ -64,30 +63,36 @@ const char* to_string(VertexClass cls) {
         case VertexClass::Corner: return "corner";
         case VertexClass::InteriorEdgePoint: return "interior-edge-point";
         case VertexClass::BoundaryEdgePoint: return "boundary-edge-point";
+        case VertexClass::FacePoint: return "face-point";
         case VertexClass::IsolatedVertex: return "isolated-vertex";
     }
     return "unknown";
 }
 
-std::vector<LoopOptions> loop_named_rules() {
-    std::vector<LoopOptions> rules;
-    for (LoopWeights w : kAllLoopWeights)
-        for (LoopBoundary b : {LoopBoundary::EdgeOnly, LoopBoundary::EdgeAndCorner}) rules.push_back({w, b});
-    return rules;
+std::vector<SchemeRule> named_rules(Scheme scheme) {
+    const SchemeSupport* support = core_implementation().support(scheme);
+    return support ? support->rules : std::vector<SchemeRule>{};
 }
 
-RuleIdentification identify_loop_rule(const PolyMesh& input, const std::vector<PolyMesh>& subject,
-                                      const std::vector<std::vector<PolyMesh>>& core,
-                                      const std::vector<std::vector<VertexBirth>>& births, const LoopOptions& requested,
-                                      double tolerance) {
-    const std::vector<LoopOptions> rules = loop_named_rules();
+RuleIdentification identify_rule(Scheme scheme, const PolyMesh& input, const std::vector<PolyMesh>& subject,
+                                 const std::vector<std::vector<PolyMesh>>& core,
+                                 const std::vector<std::vector<VertexBirth>>& births, const SchemeRule& requested,
+                                 double tolerance) {
+    const std::vector<SchemeRule> rules = named_rules(scheme);
     RuleIdentification id;
-    // Whole mesh, every compared level.
+    id.scheme = scheme;
+    const auto fit_of = [&](size_t r) { return RuleFit{rules[r], rule_name(scheme, rules[r]), 0, false}; };
+    // Whole mesh, every compared level. A named rule may make another vertex count (a
+    // Doo-Sabin border dropped, sqrt3's other parity): it does not fit.
     for (size_t r = 0; r < rules.size(); ++r) {
-        RuleFit fit{rules[r], 0, true};
+        RuleFit fit = fit_of(r);
         for (size_t l = 0; l < subject.size(); ++l) {
             if (subject[l].num_vertices() == 0) continue;
             const PolyMesh& c = core[r][l];
+            if (c.num_vertices() != subject[l].num_vertices()) {
+                fit.max_rel = INFINITY;
+                continue;
+            }
             const double d = bounding_box_diagonal(c.positions);
             for (size_t v = 0; v < c.positions.size(); ++v) {
                 const double e = (subject[l].positions[v] - c.positions[v]).norm() / (d > 0 ? d : 1);
@@ -98,12 +103,12 @@ RuleIdentification identify_loop_rule(const PolyMesh& input, const std::vector<P
         id.whole.push_back(fit);
     }
     for (const RuleFit& f : id.whole)
-        if (f.fits && f.rule == requested) id.rule = f.rule;
+        if (f.fits && same_rule(scheme, f.rule, requested)) id.rule = f.rule;
     for (const RuleFit& f : id.whole)
         if (f.fits && !id.rule) id.rule = f.rule;
 
     // Classes at level 1, the only level whose vertices see the rule of their class alone.
-    if (subject.empty() || subject[0].num_vertices() == 0) return id;
+    if (subject.empty() || subject[0].num_vertices() == 0 || births.empty()) return id;
     id.classified_level = 1;
     const std::vector<std::pair<VertexClass, int>> cls = classify(births[0], input);
     const double d = bounding_box_diagonal(core[0][0].positions);
@@ -113,12 +118,16 @@ RuleIdentification identify_loop_rule(const PolyMesh& input, const std::vector<P
         });
         if (row == id.rows.end()) {
             VertexClassRow fresh{cls[v].first, cls[v].second, 0, {}, -1};
-            for (const LoopOptions& r : rules) fresh.fits.push_back({r, 0, false});
+            for (size_t r = 0; r < rules.size(); ++r) fresh.fits.push_back(fit_of(r));
             id.rows.push_back(fresh);
             row = id.rows.end() - 1;
         }
         ++row->count;
         for (size_t r = 0; r < rules.size(); ++r) {
+            if (core[r][0].num_vertices() != subject[0].num_vertices()) {
+                row->fits[r].max_rel = INFINITY;
+                continue;
+            }
             const double e = (subject[0].positions[v] - core[r][0].positions[v]).norm() / (d > 0 ? d : 1);
             row->fits[r].max_rel = std::isnan(e) ? INFINITY : std::max(row->fits[r].max_rel, e);
         }
@@ -131,6 +140,7 @@ RuleIdentification identify_loop_rule(const PolyMesh& input, const std::vector<P
                                            [](const RuleFit& a, const RuleFit& b) { return a.max_rel < b.max_rel; });
         const size_t r = static_cast<size_t>(best - row.fits.begin());
         double worst = -1;
+        if (core[r][0].num_vertices() != subject[0].num_vertices()) continue;
         for (size_t v = 0; v < cls.size(); ++v) {
             if (cls[v].first != row.cls || cls[v].second != row.valence) continue;
             const double e = (subject[0].positions[v] - core[r][0].positions[v]).norm();
@@ -146,12 +156,16 @@ RuleIdentification identify_loop_rule(const PolyMesh& input, const std::vector<P
     return id;
 }
 
-std::optional<LoopOptions> nearest_fitting_rule(const RuleIdentification& id, const LoopOptions& other) {
-    std::optional<LoopOptions> best;
+std::optional<SchemeRule> nearest_fitting_rule(const RuleIdentification& id, const SchemeRule& other) {
+    std::optional<SchemeRule> best;
     int best_score = -1;
     for (const RuleFit& f : id.whole) {
         if (!f.fits) continue;
-        const int score = f.rule == other ? 3 : f.rule.weights == other.weights ? 2 : f.rule.boundary == other.boundary ? 1 : 0;
+        const bool loop = id.scheme == Scheme::Loop;
+        const int score = same_rule(id.scheme, f.rule, other)                           ? 3
+                          : loop && f.rule.loop.weights == other.loop.weights   ? 2
+                          : loop && f.rule.loop.boundary == other.loop.boundary ? 1
+                                                                                : 0;
         if (score > best_score) {
             best = f.rule;
             best_score = score;
@@ -161,7 +175,7 @@ std::optional<LoopOptions> nearest_fitting_rule(const RuleIdentification& id, co
 }
 
 void RuleTally::add(const RuleIdentification& id) {
-    const size_t n = loop_named_rules().size();
+    const size_t n = named_rules(scheme_).size();
     if (whole_fits_.empty()) {
         whole_fits_.assign(n, 0);
         whole_max_.assign(n, 0);
@@ -190,7 +204,30 @@ void RuleTally::add(const RuleIdentification& id) {
 }
 
 std::string RuleTally::rule_phrase() const {
-    const std::vector<LoopOptions> rules = loop_named_rules();
+    if (scheme_ == Scheme::Loop) return loop_phrase();
+    // Another scheme: the named rules that fit every input's whole mesh, and the classes no
+    // named rule fits.
+    const std::vector<SchemeRule> rules = named_rules(scheme_);
+    std::vector<std::string> parts;
+    std::string fitting;
+    for (size_t r = 0; r < rules.size() && r < whole_fits_.size(); ++r)
+        if (whole_fits_[r] == inputs_ && inputs_ > 0) fitting += (fitting.empty() ? "" : " or ") + rule_name(scheme_, rules[r]);
+    parts.push_back(fitting.empty() ? "no named rule on every input" : "the " + fitting + " rule");
+    for (const Tally& t : rows_) {
+        if (std::any_of(t.fits.begin(), t.fits.end(), [](char f) { return f != 0; })) continue;
+        parts.push_back("no named rule at " + std::string(to_string(t.key.cls)) +
+                        (t.key.valence ? " " + std::to_string(t.key.valence) : "") + " (off by " +
+                        sci(*std::min_element(t.max_rel.begin(), t.max_rel.end())) + ")");
+    }
+    std::string s = std::string(to_string(scheme_)) + " scheme";
+    for (const std::string& p : parts) s += ", " + p;
+    return s;
+}
+
+std::string RuleTally::loop_phrase() const {
+    const std::vector<SchemeRule> rule_list = named_rules(Scheme::Loop);
+    std::vector<LoopOptions> rules;
+    for (const SchemeRule& r : rule_list) rules.push_back(r.loop);
     auto fits_any = [&](const Tally& t, auto&& pred) {
         for (size_t r = 0; r < rules.size(); ++r)
             if (t.fits[r] && pred(rules[r])) return true;
@@ -266,11 +303,11 @@ std::string RuleTally::rule_phrase() const {
 }
 
 std::string RuleTally::core_phrase() const {
-    const std::vector<LoopOptions> rules = loop_named_rules();
+    const std::vector<SchemeRule> rules = named_rules(scheme_);
     if (whole_fits_.empty()) return "no input compared";
     const size_t best = static_cast<size_t>(std::max_element(whole_fits_.begin(), whole_fits_.end()) - whole_fits_.begin());
     if (whole_fits_[best] == 0) return "agrees with core under no named rule on any input";
-    return "agrees with core " + rule_text(rules[best]) + " to " + sci(whole_max_[best]) + " on " +
+    return "agrees with core " + rule_name(scheme_, rules[best]) + " to " + sci(whole_max_[best]) + " on " +
            std::to_string(whole_fits_[best]) + " of " + std::to_string(inputs_) + " meshes";
 }
 

@@ -237,11 +237,8 @@ ShrinkResult shrink_divergence(const PolyMesh& mesh, const std::string& name, co
         if (!r.original.runs.empty())
             what = r.original.runs[0].reference + " does not diverge from " + r.original.subject + " nor fail (" +
                    to_string(r.original.runs[0].verdict) + ": " + r.original.runs[0].explanation + ")";
-        else if (r.original.rules && r.original.rules->rule) {
-            SchemeRule followed = req.rule;
-            followed.loop = *r.original.rules->rule;
-            what = r.original.subject + " follows the named rule " + rule_name(req.scheme, followed);
-        }
+        else if (r.original.rules && r.original.rules->rule)
+            what = r.original.subject + " follows the named rule " + rule_name(req.scheme, *r.original.rules->rule);
         throw InputError(name + ": " + what + "; nothing to shrink");
     }
     r.symptom = *symptom;

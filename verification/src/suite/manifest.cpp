@@ -334,9 +334,9 @@ Manifest read_manifest(std::istream& in, const std::string& path, const std::str
         } else if (keyword == "case") {
             m.entries.push_back(parse_case(path, line, words));
             m.entries.back().subject = subject;
-            if (subject && m.entries.back().operation->name != "loop")
-                throw ParseError(path, line, "a subject is compared in the loop operation only; put the " +
-                                                 m.entries.back().operation->name + " cases before the subject statement");
+            if (subject && m.entries.back().operation->kind != OperationKind::Comparison)
+                throw ParseError(path, line, "a subject is compared in the scheme comparisons only (loop, catmull-clark, ...); "
+                                             "put the " + m.entries.back().operation->name + " cases before the subject statement");
         } else {
             throw ParseError(path, line, "unknown statement '" + keyword + "' (known: suite, timeout, max-faces, reference, subject, case)");
         }

@@ -56,7 +56,7 @@ struct RefinementRequest {
     /// The implementation under test: core when null, else (a program, result files, a
     /// callback) its refinement is matched to core's, renumbered into core's numbering, and
     /// compared with each reference in core's place; its Loop rule is identified
-    /// (rule_identification.h). Loop only so far.
+    /// (rule_identification.h), for every scheme.
     const Implementation* subject = nullptr;
     /// Keep, when some reference diverges, every level of the implementation under test with
     /// each matched reference's positions (the report's 3D view), if its last level has at
@@ -125,7 +125,7 @@ struct RefinementComparison {
 
 /// Runs the comparison. Core's refusal is recorded in core_error (the references still run,
 /// with verdicts about what they did); reference failures are recorded, never thrown.
-/// @throws InputError for an unknown reference name, or a subject of a scheme other than Loop.
+/// @throws InputError for an unknown reference name.
 RefinementComparison compare_refinement(const PolyMesh& input, const std::string& name, const RefinementRequest& request);
 
 /// The comparison as JSON (schema in reports/results-schema.md).

@@ -2,81 +2,93 @@
 /// @file
 /// Which named rule an implementation under test follows, measured vertex class by vertex
 /// class. A subject's refinement, renumbered into core's numbering, is compared with core's
-/// refinement under every named Loop rule (weights loop | warren | regularity | continuity, boundary edge-only |
-/// edge-and-corner). At the first compared level each vertex depends only on the input and
-/// on the rule for its class, so the fit of a rule can be read class by class:
+/// refinement under every named rule of its scheme (named_rules: Loop's weights loop | warren
+/// | regularity | continuity x boundary edge-only | edge-and-corner; Catmull-Clark's
+/// boundary rules, OpenMesh's midpoint-average among them, with and without OpenSubdiv's
+/// smooth-triangle weights; Doo-Sabin's border rules; sqrt3's parities; the Butterflies'
+/// wing rules; bilinear's one). At the first compared level each vertex depends only on the
+/// input and on the rule for its class, so the fit of a rule can be read class by class, the
+/// classes read off core's provenance (a primal scheme's: births):
 ///
-///   interior-vertex (by valence)  the weight family (Loop's beta, or Warren's 3/(8n))
-///   boundary-vertex               the boundary mask 1/8, 3/4, 1/8 (every named rule)
-///   corner                        a boundary vertex of one face: kept (edge-and-corner) or
-///                                 moved by the boundary mask (edge-only)
-///   interior-edge-point           3/8, 3/8, 1/8, 1/8 (every named rule)
-///   boundary-edge-point           the midpoint (every named rule)
+///   interior-vertex (by valence)  a vertex point inside: the weight family
+///   boundary-vertex               a vertex point on the boundary: the boundary mask
+///   corner                        a boundary vertex of one face: kept, or moved by the boundary mask
+///   interior-edge-point           an edge point inside
+///   boundary-edge-point           an edge point on the boundary
+///   face-point (by face size)     a face point (Catmull-Clark, bilinear)
 ///   isolated-vertex               a vertex without faces (kept by every named rule)
 ///
 /// A rule fits a class when every vertex of the class lies within the tolerance (relative to
 /// the diagonal) of core's vertex under that rule. The whole-mesh rule is the first named rule
-/// that fits every vertex at every compared level (the requested rule first).
+/// that fits every vertex at every compared level (the requested rule first). A scheme that is
+/// not primal (Doo-Sabin, sqrt3) has no classes: only the whole mesh is measured.
 
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "crossdiv/mesh/poly_mesh.h"
-#include "crossdiv/subdiv/loop.h"
 #include "crossdiv/verification/harness/correspondence.h"
+#include "crossdiv/verification/implementations/scheme.h"
 
 namespace crossdiv::verification {
 
-/// The vertex classes the Loop rules tell apart.
-enum class VertexClass { InteriorVertex, BoundaryVertex, Corner, InteriorEdgePoint, BoundaryEdgePoint, IsolatedVertex };
-/// "interior-vertex", "boundary-vertex", "corner", "interior-edge-point", "boundary-edge-point", "isolated-vertex".
+/// The vertex classes the rules tell apart.
+enum class VertexClass { InteriorVertex, BoundaryVertex, Corner, InteriorEdgePoint, BoundaryEdgePoint, FacePoint, IsolatedVertex };
+/// "interior-vertex", "boundary-vertex", "corner", "interior-edge-point", "boundary-edge-point",
+/// "face-point", "isolated-vertex".
 const char* to_string(VertexClass cls);
 
 /// How far the subject lies from core under one named rule, over some set of vertices.
 struct RuleFit {
-    LoopOptions rule{LoopWeights::Loop, LoopBoundary::EdgeOnly};
+    SchemeRule rule;
+    std::string name;    ///< rule_name of the rule
     double max_rel = 0;  ///< largest distance over the diagonal (INFINITY: not comparable)
     bool fits = false;   ///< max_rel within the tolerance
 };
 
-/// One vertex class (interior vertices: one row per valence) at the classified level.
+/// One vertex class (interior vertices: one row per valence; face points: per face size) at
+/// the classified level.
 struct VertexClassRow {
     VertexClass cls = VertexClass::InteriorVertex;
-    int valence = 0;  ///< the parent vertex's valence (interior vertices); 0 otherwise
+    int valence = 0;  ///< the parent vertex's valence (interior vertices), the face's size (face points); 0 otherwise
     int count = 0;
-    std::vector<RuleFit> fits;  ///< one per named rule, in the order of loop_named_rules()
+    std::vector<RuleFit> fits;  ///< one per named rule, in the order of named_rules()
     /// The vertex (core numbering, classified level) where the best-fitting rule is farthest.
     int worst_vertex = -1;
 };
 
 struct RuleIdentification {
-    int classified_level = 0;  ///< 0: no level was classified (levels=final with more than one level)
+    Scheme scheme = Scheme::Loop;
+    int classified_level = 0;  ///< 0: no level was classified (levels=final with more than one level, or no provenance)
     std::vector<VertexClassRow> rows;
     std::vector<RuleFit> whole;      ///< every vertex at every compared level, per named rule
-    std::optional<LoopOptions> rule; ///< the rule that fits the whole mesh, when one does
+    std::optional<SchemeRule> rule;  ///< the rule that fits the whole mesh, when one does
 };
 
-/// Loop's named rules: weights loop, warren, regularity, continuity x boundary edge-only, edge-and-corner.
-std::vector<LoopOptions> loop_named_rules();
+/// The named rules of `scheme`: every rule core implements, in the order core declares them.
+std::vector<SchemeRule> named_rules(Scheme scheme);
 
 /// Classifies and measures. `subject[l-1]` and `core[r][l-1]` are level l in core's numbering
-/// (an empty subject level was not compared); `births[l-1]` is core's provenance of level l;
-/// `input` is level 0. `core` has one entry per loop_named_rules() rule.
-RuleIdentification identify_loop_rule(const PolyMesh& input, const std::vector<PolyMesh>& subject,
-                                      const std::vector<std::vector<PolyMesh>>& core,
-                                      const std::vector<std::vector<VertexBirth>>& births, const LoopOptions& requested,
-                                      double tolerance);
+/// (an empty subject level was not compared); `births[l-1]` is core's provenance of level l
+/// (empty for a scheme that is not primal); `input` is level 0. `core` has one entry per
+/// named_rules(scheme) rule.
+RuleIdentification identify_rule(Scheme scheme, const PolyMesh& input, const std::vector<PolyMesh>& subject,
+                                 const std::vector<std::vector<PolyMesh>>& core,
+                                 const std::vector<std::vector<VertexBirth>>& births, const SchemeRule& requested,
+                                 double tolerance);
 
 /// Of the named rules that fit the whole mesh, the one nearest `other`: `other` itself, else
-/// one with its weights, else one with its boundary rule, else the first; nothing when none fits.
-std::optional<LoopOptions> nearest_fitting_rule(const RuleIdentification& id, const LoopOptions& other);
+/// (Loop) one with its weights, else one with its boundary rule, else the first; nothing when
+/// none fits.
+std::optional<SchemeRule> nearest_fitting_rule(const RuleIdentification& id, const SchemeRule& other);
 
 /// The rules an implementation under test follows over many inputs, in one sentence:
 /// "Loop scheme, weights=warren at interior vertices (valence 3..12), edge-only boundary, no
 /// corner rule; ...". Fed one identification per input.
 class RuleTally {
 public:
+    explicit RuleTally(Scheme scheme = Scheme::Loop) : scheme_(scheme) {}
     void add(const RuleIdentification& id);
     /// The rule phrases: weights at interior vertices, boundary, corners, edge points.
     std::string rule_phrase() const;
@@ -96,6 +108,8 @@ private:
         std::vector<double> max_rel;  ///< per named rule, the largest over the inputs
         std::vector<char> fits;       ///< per named rule, fits on every input
     };
+    std::string loop_phrase() const;
+    Scheme scheme_;
     std::vector<Tally> rows_;
     std::vector<int> whole_fits_;     ///< per named rule, the inputs where it fits the whole mesh
     std::vector<double> whole_max_;   ///< per named rule, the largest whole-mesh distance where it fits

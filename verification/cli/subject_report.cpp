@@ -1,0 +1,81 @@
+#include "subject_report.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <vector>
+
+namespace crossdiv::cli {
+namespace {
+
+using namespace crossdiv::verification;
+
+/// A rule's column header: Loop's weights/boundary, another scheme's rule name.
+std::string short_name(Scheme scheme, const RuleFit& f) {
+    if (scheme != Scheme::Loop) return f.name;
+    return fmt::format("{}/{}", to_string(f.rule.loop.weights), to_string(f.rule.loop.boundary));
+}
+
+}  // namespace
+
+/// The subject's run, its match to core and the rule fits of each vertex class.
+void print_subject(const RefinementComparison& c) {
+    if (c.subject_outcome.status != RunStatus::Ok) {
+        fmt::print("  subject '{}' failed: {}\n", c.subject, c.subject_outcome.summary());
+        return;
+    }
+    if (!c.subject_unmatched.empty()) {
+        fmt::print("  subject '{}': {}\n", c.subject, c.subject_unmatched);
+        return;
+    }
+    fmt::print("  subject '{}' ran in {:.3f} s; vertices matched to core's by {}\n", c.subject, c.subject_outcome.seconds,
+               to_string(c.subject_match.method));
+    if (!c.rules) return;
+    fmt::print("  {:<22} {:>7}", c.rules->classified_level ? fmt::format("class at level {}", c.rules->classified_level)
+                                                           : std::string("whole mesh"),
+               "count");
+    for (const RuleFit& f : c.rules->whole) fmt::print(" {:>16}", short_name(c.scheme, f));
+    fmt::print("\n");
+    auto cell = [](const RuleFit& f) { return fmt::format("{}{:.2g}", f.fits ? "= " : "  ", f.max_rel); };
+    for (const VertexClassRow& r : c.rules->rows) {
+        const char* of = r.cls == VertexClass::FacePoint ? "size" : "valence";
+        fmt::print("  {:<22} {:>7}", r.valence ? fmt::format("{} ({} {})", to_string(r.cls), of, r.valence) : to_string(r.cls),
+                   r.count);
+        for (const RuleFit& f : r.fits) fmt::print(" {:>16}", cell(f));
+        fmt::print("\n");
+    }
+    fmt::print("  {:<22} {:>7}", "every compared level", "");
+    for (const RuleFit& f : c.rules->whole) fmt::print(" {:>16}", cell(f));
+    fmt::print("\n  rule: {}\n", c.rules->rule ? rule_name(c.scheme, *c.rules->rule) : std::string("no named rule fits"));
+}
+
+bool symptom_of_subject(const RefinementComparison& c) { return c.subject_failed() || (c.rules && !c.rules->rule); }
+
+void SubjectVerdict::add(const RefinementComparison& c) {
+    ++inputs;
+    if (c.subject_failed()) {
+        ++failures;
+        return;
+    }
+    if (c.rules) rules.add(*c.rules);
+    for (const RefinementRun& r : c.runs) {
+        auto& [agree, runs] = reference_agreement[r.reference];
+        ++runs;
+        agree += r.verdict == Verdict::Agree;
+        if (r.verdict == Verdict::Diverge) classes.insert(to_string(r.divergence_class));
+        unexplained += r.verdict == Verdict::Diverge && r.divergence_class == DivergenceClass::Unexplained;
+    }
+}
+
+std::string SubjectVerdict::line(const std::string& name) const {
+    std::vector<std::string> agreeing;
+    for (const auto& [ref, counts] : reference_agreement)
+        if (counts.first == counts.second && counts.second > 0) agreeing.push_back(ref);
+    std::string refs = agreeing.empty() ? "agrees with no reference" : "agrees with " + fmt::format("{}", fmt::join(agreeing, ", "));
+    if (!classes.empty()) refs += fmt::format(" ({})", fmt::join(classes, ", "));
+    std::string s = fmt::format("subject '{}': {}; {}; {}", name, rules.rule_phrase(), refs, rules.core_phrase());
+    if (failures) s += fmt::format("; failed on {} of {} inputs", failures, inputs);
+    return s;
+}
+
+}  // namespace crossdiv::cli
