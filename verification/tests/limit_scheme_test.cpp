@@ -15,6 +15,7 @@
 #include "crossdiv/verification/comparisons/bfr_comparison.h"
 #include "crossdiv/verification/suite/operations.h"
 #include "crossdiv/verification/studies/curvature_study.h"
+#include "crossdiv/verification/studies/studies.h"
 #include "crossdiv/verification/comparisons/limit_comparison.h"
 #include "crossdiv/verification/comparisons/refinement_comparison.h"
 #include "scheme_test_catalog.h"
@@ -145,6 +146,19 @@ TEST(LimitChecks, UnknownStudyIsRefused) {
         EXPECT_EQ(op.kind, OperationKind::Comparison);
         EXPECT_EQ(op.scheme, s);
     }
+}
+
+// The vertex-age study holds for every scheme: the vertices born at each level are the
+// scheme's new points (bilinear's: an edge and a face point each, as Catmull-Clark's), and the
+// interpolating schemes keep the input's vertices in place.
+TEST(VertexAgeStudy, EveryCheckHoldsForEveryScheme) {
+    const CheckReport r = vertex_age_study();
+    int counted = 0;
+    for (const Check& c : r.checks) {
+        EXPECT_TRUE(c.pass()) << c.subject << " " << c.check << " " << c.measured << " > " << c.tolerance;
+        counted += c.check == "vertex-age counts";
+    }
+    EXPECT_EQ(counted, static_cast<int>(all_schemes().size()));
 }
 
 // The curvature study: every check holds (second-order convergence of core on the sphere and

@@ -32,7 +32,8 @@ CheckReport vertex_age_study() {
             const long corners = static_cast<long>(before.face_vertices.size()), faces = before.num_faces();
             const long edges = corners / 2;
             switch (scheme) {
-                case Scheme::CatmullClark: expected[l] = edges + faces; break;
+                case Scheme::CatmullClark:
+                case Scheme::Bilinear: expected[l] = edges + faces; break;
                 case Scheme::Sqrt3: expected[l] = faces; break;
                 case Scheme::DooSabin: expected[l] = l == kLevels ? corners : 0; break;
                 default: expected[l] = edges;
@@ -47,8 +48,9 @@ CheckReport vertex_age_study() {
                                          "every face corner (Doo-Sabin) of the level before"));
         json row = {{"scheme", to_string(scheme)}, {"input", "icosahedron"}, {"levels", kLevels},
                     {"vertex_counts", counts}, {"born", measured}, {"expected", expected}};
-        if (scheme == Scheme::Butterfly || scheme == Scheme::ModifiedButterfly) {
-            // Interpolating: the oldest vertices are where the input put them, exactly.
+        if (scheme == Scheme::Butterfly || scheme == Scheme::ModifiedButterfly || scheme == Scheme::Bilinear) {
+            // Interpolating (bilinear too: a vertex point is the vertex): the oldest vertices
+            // are where the input put them, exactly.
             double moved = 0;
             for (size_t v = 0; v < counts[0]; ++v)
                 moved = std::max(moved, (levels.back().positions[v] - input.positions[v]).norm());
