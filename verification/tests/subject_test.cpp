@@ -335,6 +335,17 @@ TEST(SchemeSubject, ACatmullClarkWithOpenMeshsBoundaryIsNamedClassByClass) {
     }
 }
 
+TEST(SchemeSubject, ARuleCoreRefusesOnTheInputFitsNothingAndTheOthersAreMeasured) {
+    // A tagged mesh: core has no midpoint-average rule with crease tags (it refuses the input
+    // under it), so that rule does not fit; the subject is named edge-only.
+    const auto mine = core_as_subject(Scheme::CatmullClark, rule_from_boundary_name(Scheme::CatmullClark, "edge-only"));
+    const RefinementComparison c = compare_scheme_subject(Scheme::CatmullClark, *mine, "crease-cube-top", false);
+    ASSERT_TRUE(c.rules && c.rules->rule) << c.subject_outcome.summary() << c.subject_unmatched;
+    EXPECT_EQ(rule_name(Scheme::CatmullClark, *c.rules->rule), "edge-only");
+    for (const RuleFit& f : c.rules->whole)
+        if (f.rule.catmull_clark.boundary == CatmullClarkBoundary::MidpointAverage) EXPECT_FALSE(f.fits) << f.name;
+}
+
 TEST(SchemeSubject, ADooSabinThatDropsTheBorderIsMatchedInThatRulesNumbering) {
     // Dropping the border faces changes the vertex set: the subject is matched to core under
     // the rule whose levels it has, and named by it.

@@ -83,16 +83,20 @@ RuleIdentification identify_rule(Scheme scheme, const PolyMesh& input, const std
     id.scheme = scheme;
     const auto fit_of = [&](size_t r) { return RuleFit{rules[r], rule_name(scheme, rules[r]), 0, false}; };
     // Whole mesh, every compared level. A named rule may make another vertex count (a
-    // Doo-Sabin border dropped, sqrt3's other parity): it does not fit.
+    // Doo-Sabin border dropped, sqrt3's other parity) or none at all (core refuses the input
+    // under it: midpoint-average on a tagged mesh): it does not fit.
+    const auto comparable = [&](size_t r, size_t l) {
+        return l < core[r].size() && core[r][l].num_vertices() == subject[l].num_vertices();
+    };
     for (size_t r = 0; r < rules.size(); ++r) {
         RuleFit fit = fit_of(r);
         for (size_t l = 0; l < subject.size(); ++l) {
             if (subject[l].num_vertices() == 0) continue;
-            const PolyMesh& c = core[r][l];
-            if (c.num_vertices() != subject[l].num_vertices()) {
+            if (!comparable(r, l)) {
                 fit.max_rel = INFINITY;
                 continue;
             }
+            const PolyMesh& c = core[r][l];
             const double d = bounding_box_diagonal(c.positions);
             for (size_t v = 0; v < c.positions.size(); ++v) {
                 const double e = (subject[l].positions[v] - c.positions[v]).norm() / (d > 0 ? d : 1);
@@ -111,7 +115,10 @@ RuleIdentification identify_rule(Scheme scheme, const PolyMesh& input, const std
     if (subject.empty() || subject[0].num_vertices() == 0 || births.empty()) return id;
     id.classified_level = 1;
     const std::vector<std::pair<VertexClass, int>> cls = classify(births[0], input);
-    const double d = bounding_box_diagonal(core[0][0].positions);
+    // The diagonal of core's level 1 under the first rule core refines the input with.
+    size_t first = 0;
+    while (first + 1 < rules.size() && core[first].empty()) ++first;
+    const double d = bounding_box_diagonal(core[first].empty() ? subject[0].positions : core[first][0].positions);
     for (size_t v = 0; v < cls.size(); ++v) {
         auto row = std::find_if(id.rows.begin(), id.rows.end(), [&](const VertexClassRow& x) {
             return x.cls == cls[v].first && x.valence == cls[v].second;
@@ -124,7 +131,7 @@ RuleIdentification identify_rule(Scheme scheme, const PolyMesh& input, const std
         }
         ++row->count;
         for (size_t r = 0; r < rules.size(); ++r) {
-            if (core[r][0].num_vertices() != subject[0].num_vertices()) {
+            if (!comparable(r, 0)) {
                 row->fits[r].max_rel = INFINITY;
                 continue;
             }
@@ -140,7 +147,7 @@ RuleIdentification identify_rule(Scheme scheme, const PolyMesh& input, const std
                                            [](const RuleFit& a, const RuleFit& b) { return a.max_rel < b.max_rel; });
         const size_t r = static_cast<size_t>(best - row.fits.begin());
         double worst = -1;
-        if (core[r][0].num_vertices() != subject[0].num_vertices()) continue;
+        if (!comparable(r, 0)) continue;
         for (size_t v = 0; v < cls.size(); ++v) {
             if (cls[v].first != row.cls || cls[v].second != row.valence) continue;
             const double e = (subject[0].positions[v] - core[r][0].positions[v]).norm();
