@@ -342,8 +342,11 @@ TEST(SchemeSubject, ARuleCoreRefusesOnTheInputFitsNothingAndTheOthersAreMeasured
     const RefinementComparison c = compare_scheme_subject(Scheme::CatmullClark, *mine, "crease-cube-top", false);
     ASSERT_TRUE(c.rules && c.rules->rule) << c.subject_outcome.summary() << c.subject_unmatched;
     EXPECT_EQ(rule_name(Scheme::CatmullClark, *c.rules->rule), "edge-only");
-    for (const RuleFit& f : c.rules->whole)
-        if (f.rule.catmull_clark.boundary == CatmullClarkBoundary::MidpointAverage) EXPECT_FALSE(f.fits) << f.name;
+    for (const RuleFit& f : c.rules->whole) {
+        if (f.rule.catmull_clark.boundary == CatmullClarkBoundary::MidpointAverage) {
+            EXPECT_FALSE(f.fits) << f.name;
+        }
+    }
 }
 
 TEST(SchemeSubject, ADooSabinThatDropsTheBorderIsMatchedInThatRulesNumbering) {
