@@ -1,6 +1,8 @@
 // Recovering which reference vertex is which of ours, when the reference renumbers.
 #include <gtest/gtest.h>
 
+#include "library_guard.h"
+
 #include <algorithm>
 #include <numeric>
 #include <random>
@@ -173,7 +175,7 @@ std::vector<int> normal_form(const VertexBirth& b, const PolyMesh& coarse) {
 // child queries, on every level of Loop, Catmull-Clark and bilinear over the catalog and every
 // edge case, manifold or not (bowties, fins, duplicate faces, a vertex named twice).
 TEST(Correspondence, BirthsReadOffTheFacesAreFarsOwn) {
-    if (!is_built("opensubdiv")) GTEST_SKIP() << "OpenSubdiv is not built in";
+    CROSSDIV_REQUIRE_LIBRARIES("opensubdiv");
     const Implementation& osd = find_implementation("opensubdiv");
     std::vector<std::pair<std::string, PolyMesh>> inputs;
     for (const auto& b : datasets::catalog_meshes()) inputs.emplace_back(b.name, b.mesh);
