@@ -59,6 +59,9 @@ void SubjectVerdict::add(const RefinementComparison& c) {
     }
     if (c.rules) rules.add(*c.rules);
     for (const RefinementRun& r : c.runs) {
+        // Only runs that compared the reference with the subject: a reference that refused or
+        // crashed, or an input core refused, says nothing of the subject.
+        if (r.verdict != Verdict::Agree && r.verdict != Verdict::Diverge) continue;
         auto& [agree, runs] = reference_agreement[r.reference];
         ++runs;
         agree += r.verdict == Verdict::Agree;
@@ -68,9 +71,13 @@ void SubjectVerdict::add(const RefinementComparison& c) {
 }
 
 std::string SubjectVerdict::line(const std::string& name) const {
-    std::vector<std::string> agreeing;
-    for (const auto& [ref, counts] : reference_agreement)
+    // References it agrees with on every input first, then those it agrees with on some.
+    std::vector<std::string> agreeing, partly;
+    for (const auto& [ref, counts] : reference_agreement) {
         if (counts.first == counts.second && counts.second > 0) agreeing.push_back(ref);
+        else if (counts.first > 0) partly.push_back(fmt::format("{} on {} of {} inputs", ref, counts.first, counts.second));
+    }
+    agreeing.insert(agreeing.end(), partly.begin(), partly.end());
     std::string refs = agreeing.empty() ? "agrees with no reference" : "agrees with " + fmt::format("{}", fmt::join(agreeing, ", "));
     if (!classes.empty()) refs += fmt::format(" ({})", fmt::join(classes, ", "));
     std::string s = fmt::format("subject '{}': {}; {}; {}", name, rules.rule_phrase(), refs, rules.core_phrase());

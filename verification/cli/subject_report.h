@@ -22,7 +22,8 @@ bool symptom_of_subject(const verification::RefinementComparison& c);
 struct SubjectVerdict {
     explicit SubjectVerdict(verification::Scheme scheme) : rules(scheme) {}
     verification::RuleTally rules;
-    std::map<std::string, std::pair<int, int>> reference_agreement;  ///< agreeing runs, runs
+    /// Per reference: the runs that agree, and the runs that compared it with the subject.
+    std::map<std::string, std::pair<int, int>> reference_agreement;
     std::set<std::string> classes;
     int inputs = 0, failures = 0, unexplained = 0;
 

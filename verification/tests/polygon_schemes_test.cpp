@@ -178,16 +178,33 @@ TEST(DooSabinComparison, OnlyAMeasuredTopologyDifferenceIsClassifiedTopology) {
                                                             r.add_face(std::vector<int>(full.face(f), full.face(f) + full.face_size(f)));
                                                         return r;
                                                     }));
+    register_reference(make_callback_implementation("corner-cutting-doo-sabin", {Scheme::DooSabin},
+                                                    [](const PolyMesh& mesh, const RefineRequest& request) {
+                                                        const PolyMesh full = core_implementation().refine_last(mesh, request);
+                                                        PolyMesh r;
+                                                        r.positions = full.positions;
+                                                        for (int f = 0; f < full.num_faces(); ++f) {
+                                                            std::vector<int> face(full.face(f), full.face(f) + full.face_size(f));
+                                                            if (f == 0) face.pop_back();  // a triangle of its first three corners
+                                                            r.add_face(face);
+                                                        }
+                                                        return r;
+                                                    }));
     RefinementRequest req;
     req.scheme = Scheme::DooSabin;
     req.levels = 1;
-    req.references = {"swapped-doo-sabin", "face-dropping-doo-sabin"};
+    req.references = {"swapped-doo-sabin", "face-dropping-doo-sabin", "corner-cutting-doo-sabin"};
     const RefinementComparison c = compare_refinement(datasets::bundled_mesh("cube-asymmetric"), "cube-asymmetric", req);
-    ASSERT_EQ(c.runs.size(), 2u);
+    ASSERT_EQ(c.runs.size(), 3u);
     EXPECT_EQ(c.runs[0].verdict, Verdict::Diverge);
     EXPECT_EQ(c.runs[0].divergence_class, DivergenceClass::Unexplained) << c.runs[0].explanation;
     EXPECT_NE(c.runs[0].explanation.find("not a topology difference"), std::string::npos) << c.runs[0].explanation;
-    EXPECT_EQ(c.runs[1].divergence_class, DivergenceClass::Topology) << c.runs[1].explanation;
+    // A face missing is no Doo-Sabin mesh under any border rule: its counts are those of neither.
+    EXPECT_EQ(c.runs[1].verdict, Verdict::RefInvalidOutput) << c.runs[1].explanation;
+    EXPECT_NE(c.runs[1].explanation.find("doo-sabin makes 36 vertices, 38 faces"), std::string::npos) << c.runs[1].explanation;
+    // The same vertex and face counts, one face a corner short: other edges, a topology
+    // difference, measured.
+    EXPECT_EQ(c.runs[2].divergence_class, DivergenceClass::Topology) << c.runs[2].explanation;
 }
 
 TEST(DooSabinComparison, CgalAgreesOnClosedMeshesAndDropsBorderFacesOnOpenOnes) {

@@ -103,11 +103,26 @@ TEST(CommandTemplate, RefusesWhatCannotRun) {
 TEST(ExpectedCounts, FollowFromTheInputCounts) {
     const PolyMesh tet = datasets::bundled_mesh("tetrahedron");
     // Loop: V + E and 4F per level: 4 + 6 = 10, 16; then 10 + (2*6 + 3*4) = 34, 64.
-    EXPECT_EQ(expected_counts(Scheme::Loop, tet, 1), (std::pair<long, long>{10, 16}));
-    EXPECT_EQ(expected_counts(Scheme::Loop, tet, 2), (std::pair<long, long>{34, 64}));
+    using Counts = std::vector<RefinedCounts>;
+    EXPECT_EQ(expected_counts(Scheme::Loop, tet, 1), (Counts{{10, 16, ""}}));
+    EXPECT_EQ(expected_counts(Scheme::Loop, tet, 2), (Counts{{34, 64, ""}}));
     // Catmull-Clark on the cube: 8 + 12 + 6 = 26 vertices, one quad per corner: 24.
-    EXPECT_EQ(expected_counts(Scheme::CatmullClark, datasets::polygon_meshes().front().mesh, 1), (std::pair<long, long>{26, 24}));
-    EXPECT_FALSE(expected_counts(Scheme::DooSabin, tet, 1));
+    EXPECT_EQ(expected_counts(Scheme::CatmullClark, datasets::polygon_meshes().front().mesh, 1), (Counts{{26, 24, ""}}));
+    // Doo-Sabin on the closed tetrahedron: a vertex per corner (12), a face per face, edge and
+    // vertex (4 + 6 + 4); both border rules agree on a closed mesh.
+    EXPECT_EQ(expected_counts(Scheme::DooSabin, tet, 1), (Counts{{12, 14, ""}}));
+    // On a single triangle the border decides: Chaikin's keeps the triangle's corner points
+    // (3), the edge points (2 per edge: 6) and makes a face per face, edge and vertex
+    // (1 + 3 + 3); dropping the border leaves the corner triangle alone.
+    PolyMesh triangle;
+    triangle.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    triangle.add_face(std::vector<int>{0, 1, 2});
+    EXPECT_EQ(expected_counts(Scheme::DooSabin, triangle, 1),
+              (Counts{{9, 7, "chaikin-boundary"}, {3, 1, "drop-border-faces"}}));
+    // sqrt3 on the same triangle: the first step keeps the boundary in either parity (the
+    // centroid and three triangles); the second trisects it only when counted from the input.
+    EXPECT_EQ(expected_counts(Scheme::Sqrt3, triangle, 1), (Counts{{4, 3, ""}}));
+    EXPECT_EQ(expected_counts(Scheme::Loop, datasets::polygon_meshes().front().mesh, 1), Counts{});
 }
 
 struct Failure {
@@ -143,6 +158,75 @@ INSTANTIATE_TEST_SUITE_P(
             if (ch == '-') ch = '_';
         return n;
     });
+
+/// One failure of a subject of one scheme: the misbehaving program started from the scheme's
+/// course-style example (examples/subjects/python-schemes).
+struct SchemeFailure {
+    Scheme scheme;
+    const char* mode;
+    RunStatus status;          ///< RunStatus::Ok: the run succeeds (shuffle: another numbering)
+    const char* in_message;
+};
+
+class SchemeProgramFailure : public ::testing::TestWithParam<SchemeFailure> {};
+
+TEST_P(SchemeProgramFailure, GetsItsOutcomeInEveryScheme) {
+    const SchemeFailure f = GetParam();
+    ProgramSpec spec;
+    spec.name = "subject";
+    spec.command = misbehaving(f.mode) + " " + to_string(f.scheme);
+    spec.schemes = {f.scheme};
+    spec.timeout_seconds = std::string_view(f.mode) == "hang" ? 2 : 60;
+    const auto subject = make_program_implementation(spec);
+    RefinementRequest req;
+    req.scheme = f.scheme;
+    req.levels = 2;
+    req.subject = subject.get();
+    // An open mesh: the schemes whose counts depend on the border are held to them.
+    const RefinementComparison c = compare_refinement(datasets::bundled_mesh("open-patch"), "open-patch", req);
+    EXPECT_EQ(c.subject_outcome.status, f.status) << to_string(f.scheme) << ": " << c.subject_outcome.summary();
+    EXPECT_NE(c.subject_outcome.message.find(f.in_message), std::string::npos) << c.subject_outcome.message;
+    if (f.status != RunStatus::Ok) {
+        EXPECT_TRUE(c.subject_failed());
+        EXPECT_TRUE(c.runs.empty());
+        return;
+    }
+    // Shuffled: matched by position, and the example's rule is named whatever the numbering.
+    ASSERT_FALSE(c.subject_failed()) << c.subject_unmatched;
+    EXPECT_EQ(c.subject_match.method, MatchMethod::Nearest);
+    ASSERT_TRUE(c.rules && c.rules->rule) << to_string(f.scheme);
+    const std::string rule = rule_name(f.scheme, *c.rules->rule);
+    const std::string want = f.scheme == Scheme::Loop                 ? "weights=loop boundary=edge-only"
+                             : f.scheme == Scheme::CatmullClark        ? "edge-only"
+                             : f.scheme == Scheme::DooSabin            ? "drop-border-faces"
+                             : f.scheme == Scheme::Sqrt3               ? "restart-each-level"
+                             : f.scheme == Scheme::Bilinear            ? "linear"
+                                                                       : "reflected-wings";
+    EXPECT_EQ(rule, want) << to_string(f.scheme);
+}
+
+std::vector<SchemeFailure> every_scheme_failure() {
+    std::vector<SchemeFailure> out;
+    for (Scheme s : all_schemes()) {
+        out.push_back({s, "crash", RunStatus::Crashed, "signal 11"});
+        out.push_back({s, "hang", RunStatus::Timeout, "no result after 2 s"});
+        out.push_back({s, "nothing", RunStatus::NoOutput, "no output file out.obj"});
+        out.push_back({s, "nan", RunStatus::NonFiniteOutput, "is nan"});
+        out.push_back({s, "wrong-count", RunStatus::WrongCount, s == Scheme::DooSabin
+                                                                    ? "(drop-border-faces)"
+                                                                    : " makes "});
+        out.push_back({s, "shuffle", RunStatus::Ok, ""});
+    }
+    return out;
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryScheme, SchemeProgramFailure, ::testing::ValuesIn(every_scheme_failure()),
+                         [](const auto& info) {
+                             std::string n = std::string(to_string(info.param.scheme)) + "_" + info.param.mode;
+                             for (char& ch : n)
+                                 if (ch == '-') ch = '_';
+                             return n;
+                         });
 
 TEST(Program, ThatCannotStartIsRecorded) {
     const auto subject = program("/nonexistent/loop {in} {out}");

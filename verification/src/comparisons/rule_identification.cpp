@@ -3,7 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "crossdiv/error.h"
 #include "crossdiv/mesh/tri_mesh.h"
+#include "crossdiv/subdiv/nonmanifold.h"
+#include "crossdiv/verification/harness/mesh_comparison.h"
+#include "crossdiv/verification/harness/tolerances.h"
 #include "crossdiv/verification/harness/mesh_topology.h"
 #include "crossdiv/verification/implementations/registry.h"
 #include "harness/sci.h"
@@ -13,25 +17,34 @@ namespace {
 
 using detail::sci;
 
+/// The vertices of `parent` OpenSubdiv's non-manifold rules treat apart (nonmanifold.h), or
+/// none when the mesh is one no rule refines (a face naming a vertex twice).
+std::vector<char> nonmanifold_flags(const PolyMesh& parent) {
+    std::vector<char> flags(static_cast<size_t>(parent.num_vertices()), 0);
+    try {
+        for (int v : nonmanifold_vertices(parent)) flags[static_cast<size_t>(v)] = 1;
+    } catch (const InputError&) {
+    }
+    return flags;
+}
+
 /// The class of each vertex of level l from its birth and level l-1's topology.
 std::vector<std::pair<VertexClass, int>> classify(const std::vector<VertexBirth>& births, const PolyMesh& parent) {
     const MeshTopology t = mesh_topology(parent);
+    const std::vector<char> nonmanifold = nonmanifold_flags(parent);
     std::vector<int> faces_of(static_cast<size_t>(parent.num_vertices()), 0);
     for (int v : parent.face_vertices) ++faces_of[static_cast<size_t>(v)];
-    // An edge is on the boundary when it has one face: count each edge's faces by its sorted key.
-    std::vector<std::array<int, 2>> face_edges;
+    // Each edge's faces, counted by its directed key: an edge is on the boundary with one
+    // face, and manifold with two that traverse it in opposite directions.
+    std::vector<std::array<int, 2>> half_edges;
     for (int f = 0; f < parent.num_faces(); ++f) {
         const int* fv = parent.face(f);
         const int n = parent.face_size(f);
-        for (int k = 0; k < n; ++k) {
-            const int a = fv[k], b = fv[(k + 1) % n];
-            face_edges.push_back({std::min(a, b), std::max(a, b)});
-        }
+        for (int k = 0; k < n; ++k) half_edges.push_back({fv[k], fv[(k + 1) % n]});
     }
-    std::sort(face_edges.begin(), face_edges.end());
-    auto edge_faces = [&](int a, int b) {
-        const std::array<int, 2> key{std::min(a, b), std::max(a, b)};
-        const auto range = std::equal_range(face_edges.begin(), face_edges.end(), key);
+    std::sort(half_edges.begin(), half_edges.end());
+    auto directed = [&](int a, int b) {
+        const auto range = std::equal_range(half_edges.begin(), half_edges.end(), std::array<int, 2>{a, b});
         return static_cast<int>(range.second - range.first);
     };
     std::vector<std::pair<VertexClass, int>> out;
@@ -42,16 +55,30 @@ std::vector<std::pair<VertexClass, int>> classify(const std::vector<VertexBirth>
             continue;
         }
         if (o.kind == VertexBirth::Kind::Edge) {
-            out.push_back({edge_faces(o.a, o.b) == 1 ? VertexClass::BoundaryEdgePoint : VertexClass::InteriorEdgePoint, 0});
+            const int ab = directed(o.a, o.b), ba = directed(o.b, o.a);
+            out.push_back({ab + ba == 1               ? VertexClass::BoundaryEdgePoint
+                           : ab == 1 && ba == 1       ? VertexClass::InteriorEdgePoint
+                                                      : VertexClass::NonManifoldEdgePoint,
+                           0});
             continue;
         }
         const size_t v = static_cast<size_t>(o.a);
         if (faces_of[v] == 0) out.push_back({VertexClass::IsolatedVertex, 0});
+        else if (nonmanifold[v]) out.push_back({VertexClass::NonManifoldVertex, 0});
         else if (!t.boundary_vertex[v]) out.push_back({VertexClass::InteriorVertex, t.valence[v]});
         else if (faces_of[v] == 1) out.push_back({VertexClass::Corner, 0});
         else out.push_back({VertexClass::BoundaryVertex, 0});
     }
     return out;
+}
+
+/// The distance, relative to `diagonal`, under which a subject fits a rule at `level`: the
+/// agreement tolerance, or, far from the origin, the rounding of two summation orders of the
+/// same stencils (tolerances::kRoundingUlps of the largest coordinate), as the ladder's
+/// rounding class allows it: a subject that differs from core by that much follows the rule.
+double fit_threshold(const PolyMesh& level, double diagonal, double tolerance) {
+    const double rounding = tolerances::kRoundingUlps * ulp_of_largest_coordinate(level) / (diagonal > 0 ? diagonal : 1);
+    return std::max(tolerance, rounding);
 }
 
 }  // namespace
@@ -65,6 +92,8 @@ const char* to_string(VertexClass cls) {
         case VertexClass::BoundaryEdgePoint: return "boundary-edge-point";
         case VertexClass::FacePoint: return "face-point";
         case VertexClass::IsolatedVertex: return "isolated-vertex";
+        case VertexClass::NonManifoldVertex: return "non-manifold-vertex";
+        case VertexClass::NonManifoldEdgePoint: return "non-manifold-edge-point";
     }
     return "unknown";
 }
@@ -90,20 +119,24 @@ RuleIdentification identify_rule(Scheme scheme, const PolyMesh& input, const std
     };
     for (size_t r = 0; r < rules.size(); ++r) {
         RuleFit fit = fit_of(r);
+        fit.fits = true;
         for (size_t l = 0; l < subject.size(); ++l) {
             if (subject[l].num_vertices() == 0) continue;
             if (!comparable(r, l)) {
                 fit.max_rel = INFINITY;
+                fit.fits = false;
                 continue;
             }
             const PolyMesh& c = core[r][l];
             const double d = bounding_box_diagonal(c.positions);
+            double level_max = 0;
             for (size_t v = 0; v < c.positions.size(); ++v) {
                 const double e = (subject[l].positions[v] - c.positions[v]).norm() / (d > 0 ? d : 1);
-                fit.max_rel = std::isnan(e) ? INFINITY : std::max(fit.max_rel, e);
+                level_max = std::isnan(e) ? INFINITY : std::max(level_max, e);
             }
+            fit.max_rel = std::max(fit.max_rel, level_max);
+            fit.fits = fit.fits && level_max <= fit_threshold(c, d, tolerance);
         }
-        fit.fits = fit.max_rel <= tolerance;
         id.whole.push_back(fit);
     }
     for (const RuleFit& f : id.whole)
@@ -140,7 +173,8 @@ RuleIdentification identify_rule(Scheme scheme, const PolyMesh& input, const std
         }
     }
     for (VertexClassRow& row : id.rows)
-        for (RuleFit& f : row.fits) f.fits = f.max_rel <= tolerance;
+        for (size_t r = 0; r < rules.size(); ++r)
+            row.fits[r].fits = comparable(r, 0) && row.fits[r].max_rel <= fit_threshold(core[r][0], d, tolerance);
     // Each row's worst vertex under its best rule, for the diagnosis of what no rule fits.
     for (VertexClassRow& row : id.rows) {
         const auto best = std::min_element(row.fits.begin(), row.fits.end(),
@@ -219,7 +253,17 @@ std::string RuleTally::rule_phrase() const {
     std::string fitting;
     for (size_t r = 0; r < rules.size() && r < whole_fits_.size(); ++r)
         if (whole_fits_[r] == inputs_ && inputs_ > 0) fitting += (fitting.empty() ? "" : " or ") + rule_name(scheme_, rules[r]);
-    parts.push_back(fitting.empty() ? "no named rule on every input" : "the " + fitting + " rule");
+    if (!fitting.empty()) {
+        parts.push_back("the " + fitting + " rule");
+    } else {
+        // The rule that fits the most inputs, and on how many: a subject that follows a rule
+        // except on the inputs it handles otherwise (non-manifold ones, say) is named by it.
+        const auto most = std::max_element(whole_fits_.begin(), whole_fits_.end());
+        if (most == whole_fits_.end() || *most == 0) parts.push_back("no named rule on any input");
+        else
+            parts.push_back("the " + rule_name(scheme_, rules[static_cast<size_t>(most - whole_fits_.begin())]) + " rule on " +
+                            std::to_string(*most) + " of " + std::to_string(inputs_) + " inputs");
+    }
     for (const Tally& t : rows_) {
         if (std::any_of(t.fits.begin(), t.fits.end(), [](char f) { return f != 0; })) continue;
         parts.push_back("no named rule at " + std::string(to_string(t.key.cls)) +
@@ -303,6 +347,12 @@ std::string RuleTally::loop_phrase() const {
     if (const auto e = class_phrase(VertexClass::InteriorEdgePoint, "", "no named rule at interior edge points"); e && !e->empty())
         parts.push_back(*e);
     if (const auto e = class_phrase(VertexClass::IsolatedVertex, "", "isolated vertices moved"); e && !e->empty())
+        parts.push_back(*e);
+    const auto nonmanifold = class_phrase(VertexClass::NonManifoldVertex, "OpenSubdiv's rules at non-manifold vertices",
+                                          "no named rule at non-manifold vertices");
+    if (nonmanifold) parts.push_back(*nonmanifold);
+    if (const auto e = class_phrase(VertexClass::NonManifoldEdgePoint, "", "no named rule at non-manifold edge points");
+        e && !e->empty())
         parts.push_back(*e);
     std::string s = "Loop scheme";
     for (const std::string& p : parts) s += ", " + p;

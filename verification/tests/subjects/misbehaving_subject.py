@@ -1,12 +1,15 @@
 #!/usr/bin/env python3
 """A subject that fails in one named way, for the tests of the harness's program runs:
 
-    misbehaving_subject.py MODE IN.obj LEVELS OUT.obj
+    misbehaving_subject.py MODE IN.obj LEVELS OUT.obj [SCHEME]
+
+SCHEME (loop when not given) is any scheme of examples/subjects/python-schemes; the modes that
+write a mesh start from that scheme's course-style example.
 
 MODE: crash (SIGSEGV), hang, exit (status 3 with a message on stderr), nothing (exit 0, no
 file), nan, garbage (an unreadable line), wrong-count (one face dropped), quads (two
-triangles written as one quad), shuffle (Loop's own weights, with vertices, faces and each
-face's corners in a random order: a correct result in another numbering), float (Loop's own
+triangles written as one quad), shuffle (Loop's own weights, or the scheme's example, with
+vertices, faces and each face's corners in a random order: a correct result in another numbering), float (Loop's own
 weights, every coordinate rounded to float32 and written as binary PLY, as MeshLab writes: a
 correct result of a float implementation; OUT names the .ply), keep-boundary (Loop's own
 weights, but every boundary vertex left where it is: a rule no one names), closed-only (exits
@@ -21,9 +24,16 @@ import struct
 import sys
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "examples", "subjects",
-                                "python-loop"))
+EXAMPLES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "examples", "subjects")
+sys.path.insert(0, os.path.join(EXAMPLES, "python-loop"))
+sys.path.insert(0, os.path.join(EXAMPLES, "python-schemes"))
+import importlib  # noqa: E402
+
 import loop  # noqa: E402
+
+# The course-style example of each scheme other than Loop, by the name crossdiv gives it.
+SCHEME_MODULES = {"catmull-clark": "catmull_clark", "doo-sabin": "doo_sabin", "sqrt3": "sqrt3", "butterfly": "butterfly",
+                  "modified-butterfly": "modified_butterfly", "bilinear": "bilinear"}
 
 
 def loop_beta(n):
@@ -42,9 +52,14 @@ def main():
         sys.exit(3)
     if mode == "nothing":
         return
+    scheme = sys.argv[5] if len(sys.argv) > 5 else "loop"
     loop.even_beta = loop_beta
     verts, faces = loop.read_obj(src)
-    for _ in range(levels):
+    if scheme != "loop":
+        module = importlib.import_module(SCHEME_MODULES[scheme])
+        for _ in range(levels):
+            verts, faces = module.subdivide(verts, faces)
+    for _ in range(levels if scheme == "loop" else 0):
         edges = {}
         for t in faces:
             for k in range(3):
@@ -84,7 +99,7 @@ def main():
         verts = [verts[old] for old in order]
         faces = [[new_of[v] for v in t] for t in faces]
         rng.shuffle(faces)
-        faces = [t[k:] + t[:k] for t, k in ((t, rng.randrange(3)) for t in faces)]
+        faces = [t[k:] + t[:k] for t, k in ((t, rng.randrange(len(t))) for t in faces)]
     if mode == "float":
         with open(out, "wb") as f:
             f.write(("ply\nformat binary_little_endian 1.0\nelement vertex %d\nproperty float x\nproperty float y\n"
@@ -95,7 +110,11 @@ def main():
             for t in faces:
                 f.write(struct.pack("<B3i", 3, *t))
         return
-    loop.write_obj(out, verts, faces)
+    with open(out, "w") as f:
+        for v in verts:
+            f.write("v %r %r %r\n" % tuple(v))
+        for t in faces:
+            f.write("f " + " ".join(str(i + 1) for i in t) + "\n")
 
 
 if __name__ == "__main__":

@@ -34,9 +34,22 @@
 namespace crossdiv::verification {
 
 /// The vertex classes the rules tell apart.
-enum class VertexClass { InteriorVertex, BoundaryVertex, Corner, InteriorEdgePoint, BoundaryEdgePoint, FacePoint, IsolatedVertex };
+enum class VertexClass {
+    InteriorVertex,
+    BoundaryVertex,
+    Corner,
+    InteriorEdgePoint,
+    BoundaryEdgePoint,
+    FacePoint,
+    IsolatedVertex,
+    /// An old vertex that ends a non-manifold edge or whose faces form several fans: where
+    /// OpenSubdiv's non-manifold rules (core's) apply, and most implementations do something else.
+    NonManifoldVertex,
+    /// The point of an edge with more than two faces, or two that traverse it alike.
+    NonManifoldEdgePoint,
+};
 /// "interior-vertex", "boundary-vertex", "corner", "interior-edge-point", "boundary-edge-point",
-/// "face-point", "isolated-vertex".
+/// "face-point", "isolated-vertex", "non-manifold-vertex", "non-manifold-edge-point".
 const char* to_string(VertexClass cls);
 
 /// How far the subject lies from core under one named rule, over some set of vertices.

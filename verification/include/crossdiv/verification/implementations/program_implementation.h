@@ -59,14 +59,24 @@ struct ProgramSpec {
     std::string base_dir;
 };
 
-/// The vertex and face counts `scheme` makes from `input` after `levels` levels, where they
-/// follow from the input's counts alone (Loop and the Butterflies: V + E, 4F; Catmull-Clark:
-/// V + E + F, one quad per face corner); nothing for the schemes whose counts depend on the
-/// boundary rule (Doo-Sabin, sqrt3).
-std::optional<std::pair<long, long>> expected_counts(Scheme scheme, const PolyMesh& input, int levels);
+/// Vertex and face counts of a refined mesh, and the named rule that makes them ("" when
+/// every rule of the scheme does).
+struct RefinedCounts {
+    long vertices = 0, faces = 0;
+    std::string rule;
+    friend bool operator==(const RefinedCounts&, const RefinedCounts&) = default;
+};
+
+/// The counts `scheme` makes from `input` after `levels` levels: one entry where they follow
+/// from the input's counts alone (Loop and the Butterflies: V + E, 4F; Catmull-Clark and
+/// bilinear: V + E + F, one quad per face corner); for the schemes whose counts depend on the
+/// boundary rule (Doo-Sabin's border, sqrt3's parity), those of core under each named rule
+/// that refines the input, each once. Empty when they cannot be told (polygons asked of a
+/// triangle scheme, an input core refuses).
+std::vector<RefinedCounts> expected_counts(Scheme scheme, const PolyMesh& input, int levels);
 
 /// The checks every program result passes before it is compared: finite coordinates,
-/// triangles where the scheme makes them, the counts of expected_counts. `file` names the
+/// triangles where the scheme makes them, one of the counts of expected_counts. `file` names the
 /// result in messages. @throws ImplementationFailure with the status that names the fault.
 void check_program_result(const PolyMesh& result, Scheme scheme, const PolyMesh& input, int levels,
                           const std::string& file);

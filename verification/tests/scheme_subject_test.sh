@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# The course-style example of one scheme (examples/subjects) put under test as a user does it,
+# over every bundled mesh and every edge case: the run ends with the rule the example follows
+# named, and the exit status says whether it failed on an input.
+# Usage: scheme_subject_test.sh path/to/crossdiv SCHEME
+set -u
+crossdiv="$1" scheme="$2"
+root="$(cd "$(dirname "$0")/../.." && pwd)"
+examples="$root/examples/subjects"
+case "$scheme" in
+  # The assignment's Warren weights; it writes fewer vertices than an edge list has on the
+  # inputs that name an edge twice (valence-2, duplicate-face, repeated-vertex-triangle).
+  loop) script="python-loop/loop.py" code=1
+        want="Loop scheme, weights=warren at interior vertices .* edge-only boundary, no corner rule, no named rule at non-manifold vertices.*failed on 3 of 71 inputs" ;;
+  # Catmull and Clark's rules with the B-spline boundary: OpenSubdiv's edge-only everywhere
+  # but at non-manifold elements; repeated-vertex-triangle breaks its edge table.
+  catmull-clark) script="python-schemes/catmull_clark.py" code=1
+        want="catmull-clark scheme, the edge-only rule on 59 of 70 inputs, no named rule at non-manifold-vertex .*failed on 1 of 71 inputs" ;;
+  doo-sabin) script="python-schemes/doo_sabin.py" code=0
+        want="doo-sabin scheme, the drop-border-faces rule; agrees with cgal on 56 of 57 inputs \(rounding\); agrees with core drop-border-faces" ;;
+  sqrt3) script="python-schemes/sqrt3.py" code=0
+        want="sqrt3 scheme, the restart-each-level rule; agrees with cgal on 56 of 57 inputs" ;;
+  butterfly) script="python-schemes/butterfly.py" code=0
+        want="butterfly scheme, the reflected-wings rule; .*agrees with core reflected-wings .* on 58 of 58 meshes" ;;
+  modified-butterfly) script="python-schemes/modified_butterfly.py" code=0
+        want="modified-butterfly scheme, the reflected-wings rule; agrees with openmesh on 57 of 58 inputs \(rounding\)" ;;
+  bilinear) script="python-schemes/bilinear.py" code=1
+        want="bilinear scheme, the linear rule; agrees with opensubdiv; agrees with core linear to 0 on 70 of 70 meshes; failed on 1 of 71 inputs" ;;
+  *) echo "unknown scheme $scheme"; exit 2 ;;
+esac
+out="$("$crossdiv" compare bundled:all edgecases:all --scheme "$scheme" --levels 2 --subject-name student \
+       --subject "python3 $examples/$script {in} {levels} {out}" 2>&1)"
+rc=$?
+line="$(tail -1 <<<"$out")"
+if [ "$rc" -ne "$code" ] || ! grep -qE -- "$want" <<<"$line"; then
+  echo "FAIL $scheme: exit $rc (want $code); last line:"; echo "$line"; echo "want /$want/"
+  exit 1
+fi
+echo "ok $scheme: $line"
