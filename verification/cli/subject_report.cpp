@@ -47,6 +47,13 @@ void print_subject(const RefinementComparison& c) {
     fmt::print("  {:<22} {:>7}", "every compared level", "");
     for (const RuleFit& f : c.rules->whole) fmt::print(" {:>16}", cell(f));
     fmt::print("\n  rule: {}\n", c.rules->rule ? rule_name(c.scheme, *c.rules->rule) : std::string("no named rule fits"));
+    if (c.rules->other_schemes.empty()) return;
+    std::vector<std::string> others;
+    for (const OtherSchemeFit& f : c.rules->other_schemes) others.push_back(fmt::format("{} {}{:.2g}", f.label(), f.fits ? "= " : "", f.max_rel));
+    const OtherSchemeFit* it = c.rules->other_scheme();
+    fmt::print("  other schemes at level 1: {}\n  {}\n", fmt::join(others, ", "),
+               it ? fmt::format("it is {}, not {}", it->label(), to_string(c.scheme))
+                  : std::string("no rule of these schemes fits either"));
 }
 
 bool symptom_of_subject(const RefinementComparison& c) { return c.subject_failed() || (c.rules && !c.rules->rule); }

@@ -398,6 +398,52 @@ const VertexClassRow* class_row(const RuleIdentification& id, VertexClass cls, i
     return nullptr;
 }
 
+TEST(SchemeSubject, WhenNoRuleOfItsSchemeFitsTheSchemesWithItsConnectivityAreTried) {
+    // A midpoint subdivision handed in as Loop: no Loop rule fits, and at level 1 it is
+    // bilinear's points on Loop's connectivity; no Butterfly fits it.
+    const auto midpoint = program(misbehaving("midpoint"));
+    const RefinementComparison mid = compare_with(*midpoint, "open-patch", 2);
+    ASSERT_TRUE(mid.rules) << mid.subject_outcome.summary();
+    EXPECT_FALSE(mid.rules->rule);
+    const OtherSchemeFit* it = mid.rules->other_scheme();
+    ASSERT_TRUE(it);
+    EXPECT_EQ(it->label(), "bilinear (midpoint)");
+    EXPECT_EQ(it->max_rel, 0);  // the same sums in the same order
+    for (const OtherSchemeFit& f : mid.rules->other_schemes) {
+        if (f.scheme == Scheme::Butterfly || f.scheme == Scheme::ModifiedButterfly) {
+            EXPECT_FALSE(f.fits) << f.label();
+        }
+    }
+
+    // The classic Butterfly handed in as the modified one: at level 1 it is the classic one;
+    // every Loop rule is off by the difference between approximating and interpolating.
+    ProgramSpec spec;
+    spec.name = "classic";
+    spec.command = "python3 " + kSource + "/examples/subjects/python-schemes/butterfly.py {in} {levels} {out}";
+    spec.schemes = {Scheme::ModifiedButterfly};
+    const auto classic = make_program_implementation(spec);
+    RefinementRequest req;
+    req.scheme = Scheme::ModifiedButterfly;
+    req.levels = 2;
+    req.subject = classic.get();
+    const RefinementComparison b = compare_refinement(datasets::bundled_mesh("icosahedron"), "icosahedron", req);
+    ASSERT_TRUE(b.rules) << b.subject_outcome.summary();
+    EXPECT_FALSE(b.rules->rule);
+    ASSERT_TRUE(b.rules->other_scheme());
+    EXPECT_EQ(b.rules->other_scheme()->scheme, Scheme::Butterfly);
+    for (const OtherSchemeFit& f : b.rules->other_schemes) {
+        if (f.scheme == Scheme::Loop) {
+            EXPECT_GT(f.max_rel, 0.01) << f.label();
+        }
+    }
+
+    // A subject that follows a rule of its scheme is not measured against the others.
+    const auto student = program(kStudent);
+    const RefinementComparison own = compare_with(*student, "icosahedron", 2);
+    ASSERT_TRUE(own.rules && own.rules->rule);
+    EXPECT_TRUE(own.rules->other_schemes.empty());
+}
+
 TEST(SchemeSubject, ACatmullClarkWithOpenMeshsBoundaryIsNamedClassByClass) {
     const auto mine = core_as_subject(Scheme::CatmullClark, rule_from_boundary_name(Scheme::CatmullClark, "midpoint-average"));
     const RefinementComparison c = compare_scheme_subject(Scheme::CatmullClark, *mine, "quad-grid", true);

@@ -628,6 +628,10 @@ nlohmann::json subject_json(const RefinementComparison& c) {
                       {"rule", c.rules->rule ? json(rule_name(c.scheme, *c.rules->rule)) : json(nullptr)},
                       {"whole", fits(c.rules->whole)},
                       {"classes", rows}};
+        json others = json::array();
+        for (const OtherSchemeFit& f : c.rules->other_schemes)
+            others.push_back({{"scheme", to_string(f.scheme)}, {"rule", f.rule}, {"max_rel", finite(f.max_rel)}, {"fits", f.fits}});
+        s["rules"]["other_schemes"] = others;
     }
     return s;
 }

@@ -81,7 +81,101 @@ double fit_threshold(const PolyMesh& level, double diagonal, double tolerance) {
     return std::max(tolerance, rounding);
 }
 
+/// A vertex's birth as one sortable key: its kind, then its vertex, edge (ends ascending) or face.
+std::array<int, 3> birth_key(const VertexBirth& b) {
+    if (b.kind == VertexBirth::Kind::Edge) return {1, std::min(b.a, b.b), std::max(b.a, b.b)};
+    return {b.kind == VertexBirth::Kind::Vertex ? 0 : 2, b.a, -1};
+}
+
+/// The largest distance over the diagonal between the subject's level 1 (in the numbering of
+/// `births`) and `theirs`, whose vertices were born as `their_births`; INFINITY when a vertex
+/// has no counterpart of the same birth.
+double level_one_distance(const PolyMesh& subject, const std::vector<VertexBirth>& births, const PolyMesh& theirs,
+                          const std::vector<VertexBirth>& their_births) {
+    if (their_births.size() != births.size() || theirs.num_vertices() != subject.num_vertices()) return INFINITY;
+    std::vector<std::pair<std::array<int, 3>, int>> index;
+    index.reserve(their_births.size());
+    for (size_t v = 0; v < their_births.size(); ++v) index.push_back({birth_key(their_births[v]), static_cast<int>(v)});
+    std::sort(index.begin(), index.end());
+    const double d = bounding_box_diagonal(theirs.positions);
+    double worst = 0;
+    for (size_t v = 0; v < births.size(); ++v) {
+        const auto key = birth_key(births[v]);
+        const auto it = std::lower_bound(index.begin(), index.end(), std::pair{key, -1});
+        if (it == index.end() || it->first != key) return INFINITY;
+        const double e = (subject.positions[v] - theirs.positions[static_cast<size_t>(it->second)]).norm() / (d > 0 ? d : 1);
+        worst = std::isnan(e) ? INFINITY : std::max(worst, e);
+    }
+    return worst;
+}
+
+/// The schemes whose refinement has the connectivity of `scheme`'s (itself excluded).
+std::vector<Scheme> same_connectivity(Scheme scheme) {
+    const std::vector<Scheme> triangle_split{Scheme::Loop, Scheme::Butterfly, Scheme::ModifiedButterfly};
+    const std::vector<Scheme> quad_split{Scheme::CatmullClark, Scheme::Bilinear};
+    for (const auto& family : {triangle_split, quad_split})
+        if (std::find(family.begin(), family.end(), scheme) != family.end()) {
+            std::vector<Scheme> out;
+            for (Scheme s : family)
+                if (s != scheme) out.push_back(s);
+            return out;
+        }
+    return {};
+}
+
+/// The rules of the other schemes with `scheme`'s connectivity, and midpoint averaging where
+/// no such scheme has it, each measured against the subject's level 1.
+std::vector<OtherSchemeFit> fit_other_schemes(Scheme scheme, const PolyMesh& input, const PolyMesh& subject,
+                                              const std::vector<VertexBirth>& births, double tolerance) {
+    std::vector<OtherSchemeFit> out;
+    const std::vector<Scheme> others = same_connectivity(scheme);
+    for (Scheme other : others)
+        for (const SchemeRule& r : named_rules(other)) {
+            OtherSchemeFit fit{other, rule_name(other, r), INFINITY, false};
+            try {
+                const Refinement ref = core_implementation().refine_with_provenance(input, {other, r, 1});
+                if (ref.levels.size() > 1 && !ref.births.empty())
+                    fit.max_rel = level_one_distance(subject, births, ref.levels[1], ref.births[0]);
+                fit.fits = fit.max_rel <= fit_threshold(ref.levels[1], bounding_box_diagonal(ref.levels[1].positions), tolerance);
+            } catch (const std::exception&) {
+                // core refuses the input under this scheme (a tag Butterfly lacks): nothing measured
+            }
+            out.push_back(fit);
+        }
+    if (std::find(others.begin(), others.end(), Scheme::Bilinear) == others.end() && scheme != Scheme::Bilinear) {
+        // Midpoint averaging on this connectivity: each point the average of what it was born from.
+        PolyMesh midpoint = subject;
+        for (size_t v = 0; v < births.size(); ++v) {
+            const VertexBirth& b = births[v];
+            if (b.kind == VertexBirth::Kind::Vertex) {
+                midpoint.positions[v] = input.positions[static_cast<size_t>(b.a)];
+            } else if (b.kind == VertexBirth::Kind::Edge) {
+                midpoint.positions[v] = 0.5 * (input.positions[static_cast<size_t>(b.a)] + input.positions[static_cast<size_t>(b.b)]);
+            } else {
+                Vec3 sum = Vec3::Zero();
+                const int n = input.face_size(b.a);
+                for (int k = 0; k < n; ++k) sum += input.positions[static_cast<size_t>(input.face(b.a)[k])];
+                midpoint.positions[v] = sum / n;
+            }
+        }
+        OtherSchemeFit fit{Scheme::Bilinear, "midpoint", level_one_distance(subject, births, midpoint, births), false};
+        fit.fits = fit.max_rel <= fit_threshold(midpoint, bounding_box_diagonal(midpoint.positions), tolerance);
+        out.push_back(fit);
+    }
+    return out;
+}
+
 }  // namespace
+
+std::string OtherSchemeFit::label() const {
+    return rule == "midpoint" ? std::string(to_string(scheme)) + " (midpoint)" : std::string(to_string(scheme)) + " " + rule;
+}
+
+const OtherSchemeFit* RuleIdentification::other_scheme() const {
+    for (const OtherSchemeFit& f : other_schemes)
+        if (f.fits) return &f;
+    return nullptr;
+}
 
 const char* to_string(VertexClass cls) {
     switch (cls) {
@@ -194,6 +288,7 @@ RuleIdentification identify_rule(Scheme scheme, const PolyMesh& input, const std
     std::sort(id.rows.begin(), id.rows.end(), [](const VertexClassRow& a, const VertexClassRow& b) {
         return std::pair{a.cls, a.valence} < std::pair{b.cls, b.valence};
     });
+    if (!id.rule) id.other_schemes = fit_other_schemes(scheme, input, subject[0], births[0], tolerance);
     return id;
 }
 
@@ -216,6 +311,16 @@ std::optional<SchemeRule> nearest_fitting_rule(const RuleIdentification& id, con
 }
 
 void RuleTally::add(const RuleIdentification& id) {
+    if (!id.other_schemes.empty()) {
+        ++other_tried_;
+        for (const OtherSchemeFit& f : id.other_schemes) {
+            if (!f.fits) continue;
+            const std::string label = f.label();
+            auto it = std::find_if(other_fits_.begin(), other_fits_.end(), [&](const auto& p) { return p.first == label; });
+            if (it == other_fits_.end()) other_fits_.push_back({label, 1});
+            else ++it->second;
+        }
+    }
     const size_t n = named_rules(scheme_).size();
     if (whole_fits_.empty()) {
         whole_fits_.assign(n, 0);
@@ -244,8 +349,16 @@ void RuleTally::add(const RuleIdentification& id) {
     }
 }
 
+std::string RuleTally::other_scheme_phrase() const {
+    if (other_fits_.empty()) return "";
+    std::string s;
+    for (const auto& [label, inputs] : other_fits_)
+        s += (s.empty() ? "" : ", ") + label + " on " + std::to_string(inputs) + " of " + std::to_string(other_tried_) + " inputs";
+    return ", and at level 1 it is " + s;
+}
+
 std::string RuleTally::rule_phrase() const {
-    if (scheme_ == Scheme::Loop) return loop_phrase();
+    if (scheme_ == Scheme::Loop) return loop_phrase() + other_scheme_phrase();
     // Another scheme: the named rules that fit every input's whole mesh, and the classes no
     // named rule fits.
     const std::vector<SchemeRule> rules = named_rules(scheme_);
@@ -272,7 +385,7 @@ std::string RuleTally::rule_phrase() const {
     }
     std::string s = std::string(to_string(scheme_)) + " scheme";
     for (const std::string& p : parts) s += ", " + p;
-    return s;
+    return s + other_scheme_phrase();
 }
 
 std::string RuleTally::loop_phrase() const {

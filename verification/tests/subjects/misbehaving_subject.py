@@ -14,7 +14,8 @@ weights, every coordinate rounded to float32 and written as binary PLY, as MeshL
 correct result of a float implementation; OUT names the .ply), keep-boundary (Loop's own
 weights, but every boundary vertex left where it is: a rule no one names), closed-only (exits
 with a traceback on any input with a boundary edge, as a program that assumes two faces per
-edge does).
+edge does), midpoint (Loop's connectivity, but old vertices kept and every edge point its
+edge's midpoint: a midpoint subdivision handed in as Loop).
 """
 import math
 import os
@@ -53,6 +54,14 @@ def main():
     if mode == "nothing":
         return
     scheme = sys.argv[5] if len(sys.argv) > 5 else "loop"
+    if mode == "midpoint":
+        butterfly = importlib.import_module("butterfly")
+        butterfly.four_point = midpoint = lambda t, vs, a, b: loop.scale(loop.add(vs[a], vs[b]), 0.5)  # boundary edges too
+        verts, faces = loop.read_obj(src)
+        for _ in range(levels):
+            verts, faces = butterfly.subdivide(verts, faces, midpoint)
+        loop.write_obj(out, verts, faces)
+        return
     loop.even_beta = loop_beta
     verts, faces = loop.read_obj(src)
     if scheme != "loop":

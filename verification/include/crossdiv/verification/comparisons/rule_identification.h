@@ -71,12 +71,32 @@ struct VertexClassRow {
     int worst_vertex = -1;
 };
 
+/// How far the subject's level 1 lies from a rule of another scheme that refines to the same
+/// connectivity (Loop and the Butterflies split triangles alike; Catmull-Clark and bilinear
+/// split faces into quads alike), or from midpoint averaging, matched vertex by vertex through
+/// provenance: what a subject is when no rule of the scheme it was given as fits.
+struct OtherSchemeFit {
+    Scheme scheme = Scheme::Loop;
+    /// The rule's name; "midpoint" for the points bilinear subdivision places (old vertices
+    /// kept, edge midpoints, face centroids) on the connectivity of a triangle-splitting scheme.
+    std::string rule;
+    double max_rel = 0;  ///< largest distance over the diagonal at level 1 (INFINITY: core refuses the input)
+    bool fits = false;
+    /// "butterfly reflected-wings", "bilinear (midpoint)".
+    std::string label() const;
+};
+
 struct RuleIdentification {
     Scheme scheme = Scheme::Loop;
     int classified_level = 0;  ///< 0: no level was classified (levels=final with more than one level, or no provenance)
     std::vector<VertexClassRow> rows;
     std::vector<RuleFit> whole;      ///< every vertex at every compared level, per named rule
     std::optional<SchemeRule> rule;  ///< the rule that fits the whole mesh, when one does
+    /// When no rule fits and level 1 was classified: the rules of the schemes with the same
+    /// connectivity, each measured at level 1 (empty otherwise).
+    std::vector<OtherSchemeFit> other_schemes;
+    /// The first of other_schemes that fits, when one does.
+    const OtherSchemeFit* other_scheme() const;
 };
 
 /// The named rules of `scheme`: every rule core implements, in the order core declares them.
@@ -122,7 +142,12 @@ private:
         std::vector<char> fits;       ///< per named rule, fits on every input
     };
     std::string loop_phrase() const;
+    /// "; at level 1 it is butterfly reflected-wings on 3 of 3 inputs" when another scheme's
+    /// rule fits where none of this one's does.
+    std::string other_scheme_phrase() const;
     Scheme scheme_;
+    std::vector<std::pair<std::string, int>> other_fits_;  ///< label, inputs where it fits
+    int other_tried_ = 0;                                  ///< inputs where other schemes were tried
     std::vector<Tally> rows_;
     std::vector<int> whole_fits_;     ///< per named rule, the inputs where it fits the whole mesh
     std::vector<double> whole_max_;   ///< per named rule, the largest whole-mesh distance where it fits
