@@ -423,9 +423,9 @@ struct ProgramArgs {
             ->capture_default_str();
         app.add_option("--subject", subject,
                        "Put a program under test in core's place: a command template such as "
-                       "'python3 loop.py {in} {levels} {out}' ({in} {in.off} {in.ply} {out} {out.off} {out.ply} "
-                       "{levels} {scheme} {weights} {boundary}); run without a shell, in a temporary folder, with "
-                       "--timeout per run");
+                       "'python3 loop.py {in} {levels} {out}' ({in}: OBJ with its 't' tag lines, {in.untagged}, "
+                       "{in.off}, {in.ply}: without; {out} {out.off} {out.ply} {levels} {scheme} {weights} {boundary}); "
+                       "run without a shell, in a temporary folder, with --timeout per run");
         app.add_option("--subject-name", subject_name, "The subject's name in the results")->capture_default_str();
         app.add_option("--subject-levels", subject_levels,
                        "each: run the subject once per level 1..N and compare every level; final: once, for level N")

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace crossdiv::cli {
@@ -48,12 +49,25 @@ void print_subject(const RefinementComparison& c) {
     for (const RuleFit& f : c.rules->whole) fmt::print(" {:>16}", cell(f));
     fmt::print("\n  rule: {}\n", c.rules->rule ? rule_name(c.scheme, *c.rules->rule) : std::string("no named rule fits"));
     if (c.rules->other_schemes.empty()) return;
+    // The nearest rule of each scheme (and of the scheme with the tags ignored).
+    std::vector<const OtherSchemeFit*> nearest;
+    for (const OtherSchemeFit& f : c.rules->other_schemes) {
+        const bool untagged = f.rule.ends_with("tags ignored");
+        auto it = std::find_if(nearest.begin(), nearest.end(), [&](const OtherSchemeFit* n) {
+            return n->scheme == f.scheme && n->rule.ends_with("tags ignored") == untagged && (n->rule == "midpoint") == (f.rule == "midpoint");
+        });
+        if (it == nearest.end()) nearest.push_back(&f);
+        else if (f.max_rel < (*it)->max_rel) *it = &f;
+    }
     std::vector<std::string> others;
-    for (const OtherSchemeFit& f : c.rules->other_schemes) others.push_back(fmt::format("{} {}{:.2g}", f.label(), f.fits ? "= " : "", f.max_rel));
+    for (const OtherSchemeFit* f : nearest) others.push_back(fmt::format("{} {}{:.2g}", f->label(), f->fits ? "= " : "", f->max_rel));
     const OtherSchemeFit* it = c.rules->other_scheme();
-    fmt::print("  other schemes at level 1: {}\n  {}\n", fmt::join(others, ", "),
-               it ? fmt::format("it is {}, not {}", it->label(), to_string(c.scheme))
-                  : std::string("no rule of these schemes fits either"));
+    fmt::print("  nearest rule of each scheme with its connectivity, at level 1: {}\n  {}\n", fmt::join(others, ", "),
+               !it ? std::string("no rule of these schemes fits either")
+               : it->rule.ends_with("tags ignored")
+                   ? fmt::format("it reads past the input's tags: it is {} {} on the mesh without them", to_string(it->scheme),
+                                 it->rule.substr(0, it->rule.size() - std::string_view(", tags ignored").size()))
+                   : fmt::format("it is {}, not {}", it->label(), to_string(c.scheme)));
 }
 
 bool symptom_of_subject(const RefinementComparison& c) { return c.subject_failed() || (c.rules && !c.rules->rule); }

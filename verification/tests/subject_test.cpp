@@ -55,7 +55,7 @@ TEST(CommandTemplate, SplitsLikeAShellWithoutOneAndSubstitutesEachPlaceholder) {
     EXPECT_TRUE(t.reads(MeshFormat::Obj));
     EXPECT_FALSE(t.reads(MeshFormat::Off));
     EXPECT_EQ(t.output_format(), MeshFormat::Off);
-    TemplateValues v{"/t/in.obj", "/t/in.off", "/t/in.ply", "/t/out.off", {Scheme::Loop, {}, 3}};
+    TemplateValues v{"/t/in.obj", "/t/in.off", "/t/in.ply", "/t/out.off", {Scheme::Loop, {}, 3}, "/t/in-untagged.obj"};
     v.request.rule.loop = {LoopWeights::Warren, LoopBoundary::EdgeAndCorner};
     const std::vector<std::string> want = {"prog", "a b", "c 3", "x y", "--out=/t/out.off", "{lit}", "loop",
                                            "warren", "edge-and-corner", "/t/in.obj"};
@@ -442,6 +442,47 @@ TEST(SchemeSubject, WhenNoRuleOfItsSchemeFitsTheSchemesWithItsConnectivityAreTri
     const RefinementComparison own = compare_with(*student, "icosahedron", 2);
     ASSERT_TRUE(own.rules && own.rules->rule);
     EXPECT_TRUE(own.rules->other_schemes.empty());
+}
+
+TEST(SchemeSubject, IsGivenTheTagsInItsObjAndOneThatReadsPastThemIsNamedSo) {
+    // A cube whose top edges are sharp (sharpness 10), as OpenSubdiv's OBJ states them.
+    PolyMesh cube = datasets::crease_cube(datasets::CreaseCubeVariant::SharpTop);
+    const auto run = [&](const std::string& command) {
+        ProgramSpec spec;
+        spec.name = "cc";
+        spec.command = command;
+        spec.schemes = {Scheme::CatmullClark};
+        const auto subject = make_program_implementation(spec);
+        RefinementRequest req;
+        req.scheme = Scheme::CatmullClark;
+        req.levels = 2;
+        req.subject = subject.get();
+        return compare_refinement(cube, "creased-cube", req);
+    };
+    // crossdiv's own subdivide reads the 't' lines of {in}: it follows the tags.
+    const RefinementComparison own =
+        run(test::kCrossdiv + " subdivide {in} --scheme catmull-clark --levels {levels} -o {out}");
+    ASSERT_TRUE(own.core_error.empty()) << own.core_error;
+    ASSERT_EQ(own.subject_outcome.status, RunStatus::Ok) << own.subject_outcome.summary();
+    ASSERT_TRUE(own.rules && own.rules->rule) << own.subject_unmatched;
+    EXPECT_EQ(own.rules->rule->catmull_clark.boundary, CatmullClarkBoundary::EdgeOnly);
+    // The course program skips the 't' lines: no rule fits, and it is core on the untagged cube.
+    const std::string course = "python3 " + kSource + "/examples/subjects/python-schemes/catmull_clark.py ";
+    const RefinementComparison skips = run(course + "{in} {levels} {out}");
+    ASSERT_TRUE(skips.rules) << skips.subject_outcome.summary();
+    EXPECT_FALSE(skips.rules->rule);
+    ASSERT_TRUE(skips.rules->other_scheme());
+    EXPECT_EQ(skips.rules->other_scheme()->scheme, Scheme::CatmullClark);
+    EXPECT_EQ(skips.rules->other_scheme()->rule, "edge-only, tags ignored");
+    // Given the OBJ without tags, the program is refused the tagged input, the tags named.
+    const RefinementComparison untagged = run(course + "{in.untagged} {levels} {out}");
+    EXPECT_EQ(untagged.subject_outcome.status, RunStatus::Rejected);
+    EXPECT_NE(untagged.subject_outcome.message.find("4 crease and 0 corner tag(s)"), std::string::npos)
+        << untagged.subject_outcome.message;
+    // The untagged cube is its input: it is compared as any subject.
+    cube.creases = {};
+    const RefinementComparison plain = run(course + "{in.untagged} {levels} {out}");
+    ASSERT_TRUE(plain.rules && plain.rules->rule) << plain.subject_outcome.summary();
 }
 
 TEST(SchemeSubject, ACatmullClarkWithOpenMeshsBoundaryIsNamedClassByClass) {

@@ -12,6 +12,11 @@ namespace crossdiv::verification::test {
 /// The source tree this build was configured from.
 inline const std::string kSource = CROSSDIV_SOURCE_DIR;
 
+#ifdef CROSSDIV_CLI
+/// The crossdiv command-line program of this build (test binaries that run it define it).
+inline const std::string kCrossdiv = CROSSDIV_CLI;
+#endif
+
 /// The bundled mesh `name` as triangles, its source named "test".
 inline TriMesh bundled(const std::string& name) { return to_tri_mesh(datasets::bundled_mesh(name), "test"); }
 

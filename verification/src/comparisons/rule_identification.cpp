@@ -128,15 +128,33 @@ std::vector<Scheme> same_connectivity(Scheme scheme) {
 std::vector<OtherSchemeFit> fit_other_schemes(Scheme scheme, const PolyMesh& input, const PolyMesh& subject,
                                               const std::vector<VertexBirth>& births, double tolerance) {
     std::vector<OtherSchemeFit> out;
+    if (!input.creases.empty()) {
+        // A program that reads past the 't' lines it is given refines the mesh as if untagged.
+        PolyMesh untagged = input;
+        untagged.creases = {};
+        for (const SchemeRule& r : named_rules(scheme)) {
+            OtherSchemeFit fit{scheme, rule_name(scheme, r) + ", tags ignored", INFINITY, false};
+            try {
+                const Refinement ref = core_implementation().refine_with_provenance(untagged, {scheme, r, 1});
+                if (ref.levels.size() > 1 && !ref.births.empty()) {
+                    fit.max_rel = level_one_distance(subject, births, ref.levels[1], ref.births[0]);
+                    fit.fits = fit.max_rel <= fit_threshold(ref.levels[1], bounding_box_diagonal(ref.levels[1].positions), tolerance);
+                }
+            } catch (const std::exception&) {
+            }
+            out.push_back(fit);
+        }
+    }
     const std::vector<Scheme> others = same_connectivity(scheme);
     for (Scheme other : others)
         for (const SchemeRule& r : named_rules(other)) {
             OtherSchemeFit fit{other, rule_name(other, r), INFINITY, false};
             try {
                 const Refinement ref = core_implementation().refine_with_provenance(input, {other, r, 1});
-                if (ref.levels.size() > 1 && !ref.births.empty())
+                if (ref.levels.size() > 1 && !ref.births.empty()) {
                     fit.max_rel = level_one_distance(subject, births, ref.levels[1], ref.births[0]);
-                fit.fits = fit.max_rel <= fit_threshold(ref.levels[1], bounding_box_diagonal(ref.levels[1].positions), tolerance);
+                    fit.fits = fit.max_rel <= fit_threshold(ref.levels[1], bounding_box_diagonal(ref.levels[1].positions), tolerance);
+                }
             } catch (const std::exception&) {
                 // core refuses the input under this scheme (a tag Butterfly lacks): nothing measured
             }
@@ -351,9 +369,33 @@ void RuleTally::add(const RuleIdentification& id) {
 
 std::string RuleTally::other_scheme_phrase() const {
     if (other_fits_.empty()) return "";
+    // Rules a closed mesh cannot tell apart fit together: one per scheme (and per tags
+    // ignored or not), the one that fits the most inputs, with how many others fit as often.
+    std::vector<std::pair<std::string, int>> shown;  // label, how many more fit as often
+    std::vector<int> inputs_of;
+    for (const auto& [label, inputs] : other_fits_) {
+        const std::string group = label.substr(0, label.find(' ')) + (label.ends_with("tags ignored") ? "/untagged" : "");
+        auto it = std::find_if(shown.begin(), shown.end(), [&](const auto& p) {
+            return p.first.substr(0, p.first.find(' ')) + (p.first.ends_with("tags ignored") ? "/untagged" : "") == group;
+        });
+        if (it == shown.end()) {
+            shown.push_back({label, 0});
+            inputs_of.push_back(inputs);
+            continue;
+        }
+        const size_t k = static_cast<size_t>(it - shown.begin());
+        if (inputs > inputs_of[k]) {
+            *it = {label, 0};
+            inputs_of[k] = inputs;
+        } else if (inputs == inputs_of[k]) {
+            ++it->second;
+        }
+    }
     std::string s;
-    for (const auto& [label, inputs] : other_fits_)
-        s += (s.empty() ? "" : ", ") + label + " on " + std::to_string(inputs) + " of " + std::to_string(other_tried_) + " inputs";
+    for (size_t k = 0; k < shown.size(); ++k)
+        s += (s.empty() ? "" : ", ") + shown[k].first + " on " + std::to_string(inputs_of[k]) + " of " +
+             std::to_string(other_tried_) + " inputs" +
+             (shown[k].second ? " (and " + std::to_string(shown[k].second) + " other rules of it alike)" : "");
     return ", and at level 1 it is " + s;
 }
 

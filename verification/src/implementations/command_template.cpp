@@ -10,9 +10,10 @@
 namespace crossdiv::verification {
 namespace {
 
-constexpr std::array<std::string_view, 13> kPlaceholders = {"in",      "in.obj", "in.off",  "in.ply",  "out",
-                                                            "out.obj", "out.off", "out.ply", "levels", "scheme",
-                                                            "weights", "boundary", "adapters"};
+constexpr std::array<std::string_view, 14> kPlaceholders = {"in",      "in.obj",  "in.untagged", "in.off",
+                                                            "in.ply",  "out",     "out.obj",     "out.off",
+                                                            "out.ply", "levels",  "scheme",      "weights",
+                                                            "boundary", "adapters"};
 
 }  // namespace
 
@@ -80,8 +81,8 @@ CommandTemplate::CommandTemplate(std::string text, bool needs_output) : text_(st
             const std::string name = text_.substr(i + 1, close - i - 1);
             if (std::find(kPlaceholders.begin(), kPlaceholders.end(), name) == kPlaceholders.end())
                 fail("unknown placeholder {" + name +
-                     "} (known: {in} {in.obj} {in.off} {in.ply} {out} {out.obj} {out.off} {out.ply} {levels} {scheme} "
-                     "{weights} {boundary} {adapters})");
+                     "} (known: {in} {in.obj} {in.untagged} {in.off} {in.ply} {out} {out.obj} {out.off} {out.ply} "
+                     "{levels} {scheme} {weights} {boundary} {adapters})");
             word.push_back({true, name});
             in_word = true;
             i = close;
@@ -100,6 +101,7 @@ CommandTemplate::CommandTemplate(std::string text, bool needs_output) : text_(st
         for (const Piece& p : w) {
             if (!p.placeholder) continue;
             reads_obj_ |= p.text == "in" || p.text == "in.obj";
+            reads_untagged_ |= p.text == "in.untagged";
             reads_off_ |= p.text == "in.off";
             reads_ply_ |= p.text == "in.ply";
             obj_out |= p.text == "out" || p.text == "out.obj";
@@ -122,6 +124,10 @@ void CommandTemplate::anchor_relative_paths(const std::string& base) {
     }
 }
 
+bool CommandTemplate::reads_tags() const { return reads_obj_; }
+
+bool CommandTemplate::reads_untagged_obj() const { return reads_untagged_; }
+
 bool CommandTemplate::reads(MeshFormat format) const {
     switch (format) {
         case MeshFormat::Obj: return reads_obj_;
@@ -138,6 +144,7 @@ std::vector<std::string> CommandTemplate::expand(const TemplateValues& v) const 
         for (const Piece& p : w) {
             if (!p.placeholder) arg += p.text;
             else if (p.text == "in" || p.text == "in.obj") arg += v.in_obj;
+            else if (p.text == "in.untagged") arg += v.in_untagged;
             else if (p.text == "in.off") arg += v.in_off;
             else if (p.text == "in.ply") arg += v.in_ply;
             else if (p.text == "adapters") arg += adapters_dir();

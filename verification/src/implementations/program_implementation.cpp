@@ -56,12 +56,13 @@ std::vector<SchemeRule> program_rules(const ProgramSpec& spec, Scheme scheme, bo
     return rules;
 }
 
-Capabilities program_capabilities(const ProgramSpec& spec, bool passes_weights, bool passes_boundary) {
+Capabilities program_capabilities(const ProgramSpec& spec, bool passes_weights, bool passes_boundary, bool reads_tags) {
     Capabilities c;
     c.precision = spec.precision;
     const std::vector<Scheme> schemes = spec.schemes.empty() ? all_schemes() : spec.schemes;
     for (Scheme s : schemes) {
-        SchemeSupport support{s, program_rules(spec, s, passes_weights, passes_boundary), false, 0, ""};
+        SchemeSupport support{s, program_rules(spec, s, passes_weights, passes_boundary), reads_tags && traits(s).sdc_tags, 0,
+                              ""};
         if (support.rules.empty())
             throw InputError("program '" + spec.name + "': none of its weights and boundary rules is a rule of " + to_string(s));
         c.schemes.push_back(std::move(support));
@@ -104,7 +105,7 @@ public:
     Program(const ProgramSpec& spec, CommandTemplate command)
         : Implementation(spec.name, "command: " + spec.command, ImplementationKind::Program,
                          program_capabilities(spec, command.text().find("{weights}") != std::string::npos,
-                                              command.text().find("{boundary}") != std::string::npos)),
+                                              command.text().find("{boundary}") != std::string::npos, command.reads_tags())),
           spec_(spec),
           command_(std::move(command)),
           unavailable_(run_setup(spec)) {}
@@ -132,15 +133,22 @@ private:
     /// One run of the program for `request.levels` levels of `mesh`.
     PolyMesh run_once(const PolyMesh& mesh, const RefineRequest& request) const {
         const TemporaryFolder folder(file_label(name()));
-        TemplateValues values{(folder.path() / "in.obj").string(), (folder.path() / "in.off").string(),
+        TemplateValues values{(folder.path() / "in.obj").string(),
+                              (folder.path() / "in.off").string(),
                               (folder.path() / "in.ply").string(),
                               (folder.path() / (std::string("out.") + to_string(command_.output_format()))).string(),
-                              request};
-        PolyMesh input = mesh;
-        input.creases = {};  // tags are not the program's input (OBJ 't' lines are not written)
-        if (command_.reads(MeshFormat::Obj)) write_mesh(values.in_obj, input);
-        if (command_.reads(MeshFormat::Off)) write_mesh(values.in_off, input);
-        if (command_.reads(MeshFormat::Ply)) write_mesh(values.in_ply, input);
+                              request,
+                              (folder.path() / "in-untagged.obj").string()};
+        if (!mesh.creases.empty() && !command_.reads_tags())
+            throw adapters::Rejected(name() + " reads its input without tags (" +
+                                     (command_.reads_untagged_obj() ? "{in.untagged}" : "OFF or PLY") + "), and this one has " +
+                                     mesh.creases.describe() + "; name {in} to be given them as OBJ 't' lines");
+        if (command_.reads(MeshFormat::Obj)) write_mesh(values.in_obj, mesh);  // with its 't' lines
+        PolyMesh untagged = mesh;
+        untagged.creases = {};
+        if (command_.reads_untagged_obj()) write_mesh(values.in_untagged, untagged);
+        if (command_.reads(MeshFormat::Off)) write_mesh(values.in_off, untagged);
+        if (command_.reads(MeshFormat::Ply)) write_mesh(values.in_ply, untagged);
         const std::string stderr_path = (folder.path() / "stderr.txt").string();
         const ProcessResult r = run_confined(command_.expand(values), {folder.path().string(), spec_.timeout_seconds,
                                                                        (folder.path() / "stdout.txt").string(), stderr_path});
@@ -181,8 +189,9 @@ class ResultFile final : public Implementation {
 public:
     ResultFile(const std::string& name, std::string path, Scheme scheme)
         : Implementation(name, "result file: " + path, ImplementationKind::Program,
+                         // The file was made from the input, tags and all, by whatever made it.
                          program_capabilities({name, "", {scheme}, LevelMode::Final, Precision::Double, 0, {}, {}, "", ""},
-                                              true, true)),
+                                              true, true, true)),
           path_(std::move(path)) {}
 
     bool confines_itself() const override { return true; }
@@ -310,7 +319,7 @@ void check_program_spec(const ProgramSpec& spec) {
     CommandTemplate command(spec.command);
     if (!spec.setup.empty()) CommandTemplate setup(spec.setup, false);
     program_capabilities(spec, command.text().find("{weights}") != std::string::npos,
-                         command.text().find("{boundary}") != std::string::npos);
+                         command.text().find("{boundary}") != std::string::npos, command.reads_tags());
 }
 
 std::unique_ptr<Implementation> make_program_implementation(const ProgramSpec& spec) {

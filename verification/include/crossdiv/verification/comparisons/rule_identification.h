@@ -78,7 +78,9 @@ struct VertexClassRow {
 struct OtherSchemeFit {
     Scheme scheme = Scheme::Loop;
     /// The rule's name; "midpoint" for the points bilinear subdivision places (old vertices
-    /// kept, edge midpoints, face centroids) on the connectivity of a triangle-splitting scheme.
+    /// kept, edge midpoints, face centroids) on the connectivity of a triangle-splitting scheme;
+    /// "<rule>, tags ignored" for the subject's own scheme on the input without its tags (a
+    /// program that reads past the 't' lines it is given).
     std::string rule;
     double max_rel = 0;  ///< largest distance over the diagonal at level 1 (INFINITY: core refuses the input)
     bool fits = false;
@@ -92,8 +94,9 @@ struct RuleIdentification {
     std::vector<VertexClassRow> rows;
     std::vector<RuleFit> whole;      ///< every vertex at every compared level, per named rule
     std::optional<SchemeRule> rule;  ///< the rule that fits the whole mesh, when one does
-    /// When no rule fits and level 1 was classified: the rules of the schemes with the same
-    /// connectivity, each measured at level 1 (empty otherwise).
+    /// When no rule fits and level 1 was classified: the scheme's rules without the input's
+    /// tags (when it has some), and the rules of the schemes with the same connectivity, each
+    /// measured at level 1 (empty otherwise).
     std::vector<OtherSchemeFit> other_schemes;
     /// The first of other_schemes that fits, when one does.
     const OtherSchemeFit* other_scheme() const;

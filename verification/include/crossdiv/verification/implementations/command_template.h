@@ -10,7 +10,11 @@
 /// started are made absolute first (anchor_relative_paths).
 ///
 /// Placeholders, each inside any word:
-///   {in} {in.obj}    the input, written as OBJ with 17 significant digits
+///   {in} {in.obj}    the input, written as OBJ with 17 significant digits, with its tags
+///                    (OpenSubdiv's 't crease', 't corner', 't interpolateboundary', ... lines):
+///                    a command that names it declares it honours them
+///   {in.untagged}    the same OBJ without the tag lines, for a program that cannot read them;
+///                    it, like OFF and PLY, is refused a tagged input
 ///   {in.off}         the input as OFF
 ///   {in.ply}         the input as ASCII PLY
 ///   {out} {out.obj}  where the program writes its result as OBJ
@@ -40,6 +44,7 @@ struct TemplateValues {
     std::string in_obj, in_off, in_ply;  ///< paths of the input in each format (written only when used)
     std::string out;             ///< the output path, with the extension of output_format()
     RefineRequest request;
+    std::string in_untagged;  ///< the path of the OBJ without tag lines
 };
 
 class CommandTemplate {
@@ -52,6 +57,10 @@ public:
     const std::string& text() const { return text_; }
     /// The formats of the input the command reads (one file is written per format used).
     bool reads(MeshFormat format) const;
+    /// Whether it reads the OBJ with tag lines ({in}, {in.obj}): the program honours tags.
+    bool reads_tags() const;
+    /// Whether it reads the OBJ without them ({in.untagged}).
+    bool reads_untagged_obj() const;
     MeshFormat output_format() const { return output_format_; }
     /// Makes each word without placeholders that names an existing file or folder relative
     /// to `base` (the current folder when empty) absolute, so that the command means what it
@@ -69,7 +78,7 @@ private:
     };
     std::string text_;
     std::vector<std::vector<Piece>> words_;
-    bool reads_obj_ = false, reads_off_ = false, reads_ply_ = false;
+    bool reads_obj_ = false, reads_off_ = false, reads_ply_ = false, reads_untagged_ = false;
     MeshFormat output_format_ = MeshFormat::Obj;
 };
 
