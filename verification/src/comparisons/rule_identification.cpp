@@ -128,38 +128,29 @@ std::vector<Scheme> same_connectivity(Scheme scheme) {
 std::vector<OtherSchemeFit> fit_other_schemes(Scheme scheme, const PolyMesh& input, const PolyMesh& subject,
                                               const std::vector<VertexBirth>& births, double tolerance) {
     std::vector<OtherSchemeFit> out;
+    // Core's level 1 of `mesh` under (s, r) against the subject's, matched by birth; nothing
+    // measured where core refuses the input under it (a tag the Butterflies lack).
+    const auto measure = [&](const PolyMesh& mesh, Scheme s, const SchemeRule& r, std::string label) {
+        OtherSchemeFit fit{s, std::move(label), INFINITY, false};
+        try {
+            const Refinement ref = core_implementation().refine_with_provenance(mesh, {s, r, 1});
+            if (ref.levels.size() > 1 && !ref.births.empty()) {
+                fit.max_rel = level_one_distance(subject, births, ref.levels[1], ref.births[0]);
+                fit.fits = fit.max_rel <= fit_threshold(ref.levels[1], bounding_box_diagonal(ref.levels[1].positions), tolerance);
+            }
+        } catch (const std::exception&) {
+        }
+        out.push_back(fit);
+    };
     if (!input.creases.empty()) {
         // A program that reads past the 't' lines it is given refines the mesh as if untagged.
         PolyMesh untagged = input;
         untagged.creases = {};
-        for (const SchemeRule& r : named_rules(scheme)) {
-            OtherSchemeFit fit{scheme, rule_name(scheme, r) + ", tags ignored", INFINITY, false};
-            try {
-                const Refinement ref = core_implementation().refine_with_provenance(untagged, {scheme, r, 1});
-                if (ref.levels.size() > 1 && !ref.births.empty()) {
-                    fit.max_rel = level_one_distance(subject, births, ref.levels[1], ref.births[0]);
-                    fit.fits = fit.max_rel <= fit_threshold(ref.levels[1], bounding_box_diagonal(ref.levels[1].positions), tolerance);
-                }
-            } catch (const std::exception&) {
-            }
-            out.push_back(fit);
-        }
+        for (const SchemeRule& r : named_rules(scheme)) measure(untagged, scheme, r, rule_name(scheme, r) + ", tags ignored");
     }
     const std::vector<Scheme> others = same_connectivity(scheme);
     for (Scheme other : others)
-        for (const SchemeRule& r : named_rules(other)) {
-            OtherSchemeFit fit{other, rule_name(other, r), INFINITY, false};
-            try {
-                const Refinement ref = core_implementation().refine_with_provenance(input, {other, r, 1});
-                if (ref.levels.size() > 1 && !ref.births.empty()) {
-                    fit.max_rel = level_one_distance(subject, births, ref.levels[1], ref.births[0]);
-                    fit.fits = fit.max_rel <= fit_threshold(ref.levels[1], bounding_box_diagonal(ref.levels[1].positions), tolerance);
-                }
-            } catch (const std::exception&) {
-                // core refuses the input under this scheme (a tag Butterfly lacks): nothing measured
-            }
-            out.push_back(fit);
-        }
+        for (const SchemeRule& r : named_rules(other)) measure(input, other, r, rule_name(other, r));
     if (std::find(others.begin(), others.end(), Scheme::Bilinear) == others.end() && scheme != Scheme::Bilinear) {
         // Midpoint averaging on this connectivity: each point the average of what it was born from.
         PolyMesh midpoint = subject;
