@@ -129,10 +129,10 @@ py::object json_to_python(const nlohmann::json& j) {
     return py::module_::import("json").attr("loads")(json_text(j));
 }
 
-/// A Python function subject(V, F) -> (V, F) refining one level, as an implementation: level
-/// k is k calls. It runs in the harness's forked child like any implementation, so an
-/// exception, a crash or a hang there is the run's outcome, not the caller's.
-std::unique_ptr<Implementation> python_subject(const std::string& name, py::object subject) {
+/// A Python function subject(V, F) -> (V, F) refining one level of `scheme`, as an
+/// implementation: level k is k calls. It runs in the harness's forked child like any
+/// implementation, so an exception, a crash or a hang there is the run's outcome, not the caller's.
+std::unique_ptr<Implementation> python_subject(const std::string& name, Scheme scheme, py::object subject) {
     RefineFunction refine = [subject](const PolyMesh& mesh, const RefineRequest& request) {
         PolyMesh copy = mesh;
         py::object V = positions_array(std::move(copy.positions));
@@ -146,7 +146,7 @@ std::unique_ptr<Implementation> python_subject(const std::string& name, py::obje
         }
         return mesh_from(V.cast<py::array_t<double, py::array::c_style | py::array::forcecast>>(), F);
     };
-    return make_callback_implementation(name, {Scheme::Loop}, std::move(refine));
+    return make_callback_implementation(name, {scheme}, std::move(refine));
 }
 
 }  // namespace
@@ -263,7 +263,7 @@ PYBIND11_MODULE(crossdiv, m) {
               std::unique_ptr<Implementation> under_test;
               if (!subject.is_none()) {
                   if (!PyCallable_Check(subject.ptr())) throw InputError("subject must be callable: subject(V, F) -> (V, F)");
-                  under_test = python_subject(subject_name, subject);
+                  under_test = python_subject(subject_name, req.scheme, subject);
                   req.subject = under_test.get();
               }
               const PolyMesh mesh = mesh_from(V, F);
@@ -276,7 +276,7 @@ PYBIND11_MODULE(crossdiv, m) {
           py::arg("scheme") = "loop",
           "Compares `scheme` (loop, catmull-clark, doo-sabin, sqrt3, butterfly, modified-butterfly, bilinear; "
           "weights for Loop, boundary as crossdiv compare names them, each the scheme's default when None) of "
-          "(V, F) by core (or `subject`, Loop only so far) with each reference that has it (all built when empty): "
+          "(V, F) by core (or `subject`, a function of that scheme) with each reference that has it (all built when empty): "
           "the same record as `crossdiv compare --json` (runs, verdicts, divergence classes, worst vertex; with a "
           "subject, the named rule it follows). subject(V, F) -> (V, F) refines one level; it runs in a child "
           "process with `timeout` seconds, so its exception, crash or hang is recorded, not raised.");

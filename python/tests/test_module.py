@@ -154,6 +154,34 @@ def test_a_python_loop_is_identified_by_its_rule():
     assert warren["runs"][0]["divergence_class"] == "weight-family"
 
 
+def test_a_python_subject_of_every_scheme_is_named():
+    # The course-style programs of examples/subjects/python-schemes, called one level at a time
+    # on numpy arrays, each named by the rule it follows on a patch with a boundary.
+    sys.path.insert(0, os.path.join(SOURCE, "examples", "subjects", "python-schemes"))
+    import bilinear
+    import butterfly
+    import catmull_clark
+    import doo_sabin
+    import modified_butterfly
+    import sqrt3
+    V = np.array([[x, y, 0.1 * ((x * x + 2 * y) % 3)] for y in range(4) for x in range(4)], dtype=float)
+    F = np.array([t for y in range(3) for x in range(3)
+                  for t in ([4 * y + x, 4 * y + x + 1, 4 * y + x + 5], [4 * y + x, 4 * y + x + 5, 4 * y + x + 4])])
+    expected = {"catmull-clark": (catmull_clark, "edge-only"), "doo-sabin": (doo_sabin, "drop-border-faces"),
+                "sqrt3": (sqrt3, "restart-each-level"), "butterfly": (butterfly, "reflected-wings"),
+                "modified-butterfly": (modified_butterfly, "reflected-wings"), "bilinear": (bilinear, "linear")}
+    def as_lists(subdivide):  # the programs take Python lists, as the course's tables are
+        return lambda V, F: subdivide(np.asarray(V, dtype=float).tolist(), [[int(i) for i in f] for f in F])
+    for scheme, (module, rule) in expected.items():
+        record = crossdiv.compare(V, F, scheme=scheme, levels=2, subject=as_lists(module.subdivide), subject_name=scheme)
+        assert record["subject"]["status"] == "ok", (scheme, record["subject"]["status_message"])
+        assert record["subject"]["rules"]["rule"] == rule, (scheme, record["subject"]["rules"])
+    # One that drops a face is held to the counts of the scheme it is given as.
+    record = crossdiv.compare(V, F, scheme="doo-sabin", levels=1,
+                              subject=lambda V, F: (lambda m: (m[0], m[1][1:]))(as_lists(doo_sabin.subdivide)(V, F)))
+    assert record["subject"]["status"] == "wrong-count", record["subject"]
+
+
 def test_a_subject_that_raises_or_lies_is_recorded_not_raised():
     def broken(V, F):
         raise RuntimeError("my bug")
