@@ -12,7 +12,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from report import sections, viewer  # noqa: E402
+from report import roster, sections, viewer  # noqa: E402
 from report.model import render_html, render_markdown  # noqa: E402
 from report.records import halfedge_cases, split_cases  # noqa: E402
 from report.records import SCHEMA_VERSION, fmt  # noqa: E402
@@ -42,9 +42,11 @@ def build(results, bench, folder, figdir):
              f"{results.get('workers', 1)} worker(s)",
              f"- references: {refs}"]
     before, after = sections.mesh_sections(results, mesh, folder, figdir)
-    subject = sections.subject_section(mesh)
+    # With a roster, roster.html holds each subject's cases; the per-case table is for one subject.
+    roster_table = roster.roster_section(results, folder)
+    subject = None if roster_table else sections.subject_section(mesh)
     body = [viewer.first_screen(results["cases"], mesh + schemes, [r["name"] for r in results.get("references", [])], folder), sections.outcomes_section(s),
-            *([subject] if subject else []), *before,
+            *([roster_table] if roster_table else []), *([subject] if subject else []), *before,
             sections.catalogue_section(sections.catalogue_rows(mesh + schemes, curves + surfaces + studies +
                                                               halfedge_cases(results["cases"]))), *after,
             sections.curve_section(curves, bench, figdir), sections.surface_section(surfaces, bench, figdir),

@@ -64,7 +64,7 @@ def subject_section(mesh_cases):
                      ", ".join(unfit) if unfit else "-", s.get("status_message") or s.get("unmatched") or ""))
     return Section("Implementations under test").add(
         Text("Each case whose implementation under test is a subject (a program or result files in core's place): "
-             "its run or match, the named Loop rule that fits every vertex at every compared level, and the vertex "
+             "its run or match, the named rule that fits every vertex at every compared level, and the vertex "
              "classes no named rule fits (results.json `subject.rules` has the distance to every rule per class)."),
         Table(["case", "subject", "run / match", "rule", "classes no rule fits", "message"], rows))
 

@@ -88,7 +88,13 @@ TEST(Manifest, ErrorsNameTheFileAndLine) {
         {"suite s\ncase nope:all loop\n", "unknown collection 'nope:all'"},
         {"suite s\nmax-faces 0\n", ":2: max-faces 0 is not a positive integer"},
         {"suite s\nmax-faces 9223372036854775808\n", ":2: max-faces 9223372036854775808 is not a positive integer"},
+        {"suite s\nsubjects c dir='none/*' command='p {dir} {in} {out}'\n", ":2: dir='none/*': no folder"},
+        {"suite s\nsubjects c dir='*.nothing' command='p {dir} {in} {out}'\n", ":2: dir='*.nothing' matches no folder"},
+        {"suite s\nsubjects c command='p {in} {out}' timeout=3\n", ":2: subjects c: no dir="},
+        {"suite s\nsubjects c dir='sub*' result='{dir}/{input}.obj' command='p {in} {out}'\n", ":2: subjects c: give command="},
+        {"suite s\nsubject one command='python3 {dir}/loop.py {in} {out}'\n", ":2: program 'one': {dir} is a roster's"},
     };
+    fs::create_directories(d / "sub-a");  // one submission folder for the roster lines
     for (const auto& [text, message] : bad) {
         const std::string path = write(d / "bad.suite", text);
         try {
@@ -98,6 +104,31 @@ TEST(Manifest, ErrorsNameTheFileAndLine) {
             EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
         }
     }
+}
+
+TEST(Manifest, ARosterMakesOneSubjectPerSubmissionFolderAndOneEntryPerSubject) {
+    const fs::path d = temp_dir("roster");
+    for (const char* name : {"zed", "ann", "bo b", ".hidden"}) fs::create_directories(d / "class" / name);
+    std::ofstream(d / "class" / "notes.txt") << "a file, not a submission";
+    const Manifest m = read_manifest(write(d / "r.suite",
+                                           "suite r\nsubjects c dir='class/*' command='python3 {dir}/loop.py {in} {levels} {out}'\n"
+                                           "case bundled:tetrahedron,bundled:octahedron loop levels=1\n"
+                                           "subjects files dir='class/[ab]*' result='{dir}/{input}.obj'\n"
+                                           "case bundled:tetrahedron loop levels=1\n"));
+    // Folders in name order, hidden ones and files skipped; each subject named after its folder.
+    ASSERT_EQ(m.entries.size(), 5u);
+    std::vector<std::string> names;
+    for (const ManifestEntry& e : m.entries) names.push_back(e.subject->name);
+    EXPECT_EQ(names, (std::vector<std::string>{"ann", "bo b", "zed", "ann", "bo b"}));
+    EXPECT_EQ(m.entries[0].subject->roster, "c");
+    EXPECT_EQ(m.entries[0].subject->dir, (d / "class" / "ann").string());
+    EXPECT_TRUE(m.entries[0].subject->program);
+    // A result pattern takes the folder as it is, spaces and all.
+    EXPECT_EQ(m.entries[4].subject->result_path("bundled:tetrahedron", 1), (d / "class" / "bo b" / "tetrahedron.obj").string());
+    const std::vector<SuiteJob> jobs = expand_jobs(m);
+    ASSERT_EQ(jobs.size(), 8u);
+    EXPECT_NE(jobs[0].id.find("subject=ann"), std::string::npos) << jobs[0].id;
+    fs::remove_all(d);
 }
 
 TEST(Manifest, ReadsTheKeysOfEveryScheme) {

@@ -15,6 +15,11 @@ Every face of n corners becomes n quads. Standard library only.
 from polymesh import Tables, add, centroid, combine, main, scale
 
 
+def vertex_point(F, R, P, n):
+    """Catmull and Clark's interior vertex point."""
+    return scale(add(add(F, R, 2.0), P, n - 3.0), 1.0 / n)
+
+
 def subdivide(verts, faces):
     t = Tables(verts, faces)
     face_points = [centroid(verts, f) for f in faces]
@@ -47,7 +52,7 @@ def subdivide(verts, faces):
             continue
         F = scale([sum(face_points[f][i] for f in faces_around[v]) for i in range(3)], 1.0 / len(faces_around[v]))
         R = scale([sum(0.5 * (p[i] + verts[u][i]) for u in t.neighbours[v]) for i in range(3)], 1.0 / n)
-        moved.append(scale(add(add(F, R, 2.0), p, n - 3.0), 1.0 / n))
+        moved.append(vertex_point(F, R, p, n))
 
     first_face_point = len(verts) + len(edge_points)
     new_faces = []

@@ -138,7 +138,8 @@ private:
                               (folder.path() / "in.ply").string(),
                               (folder.path() / (std::string("out.") + to_string(command_.output_format()))).string(),
                               request,
-                              (folder.path() / "in-untagged.obj").string()};
+                              (folder.path() / "in-untagged.obj").string(),
+                              spec_.dir};
         if (!mesh.creases.empty() && !command_.reads_tags())
             throw adapters::Rejected(name() + " reads its input without tags (" +
                                      (command_.reads_untagged_obj() ? "{in.untagged}" : "OFF or PLY") + "), and this one has " +
@@ -190,7 +191,7 @@ public:
     ResultFile(const std::string& name, std::string path, Scheme scheme)
         : Implementation(name, "result file: " + path, ImplementationKind::Program,
                          // The file was made from the input, tags and all, by whatever made it.
-                         program_capabilities({name, "", {scheme}, LevelMode::Final, Precision::Double, 0, {}, {}, "", ""},
+                         program_capabilities({name, "", {scheme}, LevelMode::Final, Precision::Double, 0, {}, {}, "", "", ""},
                                               true, true, true)),
           path_(std::move(path)) {}
 
@@ -318,6 +319,9 @@ void check_program_spec(const ProgramSpec& spec) {
     check_rule_names(spec);
     CommandTemplate command(spec.command);
     if (!spec.setup.empty()) CommandTemplate setup(spec.setup, false);
+    if (spec.dir.empty() && (spec.command.find("{dir}") != std::string::npos || spec.setup.find("{dir}") != std::string::npos))
+        throw InputError("program '" + spec.name + "': {dir} is a roster's submission folder; it has a meaning in a "
+                         "manifest's `subjects NAME dir=...` statement only");
     program_capabilities(spec, command.text().find("{weights}") != std::string::npos,
                          command.text().find("{boundary}") != std::string::npos, command.reads_tags());
 }

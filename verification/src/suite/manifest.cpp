@@ -1,5 +1,7 @@
 #include "crossdiv/verification/suite/manifest.h"
 
+#include <fnmatch.h>
+
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -171,6 +173,44 @@ std::string describe_entry(const ManifestEntry& e) {
     return s;
 }
 
+/// The subjects of a `subjects NAME dir=PATTERN command='..{dir}..' | result='{dir}/..'
+/// [key=value ...]` statement: one per submission folder, named after it.
+std::vector<std::shared_ptr<const ManifestSubject>> roster_subjects(const std::vector<std::string>& words,
+                                                                    const std::string& base_dir, double timeout,
+                                                                    ProgramStatements programs) {
+    if (words.size() < 4) throw InputError("expected: subjects NAME dir='FOLDERS/*' command='...' (or result='{dir}/...')");
+    std::string pattern, result;
+    std::vector<std::string> keys;
+    for (size_t k = 2; k < words.size(); ++k) {
+        if (words[k].starts_with("dir=")) pattern = words[k].substr(4);
+        else if (words[k].starts_with("result=")) result = words[k].substr(7);
+        else keys.push_back(words[k]);
+    }
+    if (pattern.empty()) throw InputError("subjects " + words[1] + ": no dir='FOLDERS/*' naming the submissions");
+    if (result.empty() == keys.empty())
+        throw InputError("subjects " + words[1] + ": give command='...' (with its keys) or result='{dir}/...', one of them");
+    std::vector<std::shared_ptr<const ManifestSubject>> out;
+    for (const std::string& folder : submission_folders(pattern, base_dir)) {
+        auto s = std::make_shared<ManifestSubject>();
+        s->name = std::filesystem::path(folder).filename().string();
+        s->roster = words[1];
+        s->dir = folder;
+        if (!result.empty()) {
+            // {dir} is a path here, put in the pattern as it is; {input} and {levels} stay.
+            std::string pattern_in_folder = result;
+            for (size_t at; (at = pattern_in_folder.find("{dir}")) != std::string::npos;) pattern_in_folder.replace(at, 5, folder);
+            s->result_pattern = pattern_in_folder[0] == '/' ? pattern_in_folder : base_dir + "/" + pattern_in_folder;
+        } else {
+            ProgramSpec spec = program_spec(s->name, keys, base_dir, timeout);
+            spec.dir = folder;
+            if (programs == ProgramStatements::CheckOnly) check_program_spec(spec);
+            else s->program = std::shared_ptr<const Implementation>(make_program_implementation(spec));
+        }
+        out.push_back(std::move(s));
+    }
+    return out;
+}
+
 }  // namespace
 
 std::vector<std::string> statement_words(const std::string& text) {
@@ -235,6 +275,24 @@ ProgramSpec program_spec(const std::string& name, const std::vector<std::string>
     return spec;
 }
 
+std::vector<std::string> submission_folders(const std::string& pattern, const std::string& base_dir) {
+    namespace fs = std::filesystem;
+    const fs::path full = fs::path(pattern).is_absolute() || base_dir.empty() ? fs::path(pattern) : fs::path(base_dir) / pattern;
+    const fs::path parent = full.parent_path().empty() ? fs::path(".") : full.parent_path();
+    const std::string glob = full.filename().string();
+    std::error_code ec;
+    if (!fs::is_directory(parent, ec)) throw InputError("dir='" + pattern + "': no folder " + parent.string());
+    std::vector<std::string> out;
+    for (const fs::directory_entry& e : fs::directory_iterator(parent, ec)) {
+        const std::string name = e.path().filename().string();
+        if (e.is_directory(ec) && ::fnmatch(glob.c_str(), name.c_str(), FNM_PERIOD) == 0)
+            out.push_back(fs::absolute(e.path(), ec).lexically_normal().string());
+    }
+    if (out.empty()) throw InputError("dir='" + pattern + "' matches no folder in " + parent.string());
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
 std::string ManifestSubject::result_path(const std::string& input, int levels) const {
     std::string stem = input;
     if (const size_t colon = stem.find(':'); colon != std::string::npos && stem.find('/') == std::string::npos)
@@ -264,13 +322,19 @@ Manifest read_manifest(const std::string& path) {
 Manifest read_manifest(std::istream& in, const std::string& path, const std::string& base_dir, ProgramStatements programs) {
     Manifest m;
     m.file = path;
-    std::shared_ptr<const ManifestSubject> subject;
+    // The implementations under test of the cases that follow: one (`subject`), one per
+    // submission folder (`subjects`), or none (core).
+    std::vector<std::shared_ptr<const ManifestSubject>> subjects;
     std::string text;
     for (int line = 1; std::getline(in, text); ++line) {
         if (const size_t hash = text.find('#'); hash != std::string::npos) text.resize(hash);
         const std::vector<std::string> all = at_line(path, line, [&] { return statement_words(text); });
         if (all.empty()) continue;
         const std::string& keyword = all[0];
+        if (keyword == "subjects") {
+            subjects = at_line(path, line, [&] { return roster_subjects(all, base_dir, m.timeout_seconds, programs); });
+            continue;
+        }
         if (keyword == "reference" || keyword == "subject") {
             if (all.size() < 3) throw ParseError(path, line, "expected: " + keyword + " NAME key=value ...");
             const std::vector<std::string> keys(all.begin() + 2, all.end());
@@ -279,7 +343,7 @@ Manifest read_manifest(std::istream& in, const std::string& path, const std::str
                 s->name = all[1];
                 s->result_pattern = keys[0].substr(7);
                 if (!s->result_pattern.empty() && s->result_pattern[0] != '/') s->result_pattern = base_dir + "/" + s->result_pattern;
-                subject = s;
+                subjects = {s};
                 continue;
             }
             const ProgramSpec spec = at_line(path, line, [&] { return program_spec(all[1], keys, base_dir, m.timeout_seconds); });
@@ -293,7 +357,7 @@ Manifest read_manifest(std::istream& in, const std::string& path, const std::str
                 } else {
                     auto s = std::make_shared<ManifestSubject>();
                     s->name = all[1];
-                    subject = s;
+                    subjects = {s};
                 }
                 continue;
             }
@@ -308,7 +372,7 @@ Manifest read_manifest(std::istream& in, const std::string& path, const std::str
                 auto s = std::make_shared<ManifestSubject>();
                 s->name = all[1];
                 s->program = std::shared_ptr<const Implementation>(std::move(program));
-                subject = s;
+                subjects = {s};
             }
             continue;
         }
@@ -332,13 +396,17 @@ Manifest read_manifest(std::istream& in, const std::string& path, const std::str
             if (ec != std::errc() || end != v.data() + v.size() || m.max_faces <= 0)
                 throw ParseError(path, line, "max-faces " + v + " is not a positive integer below 2^63");
         } else if (keyword == "case") {
-            m.entries.push_back(parse_case(path, line, words));
-            m.entries.back().subject = subject;
-            if (subject && m.entries.back().operation->kind != OperationKind::Comparison)
+            const ManifestEntry entry = parse_case(path, line, words);
+            if (!subjects.empty() && entry.operation->kind != OperationKind::Comparison)
                 throw ParseError(path, line, "a subject is compared in the scheme comparisons only (loop, catmull-clark, ...); "
-                                             "put the " + m.entries.back().operation->name + " cases before the subject statement");
+                                             "put the " + entry.operation->name + " cases before the subject statement");
+            if (subjects.empty()) m.entries.push_back(entry);
+            for (const auto& s : subjects) {
+                m.entries.push_back(entry);
+                m.entries.back().subject = s;
+            }
         } else {
-            throw ParseError(path, line, "unknown statement '" + keyword + "' (known: suite, timeout, max-faces, reference, subject, case)");
+            throw ParseError(path, line, "unknown statement '" + keyword + "' (known: suite, timeout, max-faces, reference, subject, subjects, case)");
         }
         if (std::string extra; keyword != "case" && (words >> extra))
             throw ParseError(path, line, "unexpected '" + extra + "'");

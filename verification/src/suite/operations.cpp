@@ -125,6 +125,7 @@ CaseRecord run_refinement(const SuiteJob& job, const std::string& out_dir) {
     RefinementComparison c = compare_refinement(input, job.input, req);
     if (c.view) c.view->minimal = shrink_for_view(input, job.input, req, c, minimal_obj_name(job));
     CaseRecord rec = case_record(c);
+    if (entry.subject && rec.detail.contains("subject")) rec.detail["subject"]["roster"] = entry.subject->roster;
     for (const std::string& note : notes) rec.detail["notes"].push_back(note);
     if (c.view) write_view(*c.view, c.subject, job, out_dir, rec);
     return rec;

@@ -1,5 +1,6 @@
 #include "crossdiv/verification/suite/outputs.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -7,6 +8,7 @@
 
 #include "crossdiv/error.h"
 #include "crossdiv/verification/harness/json_text.h"
+#include "crossdiv/verification/suite/roster_table.h"
 
 namespace crossdiv::verification {
 namespace {
@@ -97,28 +99,59 @@ std::string csv(const std::vector<CaseRecord>& cases) {
     return out.str();
 }
 
+/// The subject a case puts in core's place ("" for core).
+std::string subject_of(const CaseRecord& c) {
+    return c.detail.contains("subject") && c.detail["subject"].is_object() ? c.detail["subject"].value("name", "") : "";
+}
+
 std::string junit(const std::string& suite, const std::vector<CaseRecord>& cases, const SuiteSummary& s) {
+    // One test suite for core's cases and one per subject (a roster's class table, case by case).
+    std::vector<std::string> suites{""};
+    for (const CaseRecord& c : cases)
+        if (std::find(suites.begin(), suites.end(), subject_of(c)) == suites.end()) suites.push_back(subject_of(c));
     std::ostringstream xml;
-    const int testcases = s.runs;
-    xml << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"crossdiv\" tests=\"" << testcases
-        << "\" failures=\"" << s.failures << "\">\n  <testsuite name=\"" << xml_escape(suite) << "\" tests=\"" << testcases
-        << "\" failures=\"" << s.failures << "\">\n";
-    for (const CaseRecord& c : cases) {
-        const std::string classname = "crossdiv." + suite + "." + c.operation;
-        const auto testcase = [&](const std::string& who, const std::string& outcome, bool failure, const std::string& text,
-                                  double seconds) {
-            xml << "    <testcase classname=\"" << xml_escape(classname) << "\" name=\"" << xml_escape(c.id + " vs " + who)
-                << "\" time=\"" << (std::isfinite(seconds) ? seconds : 0.0) << "\">\n";
-            if (failure) xml << "      <failure message=\"" << xml_escape(outcome) << "\">" << xml_escape(text) << "</failure>\n";
-            xml << "      <system-out>" << xml_escape(outcome + ": " + text) << "</system-out>\n    </testcase>\n";
-        };
-        if (c.runs.empty()) testcase("core", outcome_label(c), c.ours_failed, c.core_error, 0.0);
-        for (const RunRecord& r : c.runs)
-            testcase(r.label(), outcome_label(c, r), is_failure(c, r),
-                     r.is_check() ? fmt_measured(r) + "; " + r.explanation : r.explanation, r.seconds);
+    xml << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"crossdiv\" tests=\"" << s.runs << "\" failures=\""
+        << s.failures << "\">\n";
+    for (const std::string& subject : suites) {
+        std::ostringstream body;
+        int tests = 0, failures = 0;
+        for (const CaseRecord& c : cases) {
+            if (subject_of(c) != subject) continue;
+            const std::string classname = "crossdiv." + suite + "." + c.operation;
+            const auto testcase = [&](const std::string& who, const std::string& outcome, bool failure, const std::string& text,
+                                      double seconds) {
+                ++tests;
+                failures += failure;
+                body << "    <testcase classname=\"" << xml_escape(classname) << "\" name=\"" << xml_escape(c.id + " vs " + who)
+                     << "\" time=\"" << (std::isfinite(seconds) ? seconds : 0.0) << "\">\n";
+                if (failure) body << "      <failure message=\"" << xml_escape(outcome) << "\">" << xml_escape(text) << "</failure>\n";
+                body << "      <system-out>" << xml_escape(outcome + ": " + text) << "</system-out>\n    </testcase>\n";
+            };
+            if (c.runs.empty()) testcase("core", outcome_label(c), c.ours_failed, c.core_error, 0.0);
+            for (const RunRecord& r : c.runs)
+                testcase(r.label(), outcome_label(c, r), is_failure(c, r),
+                         r.is_check() ? fmt_measured(r) + "; " + r.explanation : r.explanation, r.seconds);
+        }
+        if (subject.empty() && tests == 0) continue;
+        xml << "  <testsuite name=\"" << xml_escape(subject.empty() ? suite : suite + "/" + subject) << "\" tests=\"" << tests
+            << "\" failures=\"" << failures << "\">\n"
+            << body.str() << "  </testsuite>\n";
     }
-    xml << "  </testsuite>\n</testsuites>\n";
+    xml << "</testsuites>\n";
     return xml.str();
+}
+
+std::string roster_csv(const std::vector<RosterRow>& rows) {
+    std::ostringstream out;
+    out << "roster,subject,scheme,verdict,cases,ran,rule,failures,diagnosis\n";
+    for (const RosterRow& r : rows) {
+        std::string failures;
+        for (const auto& [how, n] : r.failures) failures += (failures.empty() ? "" : " ") + how + "=" + std::to_string(n);
+        out << csv_field(r.roster) << ',' << csv_field(r.subject) << ',' << r.scheme << ',' << to_string(r.verdict) << ','
+            << r.cases << ',' << r.ran << ',' << csv_field(r.followed_rule()) << ',' << csv_field(failures) << ','
+            << csv_field(r.diagnosis()) << '\n';
+    }
+    return out.str();
 }
 
 }  // namespace
@@ -149,6 +182,11 @@ SuiteSummary write_suite_outputs(const std::string& dir, const json& header, con
     json records = json::array();
     for (const CaseRecord& c : cases) records.push_back(to_json(c));
     results["cases"] = std::move(records);
+    const std::vector<RosterRow> roster = roster_table(cases);
+    if (!roster.empty()) {
+        results["roster"] = to_json(roster);
+        write_file(fs::path(dir) / "roster.csv", roster_csv(roster));
+    }
     write_file(fs::path(dir) / "results.json", json_text(results, 1) + "\n");
     write_file(fs::path(dir) / "results.csv", csv(cases));
     write_file(fs::path(dir) / "junit.xml", junit(header.value("suite", "suite"), cases, summary));

@@ -21,6 +21,8 @@
 ///   {out.off}        ... as OFF
 ///   {out.ply}        ... as PLY (ASCII or binary; binary floats read back exactly)
 ///   {adapters}       the folder of crossdiv's program adapters (install_paths.h)
+///   {dir}            the submission folder of a roster's subject (a manifest's `subjects`
+///                    statement), absolute
 ///   {levels}         the number of levels asked of this run
 ///   {scheme}         loop, catmull-clark, doo-sabin, sqrt3, butterfly, modified-butterfly
 ///   {weights}        loop | warren (Loop's weight family)
@@ -45,6 +47,7 @@ struct TemplateValues {
     std::string out;             ///< the output path, with the extension of output_format()
     RefineRequest request;
     std::string in_untagged;  ///< the path of the OBJ without tag lines
+    std::string dir;          ///< the program's submission folder ({dir}; empty outside a roster)
 };
 
 class CommandTemplate {

@@ -57,6 +57,8 @@ struct ProgramSpec {
     /// Where relative paths in `command` and `setup` are anchored (empty: the current folder;
     /// a manifest's statements: the manifest's folder).
     std::string base_dir;
+    /// The submission folder {dir} stands for (a roster's subject; absolute), empty otherwise.
+    std::string dir;
 };
 
 /// Vertex and face counts of a refined mesh, and the named rule that makes them ("" when

@@ -17,11 +17,13 @@ namespace crossdiv::verification {
 
 struct SuiteOperation;
 
-/// A `subject` statement: the implementation under test of the loop cases after it, in
-/// core's place. A program (command=) is made once; result files (result=) are one file per
-/// input, named by a pattern.
+/// A `subject` statement, or one folder of a `subjects` statement (a roster): the
+/// implementation under test of the comparison cases after it, in core's place. A program
+/// (command=) is made once; result files (result=) are one file per input, named by a pattern.
 struct ManifestSubject {
-    std::string name;
+    std::string name;    ///< the statement's NAME; in a roster, the submission folder's name
+    std::string roster;  ///< the `subjects` statement's NAME (empty for a `subject` statement)
+    std::string dir;     ///< the submission folder, absolute (a roster's subject)
     std::shared_ptr<const Implementation> program;  ///< command=: the program
     /// result=: the file of each input, with {input} (the input's name: a file's stem, the
     /// NAME of bundled:NAME) and {levels}; relative to the manifest's folder.
@@ -40,7 +42,8 @@ struct ManifestEntry {
     /// input's tags (rule_with_tags).
     RefinementRequest request;
     RuleFlags rule_flags;              ///< another scheme's boundary= and crease-method= keys
-    /// The implementation under test (the last `subject` statement before the case); none: core.
+    /// The implementation under test (the last `subject` statement before the case, or one
+    /// subject of the last `subjects` statement: a case line makes one entry per subject); none: core.
     std::shared_ptr<const ManifestSubject> subject;
     /// A comparison: a job whose final level would have more faces is refused before any work
     /// (the manifest's `max-faces` statement; implementations/output_size.h).
@@ -81,6 +84,11 @@ std::vector<std::string> statement_words(const std::string& text);
 /// @throws InputError naming the bad key or value.
 ProgramSpec program_spec(const std::string& name, const std::vector<std::string>& key_values, const std::string& base_dir,
                          double default_timeout);
+
+/// The folders `pattern` names: a folder path whose last part may hold the wildcards * ? [...]
+/// (fnmatch, no shell), relative to `base_dir` unless absolute; sorted by name, absolute.
+/// @throws InputError when the parent folder does not exist or nothing matches.
+std::vector<std::string> submission_folders(const std::string& pattern, const std::string& base_dir);
 
 /// The manifest `crossdiv suite` runs without an argument (verification/suites/default.suite).
 std::string default_manifest_path();

@@ -1,0 +1,68 @@
+#!/usr/bin/env python3
+"""The roster example as a teacher runs it: `crossdiv suite examples/roster/roster.suite`, then
+every row of the class table checked against the fault planted in that submission
+(examples/roster/expected.tsv) in roster.csv, results.json and the report's roster.html, and
+junit.xml checked to hold one test suite per subject whose failures match the verdict.
+
+    roster_example_test.py path/to/crossdiv"""
+import csv
+import json
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import xml.etree.ElementTree as ET
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+
+
+def main():
+    crossdiv = sys.argv[1]
+    expected = {}
+    with open(os.path.join(ROOT, "examples", "roster", "expected.tsv")) as f:
+        for line in f:
+            if line.startswith("#") or not line.strip():
+                continue
+            subject, verdict, failures, pattern = line.rstrip("\n").split("\t")
+            expected[subject] = (verdict, failures, pattern)
+    problems = []
+    with tempfile.TemporaryDirectory() as out:
+        run = subprocess.run([crossdiv, "suite", os.path.join(ROOT, "examples", "roster", "roster.suite"), "--out", out],
+                             capture_output=True, text=True)
+        if run.returncode != 1:  # fourteen submissions fail: the suite says so
+            problems.append(f"crossdiv suite exited {run.returncode}, want 1: {run.stderr[-2000:]}")
+        with open(os.path.join(out, "roster.csv")) as f:
+            rows = {r["subject"]: r for r in csv.DictReader(f)}
+        with open(os.path.join(out, "results.json")) as f:
+            table = {r["subject"]: r for r in json.load(f)["roster"]}
+        page = open(os.path.join(out, "roster.html")).read()
+        suites = {s.get("name"): s for s in ET.parse(os.path.join(out, "junit.xml")).getroot().iter("testsuite")}
+        if set(rows) != set(expected):
+            problems.append(f"roster.csv has {sorted(rows)}, want {sorted(expected)}")
+        for subject, (verdict, failures, pattern) in expected.items():
+            row, record = rows.get(subject), table.get(subject)
+            if row is None or record is None:
+                problems.append(f"{subject}: missing from roster.csv or results.json")
+                continue
+            got_failures = row["failures"] or "-"
+            if row["verdict"] != verdict or got_failures != failures or not re.search(pattern, row["diagnosis"]):
+                problems.append(f"{subject}: {row['verdict']} / {got_failures} / {row['diagnosis']!r}; "
+                                f"want {verdict} / {failures} / /{pattern}/")
+            if record["verdict"] != row["verdict"] or record["diagnosis"] != row["diagnosis"]:
+                problems.append(f"{subject}: results.json says {record['verdict']}: {record['diagnosis']!r}")
+            if f"data-subject='{subject}'" not in page:
+                problems.append(f"{subject}: no row in roster.html")
+            junit = suites.get(f"roster/{subject}")
+            if junit is None:
+                problems.append(f"{subject}: no test suite roster/{subject} in junit.xml")
+            elif (int(junit.get("failures")) > 0) != (verdict == "fail"):
+                problems.append(f"{subject}: junit.xml reports {junit.get('failures')} failure(s) for a {verdict}")
+    for p in problems:
+        print("FAIL " + p)
+    print(f"{len(expected)} submissions, {len(problems)} problem(s)")
+    sys.exit(1 if problems else 0)
+
+
+if __name__ == "__main__":
+    main()
