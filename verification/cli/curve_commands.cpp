@@ -16,6 +16,7 @@
 #include "command.h"
 #include "crossdiv/error.h"
 #include "crossdiv/verification/bench/curve_timing.h"
+#include "crossdiv/verification/comparisons/curve_subject.h"
 #include "crossdiv/verification/properties/curve_checks.h"
 
 namespace crossdiv::cli {
@@ -24,7 +25,7 @@ using namespace crossdiv::verification;
 
 void TessellateArgs::add_to(CLI::App& app) {
     app.add_option("input", input, "Curve file (.swp, .bzc) or curve:NAME")->required();
-    app.add_option("-o,--out", out, "Output: .obj (v and one l line per curve), .csv or .json")->required();
+    app.add_option("-o,--out", out, "Output: .obj (v and one l line per curve), .csv or .json (required without --subject)");
     app.add_option("--mode", mode, "uniform, angle (--angle-tol) or distance (--tol)")
         ->check(CLI::IsMember({"uniform", "angle", "distance"}))
         ->capture_default_str();
@@ -41,7 +42,51 @@ void TessellateArgs::add_to(CLI::App& app) {
         ->check(CLI::IsMember({"left", "right"}))
         ->capture_default_str();
     app.add_flag("--close-frames", close_frames, "On closed curves, distribute the frame mismatch along arc length");
+    app.add_option("--subject", subject,
+                   "Put a program's tessellation under test: a command template such as 'python3 tess.py {in} {out}' "
+                   "({in}: the curve file, {out}: the CSV it writes, header curve,index,x,y,z[,tx,ty,tz,nx,ny,nz,bx,by,bz]); "
+                   "each record's uniform samples are compared with core's and the position basis and frame rule named");
+    app.add_option("--subject-name", subject_name, "The subject's name in the output")->capture_default_str();
+    app.add_option("--timeout", timeout, "Seconds the subject may run")->check(CLI::PositiveNumber)->capture_default_str();
 }
+
+namespace {
+
+std::string fits_row(const std::vector<CurveConventionFit>& fits, const char* unit) {
+    std::string s;
+    for (const CurveConventionFit& f : fits)
+        s += fmt::format("{}{} {}{:.3g}{}", s.empty() ? "" : ", ", f.name, f.fits ? "= " : "", f.max, unit);
+    return s;
+}
+
+/// `crossdiv tessellate FILE --subject CMD`: the subject's table against core, curve by curve.
+int run_curve_subject(const TessellateArgs& a) {
+    if (a.mode != "uniform" || a.intervals > 0)
+        throw InputError("--subject compares the uniform tessellation at each record's STEPS: drop --mode and --intervals");
+    const CurveFile file = load_curve_input(a.input);
+    if (file.curves.empty()) throw InputError(a.input + ": no curves");
+    const CurveSubjectComparison c = compare_curve_subject(a.input, file, a.subject_name, a.subject, a.timeout);
+    if (c.outcome.status == RunStatus::Ok) fmt::print("subject '{}' ran in {:.3f} s\n", c.subject, c.outcome.seconds);
+    for (const CurveSubjectCurve& k : c.curves) {
+        fmt::print("{}: {} samples (core {})", k.curve, k.subject_samples, k.core_samples);
+        if (!k.problem.empty()) {
+            fmt::print(": {}\n", k.problem);
+            continue;
+        }
+        fmt::print("\n  positions: {} -> {}\n", fits_row(k.positions, ""),
+                   k.position_rule.empty() ? "no named rule" : k.position_rule);
+        if (k.tangent_deg >= 0)
+            fmt::print("  tangents: {:.3g} deg from core's{}\n", k.tangent_deg,
+                       k.tangent_length > 1e-3 ? fmt::format(", not unit (length off by {:.3g})", k.tangent_length) : "");
+        if (!k.frames.empty())
+            fmt::print("  normals: {} -> {}\n", fits_row(k.frames, " deg"), k.frame_rule.empty() ? "no named rule" : k.frame_rule);
+        if (k.binormal_deg >= 0) fmt::print("  binormals: {:.3g} deg from T x N\n", k.binormal_deg);
+    }
+    fmt::print("\n{}\n", c.summary());
+    return c.passed() ? 0 : 1;
+}
+
+}  // namespace
 
 namespace {
 
@@ -61,6 +106,8 @@ struct Tessellated {
 }  // namespace
 
 int run_tessellate(const TessellateArgs& a) {
+    if (!a.subject.empty()) return run_curve_subject(a);
+    if (a.out.empty()) throw InputError("tessellate needs -o OUT (.obj, .csv or .json), or --subject CMD");
     const CurveFile file = load_curve_input(a.input);
     if (file.curves.empty()) throw InputError(a.input + ": no curves");
     TessellationOptions o;

@@ -15,6 +15,9 @@ struct TessellateArgs {
     int intervals = 0;  ///< 0: the record's STEPS
     double angle_tol_deg = 0, tol = 0;
     bool close_frames = false;
+    /// A program put in core's place (curve_subject.h): its table compared with core's.
+    std::string subject, subject_name = "subject";
+    double timeout = 60;
     void add_to(CLI::App& app);
 };
 int run_tessellate(const TessellateArgs& a);

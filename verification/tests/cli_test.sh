@@ -286,6 +286,14 @@ expect subject-rule 0 "subject 'student': Loop scheme, weights=warren at interio
   "$crossdiv" compare bundled:icosahedron --levels 2 --subject "$student" --subject-name student
 expect subject-crash 1 "subject 'subject' failed: crashed: signal 11" -- \
   "$crossdiv" compare bundled:tetrahedron --levels 1 --subject "python3 $root/verification/tests/subjects/misbehaving_subject.py crash {in} {levels} {out}"
+printf 'bez2 . 8 7\n[0 0]\n[1 1]\n[2 1]\n[3 0]\n[4 -1]\n[5 -1]\n[6 0]\n\nbsp3 . 10 5\n[-2 0 1]\n[0 2 1]\n[0 3 -1]\n[2 0 -1]\n[3 1 0]\n' > "$tmp/two.swp"
+expect curve-subject 0 "subject 'student': positions as written on 2 of 2; frames recursive on 2 of 2 curves" -- \
+  "$crossdiv" tessellate "$tmp/two.swp" --subject-name student --subject "python3 $root/examples/subjects/python-curves/tessellate.py {in} {out}"
+expect curve-subject-basis 1 "positions as written on 1 of 2, bezier basis on 1 of 2" -- \
+  "$crossdiv" tessellate "$tmp/two.swp" --subject-name student --subject "python3 $root/examples/subjects/python-curves/tessellate.py {in} {out} --bspline-as-bezier"
+expect curve-subject-crash 1 "subject 'mine' failed: crashed: signal 11" -- \
+  "$crossdiv" tessellate "$tmp/two.swp" --subject-name mine --subject "python3 $root/verification/tests/subjects/misbehaving_curves.py crash {in} {out}"
+expect curve-subject-no-out 2 "tessellate needs -o OUT" -- "$crossdiv" tessellate "$tmp/two.swp"
 expect cc-subject-crash 1 "subject 'mine' failed: crashed" -- "$crossdiv" compare bundled:quad-grid --scheme catmull-clark --subject-name mine --subject "python3 $root/verification/tests/subjects/misbehaving_subject.py crash {in} {levels} {out}"
 expect subject-unexplained 1 "shrink it: +crossdiv diff bundled:open-patch --levels 1 .*--subject '.*keep-boundary" -- \
   "$crossdiv" compare bundled:open-patch --subject "python3 $root/verification/tests/subjects/misbehaving_subject.py keep-boundary {in} {levels} {out}"
