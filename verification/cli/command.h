@@ -20,6 +20,18 @@ void add_command(CLI::App& app, const char* name, const char* help, int& status,
     sub->callback([args, run, &status] { status = run(*args); });
 }
 
+/// A course task's program in core's place (task_program.h): --subject CMD (what it is given
+/// and writes: `what`), --subject-name, --timeout.
+struct TaskSubjectOptions {
+    std::string command, name = "subject";
+    double timeout = 60;
+    void add_to(CLI::App& app, const std::string& what) {
+        app.add_option("--subject", command, "Put a program under test in core's place: a command template, " + what);
+        app.add_option("--subject-name", name, "The subject's name in the output")->capture_default_str();
+        app.add_option("--timeout", timeout, "Seconds the subject may run")->check(CLI::PositiveNumber)->capture_default_str();
+    }
+};
+
 /// The names of a comma-separated list ("opensubdiv,cgal"), empty items dropped.
 inline std::vector<std::string> split_commas(const std::string& s) {
     std::vector<std::string> out;

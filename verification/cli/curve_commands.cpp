@@ -42,12 +42,7 @@ void TessellateArgs::add_to(CLI::App& app) {
         ->check(CLI::IsMember({"left", "right"}))
         ->capture_default_str();
     app.add_flag("--close-frames", close_frames, "On closed curves, distribute the frame mismatch along arc length");
-    app.add_option("--subject", subject,
-                   "Put a program's tessellation under test: a command template such as 'python3 tess.py {in} {out}' "
-                   "({in}: the curve file, {out}: the CSV it writes, header curve,index,x,y,z[,tx,ty,tz,nx,ny,nz,bx,by,bz]); "
-                   "each record's uniform samples are compared with core's and the position basis and frame rule named");
-    app.add_option("--subject-name", subject_name, "The subject's name in the output")->capture_default_str();
-    app.add_option("--timeout", timeout, "Seconds the subject may run")->check(CLI::PositiveNumber)->capture_default_str();
+    subject.add_to(app, "'python3 tess.py {in} {out}' ({in}: the curve file, {out}: the CSV it writes, header curve,index,x,y,z[,tx,ty,tz,nx,ny,nz,bx,by,bz]); each record's uniform samples are compared with core's and the position basis and frame rule named");
 }
 
 namespace {
@@ -65,7 +60,7 @@ int run_curve_subject(const TessellateArgs& a) {
         throw InputError("--subject compares the uniform tessellation at each record's STEPS: drop --mode and --intervals");
     const CurveFile file = load_curve_input(a.input);
     if (file.curves.empty()) throw InputError(a.input + ": no curves");
-    const CurveSubjectComparison c = compare_curve_subject(a.input, file, a.subject_name, a.subject, a.timeout);
+    const CurveSubjectComparison c = compare_curve_subject(a.input, file, a.subject.name, a.subject.command, a.subject.timeout);
     if (c.outcome.status == RunStatus::Ok) fmt::print("subject '{}' ran in {:.3f} s\n", c.subject, c.outcome.seconds);
     for (const CurveSubjectCurve& k : c.curves) {
         fmt::print("{}: {} samples (core {})", k.curve, k.subject_samples, k.core_samples);
@@ -106,7 +101,7 @@ struct Tessellated {
 }  // namespace
 
 int run_tessellate(const TessellateArgs& a) {
-    if (!a.subject.empty()) return run_curve_subject(a);
+    if (!a.subject.command.empty()) return run_curve_subject(a);
     if (a.out.empty()) throw InputError("tessellate needs -o OUT (.obj, .csv or .json), or --subject CMD");
     const CurveFile file = load_curve_input(a.input);
     if (file.curves.empty()) throw InputError(a.input + ": no curves");

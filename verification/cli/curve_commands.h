@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "command.h"
+
 #include "crossdiv/verification/suite/case_record.h"
 
 namespace crossdiv::cli {
@@ -16,8 +18,7 @@ struct TessellateArgs {
     double angle_tol_deg = 0, tol = 0;
     bool close_frames = false;
     /// A program put in core's place (curve_subject.h): its table compared with core's.
-    std::string subject, subject_name = "subject";
-    double timeout = 60;
+    TaskSubjectOptions subject;
     void add_to(CLI::App& app);
 };
 int run_tessellate(const TessellateArgs& a);

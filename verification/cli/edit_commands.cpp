@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "crossdiv/verification/comparisons/normals_subject.h"
+
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -99,10 +101,18 @@ void NormalsArgs::add_to(CLI::App& app) {
         ->capture_default_str();
     app.add_option("--against", against, "Comma-separated references: openmesh, cgal");
     app.add_option("--json", json, "Write the normals and each reference's comparison as JSON");
+    subject.add_to(app, "'python3 normals.py {in} {out}' ({in}: the mesh as OBJ, {out}: one normal per vertex as OBJ vn lines or x y z lines); the weighting it follows is named");
 }
 
 int run_normals(const NormalsArgs& a) {
     const TriMesh mesh = to_tri_mesh(verification::load_input(a.input, verification::UnknownTags::Ignore), "vertex normals");
+    if (!a.subject.command.empty()) {
+        const auto c = verification::compare_normals_subject(a.input, mesh, a.subject.name, a.subject.command, a.subject.timeout);
+        for (const auto& w : c.weightings)
+            fmt::print("  {:<18} {}{:.3g} deg (worst vertex {})\n", w.name, w.fits ? "= " : "  ", w.max_deg, w.worst_vertex);
+        fmt::print("{}\n", c.summary());
+        return c.passed() ? 0 : 1;
+    }
     const auto c = verification::compare_normals(mesh, *parse_normal_weighting(a.weighting), split_commas(a.against));
     int zero = 0;
     for (const Vec3& n : c.ours) zero += n.norm() == 0;

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "command.h"
+
 #include "crossdiv/mesh/poly_mesh.h"
 
 namespace crossdiv::cli {
@@ -25,6 +27,8 @@ int run_edit(const EditArgs& a);
 
 struct NormalsArgs {
     std::string input, weighting = "area", against, json;
+    /// A program put in core's place (normals_subject.h).
+    TaskSubjectOptions subject;
     void add_to(CLI::App& app);
 };
 /// Vertex normals with the named weighting, compared with each reference asked for: the

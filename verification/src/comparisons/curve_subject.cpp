@@ -11,16 +11,11 @@
 #include "crossdiv/curves/cubic_spline.h"
 #include "crossdiv/curves/frames.h"
 #include "crossdiv/error.h"
-#include "crossdiv/verification/harness/process.h"
-#include "crossdiv/verification/harness/temporary_folder.h"
-#include "crossdiv/verification/implementations/command_template.h"
-#include "harness/sci.h"
+#include "crossdiv/verification/implementations/task_program.h"
 
 namespace crossdiv::verification {
 namespace {
 
-namespace fs = std::filesystem;
-using detail::sci;
 
 /// A subject writes its numbers as text: six significant digits (printf's %g) put up to 5e-7
 /// of a coordinate's magnitude into it, 1e-6 rad into a unit vector. Positions fit within 1e-5
@@ -286,38 +281,22 @@ std::string CurveSubjectComparison::summary() const {
 
 CurveSubjectComparison compare_curve_subject(const std::string& input, const CurveFile& file, const std::string& subject,
                                              const std::string& command, double timeout_seconds) {
-    CommandTemplate cmd(command);
-    cmd.anchor_relative_paths();
     CurveSubjectComparison out;
     out.input = input;
     out.subject = subject;
-    const TemporaryFolder folder("curve-subject");
-    const std::string ext = fs::path(file.path).extension().string();
-    const fs::path in = folder.path() / ("in" + (ext.empty() ? std::string(".swp") : ext));
-    std::error_code ec;
-    fs::copy_file(file.path, in, fs::copy_options::overwrite_existing, ec);
-    if (ec) throw InputError(file.path + ": cannot copy for the subject: " + ec.message());
-    TemplateValues values{in.string(), in.string(), in.string(), (folder.path() / "out.csv").string(), {}, in.string(), ""};
-    const std::string err = (folder.path() / "stderr.txt").string();
-    const ProcessResult r =
-        run_confined(cmd.expand(values), {folder.path().string(), timeout_seconds, (folder.path() / "stdout.txt").string(), err});
-    out.outcome.seconds = r.seconds;
-    const std::string said = tail_of_file(err);
-    const std::string with_err = said.empty() ? "" : "; stderr: " + said;
+    const TaskRun run = run_task_program(command, file.path, "out.csv", timeout_seconds);
+    out.outcome = run.outcome;
     const auto failed = [&](RunStatus s, const std::string& message) {
         out.outcome.status = s;
         out.outcome.message = message;
         return out;
     };
-    if (!r.started) return failed(RunStatus::Crashed, r.start_error);
-    if (r.timed_out) return failed(RunStatus::Timeout, "no result after " + sci(timeout_seconds) + " s" + with_err);
-    if (r.signal) return failed(RunStatus::Crashed, "signal " + std::to_string(r.signal) + " (" + strsignal(r.signal) + ")" + with_err);
-    if (r.exit_code != 0) return failed(RunStatus::ExitStatus, "exit status " + std::to_string(r.exit_code) + with_err);
+    if (run.outcome.status != RunStatus::Ok) return out;
     std::map<int, std::vector<Sample>> table;
     try {
-        table = read_table(values.out, "out.csv");
+        table = read_table(run.out, "out.csv");
     } catch (const ImplementationFailure& e) {
-        return failed(e.status(), e.what() + with_err);
+        return failed(e.status(), e.what() + run.stderr_tail);
     }
     for (const auto& [index, samples] : table)
         if (index >= static_cast<int>(file.curves.size()))

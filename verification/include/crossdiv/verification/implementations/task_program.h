@@ -1,0 +1,31 @@
+#pragma once
+/// @file
+/// One run of a course-task program put in core's place (a curve tessellator, a vertex-normal
+/// program): its command template gets the input file as {in} (copied into a folder of its own,
+/// its extension kept) and the path of the file it writes as {out}; it runs without a shell,
+/// confined, with a time limit. What the run did is a RunOutcome; reading the file it wrote is
+/// the task's (curve_subject.h, normals_subject.h).
+
+#include <memory>
+#include <string>
+
+#include "crossdiv/verification/harness/isolate.h"
+#include "crossdiv/verification/harness/temporary_folder.h"
+
+namespace crossdiv::verification {
+
+struct TaskRun {
+    RunOutcome outcome;                      ///< Ok: it exited 0 (whether it wrote `out` is the reader's to say)
+    std::string out;                         ///< where it was told to write
+    std::string stderr_tail;                 ///< "; stderr: ..." to append to a message, or ""
+    std::unique_ptr<TemporaryFolder> folder; ///< kept until the output is read
+};
+
+/// Runs `command` once on `input_file`; `out_name` is the name of the file it writes
+/// ("out.csv"). A program that cannot start or dies by a signal is Crashed, one still running
+/// at `timeout_seconds` Timeout, one that exits nonzero ExitStatus, each with its stderr's tail.
+/// @throws InputError for a command template that cannot run or an input that cannot be copied.
+TaskRun run_task_program(const std::string& command, const std::string& input_file, const std::string& out_name,
+                         double timeout_seconds);
+
+}  // namespace crossdiv::verification
