@@ -16,6 +16,7 @@
 #include "command.h"
 #include "crossdiv/error.h"
 #include "crossdiv/verification/bench/curve_timing.h"
+#include "crossdiv/verification/comparisons/casteljau_subject.h"
 #include "crossdiv/verification/comparisons/curve_subject.h"
 #include "crossdiv/verification/properties/curve_checks.h"
 
@@ -226,11 +227,20 @@ void CasteljauArgs::add_to(CLI::App& app) {
     app.add_option("input", input, "A single Bezier curve: .bzc file, curve:NAME, or an SWP file with one segment")->required();
     app.add_option("--t", t, "Parameter in [0, 1]")->capture_default_str();
     app.add_option("--json", json, "Write {\"t\": T, \"levels\": [[[x, y], ...], ...]} to this file");
+    subject.add_to(app, "'python3 casteljau.py {in} 0.5 {out}' ({in}: the curve file, t a literal of the command, equal to "
+                        "--t; {out}: one line per level, its points' coordinates); each level is compared with core's at t "
+                        "and at 1 - t");
 }
 
 int run_casteljau(const CasteljauArgs& a) {
     if (!(a.t >= 0 && a.t <= 1)) throw InputError("--t must be in [0, 1], got " + fmt::format("{}", a.t));
     const CurveFile file = load_curve_input(a.input);
+    if (!a.subject.command.empty()) {
+        const CasteljauSubjectComparison c =
+            compare_casteljau_subject(a.input, file, a.t, a.subject.name, a.subject.command, a.subject.timeout);
+        fmt::print("{}\n", c.summary());
+        return c.passed() ? 0 : 1;
+    }
     if (file.curves.size() != 1 || file.curves[0].type == CurveType::Primitive)
         throw InputError(a.input + ": casteljau needs exactly one Bezier curve, the file has " +
                          std::to_string(file.curves.size()) + " curve(s)");

@@ -26,6 +26,7 @@ int run_tessellate(const TessellateArgs& a);
 struct CasteljauArgs {
     std::string input, json;
     double t = 0.5;
+    TaskSubjectOptions subject;
     void add_to(CLI::App& app);
 };
 int run_casteljau(const CasteljauArgs& a);
