@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include "crossdiv/verification/comparisons/surface_subject.h"
+#include "crossdiv/verification/harness/temporary_folder.h"
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -32,8 +35,11 @@ void SweepArgs::add_to(CLI::App& app) {
 
 void PatchArgs::add_to(CLI::App& app) {
     app.add_option("input", input, "BEZ file, or surface:NAME (a bundled BEZ model)")->required();
-    app.add_option("-o,--out", out, "Output OBJ (v, vn, f a//a)")->required();
+    app.add_option("-o,--out", out, "Output OBJ (v, vn, f a//a); required without --subject");
     app.add_option("--res", res, "Quads per patch side")->check(CLI::Range(1, 1024))->capture_default_str();
+    subject.add_to(app, "'python3 patches.py {in} 8 {out}' ({in}: the BEZ file, the resolution a literal equal to --res; "
+                        "{out}: an OBJ with a vn per v, welded or not); matched to core's tessellation by position both ways, "
+                        "its normals named (as core's or reversed) and its faces checked against them");
     app.add_option("--max-faces", max_faces, "Refuse a tessellation of more triangles than this, before making it")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
@@ -102,10 +108,13 @@ int run_sweep(const SweepArgs& a) {
 }
 
 int run_patch(const PatchArgs& a) {
-    require_obj(a.out);
+    if (a.subject.command.empty() && a.out.empty()) throw InputError("patch needs -o OUT.obj, or --subject CMD");
+    if (a.subject.command.empty()) require_obj(a.out);
     std::vector<BezierPatch> patches;
+    std::string text;  // a bundled model's, written out for a subject
     if (a.input.starts_with("surface:")) {
-        std::istringstream in(bundled_text(a.input, "bez"));
+        text = bundled_text(a.input, "bez");
+        std::istringstream in(text);
         patches = read_bez(in, a.input);
     } else {
         patches = read_bez(a.input);
@@ -115,6 +124,29 @@ int run_patch(const PatchArgs& a) {
         s = tessellate_patches(patches, a.res, a.max_faces);
     } catch (const InputError& e) {
         throw InputError(a.input + ": " + e.what());
+    }
+    if (!a.subject.command.empty()) {
+        const verification::TemporaryFolder folder("patch-input");
+        std::string file = a.input;
+        if (!text.empty()) {
+            file = (folder.path() / "model.bez").string();
+            std::ofstream(file) << text;
+        }
+        // Core's grid of every patch before welding, each point with its own patch's normal.
+        verification::SurfaceSamples samples;
+        samples.welded_vertices = s.mesh.num_vertices();
+        for (const BezierPatch& p : patches)
+            for (int i = 0; i <= a.res; ++i)
+                for (int j = 0; j <= a.res; ++j) {
+                    const double u = static_cast<double>(i) / a.res, v = static_cast<double>(j) / a.res;
+                    samples.positions.push_back(patch_point(p, u, v));
+                    samples.normals.push_back(patch_normal(p, u, v));
+                }
+        const auto c = verification::compare_surface_subject(file, samples, a.subject.name, a.subject.command, a.subject.timeout);
+        for (const auto& n : c.normals)
+            fmt::print("  normals {:<10} {} {} vertices off, up to {:.3g} deg\n", n.name, n.fits ? "=" : " ", n.off, n.max_deg);
+        fmt::print("{}\n", c.summary());
+        return c.passed() ? 0 : 1;
     }
     const int boundary = boundary_edge_count(s.mesh);
     fmt::print("{}: {} patches, {} vertices, {} triangles ({} collapsed at degenerate patch edges), {}\n", a.input, patches.size(),

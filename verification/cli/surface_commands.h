@@ -4,6 +4,8 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 #include <string>
+
+#include "command.h"
 #include <vector>
 
 #include "crossdiv/surfaces/surface_mesh.h"
@@ -26,6 +28,7 @@ struct PatchArgs {
     std::string input, out;
     int res = 8;
     long long max_faces = kDefaultMaxSurfaceTriangles;
+    TaskSubjectOptions subject;  ///< a program put in core's place (surface_subject.h)
     void add_to(CLI::App& app);
 };
 /// Tessellates a BEZ file (res x res quads per patch, welded) into an OBJ with normals.

@@ -294,6 +294,16 @@ expect curve-subject-basis 1 "positions as written on 1 of 2, bezier basis on 1 
 expect curve-subject-crash 1 "subject 'mine' failed: crashed: signal 11" -- \
   "$crossdiv" tessellate "$tmp/two.swp" --subject-name mine --subject "python3 $root/verification/tests/subjects/misbehaving_curves.py crash {in} {out}"
 expect curve-subject-no-out 2 "tessellate needs -o OUT" -- "$crossdiv" tessellate "$tmp/two.swp"
+patches="python3 $root/examples/subjects/python-patches/patches.py"
+expect patch-subject 0 "subject 'student': 216 vertices \\(core 152 welded\\); positions on core's to .*; normals as core's; faces turn with the normals" -- \
+  "$crossdiv" patch surface:pillow --res 5 --subject-name student --subject "$patches {in} 5 {out}"
+expect patch-subject-reversed 1 "normals reversed; faces turn with the normals" -- \
+  "$crossdiv" patch surface:pillow --res 5 --subject-name student --subject "$patches {in} 5 {out} --swap-uv"
+expect patch-subject-resolution 1 "positions off: 0.0707 from core's" -- \
+  "$crossdiv" patch surface:pillow --res 5 --subject-name student --subject "$patches {in} 4 {out}"
+expect patch-subject-fails 1 "subject 'student' failed: no-output" -- \
+  "$crossdiv" patch surface:pillow --res 5 --subject-name student --subject "python3 -c pass {in} {out}"
+expect patch-no-out 2 "patch needs -o OUT.obj, or --subject CMD" -- "$crossdiv" patch surface:pillow
 expect cc-subject-crash 1 "subject 'mine' failed: crashed" -- "$crossdiv" compare bundled:quad-grid --scheme catmull-clark --subject-name mine --subject "python3 $root/verification/tests/subjects/misbehaving_subject.py crash {in} {levels} {out}"
 expect subject-unexplained 1 "shrink it: +crossdiv diff bundled:open-patch --levels 1 .*--subject '.*keep-boundary" -- \
   "$crossdiv" compare bundled:open-patch --subject "python3 $root/verification/tests/subjects/misbehaving_subject.py keep-boundary {in} {levels} {out}"

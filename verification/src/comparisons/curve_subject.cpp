@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <Eigen/Geometry>
 #include <cmath>
 #include <filesystem>
 #include <fstream>

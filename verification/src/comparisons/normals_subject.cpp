@@ -1,5 +1,6 @@
 #include "crossdiv/verification/comparisons/normals_subject.h"
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <fstream>
 #include <sstream>
