@@ -22,7 +22,7 @@ using nlohmann::json;
 
 void SweepArgs::add_to(CLI::App& app) {
     app.add_option("input", input, "SWP file with srev and gcyl records, or surface:NAME (bundled)")->required();
-    app.add_option("-o,--out", out, "Output OBJ (v, vn, f a//a)")->required();
+    app.add_option("-o,--out", out, "Output OBJ (v, vn, f a//a); required without --subject");
     app.add_option("--frames", frames, "gcyl frames: recursive (the seed's) or rmf (double reflection)")
         ->check(CLI::IsMember({"recursive", "rmf"}))
         ->capture_default_str();
@@ -31,6 +31,9 @@ void SweepArgs::add_to(CLI::App& app) {
     app.add_option("--max-faces", max_faces, "Refuse a surface of more triangles than this, before building it")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
+    subject.add_to(app, "'python3 revolve.py {in} {out}' ({in}: the SWP file; {out}: an OBJ with a vn per v of every "
+                        "srev and gcyl record, welded or not); matched to core's surfaces by position both ways, its "
+                        "normals named (as core's, or reversed) and its faces checked against them");
 }
 
 void PatchArgs::add_to(CLI::App& app) {
@@ -74,11 +77,35 @@ std::string bundled_text(const std::string& spec, const char* format) {
 
 }  // namespace
 
+namespace {
+
+/// A program's surfaces against core's samples: the input file (a bundled model's text
+/// written out as `name` first), each normal rule's fit, and the verdict; exit 1 unless it passes.
+int run_surface_subject(const std::string& input, const std::string& bundled_text, const char* name,
+                        const verification::SurfaceSamples& samples, const TaskSubjectOptions& subject) {
+    const verification::TemporaryFolder folder("surface-input");
+    std::string path = input;
+    if (!bundled_text.empty()) {
+        path = (folder.path() / name).string();
+        std::ofstream(path) << bundled_text;
+    }
+    const auto c = verification::compare_surface_subject(path, samples, subject.name, subject.command, subject.timeout);
+    for (const auto& n : c.normals)
+        fmt::print("  normals {:<10} {} {} vertices off, up to {:.3g} deg\n", n.name, n.fits ? "=" : " ", n.off, n.max_deg);
+    fmt::print("{}\n", c.summary());
+    return c.passed() ? 0 : 1;
+}
+
+}  // namespace
+
 int run_sweep(const SweepArgs& a) {
-    require_obj(a.out);
+    if (a.subject.command.empty() && a.out.empty()) throw InputError("sweep needs -o OUT.obj, or --subject CMD");
+    if (a.subject.command.empty()) require_obj(a.out);
+    std::string text;  // a bundled model's, written out for a subject
     CurveFile file;
     if (a.input.starts_with("surface:")) {
-        std::istringstream in(bundled_text(a.input, "swp"));
+        text = bundled_text(a.input, "swp");
+        std::istringstream in(text);
         file = read_swp(in, a.input);
     } else {
         file = read_swp(a.input);
@@ -92,8 +119,12 @@ int run_sweep(const SweepArgs& a) {
     o.tol = a.tol;
     o.max_triangles = a.max_faces;
     SurfaceMesh all;
+    verification::SurfaceSamples samples;  // every sweep's grid before welding, for a subject
     for (int k = 0; k < static_cast<int>(file.sweeps.size()); ++k) {
         const SweepSurface s = build_sweep(file, k, o);
+        samples.positions.insert(samples.positions.end(), s.grid.positions.begin(), s.grid.positions.end());
+        samples.normals.insert(samples.normals.end(), s.grid.normals.begin(), s.grid.normals.end());
+        samples.welded_vertices += s.surface.mesh.num_vertices();
         const int boundary = boundary_edge_count(s.surface.mesh);
         fmt::print("{} ({}, line {}): {} vertices, {} triangles, {}{}, signed volume {:.6g}\n", s.name,
                    s.record.kind == SweepRecord::Kind::Revolution ? "srev" : "gcyl", s.record.line, s.surface.mesh.num_vertices(),
@@ -102,6 +133,7 @@ int run_sweep(const SweepArgs& a) {
                    signed_volume(s.surface.mesh));
         append(all, s.surface);
     }
+    if (!a.subject.command.empty()) return run_surface_subject(a.input, text, "model.swp", samples, a.subject);
     write(a.out, all);
     fmt::print("wrote {}\n", a.out);
     return 0;
@@ -126,12 +158,6 @@ int run_patch(const PatchArgs& a) {
         throw InputError(a.input + ": " + e.what());
     }
     if (!a.subject.command.empty()) {
-        const verification::TemporaryFolder folder("patch-input");
-        std::string file = a.input;
-        if (!text.empty()) {
-            file = (folder.path() / "model.bez").string();
-            std::ofstream(file) << text;
-        }
         // Core's grid of every patch before welding, each point with its own patch's normal.
         verification::SurfaceSamples samples;
         samples.welded_vertices = s.mesh.num_vertices();
@@ -142,11 +168,7 @@ int run_patch(const PatchArgs& a) {
                     samples.positions.push_back(patch_point(p, u, v));
                     samples.normals.push_back(patch_normal(p, u, v));
                 }
-        const auto c = verification::compare_surface_subject(file, samples, a.subject.name, a.subject.command, a.subject.timeout);
-        for (const auto& n : c.normals)
-            fmt::print("  normals {:<10} {} {} vertices off, up to {:.3g} deg\n", n.name, n.fits ? "=" : " ", n.off, n.max_deg);
-        fmt::print("{}\n", c.summary());
-        return c.passed() ? 0 : 1;
+        return run_surface_subject(a.input, text, "model.bez", samples, a.subject);
     }
     const int boundary = boundary_edge_count(s.mesh);
     fmt::print("{}: {} patches, {} vertices, {} triangles ({} collapsed at degenerate patch edges), {}\n", a.input, patches.size(),

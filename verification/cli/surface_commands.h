@@ -18,6 +18,7 @@ struct SweepArgs {
     bool adaptive = false;
     double tol = 0;
     long long max_faces = kDefaultMaxSurfaceTriangles;
+    TaskSubjectOptions subject;  ///< a program put in core's place (surface_subject.h)
     void add_to(CLI::App& app);
 };
 /// Builds every srev and gcyl record of the file into one OBJ with normals; prints per

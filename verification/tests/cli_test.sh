@@ -304,6 +304,13 @@ expect patch-subject-resolution 1 "positions off: 0.0707 from core's" -- \
 expect patch-subject-fails 1 "subject 'student' failed: no-output" -- \
   "$crossdiv" patch surface:pillow --res 5 --subject-name student --subject "python3 -c pass {in} {out}"
 expect patch-no-out 2 "patch needs -o OUT.obj, or --subject CMD" -- "$crossdiv" patch surface:pillow
+revolve="python3 $root/examples/subjects/python-revolve/revolve.py"
+expect sweep-subject 0 "subject 'student': 3504 vertices \\(core 3410 welded\\); positions on core's to .*; normals as core's \\(96 left zero\\); faces turn with the normals" -- \
+  "$crossdiv" sweep surface:vase --subject-name student --subject "$revolve {in} {out}"
+expect sweep-subject-inward 1 "normals reversed \\(96 left zero\\); 6816 of 6912 faces turn against their normals" -- \
+  "$crossdiv" sweep surface:vase --subject-name student --subject "$revolve {in} {out} --left-normals"
+expect sweep-subject-empty 1 "failed: wrong-count: out.obj: 0 vertices; core.s surface has 3410" -- \
+  "$crossdiv" sweep surface:vase --subject-name student --subject "python3 -c 'import sys; open(sys.argv[2], \"w\").write(\"# nothing\\\\n\")' {in} {out}"
 expect cc-subject-crash 1 "subject 'mine' failed: crashed" -- "$crossdiv" compare bundled:quad-grid --scheme catmull-clark --subject-name mine --subject "python3 $root/verification/tests/subjects/misbehaving_subject.py crash {in} {levels} {out}"
 expect subject-unexplained 1 "shrink it: +crossdiv diff bundled:open-patch --levels 1 .*--subject '.*keep-boundary" -- \
   "$crossdiv" compare bundled:open-patch --subject "python3 $root/verification/tests/subjects/misbehaving_subject.py keep-boundary {in} {levels} {out}"

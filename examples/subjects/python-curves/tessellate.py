@@ -28,8 +28,11 @@ def read_swp(path):
         if not words:
             continue
         if words[0] == "[":
-            xyz = [float(v) for v in words[1:words.index("]")]]
-            records[-1][2].append(xyz + [0.0] * (3 - len(xyz)))
+            while words and words[0] == "[":  # one point or several on a line
+                end = words.index("]")
+                xyz = [float(v) for v in words[1:end]]
+                records[-1][2].append(xyz + [0.0] * (3 - len(xyz)))
+                words = words[end + 1:]
         elif words[0] in ("srev", "gcyl"):
             records.append(None)  # its lines name curves; it has no points of its own
         else:

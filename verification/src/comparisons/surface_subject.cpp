@@ -120,6 +120,12 @@ SurfaceSubjectComparison compare_surface_subject(const std::string& input_file, 
         return out;
     }
     out.subject_vertices = mine.num_vertices();
+    if (mine.num_vertices() == 0 || core.positions.empty()) {
+        out.outcome.status = RunStatus::WrongCount;
+        out.outcome.message = "out.obj: " + std::to_string(mine.num_vertices()) + " vertices; core's surface has " +
+                              std::to_string(core.welded_vertices);
+        return out;
+    }
     if (normals.size() != mine.positions.size()) {
         out.outcome.status = RunStatus::WrongCount;
         out.outcome.message = "out.obj: " + std::to_string(normals.size()) + " normals (vn) for " +
