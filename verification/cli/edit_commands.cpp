@@ -2,9 +2,11 @@
 
 #include <fmt/format.h>
 
+#include "crossdiv/verification/comparisons/edit_subject.h"
 #include "crossdiv/verification/comparisons/normals_subject.h"
 
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "command.h"
@@ -20,7 +22,7 @@ namespace crossdiv::cli {
 
 void EditArgs::add_to(CLI::App& app) {
     app.add_option("input", input, "Triangle mesh: file (.obj, .off, .dae, .ply, .stl) or bundled:NAME")->required();
-    app.add_option("-o,--out", out, "Output mesh (.obj, .off)")->required();
+    app.add_option("-o,--out", out, "Output mesh (.obj, .off); required without --subject");
     // One callback per occurrence, so that flips and splits keep their command-line order.
     app.add_option_function<std::string>("--flip", [this](const std::string& e) { ops.emplace_back("flip", e); },
                                          "Flip the edge A-B (vertex indices, 0-based)")
@@ -31,6 +33,9 @@ void EditArgs::add_to(CLI::App& app) {
         ->trigger_on_parse()
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     app.add_flag("--check", check, "Run the half-edge validity check after every operation");
+    subject.add_to(app, "'python3 edit.py {in} {ops} {out}' ({in}: the mesh as OBJ, {ops}: one 'flip A B' or 'split A B' "
+                        "per line, {out}: the mesh after them); run once per prefix of the operations, each result "
+                        "compared with core's: vertex count, positions by index, faces");
 }
 
 namespace {
@@ -64,6 +69,20 @@ int print_issues(const HalfedgeMesh& he, const std::string& after) {
 
 int run_edit(const EditArgs& a) {
     const TriMesh mesh = to_tri_mesh(verification::load_input(a.input, verification::UnknownTags::Ignore), "edit");
+    if (!a.subject.command.empty()) {
+        std::vector<verification::EditOperation> ops;
+        for (const auto& [kind, text] : a.ops) {
+            const auto [u, v] = parse_edge(text, std::numeric_limits<int>::max());
+            ops.push_back({kind == "flip" ? verification::EditOperation::Kind::Flip : verification::EditOperation::Kind::Split, u, v});
+        }
+        if (ops.empty()) throw InputError("--subject needs operations: --flip A-B, --split A-B");
+        const auto c = verification::compare_edit_subject(a.input, mesh, ops, a.subject.name, a.subject.command, a.subject.timeout);
+        for (const auto& s : c.steps)
+            fmt::print("  {:<12} core {:<28} {}\n", s.operation, s.core, s.agrees() ? "agrees" : "differs");
+        fmt::print("{}\n", c.summary());
+        return c.passed() ? 0 : 1;
+    }
+    if (a.out.empty()) throw InputError("edit needs -o OUT, or --subject CMD");
     HalfedgeMesh he = HalfedgeMesh::from_triangles(mesh);
     std::vector<Vec3> pos = mesh.positions;
     int refused = 0, invalid = 0;

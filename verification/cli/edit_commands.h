@@ -17,6 +17,7 @@ struct EditArgs {
     /// Operations in command-line order: ("flip" | "split", "A-B").
     std::vector<std::pair<std::string, std::string>> ops;
     bool check = false;
+    TaskSubjectOptions subject;  ///< a program put in core's place (edit_subject.h)
     void add_to(CLI::App& app);
 };
 /// Applies the flips and splits in order (edges by endpoint indices, 0-based in the input's

@@ -311,6 +311,13 @@ expect sweep-subject-inward 1 "normals reversed \\(96 left zero\\); 6816 of 6912
   "$crossdiv" sweep surface:vase --subject-name student --subject "$revolve {in} {out} --left-normals"
 expect sweep-subject-empty 1 "failed: wrong-count: out.obj: 0 vertices; core.s surface has 3410" -- \
   "$crossdiv" sweep surface:vase --subject-name student --subject "python3 -c 'import sys; open(sys.argv[2], \"w\").write(\"# nothing\\\\n\")' {in} {out}"
+editor="python3 $root/examples/subjects/python-edit/edit.py"
+expect edit-subject 0 "subject 'student': 5 of 5 operations agree" -- \
+  "$crossdiv" edit bundled:open-patch --flip 6-7 --split 0-1 --flip 0-5 --split 7-12 --flip 12-13 --subject-name student --subject "$editor {in} {ops} {out}"
+expect edit-subject-third 1 "operation 2 \\(split 0 1; core: new vertex 25\\): vertex 25 off by" -- \
+  "$crossdiv" edit bundled:open-patch --flip 6-7 --split 0-1 --subject-name student --subject "$editor {in} {ops} {out} --third"
+expect edit-no-ops 2 "--subject needs operations" -- "$crossdiv" edit bundled:open-patch --subject "$editor {in} {ops} {out}"
+expect edit-no-out 2 "edit needs -o OUT, or --subject CMD" -- "$crossdiv" edit bundled:open-patch --flip 6-7
 expect cc-subject-crash 1 "subject 'mine' failed: crashed" -- "$crossdiv" compare bundled:quad-grid --scheme catmull-clark --subject-name mine --subject "python3 $root/verification/tests/subjects/misbehaving_subject.py crash {in} {levels} {out}"
 expect subject-unexplained 1 "shrink it: +crossdiv diff bundled:open-patch --levels 1 .*--subject '.*keep-boundary" -- \
   "$crossdiv" compare bundled:open-patch --subject "python3 $root/verification/tests/subjects/misbehaving_subject.py keep-boundary {in} {levels} {out}"

@@ -55,7 +55,7 @@ TEST(CommandTemplate, SplitsLikeAShellWithoutOneAndSubstitutesEachPlaceholder) {
     EXPECT_TRUE(t.reads(MeshFormat::Obj));
     EXPECT_FALSE(t.reads(MeshFormat::Off));
     EXPECT_EQ(t.output_format(), MeshFormat::Off);
-    TemplateValues v{"/t/in.obj", "/t/in.off", "/t/in.ply", "/t/out.off", {Scheme::Loop, {}, 3}, "/t/in-untagged.obj", "/t/submission"};
+    TemplateValues v{"/t/in.obj", "/t/in.off", "/t/in.ply", "/t/out.off", {Scheme::Loop, {}, 3}, "/t/in-untagged.obj", "/t/submission", "/t/ops.txt"};
     v.request.rule.loop = {LoopWeights::Warren, LoopBoundary::EdgeAndCorner};
     const std::vector<std::string> want = {"prog", "a b", "c 3", "x y", "--out=/t/out.off", "{lit}", "loop",
                                            "warren", "edge-and-corner", "/t/in.obj"};

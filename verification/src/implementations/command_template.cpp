@@ -10,10 +10,10 @@
 namespace crossdiv::verification {
 namespace {
 
-constexpr std::array<std::string_view, 15> kPlaceholders = {"in",      "in.obj",  "in.untagged", "in.off",
+constexpr std::array<std::string_view, 16> kPlaceholders = {"in",      "in.obj",  "in.untagged", "in.off",
                                                             "in.ply",  "out",     "out.obj",     "out.off",
                                                             "out.ply", "levels",  "scheme",      "weights",
-                                                            "boundary", "adapters", "dir"};
+                                                            "boundary", "adapters", "dir",        "ops"};
 
 }  // namespace
 
@@ -82,7 +82,7 @@ CommandTemplate::CommandTemplate(std::string text, bool needs_output) : text_(st
             if (std::find(kPlaceholders.begin(), kPlaceholders.end(), name) == kPlaceholders.end())
                 fail("unknown placeholder {" + name +
                      "} (known: {in} {in.obj} {in.untagged} {in.off} {in.ply} {out} {out.obj} {out.off} {out.ply} "
-                     "{levels} {scheme} {weights} {boundary} {adapters} {dir})");
+                     "{levels} {scheme} {weights} {boundary} {adapters} {dir} {ops})");
             word.push_back({true, name});
             in_word = true;
             i = close;
@@ -149,6 +149,7 @@ std::vector<std::string> CommandTemplate::expand(const TemplateValues& v) const 
             else if (p.text == "in.ply") arg += v.in_ply;
             else if (p.text == "adapters") arg += adapters_dir();
             else if (p.text == "dir") arg += v.dir;
+            else if (p.text == "ops") arg += v.ops;
             else if (p.text.starts_with("out")) arg += v.out;
             else if (p.text == "levels") arg += std::to_string(v.request.levels);
             else if (p.text == "scheme") arg += to_string(v.request.scheme);

@@ -139,7 +139,8 @@ private:
                               (folder.path() / (std::string("out.") + to_string(command_.output_format()))).string(),
                               request,
                               (folder.path() / "in-untagged.obj").string(),
-                              spec_.dir};
+                              spec_.dir,
+                              ""};
         if (!mesh.creases.empty() && !command_.reads_tags())
             throw adapters::Rejected(name() + " reads its input without tags (" +
                                      (command_.reads_untagged_obj() ? "{in.untagged}" : "OFF or PLY") + "), and this one has " +

@@ -10,7 +10,7 @@
 namespace crossdiv::verification {
 
 TaskRun run_task_program(const std::string& command, const std::string& input_file, const std::string& out_name,
-                         double timeout_seconds) {
+                         double timeout_seconds, const std::string& ops_file) {
     namespace fs = std::filesystem;
     CommandTemplate cmd(command);
     cmd.anchor_relative_paths();
@@ -23,7 +23,12 @@ TaskRun run_task_program(const std::string& command, const std::string& input_fi
     if (ec) throw InputError(input_file + ": cannot copy it for the program: " + ec.message());
     run.out = (dir / out_name).string();
     // Every input placeholder names the one file the task has.
-    const TemplateValues values{in.string(), in.string(), in.string(), run.out, {}, in.string(), ""};
+    TemplateValues values{in.string(), in.string(), in.string(), run.out, {}, in.string(), "", ""};
+    if (!ops_file.empty()) {
+        values.ops = (dir / "ops.txt").string();
+        fs::copy_file(ops_file, values.ops, fs::copy_options::overwrite_existing, ec);
+        if (ec) throw InputError(ops_file + ": cannot copy it for the program: " + ec.message());
+    }
     const std::string err = (dir / "stderr.txt").string();
     const ProcessResult r = run_confined(cmd.expand(values), {dir.string(), timeout_seconds, (dir / "stdout.txt").string(), err});
     run.outcome.seconds = r.seconds;

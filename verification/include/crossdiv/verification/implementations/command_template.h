@@ -21,6 +21,7 @@
 ///   {out.off}        ... as OFF
 ///   {out.ply}        ... as PLY (ASCII or binary; binary floats read back exactly)
 ///   {adapters}       the folder of crossdiv's program adapters (install_paths.h)
+///   {ops}            the edit task's list of operations (crossdiv edit --subject)
 ///   {dir}            the submission folder of a roster's subject (a manifest's `subjects`
 ///                    statement), absolute
 ///   {levels}         the number of levels asked of this run
@@ -48,6 +49,7 @@ struct TemplateValues {
     RefineRequest request;
     std::string in_untagged;  ///< the path of the OBJ without tag lines
     std::string dir;          ///< the program's submission folder ({dir}; empty outside a roster)
+    std::string ops;          ///< the edit task's operations file ({ops}; empty elsewhere)
 };
 
 class CommandTemplate {

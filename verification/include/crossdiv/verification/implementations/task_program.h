@@ -25,7 +25,9 @@ struct TaskRun {
 /// ("out.csv"). A program that cannot start or dies by a signal is Crashed, one still running
 /// at `timeout_seconds` Timeout, one that exits nonzero ExitStatus, each with its stderr's tail.
 /// @throws InputError for a command template that cannot run or an input that cannot be copied.
+/// `ops_file`, when given, is copied beside the input and named by {ops} (the edit task's
+/// list of operations).
 TaskRun run_task_program(const std::string& command, const std::string& input_file, const std::string& out_name,
-                         double timeout_seconds);
+                         double timeout_seconds, const std::string& ops_file = "");
 
 }  // namespace crossdiv::verification
