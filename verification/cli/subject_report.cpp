@@ -52,10 +52,7 @@ void print_subject(const RefinementComparison& c) {
     // The nearest rule of each scheme (and of the scheme with the tags ignored).
     std::vector<const OtherSchemeFit*> nearest;
     for (const OtherSchemeFit& f : c.rules->other_schemes) {
-        const bool untagged = f.rule.ends_with("tags ignored");
-        auto it = std::find_if(nearest.begin(), nearest.end(), [&](const OtherSchemeFit* n) {
-            return n->scheme == f.scheme && n->rule.ends_with("tags ignored") == untagged && (n->rule == "midpoint") == (f.rule == "midpoint");
-        });
+        auto it = std::find_if(nearest.begin(), nearest.end(), [&](const OtherSchemeFit* n) { return n->family() == f.family(); });
         if (it == nearest.end()) nearest.push_back(&f);
         else if (f.max_rel < (*it)->max_rel) *it = &f;
     }
@@ -64,7 +61,7 @@ void print_subject(const RefinementComparison& c) {
     const OtherSchemeFit* it = c.rules->other_scheme();
     fmt::print("  nearest rule of each scheme with its connectivity, at level 1: {}\n  {}\n", fmt::join(others, ", "),
                !it ? std::string("no rule of these schemes fits either")
-               : it->rule.ends_with("tags ignored")
+               : it->tags_ignored()
                    ? fmt::format("it reads past the input's tags: it is {} {} on the mesh without them", to_string(it->scheme),
                                  it->rule.substr(0, it->rule.size() - std::string_view(", tags ignored").size()))
                    : fmt::format("it is {}, not {}", it->label(), to_string(c.scheme)));

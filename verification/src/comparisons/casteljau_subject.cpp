@@ -6,6 +6,7 @@
 
 #include "crossdiv/curves/bezier.h"
 #include "crossdiv/error.h"
+#include "crossdiv/mesh/tri_mesh.h"
 #include "crossdiv/verification/implementations/task_program.h"
 #include "harness/sci.h"
 
@@ -100,12 +101,7 @@ CasteljauSubjectComparison compare_casteljau_subject(const std::string& input, c
         if (levels[k].size() != at_t[k].size())
             return wrong("level " + std::to_string(k) + " has " + std::to_string(levels[k].size()) + " points, not " +
                          std::to_string(at_t[k].size()));
-    Vec3 lo = at_t[0][0], hi = at_t[0][0];
-    for (const Vec3& p : at_t[0]) {
-        lo = lo.cwiseMin(p);
-        hi = hi.cwiseMax(p);
-    }
-    const double d = (hi - lo).norm() > 0 ? (hi - lo).norm() : 1;
+    const double diagonal = bounding_box_diagonal(at_t[0]), d = diagonal > 0 ? diagonal : 1;
     out.max_at_t = out.max_at_one_minus_t = 0;
     for (size_t k = 0; k < levels.size(); ++k)
         for (size_t i = 0; i < levels[k].size(); ++i) {

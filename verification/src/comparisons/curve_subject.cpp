@@ -12,6 +12,7 @@
 #include "crossdiv/curves/cubic_spline.h"
 #include "crossdiv/curves/frames.h"
 #include "crossdiv/error.h"
+#include "crossdiv/verification/harness/vector_angle.h"
 #include "crossdiv/verification/implementations/task_program.h"
 
 namespace crossdiv::verification {
@@ -34,10 +35,10 @@ struct Sample {
     std::optional<Vec3> t, n, b;
 };
 
+/// The angle in degrees; a zero vector (a direction the program left undecided) is as far as can be.
 double angle_deg(const Vec3& a, const Vec3& b) {
-    const double na = a.norm(), nb = b.norm();
-    if (!(na > 0 && nb > 0)) return 180;
-    return std::atan2(a.cross(b).norm(), a.dot(b)) * 180 / M_PI;
+    if (a.isZero() || b.isZero()) return 180;
+    return vector_angle(a, b) * 180 / M_PI;
 }
 
 /// The record index a `curve` cell names: "3", or crossdiv's label "#3 bsp2".
@@ -175,12 +176,7 @@ CurveSubjectCurve compare_curve(const CurveRecord& record, int index, const std:
         const Polyline& poly = reading.poly;
         CurveConventionFit fit{name, INFINITY, false};
         if (poly.size() == c.subject_samples) {
-            Vec3 mn = poly.positions[0], mx = poly.positions[0];
-            for (const Vec3& p : poly.positions) {
-                mn = mn.cwiseMin(p);
-                mx = mx.cwiseMax(p);
-            }
-            const double d = (mx - mn).norm();
+            const double d = bounding_box_diagonal(poly.positions);
             fit.max = 0;
             for (size_t k = 0; k < samples.size(); ++k)
                 fit.max = std::max(fit.max, (samples[k].p - poly.positions[k]).norm() / (d > 0 ? d : 1));

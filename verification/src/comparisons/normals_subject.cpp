@@ -8,6 +8,7 @@
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/mesh/vertex_normals.h"
 #include "crossdiv/verification/harness/temporary_folder.h"
+#include "crossdiv/verification/harness/vector_angle.h"
 #include "crossdiv/verification/implementations/task_program.h"
 
 namespace crossdiv::verification {
@@ -18,7 +19,7 @@ namespace {
 /// around a vertex differ in size or angle.
 constexpr double kNormalToleranceDeg = 0.01, kNormalUnitTolerance = 1e-4;
 
-double normal_angle_deg(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)) * 180 / M_PI; }
+double normal_angle_deg(const Vec3& a, const Vec3& b) { return vector_angle(a, b) * 180 / M_PI; }
 
 /// The normals the program wrote: its `vn` lines, or, without any, its lines of three numbers.
 /// @throws ImplementationFailure naming file:line.

@@ -180,6 +180,12 @@ std::string OtherSchemeFit::label() const {
     return rule == "midpoint" ? std::string(to_string(scheme)) + " (midpoint)" : std::string(to_string(scheme)) + " " + rule;
 }
 
+bool OtherSchemeFit::tags_ignored() const { return rule.ends_with(", tags ignored"); }
+
+std::string OtherSchemeFit::family() const {
+    return std::string(to_string(scheme)) + (tags_ignored() ? "/untagged" : "") + (rule == "midpoint" ? "/midpoint" : "");
+}
+
 const OtherSchemeFit* RuleIdentification::other_scheme() const {
     for (const OtherSchemeFit& f : other_schemes)
         if (f.fits) return &f;
@@ -325,9 +331,9 @@ void RuleTally::add(const RuleIdentification& id) {
         for (const OtherSchemeFit& f : id.other_schemes) {
             if (!f.fits) continue;
             const std::string label = f.label();
-            auto it = std::find_if(other_fits_.begin(), other_fits_.end(), [&](const auto& p) { return p.first == label; });
-            if (it == other_fits_.end()) other_fits_.push_back({label, 1});
-            else ++it->second;
+            auto it = std::find_if(other_fits_.begin(), other_fits_.end(), [&](const OtherFit& o) { return o.label == label; });
+            if (it == other_fits_.end()) other_fits_.push_back({label, f.family(), 1});
+            else ++it->inputs;
         }
     }
     const size_t n = named_rules(scheme_).size();
@@ -364,22 +370,21 @@ std::string RuleTally::other_scheme_phrase() const {
     // ignored or not), the one that fits the most inputs, with how many others fit as often.
     std::vector<std::pair<std::string, int>> shown;  // label, how many more fit as often
     std::vector<int> inputs_of;
-    for (const auto& [label, inputs] : other_fits_) {
-        const std::string group = label.substr(0, label.find(' ')) + (label.ends_with("tags ignored") ? "/untagged" : "");
-        auto it = std::find_if(shown.begin(), shown.end(), [&](const auto& p) {
-            return p.first.substr(0, p.first.find(' ')) + (p.first.ends_with("tags ignored") ? "/untagged" : "") == group;
-        });
-        if (it == shown.end()) {
-            shown.push_back({label, 0});
-            inputs_of.push_back(inputs);
+    std::vector<std::string> families;
+    for (const OtherFit& o : other_fits_) {
+        const auto at = std::find(families.begin(), families.end(), o.family);
+        if (at == families.end()) {
+            families.push_back(o.family);
+            shown.push_back({o.label, 0});
+            inputs_of.push_back(o.inputs);
             continue;
         }
-        const size_t k = static_cast<size_t>(it - shown.begin());
-        if (inputs > inputs_of[k]) {
-            *it = {label, 0};
-            inputs_of[k] = inputs;
-        } else if (inputs == inputs_of[k]) {
-            ++it->second;
+        const size_t k = static_cast<size_t>(at - families.begin());
+        if (o.inputs > inputs_of[k]) {
+            shown[k] = {o.label, 0};
+            inputs_of[k] = o.inputs;
+        } else if (o.inputs == inputs_of[k]) {
+            ++shown[k].second;
         }
     }
     std::string s;

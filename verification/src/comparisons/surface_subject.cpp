@@ -9,6 +9,8 @@
 
 #include "crossdiv/error.h"
 #include "crossdiv/io/mesh_io.h"
+#include "crossdiv/mesh/tri_mesh.h"
+#include "crossdiv/verification/harness/vector_angle.h"
 #include "crossdiv/verification/implementations/program_implementation.h"
 #include "crossdiv/verification/implementations/task_program.h"
 #include "harness/point_cloud.h"
@@ -22,13 +24,10 @@ namespace {
 /// another resolution, a swapped patch index or a turned normal moves them by 1e-2 and degrees.
 constexpr double kSurfacePositionTolerance = 1e-5, kSurfaceNormalToleranceDeg = 0.01;
 
-double surface_angle_deg(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)) * 180 / M_PI; }
+double surface_angle_deg(const Vec3& a, const Vec3& b) { return vector_angle(a, b) * 180 / M_PI; }
 
-/// For each point of `from`, the index of the nearest point of `to` and the distance.
-std::vector<std::pair<size_t, double>> nearest(const std::vector<Vec3>& from, const std::vector<Vec3>& to) {
-    const PointCloud cloud{to};
-    PointTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
-    tree.buildIndex();
+/// For each point of `from`, the index of the nearest point of `tree`'s cloud and the distance.
+std::vector<std::pair<size_t, double>> nearest(const std::vector<Vec3>& from, const PointTree& tree) {
     std::vector<std::pair<size_t, double>> out(from.size());
     for (size_t i = 0; i < from.size(); ++i) {
         unsigned index = 0;  // the tree's default index type
@@ -133,21 +132,19 @@ SurfaceSubjectComparison compare_surface_subject(const std::string& input_file, 
         return out;
     }
     const std::vector<Vec3>& ours = core.positions;
-    Vec3 lo = ours[0], hi = ours[0];
-    for (const Vec3& p : ours) {
-        lo = lo.cwiseMin(p);
-        hi = hi.cwiseMax(p);
-    }
-    const double d = (hi - lo).norm() > 0 ? (hi - lo).norm() : 1;
-    const auto to_core = nearest(mine.positions, ours), back = nearest(ours, mine.positions);
+    const double diagonal = bounding_box_diagonal(ours), d = diagonal > 0 ? diagonal : 1;
+    // One tree over core's samples, for the nearest neighbours and the samples at each vertex.
+    const PointCloud cloud{ours}, their_cloud{mine.positions};
+    PointTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+    PointTree their_tree(3, their_cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+    tree.buildIndex();
+    their_tree.buildIndex();
+    const auto to_core = nearest(mine.positions, tree), back = nearest(ours, their_tree);
     for (const auto& [i, dist] : to_core) out.subject_to_core = std::max(out.subject_to_core, dist / d);
     for (const auto& [i, dist] : back) out.core_to_subject = std::max(out.core_to_subject, dist / d);
     out.positions_fit = out.subject_to_core <= kSurfacePositionTolerance && out.core_to_subject <= kSurfacePositionTolerance;
     if (!out.positions_fit) return out;
     // The core samples at each subject vertex (a seam's point once per piece).
-    const PointCloud cloud{ours};
-    PointTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
-    tree.buildIndex();
     const double radius = kSurfacePositionTolerance * d;
     std::vector<std::vector<size_t>> at(normals.size());
     for (size_t v = 0; v < normals.size(); ++v) {

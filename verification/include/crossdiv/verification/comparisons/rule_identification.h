@@ -86,6 +86,11 @@ struct OtherSchemeFit {
     bool fits = false;
     /// "butterfly reflected-wings", "bilinear (midpoint)".
     std::string label() const;
+    /// Whether it is its own scheme's rule on the mesh without its tags.
+    bool tags_ignored() const;
+    /// The rules told apart as one reading of the subject: the scheme, with the tags or
+    /// without, midpoint averaging or the scheme's rules ("catmull-clark/untagged").
+    std::string family() const;
 };
 
 struct RuleIdentification {
@@ -149,7 +154,11 @@ private:
     /// rule fits where none of this one's does.
     std::string other_scheme_phrase() const;
     Scheme scheme_;
-    std::vector<std::pair<std::string, int>> other_fits_;  ///< label, inputs where it fits
+    struct OtherFit {
+        std::string label, family;
+        int inputs = 0;  ///< where it fits
+    };
+    std::vector<OtherFit> other_fits_;
     int other_tried_ = 0;                                  ///< inputs where other schemes were tried
     std::vector<Tally> rows_;
     std::vector<int> whole_fits_;     ///< per named rule, the inputs where it fits the whole mesh
