@@ -12,6 +12,7 @@
 #include "crossdiv/curves/cubic_spline.h"
 #include "crossdiv/curves/frames.h"
 #include "crossdiv/error.h"
+#include "crossdiv/mesh/tri_mesh.h"
 #include "crossdiv/verification/harness/vector_angle.h"
 #include "crossdiv/verification/implementations/task_program.h"
 
