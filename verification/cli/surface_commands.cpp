@@ -82,14 +82,18 @@ namespace {
 /// A program's surfaces against core's samples: the input file (a bundled model's text
 /// written out as `name` first), each normal rule's fit, and the verdict; exit 1 unless it passes.
 int run_surface_subject(const std::string& input, const std::string& bundled_text, const char* name,
-                        const verification::SurfaceSamples& samples, const TaskSubjectOptions& subject) {
+                        std::span<const verification::SurfaceSamples> conventions, const TaskSubjectOptions& subject) {
     const verification::TemporaryFolder folder("surface-input");
     std::string path = input;
     if (!bundled_text.empty()) {
         path = (folder.path() / name).string();
         std::ofstream(path) << bundled_text;
     }
-    const auto c = verification::compare_surface_subject(path, samples, subject.name, subject.command, subject.timeout);
+    const auto c = verification::compare_surface_subject(path, conventions, subject.name, subject.command, subject.timeout);
+    if (c.conventions.size() > 1)
+        for (const auto& f : c.conventions)
+            fmt::print("  positions {:<45} {} {:.3g} from core's, core's {:.3g} from its\n", f.convention, f.fits ? "=" : " ",
+                       f.subject_to_core, f.core_to_subject);
     for (const auto& n : c.normals)
         fmt::print("  normals {:<10} {} {} vertices off, up to {:.3g} deg\n", n.name, n.fits ? "=" : " ", n.off, n.max_deg);
     fmt::print("{}\n", c.summary());
@@ -120,11 +124,11 @@ int run_sweep(const SweepArgs& a) {
     o.max_triangles = a.max_faces;
     SurfaceMesh all;
     verification::SurfaceSamples samples;  // every sweep's grid before welding, for a subject
+    bool cylinders = false;
     for (int k = 0; k < static_cast<int>(file.sweeps.size()); ++k) {
         const SweepSurface s = build_sweep(file, k, o);
-        samples.positions.insert(samples.positions.end(), s.grid.positions.begin(), s.grid.positions.end());
-        samples.normals.insert(samples.normals.end(), s.grid.normals.begin(), s.grid.normals.end());
-        samples.welded_vertices += s.surface.mesh.num_vertices();
+        cylinders |= s.record.kind == SweepRecord::Kind::Cylinder;
+        verification::add_surface_piece(samples, s.grid.positions, s.grid.normals, s.surface);
         const int boundary = boundary_edge_count(s.surface.mesh);
         fmt::print("{} ({}, line {}): {} vertices, {} triangles, {}{}, signed volume {:.6g}\n", s.name,
                    s.record.kind == SweepRecord::Kind::Revolution ? "srev" : "gcyl", s.record.line, s.surface.mesh.num_vertices(),
@@ -133,7 +137,30 @@ int run_sweep(const SweepArgs& a) {
                    signed_volume(s.surface.mesh));
         append(all, s.surface);
     }
-    if (!a.subject.command.empty()) return run_surface_subject(a.input, text, "model.swp", samples, a.subject);
+    if (!a.subject.command.empty()) {
+        std::vector<verification::SurfaceSamples> conventions{std::move(samples)};
+        // A generalized cylinder's frames are a convention (the seed leaves the initial frame
+        // and a closed sweep's seam to the program): a subject that misses core's is told which
+        // of the others it follows.
+        if (cylinders) {
+            auto frames_name = [](FrameMethod m) { return m == FrameMethod::Recursive ? "recursive frames" : "rotation-minimizing frames"; };
+            for (const FrameMethod m : {o.frames, o.frames == FrameMethod::Recursive ? FrameMethod::DoubleReflection : FrameMethod::Recursive})
+                for (const bool closed : {true, false}) {
+                    SweepOptions other = o;
+                    other.frames = m;
+                    other.close_frames = closed;
+                    verification::SurfaceSamples c;
+                    c.convention = fmt::format("{}, seam {}", frames_name(m), closed ? "closed" : "left open");
+                    for (int k = 0; k < static_cast<int>(file.sweeps.size()); ++k) {
+                        const SweepSurface s = build_sweep(file, k, other);
+                        verification::add_surface_piece(c, s.grid.positions, s.grid.normals, s.surface);
+                    }
+                    if (m == o.frames && closed) conventions.front().convention = c.convention;  // core's own
+                    else conventions.push_back(std::move(c));
+                }
+        }
+        return run_surface_subject(a.input, text, "model.swp", conventions, a.subject);
+    }
     write(a.out, all);
     fmt::print("wrote {}\n", a.out);
     return 0;
@@ -159,16 +186,17 @@ int run_patch(const PatchArgs& a) {
     }
     if (!a.subject.command.empty()) {
         // Core's grid of every patch before welding, each point with its own patch's normal.
-        verification::SurfaceSamples samples;
-        samples.welded_vertices = s.mesh.num_vertices();
+        std::vector<Vec3> positions, normals;
         for (const BezierPatch& p : patches)
             for (int i = 0; i <= a.res; ++i)
                 for (int j = 0; j <= a.res; ++j) {
                     const double u = static_cast<double>(i) / a.res, v = static_cast<double>(j) / a.res;
-                    samples.positions.push_back(patch_point(p, u, v));
-                    samples.normals.push_back(patch_normal(p, u, v));
+                    positions.push_back(patch_point(p, u, v));
+                    normals.push_back(patch_normal(p, u, v));
                 }
-        return run_surface_subject(a.input, text, "model.bez", samples, a.subject);
+        verification::SurfaceSamples samples;
+        verification::add_surface_piece(samples, positions, normals, s);
+        return run_surface_subject(a.input, text, "model.bez", {&samples, 1}, a.subject);
     }
     const int boundary = boundary_edge_count(s.mesh);
     fmt::print("{}: {} patches, {} vertices, {} triangles ({} collapsed at degenerate patch edges), {}\n", a.input, patches.size(),

@@ -309,6 +309,15 @@ expect sweep-subject 0 "subject 'student': 3504 vertices \\(core 3410 welded\\);
   "$crossdiv" sweep surface:vase --subject-name student --subject "$revolve {in} {out}"
 expect sweep-subject-inward 1 "normals reversed \\(96 left zero\\); 6816 of 6912 faces turn against their normals" -- \
   "$crossdiv" sweep surface:vase --subject-name student --subject "$revolve {in} {out} --left-normals"
+# A circle along a closed space B-spline whose recursive frames do not meet at the seam.
+printf 'circ profile 12 0.2\nbsp3 sweep 8 9\n[1 0 0]\n[0.5 0.87 0.5]\n[-0.5 0.87 -0.5]\n[-1 0 0.5]\n[-0.5 -0.87 -0.5]\n[0.5 -0.87 0.5]\n[1 0 0]\n[0.5 0.87 0.5]\n[-0.5 0.87 -0.5]\ngcyl wavy-ring profile sweep\n' > "$tmp/wavy.swp"
+cylinder="python3 $root/examples/subjects/python-cylinder/cylinder.py"
+expect cylinder-subject 0 "subject 'student': 624 vertices \\(core 576 welded\\); positions on core's to .*; normals as core's; faces turn with the normals; watertight" -- \
+  "$crossdiv" sweep "$tmp/wavy.swp" --subject-name student --subject "$cylinder {in} {out}"
+expect cylinder-subject-open-seam 1 "positions follow recursive frames, seam left open \\(to .*\\), not core's recursive frames, seam closed \\(0.000871 off\\); normals as under it; faces turn with the normals; NOT watertight: 24 boundary edges where core's surface has 0" -- \
+  "$crossdiv" sweep "$tmp/wavy.swp" --subject-name student --subject "$cylinder {in} {out} --open-seam"
+expect cylinder-subject-rmf 1 "positions follow recursive frames, seam closed \\(to .*\\), not core's rotation-minimizing frames, seam closed" -- \
+  "$crossdiv" sweep "$tmp/wavy.swp" --frames rmf --subject-name student --subject "$cylinder {in} {out}"
 expect sweep-subject-empty 1 "failed: wrong-count: out.obj: 0 vertices; core.s surface has 3410" -- \
   "$crossdiv" sweep surface:vase --subject-name student --subject "python3 -c 'import sys; open(sys.argv[2], \"w\").write(\"# nothing\\\\n\")' {in} {out}"
 editor="python3 $root/examples/subjects/python-edit/edit.py"

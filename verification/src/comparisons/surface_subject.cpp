@@ -3,7 +3,10 @@
 #include <nanoflann.hpp>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <stdexcept>
 #include <fstream>
 #include <sstream>
 
@@ -23,6 +26,10 @@ namespace {
 /// positions fit within 1e-5 of the diagonal and normals within 0.01 degrees (1.7e-4 rad), while
 /// another resolution, a swapped patch index or a turned normal moves them by 1e-2 and degrees.
 constexpr double kSurfacePositionTolerance = 1e-5, kSurfaceNormalToleranceDeg = 0.01;
+
+/// A face whose Newell area is below this times the diagonal squared has no side to turn: the
+/// area rounding leaves on a face collapsed at a pole or a degenerate patch edge.
+constexpr double kFlatFaceArea = 1e-12;
 
 double surface_angle_deg(const Vec3& a, const Vec3& b) { return vector_angle(a, b) * 180 / M_PI; }
 
@@ -74,37 +81,173 @@ std::vector<Vec3> read_vn(const std::string& path, const std::string& shown) {
 
 }  // namespace
 
+void add_surface_piece(SurfaceSamples& samples, std::span<const Vec3> positions, std::span<const Vec3> normals,
+                       const SurfaceMesh& welded) {
+    samples.positions.insert(samples.positions.end(), positions.begin(), positions.end());
+    samples.normals.insert(samples.normals.end(), normals.begin(), normals.end());
+    samples.welded_vertices += welded.mesh.num_vertices();
+    samples.boundary_edges += boundary_edge_count(welded.mesh);
+    const double d = bounding_box_diagonal(welded.mesh.positions);
+    samples.folded_faces += faces_against_normals(to_poly_mesh(welded.mesh), welded.normals, kFlatFaceArea * d * d);
+}
+
+int faces_against_normals(const PolyMesh& mesh, std::span<const Vec3> normals, double area_floor) {
+    int against = 0;
+    for (int f = 0; f < mesh.num_faces(); ++f) {
+        const int* c = mesh.face(f);
+        const int k = mesh.face_size(f);
+        Vec3 geometric = Vec3::Zero(), along = Vec3::Zero();
+        for (int i = 0; i < k; ++i) {
+            const Vec3& p = mesh.positions[static_cast<size_t>(c[i])];
+            const Vec3& q = mesh.positions[static_cast<size_t>(c[(i + 1) % k])];
+            geometric += p.cross(q);  // twice the area vector (Newell)
+            along += normals[static_cast<size_t>(c[i])];
+        }
+        // A face of no area (at a collapsed patch edge, a pole) has no side to turn.
+        if (geometric.norm() > area_floor) against += geometric.dot(along) < 0;
+    }
+    return against;
+}
+
+int welded_boundary_edges(const PolyMesh& mesh, double tol) {
+    const std::vector<int> weld = weld_classes(mesh.positions, tol);
+    std::vector<uint64_t> edges;  // (smaller, larger) welded vertex of every edge, packed
+    edges.reserve(mesh.face_vertices.size());
+    std::vector<int> corners;
+    for (int f = 0; f < mesh.num_faces(); ++f) {
+        corners.clear();
+        for (int i = 0; i < mesh.face_size(f); ++i) {
+            const int v = weld[static_cast<size_t>(mesh.face(f)[i])];
+            if (corners.empty() || corners.back() != v) corners.push_back(v);
+        }
+        while (corners.size() > 1 && corners.back() == corners.front()) corners.pop_back();
+        if (corners.size() < 3) continue;  // collapsed by welding (a pole's triangle): no side, no edges
+        for (size_t i = 0; i < corners.size(); ++i) {
+            const auto [a, b] = std::minmax(corners[i], corners[(i + 1) % corners.size()]);
+            edges.push_back(static_cast<uint64_t>(a) << 32 | static_cast<uint32_t>(b));
+        }
+    }
+    std::sort(edges.begin(), edges.end());
+    int boundary = 0;
+    for (size_t i = 0; i < edges.size();) {
+        size_t j = i;
+        while (j < edges.size() && edges[j] == edges[i]) ++j;
+        boundary += j - i == 1;
+        i = j;
+    }
+    return boundary;
+}
+
 bool SurfaceSubjectComparison::passed() const {
-    return outcome.status == RunStatus::Ok && positions_fit && normal_rule == "as core's" && faces_against_normals == 0;
+    return outcome.status == RunStatus::Ok && positions_fit && follows_core() && normal_rule == "as core's" &&
+           faces_against_normals <= core_folded_faces && boundary_edges <= core_boundary_edges;
+}
+
+bool SurfaceSubjectComparison::follows_core() const {
+    return convention == (core_convention.empty() ? "core's" : core_convention);
 }
 
 std::string SurfaceSubjectComparison::summary() const {
     if (outcome.status != RunStatus::Ok) return "subject '" + subject + "' failed: " + outcome.summary();
     std::string s = "subject '" + subject + "': " + std::to_string(subject_vertices) + " vertices (core " +
                     std::to_string(core_vertices) + " welded); ";
-    s += positions_fit ? "positions on core's to " + detail::sci(std::max(subject_to_core, core_to_subject))
-                       : "positions off: " + detail::sci(subject_to_core) + " from core's, core's " + detail::sci(core_to_subject) +
-                             " from its";
+    const bool other = !convention.empty() && !positions_fit;
     if (positions_fit) {
-        if (!normal_rule.empty()) s += "; normals " + normal_rule;
-        else if (!normals.empty())
-            s += "; normals off at " + std::to_string(normals.front().off) + " vertices (up to " +
-                 detail::sci(normals.front().max_deg) + " deg)";
-        if (zero_normals) s += " (" + std::to_string(zero_normals) + " left zero)";
+        s += "positions on core's to " + detail::sci(std::max(subject_to_core, core_to_subject));
+    } else if (other) {
+        const auto fit = std::find_if(conventions.begin(), conventions.end(),
+                                      [&](const SurfacePositionFit& c) { return c.convention == convention; });
+        s += "positions follow " + convention + " (to " + detail::sci(std::max(fit->subject_to_core, fit->core_to_subject)) +
+             "), not core's " + core_convention + " (" + detail::sci(subject_to_core) + " off)";
+    } else {
+        s += "positions off: " + detail::sci(subject_to_core) + " from core's, core's " + detail::sci(core_to_subject) + " from its";
     }
-    if (faces) s += faces_against_normals ? "; " + std::to_string(faces_against_normals) + " of " + std::to_string(faces) +
-                                                " faces turn against their normals"
-                                          : "; faces turn with the normals";
+    if (convention.empty()) return s;
+    if (!follows_core()) {
+        // Normals are held to the convention it follows; say so rather than "as core's".
+        const std::string under = positions_fit ? " under " + convention + ", not core's " + core_convention : " under it";
+        if (normal_rule == "as core's") s += "; normals as" + under;
+        else if (normal_rule == "reversed") s += "; normals reversed from those" + under;
+    } else if (!normal_rule.empty()) {
+        s += "; normals " + normal_rule;
+    }
+    if (normal_rule.empty() && !normals.empty())
+        s += "; normals off at " + std::to_string(normals.front().off) + " vertices (up to " + detail::sci(normals.front().max_deg) +
+             " deg)";
+    if (zero_normals) s += " (" + std::to_string(zero_normals) + " left zero)";
+    if (faces) {
+        if (faces_against_normals == 0) s += "; faces turn with the normals";
+        else
+            s += "; " + std::to_string(faces_against_normals) + " of " + std::to_string(faces) + " faces turn against their normals" +
+                 (core_folded_faces ? " (core's own surface folds over itself at " + std::to_string(core_folded_faces) + ")" : "");
+        if (boundary_edges > core_boundary_edges)
+            s += "; NOT watertight: " + std::to_string(boundary_edges) + " boundary edges where core's surface has " +
+                 std::to_string(core_boundary_edges);
+        else if (boundary_edges == 0)
+            s += "; watertight";
+    }
     return s;
 }
 
-SurfaceSubjectComparison compare_surface_subject(const std::string& input_file, const SurfaceSamples& core,
+namespace {
+
+/// The subject's positions against one convention: nearest neighbours both ways over `d`.
+SurfacePositionFit position_fit(const SurfaceSamples& core, const std::vector<Vec3>& theirs, const PointTree& their_tree, double d) {
+    SurfacePositionFit fit{core.convention};
+    const PointCloud cloud{core.positions};
+    PointTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+    tree.buildIndex();
+    for (const auto& [i, dist] : nearest(theirs, tree)) fit.subject_to_core = std::max(fit.subject_to_core, dist / d);
+    for (const auto& [i, dist] : nearest(core.positions, their_tree)) fit.core_to_subject = std::max(fit.core_to_subject, dist / d);
+    fit.fits = fit.subject_to_core <= kSurfacePositionTolerance && fit.core_to_subject <= kSurfacePositionTolerance;
+    return fit;
+}
+
+/// The subject's normals held to the convention's, and to their reversal, at matched points: a
+/// subject normal fits where it matches the normal of some sample at its position.
+std::vector<SurfaceNormalFit> normal_fits(const SurfaceSamples& core, const std::vector<Vec3>& positions,
+                                          const std::vector<Vec3>& normals, double d) {
+    const PointCloud cloud{core.positions};
+    PointTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+    tree.buildIndex();
+    const auto to_core = nearest(positions, tree);
+    // The core samples at each subject vertex (a seam's point once per piece).
+    const double radius = kSurfacePositionTolerance * d;
+    std::vector<std::vector<size_t>> at(normals.size());
+    for (size_t v = 0; v < normals.size(); ++v) {
+        std::vector<std::pair<unsigned, double>> hits;  // nanoflann 1.4's result type
+        tree.radiusSearch(positions[v].data(), radius * radius, hits, nanoflann::SearchParams());
+        for (const auto& h : hits) at[v].push_back(h.first);
+        if (at[v].empty()) at[v].push_back(to_core[v].first);
+    }
+    std::vector<SurfaceNormalFit> out;
+    for (const bool reversed : {false, true}) {
+        SurfaceNormalFit fit{reversed ? "reversed" : "as core's", 0, 0, false};
+        for (size_t v = 0; v < normals.size(); ++v) {
+            const Vec3& n = normals[v];
+            if (n.isZero()) continue;
+            double best = 180;
+            for (size_t c : at[v]) best = std::min(best, surface_angle_deg(n, core.normals[c] * (reversed ? -1.0 : 1.0)));
+            fit.max_deg = std::max(fit.max_deg, best);
+            fit.off += best > kSurfaceNormalToleranceDeg;
+        }
+        fit.fits = fit.off == 0;
+        out.push_back(fit);
+    }
+    return out;
+}
+
+}  // namespace
+
+SurfaceSubjectComparison compare_surface_subject(const std::string& input_file, std::span<const SurfaceSamples> conventions,
                                                  const std::string& subject, const std::string& command,
                                                  double timeout_seconds) {
+    if (conventions.empty()) throw std::invalid_argument("compare_surface_subject: no samples of core's surface");
     SurfaceSubjectComparison out;
     out.input = input_file;
     out.subject = subject;
-    out.core_vertices = core.welded_vertices;
+    out.core_vertices = conventions.front().welded_vertices;
+    out.core_convention = conventions.front().convention;
     const TaskRun run = run_task_program(command, input_file, "out.obj", timeout_seconds);
     out.outcome = run.outcome;
     if (run.outcome.status != RunStatus::Ok) return out;
@@ -119,10 +262,10 @@ SurfaceSubjectComparison compare_surface_subject(const std::string& input_file, 
         return out;
     }
     out.subject_vertices = mine.num_vertices();
-    if (mine.num_vertices() == 0 || core.positions.empty()) {
+    if (mine.num_vertices() == 0 || conventions.front().positions.empty()) {
         out.outcome.status = RunStatus::WrongCount;
         out.outcome.message = "out.obj: " + std::to_string(mine.num_vertices()) + " vertices; core's surface has " +
-                              std::to_string(core.welded_vertices);
+                              std::to_string(out.core_vertices);
         return out;
     }
     if (normals.size() != mine.positions.size()) {
@@ -131,56 +274,38 @@ SurfaceSubjectComparison compare_surface_subject(const std::string& input_file, 
                               std::to_string(mine.positions.size()) + " vertices (v); the task writes one per vertex";
         return out;
     }
-    const std::vector<Vec3>& ours = core.positions;
-    const double diagonal = bounding_box_diagonal(ours), d = diagonal > 0 ? diagonal : 1;
-    // One tree over core's samples, for the nearest neighbours and the samples at each vertex.
-    const PointCloud cloud{ours}, their_cloud{mine.positions};
-    PointTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+    const double diagonal = bounding_box_diagonal(conventions.front().positions), d = diagonal > 0 ? diagonal : 1;
+    const PointCloud their_cloud{mine.positions};
     PointTree their_tree(3, their_cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
-    tree.buildIndex();
     their_tree.buildIndex();
-    const auto to_core = nearest(mine.positions, tree), back = nearest(ours, their_tree);
-    for (const auto& [i, dist] : to_core) out.subject_to_core = std::max(out.subject_to_core, dist / d);
-    for (const auto& [i, dist] : back) out.core_to_subject = std::max(out.core_to_subject, dist / d);
-    out.positions_fit = out.subject_to_core <= kSurfacePositionTolerance && out.core_to_subject <= kSurfacePositionTolerance;
-    if (!out.positions_fit) return out;
-    // The core samples at each subject vertex (a seam's point once per piece).
-    const double radius = kSurfacePositionTolerance * d;
-    std::vector<std::vector<size_t>> at(normals.size());
-    for (size_t v = 0; v < normals.size(); ++v) {
-        std::vector<std::pair<unsigned, double>> hits;  // nanoflann 1.4's result type
-        tree.radiusSearch(mine.positions[v].data(), radius * radius, hits, nanoflann::SearchParams());
-        for (const auto& h : hits) at[v].push_back(h.first);
-        if (at[v].empty()) at[v].push_back(to_core[v].first);
-    }
-    for (const bool reversed : {false, true}) {
-        SurfaceNormalFit fit{reversed ? "reversed" : "as core's", 0, 0, false};
-        for (size_t v = 0; v < normals.size(); ++v) {
-            const Vec3& n = normals[v];
-            if (n.isZero()) continue;
-            double best = 180;
-            for (size_t c : at[v]) best = std::min(best, surface_angle_deg(n, core.normals[c] * (reversed ? -1.0 : 1.0)));
-            fit.max_deg = std::max(fit.max_deg, best);
-            fit.off += best > kSurfaceNormalToleranceDeg;
+    for (const SurfaceSamples& c : conventions) out.conventions.push_back(position_fit(c, mine.positions, their_tree, d));
+    out.subject_to_core = out.conventions.front().subject_to_core;
+    out.core_to_subject = out.conventions.front().core_to_subject;
+    out.positions_fit = out.conventions.front().fits;
+    // Normals and faces are held to the first convention whose positions fit and whose normals
+    // fit too (a seam left open may move only normals), else to the first whose positions fit.
+    const SurfaceSamples* chosen = nullptr;
+    for (size_t k = 0; k < conventions.size(); ++k) {
+        if (!out.conventions[k].fits) continue;
+        std::vector<SurfaceNormalFit> fits = normal_fits(conventions[k], mine.positions, normals, d);
+        if (!chosen || fits.front().fits) {
+            const bool first = !chosen;
+            chosen = &conventions[k];
+            out.normals = std::move(fits);
+            if (!first || out.normals.front().fits) break;
         }
-        fit.fits = fit.off == 0;
-        if (fit.fits && out.normal_rule.empty()) out.normal_rule = fit.name;
-        out.normals.push_back(fit);
     }
+    if (!chosen) return out;
+    out.convention = chosen->convention.empty() ? "core's" : chosen->convention;
+    for (const SurfaceNormalFit& f : out.normals)
+        if (f.fits && out.normal_rule.empty()) out.normal_rule = f.name;
     for (const Vec3& n : normals) out.zero_normals += n.isZero();
     out.faces = mine.num_faces();
-    for (int f = 0; f < mine.num_faces(); ++f) {
-        const int* c = mine.face(f);
-        const int k = mine.face_size(f);
-        Vec3 geometric = Vec3::Zero(), along = Vec3::Zero();
-        for (int i = 0; i < k; ++i) {
-            const Vec3& p = mine.positions[static_cast<size_t>(c[i])];
-            const Vec3& q = mine.positions[static_cast<size_t>(c[(i + 1) % k])];
-            geometric += p.cross(q);  // twice the area vector (Newell)
-            along += normals[static_cast<size_t>(c[i])];
-        }
-        // A face of no area (at a collapsed patch edge) has no side to turn.
-        if (geometric.norm() > 1e-12 * d * d) out.faces_against_normals += geometric.dot(along) < 0;
+    out.core_folded_faces = chosen->folded_faces;
+    out.core_boundary_edges = conventions.front().boundary_edges;  // watertight where core's own surface is
+    if (out.faces) {
+        out.faces_against_normals = faces_against_normals(mine, normals, kFlatFaceArea * d * d);
+        out.boundary_edges = welded_boundary_edges(mine, kSurfacePositionTolerance * d);
     }
     return out;
 }
