@@ -117,6 +117,29 @@ TEST(CatmullClark, CubeHandValues) {
     }
 }
 
+TEST(CatmullClark, TheLiteraturesOtherVertexRulesAtTheCubesCorner) {
+    // Corner (1,1,1), n = 3: ring sum and face-point sum are both (1,1,1).
+    // Regular weights, F/4 + R/2 + V/4 = V/2 + ring/(4n) + faces/(4n): 1/2 + 1/12 + 1/12 = 2/3.
+    CatmullClarkOptions regular = kEdgeOnly;
+    regular.vertex = CatmullClarkVertexRule::RegularWeights;
+    expect_near(catmull_clark_subdivide(cube(), regular, 1).positions[7], Vec3::Constant(2.0 / 3.0));
+    // Edge-point average: the three edge points at the corner are (0, 3/4, 3/4) and its
+    // permutations, E = (1/2, 1/2, 1/2); (F + 2E + 0 V) / 3 = (1/3 + 1) / 3 = 4/9.
+    CatmullClarkOptions edge_points = kEdgeOnly;
+    edge_points.vertex = CatmullClarkVertexRule::EdgePointAverage;
+    const PolyMesh fine = catmull_clark_subdivide(cube(), edge_points, 1);
+    expect_near(fine.positions[7], Vec3::Constant(4.0 / 9.0));
+    // Only vertex points change: the edge points are the standard rule's.
+    expect_near(fine.positions[14], catmull_clark_subdivide(cube(), kEdgeOnly, 1).positions[14]);
+    // The masks are affine at every valence.
+    for (int n = 3; n <= 12; ++n)
+        for (CatmullClarkVertexRule r : {CatmullClarkVertexRule::Standard, CatmullClarkVertexRule::RegularWeights,
+                                         CatmullClarkVertexRule::EdgePointAverage}) {
+            const CatmullClarkVertexMask m = catmull_clark_interior_vertex_mask(n, r);
+            EXPECT_NEAR(m.self + n * (m.ring + m.face), 1.0, 1e-15) << n;
+        }
+}
+
 TEST(CatmullClark, SquareBoundaryRules) {
     // Edge points are midpoints under every rule; the face point is the centre.
     for (const CatmullClarkOptions& o : {kEdgeOnly, kEdgeAndCorner, kMidpointAverage}) {

@@ -140,6 +140,22 @@ TEST(DooSabinMask, QuadIsTheBiquadraticBSplineTriangleIsTwoThirds) {
     }
 }
 
+TEST(DooSabinMask, CatmullClarksWeightsAreTheAverageOfVertexMidpointsAndCentroid) {
+    // Quads: the same as Doo and Sabin's.
+    for (int k = 0; k < 4; ++k) EXPECT_NEAR(doo_sabin_weight(4, k, DooSabinWeights::CatmullClark), doo_sabin_weight(4, k), kHand);
+    // Corner 0 of triangle() (0,0,0), (3,0,0), (0,3,0): the average of (0,0,0), the midpoints
+    // (3/2,0,0) and (0,3/2,0) and the centroid (1,1,0) is (5/8, 5/8, 0); Doo and Sabin's
+    // 2/3, 1/6, 1/6 give (1/2, 1/2, 0).
+    const PolyMesh cc = doo_sabin_subdivide(triangle(), {DooSabinBoundary::ChaikinBoundary, DooSabinWeights::CatmullClark}, 1);
+    expect_near(cc.positions[0], Vec3(5.0 / 8, 5.0 / 8, 0));
+    expect_near(doo_sabin_subdivide(triangle(), {DooSabinBoundary::ChaikinBoundary}, 1).positions[0], Vec3(0.5, 0.5, 0));
+    for (int n = 3; n <= 12; ++n) {
+        double sum = 0;
+        for (int k = 0; k < n; ++k) sum += doo_sabin_weight(n, k, DooSabinWeights::CatmullClark);
+        EXPECT_NEAR(sum, 1.0, 1e-15) << n;
+    }
+}
+
 TEST(DooSabin, CubeOneLevelByHand) {
     const PolyMesh r = doo_sabin_subdivide(cube(), {DooSabinBoundary::ChaikinBoundary}, 1);
     // One point per corner (24); faces F + E + V = 6 + 12 + 8.
@@ -177,7 +193,8 @@ TEST(DooSabin, SquareBoundaryIsChaikinsCornerCutting) {
 }
 
 TEST(DooSabin, APolygonOfManySidesTakesItsCornerPointsThroughFourierSums) {
-    // Above 32 sides the corner points are stated through three sums over the face: against
+    // Above 32 sides the corner points are stated through sums over the face (Catmull and
+    // Clark's weights through the centroid alone): against
     // the published weights summed term by term, within 1e-14 of the polygon's size: either
     // side sums n terms, whose rounding grows about as sqrt(n) eps (7e-15 at n = 1000). One
     // polygon of n sides, its corner points the first n rows.
@@ -190,14 +207,16 @@ TEST(DooSabin, APolygonOfManySidesTakesItsCornerPointsThroughFourierSums) {
             face.push_back(k);
         }
         m.add_face(face);
-        const PolyMesh r = doo_sabin_subdivide(m, {DooSabinBoundary::ChaikinBoundary}, 1);
-        double worst = 0;
-        for (int i = 0; i < n; ++i) {
-            Vec3 expected = Vec3::Zero();
-            for (int k = 0; k < n; ++k) expected += doo_sabin_weight(n, k) * m.positions[static_cast<size_t>((i + k) % n)];
-            worst = std::max(worst, (r.positions[static_cast<size_t>(i)] - expected).norm());
+        for (DooSabinWeights w : {DooSabinWeights::DooSabin, DooSabinWeights::CatmullClark}) {
+            const PolyMesh r = doo_sabin_subdivide(m, {DooSabinBoundary::ChaikinBoundary, w}, 1);
+            double worst = 0;
+            for (int i = 0; i < n; ++i) {
+                Vec3 expected = Vec3::Zero();
+                for (int k = 0; k < n; ++k) expected += doo_sabin_weight(n, k, w) * m.positions[static_cast<size_t>((i + k) % n)];
+                worst = std::max(worst, (r.positions[static_cast<size_t>(i)] - expected).norm());
+            }
+            EXPECT_LE(worst, 1e-14) << "n = " << n << ", " << to_string(w);
         }
-        EXPECT_LE(worst, 1e-14) << "n = " << n;
     }
 }
 

@@ -309,6 +309,14 @@ expect sweep-subject 0 "subject 'student': 3504 vertices \\(core 3410 welded\\);
   "$crossdiv" sweep surface:vase --subject-name student --subject "$revolve {in} {out}"
 expect sweep-subject-inward 1 "normals reversed \\(96 left zero\\); 6816 of 6912 faces turn against their normals" -- \
   "$crossdiv" sweep surface:vase --subject-name student --subject "$revolve {in} {out} --left-normals"
+# The literature's other rules, named: Catmull-Clark's vertex point with the average of the
+# new edge points for R, Doo-Sabin's corners by Catmull and Clark's weights (a pentagonal prism:
+# valence 3, and faces other than quads, where those weights differ from Doo and Sabin's).
+schemes="python3 $root/examples/subjects/python-schemes"
+expect cc-edge-point-average 0 "catmull-clark scheme, the edge-only vertex=edge-point-average or .* rule; agrees with no reference \\(weight-family\\)" -- \
+  "$crossdiv" compare bundled:prism-5 --scheme catmull-clark --levels 2 --subject-name student --subject "$schemes/catmull_clark.py {in} {levels} {out} --edge-points"
+expect ds-catmull-clark-weights 0 "doo-sabin scheme, the chaikin-boundary weights=catmull-clark or drop-border-faces weights=catmull-clark rule; agrees with no reference \\(weight-family\\)" -- \
+  "$crossdiv" compare bundled:prism-5 --scheme doo-sabin --levels 2 --subject-name student --subject "$schemes/doo_sabin.py {in} {levels} {out} --centroid-weights"
 # A circle along a closed space B-spline whose recursive frames do not meet at the seam.
 printf 'circ profile 12 0.2\nbsp3 sweep 8 9\n[1 0 0]\n[0.5 0.87 0.5]\n[-0.5 0.87 -0.5]\n[-1 0 0.5]\n[-0.5 -0.87 -0.5]\n[0.5 -0.87 0.5]\n[1 0 0]\n[0.5 0.87 0.5]\n[-0.5 0.87 -0.5]\ngcyl wavy-ring profile sweep\n' > "$tmp/wavy.swp"
 cylinder="python3 $root/examples/subjects/python-cylinder/cylinder.py"

@@ -159,6 +159,19 @@ TEST(Classification, TheLadderTakesTheFirstTestThatHoldsAndRunsNoneAfterIt) {
     EXPECT_EQ(rule_difference_class(Scheme::CatmullClark, catmull_clark(CatmullClarkBoundary::MidpointAverage),
                                     catmull_clark(CatmullClarkBoundary::EdgeOnly)),
               DivergenceClass::BoundaryRule);
+    // Catmull-Clark's interior vertex rule and Doo-Sabin's corner weights are weight families.
+    SchemeRule edge_points = catmull_clark(CatmullClarkBoundary::EdgeOnly);
+    edge_points.catmull_clark.vertex = CatmullClarkVertexRule::EdgePointAverage;
+    EXPECT_EQ(rule_difference_class(Scheme::CatmullClark, catmull_clark(CatmullClarkBoundary::EdgeOnly), edge_points),
+              DivergenceClass::WeightFamily);
+    EXPECT_EQ(rule_difference_class(Scheme::CatmullClark, catmull_clark(CatmullClarkBoundary::EdgeAndCorner), edge_points),
+              DivergenceClass::WeightFamilyAndCornerRule);
+    SchemeRule dropped, averaged;
+    dropped.doo_sabin = {DooSabinBoundary::DropBorderFaces};
+    averaged.doo_sabin = {DooSabinBoundary::DropBorderFaces, DooSabinWeights::CatmullClark};
+    EXPECT_EQ(rule_difference_class(Scheme::DooSabin, dropped, averaged), DivergenceClass::WeightFamily);
+    averaged.doo_sabin.boundary = DooSabinBoundary::ChaikinBoundary;
+    EXPECT_EQ(rule_difference_class(Scheme::DooSabin, dropped, averaged), DivergenceClass::BorderFacesDropped);
 }
 
 }  // namespace

@@ -14,8 +14,8 @@ namespace crossdiv {
 namespace {
 
 /// The smooth interior mask in VertexPointMask form (for blending with a sharper rule).
-void set_smooth_mask(VertexPointMask& m, int valence) {
-    const CatmullClarkVertexMask w = catmull_clark_interior_vertex_mask(valence);
+void set_smooth_mask(VertexPointMask& m, int valence, CatmullClarkVertexRule rule) {
+    const CatmullClarkVertexMask w = catmull_clark_interior_vertex_mask(valence, rule);
     m.vertex = w.self;
     m.has_edges = true;
     m.edge.assign(static_cast<size_t>(valence), w.ring);
@@ -60,7 +60,7 @@ RefinementStep catmull_clark_step(const PolyMesh& mesh, const PolyConnectivity& 
         if (crease) {
             const CreaseLevel::Vertex& r = crease->vertex(v);
             if (r.parent == VertexRule::Crease || r.parent == VertexRule::Corner) {
-                vertex_point_mask(r, mask, child_mask, [&](VertexPointMask& m) { set_smooth_mask(m, r.edges); });
+                vertex_point_mask(r, mask, child_mask, [&](VertexPointMask& m) { set_smooth_mask(m, r.edges, options.vertex); });
                 add_vertex_point_mask(st, conn, v, mask, face_point);
                 st.end_row();
                 continue;
@@ -77,7 +77,7 @@ RefinementStep catmull_clark_step(const PolyMesh& mesh, const PolyConnectivity& 
             }
             st.add(v, m.self);
         } else {
-            const CatmullClarkVertexMask m = catmull_clark_interior_vertex_mask(faces);
+            const CatmullClarkVertexMask m = catmull_clark_interior_vertex_mask(faces, options.vertex);
             for (int c = start;;) {
                 st.add_refined(face_point + conn.corner_face[c], m.face);
                 c = conn.next_around_vertex(c);

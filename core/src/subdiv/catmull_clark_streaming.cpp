@@ -394,7 +394,10 @@ void refine_level(const Level& l, const Faces& F, const CatmullClarkOptions& o, 
 }  // namespace
 
 PolyMesh catmull_clark_subdivide_streaming(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels) {
-    if (!streamable(mesh, levels)) return catmull_clark_subdivide(mesh, options, levels);
+    // The literature's other vertex rules are for naming a subject's, not for speed: the
+    // closed forms below are the standard rule's.
+    if (!streamable(mesh, levels) || options.vertex != CatmullClarkVertexRule::Standard)
+        return catmull_clark_subdivide(mesh, options, levels);
     // A quad mesh takes the quads' closed forms from the start.
     bool quads = true;
     for (int f = 0; f <= mesh.num_faces() && quads; ++f) quads = mesh.face_start[f] == 4 * f;

@@ -39,6 +39,21 @@ void add_corner_points_by_fourier_sums(StencilTable& st, const int* v, int n, st
     }
 }
 
+/// The corner points of Catmull and Clark's weights for an n-gon with vertices v[0 .. n-1]:
+/// v_i / 2 + (v_(i-1) + v_(i+1)) / 8 + the face's centroid / 4, the centroid stated once as an
+/// auxiliary point.
+void add_averaged_corner_points(StencilTable& st, const int* v, int n) {
+    for (int m = 0; m < n; ++m) st.add_auxiliary_term(v[m], 1.0 / (4.0 * n));
+    const int centroid = st.end_auxiliary();
+    for (int i = 0; i < n; ++i) {
+        st.add(v[i], 0.5);
+        st.add(v[(i + n - 1) % n], 0.125);
+        st.add(v[(i + 1) % n], 0.125);
+        st.add_auxiliary(centroid, 1.0);
+        st.end_row();
+    }
+}
+
 }  // namespace
 
 RefinementStep doo_sabin_step(const PolyMesh& mesh, const PolyConnectivity& conn, const DooSabinOptions& options) {
@@ -55,11 +70,12 @@ RefinementStep doo_sabin_step(const PolyMesh& mesh, const PolyConnectivity& conn
     for (int f = 0; f < nf; ++f) {
         const int b = mesh.face_start[f], n = mesh.face_size(f);
         if (n > kFourierSides) {
-            add_corner_points_by_fourier_sums(st, &conn.corner_vertex[b], n, cosines, sines);
+            if (options.weights == DooSabinWeights::CatmullClark) add_averaged_corner_points(st, &conn.corner_vertex[b], n);
+            else add_corner_points_by_fourier_sums(st, &conn.corner_vertex[b], n, cosines, sines);
             continue;
         }
         weights.resize(static_cast<size_t>(n));
-        for (int k = 0; k < n; ++k) weights[k] = doo_sabin_weight(n, k);
+        for (int k = 0; k < n; ++k) weights[k] = doo_sabin_weight(n, k, options.weights);
         for (int i = 0; i < n; ++i) {
             for (int k = 0; k < n; ++k) st.add(conn.corner_vertex[b + (i + k) % n], weights[k]);
             st.end_row();

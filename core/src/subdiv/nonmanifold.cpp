@@ -369,7 +369,7 @@ RefinementStep catmull_clark_nonmanifold_step(const PolyMesh& mesh, const Catmul
         } else if (!add_sharp_vertex_row(st, t, v)) {
             // Smooth or dart: a manifold interior vertex, as many faces as edges.
             const int n = t.vertex_edge_start[v + 1] - t.vertex_edge_start[v];
-            const CatmullClarkVertexMask m = catmull_clark_interior_vertex_mask(n);
+            const CatmullClarkVertexMask m = catmull_clark_interior_vertex_mask(n, options.vertex);
             for (int k = t.vertex_corner_start[v]; k < t.vertex_corner_start[v + 1]; ++k)
                 st.add_refined(face_point + t.corner_face[static_cast<size_t>(t.vertex_corners[static_cast<size_t>(k)])], m.face);
             for (int k = t.vertex_edge_start[v]; k < t.vertex_edge_start[v + 1]; ++k)

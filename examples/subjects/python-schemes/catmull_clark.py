@@ -10,9 +10,17 @@
 
 Every face of n corners becomes n quads. Standard library only.
 
-    python3 catmull_clark.py IN.obj LEVELS OUT.obj
+    python3 catmull_clark.py IN.obj LEVELS OUT.obj [--edge-points]
+
+--edge-points takes R as the average of the new edge *points* instead of the edge midpoints,
+as some course notes (and, for a time, Wikipedia) state the rule: crossdiv names it
+(vertex=edge-point-average).
 """
+import sys
+
 from polymesh import Tables, add, centroid, combine, main, scale
+
+EDGE_POINTS = "--edge-points" in sys.argv[4:]
 
 
 def vertex_point(F, R, P, n):
@@ -51,7 +59,11 @@ def subdivide(verts, faces):
             moved.append(list(p))
             continue
         F = scale([sum(face_points[f][i] for f in faces_around[v]) for i in range(3)], 1.0 / len(faces_around[v]))
-        R = scale([sum(0.5 * (p[i] + verts[u][i]) for u in t.neighbours[v]) for i in range(3)], 1.0 / n)
+        if EDGE_POINTS:
+            ends = [edge_points[edge_index[(min(v, u), max(v, u))] - len(verts)] for u in t.neighbours[v]]
+            R = scale([sum(e[i] for e in ends) for i in range(3)], 1.0 / n)
+        else:
+            R = scale([sum(0.5 * (p[i] + verts[u][i]) for u in t.neighbours[v]) for i in range(3)], 1.0 / n)
         moved.append(vertex_point(F, R, p, n))
 
     first_face_point = len(verts) + len(edge_points)

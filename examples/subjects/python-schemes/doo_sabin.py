@@ -10,13 +10,23 @@ face per interior vertex (the corner points around it). Edges and vertices on th
 get no face: the exercise only treats closed meshes, and an open one shrinks inward.
 Standard library only.
 
-    python3 doo_sabin.py IN.obj LEVELS OUT.obj
+    python3 doo_sabin.py IN.obj LEVELS OUT.obj [--centroid-weights]
+
+--centroid-weights takes Catmull and Clark's weights instead: each corner point the average of
+its vertex, the midpoints of its two edges in the face and the face's centroid (the same on
+quads, different on every other face): crossdiv names them (weights=catmull-clark).
 """
 import math
+import sys
+
 from polymesh import Tables, combine, main
+
+CENTROID_WEIGHTS = "--centroid-weights" in sys.argv[4:]
 
 
 def weight(n, k):
+    if CENTROID_WEIGHTS:
+        return 0.5 + 0.25 / n if k == 0 else (0.125 + 0.25 / n if k in (1, n - 1) else 0.25 / n)
     if k == 0:
         return 0.25 + 5.0 / (4.0 * n)
     return (3.0 + 2.0 * math.cos(2.0 * math.pi * k / n)) / (4.0 * n)

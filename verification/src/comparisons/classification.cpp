@@ -27,17 +27,20 @@ DivergenceClass rule_difference_class(Scheme scheme, const SchemeRule& applied, 
                                        : DivergenceClass::CornerRule;
         }
         case Scheme::CatmullClark: {
-            if (applied.catmull_clark.smooth_triangles != requested.catmull_clark.smooth_triangles &&
-                applied.catmull_clark.boundary == requested.catmull_clark.boundary)
-                return DivergenceClass::TriangleRule;
+            const CatmullClarkOptions &a = applied.catmull_clark, &r = requested.catmull_clark;
+            const bool boundary = a.boundary != r.boundary, vertex = a.vertex != r.vertex;
+            if (a.smooth_triangles != r.smooth_triangles && !boundary && !vertex) return DivergenceClass::TriangleRule;
             const auto corner_only = [](CatmullClarkBoundary x) {
                 return x == CatmullClarkBoundary::EdgeOnly || x == CatmullClarkBoundary::EdgeAndCorner;
             };
-            return corner_only(applied.catmull_clark.boundary) && corner_only(requested.catmull_clark.boundary)
-                       ? DivergenceClass::CornerRule
-                       : DivergenceClass::BoundaryRule;
+            const bool corner = boundary && corner_only(a.boundary) && corner_only(r.boundary);
+            // The interior vertex rule is the weight family of Catmull-Clark; with another
+            // boundary rule besides, the sentence names both rules.
+            if (vertex) return corner ? DivergenceClass::WeightFamilyAndCornerRule : DivergenceClass::WeightFamily;
+            return corner ? DivergenceClass::CornerRule : DivergenceClass::BoundaryRule;
         }
         case Scheme::DooSabin:
+            if (applied.doo_sabin.boundary == requested.doo_sabin.boundary) return DivergenceClass::WeightFamily;
             return applied.doo_sabin.boundary == DooSabinBoundary::DropBorderFaces ? DivergenceClass::BorderFacesDropped
                                                                                    : DivergenceClass::BoundaryRule;
         case Scheme::Sqrt3: return DivergenceClass::Parity;

@@ -312,11 +312,19 @@ std::optional<SchemeRule> nearest_fitting_rule(const RuleIdentification& id, con
     int best_score = -1;
     for (const RuleFit& f : id.whole) {
         if (!f.fits) continue;
-        const bool loop = id.scheme == Scheme::Loop;
-        const int score = same_rule(id.scheme, f.rule, other)                           ? 3
-                          : loop && f.rule.loop.weights == other.loop.weights   ? 2
-                          : loop && f.rule.loop.boundary == other.loop.boundary ? 1
-                                                                                : 0;
+        // The same rule first; then (Loop) the same weights before the same boundary rule;
+        // then (the other schemes) the most options in common, so that on a closed mesh, where
+        // boundary rules coincide, the reference's boundary rule is kept and only the rule that
+        // matters is named.
+        const SchemeRule& r = f.rule;
+        int score = 0;
+        if (same_rule(id.scheme, r, other)) score = 10;
+        else if (id.scheme == Scheme::Loop) score = r.loop.weights == other.loop.weights ? 2 : r.loop.boundary == other.loop.boundary;
+        else if (id.scheme == Scheme::CatmullClark)
+            score = (r.catmull_clark.boundary == other.catmull_clark.boundary) + (r.catmull_clark.vertex == other.catmull_clark.vertex) +
+                    (r.catmull_clark.smooth_triangles == other.catmull_clark.smooth_triangles);
+        else if (id.scheme == Scheme::DooSabin)
+            score = (r.doo_sabin.boundary == other.doo_sabin.boundary) + (r.doo_sabin.weights == other.doo_sabin.weights);
         if (score > best_score) {
             best = f.rule;
             best_score = score;

@@ -22,16 +22,19 @@ Capabilities core_capabilities() {
     std::vector<SchemeRule> loop;
     for (LoopWeights w : kAllLoopWeights)
         for (LoopBoundary b : {LoopBoundary::EdgeOnly, LoopBoundary::EdgeAndCorner}) loop.push_back(loop_rule(w, b));
-    c.schemes = {supports(Scheme::Loop, loop, true),
-                 supports(Scheme::CatmullClark,
-                          {catmull_clark_rule(CatmullClarkBoundary::EdgeOnly), catmull_clark_rule(CatmullClarkBoundary::EdgeAndCorner),
-                           catmull_clark_rule(CatmullClarkBoundary::MidpointAverage),
-                           catmull_clark_rule(CatmullClarkBoundary::EdgeOnly, true),
-                           catmull_clark_rule(CatmullClarkBoundary::EdgeAndCorner, true),
-                           catmull_clark_rule(CatmullClarkBoundary::MidpointAverage, true)},
-                          true),
-                 supports(Scheme::DooSabin,
-                          {doo_sabin_rule(DooSabinBoundary::ChaikinBoundary), doo_sabin_rule(DooSabinBoundary::DropBorderFaces)}),
+    // Catmull-Clark: every boundary rule, with and without OpenSubdiv's smooth triangles,
+    // then the literature's other vertex rules (for naming a subject's) under each boundary rule.
+    std::vector<SchemeRule> catmull_clark;
+    for (bool smooth_triangles : {false, true})
+        for (CatmullClarkBoundary b : kAllCatmullClarkBoundaries) catmull_clark.push_back(catmull_clark_rule(b, smooth_triangles));
+    for (CatmullClarkVertexRule v : {CatmullClarkVertexRule::RegularWeights, CatmullClarkVertexRule::EdgePointAverage})
+        for (CatmullClarkBoundary b : kAllCatmullClarkBoundaries) catmull_clark.push_back(catmull_clark_rule(b, false, v));
+    std::vector<SchemeRule> doo_sabin;
+    for (DooSabinWeights w : {DooSabinWeights::DooSabin, DooSabinWeights::CatmullClark})
+        for (DooSabinBoundary b : {DooSabinBoundary::ChaikinBoundary, DooSabinBoundary::DropBorderFaces})
+            doo_sabin.push_back(doo_sabin_rule(b, w));
+    c.schemes = {supports(Scheme::Loop, loop, true), supports(Scheme::CatmullClark, catmull_clark, true),
+                 supports(Scheme::DooSabin, doo_sabin),
                  supports(Scheme::Sqrt3, {sqrt3_rule(Sqrt3Parity::CountFromInput), sqrt3_rule(Sqrt3Parity::RestartEachLevel)}),
                  supports(Scheme::Butterfly, {butterfly_rule(ButterflyWings::Reflected), butterfly_rule(ButterflyWings::OppositeVertex)}),
                  supports(Scheme::ModifiedButterfly,

@@ -22,6 +22,7 @@ SchemeRule with_variant(Scheme scheme, SchemeRule requested, const SchemeRule& f
         case Scheme::CatmullClark:
             requested.catmull_clark.boundary = from.catmull_clark.boundary;
             requested.catmull_clark.smooth_triangles = from.catmull_clark.smooth_triangles;
+            requested.catmull_clark.vertex = from.catmull_clark.vertex;
             break;
         case Scheme::DooSabin: requested.doo_sabin = from.doo_sabin; break;
         case Scheme::Sqrt3: requested.sqrt3 = from.sqrt3; break;

@@ -31,15 +31,17 @@ inline SchemeRule loop_rule(LoopWeights w, LoopBoundary b) {
     r.loop = {w, b};
     return r;
 }
-inline SchemeRule catmull_clark_rule(CatmullClarkBoundary b, bool smooth_triangles = false) {
+inline SchemeRule catmull_clark_rule(CatmullClarkBoundary b, bool smooth_triangles = false,
+                                     CatmullClarkVertexRule vertex = CatmullClarkVertexRule::Standard) {
     SchemeRule r;
     r.catmull_clark.boundary = b;
     r.catmull_clark.smooth_triangles = smooth_triangles;
+    r.catmull_clark.vertex = vertex;
     return r;
 }
-inline SchemeRule doo_sabin_rule(DooSabinBoundary b) {
+inline SchemeRule doo_sabin_rule(DooSabinBoundary b, DooSabinWeights w = DooSabinWeights::DooSabin) {
     SchemeRule r;
-    r.doo_sabin = {b};
+    r.doo_sabin = {b, w};
     return r;
 }
 inline SchemeRule sqrt3_rule(Sqrt3Parity p) {

@@ -54,8 +54,14 @@ std::string rule_name(Scheme scheme, const SchemeRule& rule) {
             return "weights=" + std::string(to_string(rule.loop.weights)) + " boundary=" + std::string(to_string(rule.loop.boundary));
         case Scheme::CatmullClark:
             return std::string(to_string(rule.catmull_clark.boundary)) +
-                   (rule.catmull_clark.smooth_triangles ? " smooth-triangles" : "");
-        case Scheme::DooSabin: return std::string(to_string(rule.doo_sabin.boundary));
+                   (rule.catmull_clark.smooth_triangles ? " smooth-triangles" : "") +
+                   (rule.catmull_clark.vertex != CatmullClarkVertexRule::Standard
+                        ? " vertex=" + std::string(to_string(rule.catmull_clark.vertex))
+                        : "");
+        case Scheme::DooSabin:
+            return std::string(to_string(rule.doo_sabin.boundary)) +
+                   (rule.doo_sabin.weights != DooSabinWeights::DooSabin ? " weights=" + std::string(to_string(rule.doo_sabin.weights))
+                                                                         : "");
         case Scheme::Sqrt3: return std::string(to_string(rule.sqrt3.parity));
         case Scheme::Butterfly:
         case Scheme::ModifiedButterfly: return std::string(to_string(rule.butterfly_wings));
@@ -76,7 +82,8 @@ bool same_rule(Scheme scheme, const SchemeRule& a, const SchemeRule& b) {
         case Scheme::Loop: return a.loop == b.loop;
         case Scheme::CatmullClark:
             return a.catmull_clark.boundary == b.catmull_clark.boundary && a.catmull_clark.creasing == b.catmull_clark.creasing &&
-                   a.catmull_clark.smooth_triangles == b.catmull_clark.smooth_triangles;
+                   a.catmull_clark.smooth_triangles == b.catmull_clark.smooth_triangles &&
+                   a.catmull_clark.vertex == b.catmull_clark.vertex;
         default: return rule_name(scheme, a) == rule_name(scheme, b);
     }
 }

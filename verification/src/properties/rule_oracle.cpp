@@ -48,11 +48,20 @@ std::vector<Vec3> doo_sabin_vertices(const PolyMesh& m, const DooSabinOptions& r
     std::vector<Vec3> out;
     for (int f = 0; f < m.num_faces(); ++f) {
         const int n = m.face_size(f);
+        const auto at = [&](int k) -> const Vec3& { return m.positions[static_cast<size_t>(m.face(f)[(k + n) % n])]; };
+        Vec3 centroid = Vec3::Zero();
+        for (int k = 0; k < n; ++k) centroid += at(k) / n;
         for (int i = 0; i < n; ++i) {
             Vec3 p = Vec3::Zero();
-            for (int k = 0; k < n; ++k) {
-                const double alpha = k == 0 ? 0.25 + 5.0 / (4.0 * n) : (3.0 + 2.0 * std::cos(2 * M_PI * k / n)) / (4.0 * n);
-                p += alpha * m.positions[static_cast<size_t>(m.face(f)[(i + k) % n])];
+            if (rule.weights == DooSabinWeights::CatmullClark) {
+                // Catmull and Clark's construction: the vertex, its two edge midpoints in the
+                // face and the centroid, averaged.
+                p = (at(i) + 0.5 * (at(i) + at(i + 1)) + 0.5 * (at(i) + at(i - 1)) + centroid) / 4;
+            } else {
+                for (int k = 0; k < n; ++k) {
+                    const double alpha = k == 0 ? 0.25 + 5.0 / (4.0 * n) : (3.0 + 2.0 * std::cos(2 * M_PI * k / n)) / (4.0 * n);
+                    p += alpha * at(i + k);
+                }
             }
             out.push_back(p);
         }
@@ -227,7 +236,7 @@ RuleVerdict check_sqrt3_rule(const Implementation& impl, const Sqrt3Options& rul
 RuleVerdict check_doo_sabin_rule(const Implementation& impl, const DooSabinOptions& rule) {
     RuleVerdict v;
     v.known = true;
-    const std::string who = impl.name() + "'s Doo-Sabin, " + std::string(to_string(rule.boundary));
+    const std::string who = impl.name() + "'s Doo-Sabin, " + rule_name(Scheme::DooSabin, SchemeRule{.doo_sabin = rule});
     for (const auto& [name, mesh] : {std::pair{std::string("an open strip of a triangle, quads and a pentagon"), open_polygons()},
                                      std::pair{std::string("a closed triangular prism"), closed_prism()}}) {
         const auto [worst, reason] =

@@ -32,6 +32,20 @@ enum class CatmullClarkBoundary {
     MidpointAverage,
 };
 
+/// The weights of a smooth interior vertex point, with F the average of the new face points
+/// around the vertex V, R the average of the midpoints of its edges, n its valence.
+enum class CatmullClarkVertexRule {
+    /// (F + 2R + (n - 3) V) / n: Catmull and Clark's rule, OpenSubdiv's and every library's.
+    Standard,
+    /// F/4 + R/2 + V/4 at every valence: the paper's weights at valence 4 (the bicubic
+    /// B-spline's) kept at extraordinary vertices, where the surface is then not the paper's.
+    RegularWeights,
+    /// (F + 2E + (n - 3) V) / n with E the average of the new edge *points* rather than of
+    /// the edge midpoints: a reading of the rule found in course notes and, for a time, in
+    /// Wikipedia's statement of it. It differs at every valence, 4 included.
+    EdgePointAverage,
+};
+
 struct CatmullClarkOptions {
     CatmullClarkBoundary boundary;
     /// How semi-sharp crease tags decay (crease_mask.h); without tags it changes nothing.
@@ -42,6 +56,9 @@ struct CatmullClarkOptions {
     bool smooth_triangles = false;
     /// A mesh that is not a manifold: OpenSubdiv's rules (nonmanifold.h) or refused.
     NonManifoldRule nonmanifold = NonManifoldRule::OpenSubdiv;
+    /// The smooth interior vertex rule (the literature's variants, for naming what an
+    /// implementation under test does; Standard is everyone's).
+    CatmullClarkVertexRule vertex = CatmullClarkVertexRule::Standard;
     friend bool operator==(const CatmullClarkOptions&, const CatmullClarkOptions&) = default;
 };
 
@@ -52,9 +69,29 @@ struct CatmullClarkVertexMask {
     double face;   ///< 1 / n^2 on each new face point around the vertex
 };
 
-inline CatmullClarkVertexMask catmull_clark_interior_vertex_mask(int valence) {
+/// The mask of `rule` at valence n, in (self, ring, face) form: R = (V + ring average) / 2
+/// expands each rule. RegularWeights: 1/2, 1/(4n), 1/(4n). EdgePointAverage: an interior
+/// edge point is (V + W + two face points) / 4, so E = (V + ring average + 2 F) / 4 and the
+/// mask is (2n - 5)/(2n), 1/(2n^2), 2/n^2.
+inline CatmullClarkVertexMask catmull_clark_interior_vertex_mask(int valence,
+                                                                 CatmullClarkVertexRule rule = CatmullClarkVertexRule::Standard) {
     const double n = valence;
+    switch (rule) {
+        case CatmullClarkVertexRule::RegularWeights: return {0.5, 0.25 / n, 0.25 / n};
+        case CatmullClarkVertexRule::EdgePointAverage: return {(2.0 * n - 5.0) / (2.0 * n), 0.5 / (n * n), 2.0 / (n * n)};
+        case CatmullClarkVertexRule::Standard: break;
+    }
     return {(n - 2.0) / n, 1.0 / (n * n), 1.0 / (n * n)};
+}
+
+/// "standard", "regular-weights", "edge-point-average".
+constexpr std::string_view to_string(CatmullClarkVertexRule r) {
+    switch (r) {
+        case CatmullClarkVertexRule::Standard: return "standard";
+        case CatmullClarkVertexRule::RegularWeights: return "regular-weights";
+        case CatmullClarkVertexRule::EdgePointAverage: return "edge-point-average";
+    }
+    return "?";
 }
 
 /// Interior edge point: 1/4 on each endpoint and 1/4 on each of the two new face points.
@@ -110,11 +147,12 @@ constexpr std::string_view to_string(CatmullClarkBoundary b) {
     return "?";
 }
 
+inline constexpr std::array kAllCatmullClarkBoundaries{CatmullClarkBoundary::EdgeOnly, CatmullClarkBoundary::EdgeAndCorner,
+                                                       CatmullClarkBoundary::MidpointAverage};
+
 /// The boundary rule named `name`. @throws InputError listing the names.
 inline CatmullClarkBoundary catmull_clark_boundary_from_string(std::string_view name) {
-    return variant_from_string<CatmullClarkBoundary>(
-        name, std::array{CatmullClarkBoundary::EdgeOnly, CatmullClarkBoundary::EdgeAndCorner, CatmullClarkBoundary::MidpointAverage},
-        "Catmull-Clark boundary rule");
+    return variant_from_string<CatmullClarkBoundary>(name, kAllCatmullClarkBoundaries, "Catmull-Clark boundary rule");
 }
 
 }  // namespace crossdiv

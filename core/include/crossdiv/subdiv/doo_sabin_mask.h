@@ -32,13 +32,33 @@ enum class DooSabinBoundary {
     DropBorderFaces,
 };
 
+/// The weights of a corner point.
+enum class DooSabinWeights {
+    /// Doo and Sabin's, from their eigenanalysis: alpha_0 = 1/4 + 5/(4n),
+    /// alpha_k = (3 + 2 cos(2 pi k / n)) / (4n). CGAL's and OpenMesh's.
+    DooSabin,
+    /// Catmull and Clark's (the same 1978 issue): the average of the vertex, the midpoints of
+    /// its two edges in the face and the face's centroid, i.e. 1/2 + 1/(4n) on the vertex,
+    /// 1/8 + 1/(4n) on its two neighbours in the face, 1/(4n) on the others. The same as Doo
+    /// and Sabin's on quads, different on every other face.
+    CatmullClark,
+};
+
+/// "doo-sabin", "catmull-clark".
+constexpr std::string_view to_string(DooSabinWeights w) { return w == DooSabinWeights::DooSabin ? "doo-sabin" : "catmull-clark"; }
+
 struct DooSabinOptions {
     DooSabinBoundary boundary;
+    DooSabinWeights weights = DooSabinWeights::DooSabin;
     friend bool operator==(const DooSabinOptions&, const DooSabinOptions&) = default;
 };
 
 /// Weight of the k-th vertex of an n-gon, counted from the corner's own vertex (k = 0).
-inline double doo_sabin_weight(int n, int k) {
+inline double doo_sabin_weight(int n, int k, DooSabinWeights weights = DooSabinWeights::DooSabin) {
+    if (weights == DooSabinWeights::CatmullClark) {
+        const double share = 1.0 / (4.0 * n);  // the centroid's quarter
+        return k == 0 ? 0.5 + share : (k == 1 || k == n - 1) ? 0.125 + share : share;
+    }
     if (k == 0) return 0.25 + 5.0 / (4.0 * n);
     return (3.0 + 2.0 * std::cos(2.0 * std::numbers::pi * k / n)) / (4.0 * n);
 }

@@ -63,8 +63,10 @@ struct DivergenceTests {
 Classification classify_divergence(const DivergenceTests& tests);
 
 /// The class of a divergence that the reference's rule `applied` explains, against the rule
-/// `requested`: Loop weight-family, corner-rule or both; Catmull-Clark corner-rule between
-/// edge-only and edge-and-corner, else boundary-rule; Doo-Sabin border-faces-dropped; sqrt3 parity.
+/// `requested`: Loop weight-family, corner-rule or both; Catmull-Clark weight-family for another
+/// interior vertex rule, corner-rule between edge-only and edge-and-corner, else boundary-rule;
+/// Doo-Sabin weight-family for other corner weights on the same border, else
+/// border-faces-dropped; sqrt3 parity.
 DivergenceClass rule_difference_class(Scheme scheme, const SchemeRule& applied, const SchemeRule& requested);
 
 /// The vertices of the last of `levels` (0..N of a primal refinement that keeps old vertices

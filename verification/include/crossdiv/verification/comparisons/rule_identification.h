@@ -5,8 +5,9 @@
 /// refinement under every named rule of its scheme (named_rules: Loop's weights loop | warren
 /// | regularity | continuity x boundary edge-only | edge-and-corner; Catmull-Clark's
 /// boundary rules, OpenMesh's midpoint-average among them, with and without OpenSubdiv's
-/// smooth-triangle weights; Doo-Sabin's border rules; sqrt3's parities; the Butterflies'
-/// wing rules; bilinear's one). At the first compared level each vertex depends only on the
+/// smooth-triangle weights, and the literature's other interior vertex rules; Doo-Sabin's
+/// border rules with Doo and Sabin's or Catmull and Clark's weights; sqrt3's parities; the
+/// Butterflies' wing rules; bilinear's one). At the first compared level each vertex depends only on the
 /// input and on the rule for its class, so the fit of a rule can be read class by class, the
 /// classes read off core's provenance (a primal scheme's: births):
 ///
@@ -120,8 +121,8 @@ RuleIdentification identify_rule(Scheme scheme, const PolyMesh& input, const std
                                  double tolerance);
 
 /// Of the named rules that fit the whole mesh, the one nearest `other`: `other` itself, else
-/// (Loop) one with its weights, else one with its boundary rule, else the first; nothing when
-/// none fits.
+/// (Loop) one with its weights, else one with its boundary rule, (Catmull-Clark, Doo-Sabin) the
+/// one with the most options in common, else the first; nothing when none fits.
 std::optional<SchemeRule> nearest_fitting_rule(const RuleIdentification& id, const SchemeRule& other);
 
 /// The rules an implementation under test follows over many inputs, in one sentence:

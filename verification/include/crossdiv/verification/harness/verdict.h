@@ -33,7 +33,10 @@ Verdict verdict_from_string(std::string_view name);
 enum class DivergenceClass {
     None,  ///< no divergence (agreement, or a failure that is not a divergence)
     // A rule the reference applies, shown by re-running core with it:
-    WeightFamily,              ///< Loop: the reference has Loop's weights, not Warren's
+    /// The weights inside: Loop's family (Loop's, Warren's, ...), Catmull-Clark's interior
+    /// vertex rule (the literature's variants), Doo-Sabin's corner weights (Doo and Sabin's or
+    /// Catmull and Clark's)
+    WeightFamily,
     CornerRule,                ///< the reference lacks the corner rule (edge-only boundary)
     WeightFamilyAndCornerRule, ///< both of the above
     BoundaryRule,              ///< another boundary rule (OpenMesh's Catmull-Clark midpoint average)

@@ -53,8 +53,9 @@ struct SchemeRule {
     ButterflyWings butterfly_wings = ButterflyWings::Reflected;  ///< both Butterflies
 };
 
-/// The rule's name for `scheme`: "weights=loop boundary=edge-only" for Loop, "edge-only",
-/// "chaikin-boundary", "count-from-input", "reflected-wings".
+/// The rule's name for `scheme`: "weights=loop boundary=edge-only" for Loop, "edge-only" or
+/// "edge-only vertex=edge-point-average" for Catmull-Clark, "chaikin-boundary" or
+/// "chaikin-boundary weights=catmull-clark", "count-from-input", "reflected-wings".
 std::string rule_name(Scheme scheme, const SchemeRule& rule);
 /// The name of the rule's boundary option, as rule_from_boundary_name reads it ("edge-only",
 /// "chaikin-boundary", "count-from-input", "reflected-wings", ...).
