@@ -53,6 +53,12 @@ def failures_text(row):
     return " ".join(f"{how}={n}" for how, n in sorted(row["failures"].items())) or "-"
 
 
+def minimal_text(row):
+    """Its first failing case shrunk by the suite: "2 faces: <symptom>", or why it was not."""
+    m = row.get("minimal") or {}
+    return f"{m['faces']} faces: {m['symptom']}" if m.get("mesh") else (m.get("note") or "-")
+
+
 def rule_text(row):
     """The rule it follows where it follows one: the one another than asked, when there is one."""
     return row["rule"] or "-"
@@ -61,7 +67,7 @@ def rule_text(row):
 def write_page(results, path):
     """roster.html: the sortable class table, each row opening that subject's cases."""
     cases = subject_cases(results)
-    header = ["subject", "roster", "scheme", "verdict", "cases", "ran", "rule", "failures", "diagnosis"]
+    header = ["subject", "roster", "scheme", "verdict", "cases", "ran", "rule", "failures", "diagnosis", "minimal failing input"]
     out = [f"<!DOCTYPE html><html><head><meta charset='utf-8'><title>class roster: suite "
            f"{html.escape(str(results.get('suite')))}</title><style>{STYLE}"
            "tr.subject{cursor:pointer}tr.details td{background:#f6f6f6}th{cursor:pointer}"
@@ -70,7 +76,8 @@ def write_page(results, path):
            f"<h1>Class roster: suite {html.escape(str(results.get('suite')))}</h1>",
            "<p>One row per subject and scheme; click a column to sort, a row to open its cases "
            "(the run or how its vertices were matched, the named rule that fits every vertex, the vertex "
-           "classes no named rule fits, the message). <a href='index.html'>The report</a>.</p>",
+           "classes no named rule fits, the message). The last column is its first failing case shrunk to a "
+           "minimal input, an OBJ to run it on. <a href='index.html'>The report</a>.</p>",
            "<table><thead><tr>" + "".join(f"<th onclick='sortBy(this)'>{h}</th>" for h in header) +
            "</tr></thead><tbody>"]
     for k, row in enumerate(results["roster"]):
@@ -80,6 +87,11 @@ def write_page(results, path):
         tds = "".join(f"<td{'' if key is None else f' data-key={key}'}"
                       f"{' class=' + html.escape(row['verdict']) if i == 3 else ''}>{html.escape(str(v))}</td>"
                       for i, (v, key) in enumerate(cells))
+        m = row.get("minimal") or {}
+        # The minimal input opens as a file, without opening the row.
+        tds += (f"<td data-key={m['faces']}><a href='{html.escape(m['mesh'])}' onclick='event.stopPropagation()'>"
+                f"{html.escape(m['mesh'])}</a> ({m['faces']} faces: {html.escape(m['symptom'])})</td>" if m.get("mesh")
+                else f"<td data-key=99999>{html.escape(minimal_text(row))}</td>")
         out.append(f"<tr class='subject' data-details='d{k}' data-subject='{html.escape(row['subject'])}' "
                    f"onclick='toggle(this)'>{tds}</tr>")
         detail = "".join("<tr>" + "".join(f"<td>{html.escape(str(v))}</td>" for v in c) + "</tr>"
@@ -106,6 +118,8 @@ def roster_section(results, folder):
         Text(f"{len(rows)} subjects: {counts['pass']} pass (the rule each case names), {counts['other-rule']} follow "
              f"another named rule, {counts['fail']} fail (a run failed, or no named rule fits). roster.html sorts "
              "the table and opens each subject's cases; roster.csv holds the same rows."),
-        Table(["subject", "roster", "scheme", "verdict", "rule", "failures", "diagnosis"],
+        Table(["subject", "roster", "scheme", "verdict", "rule", "failures", "diagnosis", "minimal failing input"],
               [(Link(r["subject"], f"roster.html#{r['subject']}"), r["roster"], r["scheme"], r["verdict"], rule_text(r),
-                failures_text(r), r["diagnosis"]) for r in rows]))
+                failures_text(r), r["diagnosis"],
+                Link(minimal_text(r), r["minimal"]["mesh"]) if (r.get("minimal") or {}).get("mesh") else minimal_text(r))
+               for r in rows]))

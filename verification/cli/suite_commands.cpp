@@ -15,6 +15,7 @@
 #include "crossdiv/verification/suite/outputs.h"
 #include "crossdiv/verification/suite/report.h"
 #include "crossdiv/verification/suite/runner.h"
+#include "crossdiv/verification/suite/subject_shrink.h"
 #include "curve_commands.h"
 #include "surface_commands.h"
 
@@ -67,7 +68,7 @@ int run_suite(const std::string& manifest_path, const std::string& out, int jobs
                shard_i, shard_n, mine.size(), jobs);
     const bool tty = isatty(STDOUT_FILENO);
     const auto t0 = std::chrono::steady_clock::now();
-    const std::vector<CaseRecord> records = run_jobs(mine, jobs, out, [&](int done, int total, const CaseRecord& rec) {
+    std::vector<CaseRecord> records = run_jobs(mine, jobs, out, [&](int done, int total, const CaseRecord& rec) {
         if (tty) {
             const int width = 30, filled = total ? width * done / total : width;
             fmt::print("\r\033[K[{}{}] {}/{} {}", std::string(filled, '#'), std::string(width - filled, '.'), done, total,
@@ -78,6 +79,8 @@ int run_suite(const std::string& manifest_path, const std::string& out, int jobs
         }
         std::fflush(stdout);
     });
+    // Each subject's first failure, shrunk to a minimal input the class table links.
+    shrink_subject_failures(mine, records, out, jobs);
     nlohmann::json refs = nlohmann::json::array();
     for (const Implementation* r : references_for(Scheme::Loop)) refs.push_back({{"name", r->name()}, {"version", r->version()}});
     nlohmann::json curve_refs = nlohmann::json::array();

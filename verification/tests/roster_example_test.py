@@ -2,7 +2,9 @@
 """The roster example as a teacher runs it: `crossdiv suite examples/roster/roster.suite`, then
 every row of the class table checked against the fault planted in that submission
 (examples/roster/expected.tsv) in roster.csv, results.json and the report's roster.html, and
-junit.xml checked to hold one test suite per subject whose failures match the verdict.
+junit.xml checked to hold one test suite per subject whose failures match the verdict; every
+failing submission's minimal failing input (its first failing case shrunk by the suite) is
+linked from each and, run again, still fails; a hanging one is named as not shrunk.
 
     roster_example_test.py path/to/crossdiv"""
 import csv
@@ -15,6 +17,35 @@ import tempfile
 import xml.etree.ElementTree as ET
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+
+
+def minimal_problems(crossdiv, out, subject, verdict, failures, record, row, page, junit, input_faces):
+    """The row's minimal failing input: none for a passing subject; a note for a hanging one;
+    otherwise a mesh smaller than the case's input, linked from roster.csv, roster.html and the
+    JUnit failure, on which the subject still fails (exit 1, no named rule or a failed run)."""
+    minimal = record.get("minimal")
+    if verdict != "fail":
+        return [] if minimal is None else [f"{subject}: a {verdict} has a minimal failing input {minimal}"]
+    if minimal is None:
+        return [f"{subject}: fails but has no minimal failing input"]
+    if "timeout" in failures:
+        return [] if minimal["note"].startswith("not shrunk: it hangs") else [f"{subject}: hangs, minimal is {minimal}"]
+    mesh = minimal["mesh"]
+    problems = []
+    if row["minimal_input"] != mesh or f"href='{mesh}'" not in page:
+        problems.append(f"{subject}: {mesh} not linked from roster.csv ({row['minimal_input']!r}) and roster.html")
+    if junit is None or not any(mesh in (f.text or "") for f in junit.iter("failure")):
+        problems.append(f"{subject}: no JUnit failure names {mesh}")
+    if not 0 < minimal["faces"] < input_faces[record["failing_case"]]:
+        problems.append(f"{subject}: minimal input of {minimal['faces']} faces, its case's input "
+                        f"{input_faces[record['failing_case']]}")
+    command = f"python3 {ROOT}/examples/roster/submissions/{subject}/subdivide.py {{in}} {{levels}} {{out}}"
+    again = subprocess.run([crossdiv, "compare", os.path.join(out, mesh), "--scheme", record["scheme"], "--levels", "2",
+                            "--subject-name", subject, "--subject", command], capture_output=True, text=True)
+    last = (again.stdout.strip().splitlines() or [""])[-1]
+    if again.returncode != 1 or not re.search(r"failed on|no named rule", last):
+        problems.append(f"{subject}: on its minimal input exit {again.returncode}: {last!r}")
+    return problems
 
 
 def main():
@@ -35,7 +66,9 @@ def main():
         with open(os.path.join(out, "roster.csv")) as f:
             rows = {r["subject"]: r for r in csv.DictReader(f)}
         with open(os.path.join(out, "results.json")) as f:
-            table = {r["subject"]: r for r in json.load(f)["roster"]}
+            results = json.load(f)
+        table = {r["subject"]: r for r in results["roster"]}
+        input_faces = {c["id"]: c["input_faces"] for c in results["cases"]}
         page = open(os.path.join(out, "roster.html")).read()
         suites = {s.get("name"): s for s in ET.parse(os.path.join(out, "junit.xml")).getroot().iter("testsuite")}
         if set(rows) != set(expected):
@@ -58,6 +91,7 @@ def main():
                 problems.append(f"{subject}: no test suite roster/{subject} in junit.xml")
             elif (int(junit.get("failures")) > 0) != (verdict == "fail"):
                 problems.append(f"{subject}: junit.xml reports {junit.get('failures')} failure(s) for a {verdict}")
+            problems += minimal_problems(crossdiv, out, subject, verdict, failures, record, row, page, junit, input_faces)
     for p in problems:
         print("FAIL " + p)
     print(f"{len(expected)} submissions, {len(problems)} problem(s)")

@@ -104,6 +104,16 @@ std::string subject_of(const CaseRecord& c) {
     return c.detail.contains("subject") && c.detail["subject"].is_object() ? c.detail["subject"].value("name", "") : "";
 }
 
+/// "; minimal failing input: minimal/x.obj (2 faces; no named rule fits ...)" for the case the
+/// suite shrank a subject's failure from (subject_shrink.h), or why it did not; "" otherwise.
+std::string minimal_text(const CaseRecord& c) {
+    if (!c.detail.contains("minimal") || !c.detail["minimal"].is_object()) return "";
+    const json& m = c.detail["minimal"];
+    if (m.value("mesh", "").empty()) return m.value("note", "").empty() ? "" : "; " + m.value("note", "");
+    return "; minimal failing input: " + m.value("mesh", "") + " (" + std::to_string(m.value("faces", 0)) + " faces: " +
+           m.value("symptom", "") + ")";
+}
+
 std::string junit(const std::string& suite, const std::vector<CaseRecord>& cases, const SuiteSummary& s) {
     // One test suite for core's cases and one per subject (a roster's class table, case by case).
     std::vector<std::string> suites{""};
@@ -124,7 +134,9 @@ std::string junit(const std::string& suite, const std::vector<CaseRecord>& cases
                 failures += failure;
                 body << "    <testcase classname=\"" << xml_escape(classname) << "\" name=\"" << xml_escape(c.id + " vs " + who)
                      << "\" time=\"" << (std::isfinite(seconds) ? seconds : 0.0) << "\">\n";
-                if (failure) body << "      <failure message=\"" << xml_escape(outcome) << "\">" << xml_escape(text) << "</failure>\n";
+                if (failure)
+                    body << "      <failure message=\"" << xml_escape(outcome) << "\">" << xml_escape(text + minimal_text(c))
+                         << "</failure>\n";
                 body << "      <system-out>" << xml_escape(outcome + ": " + text) << "</system-out>\n    </testcase>\n";
             };
             if (c.runs.empty()) testcase("core", outcome_label(c), c.ours_failed, c.core_error, 0.0);
@@ -143,13 +155,13 @@ std::string junit(const std::string& suite, const std::vector<CaseRecord>& cases
 
 std::string roster_csv(const std::vector<RosterRow>& rows) {
     std::ostringstream out;
-    out << "roster,subject,scheme,verdict,cases,ran,rule,failures,diagnosis\n";
+    out << "roster,subject,scheme,verdict,cases,ran,rule,failures,diagnosis,minimal_input\n";
     for (const RosterRow& r : rows) {
         std::string failures;
         for (const auto& [how, n] : r.failures) failures += (failures.empty() ? "" : " ") + how + "=" + std::to_string(n);
         out << csv_field(r.roster) << ',' << csv_field(r.subject) << ',' << r.scheme << ',' << to_string(r.verdict) << ','
             << r.cases << ',' << r.ran << ',' << csv_field(r.followed_rule()) << ',' << csv_field(failures) << ','
-            << csv_field(r.diagnosis()) << '\n';
+            << csv_field(r.diagnosis()) << ',' << csv_field(r.minimal_input.empty() ? r.minimal_note : r.minimal_input) << '\n';
     }
     return out.str();
 }
@@ -216,9 +228,12 @@ SuiteSummary merge_suite_outputs(const std::vector<std::string>& dirs, const std
         for (const json& record : r["cases"]) {
             CaseRecord c = case_record_from_json(record);
             if (cases.count(c.job)) throw InputError(p.string() + ": job " + std::to_string(c.job) + " is in two shards");
-            // The 3D view a case names moves with it.
-            if (c.detail.contains("view")) {
-                const std::string file = c.detail["view"].get<std::string>();
+            // The 3D view a case names, and its minimal input, move with it.
+            std::vector<std::string> files;
+            if (c.detail.contains("view")) files.push_back(c.detail["view"].get<std::string>());
+            if (c.detail.contains("minimal") && c.detail["minimal"].is_object() && !c.detail["minimal"].value("mesh", "").empty())
+                files.push_back(c.detail["minimal"].value("mesh", ""));
+            for (const std::string& file : files) {
                 const fs::path src = fs::path(d) / file, dst = fs::path(out_dir) / file;
                 fs::create_directories(dst.parent_path());
                 if (fs::absolute(src) != fs::absolute(dst)) fs::copy_file(src, dst, fs::copy_options::overwrite_existing);

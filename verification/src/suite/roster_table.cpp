@@ -20,6 +20,18 @@ void count_rule(RosterRow& row, const std::string& rule) {
     else ++it->second;
 }
 
+/// The row's first failing case, and its minimal input where the suite shrank it.
+void set_failing_case(RosterRow& row, const CaseRecord& c) {
+    row.failing_case = c.id;
+    row.failing_input = c.input;
+    if (!c.detail.contains("minimal") || !c.detail["minimal"].is_object()) return;
+    const json& m = c.detail["minimal"];
+    row.minimal_input = string_field(m, "mesh");
+    row.minimal_symptom = string_field(m, "symptom");
+    row.minimal_note = string_field(m, "note");
+    row.minimal_faces = m.value("faces", 0);
+}
+
 std::string inputs(int n, int of) { return std::to_string(n) + " of " + std::to_string(of) + " input" + (of == 1 ? "" : "s"); }
 
 }  // namespace
@@ -53,8 +65,7 @@ std::vector<RosterRow> roster_table(const std::vector<CaseRecord>& cases) {
         const auto failed = [&](const std::string& how, const std::string& message) {
             ++row.failures[how];
             if (row.failing_case.empty()) {
-                row.failing_case = c.id;
-                row.failing_input = c.input;
+                set_failing_case(row, c);
                 row.first_failure = message;
             }
         };
@@ -76,10 +87,7 @@ std::vector<RosterRow> roster_table(const std::vector<CaseRecord>& cases) {
             continue;
         }
         ++row.no_rule;
-        if (row.failing_case.empty()) {
-            row.failing_case = c.id;
-            row.failing_input = c.input;
-        }
+        if (row.failing_case.empty()) set_failing_case(row, c);
         for (const json& cls : rules.value("classes", json::array())) {
             const json fits = cls.value("fits", json::array());
             if (std::any_of(fits.begin(), fits.end(), [](const json& f) { return f.value("fits", false); })) continue;
@@ -153,6 +161,10 @@ json to_json(const std::vector<RosterRow>& rows) {
                        {"match", r.match},
                        {"failing_case", r.failing_case},
                        {"failing_input", r.failing_input},
+                       {"minimal", r.minimal_input.empty() && r.minimal_note.empty()
+                                       ? json(nullptr)
+                                       : json{{"mesh", r.minimal_input}, {"faces", r.minimal_faces},
+                                              {"symptom", r.minimal_symptom}, {"note", r.minimal_note}}},
                        {"diagnosis", r.diagnosis()}});
     }
     return out;

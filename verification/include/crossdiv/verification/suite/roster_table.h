@@ -2,7 +2,7 @@
 /// @file
 /// The class table of a suite run with subjects (a manifest's `subject` or `subjects`
 /// statements): one row per subject and scheme, its verdict over every case it ran, the rule it
-/// follows, its failures by outcome and the command that shrinks its first failing case. Made
+/// follows, its failures by outcome and its first failing case shrunk to a minimal input. Made
 /// from the case records, so a merged run's table is the same as a whole one's.
 
 #include <map>
@@ -42,6 +42,10 @@ struct RosterRow {
     int unexplained = 0;                    ///< reference runs that diverge from it unexplained
     std::string failing_case;               ///< the id of the first case it fails
     std::string failing_input;              ///< that case's input
+    /// That case shrunk with the subject alone (suite/subject_shrink.h): the minimal mesh's
+    /// path in the output folder, its faces and the symptom it keeps; or why it was not shrunk.
+    std::string minimal_input, minimal_symptom, minimal_note;
+    int minimal_faces = 0;
     RosterVerdict verdict = RosterVerdict::Pass;
     /// The named rule it follows where it follows one: another than asked when it has one, else
     /// the asked one; "" when it follows none.
