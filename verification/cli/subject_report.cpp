@@ -39,7 +39,9 @@ void print_subject(const RefinementComparison& c) {
     fmt::print("\n");
     auto cell = [](const RuleFit& f) { return fmt::format("{}{:.2g}", f.fits ? "= " : "  ", f.max_rel); };
     for (const VertexClassRow& r : c.rules->rows) {
-        const char* of = r.cls == VertexClass::FacePoint ? "size" : "valence";
+        const bool by_face = r.cls == VertexClass::FacePoint || r.cls == VertexClass::CornerPoint ||
+                             r.cls == VertexClass::BoundaryCornerPoint;
+        const char* of = by_face ? "size" : "valence";
         fmt::print("  {:<22} {:>7}", r.valence ? fmt::format("{} ({} {})", to_string(r.cls), of, r.valence) : to_string(r.cls),
                    r.count);
         for (const RuleFit& f : r.fits) fmt::print(" {:>16}", cell(f));

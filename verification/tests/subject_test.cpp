@@ -506,6 +506,38 @@ TEST(SchemeSubject, ACatmullClarkWithOpenMeshsBoundaryIsNamedClassByClass) {
     }
 }
 
+TEST(SchemeSubject, ATaggedMeshsVerticesAreClassedByTheirSharpEdges) {
+    // crease-cube-top: the top face's four edges are sharp. By hand: each top vertex has two
+    // sharp edges (crease-vertex, 4), each bottom vertex none (interior, valence 3, 4); four
+    // crease edge points and eight smooth ones; six face points.
+    const auto follows = core_as_subject(Scheme::CatmullClark, rule_from_boundary_name(Scheme::CatmullClark, "edge-only"));
+    const RefinementComparison c = compare_scheme_subject(Scheme::CatmullClark, *follows, "crease-cube-top", false);
+    ASSERT_TRUE(c.rules && c.rules->rule) << c.subject_outcome.summary() << c.subject_unmatched;
+    const std::vector<std::tuple<VertexClass, int, int>> want{{VertexClass::CreaseVertex, 0, 4},
+                                                              {VertexClass::InteriorVertex, 3, 4},
+                                                              {VertexClass::CreaseEdgePoint, 0, 4},
+                                                              {VertexClass::InteriorEdgePoint, 0, 8},
+                                                              {VertexClass::FacePoint, 4, 6}};
+    ASSERT_EQ(c.rules->rows.size(), want.size());
+    for (const auto& [cls, valence, count] : want) {
+        const VertexClassRow* row = class_row(*c.rules, cls, valence);
+        ASSERT_TRUE(row) << to_string(cls);
+        EXPECT_EQ(row->count, count) << to_string(cls);
+    }
+    // The course program reads past the tags: only the crease classes fit no rule.
+    ProgramSpec spec;
+    spec.name = "cc";
+    spec.command = "python3 " + kSource + "/examples/subjects/python-schemes/catmull_clark.py {in} {levels} {out}";
+    spec.schemes = {Scheme::CatmullClark};
+    const auto course = make_program_implementation(spec);
+    const RefinementComparison skips = compare_scheme_subject(Scheme::CatmullClark, *course, "crease-cube-top", false);
+    ASSERT_TRUE(skips.rules) << skips.subject_outcome.summary();
+    for (const VertexClassRow& row : skips.rules->rows) {
+        const bool fits = std::any_of(row.fits.begin(), row.fits.end(), [](const RuleFit& f) { return f.fits; });
+        EXPECT_EQ(fits, row.cls != VertexClass::CreaseVertex && row.cls != VertexClass::CreaseEdgePoint) << to_string(row.cls);
+    }
+}
+
 TEST(SchemeSubject, ARuleCoreRefusesOnTheInputFitsNothingAndTheOthersAreMeasured) {
     // A tagged mesh: core has no midpoint-average rule with crease tags (it refuses the input
     // under it), so that rule does not fit; the subject is named edge-only.
@@ -527,7 +559,17 @@ TEST(SchemeSubject, ADooSabinThatDropsTheBorderIsMatchedInThatRulesNumbering) {
     const RefinementComparison c = compare_scheme_subject(Scheme::DooSabin, *mine, "quad-grid", false);
     ASSERT_TRUE(c.rules && c.rules->rule) << c.subject_outcome.summary() << c.subject_unmatched;
     EXPECT_EQ(rule_name(Scheme::DooSabin, *c.rules->rule), "drop-border-faces");
-    EXPECT_TRUE(c.rules->rows.empty());  // a dual scheme: the whole mesh only
+    // Its corner points by face size and boundary: the 4 x 4 quad grid has 64 corners, 36 of
+    // them at its 9 interior vertices; on quads Doo and Sabin's weights and Catmull and Clark's
+    // are the same, so every rule with the grid's vertex count fits.
+    ASSERT_EQ(c.rules->rows.size(), 2u);
+    EXPECT_EQ(c.rules->rows[0].cls, VertexClass::CornerPoint);
+    EXPECT_EQ(c.rules->rows[0].valence, 4);
+    EXPECT_EQ(c.rules->rows[0].count, 36);
+    EXPECT_EQ(c.rules->rows[1].cls, VertexClass::BoundaryCornerPoint);
+    EXPECT_EQ(c.rules->rows[1].count, 28);
+    for (const VertexClassRow& row : c.rules->rows)
+        for (const RuleFit& f : row.fits) EXPECT_EQ(f.fits, f.rule.doo_sabin.boundary == DooSabinBoundary::DropBorderFaces) << f.name;
 }
 
 TEST(SchemeSubject, AWrongWeightFitsNoRuleAndAFailureIsTheSubjectsForEveryScheme) {

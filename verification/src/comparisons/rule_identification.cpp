@@ -47,6 +47,22 @@ std::vector<std::pair<VertexClass, int>> classify(const std::vector<VertexBirth>
         const auto range = std::equal_range(half_edges.begin(), half_edges.end(), std::array<int, 2>{a, b});
         return static_cast<int>(range.second - range.first);
     };
+    // The tags: each sharp edge once as (smaller, larger), and at each vertex its sharp edges
+    // and whether it is tagged a corner.
+    std::vector<std::array<int, 2>> sharp;
+    std::vector<int> sharp_at(static_cast<size_t>(parent.num_vertices()), 0);
+    std::vector<char> corner_tag(static_cast<size_t>(parent.num_vertices()), 0);
+    for (const SharpEdge& e : parent.creases.edges) {
+        if (!(e.sharpness > 0)) continue;
+        sharp.push_back({std::min(e.a, e.b), std::max(e.a, e.b)});
+    }
+    std::sort(sharp.begin(), sharp.end());
+    sharp.erase(std::unique(sharp.begin(), sharp.end()), sharp.end());
+    for (const auto& [a, b] : sharp) ++sharp_at[static_cast<size_t>(a)], ++sharp_at[static_cast<size_t>(b)];
+    for (const SharpVertex& v : parent.creases.vertices) corner_tag[static_cast<size_t>(v.v)] |= v.sharpness > 0;
+    const auto is_sharp = [&](int a, int b) {
+        return std::binary_search(sharp.begin(), sharp.end(), std::array<int, 2>{std::min(a, b), std::max(a, b)});
+    };
     std::vector<std::pair<VertexClass, int>> out;
     out.reserve(births.size());
     for (const VertexBirth& o : births) {
@@ -56,19 +72,55 @@ std::vector<std::pair<VertexClass, int>> classify(const std::vector<VertexBirth>
         }
         if (o.kind == VertexBirth::Kind::Edge) {
             const int ab = directed(o.a, o.b), ba = directed(o.b, o.a);
-            out.push_back({ab + ba == 1               ? VertexClass::BoundaryEdgePoint
-                           : ab == 1 && ba == 1       ? VertexClass::InteriorEdgePoint
-                                                      : VertexClass::NonManifoldEdgePoint,
+            out.push_back({ab + ba == 1                          ? VertexClass::BoundaryEdgePoint
+                           : !(ab == 1 && ba == 1)               ? VertexClass::NonManifoldEdgePoint
+                           : is_sharp(o.a, o.b)                  ? VertexClass::CreaseEdgePoint
+                                                                 : VertexClass::InteriorEdgePoint,
                            0});
             continue;
         }
         const size_t v = static_cast<size_t>(o.a);
+        const bool boundary = t.boundary_vertex[v];
+        // Boundary edges are sharp to OpenSubdiv: a boundary vertex with a sharp edge inside
+        // has three.
+        const int sharp_edges = sharp_at[v] + (boundary ? 2 : 0);
         if (faces_of[v] == 0) out.push_back({VertexClass::IsolatedVertex, 0});
         else if (nonmanifold[v]) out.push_back({VertexClass::NonManifoldVertex, 0});
-        else if (!t.boundary_vertex[v]) out.push_back({VertexClass::InteriorVertex, t.valence[v]});
+        else if (corner_tag[v] || (sharp_at[v] > 0 && sharp_edges >= 3)) out.push_back({VertexClass::SharpCorner, 0});
+        else if (!boundary && sharp_edges == 2) out.push_back({VertexClass::CreaseVertex, 0});
+        else if (!boundary && sharp_edges == 1) out.push_back({VertexClass::Dart, t.valence[v]});
+        else if (!boundary) out.push_back({VertexClass::InteriorVertex, t.valence[v]});
         else if (faces_of[v] == 1) out.push_back({VertexClass::Corner, 0});
         else out.push_back({VertexClass::BoundaryVertex, 0});
     }
+    return out;
+}
+
+/// The classes of Doo-Sabin's level 1 of `parent` with `count` vertices: core makes corner c's
+/// point row c, then the Chaikin points of the boundary edges (chaikin-boundary). Empty when
+/// the level has fewer vertices than corners.
+std::vector<std::pair<VertexClass, int>> doo_sabin_classes(const PolyMesh& parent, int count) {
+    const int corners = static_cast<int>(parent.face_vertices.size());
+    if (count < corners) return {};
+    const MeshTopology t = mesh_topology(parent);
+    std::vector<std::pair<VertexClass, int>> out;
+    out.reserve(static_cast<size_t>(count));
+    for (int f = 0; f < parent.num_faces(); ++f)
+        for (int k = 0; k < parent.face_size(f); ++k)
+            out.push_back({t.boundary_vertex[static_cast<size_t>(parent.face(f)[k])] ? VertexClass::BoundaryCornerPoint
+                                                                                      : VertexClass::CornerPoint,
+                           parent.face_size(f)});
+    out.resize(static_cast<size_t>(count), {VertexClass::BoundaryEdgePoint, 0});
+    return out;
+}
+
+/// sqrt3's level 1 as births: the old vertices, then one point per face (the boundary waits
+/// at the first step, under either parity rule); empty when the count is not that.
+std::vector<VertexBirth> sqrt3_births(const PolyMesh& parent, int count) {
+    if (count != parent.num_vertices() + parent.num_faces()) return {};
+    std::vector<VertexBirth> out;
+    for (int v = 0; v < parent.num_vertices(); ++v) out.push_back({VertexBirth::Kind::Vertex, v, -1});
+    for (int f = 0; f < parent.num_faces(); ++f) out.push_back({VertexBirth::Kind::Face, f, -1});
     return out;
 }
 
@@ -203,6 +255,12 @@ const char* to_string(VertexClass cls) {
         case VertexClass::IsolatedVertex: return "isolated-vertex";
         case VertexClass::NonManifoldVertex: return "non-manifold-vertex";
         case VertexClass::NonManifoldEdgePoint: return "non-manifold-edge-point";
+        case VertexClass::CreaseVertex: return "crease-vertex";
+        case VertexClass::Dart: return "dart";
+        case VertexClass::SharpCorner: return "sharp-corner";
+        case VertexClass::CreaseEdgePoint: return "crease-edge-point";
+        case VertexClass::CornerPoint: return "corner-point";
+        case VertexClass::BoundaryCornerPoint: return "boundary-corner-point";
     }
     return "unknown";
 }
@@ -254,9 +312,15 @@ RuleIdentification identify_rule(Scheme scheme, const PolyMesh& input, const std
         if (f.fits && !id.rule) id.rule = f.rule;
 
     // Classes at level 1, the only level whose vertices see the rule of their class alone.
-    if (subject.empty() || subject[0].num_vertices() == 0 || births.empty()) return id;
+    if (subject.empty() || subject[0].num_vertices() == 0) return id;
+    const bool primal = !births.empty() && !births[0].empty();
+    std::vector<std::pair<VertexClass, int>> cls;
+    if (primal) cls = classify(births[0], input);
+    else if (scheme == Scheme::DooSabin) cls = doo_sabin_classes(input, subject[0].num_vertices());
+    else if (scheme == Scheme::Sqrt3)
+        if (const std::vector<VertexBirth> b = sqrt3_births(input, subject[0].num_vertices()); !b.empty()) cls = classify(b, input);
+    if (cls.empty()) return id;
     id.classified_level = 1;
-    const std::vector<std::pair<VertexClass, int>> cls = classify(births[0], input);
     // The diagonal of core's level 1 under the first rule core refines the input with.
     size_t first = 0;
     while (first + 1 < rules.size() && core[first].empty()) ++first;
@@ -303,7 +367,7 @@ RuleIdentification identify_rule(Scheme scheme, const PolyMesh& input, const std
     std::sort(id.rows.begin(), id.rows.end(), [](const VertexClassRow& a, const VertexClassRow& b) {
         return std::pair{a.cls, a.valence} < std::pair{b.cls, b.valence};
     });
-    if (!id.rule) id.other_schemes = fit_other_schemes(scheme, input, subject[0], births[0], tolerance);
+    if (!id.rule && primal) id.other_schemes = fit_other_schemes(scheme, input, subject[0], births[0], tolerance);
     return id;
 }
 
@@ -513,6 +577,10 @@ std::string RuleTally::loop_phrase() const {
     if (const auto e = class_phrase(VertexClass::NonManifoldEdgePoint, "", "no named rule at non-manifold edge points");
         e && !e->empty())
         parts.push_back(*e);
+    for (const auto& [cls, what] : {std::pair{VertexClass::CreaseVertex, "crease vertices"}, std::pair{VertexClass::Dart, "darts"},
+                                    std::pair{VertexClass::SharpCorner, "sharp corners"},
+                                    std::pair{VertexClass::CreaseEdgePoint, "crease edge points"}})
+        if (const auto e = class_phrase(cls, "", std::string("no named rule at ") + what); e && !e->empty()) parts.push_back(*e);
     std::string s = "Loop scheme";
     for (const std::string& p : parts) s += ", " + p;
     return s;

@@ -18,11 +18,19 @@
 ///   boundary-edge-point           an edge point on the boundary
 ///   face-point (by face size)     a face point (Catmull-Clark, bilinear)
 ///   isolated-vertex               a vertex without faces (kept by every named rule)
+///   crease-vertex, dart,          a tagged mesh's vertices by their sharp edges (two, one,
+///   sharp-corner                  three or more or a corner tag)
+///   crease-edge-point             the point of an edge tagged sharp
+///   corner-point (by face size)   Doo-Sabin: a corner's new point (boundary-corner-point where
+///                                 the corner's vertex is on the boundary); a Chaikin point of
+///                                 a boundary edge is a boundary-edge-point
+///
+/// sqrt3's level 1 has its old vertices and a face point per face (the boundary waits a step
+/// under either parity rule, which tell themselves apart from level 2 on, in the whole-mesh fit).
 ///
 /// A rule fits a class when every vertex of the class lies within the tolerance (relative to
 /// the diagonal) of core's vertex under that rule. The whole-mesh rule is the first named rule
-/// that fits every vertex at every compared level (the requested rule first). A scheme that is
-/// not primal (Doo-Sabin, sqrt3) has no classes: only the whole mesh is measured.
+/// that fits every vertex at every compared level (the requested rule first).
 
 #include <optional>
 #include <string>
@@ -48,9 +56,24 @@ enum class VertexClass {
     NonManifoldVertex,
     /// The point of an edge with more than two faces, or two that traverse it alike.
     NonManifoldEdgePoint,
+    /// A tagged mesh's vertices by the sharp edges at them (OpenSubdiv's vertex rules): an
+    /// interior vertex with two sharp edges (the crease rule), with one (a dart: the smooth
+    /// rule), and a vertex tagged a corner or with three or more sharp edges, boundary edges
+    /// counted (kept in place).
+    CreaseVertex,
+    Dart,
+    SharpCorner,
+    /// The point of an interior edge tagged sharp (its midpoint while the sharpness lasts).
+    CreaseEdgePoint,
+    /// Doo-Sabin's new point of a corner (by the face's size): inside, and where the corner's
+    /// vertex is on the boundary.
+    CornerPoint,
+    BoundaryCornerPoint,
 };
 /// "interior-vertex", "boundary-vertex", "corner", "interior-edge-point", "boundary-edge-point",
-/// "face-point", "isolated-vertex", "non-manifold-vertex", "non-manifold-edge-point".
+/// "face-point", "isolated-vertex", "non-manifold-vertex", "non-manifold-edge-point",
+/// "crease-vertex", "dart", "sharp-corner", "crease-edge-point", "corner-point",
+/// "boundary-corner-point".
 const char* to_string(VertexClass cls);
 
 /// How far the subject lies from core under one named rule, over some set of vertices.
