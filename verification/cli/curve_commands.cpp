@@ -18,6 +18,7 @@
 #include "crossdiv/verification/bench/curve_timing.h"
 #include "crossdiv/verification/comparisons/casteljau_subject.h"
 #include "crossdiv/verification/comparisons/curve_subject.h"
+#include "crossdiv/verification/implementations/task_program.h"
 #include "crossdiv/verification/properties/curve_checks.h"
 
 namespace crossdiv::cli {
@@ -59,7 +60,9 @@ std::string fits_row(const std::vector<CurveConventionFit>& fits, const char* un
 int run_curve_subject(const TessellateArgs& a) {
     if (a.mode != "uniform" || a.intervals > 0)
         throw InputError("--subject compares the uniform tessellation at each record's STEPS: drop --mode and --intervals");
-    const CurveFile file = load_curve_input(a.input);
+    // A bundled curve is written out for the program; core reads the same file.
+    const TemporaryFolder folder("curve-input");
+    const CurveFile file = read_curve_file(task_input_file(a.input, folder));
     if (file.curves.empty()) throw InputError(a.input + ": no curves");
     const CurveSubjectComparison c = compare_curve_subject(a.input, file, a.subject.name, a.subject.command, a.subject.timeout);
     if (c.outcome.status == RunStatus::Ok) fmt::print("subject '{}' ran in {:.3f} s\n", c.subject, c.outcome.seconds);
@@ -234,7 +237,8 @@ void CasteljauArgs::add_to(CLI::App& app) {
 
 int run_casteljau(const CasteljauArgs& a) {
     if (!(a.t >= 0 && a.t <= 1)) throw InputError("--t must be in [0, 1], got " + fmt::format("{}", a.t));
-    const CurveFile file = load_curve_input(a.input);
+    const TemporaryFolder folder("curve-input");
+    const CurveFile file = a.subject.command.empty() ? load_curve_input(a.input) : read_curve_file(task_input_file(a.input, folder));
     if (!a.subject.command.empty()) {
         const CasteljauSubjectComparison c =
             compare_casteljau_subject(a.input, file, a.t, a.subject.name, a.subject.command, a.subject.timeout);

@@ -123,12 +123,8 @@ int run_sweep(const SweepArgs& a) {
     o.tol = a.tol;
     o.max_triangles = a.max_faces;
     SurfaceMesh all;
-    verification::SurfaceSamples samples;  // every sweep's grid before welding, for a subject
-    bool cylinders = false;
     for (int k = 0; k < static_cast<int>(file.sweeps.size()); ++k) {
         const SweepSurface s = build_sweep(file, k, o);
-        cylinders |= s.record.kind == SweepRecord::Kind::Cylinder;
-        verification::add_surface_piece(samples, s.grid.positions, s.grid.normals, s.surface);
         const int boundary = boundary_edge_count(s.surface.mesh);
         fmt::print("{} ({}, line {}): {} vertices, {} triangles, {}{}, signed volume {:.6g}\n", s.name,
                    s.record.kind == SweepRecord::Kind::Revolution ? "srev" : "gcyl", s.record.line, s.surface.mesh.num_vertices(),
@@ -138,27 +134,7 @@ int run_sweep(const SweepArgs& a) {
         append(all, s.surface);
     }
     if (!a.subject.command.empty()) {
-        std::vector<verification::SurfaceSamples> conventions{std::move(samples)};
-        // A generalized cylinder's frames are a convention (the seed leaves the initial frame
-        // and a closed sweep's seam to the program): a subject that misses core's is told which
-        // of the others it follows.
-        if (cylinders) {
-            auto frames_name = [](FrameMethod m) { return m == FrameMethod::Recursive ? "recursive frames" : "rotation-minimizing frames"; };
-            for (const FrameMethod m : {o.frames, o.frames == FrameMethod::Recursive ? FrameMethod::DoubleReflection : FrameMethod::Recursive})
-                for (const bool closed : {true, false}) {
-                    SweepOptions other = o;
-                    other.frames = m;
-                    other.close_frames = closed;
-                    verification::SurfaceSamples c;
-                    c.convention = fmt::format("{}, seam {}", frames_name(m), closed ? "closed" : "left open");
-                    for (int k = 0; k < static_cast<int>(file.sweeps.size()); ++k) {
-                        const SweepSurface s = build_sweep(file, k, other);
-                        verification::add_surface_piece(c, s.grid.positions, s.grid.normals, s.surface);
-                    }
-                    if (m == o.frames && closed) conventions.front().convention = c.convention;  // core's own
-                    else conventions.push_back(std::move(c));
-                }
-        }
+        const std::vector<verification::SurfaceSamples> conventions = verification::sweep_conventions(file, o);
         return run_surface_subject(a.input, text, "model.swp", conventions, a.subject);
     }
     write(a.out, all);
@@ -186,16 +162,7 @@ int run_patch(const PatchArgs& a) {
     }
     if (!a.subject.command.empty()) {
         // Core's grid of every patch before welding, each point with its own patch's normal.
-        std::vector<Vec3> positions, normals;
-        for (const BezierPatch& p : patches)
-            for (int i = 0; i <= a.res; ++i)
-                for (int j = 0; j <= a.res; ++j) {
-                    const double u = static_cast<double>(i) / a.res, v = static_cast<double>(j) / a.res;
-                    positions.push_back(patch_point(p, u, v));
-                    normals.push_back(patch_normal(p, u, v));
-                }
-        verification::SurfaceSamples samples;
-        verification::add_surface_piece(samples, positions, normals, s);
+        const verification::SurfaceSamples samples = verification::patch_samples(patches, a.res, s);
         return run_surface_subject(a.input, text, "model.bez", {&samples, 1}, a.subject);
     }
     const int boundary = boundary_edge_count(s.mesh);

@@ -156,7 +156,18 @@ TEST(Manifest, BadReferenceAndSubjectStatementsNameTheLine) {
     EXPECT_NE(error("reference w command='a {out}\n").find(":2: unclosed '"), std::string::npos);
     EXPECT_NE(error("reference opensubdiv command='a {out}'\n").find(":2: a reference named 'opensubdiv' exists already"),
               std::string::npos);
-    EXPECT_NE(error("subject s command='a {out}'\ncase catalog spectrum\n").find(":3: a subject is compared in the scheme comparisons only"),
+    EXPECT_NE(error("subject s command='a {out}'\ncase catalog spectrum\n").find(":3: a subject is compared in the scheme comparisons and the course tasks only"),
+              std::string::npos);
+    // The course tasks: a subject before them, each key where its task reads it.
+    EXPECT_NE(error("case curve:flower tessellate\n").find(":2: the tessellate task puts a subject in core's place"), std::string::npos);
+    const std::string s = "subject s command='a {in} {out}'\n";
+    EXPECT_NE(error(s + "case curve:flower tessellate t=0.3\n").find(":3: the tessellate task takes no t= key (casteljau does)"),
+              std::string::npos);
+    EXPECT_NE(error(s + "case x.bzc casteljau t=2\n").find(":3: t must be in [0, 1], got 2"), std::string::npos);
+    EXPECT_NE(error(s + "case x.bez patch res=0\n").find(":3: res=0 is not a whole number in [1, 1024]"), std::string::npos);
+    EXPECT_NE(error(s + "case bundled:torus flip-split\n").find(":3: the flip-split task needs ops="), std::string::npos);
+    EXPECT_NE(error(s + "case bundled:torus flip-split ops='turn 1 2'\n").find("bad.suite:3:"), std::string::npos);
+    EXPECT_NE(error("subject s result='r/{input}.obj'\ncase bundled:torus vertex-normals\n").find(":3: the vertex-normals task runs a program"),
               std::string::npos);
 }
 

@@ -65,7 +65,7 @@ std::string CasteljauSubjectComparison::summary() const {
 }
 
 CasteljauSubjectComparison compare_casteljau_subject(const std::string& input, const CurveFile& file, double t,
-                                                     const std::string& subject, const std::string& command,
+                                                     const std::string& subject, const TaskCommand& command,
                                                      double timeout_seconds) {
     if (!(t >= 0 && t <= 1)) throw InputError("t must be in [0, 1], got " + detail::sci(t));
     if (file.curves.size() != 1 || file.curves[0].type == CurveType::Primitive || file.curves[0].chain().num_segments() != 1)

@@ -278,7 +278,7 @@ std::string CurveSubjectComparison::summary() const {
 }
 
 CurveSubjectComparison compare_curve_subject(const std::string& input, const CurveFile& file, const std::string& subject,
-                                             const std::string& command, double timeout_seconds) {
+                                             const TaskCommand& command, double timeout_seconds) {
     CurveSubjectComparison out;
     out.input = input;
     out.subject = subject;

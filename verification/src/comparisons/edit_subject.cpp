@@ -90,7 +90,7 @@ std::vector<EditOperation> parse_edit_operations(const std::string& text) {
 
 EditSubjectComparison compare_edit_subject(const std::string& input, const TriMesh& mesh,
                                            const std::vector<EditOperation>& operations, const std::string& subject,
-                                           const std::string& command, double timeout_seconds) {
+                                           const TaskCommand& command, double timeout_seconds) {
     EditSubjectComparison out;
     out.input = input;
     out.subject = subject;

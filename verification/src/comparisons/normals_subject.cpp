@@ -80,7 +80,7 @@ std::string NormalsSubjectComparison::summary() const {
 }
 
 NormalsSubjectComparison compare_normals_subject(const std::string& input, const TriMesh& mesh, const std::string& subject,
-                                                 const std::string& command, double timeout_seconds) {
+                                                 const TaskCommand& command, double timeout_seconds) {
     NormalsSubjectComparison out;
     out.input = input;
     out.subject = subject;

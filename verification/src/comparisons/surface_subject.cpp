@@ -91,6 +91,54 @@ void add_surface_piece(SurfaceSamples& samples, std::span<const Vec3> positions,
     samples.folded_faces += faces_against_normals(to_poly_mesh(welded.mesh), welded.normals, kFlatFaceArea * d * d);
 }
 
+std::vector<SurfaceSamples> sweep_conventions(const CurveFile& file, const SweepOptions& options) {
+    const auto samples = [&](const SweepOptions& o) {
+        SurfaceSamples c;
+        for (int k = 0; k < static_cast<int>(file.sweeps.size()); ++k) {
+            const SweepSurface s = build_sweep(file, k, o);
+            add_surface_piece(c, s.grid.positions, s.grid.normals, s.surface);
+        }
+        return c;
+    };
+    std::vector<SurfaceSamples> out{samples(options)};
+    const bool cylinders = std::any_of(file.sweeps.begin(), file.sweeps.end(),
+                                       [](const SweepRecord& r) { return r.kind == SweepRecord::Kind::Cylinder; });
+    if (!cylinders) return out;
+    // A generalized cylinder's frames are a convention (the seed leaves the initial frame and
+    // a closed sweep's seam to the program): a subject that misses core's is told which of the
+    // others it follows.
+    const auto frames_name = [](FrameMethod m) { return m == FrameMethod::Recursive ? "recursive frames" : "rotation-minimizing frames"; };
+    const FrameMethod other = options.frames == FrameMethod::Recursive ? FrameMethod::DoubleReflection : FrameMethod::Recursive;
+    for (const FrameMethod m : {options.frames, other})
+        for (const bool closed : {true, false}) {
+            const std::string name = std::string(frames_name(m)) + ", seam " + (closed ? "closed" : "left open");
+            if (m == options.frames && closed) {
+                out.front().convention = name;  // core's own
+                continue;
+            }
+            SweepOptions o = options;
+            o.frames = m;
+            o.close_frames = closed;
+            out.push_back(samples(o));
+            out.back().convention = name;
+        }
+    return out;
+}
+
+SurfaceSamples patch_samples(const std::vector<BezierPatch>& patches, int res, const SurfaceMesh& welded) {
+    std::vector<Vec3> positions, normals;
+    for (const BezierPatch& p : patches)
+        for (int i = 0; i <= res; ++i)
+            for (int j = 0; j <= res; ++j) {
+                const double u = static_cast<double>(i) / res, v = static_cast<double>(j) / res;
+                positions.push_back(patch_point(p, u, v));
+                normals.push_back(patch_normal(p, u, v));
+            }
+    SurfaceSamples samples;
+    add_surface_piece(samples, positions, normals, welded);
+    return samples;
+}
+
 int faces_against_normals(const PolyMesh& mesh, std::span<const Vec3> normals, double area_floor) {
     int against = 0;
     for (int f = 0; f < mesh.num_faces(); ++f) {
@@ -240,7 +288,7 @@ std::vector<SurfaceNormalFit> normal_fits(const SurfaceSamples& core, const std:
 }  // namespace
 
 SurfaceSubjectComparison compare_surface_subject(const std::string& input_file, std::span<const SurfaceSamples> conventions,
-                                                 const std::string& subject, const std::string& command,
+                                                 const std::string& subject, const TaskCommand& command,
                                                  double timeout_seconds) {
     if (conventions.empty()) throw std::invalid_argument("compare_surface_subject: no samples of core's surface");
     SurfaceSubjectComparison out;

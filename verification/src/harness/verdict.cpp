@@ -29,6 +29,7 @@ constexpr std::array kClasses = {
     std::pair{DivergenceClass::WingRule, "wing-rule"},
     std::pair{DivergenceClass::TriangleRule, "triangle-rule"},
     std::pair{DivergenceClass::NormalRule, "normal-rule"},
+    std::pair{DivergenceClass::Convention, "convention"},
     std::pair{DivergenceClass::Rounding, "rounding"},
     std::pair{DivergenceClass::IsolatedVertexHandling, "isolated-vertex-handling"},
     std::pair{DivergenceClass::ValenceLimit, "valence-limit"},

@@ -1,7 +1,12 @@
 #include "crossdiv/verification/implementations/task_program.h"
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+
+#include "crossdiv/datasets/bundled_curves.h"
+#include "crossdiv/datasets/bundled_surfaces.h"
 
 #include "crossdiv/error.h"
 #include "crossdiv/verification/harness/process.h"
@@ -9,11 +14,32 @@
 
 namespace crossdiv::verification {
 
-TaskRun run_task_program(const std::string& command, const std::string& input_file, const std::string& out_name,
+std::string task_input_file(const std::string& spec, const TemporaryFolder& folder) {
+    const bool curve = spec.starts_with("curve:"), surface = spec.starts_with("surface:");
+    if (!curve && !surface) return spec;
+    const std::string name = spec.substr(spec.find(':') + 1);
+    const datasets::BundledCurve* b = nullptr;
+    if (surface) {
+        b = &datasets::bundled_surface(name);
+    } else {
+        const auto& all = datasets::bundled_curves();
+        const auto it = std::find_if(all.begin(), all.end(), [&](const datasets::BundledCurve& c) { return c.name == name; });
+        if (it == all.end()) throw InputError("unknown bundled curve '" + spec + "'");
+        b = &*it;
+    }
+    const std::string path = (folder.path() / (name + "." + b->format)).string();
+    std::ofstream(path) << b->text;
+    return path;
+}
+
+TaskRun run_task_program(const TaskCommand& command, const std::string& input_file, const std::string& out_name,
                          double timeout_seconds, const std::string& ops_file) {
     namespace fs = std::filesystem;
-    CommandTemplate cmd(command);
-    cmd.anchor_relative_paths();
+    if (command.dir.empty() && command.text.find("{dir}") != std::string::npos)
+        throw InputError("'" + command.text + "': {dir} is a roster's submission folder; it has a meaning in a manifest's "
+                         "`subjects NAME dir=...` statement only");
+    CommandTemplate cmd(command.text);
+    cmd.anchor_relative_paths(command.base_dir);
     TaskRun run;
     run.folder = std::make_unique<TemporaryFolder>("task");
     const fs::path dir = run.folder->path();
@@ -23,7 +49,7 @@ TaskRun run_task_program(const std::string& command, const std::string& input_fi
     if (ec) throw InputError(input_file + ": cannot copy it for the program: " + ec.message());
     run.out = (dir / out_name).string();
     // Every input placeholder names the one file the task has.
-    TemplateValues values{in.string(), in.string(), in.string(), run.out, {}, in.string(), "", ""};
+    TemplateValues values{in.string(), in.string(), in.string(), run.out, {}, in.string(), command.dir, ""};
     if (!ops_file.empty()) {
         values.ops = (dir / "ops.txt").string();
         fs::copy_file(ops_file, values.ops, fs::copy_options::overwrite_existing, ec);

@@ -152,6 +152,7 @@ json to_json(const CaseRecord& c) {
     json j = c.detail;
     j["input"] = c.input;
     j["operation"] = c.operation;
+    if (c.levels == 0 && !c.boundary.empty()) j["options"] = {{"boundary", c.boundary}};  // a course task's convention
     if (c.levels > 0) {
         j["options"] = {{"boundary", c.boundary}};
         if (!c.weights.empty()) j["options"]["weights"] = c.weights;

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "crossdiv/error.h"
+#include "crossdiv/verification/comparisons/edit_subject.h"
 #include "crossdiv/verification/harness/install_paths.h"
 #include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/verification/suite/operations.h"
@@ -124,6 +125,42 @@ void parse_scheme_keys(const std::string& file, int line, std::istringstream& wo
                });
 }
 
+/// A course task's keys: t= (casteljau), res= (patch), frames= (sweep), ops= (flip-split),
+/// each only where its task reads it.
+void parse_task_keys(const std::string& file, int line, std::istringstream& words, ManifestEntry& e) {
+    const std::string& op = e.operation->name;
+    std::string rest;
+    std::getline(words, rest);
+    for (const std::string& word : at_line(file, line, [&] { return statement_words(rest); })) {
+        const size_t eq = word.find('=');
+        const std::string key = word.substr(0, eq), value = eq == std::string::npos ? "" : word.substr(eq + 1);
+        const auto only = [&](const char* task) {
+            if (op != task) throw ParseError(file, line, "the " + op + " task takes no " + key + "= key (" + task + " does)");
+        };
+        if (key == "t") {
+            only("casteljau");
+            e.task.t = parse_number(file, line, "t", value);
+            if (!(e.task.t >= 0 && e.task.t <= 1)) throw ParseError(file, line, "t must be in [0, 1], got " + value);
+        } else if (key == "res") {
+            only("patch");
+            const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), e.task.res);
+            if (ec != std::errc() || end != value.data() + value.size() || e.task.res < 1 || e.task.res > 1024)
+                throw ParseError(file, line, "res=" + value + " is not a whole number in [1, 1024]");
+        } else if (key == "frames") {
+            only("sweep");
+            if (value != "recursive" && value != "rmf") throw ParseError(file, line, "frames=" + value + ": recursive or rmf");
+            e.task.frames = value;
+        } else if (key == "ops") {
+            only("flip-split");
+            at_line(file, line, [&] { return parse_edit_operations(value); });  // checked here, applied per input
+            e.task.ops = value;
+        } else {
+            throw ParseError(file, line, "unknown key '" + word + "' for the " + op + " task (t=, res=, frames=, ops=)");
+        }
+    }
+    if (op == "flip-split" && e.task.ops.empty()) throw ParseError(file, line, "the flip-split task needs ops='flip A B, split C D, ...'");
+}
+
 ManifestEntry parse_case(const std::string& file, int line, std::istringstream& words) {
     ManifestEntry e;
     e.line = line;
@@ -131,6 +168,10 @@ ManifestEntry parse_case(const std::string& file, int line, std::istringstream& 
     if (!(words >> inputs >> op)) throw ParseError(file, line, "expected: case INPUTS OPERATION [key=value ...]");
     e.inputs = split(inputs, ',');
     e.operation = at_line(file, line, [&] { return &find_operation(op); });
+    if (e.operation->kind == OperationKind::Task) {
+        parse_task_keys(file, line, words, e);
+        return e;
+    }
     if (e.operation->kind != OperationKind::Comparison) {
         // The checks and studies carry their own named tolerances (tolerances.h).
         if (std::string extra; words >> extra)
@@ -151,6 +192,14 @@ ManifestEntry parse_case(const std::string& file, int line, std::istringstream& 
 
 /// The id's description of an entry: the operation, and a comparison's keys.
 std::string describe_entry(const ManifestEntry& e) {
+    if (e.operation->kind == OperationKind::Task) {
+        const std::string& op = e.operation->name;
+        char t[32];
+        std::snprintf(t, sizeof t, "%g", e.task.t);
+        return op + (op == "casteljau" ? std::string(" t=") + t : "") + (op == "patch" ? " res=" + std::to_string(e.task.res) : "") +
+               (op == "sweep" ? " frames=" + e.task.frames : "") + (op == "flip-split" ? " ops=" + e.task.ops : "") +
+               (e.subject ? " subject=" + e.subject->name : "");
+    }
     if (e.operation->kind != OperationKind::Comparison) return e.operation->name;
     const bool loop = e.operation->scheme == Scheme::Loop;
     const Tier tier = e.request.tier;
@@ -203,6 +252,8 @@ std::vector<std::shared_ptr<const ManifestSubject>> roster_subjects(const std::v
         } else {
             ProgramSpec spec = program_spec(s->name, keys, base_dir, timeout);
             spec.dir = folder;
+            s->task = TaskCommand(spec.command, base_dir, folder);
+            s->timeout_seconds = spec.timeout_seconds;
             if (programs == ProgramStatements::CheckOnly) check_program_spec(spec);
             else s->program = std::shared_ptr<const Implementation>(make_program_implementation(spec));
         }
@@ -357,6 +408,8 @@ Manifest read_manifest(std::istream& in, const std::string& path, const std::str
                 } else {
                     auto s = std::make_shared<ManifestSubject>();
                     s->name = all[1];
+                    s->task = TaskCommand(spec.command, base_dir);
+                    s->timeout_seconds = spec.timeout_seconds;
                     subjects = {s};
                 }
                 continue;
@@ -372,6 +425,8 @@ Manifest read_manifest(std::istream& in, const std::string& path, const std::str
                 auto s = std::make_shared<ManifestSubject>();
                 s->name = all[1];
                 s->program = std::shared_ptr<const Implementation>(std::move(program));
+                s->task = TaskCommand(spec.command, base_dir);
+                s->timeout_seconds = spec.timeout_seconds;
                 subjects = {s};
             }
             continue;
@@ -397,9 +452,16 @@ Manifest read_manifest(std::istream& in, const std::string& path, const std::str
                 throw ParseError(path, line, "max-faces " + v + " is not a positive integer below 2^63");
         } else if (keyword == "case") {
             const ManifestEntry entry = parse_case(path, line, words);
-            if (!subjects.empty() && entry.operation->kind != OperationKind::Comparison)
-                throw ParseError(path, line, "a subject is compared in the scheme comparisons only (loop, catmull-clark, ...); "
-                                             "put the " + entry.operation->name + " cases before the subject statement");
+            const bool task = entry.operation->kind == OperationKind::Task;
+            if (!subjects.empty() && entry.operation->kind != OperationKind::Comparison && !task)
+                throw ParseError(path, line, "a subject is compared in the scheme comparisons and the course tasks only (loop, "
+                                             "catmull-clark, ..., tessellate, sweep, ...); put the " + entry.operation->name +
+                                             " cases before the subject statement");
+            if (task && subjects.empty())
+                throw ParseError(path, line, "the " + entry.operation->name + " task puts a subject in core's place: give a "
+                                             "subject or subjects statement before it");
+            if (task && std::any_of(subjects.begin(), subjects.end(), [](const auto& s) { return !s->result_pattern.empty(); }))
+                throw ParseError(path, line, "the " + entry.operation->name + " task runs a program (command=), not result files");
             if (subjects.empty()) m.entries.push_back(entry);
             for (const auto& s : subjects) {
                 m.entries.push_back(entry);

@@ -17,6 +17,7 @@
 #include "crossdiv/verification/properties/surface_checks.h"
 #include "crossdiv/verification/harness/json_text.h"
 #include "crossdiv/verification/suite/features_under_test.h"
+#include "crossdiv/verification/suite/task_cases.h"
 #include "crossdiv/verification/studies/curvature_study.h"
 #include "crossdiv/verification/studies/fitting_study.h"
 #include "crossdiv/verification/studies/isosurface_study.h"
@@ -222,6 +223,17 @@ const std::vector<SuiteOperation>& suite_operations() {
          run_study<spectrum_study>},
         {"convergence", OperationKind::Study, "convergence of extraordinary vertices to their limit",
          one_collection<kFans>, run_study<convergence_study>},
+        {"tessellate", OperationKind::Task, "a subject's uniform tessellation and frames of every curve record, named",
+         expand_curve_inputs, run_task_case},
+        {"casteljau", OperationKind::Task, "a subject's de Casteljau levels of a Bezier curve at t", expand_curve_inputs,
+         run_task_case},
+        {"patch", OperationKind::Task, "a subject's Bezier patch tessellation: positions, normals, faces", expand_surface_inputs,
+         run_task_case},
+        {"sweep", OperationKind::Task, "a subject's surfaces of revolution and generalized cylinders: positions, normals, faces, watertightness",
+         expand_surface_inputs, run_task_case},
+        {"vertex-normals", OperationKind::Task, "a subject's vertex normals, their weighting named", expand_inputs, run_task_case},
+        {"flip-split", OperationKind::Task, "a subject's edge flips and splits, the mesh after each compared", expand_inputs,
+         run_task_case},
     };
     return ops;
 }
@@ -231,6 +243,7 @@ const char* to_string(OperationKind kind) {
         case OperationKind::Comparison: return "comparison";
         case OperationKind::Checks: return "checks";
         case OperationKind::Study: return "study";
+        case OperationKind::Task: return "task";
     }
     return "unknown";
 }

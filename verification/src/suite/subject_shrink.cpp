@@ -15,6 +15,7 @@
 #include "crossdiv/verification/harness/json_text.h"
 #include "crossdiv/verification/implementations/inputs.h"
 #include "crossdiv/verification/implementations/tag_rules.h"
+#include "crossdiv/verification/suite/operations.h"
 #include "crossdiv/verification/suite/roster_table.h"
 
 namespace crossdiv::verification {
@@ -72,7 +73,9 @@ void shrink_subject_failures(const std::vector<SuiteJob>& jobs, std::vector<Case
         if (rec == records.end()) continue;
         const auto job = std::find_if(jobs.begin(), jobs.end(), [&](const SuiteJob& j) { return j.index == rec->job; });
         if (job == jobs.end() || !job->entry->subject) continue;
-        if (rec->detail["subject"].value("status", "") == "timeout")
+        if (job->entry->operation->kind != OperationKind::Comparison)
+            rec->detail["minimal"] = {{"note", "not shrunk: shrinking takes a subdivision scheme's mesh, not a course task's input"}};
+        else if (rec->detail["subject"].value("status", "") == "timeout")
             rec->detail["minimal"] = {{"note", "not shrunk: it hangs, and each smaller try would cost its time limit"}};
         else if (!job->entry->subject->program)
             rec->detail["minimal"] = {{"note", "not shrunk: a result file is not re-run on a smaller input"}};

@@ -13,6 +13,7 @@
 
 #include "crossdiv/curves/curve_record.h"
 #include "crossdiv/verification/harness/isolate.h"
+#include "crossdiv/verification/implementations/task_program.h"
 
 namespace crossdiv::verification {
 
@@ -35,7 +36,7 @@ struct CasteljauSubjectComparison {
 /// (WrongCount, naming the level) are named outcomes.
 /// @throws InputError when the file is not one Bezier curve.
 CasteljauSubjectComparison compare_casteljau_subject(const std::string& input, const CurveFile& file, double t,
-                                                     const std::string& subject, const std::string& command,
+                                                     const std::string& subject, const TaskCommand& command,
                                                      double timeout_seconds);
 
 }  // namespace crossdiv::verification

@@ -21,6 +21,7 @@
 
 #include "crossdiv/curves/curve_record.h"
 #include "crossdiv/verification/harness/isolate.h"
+#include "crossdiv/verification/implementations/task_program.h"
 
 namespace crossdiv::verification {
 
@@ -62,6 +63,6 @@ struct CurveSubjectComparison {
 /// an unreadable table (file:line) or a non-finite number gets that outcome.
 /// @throws InputError for a command template that cannot run.
 CurveSubjectComparison compare_curve_subject(const std::string& input, const CurveFile& file, const std::string& subject,
-                                             const std::string& command, double timeout_seconds);
+                                             const TaskCommand& command, double timeout_seconds);
 
 }  // namespace crossdiv::verification

@@ -15,6 +15,7 @@
 
 #include "crossdiv/mesh/tri_mesh.h"
 #include "crossdiv/verification/harness/isolate.h"
+#include "crossdiv/verification/implementations/task_program.h"
 
 namespace crossdiv::verification {
 
@@ -54,6 +55,6 @@ std::vector<EditOperation> parse_edit_operations(const std::string& text);
 /// @throws InputError for an operation naming no edge of the mesh core has at that point.
 EditSubjectComparison compare_edit_subject(const std::string& input, const TriMesh& mesh,
                                            const std::vector<EditOperation>& operations, const std::string& subject,
-                                           const std::string& command, double timeout_seconds);
+                                           const TaskCommand& command, double timeout_seconds);
 
 }  // namespace crossdiv::verification

@@ -11,6 +11,7 @@
 
 #include "crossdiv/mesh/tri_mesh.h"
 #include "crossdiv/verification/harness/isolate.h"
+#include "crossdiv/verification/implementations/task_program.h"
 
 namespace crossdiv::verification {
 
@@ -39,6 +40,6 @@ struct NormalsSubjectComparison {
 /// Crashes, hangs, a nonzero exit, no file, an unreadable line (file:line), a non-finite number
 /// and another count of normals than vertices are named outcomes.
 NormalsSubjectComparison compare_normals_subject(const std::string& input, const TriMesh& mesh, const std::string& subject,
-                                                 const std::string& command, double timeout_seconds);
+                                                 const TaskCommand& command, double timeout_seconds);
 
 }  // namespace crossdiv::verification

@@ -17,8 +17,11 @@
 #include <vector>
 
 #include "crossdiv/mesh/tri_mesh.h"
+#include "crossdiv/surfaces/bezier_patch.h"
+#include "crossdiv/surfaces/sweep_surface.h"
 #include "crossdiv/surfaces/surface_mesh.h"
 #include "crossdiv/verification/harness/isolate.h"
+#include "crossdiv/verification/implementations/task_program.h"
 
 namespace crossdiv::verification {
 
@@ -75,6 +78,16 @@ struct SurfaceSamples {
 void add_surface_piece(SurfaceSamples& samples, std::span<const Vec3> positions, std::span<const Vec3> normals,
                        const SurfaceMesh& welded);
 
+/// Core's samples of every srev and gcyl record of `file` under `options`, first: its own; when
+/// the file has a generalized cylinder, then the other frame conventions (recursive or
+/// rotation-minimizing frames, the seam closed or left open), each named.
+/// @throws ParseError / InputError as build_sweep does.
+std::vector<SurfaceSamples> sweep_conventions(const CurveFile& file, const SweepOptions& options);
+
+/// Core's grid of every patch at `res` quads a side before welding (each point with its own
+/// patch's normal) and the counts of `welded`, core's tessellation of them.
+SurfaceSamples patch_samples(const std::vector<BezierPatch>& patches, int res, const SurfaceMesh& welded);
+
 /// How many faces of `mesh` turn against the normals given at their vertices (Newell's area
 /// vector against their sum); faces of no area (below `area_floor`) are not counted.
 int faces_against_normals(const PolyMesh& mesh, std::span<const Vec3> normals, double area_floor);
@@ -89,7 +102,7 @@ int welded_boundary_edges(const PolyMesh& mesh, double tol);
 /// unreadable line (file:line), a non-finite number and a count of `vn` other than of `v` are
 /// named outcomes.
 SurfaceSubjectComparison compare_surface_subject(const std::string& input_file, std::span<const SurfaceSamples> conventions,
-                                                 const std::string& subject, const std::string& command,
+                                                 const std::string& subject, const TaskCommand& command,
                                                  double timeout_seconds);
 
 }  // namespace crossdiv::verification

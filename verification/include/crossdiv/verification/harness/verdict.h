@@ -45,6 +45,9 @@ enum class DivergenceClass {
     WingRule,                  ///< Butterfly: another stand-in for a wing point beyond the boundary
     TriangleRule,              ///< Catmull-Clark: OpenSubdiv's smooth-triangle edge weights, or not
     NormalRule,                ///< vertex normals by a rule that is none of our weightings (CGAL's most visible normal)
+    /// A course task's subject follows another named convention than core's (a curve's
+    /// basis, t read as 1 - t, a normal weighting, a cylinder's frames)
+    Convention,
     // Something else measured:
     Rounding,                  ///< same faces, within tolerances::kRoundingUlps of the coordinates
     IsolatedVertexHandling,    ///< only vertices without faces differ
@@ -62,7 +65,8 @@ enum class DivergenceClass {
 };
 
 /// "" for None, else the class's name in results.json ("weight-family", "corner-rule",
-/// "weight-family+corner-rule", "boundary-rule", "border-faces-dropped", "parity", "wing-rule", "triangle-rule", "normal-rule", "rounding",
+/// "weight-family+corner-rule", "boundary-rule", "border-faces-dropped", "parity", "wing-rule", "triangle-rule", "normal-rule",
+/// "convention", "rounding",
 /// "isolated-vertex-handling", "valence-limit", "topology", "triangulation",
 /// "unexplained", "non-manifold-handling", "orientation-handling", "degenerate-face-handling",
 /// "invalid-input-handling").

@@ -4,6 +4,7 @@
 /// reports/suite-manifest.md) and its expansion into jobs, whole or one shard of them.
 
 #include <memory>
+#include <optional>
 #include <istream>
 #include <string>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "crossdiv/verification/implementations/tag_rules.h"
 #include "crossdiv/verification/implementations/output_size.h"
 #include "crossdiv/verification/implementations/program_implementation.h"
+#include "crossdiv/verification/implementations/task_program.h"
 
 namespace crossdiv::verification {
 
@@ -25,6 +27,9 @@ struct ManifestSubject {
     std::string roster;  ///< the `subjects` statement's NAME (empty for a `subject` statement)
     std::string dir;     ///< the submission folder, absolute (a roster's subject)
     std::shared_ptr<const Implementation> program;  ///< command=: the program
+    /// command=: the same template as a course task runs it (task_cases.h), with its time limit.
+    std::optional<TaskCommand> task;
+    double timeout_seconds = 0;
     /// result=: the file of each input, with {input} (the input's name: a file's stem, the
     /// NAME of bundled:NAME) and {levels}; relative to the manifest's folder.
     std::string result_pattern;
@@ -33,6 +38,14 @@ struct ManifestSubject {
 };
 
 /// One `case` line of a manifest: inputs x one operation with its rules and tier.
+/// A course-task case's keys (task_cases.h).
+struct TaskKeys {
+    double t = 0.5;                     ///< casteljau: the parameter
+    int res = 8;                        ///< patch: quads per patch side
+    std::string frames = "recursive";   ///< sweep: core's frames for generalized cylinders (recursive | rmf)
+    std::string ops;                    ///< flip-split: "flip A B, split C D, ..."
+};
+
 struct ManifestEntry {
     int line = 0;                      ///< in the manifest file
     std::vector<std::string> inputs;   ///< as the operation's expand() accepts them (collections allowed)
@@ -42,6 +55,7 @@ struct ManifestEntry {
     /// input's tags (rule_with_tags).
     RefinementRequest request;
     RuleFlags rule_flags;              ///< another scheme's boundary= and crease-method= keys
+    TaskKeys task;                     ///< a course task's keys
     /// The implementation under test (the last `subject` statement before the case, or one
     /// subject of the last `subjects` statement: a case line makes one entry per subject); none: core.
     std::shared_ptr<const ManifestSubject> subject;

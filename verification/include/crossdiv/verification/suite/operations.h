@@ -18,6 +18,8 @@
 ///   spectrum         the eigen table of the local subdivision matrices, valence 3..20, against
 ///                    the published closed forms; the Loop rule oracle of loop and warren
 ///   convergence      the convergence table, valence 3..12, levels 1..8
+///   tessellate, casteljau, patch, sweep, vertex-normals, flip-split
+///                    the course tasks, each with a subject in core's place (task_cases.h)
 
 #include <string>
 #include <string_view>
@@ -34,6 +36,7 @@ enum class OperationKind {
     Comparison,  ///< one run per reference (a scheme's refinement); takes rule keys
     Checks,      ///< one run per measured check of an input file (curves, surfaces)
     Study,       ///< one job over a fixed catalog, measured checks and tables
+    Task,        ///< a subject put in core's place for a course task (task_cases.h); takes the task's keys
 };
 
 struct SuiteOperation {
@@ -52,7 +55,7 @@ struct SuiteOperation {
 /// Every operation, in the order above.
 const std::vector<SuiteOperation>& suite_operations();
 
-/// "comparison", "checks", "study".
+/// "comparison", "checks", "study", "task".
 const char* to_string(OperationKind kind);
 /// Every operation's name, kind and (a comparison) scheme, as results.json lists them: what
 /// the report reads to tell the kinds of cases apart.

@@ -7,7 +7,7 @@
 /// case's record (detail "minimal": mesh, faces, vertices, symptom, tests; or a note why it was
 /// not shrunk). The class table links it (roster_table.h).
 ///
-/// Not shrunk, with the reason noted: a subject that hangs (each try would cost its time
+/// Not shrunk, with the reason noted: a course task's case (shrink.h takes a scheme's mesh), a subject that hangs (each try would cost its time
 /// limit), a result file (it cannot be re-run on a smaller input), a failure the smaller runs do
 /// not reproduce.
 
