@@ -8,6 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "crossdiv/error.h"
+#include "crossdiv/verification/implementations/registry.h"
+
 namespace crossdiv::cli {
 
 /// Adds subcommand `name`; when the command line selects it, `run(args)` runs after parsing
@@ -20,14 +23,35 @@ void add_command(CLI::App& app, const char* name, const char* help, int& status,
     sub->callback([args, run, &status] { status = run(*args); });
 }
 
+/// Refuses a blank value: an unset variable in a script (`--subject "$CMD"`) would otherwise
+/// drop the option, and the run would say nothing of the program it was meant to test.
+inline const CLI::Validator kNotBlank(
+    [](std::string& s) {
+        return s.find_first_not_of(" \t") == std::string::npos ? std::string("empty (is a variable unset?)") : std::string();
+    },
+    "", "NOT_BLANK");
+
+/// A subject's name must not be core's or a reference's (verification::check_subject_name).
+inline const CLI::Validator kSubjectName(
+    [](std::string& s) {
+        try {
+            verification::check_subject_name(s);
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    },
+    "", "SUBJECT_NAME");
+
 /// A course task's program in core's place (task_program.h): --subject CMD (what it is given
 /// and writes: `what`), --subject-name, --timeout.
 struct TaskSubjectOptions {
     std::string command, name = "subject";
     double timeout = 60;
     void add_to(CLI::App& app, const std::string& what) {
-        app.add_option("--subject", command, "Put a program under test in core's place: a command template, " + what);
-        app.add_option("--subject-name", name, "The subject's name in the output")->capture_default_str();
+        app.add_option("--subject", command, "Put a program under test in core's place: a command template, " + what)
+            ->check(kNotBlank);
+        app.add_option("--subject-name", name, "The subject's name in the output")->check(kSubjectName)->capture_default_str();
         app.add_option("--timeout", timeout, "Seconds the subject may run")->check(CLI::PositiveNumber)->capture_default_str();
     }
 };

@@ -425,8 +425,9 @@ struct ProgramArgs {
                        "Put a program under test in core's place: a command template such as "
                        "'python3 loop.py {in} {levels} {out}' ({in}: OBJ with its 't' tag lines, {in.untagged}, "
                        "{in.off}, {in.ply}: without; {out} {out.off} {out.ply} {levels} {scheme} {weights} {boundary}); "
-                       "run without a shell, in a temporary folder, with --timeout per run");
-        app.add_option("--subject-name", subject_name, "The subject's name in the results")->capture_default_str();
+                       "run without a shell, in a temporary folder, with --timeout per run")
+            ->check(kNotBlank);
+        app.add_option("--subject-name", subject_name, "The subject's name in the results")->check(kSubjectName)->capture_default_str();
         app.add_option("--subject-levels", subject_levels,
                        "each: run the subject once per level 1..N and compare every level; final: once, for level N")
             ->check(CLI::IsMember({"each", "final"}))
@@ -449,6 +450,7 @@ struct ProgramArgs {
             register_reference(make_program_implementation(program_spec(name, keys, "", timeout)));
         }
         if (subject.empty()) return nullptr;
+        check_subject_name(subject_name);  // against the references just registered too
         ProgramSpec spec;
         spec.name = subject_name;
         spec.command = subject;
@@ -477,6 +479,7 @@ struct CompareArgs {
         programs.add_to(app);
         app.add_option("--subject-result", subject_result,
                        "Put a result file under test (OBJ, OFF or PLY a program already wrote), compared at --levels")
+            ->check(kNotBlank)
             ->excludes("--subject");
     }
 };

@@ -25,8 +25,8 @@ void print_subject(const RefinementComparison& c) {
         fmt::print("  subject '{}' failed: {}\n", c.subject, c.subject_outcome.summary());
         return;
     }
-    if (!c.subject_unmatched.empty()) {
-        fmt::print("  subject '{}': {}\n", c.subject, c.subject_unmatched);
+    if (!c.subject_unmatched.empty() || !c.subject_topology.empty()) {
+        fmt::print("  subject '{}': {}\n", c.subject, c.subject_unmatched.empty() ? c.subject_topology : c.subject_unmatched);
         return;
     }
     fmt::print("  subject '{}' ran in {:.3f} s; vertices matched to core's by {}\n", c.subject, c.subject_outcome.seconds,

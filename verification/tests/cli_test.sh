@@ -309,6 +309,17 @@ expect sweep-subject 0 "subject 'student': 3504 vertices \\(core 3410 welded\\);
   "$crossdiv" sweep surface:vase --subject-name student --subject "$revolve {in} {out}"
 expect sweep-subject-inward 1 "normals reversed \\(96 left zero\\); 6816 of 6912 faces turn against their normals" -- \
   "$crossdiv" sweep surface:vase --subject-name student --subject "$revolve {in} {out} --left-normals"
+# A subject must be there and be named apart from core and the references: an unset variable
+# (--subject "") is refused, not dropped; a subject named core or opensubdiv would be taken for it.
+expect subject-blank 2 "--subject: empty \\(is a variable unset\\?\\)" -- "$crossdiv" compare bundled:tetrahedron --subject ""
+expect subject-result-blank 2 "--subject-result: empty" -- "$crossdiv" compare bundled:tetrahedron --subject-result " "
+expect subject-named-core 2 "a subject cannot be named 'core': core is" -- \
+  "$crossdiv" compare bundled:tetrahedron --subject-name core --subject "python3 -c pass {in} {out}"
+expect subject-named-reference 2 "a subject cannot be named 'opensubdiv': 'opensubdiv' is a reference" -- \
+  "$crossdiv" compare bundled:tetrahedron --subject-name opensubdiv --subject "python3 -c pass {in} {out}"
+expect task-subject-named-core 2 "a subject cannot be named 'core'" -- \
+  "$crossdiv" normals bundled:torus --subject-name core --subject "python3 -c pass {in} {out}"
+expect task-subject-blank 2 "--subject: empty" -- "$crossdiv" normals bundled:torus --subject ""
 # The literature's other rules, named: Catmull-Clark's vertex point with the average of the
 # new edge points for R, Doo-Sabin's corners by Catmull and Clark's weights (a pentagonal prism:
 # valence 3, and faces other than quads, where those weights differ from Doo and Sabin's).

@@ -158,6 +158,9 @@ TEST(Manifest, BadReferenceAndSubjectStatementsNameTheLine) {
               std::string::npos);
     EXPECT_NE(error("subject s command='a {out}'\ncase catalog spectrum\n").find(":3: a subject is compared in the scheme comparisons and the course tasks only"),
               std::string::npos);
+    // A subject named as core or a reference would be taken for it.
+    EXPECT_NE(error("subject core command='a {in} {out}'\n").find(":2: a subject cannot be named 'core'"), std::string::npos);
+    EXPECT_NE(error("subject cgal result='r/{input}.obj'\n").find(":2: a subject cannot be named 'cgal'"), std::string::npos);
     // The course tasks: a subject before them, each key where its task reads it.
     EXPECT_NE(error("case curve:flower tessellate\n").find(":2: the tessellate task puts a subject in core's place"), std::string::npos);
     const std::string s = "subject s command='a {in} {out}'\n";

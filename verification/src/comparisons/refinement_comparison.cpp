@@ -236,6 +236,38 @@ bool RefinementComparison::all_agree() const {
     return std::all_of(runs.begin(), runs.end(), [](const RefinementRun& r) { return r.verdict == Verdict::Agree; });
 }
 
+namespace {
+
+/// "face 12 (3 7 9)": a face of `m` by index and corners.
+std::string face_text(const PolyMesh& m, int f) {
+    std::string s = "face " + std::to_string(f) + " (";
+    for (int k = 0; k < m.face_size(f); ++k) {
+        if (k) s += ' ';
+        s += std::to_string(m.face(f)[k]);
+    }
+    return s + ")";
+}
+
+/// How the subject's faces (in core's numbering) differ from core's at the first level where
+/// they do, naming the first face only in each; "" when every compared level has core's faces.
+std::string subject_face_difference(const adapters::LevelTrace& core, const adapters::LevelTrace& subject) {
+    for (size_t l = 1; l < subject.size() && l < core.size(); ++l) {
+        const PolyMesh &ours = core[l], &theirs = subject[l];
+        if (theirs.num_vertices() == 0 && theirs.num_faces() == 0) continue;  // a level not compared
+        const MeshComparison c = compare_meshes(ours, theirs, identity_map(static_cast<size_t>(theirs.num_vertices())));
+        if (c.face_sets_equal) continue;
+        std::string s = "its faces are not core's: at level " + std::to_string(l) + ", " + std::to_string(c.faces_only_in_ref) +
+                        " of its " + std::to_string(theirs.num_faces()) + " faces are not core's";
+        if (c.first_face_only_in_ref >= 0) s += " (first: " + face_text(theirs, c.first_face_only_in_ref) + ")";
+        s += ", " + std::to_string(c.faces_only_in_ours) + " of core's " + std::to_string(ours.num_faces()) + " are not its";
+        if (c.first_face_only_in_ours >= 0) s += " (first: " + face_text(ours, c.first_face_only_in_ours) + ")";
+        return s + "; vertices in core's numbering";
+    }
+    return "";
+}
+
+}  // namespace
+
 RefinementComparison compare_refinement(const PolyMesh& input, const std::string& name, const RefinementRequest& req) {
     RefinementComparison out;
     out.input = name;
@@ -293,6 +325,10 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
             const adapters::LevelTrace& levels = core.with(r).levels();
             by_rule.emplace_back(levels.begin() + 1, levels.end());
         }
+        // Its vertices matched, its faces must be core's: positions alone would pass a subject
+        // that scrambles, reverses or duplicates faces.
+        out.subject_topology = subject_face_difference(numbered_as->levels(), subject);
+        if (!out.subject_topology.empty()) return out;
         out.rules = identify_rule(req.scheme, input, {subject.begin() + 1, subject.end()}, by_rule,
                                   numbered_as->refinement.births, req.rule, req.tolerance);
         subject_rule = out.rules->rule;
@@ -616,7 +652,8 @@ nlohmann::json subject_json(const RefinementComparison& c) {
               {"status", to_string(c.subject_outcome.status)},
               {"status_message", c.subject_outcome.message},
               {"seconds", c.subject_outcome.seconds},
-              {"unmatched", c.subject_unmatched}};
+              {"unmatched", c.subject_unmatched},
+              {"topology", c.subject_topology}};
     if (c.subject_outcome.status == RunStatus::Ok)
         s["match"] = {{"method", to_string(c.subject_match.method)}, {"note", c.subject_match.note}};
     if (c.rules) {

@@ -171,6 +171,7 @@ std::string describe(const ShrinkSymptom& s, const std::string& subject, const s
         case ShrinkSymptom::Kind::ReferenceFails: return reference + " fails (" + std::string(to_string(s.status)) + ")";
         case ShrinkSymptom::Kind::SubjectFails: return subject + " fails (" + std::string(to_string(s.status)) + ")";
         case ShrinkSymptom::Kind::SubjectUnmatched: return subject + "'s vertices match none of core's";
+        case ShrinkSymptom::Kind::SubjectTopology: return subject + "'s faces are not core's";
         case ShrinkSymptom::Kind::SubjectFollowsNoRule: return "no named rule fits " + subject;
     }
     return "unknown";
@@ -186,6 +187,10 @@ std::optional<ShrinkSymptom> symptom_of(const RefinementComparison& c) {
     }
     if (!c.subject_unmatched.empty()) {
         s.kind = ShrinkSymptom::Kind::SubjectUnmatched;
+        return s;
+    }
+    if (!c.subject_topology.empty()) {
+        s.kind = ShrinkSymptom::Kind::SubjectTopology;
         return s;
     }
     if (!c.runs.empty()) {

@@ -21,6 +21,7 @@ struct CanonicalFaces {
     std::vector<int> corners;  ///< every emitted face's listing, one after another
     std::vector<int> start;    ///< face i is corners[start[i]] .. corners[start[i + 1] - 1]
     std::vector<int> order;    ///< the faces in lexicographic order of their listings
+    std::vector<int> source;   ///< face i's index in its mesh
 
     std::span<const int> face(int i) const {
         return {corners.data() + start[static_cast<size_t>(i)], static_cast<size_t>(start[i + 1] - start[i])};
@@ -49,6 +50,7 @@ CanonicalFaces canonical_faces(const PolyMesh& m, const std::vector<int>* map) {
         c.corners.insert(c.corners.end(), cycle.begin() + static_cast<std::ptrdiff_t>(first), cycle.end());
         c.corners.insert(c.corners.end(), cycle.begin(), cycle.begin() + static_cast<std::ptrdiff_t>(first));
         c.start.push_back(static_cast<int>(c.corners.size()));
+        c.source.push_back(f);
     });
     // Ordered by first corner by a counting sort (a listing starts at its least vertex, so a
     // bucket holds some of the faces around one vertex), then within each bucket by the rest.
@@ -71,11 +73,17 @@ CanonicalFaces canonical_faces(const PolyMesh& m, const std::vector<int>* map) {
     return c;
 }
 
-/// Number of faces of `a` not in `b` (a merge of the two orders, as std::set_difference, counted).
-int count_only_in(const CanonicalFaces& a, const CanonicalFaces& b) {
+/// Number of faces of `a` not in `b` (a merge of the two orders, as std::set_difference,
+/// counted), and the mesh index of the least of them in `first` (-1: none).
+int count_only_in(const CanonicalFaces& a, const CanonicalFaces& b, int& first) {
     int n = 0;
+    first = -1;
     for (size_t i = 0, j = 0; i < a.order.size();) {
-        if (j == b.order.size() || a.before(a.order[i], b, b.order[j])) { ++n; ++i; }
+        if (j == b.order.size() || a.before(a.order[i], b, b.order[j])) {
+            if (first < 0) first = a.source[static_cast<size_t>(a.order[i])];
+            ++n;
+            ++i;
+        }
         else if (b.before(b.order[j], a, a.order[i])) ++j;
         else { ++i; ++j; }
     }
@@ -199,8 +207,8 @@ MeshComparison compare_meshes(const PolyMesh& ours, const PolyMesh& ref, const s
         const auto a = canonical_faces(ours, nullptr), b = canonical_faces(ref, &ref_to_ours);
         c.face_sets_equal = same_faces(a, b);
         if (!c.face_sets_equal) {
-            c.faces_only_in_ours = count_only_in(a, b);
-            c.faces_only_in_ref = count_only_in(b, a);
+            c.faces_only_in_ours = count_only_in(a, b, c.first_face_only_in_ours);
+            c.faces_only_in_ref = count_only_in(b, a, c.first_face_only_in_ref);
         }
     } else {
         c.faces_only_in_ours = ours.num_faces();

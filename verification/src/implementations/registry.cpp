@@ -111,6 +111,15 @@ ScopedCoreImplementation::ScopedCoreImplementation(std::unique_ptr<Implementatio
 
 ScopedCoreImplementation::~ScopedCoreImplementation() { core_stand_in() = previous_; }
 
+void check_subject_name(const std::string& name) {
+    if (name.find_first_not_of(" \t") == std::string::npos) throw InputError("a subject needs a name (got an empty one)");
+    for (const Implementation* i : implementations())
+        if (i->name() == name)
+            throw InputError("a subject cannot be named '" + name + "': " + (name == "core" ? "core is" : "'" + name + "' is a reference") +
+                             ", and the results would attribute the subject's values to it (names taken: " +
+                             names(implementations()) + ")");
+}
+
 bool is_built(std::string_view name) {
     return std::any_of(implementations().begin(), implementations().end(),
                        [&](const Implementation* i) { return i->name() == name; });

@@ -113,7 +113,8 @@ CaseRecord case_record(const RefinementComparison& comparison) {
         c.ours_failed = true;
         c.core_error = "subject '" + comparison.subject + "' " +
                        (comparison.subject_outcome.status != RunStatus::Ok ? comparison.subject_outcome.summary()
-                                                                           : comparison.subject_unmatched);
+                        : !comparison.subject_unmatched.empty()               ? comparison.subject_unmatched
+                                                                               : comparison.subject_topology);
     }
     for (size_t i = 0; i < comparison.runs.size(); ++i) c.runs.push_back(reference_run(runs[i], comparison.runs[i]));
     return c;

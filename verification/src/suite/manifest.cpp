@@ -242,6 +242,7 @@ std::vector<std::shared_ptr<const ManifestSubject>> roster_subjects(const std::v
     for (const std::string& folder : submission_folders(pattern, base_dir)) {
         auto s = std::make_shared<ManifestSubject>();
         s->name = std::filesystem::path(folder).filename().string();
+        check_subject_name(s->name);  // a folder named core or opensubdiv would be taken for it
         s->roster = words[1];
         s->dir = folder;
         if (!result.empty()) {
@@ -389,6 +390,11 @@ Manifest read_manifest(std::istream& in, const std::string& path, const std::str
         if (keyword == "reference" || keyword == "subject") {
             if (all.size() < 3) throw ParseError(path, line, "expected: " + keyword + " NAME key=value ...");
             const std::vector<std::string> keys(all.begin() + 2, all.end());
+            if (keyword == "subject")
+                at_line(path, line, [&] {
+                    check_subject_name(all[1]);
+                    return 0;
+                });
             if (keyword == "subject" && keys.size() == 1 && keys[0].starts_with("result=")) {
                 auto s = std::make_shared<ManifestSubject>();
                 s->name = all[1];

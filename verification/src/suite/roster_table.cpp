@@ -78,6 +78,10 @@ std::vector<RosterRow> roster_table(const std::vector<CaseRecord>& cases) {
             failed("unmatched", string_field(s, "unmatched"));
             continue;
         }
+        if (!string_field(s, "topology").empty()) {
+            failed("topology", string_field(s, "topology"));
+            continue;
+        }
         ++row.ran;
         if (s.contains("match")) row.match = string_field(s["match"], "method");
         for (const RunRecord& r : c.runs) row.unexplained += r.outcome.verdict == Verdict::Diverge && r.outcome.cls == DivergenceClass::Unexplained;

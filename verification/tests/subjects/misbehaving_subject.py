@@ -15,7 +15,10 @@ correct result of a float implementation; OUT names the .ply), keep-boundary (Lo
 weights, but every boundary vertex left where it is: a rule no one names), closed-only (exits
 with a traceback on any input with a boundary edge, as a program that assumes two faces per
 edge does), midpoint (Loop's connectivity, but old vertices kept and every edge point its
-edge's midpoint: a midpoint subdivision handed in as Loop).
+edge's midpoint: a midpoint subdivision handed in as Loop), reversed (every face's winding
+reversed), scrambled (the faces replaced by as many random triangles over the same vertices),
+duplicate-face (the last face replaced by a copy of the first): the right positions with faces
+that are not the scheme's.
 """
 import math
 import os
@@ -85,6 +88,13 @@ def main():
         verts[len(verts) // 2][1] = float("nan")
     if mode == "wrong-count":
         faces.pop()
+    if mode == "reversed":
+        faces = [list(reversed(t)) for t in faces]
+    if mode == "scrambled":
+        rng = random.Random(5)
+        faces = [rng.sample(range(len(verts)), 3) for _ in faces]
+    if mode == "duplicate-face":
+        faces[-1] = list(faces[0])
     if mode == "garbage":
         with open(out, "w") as f:
             f.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x\n")

@@ -112,6 +112,9 @@ struct RefinementComparison {
     RunOutcome subject_outcome;
     Correspondence subject_match;
     std::string subject_unmatched;  ///< why the subject's vertices match none of core's, when they do not
+    /// How the subject's faces differ from core's (its vertices matched), naming the first face
+    /// only in each, when they do: a failure, as a crash is.
+    std::string subject_topology;
     std::optional<RuleIdentification> rules;
     std::vector<RefinementRun> runs;
     std::optional<CaseWorstVertex> worst_vertex;  ///< when some reference diverges
@@ -120,7 +123,9 @@ struct RefinementComparison {
     bool all_agree() const;
     /// The subject failed (crashed, hung, wrote nothing or something that is not a mesh of
     /// the scheme) or cannot be matched to core's refinement.
-    bool subject_failed() const { return subject_outcome.status != RunStatus::Ok || !subject_unmatched.empty(); }
+    bool subject_failed() const {
+        return subject_outcome.status != RunStatus::Ok || !subject_unmatched.empty() || !subject_topology.empty();
+    }
 };
 
 /// Runs the comparison. Core's refusal is recorded in core_error (the references still run,

@@ -26,6 +26,7 @@ struct ShrinkSymptom {
         ReferenceFails,        ///< the one reference's run ends with `status` (not a refusal or a timeout)
         SubjectFails,          ///< the subject's run ends with `status`
         SubjectUnmatched,      ///< the subject's vertices match none of core's
+        SubjectTopology,       ///< the subject's vertices match core's, its faces do not
         SubjectFollowsNoRule,  ///< no named rule fits the subject's refinement
     };
     Kind kind = Kind::ReferenceDiverges;

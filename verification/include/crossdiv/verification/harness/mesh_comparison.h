@@ -34,6 +34,9 @@ struct MeshComparison {
     TopologyCounts ours, ref;
     bool face_sets_equal = false;
     int faces_only_in_ours = 0, faces_only_in_ref = 0;  ///< as oriented faces, up to rotation
+    /// The first face of each (its index in that mesh, in the order of the faces' listings)
+    /// that the other lacks; -1 when none or when the meshes were not mapped.
+    int first_face_only_in_ours = -1, first_face_only_in_ref = -1;
     double diagonal = 0;                                ///< of our mesh's bounding box
     double max_abs = 0, rms_abs = 0, max_rel = 0, rms_rel = 0;
     std::vector<WorstVertex> worst;  ///< largest distances first

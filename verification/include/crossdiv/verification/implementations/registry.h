@@ -25,6 +25,11 @@ const std::vector<const Implementation*>& implementations();
 /// @throws InputError when another implementation of that name exists.
 void register_reference(std::unique_ptr<Implementation> reference);
 
+/// Refuses a subject's name that is empty or names an implementation (core, a library, a
+/// registered reference): the results would attribute its values to that one, or hide them.
+/// @throws InputError naming the clash.
+void check_subject_name(const std::string& name);
+
 /// Whether an implementation of that name is built into this binary.
 bool is_built(std::string_view name);
 
