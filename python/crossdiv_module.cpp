@@ -9,6 +9,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -64,6 +65,31 @@ py::tuple mesh_tuple(PolyMesh&& mesh) {
     return py::make_tuple(positions_array(std::move(mesh.positions)), faces);
 }
 
+/// One index of F as a whole number: a Python or NumPy integer, or a float with a whole,
+/// finite value (2.0); a bool, a fraction (1.999999999 would be truncated to 1), a NaN or
+/// anything else is refused, naming face `f` and corner `c`.
+long long vertex_index(const py::handle index, size_t f, size_t c) {
+    const std::string where = "F face " + std::to_string(f) + " corner " + std::to_string(c) + ": ";
+    const std::string type = py::str(py::type::handle_of(index).attr("__name__"));
+    if (py::isinstance<py::bool_>(index) || type == "bool_") throw InputError(where + "a bool is not a vertex index");
+    if (py::hasattr(index, "__index__")) {  // int and NumPy's integers
+        try {
+            return py::int_(index.attr("__index__")()).cast<long long>();
+        } catch (const py::error_already_set&) {
+            throw InputError(where + py::str(index).cast<std::string>() + " does not fit a 64-bit index");
+        } catch (const py::cast_error&) {
+            throw InputError(where + py::str(index).cast<std::string>() + " does not fit a 64-bit index");
+        }
+    }
+    if (py::isinstance<py::float_>(index) || type.starts_with("float")) {
+        const double d = index.cast<double>();
+        if (!std::isfinite(d) || d != std::floor(d) || std::abs(d) > 9.0e15)
+            throw InputError(where + py::str(py::repr(index)).cast<std::string>() + " is not a whole number");
+        return static_cast<long long>(d);
+    }
+    throw InputError(where + "a " + type + " is not a vertex index");
+}
+
 /// A mesh from V (n x 3, any real dtype) and F (an m x k integer array, or a sequence of
 /// index sequences). @throws InputError naming the face and corner of an index out of range,
 /// or a non-finite coordinate.
@@ -93,19 +119,24 @@ PolyMesh mesh_from(const py::array_t<double, py::array::c_style | py::array::for
         mesh.add_face(face);
     };
     if (py::isinstance<py::array>(F) && py::array(F).ndim() == 2) {
-        const auto faces = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(F);
-        if (!faces) throw InputError("F must be an array of integer vertex indices");
-        const auto f = faces.unchecked<2>();
-        for (py::ssize_t i = 0; i < faces.shape(0); ++i) {
-            corners.assign(f.data(i, 0), f.data(i, 0) + faces.shape(1));
-            add(i);
+        const py::array array(F);
+        const char kind = array.dtype().kind();
+        if (kind == 'i' || kind == 'u') {
+            const auto faces = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(F);
+            if (!faces) throw InputError("F must be an array of integer vertex indices");
+            const auto f = faces.unchecked<2>();
+            for (py::ssize_t i = 0; i < faces.shape(0); ++i) {
+                corners.assign(f.data(i, 0), f.data(i, 0) + faces.shape(1));
+                add(static_cast<size_t>(i));
+            }
+            return mesh;
         }
-        return mesh;
+        // Any other dtype (floats, bools, strings, objects): index by index, as a sequence.
     }
     size_t i = 0;
     for (const py::handle row : F) {
         corners.clear();
-        for (const py::handle index : row) corners.push_back(index.cast<long long>());
+        for (const py::handle index : row) corners.push_back(vertex_index(index, i, corners.size()));
         add(i++);
     }
     return mesh;

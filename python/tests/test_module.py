@@ -98,6 +98,21 @@ def test_bad_input_names_the_element():
     # An index past 32 bits is named as given, not as it would wrap.
     with pytest.raises(crossdiv.InputError, match="F face 0 corner 1: vertex 1099511627776 is not in V"):
         crossdiv.subdivide(TETRA_V, np.array([[0, 2**40, 2]], dtype=np.int64))
+    # Indices are whole numbers: a fraction would be truncated, a bool or a string is no index.
+    with pytest.raises(crossdiv.InputError, match="F face 0 corner 1: 1.999999999 is not a whole number"):
+        crossdiv.subdivide(TETRA_V, np.array([[0, 1.999999999, 2]]))
+    with pytest.raises(crossdiv.InputError, match="F face 1 corner 0: nan is not a whole number"):
+        crossdiv.subdivide(TETRA_V, [[0, 1, 2], [math.nan, 1, 3]])
+    with pytest.raises(crossdiv.InputError, match="F face 0 corner 0: a bool is not a vertex index"):
+        crossdiv.subdivide(TETRA_V, np.array([[True, False, True]]))
+    with pytest.raises(crossdiv.InputError, match="F face 0 corner 2: a str is not a vertex index"):
+        crossdiv.subdivide(TETRA_V, [[0, 1, "2"]])
+    with pytest.raises(crossdiv.InputError, match="F face 0 corner 0: a str_ is not a vertex index"):
+        crossdiv.subdivide(TETRA_V, np.array([["0", "1", "2"]]))
+    # Whole floats and every integer type are indices.
+    whole = crossdiv.subdivide(TETRA_V, np.asarray(TETRA_F, dtype=np.float64))
+    same = crossdiv.subdivide(TETRA_V, [[np.uint16(a), np.int8(b), int(c)] for a, b, c in TETRA_F])
+    assert np.array_equal(whole[0], same[0])
     with pytest.raises(ValueError, match="V row 3 is not finite"):
         crossdiv.subdivide(np.vstack([TETRA_V[:3], [math.nan, 0, 0]]), TETRA_F)
     with pytest.raises(ValueError, match="unknown scheme"):
@@ -195,6 +210,12 @@ def test_a_subject_that_raises_or_lies_is_recorded_not_raised():
         return V1, F1
     record = crossdiv.compare(TETRA_V, TETRA_F, levels=1, references=["opensubdiv"], subject=non_finite)
     assert record["subject"]["status"] != "ok"
+
+    def fractional_faces(V, F):
+        V1, F1 = loop_once(V, F)
+        return V1, np.asarray(F1) + 0.3
+    record = crossdiv.compare(TETRA_V, TETRA_F, levels=1, references=["opensubdiv"], subject=fractional_faces)
+    assert record["subject"]["status"] != "ok" and "is not a whole number" in record["subject"]["status_message"]
 
 
 def test_the_example_script_names_warrens_rule_and_draws(tmp_path):

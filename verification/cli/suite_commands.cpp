@@ -4,7 +4,9 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <charconv>
 #include <chrono>
+#include <filesystem>
 #include <iostream>
 
 #include "command.h"
@@ -26,13 +28,27 @@ using namespace crossdiv::verification;
 namespace {
 
 /// Parses "I/N". @throws InputError.
+/// "I/N": two whole numbers and nothing else (1/3/4 and 1/3x are refused, not read as 1/3).
 std::pair<int, int> parse_shard(const std::string& s) {
     const size_t slash = s.find('/');
-    try {
-        if (slash != std::string::npos) return {std::stoi(s.substr(0, slash)), std::stoi(s.substr(slash + 1))};
-    } catch (const std::exception&) {
-    }
+    const auto whole = [](std::string_view t, int& out) {
+        const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), out);
+        return !t.empty() && ec == std::errc() && end == t.data() + t.size();
+    };
+    int i = 0, n = 0;
+    if (slash != std::string::npos && whole(std::string_view(s).substr(0, slash), i) && whole(std::string_view(s).substr(slash + 1), n))
+        return {i, n};
     throw InputError("--shard " + s + ": expected I/N, e.g. 2/4");
+}
+
+/// The whole suite's job list in one word (FNV-1a over the job ids, hex): shards of two versions
+/// of a manifest with the same name and job count differ here, and merge refuses them.
+std::string jobs_fingerprint(const std::vector<SuiteJob>& jobs) {
+    uint64_t h = 1469598103934665603ull;
+    for (const SuiteJob& j : jobs) {
+        for (const char c : j.id + "\n") h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+    }
+    return fmt::format("{:016x}", h);
 }
 
 void print_outcome_summary(const SuiteSummary& summary) {
@@ -89,6 +105,7 @@ int run_suite(const std::string& manifest_path, const std::string& out, int jobs
     const nlohmann::json header = {
         {"tool", "crossdiv suite"}, {"schema_version", kResultsSchemaVersion}, {"suite", manifest.name}, {"manifest", manifest.file},
         {"shard", fmt::format("{}/{}", shard_i, shard_n)}, {"jobs_total", all.size()}, {"jobs_run", mine.size()},
+        {"jobs_fingerprint", jobs_fingerprint(all)},
         {"workers", jobs}, {"references", refs}, {"curve_references", curve_refs}, {"operations", operations_json()},
         {"seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()}};
     const SuiteSummary summary = write_suite_outputs(out, header, records);
@@ -138,7 +155,14 @@ struct ReportArgs {
     std::string dir;
     void add_to(CLI::App& app) { app.add_option("dir", dir, "Folder with results.json (and bench.json)")->required(); }
 };
-int report_command(const ReportArgs& a) { return finish_outputs(a.dir, true); }
+int report_command(const ReportArgs& a) {
+    // The report reads results.json: a folder without one is not a suite's output (and the
+    // script's traceback would blame matplotlib).
+    const std::filesystem::path results = std::filesystem::path(a.dir) / "results.json";
+    if (!std::filesystem::is_regular_file(results))
+        throw InputError(results.string() + ": no results.json (not a suite output folder; crossdiv suite --out writes one)");
+    return finish_outputs(a.dir, true);
+}
 
 }  // namespace
 

@@ -131,6 +131,24 @@ expect suite-bad-shard 2 'expected I/N' -- "$crossdiv" suite "$tmp/cli.suite" --
 expect suite-shard-1 0 'shard 1/2 runs 1' -- "$crossdiv" suite "$tmp/cli.suite" --shard 1/2 --out "$tmp/sh1" --no-report
 expect suite-shard-2 0 'shard 2/2 runs 1' -- "$crossdiv" suite "$tmp/cli.suite" --shard 2/2 --out "$tmp/sh2" --no-report
 expect merge 0 'merged 2 folder' -- "$crossdiv" merge "$tmp/sh1" "$tmp/sh2" --out "$tmp/merged"
+expect report-no-results 2 'no results.json \(not a suite output folder' -- "$crossdiv" report "$tmp/own"
+expect suite-shard-extra 2 '--shard 1/3/4: expected I/N' -- "$crossdiv" suite "$tmp/cli.suite" --shard 1/3/4 --out "$tmp/s"
+expect suite-shard-trailing 2 '--shard 1/3x: expected I/N' -- "$crossdiv" suite "$tmp/cli.suite" --shard 1/3x --out "$tmp/s"
+# Shards that are not one run's: a field of the wrong type, a file outside the shard's
+# folders, another version of the manifest; each named, exit 2.
+mkdir -p "$tmp/bad-shard"
+python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); r["cases"][0]["job"]="one"; json.dump(r, open(sys.argv[2],"w"))' \
+  "$tmp/sh2/results.json" "$tmp/bad-shard/results.json"
+expect merge-wrong-type 2 'bad-shard/results.json: case 0: ' -- "$crossdiv" merge "$tmp/sh1" "$tmp/bad-shard" --out "$tmp/m2"
+python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); r["cases"][0]["view"]="../../x.js"; json.dump(r, open(sys.argv[2],"w"))' \
+  "$tmp/sh2/results.json" "$tmp/bad-shard/results.json"
+expect merge-outside 2 "names the file '../../x.js', not one of its views/ or minimal/ folders" -- \
+  "$crossdiv" merge "$tmp/sh1" "$tmp/bad-shard" --out "$tmp/m3"
+python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); r["jobs_fingerprint"]="0"; json.dump(r, open(sys.argv[2],"w"))' \
+  "$tmp/sh2/results.json" "$tmp/bad-shard/results.json"
+expect merge-other-manifest 2 'its jobs are not the other shards' -- "$crossdiv" merge "$tmp/sh1" "$tmp/bad-shard" --out "$tmp/m4"
+python3 -c 'import sys; open(sys.argv[1],"w").write("{\"cases\": " + "[" * 100000 + "]" * 100000 + "}")' "$tmp/bad-shard/results.json"
+expect merge-deep 2 'bad-shard/results.json' -- "$crossdiv" merge "$tmp/sh1" "$tmp/bad-shard" --out "$tmp/m5"
 expect edgecases 0 'genus-3.obj +closed slab with three holes' -- "$crossdiv" edgecases --out "$tmp/edge"
 expect diff-corner 0 'minimal: .* \(1 faces, 3 vertices\)' -- "$crossdiv" diff bundled:open-patch --boundary edge-and-corner --levels 2 --against openmesh --out "$tmp/diff"
 expect diff-reproduces 1 'corner-rule' -- "$crossdiv" compare "$tmp/diff/minimal.obj" --boundary edge-and-corner --levels 2 --against openmesh

@@ -205,6 +205,26 @@ SuiteSummary write_suite_outputs(const std::string& dir, const json& header, con
     return summary;
 }
 
+namespace {
+
+/// results.json nests about ten levels (a case, its runs, their detail, a table's rows).
+constexpr int kMaxResultsDepth = 64;
+
+/// Whether `j` nests deeper than `limit` arrays and objects, found without recursion.
+bool nests_deeper(const json& j, int limit) {
+    std::vector<std::pair<const json*, int>> stack{{&j, 0}};
+    while (!stack.empty()) {
+        const auto [v, depth] = stack.back();
+        stack.pop_back();
+        if (depth > limit) return true;
+        if (v->is_structured())
+            for (const json& child : *v) stack.push_back({&child, depth + 1});
+    }
+    return false;
+}
+
+}  // namespace
+
 SuiteSummary merge_suite_outputs(const std::vector<std::string>& dirs, const std::string& out_dir) {
     json header;
     std::map<int, CaseRecord> cases;
@@ -214,29 +234,64 @@ SuiteSummary merge_suite_outputs(const std::vector<std::string>& dirs, const std
         std::ifstream in(p);
         if (!in) throw InputError(p.string() + ": no results.json (not a suite output folder)");
         json r = json::parse(in, nullptr, false);
-        if (r.is_discarded() || !r.contains("cases")) throw InputError(p.string() + ": not a crossdiv suite results file");
+        if (r.is_discarded() || !r.is_object() || !r.contains("cases") || !r["cases"].is_array())
+            throw InputError(p.string() + ": not a crossdiv suite results file");
+        // Copying or walking a value recurses as deep as it nests: a results file nests a few
+        // levels; one nested thousands deep is refused before anything recurses into it.
+        if (nests_deeper(r, kMaxResultsDepth))
+            throw InputError(p.string() + ": nests deeper than " + std::to_string(kMaxResultsDepth) + " levels: not a crossdiv results file");
+        // A field of the wrong type names the file, as a missing one does.
+        const auto field = [&](const json& j, const char* key, auto fallback) {
+            try {
+                return j.value(key, fallback);
+            } catch (const json::exception&) {
+                throw InputError(p.string() + ": \"" + key + "\" has the wrong type");
+            }
+        };
         if (header.is_null()) {
             header = r;
             header.erase("cases");
             header.erase("summary");
-        } else if (r.value("suite", "") != header.value("suite", "") || r.value("jobs_total", -1) != header.value("jobs_total", -1)) {
-            throw InputError(p.string() + ": suite '" + r.value("suite", "") + "' with " +
-                             std::to_string(r.value("jobs_total", -1)) + " jobs does not match '" +
-                             header.value("suite", "") + "' with " + std::to_string(header.value("jobs_total", -1)));
+        } else if (field(r, "suite", std::string()) != field(header, "suite", std::string()) ||
+                   field(r, "jobs_total", -1) != field(header, "jobs_total", -1)) {
+            throw InputError(p.string() + ": suite '" + field(r, "suite", std::string()) + "' with " +
+                             std::to_string(field(r, "jobs_total", -1)) + " jobs does not match '" +
+                             field(header, "suite", std::string()) + "' with " + std::to_string(field(header, "jobs_total", -1)));
+        } else if (field(r, "jobs_fingerprint", std::string()) != field(header, "jobs_fingerprint", std::string())) {
+            throw InputError(p.string() + ": its jobs are not the other shards' (jobs_fingerprint " +
+                             field(r, "jobs_fingerprint", std::string()) + " against " +
+                             field(header, "jobs_fingerprint", std::string()) + "): two versions of the manifest");
         }
-        shards.push_back(r.value("shard", "?"));
-        for (const json& record : r["cases"]) {
-            CaseRecord c = case_record_from_json(record);
+        shards.push_back(field(r, "shard", std::string("?")));
+        const json& records = r["cases"];
+        for (size_t k = 0; k < records.size(); ++k) {
+            CaseRecord c;
+            try {
+                c = case_record_from_json(records[k]);
+            } catch (const std::exception& e) {
+                throw InputError(p.string() + ": case " + std::to_string(k) + ": " + e.what());
+            }
             if (cases.count(c.job)) throw InputError(p.string() + ": job " + std::to_string(c.job) + " is in two shards");
-            // The 3D view a case names, and its minimal input, move with it.
+            // The 3D view a case names, and its minimal input, move with it: files of the
+            // shard's views/ and minimal/ folders, nothing else.
             std::vector<std::string> files;
-            if (c.detail.contains("view")) files.push_back(c.detail["view"].get<std::string>());
-            if (c.detail.contains("minimal") && c.detail["minimal"].is_object() && !c.detail["minimal"].value("mesh", "").empty())
-                files.push_back(c.detail["minimal"].value("mesh", ""));
+            if (c.detail.contains("view")) files.push_back(c.detail["view"].is_string() ? c.detail["view"].get<std::string>() : "");
+            if (c.detail.contains("minimal") && c.detail["minimal"].is_object() && c.detail["minimal"].contains("mesh") &&
+                c.detail["minimal"]["mesh"] != "")
+                files.push_back(c.detail["minimal"]["mesh"].is_string() ? c.detail["minimal"]["mesh"].get<std::string>() : "");
             for (const std::string& file : files) {
-                const fs::path src = fs::path(d) / file, dst = fs::path(out_dir) / file;
-                fs::create_directories(dst.parent_path());
-                if (fs::absolute(src) != fs::absolute(dst)) fs::copy_file(src, dst, fs::copy_options::overwrite_existing);
+                const fs::path rel(file);
+                const bool inside = !file.empty() && rel.is_relative() &&
+                                    std::none_of(rel.begin(), rel.end(), [](const fs::path& part) { return part == ".."; }) &&
+                                    (file.starts_with("views/") || file.starts_with("minimal/"));
+                if (!inside)
+                    throw InputError(p.string() + ": case " + std::to_string(k) + " names the file '" + file +
+                                     "', not one of its views/ or minimal/ folders");
+                const fs::path src = fs::path(d) / rel, dst = fs::path(out_dir) / rel;
+                std::error_code ec;
+                fs::create_directories(dst.parent_path(), ec);
+                if (fs::absolute(src) != fs::absolute(dst)) fs::copy_file(src, dst, fs::copy_options::overwrite_existing, ec);
+                if (ec) throw InputError(src.string() + ": cannot copy it to " + dst.string() + ": " + ec.message());
             }
             cases.emplace(c.job, std::move(c));
         }
