@@ -327,6 +327,20 @@ expect sweep-subject 0 "subject 'student': 3504 vertices \\(core 3410 welded\\);
   "$crossdiv" sweep surface:vase --subject-name student --subject "$revolve {in} {out}"
 expect sweep-subject-inward 1 "normals reversed \\(96 left zero\\); 6816 of 6912 faces turn against their normals" -- \
   "$crossdiv" sweep surface:vase --subject-name student --subject "$revolve {in} {out} --left-normals"
+# A program's output is read only as a regular file it wrote: a FIFO would block the read past
+# the time limit, a link to /dev/zero would be read without end. An input that is a device is
+# refused by name too.
+expect output-fifo 1 "out.obj is a FIFO, not a regular file" -- \
+  "$crossdiv" compare bundled:tetrahedron --levels 1 --subject "python3 -c 'import os,sys; os.mkfifo(sys.argv[1])' {out}"
+expect output-devzero 1 "out.obj is a symbolic link, not a file the program wrote" -- \
+  "$crossdiv" compare bundled:tetrahedron --levels 1 --subject "python3 -c 'import os,sys; os.symlink(\"/dev/zero\", sys.argv[1])' {out}"
+expect task-output-fifo 1 "is a FIFO, not a regular file" -- \
+  "$crossdiv" normals bundled:torus --subject "python3 -c 'import os,sys; os.mkfifo(sys.argv[2])' {in} {out}"
+ln -s /dev/zero "$tmp/zero.obj"
+expect input-device 2 "zero.obj: a device or socket, not a regular file" -- "$crossdiv" check "$tmp/zero.obj"
+expect input-device-subdivide 2 "zero.obj: a device or socket, not a regular file" -- "$crossdiv" subdivide "$tmp/zero.obj" -o "$tmp/z-out.obj"
+mkfifo "$tmp/pipe.swp"
+expect input-fifo 2 "pipe.swp: a FIFO, not a regular file" -- "$crossdiv" tessellate "$tmp/pipe.swp" -o "$tmp/p.csv"
 # A subject must be there and be named apart from core and the references: an unset variable
 # (--subject "") is refused, not dropped; a subject named core or opensubdiv would be taken for it.
 expect subject-blank 2 "--subject: empty \\(is a variable unset\\?\\)" -- "$crossdiv" compare bundled:tetrahedron --subject ""

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "crossdiv/error.h"
+#include "crossdiv/io/input_file.h"
 #include "crossdiv/io/patch_io.h"
 #include "curve_tokens.h"
 
@@ -36,8 +37,7 @@ std::vector<BezierPatch> read_bez(std::istream& in, const std::string& name) {
 }
 
 std::vector<BezierPatch> read_bez(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw InputError(path + ": cannot open");
+    std::ifstream in = open_input_file(path);
     return read_bez(in, path);
 }
 

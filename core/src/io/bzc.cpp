@@ -5,6 +5,7 @@
 
 #include "crossdiv/curves/bezier.h"
 #include "crossdiv/error.h"
+#include "crossdiv/io/input_file.h"
 #include "crossdiv/io/curve_io.h"
 #include "curve_tokens.h"
 
@@ -34,8 +35,7 @@ CurveFile read_bzc(std::istream& in, const std::string& name) {
 }
 
 CurveFile read_bzc(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw InputError(path + ": cannot open");
+    std::ifstream in = open_input_file(path);
     return read_bzc(in, path);
 }
 

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "crossdiv/error.h"
+#include "crossdiv/io/input_file.h"
 
 namespace crossdiv {
 namespace {
@@ -27,8 +28,7 @@ PolyMesh read_mesh(const std::string& path) {
     const std::string ext = extension(path);
     if (ext != "obj" && ext != "off" && ext != "ply")
         throw InputError(path + ": unknown mesh format '." + ext + "' (expected .obj, .off or .ply)");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path + ": cannot open file");
+    std::ifstream in = open_input_file(path);
     return ext == "obj" ? read_obj(in, path) : ext == "off" ? read_off(in, path) : read_ply(in, path);
 }
 

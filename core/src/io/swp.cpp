@@ -6,6 +6,7 @@
 #include <string>
 
 #include "crossdiv/error.h"
+#include "crossdiv/io/input_file.h"
 #include "crossdiv/io/curve_io.h"
 #include "curve_tokens.h"
 
@@ -181,8 +182,7 @@ CurveFile read_swp(std::istream& in, const std::string& name) {
 }
 
 CurveFile read_swp(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw InputError(path + ": cannot open");
+    std::ifstream in = open_input_file(path);
     return read_swp(in, path);
 }
 

@@ -7,6 +7,7 @@
 #include "crossdiv/curves/bezier.h"
 #include "crossdiv/error.h"
 #include "crossdiv/mesh/tri_mesh.h"
+#include "crossdiv/verification/implementations/program_implementation.h"
 #include "crossdiv/verification/implementations/task_program.h"
 #include "harness/sci.h"
 
@@ -20,6 +21,7 @@ constexpr double kLevelTolerance = 1e-5;
 
 /// The levels the program wrote, `dim` numbers per point. @throws ImplementationFailure naming file:line.
 std::vector<std::vector<Vec3>> read_levels(const std::string& path, int dim) {
+    require_regular_output(path, "out.txt");
     std::ifstream in(path);
     if (!in) throw ImplementationFailure(RunStatus::NoOutput, "no output file out.txt");
     std::vector<std::vector<Vec3>> levels;

@@ -14,6 +14,7 @@
 #include "crossdiv/error.h"
 #include "crossdiv/mesh/tri_mesh.h"
 #include "crossdiv/verification/harness/vector_angle.h"
+#include "crossdiv/verification/implementations/program_implementation.h"
 #include "crossdiv/verification/implementations/task_program.h"
 
 namespace crossdiv::verification {
@@ -53,6 +54,7 @@ std::optional<int> curve_index(std::string_view cell) {
 
 /// The subject's table, by record index. @throws ImplementationFailure naming file:line.
 std::map<int, std::vector<Sample>> read_table(const std::string& path, const std::string& shown) {
+    require_regular_output(path, shown);
     std::ifstream in(path);
     if (!in) throw ImplementationFailure(RunStatus::NoOutput, "no output file " + shown);
     std::string line;

@@ -9,6 +9,7 @@
 #include "crossdiv/mesh/vertex_normals.h"
 #include "crossdiv/verification/harness/temporary_folder.h"
 #include "crossdiv/verification/harness/vector_angle.h"
+#include "crossdiv/verification/implementations/program_implementation.h"
 #include "crossdiv/verification/implementations/task_program.h"
 
 namespace crossdiv::verification {
@@ -24,6 +25,7 @@ double normal_angle_deg(const Vec3& a, const Vec3& b) { return vector_angle(a, b
 /// The normals the program wrote: its `vn` lines, or, without any, its lines of three numbers.
 /// @throws ImplementationFailure naming file:line.
 std::vector<Vec3> read_normals(const std::string& path, const std::string& shown) {
+    require_regular_output(path, shown);
     std::ifstream in(path);
     if (!in) throw ImplementationFailure(RunStatus::NoOutput, "no output file " + shown);
     std::vector<Vec3> vn, plain;

@@ -298,9 +298,24 @@ void check_program_result(const PolyMesh& result, Scheme scheme, const PolyMesh&
                                                            " makes " + makes + " from this input at level " + std::to_string(levels));
 }
 
+void require_regular_output(const std::string& path, const std::string& shown) {
+    std::error_code ec;
+    const fs::file_status st = fs::symlink_status(path, ec);
+    if (ec || !fs::exists(st)) throw ImplementationFailure(RunStatus::NoOutput, "no output file " + shown);
+    if (fs::is_symlink(st))
+        throw ImplementationFailure(RunStatus::UnreadableOutput, shown + " is a symbolic link, not a file the program wrote");
+    if (!fs::is_regular_file(st))
+        throw ImplementationFailure(RunStatus::UnreadableOutput, shown + " is " + (fs::is_fifo(st) ? "a FIFO" : fs::is_directory(st) ? "a folder" : "a device or socket") +
+                                                                 ", not a regular file");
+    const std::uintmax_t bytes = fs::file_size(path, ec);
+    if (!ec && bytes > kMaxProgramOutputBytes)
+        throw ImplementationFailure(RunStatus::UnreadableOutput, shown + " has " + std::to_string(bytes) + " bytes, more than the " +
+                                                                 std::to_string(kMaxProgramOutputBytes) + " a result may have");
+}
+
 PolyMesh read_program_result(const std::string& path, const std::string& shown_name) {
     std::error_code ec;
-    if (!fs::exists(path, ec)) throw ImplementationFailure(RunStatus::NoOutput, "no output file " + shown_name);
+    require_regular_output(path, shown_name);
     if (fs::file_size(path, ec) == 0 && !ec) throw ImplementationFailure(RunStatus::NoOutput, "empty output file " + shown_name);
     std::ifstream in(path, std::ios::binary);
     if (!in) throw ImplementationFailure(RunStatus::NoOutput, "cannot open output file " + shown_name);

@@ -16,12 +16,14 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "crossdiv/verification/implementations/command_template.h"
 #include "crossdiv/verification/implementations/implementation.h"
+#include "crossdiv/verification/implementations/output_size.h"
 
 namespace crossdiv::verification {
 
@@ -93,6 +95,17 @@ adapters::LevelTrace trace_from_input(const PolyMesh& mesh, const RefineRequest&
 /// @throws ImplementationFailure: NoOutput (missing or empty), UnreadableOutput (file:line),
 ///         NonFiniteOutput.
 PolyMesh read_program_result(const std::string& path, const std::string& shown_name);
+
+/// A program's output is read only if it is a regular file it wrote, of at most this many bytes:
+/// four times the OBJ text of the largest level a comparison takes (kMaxComparedFaces faces
+/// and their vertices, about 60 bytes each).
+inline constexpr std::uintmax_t kMaxProgramOutputBytes = 4ull * 60 * 3 * static_cast<std::uintmax_t>(kMaxComparedFaces);
+
+/// Before a program's output at `path` (`shown` in messages) is opened: it exists (NoOutput),
+/// and is a regular file, not a symbolic link, a FIFO (which would block the read past the
+/// time limit) or a device, of at most kMaxProgramOutputBytes (UnreadableOutput).
+/// @throws ImplementationFailure with that status.
+void require_regular_output(const std::string& path, const std::string& shown);
 
 /// Every check make_program_implementation makes of `spec` (name, time limit, rule names,
 /// command and setup templates, declared rules), without running anything.
