@@ -128,7 +128,18 @@ int run_tessellate(const TessellateArgs& a) {
     std::vector<Tessellated> curves;
     for (size_t i = 0; i < file.curves.size(); ++i) {
         const CurveRecord& r = file.curves[i];
-        Tessellated t{r.label(static_cast<int>(i)), &r, tessellate_record(r, o), {}, 0, 0};
+        // A record that cannot be tessellated (a curve standing still, an overflow) is named
+        // by its file and line.
+        const auto poly = [&] {
+            try {
+                return tessellate_record(r, o);
+            } catch (const ParseError&) {
+                throw;
+            } catch (const InputError& e) {
+                throw ParseError(file.path, r.line, r.label(static_cast<int>(i)) + ": " + e.what());
+            }
+        };
+        Tessellated t{r.label(static_cast<int>(i)), &r, poly(), {}, 0, 0};
         if (a.normal_side == "right" && r.dim == 2) {
             const std::vector<Frame> right =
                 curve_frames(t.poly.positions, t.poly.tangents, FrameMethod::Planar, NormalSide::Right);

@@ -341,6 +341,12 @@ expect input-device 2 "zero.obj: a device or socket, not a regular file" -- "$cr
 expect input-device-subdivide 2 "zero.obj: a device or socket, not a regular file" -- "$crossdiv" subdivide "$tmp/zero.obj" -o "$tmp/z-out.obj"
 mkfifo "$tmp/pipe.swp"
 expect input-fifo 2 "pipe.swp: a FIFO, not a regular file" -- "$crossdiv" tessellate "$tmp/pipe.swp" -o "$tmp/p.csv"
+# A curve that stands still (coincident control points) has no tangent and no frame: refused,
+# naming the file, the line and why (not an overflow), under either frame method.
+printf 'bez3 dot 4 4\n[1 1 1]\n[1 1 1]\n[1 1 1]\n[1 1 1]\n' > "$tmp/dot.swp"
+expect still-curve-rmf 2 "dot.swp:1: dot: sample 0 .*the curve stands still there" -- "$crossdiv" tessellate "$tmp/dot.swp" -o "$tmp/dot.csv" --frames rmf
+expect still-curve-recursive 2 "the curve stands still there \\(its control points coincide\\), so it has no tangent and no frame" -- \
+  "$crossdiv" tessellate "$tmp/dot.swp" -o "$tmp/dot.csv" --frames recursive
 # A subject must be there and be named apart from core and the references: an unset variable
 # (--subject "") is refused, not dropped; a subject named core or opensubdiv would be taken for it.
 expect subject-blank 2 "--subject: empty \\(is a variable unset\\?\\)" -- "$crossdiv" compare bundled:tetrahedron --subject ""

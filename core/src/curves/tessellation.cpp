@@ -49,6 +49,10 @@ void require_segments(const BezierChain& chain) {
     if (chain.num_segments() == 0) throw InputError("the curve has no segments to tessellate");
 }
 
+/// Below this magnitude of the control points the curve's sums cannot overflow (squares and
+/// cubic weights stay far under DBL_MAX): a non-finite tangent there is a curve standing still.
+constexpr double kDegenerateCurveMagnitude = 1e100;
+
 void emit(Polyline& out, const BezierPointTangent& pt, double u) {
     out.positions.push_back(pt.position);
     out.tangents.push_back(pt.tangent);
@@ -62,13 +66,18 @@ void finish(const BezierChain& chain, Polyline& out) {
     const int last = chain.num_segments() - 1;
     emit(out, bezier_point_tangent(chain.segment(last), 1.0), static_cast<double>(last + 1));
     out.normals = curve_normals(out.positions, out.tangents);
-    for (int i = 0; i < out.size(); ++i)
-        if (!out.positions[i].allFinite() || !out.tangents[i].allFinite() || !out.normals[i].allFinite())
-            throw InputError("sample " + std::to_string(i) + " at u = " + std::to_string(out.params[i]) +
-                             " (segment " + std::to_string(std::min(static_cast<int>(out.params[i]), last)) +
-                             "): its position, tangent or normal is not finite; the control points (up to " +
-                             std::to_string(chain.points.empty() ? 0.0 : max_magnitude(chain.points)) +
-                             " in magnitude) overflow double in the curve's sums, so scale the curve down");
+    const double magnitude = chain.points.empty() ? 0.0 : max_magnitude(chain.points);
+    for (int i = 0; i < out.size(); ++i) {
+        if (out.positions[i].allFinite() && out.tangents[i].allFinite() && out.normals[i].allFinite()) continue;
+        const std::string where = "sample " + std::to_string(i) + " at u = " + std::to_string(out.params[i]) + " (segment " +
+                                  std::to_string(std::min(static_cast<int>(out.params[i]), last)) + "): ";
+        // A finite position of a curve of ordinary size whose tangent is not: the curve
+        // stands still there (coincident control points), and has no direction to frame.
+        if (out.positions[i].allFinite() && magnitude < kDegenerateCurveMagnitude)
+            throw InputError(where + "the curve stands still there (its control points coincide), so it has no tangent and no frame");
+        throw InputError(where + "its position, tangent or normal is not finite; the control points (up to " +
+                         std::to_string(magnitude) + " in magnitude) overflow double in the curve's sums, so scale the curve down");
+    }
 }
 
 /// Unit tangent at the start of a piece: the first control point that differs from c_0
