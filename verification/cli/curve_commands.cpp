@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 #include "crossdiv/verification/harness/json_text.h"
 #include "crossdiv/curves/bezier.h"
@@ -248,8 +249,10 @@ void CasteljauArgs::add_to(CLI::App& app) {
 
 int run_casteljau(const CasteljauArgs& a) {
     if (!(a.t >= 0 && a.t <= 1)) throw InputError("--t must be in [0, 1], got " + fmt::format("{}", a.t));
-    const TemporaryFolder folder("curve-input");
-    const CurveFile file = a.subject.command.empty() ? load_curve_input(a.input) : read_curve_file(task_input_file(a.input, folder));
+    // A subject is given a file: a bundled curve is written out for it (and read back by core).
+    std::optional<TemporaryFolder> folder;
+    if (!a.subject.command.empty()) folder.emplace("curve-input");
+    const CurveFile file = folder ? read_curve_file(task_input_file(a.input, *folder)) : load_curve_input(a.input);
     if (!a.subject.command.empty()) {
         const CasteljauSubjectComparison c =
             compare_casteljau_subject(a.input, file, a.t, a.subject.name, a.subject.command, a.subject.timeout);

@@ -163,25 +163,29 @@ double signed_volume(const TriMesh& mesh) {
     return six_v / 6;
 }
 
+std::uint64_t edge_key(int a, int b) {
+    return std::uint64_t{static_cast<std::uint32_t>(std::min(a, b))} << 32 | static_cast<std::uint32_t>(std::max(a, b));
+}
+
+int unpaired_edge_count(std::vector<std::uint64_t> edge_keys) {
+    // After sorting, a key seen once is a boundary edge.
+    std::sort(edge_keys.begin(), edge_keys.end());
+    int unpaired = 0;
+    for (size_t i = 0; i < edge_keys.size();) {
+        size_t j = i;
+        while (j < edge_keys.size() && edge_keys[j] == edge_keys[i]) ++j;
+        unpaired += j - i == 1;
+        i = j;
+    }
+    return unpaired;
+}
+
 int boundary_edge_count(const TriMesh& mesh) {
-    // Each undirected edge as one 64-bit key; after sorting, a key seen once is a boundary.
     std::vector<std::uint64_t> keys;
     keys.reserve(mesh.triangles.size() * 3);
     for (const Triangle& t : mesh.triangles)
-        for (int j = 0; j < 3; ++j) {
-            const auto a = static_cast<std::uint32_t>(std::min(t[j], t[(j + 1) % 3]));
-            const auto b = static_cast<std::uint32_t>(std::max(t[j], t[(j + 1) % 3]));
-            keys.push_back(std::uint64_t{a} << 32 | b);
-        }
-    std::sort(keys.begin(), keys.end());
-    int boundary = 0;
-    for (size_t i = 0; i < keys.size();) {
-        size_t j = i;
-        while (j < keys.size() && keys[j] == keys[i]) ++j;
-        boundary += j - i == 1;
-        i = j;
-    }
-    return boundary;
+        for (int j = 0; j < 3; ++j) keys.push_back(edge_key(t[j], t[(j + 1) % 3]));
+    return unpaired_edge_count(std::move(keys));
 }
 
 }  // namespace crossdiv

@@ -159,7 +159,7 @@ int faces_against_normals(const PolyMesh& mesh, std::span<const Vec3> normals, d
 
 int welded_boundary_edges(const PolyMesh& mesh, double tol) {
     const std::vector<int> weld = weld_classes(mesh.positions, tol);
-    std::vector<uint64_t> edges;  // (smaller, larger) welded vertex of every edge, packed
+    std::vector<std::uint64_t> edges;  // every edge of the welded faces, as edge_key
     edges.reserve(mesh.face_vertices.size());
     std::vector<int> corners;
     for (int f = 0; f < mesh.num_faces(); ++f) {
@@ -170,20 +170,9 @@ int welded_boundary_edges(const PolyMesh& mesh, double tol) {
         }
         while (corners.size() > 1 && corners.back() == corners.front()) corners.pop_back();
         if (corners.size() < 3) continue;  // collapsed by welding (a pole's triangle): no side, no edges
-        for (size_t i = 0; i < corners.size(); ++i) {
-            const auto [a, b] = std::minmax(corners[i], corners[(i + 1) % corners.size()]);
-            edges.push_back(static_cast<uint64_t>(a) << 32 | static_cast<uint32_t>(b));
-        }
+        for (size_t i = 0; i < corners.size(); ++i) edges.push_back(edge_key(corners[i], corners[(i + 1) % corners.size()]));
     }
-    std::sort(edges.begin(), edges.end());
-    int boundary = 0;
-    for (size_t i = 0; i < edges.size();) {
-        size_t j = i;
-        while (j < edges.size() && edges[j] == edges[i]) ++j;
-        boundary += j - i == 1;
-        i = j;
-    }
-    return boundary;
+    return unpaired_edge_count(std::move(edges));
 }
 
 bool SurfaceSubjectComparison::passed() const {

@@ -5,6 +5,7 @@
 /// welding that joins vertices which coincide (patch boundaries, poles, seams).
 
 #include <Eigen/Geometry>  // cross products
+#include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
@@ -62,5 +63,12 @@ double signed_volume(const TriMesh& mesh);
 /// Number of edges used by exactly one triangle (0 for a watertight mesh), counting each
 /// undirected edge once.
 int boundary_edge_count(const TriMesh& mesh);
+
+/// The undirected edge (a, b) as one key, the smaller end in the high half.
+std::uint64_t edge_key(int a, int b);
+
+/// How many keys occur exactly once in `edge_keys` (sorted here): the boundary edges of the
+/// faces whose edges they are.
+int unpaired_edge_count(std::vector<std::uint64_t> edge_keys);
 
 }  // namespace crossdiv
