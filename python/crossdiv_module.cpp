@@ -10,6 +10,7 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <csignal>
 #include <memory>
 #include <optional>
 #include <string>
@@ -20,8 +21,11 @@
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/verification/comparisons/refinement_comparison.h"
+#include "crossdiv/verification/harness/isolate.h"
 #include "crossdiv/verification/harness/json_text.h"
 #include "crossdiv/verification/implementations/callback_implementation.h"
+#include "crossdiv/verification/implementations/isolated_refine.h"
+#include "crossdiv/verification/implementations/output_size.h"
 #include "crossdiv/verification/implementations/registry.h"
 
 namespace py = pybind11;
@@ -180,9 +184,32 @@ std::unique_ptr<Implementation> python_subject(const std::string& name, Scheme s
     return make_callback_implementation(name, {scheme}, std::move(refine));
 }
 
+/// Whether the thread forking for run_isolated holds the interpreter's lock: only then does the
+/// child run Python (a subject) and need the interpreter made whole again; a library reference
+/// forks with the lock released and its child never touches Python.
+thread_local bool forking_with_python = false;
+
+void before_fork() {
+    forking_with_python = PyGILState_Check() != 0;
+    if (forking_with_python) PyOS_BeforeFork();
+}
+void after_fork_in_parent() {
+    if (forking_with_python) PyOS_AfterFork_Parent();
+}
+void after_fork_in_child() {
+    if (forking_with_python) {
+        PyOS_AfterFork_Child();
+        return;
+    }
+    // A library's child never runs Python: its crash is the outcome, told by the signal, not a
+    // "Fatal Python error" from the interpreter's fault handler on the caller's terminal.
+    for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) std::signal(sig, SIG_DFL);
+}
+
 }  // namespace
 
 PYBIND11_MODULE(crossdiv, m) {
+    set_fork_hooks({before_fork, after_fork_in_parent, after_fork_in_child});
     m.doc() = "crossdiv: subdivision and curves, with the references side by side (numpy in and out).";
     py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
 
@@ -241,22 +268,26 @@ PYBIND11_MODULE(crossdiv, m) {
     m.def("subdivide",
           [](const py::array_t<double, py::array::c_style | py::array::forcecast>& V, const py::object& F,
              const std::string& scheme, int levels, std::optional<std::string> weights, std::optional<std::string> boundary,
-             const std::string& impl) {
+             const std::string& impl, long long max_faces, double timeout) {
               const RefineRequest req = request_for(scheme, levels, weights, boundary);
               const Implementation& implementation = find_implementation(impl);
               PolyMesh mesh = mesh_from(V, F);
+              require_refined_size(mesh, req.scheme, levels, max_faces, "subdivide", "max_faces");
               PolyMesh out;
               {
-                  py::gil_scoped_release unlocked;  // the references are C++ and do not touch Python
-                  out = implementation.refine_last(mesh, req);
+                  py::gil_scoped_release unlocked;  // core and the references are C++ and do not touch Python
+                  out = std::move(refine_isolated(implementation, mesh, req, "the mesh", timeout).back());
               }
               return mesh_tuple(std::move(out));
           },
           py::arg("V"), py::arg("F"), py::arg("scheme") = "loop", py::arg("levels") = 1, py::arg("weights") = py::none(),
-          py::arg("boundary") = py::none(), py::arg("impl") = "core",
+          py::arg("boundary") = py::none(), py::arg("impl") = "core", py::arg("max_faces") = kMaxRefinedFaces,
+          py::arg("timeout") = 120.0,
           "Subdivides (V, F) by `levels` levels of `scheme` (loop, catmull-clark, doo-sabin, sqrt3, butterfly, "
           "modified-butterfly) with core or a reference (impl: core, opensubdiv, openmesh, cgal, ...), which applies "
-          "the closest rule it has. Returns (V, F) in that implementation's numbering.");
+          "the closest rule it has. Returns (V, F) in that implementation's numbering. A result of more than "
+          "`max_faces` faces is refused before any work (crossdiv subdivide's --max-faces). A reference runs in a "
+          "child process with `timeout` seconds: its crash, hang or refusal raises crossdiv.InputError naming it.");
     m.def("subdivision_matrix",
           [](const py::array_t<double, py::array::c_style | py::array::forcecast>& V, const py::object& F,
              const std::string& weights, const std::string& boundary) {

@@ -218,6 +218,53 @@ def test_a_subject_that_raises_or_lies_is_recorded_not_raised():
     assert record["subject"]["status"] != "ok" and "is not a whole number" in record["subject"]["status_message"]
 
 
+def test_a_python_subject_is_not_starved_by_busy_threads():
+    # The forked child must own the interpreter's lock even when another thread held or wanted it
+    # at the fork; before, 16 of 20 runs with three busy threads were recorded as timeouts.
+    import threading
+    stop = threading.Event()
+
+    def busy():
+        x = 0
+        while not stop.is_set():
+            x += 1
+    threads = [threading.Thread(target=busy) for _ in range(3)]
+    for t in threads:
+        t.start()
+    try:
+        statuses = [crossdiv.compare(TETRA_V, TETRA_F, levels=1, references=["opensubdiv"], subject=loop_once,
+                                     timeout=30)["subject"]["status"] for _ in range(10)]
+    finally:
+        stop.set()
+        for t in threads:
+            t.join()
+    assert statuses == ["ok"] * 10
+
+
+# A tetrahedron and one vertex no face uses: CGAL's Loop dereferences the isolated vertex's
+# missing halfedge (SIGSEGV in Debian 12's CGAL 5.5).
+ISOLATED_V = np.vstack([TETRA_V, [5, 5, 5]])
+
+
+def test_a_library_that_crashes_raises_an_error_naming_it():
+    with pytest.raises(crossdiv.InputError, match="cgal failed on the mesh: crashed"):
+        crossdiv.subdivide(ISOLATED_V, TETRA_F, impl="cgal")
+    # The interpreter lives on, and core takes the same mesh.
+    V, F = crossdiv.subdivide(ISOLATED_V, TETRA_F)
+    assert V.shape == (11, 3) and F.shape == (16, 3)
+
+
+def test_subdivide_refuses_a_result_past_its_face_bound():
+    # Two tetrahedra, 12 levels: 8 * 4^12 = 134M faces > 64 Mi (before: 14 GB, then MemoryError), refused
+    # before any work, as crossdiv subdivide --max-faces does.
+    with pytest.raises(crossdiv.InputError, match="12 levels would produce 134217728 faces, over the limit of 67108864 "
+                                                  r"\(max_faces\)"):
+        crossdiv.subdivide(np.vstack([TETRA_V, TETRA_V + 3]), np.vstack([TETRA_F, TETRA_F + 4]), levels=12)
+    with pytest.raises(crossdiv.InputError, match="max_faces"):
+        crossdiv.subdivide(TETRA_V, TETRA_F, levels=3, max_faces=255)
+    assert crossdiv.subdivide(TETRA_V, TETRA_F, levels=3, max_faces=256)[1].shape == (256, 3)
+
+
 def test_the_example_script_names_warrens_rule_and_draws(tmp_path):
     mesh, png = str(tmp_path / "tetra.off"), str(tmp_path / "plot.png")
     crossdiv.write_mesh(mesh, TETRA_V * 0.5, TETRA_F)

@@ -21,6 +21,7 @@
 #include "crossdiv/verification/comparisons/refinement_comparison.h"
 #include "crossdiv/verification/comparisons/shrink.h"
 #include "crossdiv/verification/implementations/inputs.h"
+#include "crossdiv/verification/implementations/isolated_refine.h"
 #include "crossdiv/verification/implementations/output_size.h"
 #include "crossdiv/verification/implementations/tag_rules.h"
 #include "crossdiv/subdiv/hole_faces.h"
@@ -110,7 +111,7 @@ struct SchemeArgs {
 /// Loop on a crease-tagged input: core's generic step, or OpenSubdiv, the one reference with
 /// crease rules; the others (and split-and-flip) have none and refuse.
 int run_loop_subdivide_creased(const std::string& in, const PolyMesh& input, const SchemeArgs& s,
-                               const std::string& impl, const std::string& out, const std::string& color) {
+                               const std::string& impl, const std::string& out, const std::string& color, double timeout) {
     LoopOptions o = s.options();
     o.creasing = crease_method(s.creasing, input);
     s.require_size(input, in);
@@ -122,13 +123,9 @@ int run_loop_subdivide_creased(const std::string& in, const PolyMesh& input, con
     if (impl != "split-flip" && support && support->creases) {
         if (!chosen.applies(Scheme::Loop, request.rule))
             throw InputError(impl + " has no Loop with weights=" + std::string(to_string(o.weights)));
-        try {
-            const adapters::LevelTrace levels = chosen.refine(input, request);
-            result = levels.back();
-            if (color == "age") color_by_age(result, s.scheme, vertex_counts(levels));
-        } catch (const adapters::Rejected& e) {
-            throw InputError(impl + " refused " + in + ": " + e.what());
-        }
+        const adapters::LevelTrace levels = refine_isolated(chosen, input, request, in, timeout);
+        result = levels.back();
+        if (color == "age") color_by_age(result, s.scheme, vertex_counts(levels));
     } else {
         throw InputError(in + " has " + input.creases.describe() + "; " + impl +
                          " has no crease or hole rules (core and opensubdiv have; drop the tags to compare the smooth "
@@ -153,14 +150,14 @@ SchemeArgs with_tag_rules(const SchemeArgs& flags, PolyMesh& input) {
 }
 
 int run_subdivide(const std::string& in, const SchemeArgs& flags, const std::string& impl, const std::string& out,
-                  const std::string& color) {
+                  const std::string& color, double timeout) {
     if (flags.scheme != "loop") {
         if (impl == "split-flip") throw InputError("split-flip is Loop's method; " + flags.scheme + " has none");
-        return run_scheme_subdivide(in, flags.poly(), impl, out, color);
+        return run_scheme_subdivide(in, flags.poly(), impl, out, color, timeout);
     }
     PolyMesh input = load_input(in, flags.tag_policy());
     const SchemeArgs s = with_tag_rules(flags, input);
-    if (!input.creases.empty()) return run_loop_subdivide_creased(in, input, s, impl, out, color);
+    if (!input.creases.empty()) return run_loop_subdivide_creased(in, input, s, impl, out, color, timeout);
     s.require_size(input, in);
     const TriMesh mesh = to_tri_mesh(input, "Loop subdivision");
     PolyMesh result;
@@ -183,7 +180,7 @@ int run_subdivide(const std::string& in, const SchemeArgs& flags, const std::str
         request.rule.loop = s.options();
         if (!ref.applies(Scheme::Loop, request.rule))
             throw InputError(impl + " has no Loop with weights=" + s.weights + " boundary=" + std::string(to_string(s.options().boundary)));
-        result = ref.refine(input, request).back();
+        result = std::move(refine_isolated(ref, input, request, in, timeout).back());
     }
     if (color == "age") {
         // The fast Loop driver returns the last level only: the earlier levels' vertex counts
@@ -389,6 +386,7 @@ int run_diff(const std::string& in, const SchemeArgs& flags, const std::string& 
 
 struct SubdivideArgs {
     std::string input, impl = "core", out, color = "none";
+    double timeout = 120;
     SchemeArgs scheme;
     void add_to(CLI::App& app) {
         app.add_option("input", input, "Mesh file (.obj, .off) or bundled:NAME")->required();
@@ -402,6 +400,11 @@ struct SubdivideArgs {
                        "newest yellow; OBJ 'v x y z r g b'), core and split-flip only")
             ->check(CLI::IsMember({"none", "age"}))
             ->capture_default_str();
+        app.add_option("--timeout", timeout,
+                       "Seconds a reference library may run (in a child process, so that its crash or hang is "
+                       "an error naming it) before it counts as hung")
+            ->check(CLI::PositiveNumber)
+            ->capture_default_str();
     }
 };
 int subdivide_command(const SubdivideArgs& a) {
@@ -410,7 +413,7 @@ int subdivide_command(const SubdivideArgs& a) {
                          a.impl + " numbers its vertices its own way");
     if (a.color == "age" && !a.out.ends_with(".obj"))
         throw InputError("--color age writes vertex colours as OBJ 'v x y z r g b'; " + a.out + " is not an .obj file");
-    return run_subdivide(a.input, a.scheme, a.impl, a.out, a.color);
+    return run_subdivide(a.input, a.scheme, a.impl, a.out, a.color, a.timeout);
 }
 
 /// The programs of a run: a subject in core's place and references added to the registry.

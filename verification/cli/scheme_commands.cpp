@@ -15,6 +15,7 @@
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/verification/properties/butterfly_properties.h"
 #include "crossdiv/verification/implementations/inputs.h"
+#include "crossdiv/verification/implementations/isolated_refine.h"
 #include "crossdiv/verification/implementations/output_size.h"
 #include "crossdiv/verification/implementations/tag_rules.h"
 #include "crossdiv/subdiv/hole_faces.h"
@@ -66,7 +67,7 @@ std::vector<size_t> vertex_counts(const std::vector<PolyMesh>& levels) {
 }
 
 int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const std::string& impl, const std::string& out,
-                         const std::string& color) {
+                         const std::string& color, double timeout) {
     const Scheme scheme = scheme_from_string(s.scheme);
     PolyMesh mesh = load_input(in, s.unknown_tags);
     const SchemeRule rule_asked = rule_with_tags(scheme, s, mesh);
@@ -80,11 +81,7 @@ int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const s
     } else {
         const Implementation& ref = *select_references(scheme, {impl}).front();
         const std::string rule = rule_name(scheme, ref.closest_rule(scheme, rule_asked));
-        try {
-            result = ref.refine(mesh, {scheme, rule_asked, s.levels}).back();
-        } catch (const adapters::Rejected& e) {
-            throw InputError(impl + " refused " + in + ": " + e.what());
-        }
+        result = std::move(refine_isolated(ref, mesh, {scheme, rule_asked, s.levels}, in, timeout).back());
         if (rule != asked) fmt::print("note: {} applies the {} boundary rule, not {}\n", impl, rule, asked);
     }
     // Hole faces were refined around; they are not emitted (OpenSubdiv's convention).

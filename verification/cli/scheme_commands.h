@@ -27,9 +27,10 @@ struct PolySchemeArgs {
 };
 
 /// `crossdiv subdivide IN --scheme catmull-clark --impl core|opensubdiv|openmesh|cgal -o OUT`;
-/// `color` "age" colours the vertices by the level they were born at (color_by_age).
+/// `color` "age" colours the vertices by the level they were born at (color_by_age). A reference
+/// runs isolated with `timeout` seconds (refine_isolated).
 int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const std::string& impl, const std::string& out,
-                         const std::string& color);
+                         const std::string& color, double timeout);
 
 /// `subdivide --color age`: colours `result`, the last of core's levels of `scheme`, by the
 /// level each vertex was born at (crossdiv/subdiv/vertex_age.h), from the vertex count of

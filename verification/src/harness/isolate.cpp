@@ -121,7 +121,14 @@ std::string tail_of(FILE* f) {
     return stderr_summary(std::move(s));
 }
 
+ForkHooks& fork_hooks() {
+    static ForkHooks hooks;
+    return hooks;
+}
+
 }  // namespace
+
+void set_fork_hooks(const ForkHooks& hooks) { fork_hooks() = hooks; }
 
 const char* to_string(RunStatus status) {
     switch (status) {
@@ -165,9 +172,12 @@ IsolatedTrace run_isolated(const std::function<adapters::LevelTrace()>& fn, doub
     }
     std::fflush(nullptr);
     const auto t0 = Clock::now();
+    const ForkHooks hooks = fork_hooks();
+    if (hooks.before) hooks.before();
     const pid_t pid = fork();
     if (pid == 0) {
         // Child: run, write the answer, leave without running the parent's atexit handlers.
+        if (hooks.in_child) hooks.in_child();
         dup2(fileno(errors), STDERR_FILENO);
         limit_memory();
         const IsolatedTrace r = run_here(fn);
@@ -177,6 +187,7 @@ IsolatedTrace run_isolated(const std::function<adapters::LevelTrace()>& fn, doub
         std::fflush(result);
         _exit(0);
     }
+    if (hooks.in_parent) hooks.in_parent();
     IsolatedTrace r;
     if (pid < 0) {
         std::fclose(result);

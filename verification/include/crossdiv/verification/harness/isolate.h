@@ -104,6 +104,18 @@ struct IsolatedTrace {
 /// memory as address space.
 inline constexpr long long kIsolatedMemoryBytes = 6LL << 30;
 
+/// What a host process does around the forks of run_isolated so that the child can run its code.
+/// The Python module sets them to Python's own PyOS_BeforeFork / PyOS_AfterFork_*: a Python
+/// thread that held or wanted the interpreter's lock at the fork does not exist in the child, and
+/// without them the child waits for it forever (a subject recorded as a timeout).
+struct ForkHooks {
+    void (*before)() = nullptr;     ///< in the parent, just before fork()
+    void (*in_parent)() = nullptr;  ///< in the parent, just after (whether or not the fork worked)
+    void (*in_child)() = nullptr;   ///< in the child, first thing
+};
+/// Sets the hooks of every later run_isolated in this process.
+void set_fork_hooks(const ForkHooks& hooks);
+
 /// Runs `fn` in a forked child with a time limit of `timeout_seconds` and a memory limit of
 /// kIsolatedMemoryBytes, and ships its result back through a temporary file; the child's
 /// stderr is captured into the outcome's message when the run fails. With `isolate` false it runs in this process (for debugging; a crash

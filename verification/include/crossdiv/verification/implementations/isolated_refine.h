@@ -1,0 +1,23 @@
+#pragma once
+/// @file
+/// One implementation refining one mesh outside a comparison (`crossdiv subdivide --impl`, the
+/// Python module's subdivide): a reference library runs in a forked child, as every comparison
+/// runs it, so that its crash, abort, hang or unbounded allocation on a hostile mesh is an error
+/// naming it instead of the death of the caller.
+
+#include <string>
+
+#include "crossdiv/adapters/reference.h"
+#include "crossdiv/verification/implementations/implementation.h"
+
+namespace crossdiv::verification {
+
+/// `implementation`'s levels of `mesh` as `request` asks. Core runs here (it refuses bad input by
+/// an InputError and does not crash); every other implementation runs under run_isolated with
+/// `timeout_seconds`.
+/// @throws InputError "<name> refused <input>: <its words>" when it rejects the input, and
+///   "<name> failed on <input>: <outcome>" (crashed: signal 11 ..., timeout, threw: ...) otherwise.
+adapters::LevelTrace refine_isolated(const Implementation& implementation, const PolyMesh& mesh, const RefineRequest& request,
+                                     const std::string& input_name, double timeout_seconds);
+
+}  // namespace crossdiv::verification

@@ -1,0 +1,19 @@
+#include "crossdiv/verification/implementations/isolated_refine.h"
+
+#include "crossdiv/error.h"
+#include "crossdiv/verification/harness/isolate.h"
+
+namespace crossdiv::verification {
+
+adapters::LevelTrace refine_isolated(const Implementation& implementation, const PolyMesh& mesh, const RefineRequest& request,
+                                     const std::string& input_name, double timeout_seconds) {
+    if (implementation.name() == "core") return implementation.refine(mesh, request);
+    IsolatedTrace run = run_isolated([&] { return implementation.refine(mesh, request); }, timeout_seconds);
+    if (run.outcome.status == RunStatus::Rejected)
+        throw InputError(implementation.name() + " refused " + input_name + ": " + run.outcome.message);
+    if (run.outcome.status != RunStatus::Ok)
+        throw InputError(implementation.name() + " failed on " + input_name + ": " + run.outcome.summary());
+    return std::move(*run.trace);
+}
+
+}  // namespace crossdiv::verification
