@@ -263,6 +263,29 @@ TEST(Tessellation, ChordalDeviationOfAParabolaByHand) {
     EXPECT_NEAR(d.at_param, 0.5, 1e-6);
 }
 
+TEST(Frames, ACurveAtTheScaleOf1eMinus300HasTheUnitCurvesTangentsDeviationAndFrames) {
+    // A space B-spline and the same control points times 2^-1000 (about 1e-301): the squares
+    // of its derivatives and steps underflow, which made the tangents 0 and the frames NaN.
+    // Scaled by a power of two the curve is the same curve: its unit tangents, frames and
+    // (scaled) deviation are the unit curve's to rounding.
+    const std::vector<Vec3> control = {v(0, 0, 0), v(1, 3, 1), v(2, -1, 2), v(3, 0, -1), v(4, 4, 0)};
+    const double tiny = std::ldexp(1.0, -1000);
+    std::vector<Vec3> small;
+    for (const Vec3& c : control) small.push_back(tiny * c);
+    const Polyline unit = tessellate_uniform(bspline_chain(control), 16);
+    const Polyline scaled = tessellate_uniform(bspline_chain(small), 16);
+    ASSERT_EQ(unit.size(), scaled.size());
+    EXPECT_NEAR(chordal_deviation(bspline_chain(small), scaled).max / tiny, chordal_deviation(bspline_chain(control), unit).max, 1e-15);
+    for (FrameMethod m : {FrameMethod::Recursive, FrameMethod::DoubleReflection}) {
+        const auto f = curve_frames(unit.positions, unit.tangents, m), g = curve_frames(scaled.positions, scaled.tangents, m);
+        for (int i = 0; i < unit.size(); ++i) {
+            EXPECT_LE((scaled.tangents[i] - unit.tangents[i]).norm(), 1e-15) << i;
+            EXPECT_LE((g[i].N - f[i].N).norm(), 1e-14) << to_string(m) << " " << i;
+            EXPECT_LE((g[i].B - f[i].B).norm(), 1e-14) << to_string(m) << " " << i;
+        }
+    }
+}
+
 TEST(Frames, PlanarFramesAreTheSeedsCircle) {
     Primitive circle;
     circle.radius = 2;

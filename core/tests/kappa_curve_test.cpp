@@ -128,6 +128,26 @@ TEST(KappaCurve, ConvergedCurvesHaveTheirProperties) {
     EXPECT_EQ(inflections, 6);  // the blob's three dents each have an inflection on both sides
 }
 
+TEST(KappaCurve, IsTheSameCurveAtEveryScaleToTheLastBit) {
+    // Scaling by a power of two is exact, and the construction commutes with scaling: at
+    // 2^-1000 (about 1e-301, where the triangle areas underflow to 0 and the system was
+    // singular) and at 2^1000 (where they overflow) the curve is the unit-scale curve times
+    // the scale, bit for bit.
+    const std::vector<Vec3> p = {v(1, 0), v(0, 1), v(-1, 0), v(0, -1.5)};
+    const KappaCurve unit = kappa_curve(p);
+    ASSERT_TRUE(unit.converged);
+    for (int exponent : {-1000, -1, 7, 1000}) {
+        std::vector<Vec3> scaled;
+        for (const Vec3& q : p) scaled.push_back(std::ldexp(1.0, exponent) * q);
+        const KappaCurve k = kappa_curve(scaled);
+        ASSERT_TRUE(k.converged) << exponent;
+        EXPECT_EQ(k.iterations(), unit.iterations()) << exponent;
+        ASSERT_EQ(k.chain.points.size(), unit.chain.points.size());
+        for (size_t i = 0; i < k.chain.points.size(); ++i)
+            EXPECT_EQ(k.chain.points[i], std::ldexp(1.0, exponent) * unit.chain.points[i]) << exponent << " point " << i;
+    }
+}
+
 TEST(KappaCurve, ReportsAnIterationStoppedShortAsNotConverged) {
     const std::vector<Vec3> p{v(0, 0), v(0, 1), v(2, 2), v(1, 0)};
     const KappaCurve k = kappa_curve(p, {kKappaConvergence, 3});

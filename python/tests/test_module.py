@@ -121,6 +121,14 @@ def test_bad_input_names_the_element():
         crossdiv.read_mesh("/nonexistent/t.obj")
 
 
+def test_write_mesh_on_a_full_disk_raises_naming_the_file(tmp_path):
+    # /dev/full fails every write with ENOSPC, as a full disk does.
+    full = tmp_path / "full.obj"
+    full.symlink_to("/dev/full")
+    with pytest.raises(crossdiv.InputError, match="full.obj: cannot write: No space left on device"):
+        crossdiv.write_mesh(str(full), TETRA_V, TETRA_F)
+
+
 def test_compare_is_the_record_of_crossdiv_compare_json(tmp_path):
     mesh = str(tmp_path / "octa.off")
     V = np.array([[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]], dtype=float)

@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "command.h"
+#include "crossdiv/io/output_file.h"
 #include "crossdiv/verification/harness/json_text.h"
 #include "crossdiv/verification/bench/bench.h"
 #include "crossdiv/verification/bench/valence_bench.h"
@@ -184,6 +185,15 @@ nlohmann::json print_refinement_bench(const BenchArgs& a, nlohmann::json& goals_
 }
 
 int bench_command(const BenchArgs& a) {
+    // The outputs' folders first: a path that cannot be written is named before minutes of timing.
+    std::vector<std::string> paths;
+    if (!a.json.empty()) paths.push_back(a.json);
+    if (!a.out.empty()) paths.push_back((std::filesystem::path(a.out) / "bench.json").string());
+    for (const std::string& path : paths) {
+        const std::filesystem::path p(path);
+        if (p.has_parent_path()) create_output_folder(p.parent_path().string());
+        if (std::filesystem::is_directory(p)) throw InputError(path + ": is a folder; --json names the file to write");
+    }
     nlohmann::json goals, bandwidth;
     const nlohmann::json null;
     const nlohmann::json loop =
@@ -201,13 +211,8 @@ int bench_command(const BenchArgs& a) {
                                 {"flattening_goal", curves.is_null() ? null : curves["goal"]}, {"adaptive_sweep", surfaces},
                                 {"note", "references timed through their native refinement (loop_native, catmull_clark_native), "
                                          "output kept in the library's own structures"}};
-    std::vector<std::string> paths;
-    if (!a.json.empty()) paths.push_back(a.json);
-    if (!a.out.empty()) paths.push_back((std::filesystem::path(a.out) / "bench.json").string());
     for (const std::string& path : paths) {
-        const std::filesystem::path p(path);
-        if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
-        std::ofstream(path) << verification::json_text(doc, 1) << "\n";
+        write_text_file(path, verification::json_text(doc, 1) + "\n");
         fmt::print("bench results: {}\n", path);
     }
     if (!a.out.empty() && std::filesystem::exists(std::filesystem::path(a.out) / "results.json"))

@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "command.h"
+#include "crossdiv/io/output_file.h"
 #include "crossdiv/error.h"
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/mesh/discrete_curvature.h"
@@ -95,8 +96,8 @@ int run_curvature(const CurvatureArgs& a) {
         }
 
     if (!a.csv.empty()) {
-        std::ofstream out(a.csv);
-        if (!out) throw InputError(a.csv + ": cannot write");
+        OutputFile file(a.csv);
+        std::ostream& out = file.stream();
         fmt::print(out, "vertex,status,mixed_area,angle_defect,mean,gaussian,k1,k2,d1x,d1y,d1z,nx,ny,nz\n");
         for (int i = 0; i < mesh.num_vertices(); ++i) {
             const Vec3 &d = c.direction1[i], &n = c.normal[i];
@@ -104,6 +105,7 @@ int run_curvature(const CurvatureArgs& a) {
                       to_string(c.status[i]), c.mixed_area[i], c.angle_defect[i], c.mean[i], c.gaussian[i], c.k1[i], c.k2[i],
                       d.x(), d.y(), d.z(), n.x(), n.y(), n.z());
         }
+        file.close();
         fmt::print("wrote {}\n", a.csv);
     }
     if (!a.out.empty()) {

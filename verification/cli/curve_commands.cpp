@@ -8,6 +8,7 @@
 #include <fstream>
 #include <optional>
 
+#include "crossdiv/io/output_file.h"
 #include "crossdiv/verification/harness/json_text.h"
 #include "crossdiv/curves/bezier.h"
 #include "crossdiv/curves/quaternion_bezier.h"
@@ -173,8 +174,8 @@ int run_tessellate(const TessellateArgs& a) {
         curves.push_back(std::move(t));
     }
 
-    std::ofstream out(a.out);
-    if (!out) throw InputError(a.out + ": cannot write");
+    OutputFile output(a.out);
+    std::ostream& out = output.stream();
     if (ext == ".obj") {
         out << "# crossdiv tessellate " << a.input << " --mode " << a.mode << "\n";
         int base = 1;
@@ -234,6 +235,7 @@ int run_tessellate(const TessellateArgs& a) {
         }
         out << verification::json_text(doc, 1) << "\n";
     }
+    output.close();
     fmt::print("wrote {}\n", a.out);
     return 0;
 }
@@ -280,9 +282,7 @@ int run_casteljau(const CasteljauArgs& a) {
         jl.push_back(pts);
     }
     if (!a.json.empty()) {
-        std::ofstream out(a.json);
-        if (!out) throw InputError(a.json + ": cannot write");
-        out << verification::json_text(nlohmann::json{{"t", a.t}, {"levels", jl}}, 1) << "\n";
+        write_text_file(a.json, verification::json_text(nlohmann::json{{"t", a.t}, {"levels", jl}}, 1) + "\n");
     }
     return 0;
 }

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "crossdiv/io/output_file.h"
 #include "crossdiv/verification/comparisons/edit_subject.h"
 #include "crossdiv/verification/comparisons/normals_subject.h"
 
@@ -166,9 +167,7 @@ int run_normals(const NormalsArgs& a) {
             }
             j["references"].push_back(jr);
         }
-        std::ofstream out(a.json);
-        if (!out) throw InputError(a.json + ": cannot write");
-        out << verification::json_text(j, 1) << "\n";
+        write_text_file(a.json, verification::json_text(j, 1) + "\n");
     }
     return 0;
 }

@@ -7,6 +7,7 @@
 
 #include "bench_commands.h"
 #include "crossdiv/error.h"
+#include "crossdiv/verification/harness/interruption.h"
 #include "curvature_command.h"
 #include "curve_commands.h"
 #include "edit_commands.h"
@@ -21,6 +22,8 @@
 
 int main(int argc, char** argv) {
     namespace cli = crossdiv::cli;
+    // Ctrl-C or SIGTERM during a run stops the programs under test and removes their folders too.
+    crossdiv::verification::stop_cleanly_on_signals();
     CLI::App app{"crossdiv: spline and subdivision algorithms verified against OpenSubdiv, OpenMesh and CGAL"};
     app.require_subcommand(1);
     int status = 0;

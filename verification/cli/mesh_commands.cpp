@@ -10,6 +10,7 @@
 #include <set>
 
 #include "command.h"
+#include "crossdiv/io/output_file.h"
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/datasets/edge_cases.h"
 #include "crossdiv/error.h"
@@ -323,7 +324,7 @@ int run_check(const std::string& in) {
 }
 
 int run_datasets(const std::string& dir) {
-    std::filesystem::create_directories(dir);
+    create_output_folder(dir);
     for (const auto& b : datasets::bundled_meshes()) {
         const std::string path = (std::filesystem::path(dir) / (b.name + ".obj")).string();
         write_mesh(path, b.mesh);
@@ -333,7 +334,7 @@ int run_datasets(const std::string& dir) {
 }
 
 int run_edgecases(const std::string& dir) {
-    std::filesystem::create_directories(dir);
+    create_output_folder(dir);
     for (const bool polygons : {false, true})
         for (const auto& c : polygons ? datasets::polygon_edge_cases() : datasets::edge_cases()) {
             const std::string path = (std::filesystem::path(dir) / (c.name + ".obj")).string();

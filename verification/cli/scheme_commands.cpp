@@ -10,6 +10,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "crossdiv/io/output_file.h"
 #include "crossdiv/verification/harness/json_text.h"
 #include "crossdiv/error.h"
 #include "crossdiv/io/mesh_io.h"
@@ -45,10 +46,8 @@ SchemeRule rule_with_tags(Scheme scheme, const PolySchemeArgs& s, PolyMesh& mesh
 
 void write_json(const std::string& path, const nlohmann::json& j) {
     const std::filesystem::path p(path);
-    if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
-    std::ofstream out(path);
-    if (!out) throw InputError(path + ": cannot write");
-    out << verification::json_text(j, 2) << "\n";
+    if (p.has_parent_path()) create_output_folder(p.parent_path().string());
+    write_text_file(path, verification::json_text(j, 2) + "\n");
     fmt::print("results written to {}\n", path);
 }
 
@@ -176,7 +175,7 @@ int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeAr
 
 std::string write_shrunk(const std::string& out_dir, const PolyMesh& neighbourhood, int k, const std::string& seed,
                          const PolyMesh& minimal, int tests, const std::string& minimal_shows, const std::string& explanation) {
-    std::filesystem::create_directories(out_dir);
+    create_output_folder(out_dir);
     const std::string ring = (std::filesystem::path(out_dir) / "neighbourhood.obj").string();
     const std::string minimal_file = (std::filesystem::path(out_dir) / "minimal.obj").string();
     write_mesh(ring, neighbourhood);

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "crossdiv/io/output_file.h"
 #include "crossdiv/verification/comparisons/surface_subject.h"
 #include "crossdiv/verification/harness/temporary_folder.h"
 
@@ -55,9 +56,9 @@ void require_obj(const std::string& out) {
 }
 
 void write(const std::string& path, const SurfaceMesh& s) {
-    std::ofstream f(path);
-    if (!f) throw InputError(path + ": cannot write");
-    write_obj(f, to_poly_mesh(s.mesh), s.normals);
+    OutputFile f(path);
+    write_obj(f.stream(), to_poly_mesh(s.mesh), s.normals);
+    f.close();
 }
 
 /// Appends b to a, offsetting its indices.
@@ -87,7 +88,7 @@ int run_surface_subject(const std::string& input, const std::string& bundled_tex
     std::string path = input;
     if (!bundled_text.empty()) {
         path = (folder.path() / name).string();
-        std::ofstream(path) << bundled_text;
+        write_text_file(path, bundled_text);
     }
     const auto c = verification::compare_surface_subject(path, conventions, subject.name, subject.command, subject.timeout);
     if (c.conventions.size() > 1)

@@ -401,5 +401,71 @@ expect subject-result 0 "agrees with opensubdiv" -- \
 expect subject-result-wrong-level 1 "wrong-count: .*submitted.obj: 66 vertices, 128 faces; loop makes 18 vertices, 32 faces" -- \
   "$crossdiv" compare bundled:octahedron --levels 1 --subject-result "$tmp/submitted.obj" --against opensubdiv
 
+# A full disk: every writer checks its bytes at close; a file that cannot be written whole is
+# exit 2 naming it, never the success line (each output is a link to /dev/full, where every
+# write fails with ENOSPC).
+for ext in obj off ply json csv xml nrrd; do ln -sf /dev/full "$tmp/full.$ext"; done
+expect full-subdivide 2 "full.obj: cannot write: No space left on device" -- "$crossdiv" subdivide bundled:icosahedron --levels 1 -o "$tmp/full.obj"
+expect full-subdivide-ply 2 "full.ply: cannot write: No space left on device" -- "$crossdiv" subdivide bundled:icosahedron --levels 1 -o "$tmp/full.ply"
+expect full-compare-json 2 "full.json: cannot write: No space left on device" -- "$crossdiv" compare bundled:tetrahedron --levels 1 --against opensubdiv --json "$tmp/full.json"
+expect full-tessellate 2 "full.csv: cannot write: No space left on device" -- "$crossdiv" tessellate curve:s-curve -o "$tmp/full.csv"
+expect full-curvature 2 "full.csv: cannot write: No space left on device" -- "$crossdiv" curvature bundled:octahedron --csv "$tmp/full.csv"
+expect full-edit 2 "full.off: cannot write: No space left on device" -- "$crossdiv" edit bundled:octahedron --flip 0-2 -o "$tmp/full.off"
+expect full-isosurface-volume 2 "full.nrrd: cannot write: No space left on device" -- "$crossdiv" isosurface implicit:genus2 --res 17 -o "$tmp/x.off" --write-volume "$tmp/full.nrrd"
+mkdir -p "$tmp/full-suite" && ln -sf /dev/full "$tmp/full-suite/junit.xml"
+expect full-suite 2 "junit.xml: cannot write: No space left on device" -- "$crossdiv" suite "$tmp/cli.suite" --out "$tmp/full-suite" --jobs 1
+# An output folder that is a file is named, exit 2 (not an internal error).
+printf 'x' > "$tmp/afile"
+expect folder-is-file-datasets 2 "afile: cannot create the folder|afile: is not a folder" -- "$crossdiv" datasets --out "$tmp/afile"
+expect folder-is-file-edgecases 2 "afile: cannot create the folder|afile: is not a folder" -- "$crossdiv" edgecases --out "$tmp/afile"
+expect folder-is-file-suite 2 "afile: cannot create the folder|afile: is not a folder" -- "$crossdiv" suite "$tmp/cli.suite" --out "$tmp/afile" --jobs 1
+expect folder-is-file-diff 2 "afile.*: cannot create the folder|afile: is not a folder" -- "$crossdiv" diff bundled:open-patch --levels 1 --boundary edge-and-corner --against openmesh --out "$tmp/afile"
+expect folder-is-file-json 2 "afile: cannot create the folder" -- "$crossdiv" compare bundled:tetrahedron --levels 1 --against opensubdiv --json "$tmp/afile/x.json"
+expect folder-is-file-bench 2 "afile: cannot create the folder" -- "$crossdiv" bench --json "$tmp/afile/b.json" --quick
+expect bench-json-folder 2 "full-suite: is a folder; --json names the file to write" -- "$crossdiv" bench --json "$tmp/full-suite" --quick
+# Simplifying a non-manifold target to a control mesh is refused by its first offending edge.
+expect fit-edges-non-manifold 2 "the target cannot be simplified to a control mesh \(--edges\): edge \(0, 1\) is shared by 3 triangles" -- "$crossdiv" fit "$tmp/nonmanifold.obj" --edges 3
+# A curve at the scale of 1e-300: finite tangents and frames, the unit curve's shape (the kappa-curve
+# converges as at scale 1 and measures its deviation at its own scale).
+printf 'tcc2 sq 8 4 [0 0] [1e-300 0] [1e-300 1e-300] [0 1e-300]\nkpc2 k 8 4 [1e-300 0] [0 1e-300] [-1e-300 0] [0 -1.5e-300]\n' > "$tmp/tiny.swp"
+expect tiny-curve-frames 0 '^sq,0,0,1e-300,0,0,0\.7071067811865473[0-9],0\.7071067811865476[0-9],0,' -- bash -c "\"$crossdiv\" tessellate \"$tmp/tiny.swp\" --frames rmf -o \"$tmp/tiny.csv\" >/dev/null && grep -vi nan \"$tmp/tiny.csv\""
+expect tiny-kappa 0 'k: kpc2 \(kappa-closed\), 33 points, measured max deviation 7\.6996e-303' -- "$crossdiv" tessellate "$tmp/tiny.swp" --frames recursive -o "$tmp/tiny.csv"
+
+# Stopped mid-run (Ctrl-C, SIGTERM, a closed terminal): the subject is killed with its process
+# group, its temporary folder removed, and crossdiv ends by the signal. interrupted SIGNAL KIND:
+# KIND compare (one process) or suite (two workers, each running a hanging subject).
+interrupted() {
+  local sig="$1" kind="$2" dir="$tmp/interrupt-$1-$2" pid rc n
+  mkdir -p "$dir/tmp"
+  local subject="python3 $root/verification/tests/subjects/misbehaving_subject.py hang-pid {in} {levels} {out} loop $dir/subject.pid"
+  if [ "$kind" = suite ]; then
+    printf 'suite stop\ntimeout 600\nsubject hanging command=%s\ncase bundled:tetrahedron,bundled:octahedron loop levels=1 against=opensubdiv\n' \
+      "'python3 $root/verification/tests/subjects/misbehaving_subject.py hang-pid {in} {levels} {out} loop $dir/subject.pid'" > "$dir/stop.suite"
+    TMPDIR="$dir/tmp" env --default-signal=INT "$crossdiv" suite "$dir/stop.suite" --out "$dir/out" --jobs 2 > "$dir/log" 2>&1 &
+  else
+    TMPDIR="$dir/tmp" env --default-signal=INT "$crossdiv" compare bundled:tetrahedron --levels 1 --timeout 600 \
+      --against opensubdiv --subject "$subject" > "$dir/log" 2>&1 &
+  fi
+  pid=$!
+  for n in $(seq 200); do [ -s "$dir/subject.pid" ] && break; sleep 0.1; done
+  kill -s "$sig" "$pid"; wait "$pid"; rc=$?
+  local subject_pid; subject_pid="$(cat "$dir/subject.pid" 2>/dev/null)"
+  local left; left="$(find "$dir/tmp" -mindepth 1 -maxdepth 1 | wc -l)"
+  local alive=no; [ -n "$subject_pid" ] && kill -0 "$subject_pid" 2>/dev/null && alive=yes
+  local want=$((128 + $(kill -l "$sig")))
+  if [ -n "$subject_pid" ] && [ "$rc" -eq "$want" ] && [ "$alive" = no ] && [ "$left" -eq 0 ] &&
+     grep -q "crossdiv: stopped by $sig: [1-9][0-9]* process(es) killed, [1-9][0-9]* temporary folder(s) removed" "$dir/log"; then
+    passed=$((passed + 1))
+  else
+    failed=$((failed + 1))
+    echo "FAIL interrupted-$sig-$kind: exit $rc (want $want), subject $subject_pid alive: $alive, $left temporary folder(s) left"
+    tail -3 "$dir/log"; [ -n "$subject_pid" ] && kill -9 "$subject_pid" 2>/dev/null
+  fi
+}
+interrupted INT compare
+interrupted TERM compare
+interrupted HUP compare
+interrupted TERM suite
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -1,6 +1,8 @@
 // Programs under test: the command template, every named way a program fails, results in
 // another numbering, result files, and the rule a subject follows, measured per vertex class.
 #include <gtest/gtest.h>
+#include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -13,6 +15,8 @@
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/verification/comparisons/refinement_comparison.h"
 #include "crossdiv/verification/comparisons/shrink.h"
+#include "crossdiv/verification/harness/interruption.h"
+#include "crossdiv/verification/harness/process.h"
 #include "crossdiv/verification/implementations/callback_implementation.h"
 #include "crossdiv/verification/implementations/program_implementation.h"
 #include "crossdiv/verification/implementations/registry.h"
@@ -244,6 +248,69 @@ TEST(Program, ThatCannotStartIsRecorded) {
     const RefinementComparison c = compare_with(*subject, "tetrahedron", 1);
     EXPECT_EQ(c.subject_outcome.status, RunStatus::Crashed);
     EXPECT_NE(c.subject_outcome.message.find("cannot start"), std::string::npos) << c.subject_outcome.message;
+}
+
+/// Whether process `pid` is gone (or a zombie no one will ever run again).
+bool process_gone(pid_t pid) {
+    std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+    std::string text;
+    if (!std::getline(stat, text)) return true;
+    const size_t close = text.rfind(')');
+    return close != std::string::npos && close + 2 < text.size() && text[close + 2] == 'Z';
+}
+
+pid_t pid_in(const fs::path& file) {
+    std::ifstream in(file);
+    long pid = 0;
+    in >> pid;
+    return static_cast<pid_t>(pid);
+}
+
+TEST(Program, ThatLeavesAChildOutsideItsProcessGroupHasItKilledAtTheEndOfItsRun) {
+    // The child calls setsid(): the kill of the program's group misses it; re-parented here
+    // (adopt_orphans, as crossdiv's main does), it is found and killed when the run ends.
+    adopt_orphans();
+    const fs::path pidfile = fs::temp_directory_path() / ("crossdiv-escape-" + std::to_string(::getpid()) + ".pid");
+    fs::remove(pidfile);
+    const auto subject = program(misbehaving("escape") + " loop " + pidfile.string(), 60, LevelMode::Final);
+    const RefinementComparison c = compare_with(*subject, "tetrahedron", 1);
+    EXPECT_EQ(c.subject_outcome.status, RunStatus::Ok) << c.subject_outcome.summary();
+    const pid_t escaped = pid_in(pidfile);
+    ASSERT_GT(escaped, 1);
+    EXPECT_TRUE(process_gone(escaped)) << "process " << escaped << " outlived the run";
+    if (!process_gone(escaped)) ::kill(escaped, SIGKILL);
+    fs::remove(pidfile);
+}
+
+TEST(Program, ThatAsksForMoreMemoryThanItsCapFailsFast) {
+#ifndef CROSSDIV_SANITIZED  // no cap under the address sanitizer (process.h)
+    // 8 GiB at once is past kProgramMemoryBytes (6 GiB): Python's MemoryError, exit status 1.
+    // Without the cap the kernel grants it (untouched pages) and the run succeeds.
+    const auto subject = program(misbehaving("hog"), 60, LevelMode::Final);
+    const RefinementComparison c = compare_with(*subject, "tetrahedron", 1);
+    EXPECT_EQ(c.subject_outcome.status, RunStatus::ExitStatus) << c.subject_outcome.summary();
+    EXPECT_NE(c.subject_outcome.message.find("MemoryError"), std::string::npos) << c.subject_outcome.message;
+#endif
+}
+
+TEST(Process, StderrIsReadByItsHeadAndTailOnly) {
+    // 64 MiB of a program's stderr: the sanitizer's first line at the head and the last words
+    // at the tail are kept; the middle is never read.
+    const fs::path file = fs::temp_directory_path() / ("crossdiv-stderr-" + std::to_string(::getpid()) + ".txt");
+    {
+        std::ofstream out(file, std::ios::binary);
+        out << "==1==ERROR: AddressSanitizer: heap-buffer-overflow on address 0x1\n";
+        const std::string line(1023, 'x');
+        for (int i = 0; i < 64 * 1024; ++i) out << line << "\n";
+        out << "the last words\n";
+    }
+    const std::string summary = tail_of_file(file.string());
+    EXPECT_EQ(summary.rfind("==1==ERROR: AddressSanitizer: heap-buffer-overflow on address 0x1 ...", 0), 0u) << summary.substr(0, 200);
+    EXPECT_TRUE(summary.ends_with("the last words")) << summary;
+    const int fd = ::open(file.c_str(), O_RDONLY);
+    EXPECT_EQ(head_and_tail(fd, 100).size(), 100u + 5u + 100u);
+    ::close(fd);
+    fs::remove(file);
 }
 
 TEST(Program, InAnotherNumberingIsMatchedByPositionAndAgrees) {

@@ -112,7 +112,9 @@ BezierPointTangent bezier_point_tangent(std::span<const Vec3> control, double t)
         if (w.size() == 1) return BezierPointTangent{w[0], Vec3::Zero()};
         return BezierPointTangent{(1.0 - t) * w[0] + t * w[1], w[1] - w[0]};
     });
-    const double len = r.tangent.norm();
+    // stableNorm: the derivative of a curve at the scale of 1e-300 has a norm whose square
+    // underflows to 0; the direction is still well defined.
+    const double len = r.tangent.stableNorm();
     r.tangent = len > 0.0 ? Vec3(r.tangent / len) : bezier_unit_tangent(control, t);
     return r;
 }
@@ -155,7 +157,7 @@ Vec3 bezier_unit_tangent(std::span<const Vec3> control, double t) {
         const Vec3 v = bezier_point(derivative, t);
         // Exactly zero only: any nonzero derivative has a well-defined direction, and a
         // threshold would pick a higher order where the first is merely small.
-        if (v.squaredNorm() > 0.0) return ((t == 1.0 && order % 2 == 0) ? -v : v).normalized();
+        if ((v.array() != 0.0).any()) return ((t == 1.0 && order % 2 == 0) ? -v : v).stableNormalized();
     }
     return Vec3::Zero();
 }

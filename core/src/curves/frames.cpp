@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "crossdiv/error.h"
@@ -86,7 +87,11 @@ std::vector<Frame> curve_frames(std::span<const Vec3> positions, std::span<const
         } else {
             // Double reflection: reflect (r_i, t_i) in the bisector plane of x_i x_{i+1}, then
             // in the plane that maps the reflected tangent onto t_{i+1}.
-            const Vec3 v1 = positions[i] - positions[i - 1];
+            Vec3 v1 = positions[i] - positions[i - 1];
+            // The reflection depends on v1's direction only: a step so short that its
+            // square underflows (a curve at the scale of 1e-300) is scaled up first.
+            if (v1.squaredNorm() < std::numeric_limits<double>::min() && (v1.array() != 0.0).any())
+                v1 /= v1.cwiseAbs().maxCoeff();
             const double c1 = v1.squaredNorm();
             Vec3 r = prev.N, tl = prev.T;
             if (c1 > 0.0) {

@@ -102,8 +102,10 @@ double quadratic_signed_curvature(std::span<const Vec3> c, double t) {
     return speed > 0.0 ? d1.cross(d2).z() / (speed * speed * speed) : 0.0;
 }
 
-KappaCurve kappa_curve(std::span<const Vec3> p, const KappaOptions& options) {
-    require_kappa_points(p);
+namespace {
+
+/// kappa_curve of points whose largest extent is in [1/2, 1).
+KappaCurve kappa_curve_of_unit_size(std::span<const Vec3> p, const KappaOptions& options) {
     const size_t n = p.size();
     const auto next = [n](size_t i) { return (i + 1) % n; };
     const auto prev = [n](size_t i) { return (i + n - 1) % n; };
@@ -174,6 +176,29 @@ KappaCurve kappa_curve(std::span<const Vec3> p, const KappaOptions& options) {
     out.chain = BezierChain{2, {}, true};
     out.chain.points.reserve(3 * n);
     for (size_t i = 0; i < n; ++i) out.chain.points.insert(out.chain.points.end(), {start[i], mid[i], end[i]});
+    return out;
+}
+
+}  // namespace
+
+KappaCurve kappa_curve(std::span<const Vec3> p, const KappaOptions& options) {
+    require_kappa_points(p);
+    // The construction commutes with scaling (its parameters and weights are ratios of
+    // areas). It runs on the points scaled by the power of two that brings their largest
+    // extent into [1/2, 1), which is exact in floating point, so that a curve at the scale of
+    // 1e-300 (whose areas would underflow to 0) or of 1e300 (overflow) is the same curve as
+    // at 1, to the last bit.
+    Vec3 lo = p[0], hi = p[0];
+    for (const Vec3& q : p) {
+        lo = lo.cwiseMin(q);
+        hi = hi.cwiseMax(q);
+    }
+    int exponent = 0;  // of the largest extent: the diagonal itself may underflow
+    (void)std::frexp((hi - lo).maxCoeff(), &exponent);
+    std::vector<Vec3> unit(p.begin(), p.end());
+    for (Vec3& q : unit) q = Vec3(std::ldexp(q.x(), -exponent), std::ldexp(q.y(), -exponent), std::ldexp(q.z(), -exponent));
+    KappaCurve out = kappa_curve_of_unit_size(unit, options);
+    for (Vec3& q : out.chain.points) q = Vec3(std::ldexp(q.x(), exponent), std::ldexp(q.y(), exponent), std::ldexp(q.z(), exponent));
     return out;
 }
 

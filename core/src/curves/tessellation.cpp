@@ -23,6 +23,15 @@ std::string_view to_string(TessellationMode m) {
 
 double point_segment_distance(const Vec3& p, const Vec3& a, const Vec3& b) {
     const Vec3 ab = b - a;
+    // Below 1e-150 the squares underflow (a curve at the scale of 1e-300 would measure 0):
+    // such a configuration is measured at unit scale, by a power of two, exactly.
+    const double extent = std::max(ab.cwiseAbs().maxCoeff(), (p - a).cwiseAbs().maxCoeff());
+    if (extent > 0.0 && extent < 1e-150) {
+        int exponent = 0;
+        (void)std::frexp(extent, &exponent);
+        const double up = std::ldexp(1.0, -exponent);
+        return std::ldexp(point_segment_distance(up * p, up * a, up * b), exponent);
+    }
     const double len2 = ab.squaredNorm();
     const double s = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
     return (p - (a + s * ab)).norm();
@@ -85,7 +94,7 @@ void finish(const BezierChain& chain, Polyline& out) {
 Vec3 start_tangent(std::span<const Vec3> c) {
     for (size_t j = 1; j < c.size(); ++j) {
         const Vec3 v = c[j] - c[0];
-        if (v.squaredNorm() > 0.0) return v.normalized();
+        if ((v.array() != 0.0).any()) return v.stableNormalized();
     }
     return Vec3::Zero();
 }

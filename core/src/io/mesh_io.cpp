@@ -1,3 +1,4 @@
+#include "crossdiv/io/output_file.h"
 #include "crossdiv/io/mesh_io.h"
 
 #include <fstream>
@@ -36,12 +37,12 @@ void write_mesh(const std::string& path, const PolyMesh& mesh) {
     const std::string ext = extension(path);
     if (ext != "obj" && ext != "off" && ext != "ply")
         throw InputError(path + ": unknown mesh format '." + ext + "' (expected .obj, .off or .ply)");
-    std::ofstream out(path);
-    if (!out) throw InputError(path + ": cannot write file");
+    OutputFile file(path);
+    std::ostream& out = file.stream();
     if (ext == "obj") write_obj(out, mesh);
     else if (ext == "off") write_off(out, mesh);
     else write_ply(out, mesh);
-    if (!out) throw InputError(path + ": write failed");
+    file.close();
 }
 
 }  // namespace crossdiv

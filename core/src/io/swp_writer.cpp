@@ -5,6 +5,7 @@
 #include <iomanip>
 #include <ostream>
 
+#include "crossdiv/io/output_file.h"
 #include "crossdiv/error.h"
 #include "crossdiv/io/curve_io.h"
 
@@ -47,10 +48,9 @@ void write_swp(std::ostream& out, const CurveFile& curves) {
 }
 
 void write_swp(const std::string& path, const CurveFile& curves) {
-    std::ofstream out(path);
-    if (!out) throw InputError(path + ": cannot write");
-    write_swp(out, curves);
-    if (!out.flush()) throw InputError(path + ": cannot write");
+    OutputFile out(path);
+    write_swp(out.stream(), curves);
+    out.close();
 }
 
 }  // namespace crossdiv

@@ -1,3 +1,4 @@
+#include "crossdiv/io/output_file.h"
 #include "crossdiv/io/volume_io.h"
 
 #include <algorithm>
@@ -367,28 +368,25 @@ void write_samples(std::ostream& out, const ScalarGrid& grid) {
     }
 }
 
-void finish(std::ofstream& out, const std::string& path) {
-    out.close();
-    if (!out) throw InputError("cannot write '" + path + "'");
-}
-
 }  // namespace
 
 void write_metaimage(const std::string& path, const ScalarGrid& grid) {
     const std::filesystem::path raw = std::filesystem::path(path).replace_extension(".raw");
-    std::ofstream header(path, std::ios::binary);
+    OutputFile header_file(path);
+    std::ostream& header = header_file.stream();
     header << "ObjectType = Image\nNDims = 3\nBinaryData = True\nBinaryDataByteOrderMSB = False\n"
            << "DimSize = " << grid.size[0] << ' ' << grid.size[1] << ' ' << grid.size[2] << '\n'
            << "ElementSpacing = " << reals(grid.spacing) << "\nOffset = " << reals(grid.origin) << '\n'
            << "ElementType = MET_DOUBLE\nElementDataFile = " << raw.filename().string() << '\n';
-    finish(header, path);
-    std::ofstream data(raw, std::ios::binary);
-    write_samples(data, grid);
-    finish(data, raw.string());
+    header_file.close();
+    OutputFile data(raw.string());
+    write_samples(data.stream(), grid);
+    data.close();
 }
 
 void write_nrrd(const std::string& path, const ScalarGrid& grid) {
-    std::ofstream out(path, std::ios::binary);
+    OutputFile file(path);
+    std::ostream& out = file.stream();
     out.precision(17);
     // A space and its directions, not "spacings": Teem takes "space origin" only with a space.
     const Vec3& h = grid.spacing;
@@ -398,7 +396,7 @@ void write_nrrd(const std::string& path, const ScalarGrid& grid) {
         << "space origin: (" << grid.origin.x() << ',' << grid.origin.y() << ',' << grid.origin.z() << ")\n"
         << "encoding: raw\nendian: little\n\n";
     write_samples(out, grid);
-    finish(out, path);
+    file.close();
 }
 
 }  // namespace crossdiv

@@ -1,3 +1,4 @@
+#include "crossdiv/verification/harness/interruption.h"
 #include "crossdiv/verification/bench/bench.h"
 
 #include <malloc.h>
@@ -64,6 +65,7 @@ BenchRecord time_in_child(const Refine& refine, int repeats, bool cold) {
         const ssize_t n = write(fd[1], &rep, sizeof rep);
         _exit(n == static_cast<ssize_t>(sizeof rep) ? 0 : 1);
     }
+    const RegisteredChild registration(pid, ChildRole::Isolated);
     close(fd[1]);
     ChildReport rep;
     size_t got = 0;

@@ -1,3 +1,4 @@
+#include "crossdiv/io/output_file.h"
 #include "crossdiv/verification/comparisons/edit_subject.h"
 
 #include <Eigen/Geometry>
@@ -119,7 +120,7 @@ EditSubjectComparison compare_edit_subject(const std::string& input, const TriMe
             step.core = "new vertex " + std::to_string(split_at_midpoint(he, positions, e).idx);
         }
         listed += op.text() + "\n";
-        std::ofstream(ops) << listed;
+        write_text_file(ops, listed);
         const TaskRun run = run_task_program(command, obj, "out.obj", timeout_seconds, ops);
         step.outcome = run.outcome;
         const PolyMesh ours = to_poly_mesh(to_tri_mesh(he, positions));

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "crossdiv/error.h"
+#include "crossdiv/mesh/tri_connectivity.h"
 #include "crossdiv/verification/harness/mesh_topology.h"
 #include "crossdiv/verification/harness/tolerances.h"
 
@@ -32,6 +33,13 @@ TopologyType topology_type(const TriMesh& mesh) {
 }
 
 TriMesh coarse_control(const TriMesh& target, int edges, const Implementation& simplifier) {
+    // Edge collapse is defined on a manifold, consistently oriented mesh; anything else is
+    // refused here by its first offending element, before the library meets it.
+    try {
+        (void)build_tri_connectivity(target);
+    } catch (const InputError& e) {
+        throw InputError(std::string("the target cannot be simplified to a control mesh (--edges): ") + e.what());
+    }
     TriMesh control = simplifier.simplify(target, edges);
     const TopologyType want = topology_type(target), got = topology_type(control);
     if (got != want)

@@ -1,7 +1,10 @@
 #include "crossdiv/verification/harness/isolate.h"
+#include "crossdiv/verification/harness/interruption.h"
 #include "crossdiv/verification/harness/process.h"
+#include "sanitizer.h"
 
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -15,15 +18,6 @@ namespace crossdiv::verification {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define CROSSDIV_ADDRESS_SANITIZER 1
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__)
-#define CROSSDIV_ADDRESS_SANITIZER 1
-#endif
 
 /// Caps this (child) process's address space at what it maps now plus kIsolatedMemoryBytes.
 void limit_memory() {
@@ -114,11 +108,7 @@ IsolatedTrace run_here(const std::function<adapters::LevelTrace()>& fn) {
 /// The last few lines the child wrote to stderr, to explain a crash or a rejection.
 std::string tail_of(FILE* f) {
     std::fflush(f);
-    std::string s;
-    std::rewind(f);
-    char buf[4096];
-    for (size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) s.append(buf, n);
-    return stderr_summary(std::move(s));
+    return stderr_summary(head_and_tail(fileno(f)));
 }
 
 ForkHooks& fork_hooks() {
@@ -178,6 +168,7 @@ IsolatedTrace run_isolated(const std::function<adapters::LevelTrace()>& fn, doub
     if (pid == 0) {
         // Child: run, write the answer, leave without running the parent's atexit handlers.
         if (hooks.in_child) hooks.in_child();
+        prctl(PR_SET_PDEATHSIG, SIGKILL);  // not outliving a parent killed outright
         dup2(fileno(errors), STDERR_FILENO);
         limit_memory();
         const IsolatedTrace r = run_here(fn);
@@ -194,6 +185,7 @@ IsolatedTrace run_isolated(const std::function<adapters::LevelTrace()>& fn, doub
         std::fclose(errors);
         return run_here(fn);
     }
+    const RegisteredChild registration(pid, ChildRole::Isolated);
     int status = 0;
     bool timed_out = false;
     for (auto pause = std::chrono::microseconds(200);;) {

@@ -3,7 +3,10 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -15,6 +18,8 @@
 #include <thread>
 
 #include "crossdiv/error.h"
+#include "crossdiv/verification/harness/interruption.h"
+#include "sanitizer.h"
 
 extern char** environ;
 
@@ -28,13 +33,22 @@ std::vector<char*> c_argv(const std::vector<std::string>& argv) {
     return args;
 }
 
-/// posix_spawn's file actions and attributes, released on every path.
+/// posix_spawn's file actions and attributes, released on every path. A program starts with
+/// no signal blocked and SIGINT, SIGTERM, SIGHUP at their defaults, whatever this process does
+/// with them (stop_cleanly_on_signals blocks them here).
 struct SpawnSetup {
     posix_spawn_file_actions_t actions;
     posix_spawnattr_t attributes;
     SpawnSetup() {
         posix_spawn_file_actions_init(&actions);
         posix_spawnattr_init(&attributes);
+        sigset_t none, defaults;
+        sigemptyset(&none);
+        sigemptyset(&defaults);
+        for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGPIPE}) sigaddset(&defaults, sig);
+        posix_spawnattr_setsigmask(&attributes, &none);
+        posix_spawnattr_setsigdefault(&attributes, &defaults);
+        posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
     }
     ~SpawnSetup() {
         posix_spawn_file_actions_destroy(&actions);
@@ -50,9 +64,11 @@ int run_process(const std::vector<std::string>& argv) {
     if (argv.empty()) throw InputError("run_process: no program given");
     std::vector<char*> args = c_argv(argv);
     std::fflush(nullptr);  // our buffered lines first, then the program's
+    SpawnSetup setup;
     pid_t pid = 0;
-    if (const int err = posix_spawnp(&pid, args[0], nullptr, nullptr, args.data(), environ); err != 0)
+    if (const int err = posix_spawnp(&pid, args[0], nullptr, &setup.attributes, args.data(), environ); err != 0)
         throw InputError("cannot start " + argv[0] + ": " + std::strerror(err));
+    const RegisteredChild registration(pid, ChildRole::Isolated);
     int status = 0;
     while (waitpid(pid, &status, 0) < 0)
         if (errno != EINTR) throw InputError("waiting for " + argv[0] + ": " + std::strerror(errno));
@@ -73,7 +89,9 @@ ProcessResult run_confined(const std::vector<std::string>& argv, const ProcessLi
     posix_spawn_file_actions_addopen(&setup.actions, STDERR_FILENO, err, O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (!limits.working_dir.empty()) posix_spawn_file_actions_addchdir_np(&setup.actions, limits.working_dir.c_str());
     // Its own process group: a time-out kills the interpreter and whatever it started.
-    posix_spawnattr_setflags(&setup.attributes, POSIX_SPAWN_SETPGROUP);
+    short flags = 0;
+    posix_spawnattr_getflags(&setup.attributes, &flags);
+    posix_spawnattr_setflags(&setup.attributes, flags | POSIX_SPAWN_SETPGROUP);
     posix_spawnattr_setpgroup(&setup.attributes, 0);
 
     std::vector<char*> args = c_argv(argv);
@@ -86,6 +104,13 @@ ProcessResult run_confined(const std::vector<std::string>& argv, const ProcessLi
         return r;
     }
     r.started = true;
+    const RegisteredChild registration(pid, ChildRole::ProgramGroup);
+#ifndef CROSSDIV_ADDRESS_SANITIZER
+    // Set as it starts (posix_spawn returns once the program is exec'd; an interpreter takes
+    // milliseconds more before it runs the program's first line).
+    const rlimit memory{static_cast<rlim_t>(kProgramMemoryBytes), static_cast<rlim_t>(kProgramMemoryBytes)};
+    prlimit(pid, RLIMIT_DATA, &memory, nullptr);
+#endif
     int status = 0;
     for (auto pause = std::chrono::microseconds(200);;) {
         const pid_t done = waitpid(pid, &status, WNOHANG);
@@ -100,8 +125,10 @@ ProcessResult run_confined(const std::vector<std::string>& argv, const ProcessLi
         std::this_thread::sleep_for(pause);
         pause = std::min(pause * 2, std::chrono::microseconds(20000));
     }
-    // Whatever it left running in its group goes with it.
+    // Whatever it left running in its group goes with it, and whatever left the group
+    // (setsid) and was re-parented here when its parent ended.
     kill(-pid, SIGKILL);
+    reap_adopted_orphans();
     r.seconds = elapsed();
     if (!r.timed_out) {
         if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
@@ -131,12 +158,28 @@ std::string stderr_summary(std::string s, size_t max_chars) {
     return s;
 }
 
+std::string head_and_tail(int fd, size_t bytes) {
+    struct stat st {};
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) return "";
+    const size_t size = static_cast<size_t>(st.st_size);
+    auto read_at = [&](size_t offset, size_t n) {
+        std::string s(n, '\0');
+        size_t got = 0;
+        for (ssize_t k; got < n && (k = pread(fd, s.data() + got, n - got, static_cast<off_t>(offset + got))) > 0;)
+            got += static_cast<size_t>(k);
+        s.resize(got);
+        return s;
+    };
+    if (size <= 2 * bytes) return read_at(0, size);
+    return read_at(0, bytes) + "\n...\n" + read_at(size - bytes, bytes);
+}
+
 std::string tail_of_file(const std::string& path, size_t max_chars) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return "";
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return stderr_summary(ss.str(), max_chars);
+    const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+    if (fd < 0) return "";
+    std::string text = head_and_tail(fd);
+    close(fd);
+    return stderr_summary(std::move(text), max_chars);
 }
 
 }  // namespace crossdiv::verification

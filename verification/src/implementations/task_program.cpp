@@ -1,3 +1,4 @@
+#include "crossdiv/io/output_file.h"
 #include "crossdiv/verification/implementations/task_program.h"
 
 #include <algorithm>
@@ -28,7 +29,7 @@ std::string task_input_file(const std::string& spec, const TemporaryFolder& fold
         b = &*it;
     }
     const std::string path = (folder.path() / (name + "." + b->format)).string();
-    std::ofstream(path) << b->text;
+    write_text_file(path, b->text);
     return path;
 }
 

@@ -1,3 +1,4 @@
+#include "crossdiv/io/output_file.h"
 #include "crossdiv/verification/pages/divergence_view_file.h"
 
 #include <cmath>
@@ -67,10 +68,7 @@ std::string divergence_view_script(const DivergenceView& view, int job, const st
 }
 
 void write_divergence_view(const DivergenceView& view, int job, const std::string& subject, const std::string& path) {
-    std::ofstream out(path, std::ios::binary);
-    if (!out) throw InputError(path + ": cannot write");
-    out << divergence_view_script(view, job, subject);
-    if (!out.flush()) throw InputError(path + ": cannot write");
+    write_text_file(path, divergence_view_script(view, job, subject));
 }
 
 }  // namespace crossdiv::verification

@@ -1,3 +1,4 @@
+#include "crossdiv/io/output_file.h"
 #include "crossdiv/verification/pages/editor_page.h"
 
 #include <cmath>
@@ -41,9 +42,7 @@ void copy_file(const fs::path& from, const fs::path& to, const std::string& why)
 }
 
 void write_text(const fs::path& path, const std::string& text) {
-    std::ofstream out(path);
-    out << text;
-    if (!out.flush()) throw InputError(path.string() + ": cannot write");
+    write_text_file(path.string(), text);
 }
 
 }  // namespace

@@ -1,3 +1,4 @@
+#include "crossdiv/io/output_file.h"
 #include "crossdiv/verification/pages/levels_page.h"
 
 #include <filesystem>
@@ -27,9 +28,7 @@ std::string levels_data_script(const std::vector<LevelsEntry>& entries) {
 
 void write_levels_page(const std::string& dir, const std::vector<LevelsEntry>& entries) {
     prepare_page_folder(dir, "levels", {"levels.html", "levels.js"});
-    std::ofstream out(fs::path(dir) / "levels-data.js");
-    out << levels_data_script(entries);
-    if (!out.flush()) throw InputError((fs::path(dir) / "levels-data.js").string() + ": cannot write");
+    write_text_file((fs::path(dir) / "levels-data.js").string(), levels_data_script(entries));
 }
 
 }  // namespace crossdiv::verification

@@ -1,3 +1,4 @@
+#include "crossdiv/io/output_file.h"
 #include "crossdiv/verification/suite/operations.h"
 
 #include <filesystem>
@@ -88,7 +89,7 @@ std::optional<MinimalDivergence> shrink_for_view(const PolyMesh& mesh, const std
 void write_view(const DivergenceView& view, const std::string& subject, const SuiteJob& job, const std::string& out_dir,
                 CaseRecord& rec) {
     const std::string name = "views/job" + std::to_string(job.index) + ".js";
-    fs::create_directories(fs::path(out_dir) / "views");
+    create_output_folder((fs::path(out_dir) / "views").string());
     write_divergence_view(view, job.index, subject, (fs::path(out_dir) / name).string());
     rec.detail["view"] = name;
     if (view.minimal) {

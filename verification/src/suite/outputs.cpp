@@ -1,3 +1,4 @@
+#include "crossdiv/io/output_file.h"
 #include "crossdiv/verification/suite/outputs.h"
 
 #include <algorithm>
@@ -66,11 +67,7 @@ std::string fmt_measured(const RunRecord& r) {
     return buf;
 }
 
-void write_file(const fs::path& p, const std::string& text) {
-    std::ofstream out(p);
-    if (!out) throw InputError(p.string() + ": cannot write");
-    out << text;
-}
+void write_file(const fs::path& p, const std::string& text) { write_text_file(p.string(), text); }
 
 json to_json(const SuiteSummary& s) {
     return {{"cases", s.cases}, {"runs", s.runs}, {"failures", s.failures}, {"outcomes", s.outcomes}};
@@ -187,7 +184,7 @@ SuiteSummary summarize(const std::vector<CaseRecord>& cases) {
 }
 
 SuiteSummary write_suite_outputs(const std::string& dir, const json& header, const std::vector<CaseRecord>& cases) {
-    fs::create_directories(dir);
+    create_output_folder(dir);
     const SuiteSummary summary = summarize(cases);
     json results = header;
     results["summary"] = to_json(summary);

@@ -1,3 +1,4 @@
+#include "crossdiv/io/output_file.h"
 #include "crossdiv/verification/suite/runner.h"
 
 #include <sys/wait.h>
@@ -8,10 +9,12 @@
 #include <csignal>
 #include <cstring>
 #include <filesystem>
+#include <memory>
 #include <fstream>
 #include <map>
 
 #include "crossdiv/error.h"
+#include "crossdiv/verification/harness/interruption.h"
 #include "crossdiv/verification/suite/operations.h"
 #include "crossdiv/verification/harness/appended_lines.h"
 #include "crossdiv/verification/harness/json_text.h"
@@ -64,10 +67,11 @@ CaseRecord run_job(const SuiteJob& job, const std::string& out_dir) {
 std::vector<CaseRecord> run_jobs(const std::vector<SuiteJob>& jobs, int workers, const std::string& out_dir,
                                  const std::function<void(int, int, const CaseRecord&)>& progress) {
     workers = std::max(1, std::min<int>(workers, static_cast<int>(jobs.size())));
-    fs::create_directories(out_dir);
+    create_output_folder(out_dir);
     int pipe_fd[2];
     if (pipe(pipe_fd) != 0) throw std::runtime_error("pipe failed");
     std::vector<pid_t> pids;
+    std::vector<std::unique_ptr<RegisteredChild>> registrations;
     std::vector<fs::path> parts;
     std::fflush(nullptr);
     for (int w = 0; w < workers; ++w) {
@@ -77,10 +81,15 @@ std::vector<CaseRecord> run_jobs(const std::vector<SuiteJob>& jobs, int workers,
         if (pid == 0) {
             // Worker w: every workers-th job; one JSON line per record, then a line on the
             // pipe with the job index (short writes to a pipe are atomic).
+            stop_cleanly_on_signals();
             close(pipe_fd[0]);
             std::ofstream part(parts.back());
             for (size_t i = w; i < jobs.size(); i += workers) {
                 part << json_text(to_json(run_job(jobs[i], out_dir))) + "\n" << std::flush;
+                if (!part) {  // a full disk: the parent records the job as ended without a record
+                    std::fprintf(stderr, "crossdiv: %s: cannot write\n", parts.back().c_str());
+                    _exit(1);
+                }
                 const std::string msg = std::to_string(i) + "\n";
                 if (write(pipe_fd[1], msg.data(), msg.size()) < 0) _exit(1);
             }
@@ -88,6 +97,7 @@ std::vector<CaseRecord> run_jobs(const std::vector<SuiteJob>& jobs, int workers,
             _exit(0);
         }
         pids.push_back(pid);
+        registrations.push_back(std::make_unique<RegisteredChild>(pid, ChildRole::Worker));
     }
     close(pipe_fd[1]);
 
@@ -139,9 +149,12 @@ std::vector<CaseRecord> run_jobs(const std::vector<SuiteJob>& jobs, int workers,
         }
         // The worker died in core (a crash of ours, not of a reference: those are isolated).
         const int w = static_cast<int>(i % workers);
+        // SIGINT, SIGTERM, SIGHUP: the run was stopped from outside (the worker then ends
+        // by that signal after cleaning up, stop_cleanly_on_signals), not a crash.
+        const bool stopped = died[w] == SIGINT || died[w] == SIGTERM || died[w] == SIGHUP;
+        const std::string how = stopped ? "worker stopped by signal " : "worker crashed in core: signal ";
         CaseRecord c = failed_job(jobs[i],
-                                  died[w] ? "worker crashed in core: signal " + std::to_string(died[w]) + " (" +
-                                                strsignal(died[w]) + ")"
+                                  died[w] ? how + std::to_string(died[w]) + " (" + strsignal(died[w]) + ")"
                                           : "worker ended without a record",
                                   true);
         identify(jobs[i], c);

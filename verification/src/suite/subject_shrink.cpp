@@ -1,3 +1,4 @@
+#include "crossdiv/io/output_file.h"
 #include "crossdiv/verification/suite/subject_shrink.h"
 
 #include <sys/wait.h>
@@ -7,9 +8,11 @@
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <fstream>
 
 #include "crossdiv/error.h"
+#include "crossdiv/verification/harness/interruption.h"
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/verification/comparisons/shrink.h"
 #include "crossdiv/verification/harness/json_text.h"
@@ -52,7 +55,7 @@ json shrink_one(const ShrinkTask& task, const std::string& out_dir) {
     if (req.scheme != Scheme::Loop) req.rule = rule_with_tags(req.scheme, entry.rule_flags, input, notes);
     const ShrinkResult r = shrink_divergence(input, task.job->input, req);
     const fs::path path = fs::path(out_dir) / task.file;
-    fs::create_directories(path.parent_path());
+    create_output_folder(path.parent_path().string());
     write_mesh(path.string(), r.minimal);
     return {{"mesh", task.file},
             {"faces", r.minimal.num_faces()},
@@ -87,14 +90,16 @@ void shrink_subject_failures(const std::vector<SuiteJob>& jobs, std::vector<Case
     // a subject that takes a child down takes only its own record with it.
     workers = std::max(1, std::min<int>(workers, static_cast<int>(tasks.size())));
     const fs::path scratch = fs::path(out_dir) / "minimal";
-    fs::create_directories(scratch);
+    create_output_folder(scratch.string());
     const auto result_file = [&](size_t t) { return scratch / ("task" + std::to_string(t) + ".json"); };
     std::fflush(nullptr);
     std::vector<pid_t> pids;
+    std::vector<std::unique_ptr<RegisteredChild>> registrations;
     for (int w = 0; w < workers; ++w) {
         const pid_t pid = fork();
         if (pid < 0) throw std::runtime_error("fork failed");
         if (pid == 0) {
+            stop_cleanly_on_signals();
             for (size_t t = static_cast<size_t>(w); t < tasks.size(); t += static_cast<size_t>(workers)) {
                 json result;
                 try {
@@ -107,6 +112,7 @@ void shrink_subject_failures(const std::vector<SuiteJob>& jobs, std::vector<Case
             _exit(0);
         }
         pids.push_back(pid);
+        registrations.push_back(std::make_unique<RegisteredChild>(pid, ChildRole::Worker));
     }
     for (const pid_t pid : pids) {
         int status = 0;

@@ -19,6 +19,11 @@ edge's midpoint: a midpoint subdivision handed in as Loop), reversed (every face
 reversed), scrambled (the faces replaced by as many random triangles over the same vertices),
 duplicate-face (the last face replaced by a copy of the first): the right positions with faces
 that are not the scheme's.
+
+Modes of a program that tries to outlive or overrun its run (PIDFILE after SCHEME): escape
+(Loop's own result, but first a child that leaves the process group by setsid, writes its id
+to PIDFILE and sleeps for an hour), hang-pid (writes its own id to PIDFILE, then hangs), hog
+(asks for 8 GiB at once before writing Loop's own result).
 """
 import math
 import os
@@ -45,12 +50,36 @@ def loop_beta(n):
     return (5.0 / 8.0 - (3.0 / 8.0 + math.cos(2.0 * math.pi / n) / 4.0) ** 2) / n
 
 
+def write_pid(path, pid):
+    with open(path + ".part", "w") as f:
+        f.write("%d\n" % pid)
+    os.replace(path + ".part", path)  # whole or absent for whoever polls it
+
+
+def escape(pidfile):
+    """A child in a session of its own, out of the process group crossdiv kills."""
+    if os.fork() == 0:
+        os.setsid()
+        write_pid(pidfile, os.getpid())
+        time.sleep(3600)
+        os._exit(0)
+    while not os.path.exists(pidfile):
+        time.sleep(0.01)
+
+
 def main():
     mode, src, levels, out = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4]
     if mode == "crash":
         os.kill(os.getpid(), signal.SIGSEGV)
     if mode == "hang":
         time.sleep(3600)
+    if mode == "hang-pid":
+        write_pid(sys.argv[6], os.getpid())
+        time.sleep(3600)
+    if mode == "escape":
+        escape(sys.argv[6])
+    if mode == "hog":
+        hog = bytearray(8 << 30)  # noqa: F841 (held until the result is written)
     if mode == "exit":
         sys.stderr.write("cannot subdivide: half-edge table overflow\n")
         sys.exit(3)

@@ -37,12 +37,23 @@ struct ProcessResult {
 /// the time limit. Never throws for what the program does.
 ProcessResult run_confined(const std::vector<std::string>& argv, const ProcessLimits& limits);
 
+/// Memory a program under test may take (RLIMIT_DATA: its heap and private writable mappings,
+/// not the address space an interpreter or a JIT reserves without using): a program that
+/// allocates without bound fails fast, as a library run does (kIsolatedMemoryBytes, 6 GiB, the
+/// same reasoning). Not applied under the address sanitizer, whose shadow memory counts.
+inline constexpr long long kProgramMemoryBytes = 6LL << 30;
+
+/// The first and the last `bytes` of a regular file (all of it when it is shorter than twice
+/// that), joined by "\n...\n": what a program wrote on stderr, read without holding gigabytes of
+/// it. "" for a file that is not regular.
+std::string head_and_tail(int fd, size_t bytes = 64 * 1024);
+
 /// What a process said on stderr, on one line: the last `max_chars` characters, preceded by
 /// the first line of a sanitizer report when there is one before them (ASan's legend fills
 /// the tail and would hide which error it was).
 std::string stderr_summary(std::string text, size_t max_chars = 400);
 
-/// stderr_summary of a text file (a program's stderr); "" when absent.
+/// stderr_summary of a text file (a program's stderr), read by head_and_tail; "" when absent.
 std::string tail_of_file(const std::string& path, size_t max_chars = 400);
 
 }  // namespace crossdiv::verification

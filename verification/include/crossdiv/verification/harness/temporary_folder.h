@@ -1,15 +1,17 @@
 #pragma once
 /// @file
 /// A temporary folder of its own for a program run, removed with whatever the program left in
-/// it when the run ends.
+/// it when the run ends, or when crossdiv is stopped by a signal meanwhile (interruption.h).
 
 #include <stdlib.h>
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <system_error>
 
 #include "crossdiv/error.h"
+#include "crossdiv/verification/harness/interruption.h"
 
 namespace crossdiv::verification {
 
@@ -22,6 +24,7 @@ public:
         std::string pattern = (fs::temp_directory_path() / ("crossdiv-" + label + "-XXXXXX")).string();
         if (!mkdtemp(pattern.data())) throw InputError("cannot create a temporary folder in " + fs::temp_directory_path().string());
         path_ = pattern;
+        registration_.emplace(path_.string());
     }
     ~TemporaryFolder() {
         std::error_code ignored;
@@ -33,6 +36,7 @@ public:
 
 private:
     std::filesystem::path path_;
+    std::optional<RegisteredFolder> registration_;  ///< after path_: unregistered once it is removed
 };
 
 }  // namespace crossdiv::verification
