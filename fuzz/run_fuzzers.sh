@@ -8,13 +8,19 @@
 # Findings are kept in BUILD_DIR/fuzz-findings/ (reproduce: BUILD_DIR/fuzz/fuzz_T FILE).
 set -euo pipefail
 build="$1"; seconds="$2"; shift 2
-targets="${*:-obj off ply swp bzc bez volume manifest}"
+targets="${*:-obj off ply swp bzc bez volume manifest merge}"
 parallel="${CROSSDIV_FUZZ_PARALLEL:-1}"
 source_dir="$(cd "$(dirname "$0")/.." && pwd)"
 corpus="$build/fuzz-corpus"; work="$build/fuzz-work"; findings="$build/fuzz-findings"
 rm -rf "$corpus" "$work"
 mkdir -p "$work" "$findings"
 "$build/fuzz/fuzz_corpus" "$corpus" "$source_dir"
+# The merge target's seed: a small suite's own results.json, written by this build's crossdiv.
+printf 'suite seed\ncase bundled:tetrahedron loop levels=1 against=opensubdiv\ncase bundled:quad-cube catmull-clark levels=1 against=opensubdiv\n' \
+  > "$work/seed.suite"
+if "$build/verification/crossdiv" suite "$work/seed.suite" --out "$work/seed-out" --jobs 1 > "$work/seed.log" 2>&1; then
+  mkdir -p "$corpus/merge" && cp "$work/seed-out/results.json" "$corpus/merge/"
+fi
 
 # One target: its verdict line in $work/T.verdict, exit 1 when it found something.
 fuzz_one() {

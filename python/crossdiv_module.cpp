@@ -94,12 +94,33 @@ long long vertex_index(const py::handle index, size_t f, size_t c) {
     throw InputError(where + "a " + type + " is not a vertex index");
 }
 
+/// V as float64 positions. Refused when its values are not real numbers, rather than cast:
+/// complex values would lose their imaginary parts, bools and strings are no coordinates.
+py::array_t<double, py::array::c_style | py::array::forcecast> positions_of(const py::object& V) {
+    const py::array a = py::array::ensure(V);
+    if (!a) throw InputError("V must be an n x 3 array of numbers");
+    const char kind = a.dtype().kind();
+    if (kind == 'c') throw InputError("V is complex: positions are real numbers (the imaginary parts would be dropped)");
+    if (kind == 'b') throw InputError("V holds bools, not coordinates");
+    if (kind == 'U' || kind == 'S') throw InputError("V holds strings, not coordinates");
+    auto d = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+    if (!d) throw InputError("V must be an n x 3 array of numbers (its values do not convert to float64)");
+    return d;
+}
+
 /// A mesh from V (n x 3, any real dtype) and F (an m x k integer array, or a sequence of
 /// index sequences). @throws InputError naming the face and corner of an index out of range,
 /// or a non-finite coordinate.
-PolyMesh mesh_from(const py::array_t<double, py::array::c_style | py::array::forcecast>& V, const py::object& F) {
-    if (V.ndim() != 2 || V.shape(1) != 3)
-        throw InputError("V must be an n x 3 array of positions (got " + std::to_string(V.ndim()) + " dimensions)");
+PolyMesh mesh_from(const py::object& V_given, const py::object& F) {
+    const py::array_t<double, py::array::c_style | py::array::forcecast> V = positions_of(V_given);
+    if (V.ndim() != 2 || V.shape(1) != 3) {
+        std::string shape;
+        for (py::ssize_t d = 0; d < V.ndim(); ++d) {
+            if (d > 0) shape += ", ";
+            shape += std::to_string(V.shape(d));
+        }
+        throw InputError("V must be an n x 3 array of positions (got shape (" + shape + "))");
+    }
     PolyMesh mesh;
     const auto v = V.unchecked<2>();
     mesh.positions.resize(V.shape(0));
@@ -179,7 +200,7 @@ std::unique_ptr<Implementation> python_subject(const std::string& name, Scheme s
             V = pair[0];
             F = pair[1];
         }
-        return mesh_from(V.cast<py::array_t<double, py::array::c_style | py::array::forcecast>>(), F);
+        return mesh_from(V, F);
     };
     return make_callback_implementation(name, {scheme}, std::move(refine));
 }
@@ -216,7 +237,7 @@ PYBIND11_MODULE(crossdiv, m) {
     m.def("read_mesh", [](const std::string& path) { return mesh_tuple(read_mesh(path)); }, py::arg("path"),
           "Reads OBJ, OFF or PLY: (V, F), V an n x 3 float64 array, F an m x k int32 array (a list of "
           "arrays when face sizes differ). Raises crossdiv.InputError naming the file and line.");
-    m.def("write_mesh", [](const std::string& path, const py::array_t<double, py::array::c_style | py::array::forcecast>& V,
+    m.def("write_mesh", [](const std::string& path, const py::object& V,
                            const py::object& F) { write_mesh(path, mesh_from(V, F)); },
           py::arg("path"), py::arg("V"), py::arg("F"), "Writes OBJ, OFF or PLY by the extension.");
     m.def("read_curves", [](const std::string& path) {
@@ -266,7 +287,7 @@ PYBIND11_MODULE(crossdiv, m) {
           py::arg("path"), py::arg("curves"),
           "Writes curves (dicts as read_curves gives, keyword and control required) as SWP.");
     m.def("subdivide",
-          [](const py::array_t<double, py::array::c_style | py::array::forcecast>& V, const py::object& F,
+          [](const py::object& V, const py::object& F,
              const std::string& scheme, int levels, std::optional<std::string> weights, std::optional<std::string> boundary,
              const std::string& impl, long long max_faces, double timeout) {
               const RefineRequest req = request_for(scheme, levels, weights, boundary);
@@ -289,7 +310,7 @@ PYBIND11_MODULE(crossdiv, m) {
           "`max_faces` faces is refused before any work (crossdiv subdivide's --max-faces). A reference runs in a "
           "child process with `timeout` seconds: its crash, hang or refusal raises crossdiv.InputError naming it.");
     m.def("subdivision_matrix",
-          [](const py::array_t<double, py::array::c_style | py::array::forcecast>& V, const py::object& F,
+          [](const py::object& V, const py::object& F,
              const std::string& weights, const std::string& boundary) {
               const PolyMesh mesh = mesh_from(V, F);
               const LoopOptions options{loop_weights_from_string(weights), loop_boundary_from_string(boundary)};
@@ -308,7 +329,7 @@ PYBIND11_MODULE(crossdiv, m) {
           "Loop's one-level subdivision matrix S (V1 = S @ V0; rows in core's output order: old vertices, then "
           "one per edge) as a scipy.sparse.csr_matrix.");
     m.def("compare",
-          [](const py::array_t<double, py::array::c_style | py::array::forcecast>& V, const py::object& F, int levels,
+          [](const py::object& V, const py::object& F, int levels,
              std::optional<std::string> weights, std::optional<std::string> boundary, std::vector<std::string> references,
              const std::string& tier, double tolerance, py::object subject, const std::string& subject_name,
              double timeout, const std::string& scheme) {

@@ -113,6 +113,13 @@ def test_bad_input_names_the_element():
     whole = crossdiv.subdivide(TETRA_V, np.asarray(TETRA_F, dtype=np.float64))
     same = crossdiv.subdivide(TETRA_V, [[np.uint16(a), np.int8(b), int(c)] for a, b, c in TETRA_F])
     assert np.array_equal(whole[0], same[0])
+    # Positions are real numbers: complex ones would lose their imaginary parts, bools are no coordinates.
+    with pytest.raises(crossdiv.InputError, match="V is complex"):
+        crossdiv.subdivide(TETRA_V + 1j, TETRA_F)
+    with pytest.raises(crossdiv.InputError, match="V holds bools"):
+        crossdiv.subdivide(TETRA_V > 0, TETRA_F)
+    with pytest.raises(crossdiv.InputError, match=r"V must be an n x 3 array of positions \(got shape \(4, 2\)\)"):
+        crossdiv.subdivide(TETRA_V[:, :2], TETRA_F)
     with pytest.raises(ValueError, match="V row 3 is not finite"):
         crossdiv.subdivide(np.vstack([TETRA_V[:3], [math.nan, 0, 0]]), TETRA_F)
     with pytest.raises(ValueError, match="unknown scheme"):

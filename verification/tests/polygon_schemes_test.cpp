@@ -203,8 +203,43 @@ TEST(DooSabinComparison, OnlyAMeasuredTopologyDifferenceIsClassifiedTopology) {
     EXPECT_EQ(c.runs[1].verdict, Verdict::RefInvalidOutput) << c.runs[1].explanation;
     EXPECT_NE(c.runs[1].explanation.find("doo-sabin makes 36 vertices, 38 faces"), std::string::npos) << c.runs[1].explanation;
     // The same vertex and face counts, one face a corner short: other edges, a topology
-    // difference, measured.
-    EXPECT_EQ(c.runs[2].divergence_class, DivergenceClass::Topology) << c.runs[2].explanation;
+    // difference, measured; but no other reference makes those faces, so it is the
+    // reference's own and fails.
+    EXPECT_EQ(c.runs[2].divergence_class, DivergenceClass::Unexplained) << c.runs[2].explanation;
+    EXPECT_NE(c.runs[2].explanation.find("refined topology differs"), std::string::npos) << c.runs[2].explanation;
+    EXPECT_NE(c.runs[2].explanation.find("no other reference makes corner-cutting-doo-sabin's faces"), std::string::npos)
+        << c.runs[2].explanation;
+}
+
+TEST(DooSabinComparison, WhenTwoReferencesShareFacesThatAreNotCoresCoreAloneDiffersAndEachRunFails) {
+    // Two references that make the same faces, each face a corner short of core's (as a core
+    // with a broken face rule would look against two right references): the difference is
+    // shared, so it is not either reference's own, and core is the one that differs.
+    const auto short_faces = [](const PolyMesh& mesh, const RefineRequest& request) {
+        const PolyMesh full = core_implementation().refine_last(mesh, request);
+        PolyMesh r;
+        r.positions = full.positions;
+        for (int f = 0; f < full.num_faces(); ++f) {
+            std::vector<int> face(full.face(f), full.face(f) + full.face_size(f));
+            if (f == 0) face.pop_back();
+            r.add_face(face);
+        }
+        return r;
+    };
+    register_reference(make_callback_implementation("short-face-a", {Scheme::DooSabin}, short_faces));
+    register_reference(make_callback_implementation("short-face-b", {Scheme::DooSabin}, short_faces));
+    RefinementRequest req;
+    req.scheme = Scheme::DooSabin;
+    req.levels = 1;
+    req.references = {"short-face-a", "short-face-b"};
+    const RefinementComparison c = compare_refinement(datasets::bundled_mesh("cube-asymmetric"), "cube-asymmetric", req);
+    ASSERT_EQ(c.runs.size(), 2u);
+    for (const RefinementRun& r : c.runs) {
+        EXPECT_EQ(r.divergence_class, DivergenceClass::Unexplained) << r.explanation;
+        EXPECT_NE(r.explanation.find("the same faces as " + r.reference + ", and core alone differs"), std::string::npos)
+            << r.explanation;
+        EXPECT_TRUE(Outcome({r.verdict, r.divergence_class}).is_failure());
+    }
 }
 
 TEST(DooSabinComparison, CgalAgreesOnClosedMeshesAndDropsBorderFacesOnOpenOnes) {

@@ -1,9 +1,9 @@
-#include "crossdiv/io/output_file.h"
 #include "crossdiv/io/mesh_io.h"
 
 #include <fstream>
 #include <string>
 
+#include "crossdiv/io/output_file.h"
 #include "crossdiv/error.h"
 #include "crossdiv/io/input_file.h"
 

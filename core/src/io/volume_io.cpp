@@ -1,4 +1,3 @@
-#include "crossdiv/io/output_file.h"
 #include "crossdiv/io/volume_io.h"
 
 #include <algorithm>
@@ -12,6 +11,7 @@
 #include <iterator>
 #include <sstream>
 
+#include "crossdiv/io/output_file.h"
 #include "crossdiv/error.h"
 
 namespace crossdiv {

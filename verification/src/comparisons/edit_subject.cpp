@@ -1,4 +1,3 @@
-#include "crossdiv/io/output_file.h"
 #include "crossdiv/verification/comparisons/edit_subject.h"
 
 #include <Eigen/Geometry>
@@ -8,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "crossdiv/io/output_file.h"
 #include "crossdiv/error.h"
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/mesh/halfedge_mesh.h"

@@ -1,4 +1,5 @@
 #include "crossdiv/verification/comparisons/refinement_comparison.h"
+#include "crossdiv/verification/comparisons/shared_topology.h"
 
 #include <algorithm>
 #include <chrono>
@@ -363,6 +364,9 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
     std::map<std::string, std::vector<Vec3>> in_our_order;
     const bool keep_view = req.view_max_faces > 0 && out.core_error.empty() && ours.num_faces() <= req.view_max_faces;
     std::map<std::string, std::vector<std::vector<Vec3>>> at_each_level;
+    // The faces of each run whose faces are not core's (runs[i] <-> made_by_run[i]), for the post-pass
+    // that lets a topology difference stand only where it is shared (shared_topology.h).
+    std::vector<std::optional<MadeFaces>> made_by_run;
     for (const Implementation* impl : refs) {
         const Implementation& ref = *impl;
         RefinementRun run;
@@ -468,6 +472,8 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
             run.divergence_class = c.cls;
             run.explanation = c.explanation;
             out.runs.push_back(std::move(run));
+            made_by_run.resize(out.runs.size());
+            made_by_run.back() = made_faces(theirs, {});
             continue;
         }
 
@@ -612,7 +618,10 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
         run.divergence_class = found.cls;
         run.explanation = found.explanation;
         out.runs.push_back(std::move(run));
+        made_by_run.resize(out.runs.size());
+        if (!same_faces) made_by_run.back() = made_faces(theirs, map);
     }
+    require_shared_topology(out.runs, made_by_run, subject_name);
 
     const RefinementRun* worst_run = nullptr;
     for (const RefinementRun& r : out.runs)

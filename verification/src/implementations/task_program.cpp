@@ -1,4 +1,3 @@
-#include "crossdiv/io/output_file.h"
 #include "crossdiv/verification/implementations/task_program.h"
 
 #include <algorithm>
@@ -6,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "crossdiv/io/output_file.h"
 #include "crossdiv/datasets/bundled_curves.h"
 #include "crossdiv/datasets/bundled_surfaces.h"
 

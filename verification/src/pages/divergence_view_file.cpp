@@ -1,4 +1,3 @@
-#include "crossdiv/io/output_file.h"
 #include "crossdiv/verification/pages/divergence_view_file.h"
 
 #include <cmath>
@@ -6,6 +5,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "crossdiv/io/output_file.h"
 #include "crossdiv/error.h"
 #include "crossdiv/mesh/tri_mesh.h"
 #include "crossdiv/verification/harness/json_text.h"

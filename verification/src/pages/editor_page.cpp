@@ -1,10 +1,10 @@
-#include "crossdiv/io/output_file.h"
 #include "crossdiv/verification/pages/editor_page.h"
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 
+#include "crossdiv/io/output_file.h"
 #include "crossdiv/curves/frames.h"
 #include "crossdiv/error.h"
 #include "crossdiv/mesh/tri_mesh.h"

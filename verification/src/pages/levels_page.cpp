@@ -1,9 +1,9 @@
-#include "crossdiv/io/output_file.h"
 #include "crossdiv/verification/pages/levels_page.h"
 
 #include <filesystem>
 #include <fstream>
 
+#include "crossdiv/io/output_file.h"
 #include "crossdiv/error.h"
 #include "crossdiv/verification/harness/mesh_topology.h"
 #include "crossdiv/verification/pages/editor_page.h"

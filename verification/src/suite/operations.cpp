@@ -1,9 +1,9 @@
-#include "crossdiv/io/output_file.h"
 #include "crossdiv/verification/suite/operations.h"
 
 #include <filesystem>
 #include <fstream>
 
+#include "crossdiv/io/output_file.h"
 #include "crossdiv/error.h"
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/subdiv/loop.h"

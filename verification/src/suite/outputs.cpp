@@ -1,4 +1,3 @@
-#include "crossdiv/io/output_file.h"
 #include "crossdiv/verification/suite/outputs.h"
 
 #include <algorithm>
@@ -7,9 +6,11 @@
 #include <fstream>
 #include <sstream>
 
+#include "crossdiv/io/output_file.h"
 #include "crossdiv/error.h"
 #include "crossdiv/verification/harness/json_text.h"
 #include "crossdiv/verification/suite/roster_table.h"
+#include "crossdiv/verification/suite/shard_results.h"
 
 namespace crossdiv::verification {
 namespace {
@@ -202,89 +203,31 @@ SuiteSummary write_suite_outputs(const std::string& dir, const json& header, con
     return summary;
 }
 
-namespace {
-
-/// results.json nests about ten levels (a case, its runs, their detail, a table's rows).
-constexpr int kMaxResultsDepth = 64;
-
-/// Whether `j` nests deeper than `limit` arrays and objects, found without recursion.
-bool nests_deeper(const json& j, int limit) {
-    std::vector<std::pair<const json*, int>> stack{{&j, 0}};
-    while (!stack.empty()) {
-        const auto [v, depth] = stack.back();
-        stack.pop_back();
-        if (depth > limit) return true;
-        if (v->is_structured())
-            for (const json& child : *v) stack.push_back({&child, depth + 1});
-    }
-    return false;
-}
-
-}  // namespace
-
 SuiteSummary merge_suite_outputs(const std::vector<std::string>& dirs, const std::string& out_dir) {
-    json header;
+    ShardResults first;  // the first shard's header, which every other shard's must match
     std::map<int, CaseRecord> cases;
     std::vector<std::string> shards;
     for (const std::string& d : dirs) {
         const fs::path p = fs::path(d) / "results.json";
         std::ifstream in(p);
         if (!in) throw InputError(p.string() + ": no results.json (not a suite output folder)");
-        json r = json::parse(in, nullptr, false);
-        if (r.is_discarded() || !r.is_object() || !r.contains("cases") || !r["cases"].is_array())
-            throw InputError(p.string() + ": not a crossdiv suite results file");
-        // Copying or walking a value recurses as deep as it nests: a results file nests a few
-        // levels; one nested thousands deep is refused before anything recurses into it.
-        if (nests_deeper(r, kMaxResultsDepth))
-            throw InputError(p.string() + ": nests deeper than " + std::to_string(kMaxResultsDepth) + " levels: not a crossdiv results file");
-        // A field of the wrong type names the file, as a missing one does.
-        const auto field = [&](const json& j, const char* key, auto fallback) {
-            try {
-                return j.value(key, fallback);
-            } catch (const json::exception&) {
-                throw InputError(p.string() + ": \"" + key + "\" has the wrong type");
-            }
-        };
-        if (header.is_null()) {
-            header = r;
-            header.erase("cases");
-            header.erase("summary");
-        } else if (field(r, "suite", std::string()) != field(header, "suite", std::string()) ||
-                   field(r, "jobs_total", -1) != field(header, "jobs_total", -1)) {
-            throw InputError(p.string() + ": suite '" + field(r, "suite", std::string()) + "' with " +
-                             std::to_string(field(r, "jobs_total", -1)) + " jobs does not match '" +
-                             field(header, "suite", std::string()) + "' with " + std::to_string(field(header, "jobs_total", -1)));
-        } else if (field(r, "jobs_fingerprint", std::string()) != field(header, "jobs_fingerprint", std::string())) {
-            throw InputError(p.string() + ": its jobs are not the other shards' (jobs_fingerprint " +
-                             field(r, "jobs_fingerprint", std::string()) + " against " +
-                             field(header, "jobs_fingerprint", std::string()) + "): two versions of the manifest");
+        ShardResults r = read_shard_results(in, p.string());
+        if (first.header.is_null()) {
+            first.header = r.header;
+        } else if (r.suite() != first.suite() || r.jobs_total() != first.jobs_total()) {
+            throw InputError(p.string() + ": suite '" + r.suite() + "' with " + std::to_string(r.jobs_total()) +
+                             " jobs does not match '" + first.suite() + "' with " + std::to_string(first.jobs_total()));
+        } else if (r.jobs_fingerprint() != first.jobs_fingerprint()) {
+            throw InputError(p.string() + ": its jobs are not the other shards' (jobs_fingerprint " + r.jobs_fingerprint() +
+                             " against " + first.jobs_fingerprint() + "): two versions of the manifest");
         }
-        shards.push_back(field(r, "shard", std::string("?")));
-        const json& records = r["cases"];
-        for (size_t k = 0; k < records.size(); ++k) {
-            CaseRecord c;
-            try {
-                c = case_record_from_json(records[k]);
-            } catch (const std::exception& e) {
-                throw InputError(p.string() + ": case " + std::to_string(k) + ": " + e.what());
-            }
+        shards.push_back(r.shard());
+        for (size_t k = 0; k < r.cases.size(); ++k) {
+            CaseRecord& c = r.cases[k];
             if (cases.count(c.job)) throw InputError(p.string() + ": job " + std::to_string(c.job) + " is in two shards");
-            // The 3D view a case names, and its minimal input, move with it: files of the
-            // shard's views/ and minimal/ folders, nothing else.
-            std::vector<std::string> files;
-            if (c.detail.contains("view")) files.push_back(c.detail["view"].is_string() ? c.detail["view"].get<std::string>() : "");
-            if (c.detail.contains("minimal") && c.detail["minimal"].is_object() && c.detail["minimal"].contains("mesh") &&
-                c.detail["minimal"]["mesh"] != "")
-                files.push_back(c.detail["minimal"]["mesh"].is_string() ? c.detail["minimal"]["mesh"].get<std::string>() : "");
-            for (const std::string& file : files) {
-                const fs::path rel(file);
-                const bool inside = !file.empty() && rel.is_relative() &&
-                                    std::none_of(rel.begin(), rel.end(), [](const fs::path& part) { return part == ".."; }) &&
-                                    (file.starts_with("views/") || file.starts_with("minimal/"));
-                if (!inside)
-                    throw InputError(p.string() + ": case " + std::to_string(k) + " names the file '" + file +
-                                     "', not one of its views/ or minimal/ folders");
-                const fs::path src = fs::path(d) / rel, dst = fs::path(out_dir) / rel;
+            // The 3D view a case names, and its minimal input, move with it.
+            for (const std::string& file : r.files[k]) {
+                const fs::path src = fs::path(d) / file, dst = fs::path(out_dir) / file;
                 std::error_code ec;
                 fs::create_directories(dst.parent_path(), ec);
                 if (fs::absolute(src) != fs::absolute(dst)) fs::copy_file(src, dst, fs::copy_options::overwrite_existing, ec);
@@ -295,6 +238,7 @@ SuiteSummary merge_suite_outputs(const std::vector<std::string>& dirs, const std
     }
     std::string joined;
     for (const std::string& s : shards) joined += (joined.empty() ? "" : "+") + s;
+    json header = std::move(first.header);
     header["shard"] = "merged " + joined;
     header["jobs_run"] = cases.size();
     std::vector<CaseRecord> ordered;

@@ -1,4 +1,3 @@
-#include "crossdiv/io/output_file.h"
 #include "crossdiv/verification/suite/runner.h"
 
 #include <sys/wait.h>
@@ -13,6 +12,7 @@
 #include <fstream>
 #include <map>
 
+#include "crossdiv/io/output_file.h"
 #include "crossdiv/error.h"
 #include "crossdiv/verification/harness/interruption.h"
 #include "crossdiv/verification/suite/operations.h"

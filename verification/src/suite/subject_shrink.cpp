@@ -1,4 +1,3 @@
-#include "crossdiv/io/output_file.h"
 #include "crossdiv/verification/suite/subject_shrink.h"
 
 #include <sys/wait.h>
@@ -11,6 +10,7 @@
 #include <memory>
 #include <fstream>
 
+#include "crossdiv/io/output_file.h"
 #include "crossdiv/error.h"
 #include "crossdiv/verification/harness/interruption.h"
 #include "crossdiv/io/mesh_io.h"
