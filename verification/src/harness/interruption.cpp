@@ -15,7 +15,9 @@
 #include <filesystem>
 #include <functional>
 #include <mutex>
+#include <new>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 namespace crossdiv::verification {
@@ -28,9 +30,12 @@ struct Registry {
     bool adopting = false;
 };
 
-/// The registry of this process. A forked worker starts a new one (stop_cleanly_on_signals):
+/// The registry of this process. A forked worker starts it afresh (stop_cleanly_on_signals):
 /// the copy it inherits lists its parent's children, and its mutex may be in any state.
-Registry* registry = new Registry;
+Registry& registry() {
+    static Registry r;
+    return r;
+}
 
 /// A child of this process as /proc tells it: its id and its process group.
 struct ChildProcess {
@@ -138,50 +143,55 @@ sigset_t stopping_signals() {
 }  // namespace
 
 void stop_cleanly_on_signals() {
-    registry = new Registry;  // a worker forgets its parent's (leaked: its mutex may be held)
+    // A worker forgets its parent's registry, rebuilt in place (std::mutex is trivially
+    // destructible, so one held by a parent's thread at the fork is simply replaced).
+    static_assert(std::is_trivially_destructible_v<std::mutex>);
+    Registry& r = registry();
+    r.~Registry();
+    new (&r) Registry;
     const sigset_t set = stopping_signals();
     pthread_sigmask(SIG_BLOCK, &set, nullptr);
     adopt_orphans();
-    std::thread([set, r = registry] {
+    std::thread([set] {
         int sig = 0;
         while (sigwait(&set, &sig) != 0) {}
-        stop_everything(sig, *r);
+        stop_everything(sig, registry());
     }).detach();
 }
 
 void adopt_orphans() {
     if (prctl(PR_SET_CHILD_SUBREAPER, 1) == 0) {
-        const std::lock_guard lock(registry->mutex);
-        registry->adopting = true;
+        const std::lock_guard lock(registry().mutex);
+        registry().adopting = true;
     }
 }
 
 int reap_adopted_orphans() {
-    Registry& r = *registry;
+    Registry& r = registry();
     const std::lock_guard lock(r.mutex);
     if (!r.adopting) return 0;
     return kill_children([&](pid_t pid) { return registered(r, pid); });
 }
 
 RegisteredChild::RegisteredChild(pid_t pid, ChildRole role) : pid_(pid) {
-    const std::lock_guard lock(registry->mutex);
-    registry->children.emplace_back(pid, role);
+    const std::lock_guard lock(registry().mutex);
+    registry().children.emplace_back(pid, role);
 }
 
 RegisteredChild::~RegisteredChild() {
-    const std::lock_guard lock(registry->mutex);
-    std::erase_if(registry->children, [&](const auto& c) { return c.first == pid_; });
+    const std::lock_guard lock(registry().mutex);
+    std::erase_if(registry().children, [&](const auto& c) { return c.first == pid_; });
 }
 
 RegisteredFolder::RegisteredFolder(std::string path) : path_(std::move(path)) {
-    const std::lock_guard lock(registry->mutex);
-    registry->folders.push_back(path_);
+    const std::lock_guard lock(registry().mutex);
+    registry().folders.push_back(path_);
 }
 
 RegisteredFolder::~RegisteredFolder() {
-    const std::lock_guard lock(registry->mutex);
-    const auto it = std::find(registry->folders.begin(), registry->folders.end(), path_);
-    if (it != registry->folders.end()) registry->folders.erase(it);
+    const std::lock_guard lock(registry().mutex);
+    const auto it = std::find(registry().folders.begin(), registry().folders.end(), path_);
+    if (it != registry().folders.end()) registry().folders.erase(it);
 }
 
 }  // namespace crossdiv::verification
