@@ -24,7 +24,7 @@
 #include "crossdiv/verification/harness/isolate.h"
 #include "crossdiv/verification/harness/json_text.h"
 #include "crossdiv/verification/implementations/callback_implementation.h"
-#include "crossdiv/verification/implementations/isolated_refine.h"
+#include "crossdiv/verification/implementations/refine_or_throw.h"
 #include "crossdiv/verification/implementations/output_size.h"
 #include "crossdiv/verification/implementations/registry.h"
 
@@ -297,7 +297,7 @@ PYBIND11_MODULE(crossdiv, m) {
               PolyMesh out;
               {
                   py::gil_scoped_release unlocked;  // core and the references are C++ and do not touch Python
-                  out = std::move(refine_isolated(implementation, mesh, req, "the mesh", timeout).back());
+                  out = std::move(refine_or_throw(implementation, mesh, req, "the mesh", timeout).back());
               }
               return mesh_tuple(std::move(out));
           },

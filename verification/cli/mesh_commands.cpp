@@ -22,7 +22,7 @@
 #include "crossdiv/verification/comparisons/refinement_comparison.h"
 #include "crossdiv/verification/comparisons/shrink.h"
 #include "crossdiv/verification/implementations/inputs.h"
-#include "crossdiv/verification/implementations/isolated_refine.h"
+#include "crossdiv/verification/implementations/refine_or_throw.h"
 #include "crossdiv/verification/implementations/output_size.h"
 #include "crossdiv/verification/implementations/tag_rules.h"
 #include "crossdiv/subdiv/hole_faces.h"
@@ -124,7 +124,7 @@ int run_loop_subdivide_creased(const std::string& in, const PolyMesh& input, con
     if (impl != "split-flip" && support && support->creases) {
         if (!chosen.applies(Scheme::Loop, request.rule))
             throw InputError(impl + " has no Loop with weights=" + std::string(to_string(o.weights)));
-        const adapters::LevelTrace levels = refine_isolated(chosen, input, request, in, timeout);
+        const adapters::LevelTrace levels = refine_or_throw(chosen, input, request, in, timeout);
         result = levels.back();
         if (color == "age") color_by_age(result, s.scheme, vertex_counts(levels));
     } else {
@@ -181,7 +181,7 @@ int run_subdivide(const std::string& in, const SchemeArgs& flags, const std::str
         request.rule.loop = s.options();
         if (!ref.applies(Scheme::Loop, request.rule))
             throw InputError(impl + " has no Loop with weights=" + s.weights + " boundary=" + std::string(to_string(s.options().boundary)));
-        result = std::move(refine_isolated(ref, input, request, in, timeout).back());
+        result = std::move(refine_or_throw(ref, input, request, in, timeout).back());
     }
     if (color == "age") {
         // The fast Loop driver returns the last level only: the earlier levels' vertex counts

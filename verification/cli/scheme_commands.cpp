@@ -16,7 +16,7 @@
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/verification/properties/butterfly_properties.h"
 #include "crossdiv/verification/implementations/inputs.h"
-#include "crossdiv/verification/implementations/isolated_refine.h"
+#include "crossdiv/verification/implementations/refine_or_throw.h"
 #include "crossdiv/verification/implementations/output_size.h"
 #include "crossdiv/verification/implementations/tag_rules.h"
 #include "crossdiv/subdiv/hole_faces.h"
@@ -80,7 +80,7 @@ int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const s
     } else {
         const Implementation& ref = *select_references(scheme, {impl}).front();
         const std::string rule = rule_name(scheme, ref.closest_rule(scheme, rule_asked));
-        result = std::move(refine_isolated(ref, mesh, {scheme, rule_asked, s.levels}, in, timeout).back());
+        result = std::move(refine_or_throw(ref, mesh, {scheme, rule_asked, s.levels}, in, timeout).back());
         if (rule != asked) fmt::print("note: {} applies the {} boundary rule, not {}\n", impl, rule, asked);
     }
     // Hole faces were refined around; they are not emitted (OpenSubdiv's convention).

@@ -9,6 +9,7 @@
 
 #include "crossdiv/mesh/poly_mesh.h"
 #include "crossdiv/subdiv/nonmanifold_rule.h"
+#include "crossdiv/verification/implementations/implementation.h"
 #include "crossdiv/verification/implementations/inputs.h"
 
 namespace crossdiv::cli {
@@ -28,7 +29,7 @@ struct PolySchemeArgs {
 
 /// `crossdiv subdivide IN --scheme catmull-clark --impl core|opensubdiv|openmesh|cgal -o OUT`;
 /// `color` "age" colours the vertices by the level they were born at (color_by_age). A reference
-/// runs isolated with `timeout` seconds (refine_isolated).
+/// runs isolated with `timeout` seconds (refine_or_throw).
 int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const std::string& impl, const std::string& out,
                          const std::string& color, double timeout);
 

@@ -52,7 +52,7 @@ std::vector<ChildProcess> children_of_this_process() {
     if (!proc) return found;
     while (const dirent* entry = readdir(proc)) {
         if (entry->d_name[0] < '0' || entry->d_name[0] > '9') continue;
-        char path[64], text[512];
+        char path[300], text[512];  // /proc/ + a name of up to 255 bytes + /stat
         std::snprintf(path, sizeof path, "/proc/%s/stat", entry->d_name);
         FILE* f = std::fopen(path, "r");
         if (!f) continue;  // ended meanwhile
@@ -164,6 +164,10 @@ void adopt_orphans() {
         const std::lock_guard lock(registry().mutex);
         registry().adopting = true;
     }
+}
+
+void keep_adopting_orphans() {
+    if (registry().adopting) prctl(PR_SET_CHILD_SUBREAPER, 1);
 }
 
 int reap_adopted_orphans() {

@@ -96,6 +96,7 @@ ProcessResult run_confined(const std::vector<std::string>& argv, const ProcessLi
 
     std::vector<char*> args = c_argv(argv);
     std::fflush(nullptr);
+    keep_adopting_orphans();  // in a forked library run too, whatever the program leaves is ours
     const auto t0 = std::chrono::steady_clock::now();
     auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
     pid_t pid = 0;

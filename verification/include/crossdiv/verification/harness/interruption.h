@@ -28,6 +28,10 @@ void stop_cleanly_on_signals();
 /// whose parent ends is re-parented here instead of to init, so reap_adopted_orphans finds it.
 void adopt_orphans();
 
+/// Makes this process a subreaper again when the process it was forked from is one: fork does
+/// not pass the attribute on, so a forked library run that starts a program calls this first.
+void keep_adopting_orphans();
+
 /// Kills and reaps every child of this process that it did not start itself (not registered
 /// as a RegisteredChild): what a finished program left behind outside its process group, now
 /// re-parented here. Does nothing unless adopt_orphans was called, since a host process (the

@@ -1,14 +1,14 @@
-#include "crossdiv/verification/implementations/isolated_refine.h"
+#include "crossdiv/verification/implementations/refine_or_throw.h"
 
 #include "crossdiv/error.h"
 #include "crossdiv/verification/harness/isolate.h"
 
 namespace crossdiv::verification {
 
-adapters::LevelTrace refine_isolated(const Implementation& implementation, const PolyMesh& mesh, const RefineRequest& request,
+adapters::LevelTrace refine_or_throw(const Implementation& implementation, const PolyMesh& mesh, const RefineRequest& request,
                                      const std::string& input_name, double timeout_seconds) {
     if (implementation.name() == "core") return implementation.refine(mesh, request);
-    IsolatedTrace run = run_isolated([&] { return implementation.refine(mesh, request); }, timeout_seconds);
+    IsolatedTrace run = refine_isolated(implementation, mesh, request, timeout_seconds, true);
     if (run.outcome.status == RunStatus::Rejected)
         throw InputError(implementation.name() + " refused " + input_name + ": " + run.outcome.message);
     if (run.outcome.status != RunStatus::Ok)
