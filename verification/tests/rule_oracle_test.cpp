@@ -123,6 +123,26 @@ TEST(DooSabinRuleOracle, AWeightSlipAndAMissingChaikinBoundaryFail) {
     EXPECT_TRUE(check_doo_sabin_rule(*drops, {DooSabinBoundary::DropBorderFaces}).passed);
 }
 
+TEST(RuleOracleCheck, AStructuralMismatchFailsTheStudyCheckThoughItHasNoDistance) {
+    // Border faces dropped where the Chaikin boundary is asked: the vertex count is not the
+    // rule's, so there is no distance (worst_rel stays 0). The study's check fails all the same,
+    // measured as infinite; it was once built from worst_rel alone and recorded "agree, 0".
+    const auto drops = core_applying("drops-border-faces", Scheme::DooSabin,
+                                     [](SchemeRule& r) { r.doo_sabin.boundary = DooSabinBoundary::DropBorderFaces; });
+    const RuleVerdict v = check_doo_sabin_rule(*drops, {DooSabinBoundary::ChaikinBoundary});
+    ASSERT_FALSE(v.passed);
+    EXPECT_EQ(v.worst_rel, 0.0);
+    const Check c = oracle_check("published points", "doo-sabin rule oracle", "chaikin-boundary", v);
+    EXPECT_TRUE(c.outcome().is_failure());
+    EXPECT_EQ(c.measured, INFINITY);
+    EXPECT_NE(c.note.find("vertices where the rule makes"), std::string::npos) << c.note;
+    // A measured failure keeps its distance; a pass is an agreement at its distance.
+    const RuleVerdict core_v = check_doo_sabin_rule(core_implementation(), {DooSabinBoundary::ChaikinBoundary});
+    const Check passed = oracle_check("published points", "doo-sabin rule oracle", "chaikin-boundary", core_v);
+    EXPECT_EQ(passed.outcome(), (Outcome{Verdict::Agree, DivergenceClass::None}));
+    EXPECT_EQ(passed.measured, core_v.worst_rel);
+}
+
 TEST(Sqrt3RuleOracle, CorePassesUnderBothParitiesAndCountingPerCallFailsCountFromInput) {
     for (Sqrt3Parity p : {Sqrt3Parity::CountFromInput, Sqrt3Parity::RestartEachLevel}) {
         const RuleVerdict v = check_sqrt3_rule(core_implementation(), {p});

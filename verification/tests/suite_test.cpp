@@ -71,9 +71,9 @@ TEST(Manifest, ErrorsNameTheFileAndLine) {
     const std::vector<std::pair<std::string, std::string>> bad = {
         {"suite s\ncase bundled:all sqrt4\n", ":2: unknown operation 'sqrt4'"},
         {"suite s\ncase bundled:all catmull-clark weights=loop\n",
-         ":2: unknown key 'weights' (known: boundary, crease-method, levels, against, tier, tolerance)"},
+         ":2: unknown key 'weights' (known: boundary, crease-method, levels, against, tier, tolerance, refuses)"},
         {"suite s\ncase bundled:all doo-sabin crease-method=chaikin\n",
-         ":2: unknown key 'crease-method' (known: boundary, levels, against, tier, tolerance)"},
+         ":2: unknown key 'crease-method' (known: boundary, levels, against, tier, tolerance, refuses)"},
         {"suite s\ncase bundled:all catmull-clark boundary=reflected-wings\n",
          ":2: catmull-clark has no boundary rule 'reflected-wings'"},
         {"suite s\ncase bundled:all catmull-clark crease-method=sharp\n", ":2: crease method 'sharp' is not uniform or chaikin"},
@@ -263,6 +263,36 @@ TEST(Suite, RunsInWorkersAndRecordsEachOutcome) {
     EXPECT_TRUE(fs::exists(d / recs[1].detail["view"].get<std::string>()));
     EXPECT_FALSE(recs[0].detail.contains("view"));
     EXPECT_EQ(recs[1].detail["worst_vertex"]["valence"], 2);
+}
+
+TEST(Suite, ACoreRefusalFailsUnlessTheCaseDeclaresIt) {
+    // sqrt3 on a bowtie: core needs a manifold and refuses; CGAL refines it. Undeclared, the
+    // refusal is a failure (a core that started refusing what it used to refine is a
+    // regression); declared by refuses=, it is the named limitation it is.
+    CROSSDIV_REQUIRE_LIBRARIES("cgal");
+    const fs::path d = temp_dir("refuses");
+    const Manifest m = read_manifest(write(d / "m.suite", "suite m\n"
+                                                          "case edgecase:bowtie sqrt3 levels=1 against=cgal\n"
+                                                          "case edgecase:bowtie sqrt3 levels=1 against=cgal "
+                                                          "refuses=non-manifold-handling,orientation-handling\n"));
+    ASSERT_EQ(m.entries.size(), 2u);
+    EXPECT_EQ(m.entries[1].request.expected_refusals,
+              (std::vector<DivergenceClass>{DivergenceClass::NonManifoldHandling, DivergenceClass::OrientationHandling}));
+    const std::vector<SuiteJob> jobs = expand_jobs(m);
+    ASSERT_EQ(jobs.size(), 2u);
+    EXPECT_NE(jobs[1].id.find(" refuses=non-manifold-handling,orientation-handling"), std::string::npos) << jobs[1].id;
+    const std::vector<CaseRecord> recs = run_jobs(jobs, 1, d.string(), [](int, int, const CaseRecord&) {});
+    ASSERT_EQ(recs.size(), 2u);
+    ASSERT_EQ(recs[0].runs.size(), 1u);
+    ASSERT_EQ(recs[1].runs.size(), 1u);
+    EXPECT_EQ(outcome_label(recs[0], recs[0].runs[0]), "ours-rejected (unexplained)");
+    EXPECT_TRUE(is_failure(recs[0], recs[0].runs[0]));
+    EXPECT_NE(recs[0].runs[0].explanation.find("a refusal (non-manifold-handling) the case does not declare expected"),
+              std::string::npos)
+        << recs[0].runs[0].explanation;
+    EXPECT_EQ(outcome_label(recs[1], recs[1].runs[0]), "ours-rejected (non-manifold-handling)");
+    EXPECT_FALSE(is_failure(recs[1], recs[1].runs[0]));
+    EXPECT_THROW(read_manifest(write(d / "bad.suite", "suite m\ncase edgecase:bowtie sqrt3 refuses=rounding\n")), ParseError);
 }
 
 TEST(Suite, AJobPastMaxFacesIsRefusedBeforeAnyWorkAndTheOthersRun) {

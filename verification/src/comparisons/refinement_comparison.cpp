@@ -384,8 +384,17 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
         if (const std::optional<EarlyVerdict> early = verdict_before_comparing(run.outcome, out.core_error, made)) {
             run.verdict = early->verdict;
             run.explanation = early->explanation;
-            // The class names what the input breaks, from the checker's first error.
-            if (run.verdict == Verdict::OursRejected) run.divergence_class = input_handling_class(input);
+            // The class names what the input breaks, from the checker's first error; a refusal
+            // the case does not declare is a failure, its class kept in the explanation.
+            if (run.verdict == Verdict::OursRejected) {
+                run.divergence_class = input_handling_class(input);
+                const auto& expected = req.expected_refusals;
+                if (std::find(expected.begin(), expected.end(), run.divergence_class) == expected.end()) {
+                    run.explanation += "; a refusal (" + std::string(to_string(run.divergence_class)) +
+                                       ") the case does not declare expected (refuses=" + to_string(run.divergence_class) + ")";
+                    run.divergence_class = DivergenceClass::Unexplained;
+                }
+            }
             out.runs.push_back(std::move(run));
             continue;
         }

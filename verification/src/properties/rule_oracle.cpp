@@ -248,6 +248,14 @@ RuleVerdict check_doo_sabin_rule(const Implementation& impl, const DooSabinOptio
     return v;
 }
 
+Check oracle_check(const std::string& reference, const std::string& name, const std::string& subject, const RuleVerdict& v) {
+    const bool measured = v.passed || v.worst_rel > tolerances::kAgreementRelative;  // else a structural reason
+    return decided_check(reference, name, subject, measured ? v.worst_rel : INFINITY,
+                         tolerances::kAgreementRelative, "rel", v.detail,
+                         v.passed ? Outcome{Verdict::Agree, DivergenceClass::None}
+                                  : Outcome{Verdict::Diverge, DivergenceClass::Unexplained});
+}
+
 RuleVerdict check_core_rule(Scheme scheme, const SchemeRule& rule, const std::vector<int>& valences) {
     switch (scheme) {
         case Scheme::Loop: return check_core_loop_rule(rule.loop, valences);

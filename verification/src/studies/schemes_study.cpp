@@ -38,21 +38,18 @@ CheckReport schemes_study() {
     // against the points written out from their sources (rule_oracle.h).
     for (DooSabinBoundary b : {DooSabinBoundary::ChaikinBoundary, DooSabinBoundary::DropBorderFaces}) {
         const RuleVerdict v = check_doo_sabin_rule(core_implementation(), {b});
-        runs.push_back(measured_check("published points", "doo-sabin rule oracle", std::string(to_string(b)), v.worst_rel,
-                             tolerances::kAgreementRelative, "rel", v.detail));
+        runs.push_back(oracle_check("published points", "doo-sabin rule oracle", std::string(to_string(b)), v));
     }
     // sqrt3's parities: which generations refine the boundary, against Kobbelt's rules.
     for (Sqrt3Parity parity : {Sqrt3Parity::CountFromInput, Sqrt3Parity::RestartEachLevel}) {
         const RuleVerdict v = check_sqrt3_rule(core_implementation(), {parity});
-        runs.push_back(measured_check("published points", "sqrt3 rule oracle", std::string(to_string(parity)), v.worst_rel,
-                             tolerances::kAgreementRelative, "rel", v.detail));
+        runs.push_back(oracle_check("published points", "sqrt3 rule oracle", std::string(to_string(parity)), v));
     }
     // The classic Butterfly's wing rules: MeshLab's is the one reference, and only when the
     // manifest registers it.
     for (ButterflyWings w : kAllButterflyWings) {
         const RuleVerdict v = check_butterfly_rule(core_implementation(), w);
-        runs.push_back(measured_check("published points", "butterfly rule oracle", std::string(to_string(w)), v.worst_rel,
-                             tolerances::kAgreementRelative, "rel", v.detail));
+        runs.push_back(oracle_check("published points", "butterfly rule oracle", std::string(to_string(w)), v));
     }
     out.tables = {{"butterfly_properties", properties}};
     return out;

@@ -65,6 +65,16 @@ bool parse_comparison_key(const std::string& file, int line, Scheme scheme, cons
     } else if (key == "tolerance") {
         r.tolerance = parse_number(file, line, key, value);
         if (!(r.tolerance >= 0)) throw ParseError(file, line, "tolerance must be >= 0");
+    } else if (key == "refuses") {
+        for (const std::string& name : split(value, ',')) {
+            const DivergenceClass c = at_line(file, line, [&] { return divergence_class_from_string(name); });
+            if (c != DivergenceClass::NonManifoldHandling && c != DivergenceClass::OrientationHandling &&
+                c != DivergenceClass::DegenerateFaceHandling && c != DivergenceClass::InvalidInputHandling)
+                throw ParseError(file, line,
+                                 "refuses=" + name + ": a refusal is declared by the input handling it shows "
+                                 "(non-manifold-handling, orientation-handling, degenerate-face-handling, invalid-input-handling)");
+            r.expected_refusals.push_back(c);
+        }
     } else {
         return false;
     }
@@ -85,7 +95,7 @@ void parse_keys(const std::string& file, int line, std::istringstream& words, co
 /// The keys of a loop case: its rules, levels, references, tier and tolerance.
 void parse_loop_keys(const std::string& file, int line, std::istringstream& words, RefinementRequest& r) {
     r.rule.loop = {LoopWeights::Loop, LoopBoundary::EdgeOnly};
-    parse_keys(file, line, words, "weights, boundary, levels, against, tier, tolerance",
+    parse_keys(file, line, words, "weights, boundary, levels, against, tier, tolerance, refuses",
                [&](const std::string& key, const std::string& value) {
                    if (key == "weights") {
                        r.rule.loop.weights = at_line(file, line, [&] { return loop_weights_from_string(value); });
@@ -107,7 +117,7 @@ void parse_scheme_keys(const std::string& file, int line, std::istringstream& wo
                        RuleFlags& flags) {
     const bool creases = scheme == Scheme::CatmullClark;
     parse_keys(file, line, words,
-               std::string("boundary, ") + (creases ? "crease-method, " : "") + "levels, against, tier, tolerance",
+               std::string("boundary, ") + (creases ? "crease-method, " : "") + "levels, against, tier, tolerance, refuses",
                [&](const std::string& key, const std::string& value) {
                    if (key == "boundary") {
                        // `none` is OpenSubdiv's VTX_BOUNDARY_NONE: edge-only with the boundary
@@ -218,6 +228,8 @@ std::string describe_entry(const ManifestEntry& e) {
         std::snprintf(buf, sizeof buf, "%g", tolerance);
         s += std::string(" tol=") + buf;
     }
+    for (size_t k = 0; k < e.request.expected_refusals.size(); ++k)
+        s += (k == 0 ? std::string(" refuses=") : std::string(",")) + to_string(e.request.expected_refusals[k]);
     if (e.subject) s += " subject=" + e.subject->name;
     return s;
 }

@@ -62,6 +62,12 @@ struct RefinementRequest {
     /// each matched reference's positions (the report's 3D view), if its last level has at
     /// most this many faces.
     int view_max_faces = 0;
+    /// Core's refusals the case declares expected, by the input handling they show
+    /// (input_handling_class: a manifest's refuses=non-manifold-handling,...): a refusal of an
+    /// input a reference refines is ours-rejected of its class when declared, and a failure
+    /// (ours-rejected, class unexplained) when not: core refusing what it used to take is a
+    /// regression like any other.
+    std::vector<DivergenceClass> expected_refusals;
 };
 
 /// One reference on one input.

@@ -79,8 +79,11 @@ struct Outcome {
     Verdict verdict = Verdict::Agree;
     DivergenceClass cls = DivergenceClass::None;
 
-    /// Counted as a failure (JUnit, exit status): an unexplained divergence.
-    bool is_failure() const { return verdict == Verdict::Diverge && cls == DivergenceClass::Unexplained; }
+    /// Counted as a failure (JUnit, exit status): an unexplained divergence, and a refusal by
+    /// core of an input a reference refines that its case does not declare expected.
+    bool is_failure() const {
+        return (verdict == Verdict::Diverge || verdict == Verdict::OursRejected) && cls == DivergenceClass::Unexplained;
+    }
     friend bool operator==(const Outcome&, const Outcome&) = default;
 };
 

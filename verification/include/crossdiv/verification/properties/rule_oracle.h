@@ -30,6 +30,7 @@
 #include "crossdiv/subdiv/doo_sabin_mask.h"
 #include "crossdiv/subdiv/sqrt3_mask.h"
 #include "crossdiv/verification/implementations/implementation.h"
+#include "crossdiv/verification/properties/check.h"
 
 namespace crossdiv::verification {
 
@@ -43,6 +44,11 @@ struct RuleVerdict {
     /// differs from the published stencils by 1.2e-3 of the diagonal").
     std::string detail;
 };
+
+/// The study check of an oracle's verdict, passed or failed as the oracle decided (never from
+/// worst_rel alone: a vertex count the rule does not make has no distance, and was once recorded
+/// as "agree, measured 0"). `measured` is the worst distance, infinite where no distance exists.
+Check oracle_check(const std::string& reference, const std::string& name, const std::string& subject, const RuleVerdict& v);
 
 /// One level of `impl`'s Doo-Sabin under `rule` on an open mesh of a triangle, quads and a
 /// pentagon and on a closed triangular prism, against the vertex set written out above.
