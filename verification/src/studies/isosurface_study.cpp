@@ -1,10 +1,12 @@
 // The isosurface study: marching cubes against exact implicit surfaces as the grid is refined,
-// the asymptotic decider against the minority rule on a field whose faces are ambiguous, and
+// both ambiguous-face rules on single cubes whose answers are worked out by hand, the
+// asymptotic decider against the minority rule on a field whose faces are ambiguous, and
 // scikit-image's marching cubes (Lewiner's MC33 table and the 1987 table) on the same samples.
 #include "crossdiv/verification/studies/isosurface_study.h"
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
 
 #include "crossdiv/datasets/implicit_surfaces.h"
@@ -112,6 +114,45 @@ json convergence(CheckReport& out, json& figures) {
     return rows;
 }
 
+/// One cube (corner c = i + 2 j + 4 k holds values[c], the level 0, inside below) and what a
+/// face rule must make of it, worked out by hand.
+struct HandCube {
+    const char* name;
+    std::array<double, 8> values;
+    AmbiguousFaceRule rule;
+    int faces, joined;  ///< triangles, and ambiguous faces whose inside corners are joined
+    const char* why;
+};
+
+/// Both ambiguous-face rules on single cubes: the decider joins the inside corners of a face
+/// exactly when the bilinear saddle is inside (in0 in1 > out0 out1); the minority rule joins
+/// them exactly when more than four corners are inside.
+void hand_cubes(CheckReport& out) {
+    const HandCube cubes[] = {
+        {"diagonal pair, saddle inside", {-1, 0.5, 0.5, -1, 1, 1, 1, 1}, AmbiguousFaceRule::AsymptoticDecider, 4, 1,
+         "corners 0 and 3 at -1, 1 and 2 at 0.5: (-1)(-1) > 0.5 * 0.5, one hexagon round both (a fan of 4)"},
+        {"diagonal pair, saddle outside", {-1, 2, 2, -1, 1, 1, 1, 1}, AmbiguousFaceRule::AsymptoticDecider, 2, 0,
+         "corners 0 and 3 at -1, 1 and 2 at 2: (-1)(-1) < 2 * 2, a triangle round each"},
+        {"diagonal pair, two inside", {-1, 0.5, 0.5, -1, 1, 1, 1, 1}, AmbiguousFaceRule::SeparateMinority, 2, 0,
+         "two of eight corners inside: the minority, separated whatever the values"},
+        {"diagonal pair, six inside", {-1, 1, 1, -1, -1, -1, -1, -1}, AmbiguousFaceRule::SeparateMinority, 2, 1,
+         "six inside: the outside pair is the minority and separated (a triangle each), the inside joined"},
+        {"tetrahedral, four inside", {-1, 1, 1, -1, 1, -1, -1, 1}, AmbiguousFaceRule::SeparateMinority, 4, 0,
+         "corners 0, 3, 5, 6 inside, every face ambiguous: four of eight is no majority, each corner cut off alone"},
+    };
+    for (const HandCube& c : cubes) {
+        ScalarGrid grid;
+        grid.size = {2, 2, 2};
+        grid.values.assign(c.values.begin(), c.values.end());
+        const Isosurface iso = marching_cubes(grid, {0, InsideIs::Below, c.rule});
+        out.checks.push_back(count_check(fmt::format("cube: {} ({})", c.name, to_string(c.rule)), "face-rule", "hand",
+                                         std::abs(iso.mesh.num_faces() - c.faces) + std::abs(iso.joined_faces - c.joined),
+                                         fmt::format("{}; made {} triangles, {} joined (by hand: {}, {})", c.why,
+                                                     iso.mesh.num_faces(), iso.joined_faces, c.faces, c.joined)));
+    }
+    out.subjects.push_back("hand cubes");
+}
+
 /// The ambiguous field under both face rules, and scikit-image's two tables on it; the field
 /// at 9^3 under both rules, its holes' edges to be drawn, for the figure.
 json ambiguity(CheckReport& out, json& figures) {
@@ -181,6 +222,7 @@ CheckReport isosurface_study() {
     CheckReport out;
     nlohmann::json figures = nlohmann::json::array();  // the genus-2 surface, the ambiguous field under both rules
     out.tables["isosurface_convergence"] = convergence(out, figures);
+    hand_cubes(out);
     out.tables["isosurface_ambiguity"] = ambiguity(out, figures);
     out.tables["isosurface_reference"] = against_skimage(out);
     out.tables["isosurface_figure"] = figures;
