@@ -123,6 +123,23 @@ TEST(DooSabinRuleOracle, AWeightSlipAndAMissingChaikinBoundaryFail) {
     EXPECT_TRUE(check_doo_sabin_rule(*drops, {DooSabinBoundary::DropBorderFaces}).passed);
 }
 
+TEST(DooSabinRuleOracle, ChaikinPointsSwappedNearForFarFailOnTheBoundaryPolyline) {
+    // Core's Doo-Sabin with each boundary edge's two Chaikin points exchanged (core numbers a
+    // corner point per input corner, then each boundary edge's near and far point): the same
+    // vertex set, so only the boundary's connectivity can tell.
+    const Implementation& core = core_implementation();
+    const auto swapped = make_callback_implementation("chaikin-swapped", {Scheme::DooSabin}, [&core](const PolyMesh& m, const RefineRequest& r) {
+        PolyMesh out = core.refine_last(m, r);
+        for (size_t i = m.face_vertices.size(); i + 1 < out.positions.size(); i += 2) std::swap(out.positions[i], out.positions[i + 1]);
+        return out;
+    });
+    const RuleVerdict v = check_doo_sabin_rule(*swapped, {DooSabinBoundary::ChaikinBoundary});
+    EXPECT_FALSE(v.passed);
+    EXPECT_NE(v.detail.find("open strip of a triangle, quads and a pentagon (its boundary polyline)"), std::string::npos) << v.detail;
+    EXPECT_NE(v.detail.find("joins points Chaikin's boundary does not join"), std::string::npos) << v.detail;
+    EXPECT_TRUE(check_doo_sabin_rule(core, {DooSabinBoundary::ChaikinBoundary}).passed);
+}
+
 TEST(RuleOracleCheck, AStructuralMismatchFailsTheStudyCheckThoughItHasNoDistance) {
     // Border faces dropped where the Chaikin boundary is asked: the vertex count is not the
     // rule's, so there is no distance (worst_rel stays 0). The study's check fails all the same,

@@ -42,6 +42,19 @@ PolyMesh closed_prism() {
     return m;
 }
 
+/// The directed edges a -> b of `m` that one face traverses and none traverses back: its
+/// boundary, each edge as its face walks it.
+std::vector<std::pair<int, int>> boundary_edges(const PolyMesh& m) {
+    std::vector<std::pair<int, int>> directed;
+    for (int f = 0; f < m.num_faces(); ++f)
+        for (int i = 0; i < m.face_size(f); ++i) directed.emplace_back(m.face(f)[i], m.face(f)[(i + 1) % m.face_size(f)]);
+    std::sort(directed.begin(), directed.end());
+    std::vector<std::pair<int, int>> boundary;
+    for (const auto& [a, b] : directed)
+        if (!std::binary_search(directed.begin(), directed.end(), std::pair{b, a})) boundary.emplace_back(a, b);
+    return boundary;
+}
+
 /// The level-1 vertices the rule makes, as a set: a corner point per face corner, and
 /// Chaikin's two points per boundary edge under chaikin-boundary.
 std::vector<Vec3> doo_sabin_vertices(const PolyMesh& m, const DooSabinOptions& rule) {
@@ -66,21 +79,65 @@ std::vector<Vec3> doo_sabin_vertices(const PolyMesh& m, const DooSabinOptions& r
             out.push_back(p);
         }
     }
-    if (rule.boundary == DooSabinBoundary::ChaikinBoundary) {
-        // An edge is on the boundary when one face traverses it: count both directions.
-        std::vector<std::pair<int, int>> directed;
-        for (int f = 0; f < m.num_faces(); ++f)
-            for (int i = 0; i < m.face_size(f); ++i)
-                directed.emplace_back(m.face(f)[i], m.face(f)[(i + 1) % m.face_size(f)]);
-        std::sort(directed.begin(), directed.end());
-        for (const auto& [a, b] : directed)
-            if (!std::binary_search(directed.begin(), directed.end(), std::pair{b, a})) {
-                const Vec3 &pa = m.positions[static_cast<size_t>(a)], &pb = m.positions[static_cast<size_t>(b)];
-                out.push_back(0.75 * pa + 0.25 * pb);
-                out.push_back(0.25 * pa + 0.75 * pb);
-            }
-    }
+    if (rule.boundary == DooSabinBoundary::ChaikinBoundary)
+        for (const auto& [a, b] : boundary_edges(m)) {
+            const Vec3 &pa = m.positions[static_cast<size_t>(a)], &pb = m.positions[static_cast<size_t>(b)];
+            out.push_back(0.75 * pa + 0.25 * pb);
+            out.push_back(0.25 * pa + 0.75 * pb);
+        }
     return out;
+}
+
+/// Chaikin's refined boundary of `m` as segments: on each boundary edge a -> b its two points
+/// 3/4 a + 1/4 b and 1/4 a + 3/4 b joined, and the second joined to the first of the boundary
+/// edge that leaves b. The vertex set alone does not see near and far swapped; these do.
+std::vector<std::pair<Vec3, Vec3>> chaikin_boundary_segments(const PolyMesh& m) {
+    const std::vector<std::pair<int, int>> boundary = boundary_edges(m);
+    const auto at = [&](int v) -> const Vec3& { return m.positions[static_cast<size_t>(v)]; };
+    std::vector<std::pair<Vec3, Vec3>> segments;
+    for (const auto& [a, b] : boundary) {
+        segments.emplace_back(0.75 * at(a) + 0.25 * at(b), 0.25 * at(a) + 0.75 * at(b));
+        for (const auto& [b2, c] : boundary)  // the boundary edge leaving b (one on a manifold)
+            if (b2 == b) segments.emplace_back(0.25 * at(a) + 0.75 * at(b), 0.75 * at(b) + 0.25 * at(c));
+    }
+    return segments;
+}
+
+/// The boundary edges of one level of `impl` on `mesh` against `expected` segments, one to one
+/// by their end positions: the largest end distance over the diagonal, or why they do not pair.
+std::pair<double, std::string> boundary_against(const Implementation& impl, const PolyMesh& mesh, const RefineRequest& request,
+                                                const std::vector<std::pair<Vec3, Vec3>>& expected) {
+    PolyMesh got;
+    try {
+        got = impl.refine_last(mesh, request);
+    } catch (const std::exception& e) {
+        return {INFINITY, std::string("refused: ") + e.what()};
+    }
+    std::vector<std::pair<Vec3, Vec3>> edges;
+    for (const auto& [a, b] : boundary_edges(got))
+        edges.emplace_back(got.positions[static_cast<size_t>(a)], got.positions[static_cast<size_t>(b)]);
+    if (edges.size() != expected.size())
+        return {INFINITY, std::to_string(edges.size()) + " boundary edges where the rule makes " + std::to_string(expected.size())};
+    const double diagonal = bounding_box_diagonal(mesh.positions);
+    std::vector<bool> used(expected.size(), false);
+    double worst = 0;
+    for (const auto& [p, q] : edges) {
+        // Its nearest unused segment, either way round (a few dozen segments: a plain search).
+        size_t best = expected.size();
+        double best_d = INFINITY;
+        for (size_t k = 0; k < expected.size(); ++k) {
+            if (used[k]) continue;
+            const auto& [e0, e1] = expected[k];
+            const double d = std::min(std::max((p - e0).norm(), (q - e1).norm()), std::max((p - e1).norm(), (q - e0).norm()));
+            if (d < best_d) best_d = d, best = k;
+        }
+        if (best == expected.size() || best_d > tolerances::kAgreementRelative * diagonal)
+            return {INFINITY, "a boundary edge from (" + detail::sci(p.x()) + ", " + detail::sci(p.y()) + ", " + detail::sci(p.z()) +
+                                  ") joins points Chaikin's boundary does not join"};
+        used[best] = true;
+        worst = std::max(worst, best_d / diagonal);
+    }
+    return {worst, ""};
 }
 
 /// Largest distance from each of `got` to its one-to-one match in `expected`, or a reason
@@ -109,9 +166,11 @@ std::pair<double, std::string> level_against(const Implementation& impl, const P
     }
 }
 
-/// Counts one mesh into `v`: true when it passes; else false, with the failure's sentence.
-bool record(RuleVerdict& v, const std::string& who, const std::string& where, double worst_rel, const std::string& reason) {
-    ++v.meshes;
+/// Counts one comparison into `v` (a mesh, unless `another_look` at one already counted): true
+/// when it passes; else false, with the failure's sentence.
+bool record(RuleVerdict& v, const std::string& who, const std::string& where, double worst_rel, const std::string& reason,
+            bool another_look = false) {
+    if (!another_look) ++v.meshes;
     if (reason.empty()) v.worst_rel = std::max(v.worst_rel, worst_rel);
     if (reason.empty() && worst_rel <= tolerances::kAgreementRelative) return true;
     v.detail = who + " on " + where + ": " +
@@ -239,9 +298,12 @@ RuleVerdict check_doo_sabin_rule(const Implementation& impl, const DooSabinOptio
     const std::string who = impl.name() + "'s Doo-Sabin, " + rule_name(Scheme::DooSabin, SchemeRule{.doo_sabin = rule});
     for (const auto& [name, mesh] : {std::pair{std::string("an open strip of a triangle, quads and a pentagon"), open_polygons()},
                                      std::pair{std::string("a closed triangular prism"), closed_prism()}}) {
-        const auto [worst, reason] =
-            level_against(impl, mesh, {Scheme::DooSabin, SchemeRule{.doo_sabin = rule}, 1}, doo_sabin_vertices(mesh, rule));
+        const RefineRequest request{Scheme::DooSabin, SchemeRule{.doo_sabin = rule}, 1};
+        const auto [worst, reason] = level_against(impl, mesh, request, doo_sabin_vertices(mesh, rule));
         if (!record(v, who, name, worst, reason)) return v;
+        if (rule.boundary != DooSabinBoundary::ChaikinBoundary || mesh_topology(mesh).boundary_loops == 0) continue;
+        const auto [edge_worst, edge_reason] = boundary_against(impl, mesh, request, chaikin_boundary_segments(mesh));
+        if (!record(v, who, name + " (its boundary polyline)", edge_worst, edge_reason, true)) return v;
     }
     v.passed = true;
     v.detail = who + " makes the published points on " + std::to_string(v.meshes) + " meshes to " + detail::sci(v.worst_rel);

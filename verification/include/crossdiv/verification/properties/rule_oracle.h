@@ -9,7 +9,9 @@
 /// - Doo-Sabin: the corner points (Doo and Sabin 1978: alpha_0 = 1/4 + 5/(4n),
 ///   alpha_k = (3 + 2 cos(2 pi k / n)) / (4n)) and, under chaikin-boundary, Chaikin's points
 ///   3/4 a + 1/4 b, 1/4 a + 3/4 b on each boundary edge (a, b): the refined level's vertices
-///   are exactly those, compared as a set (one to one, by position).
+///   are exactly those, compared as a set (one to one, by position); and its boundary edges are
+///   Chaikin's polyline (each edge's two points joined, the second to the next edge's first),
+///   which the set alone cannot tell from one with each edge's near and far points swapped.
 /// - sqrt3: on a disc of six triangles, level 1 (generation 0) smooths the interior vertex
 ///   with Kobbelt's alpha_n = (4 - 2 cos(2 pi / n)) / 9, keeps the boundary and adds the
 ///   centroids; at level 2 the boundary is trisected by Kobbelt's ternary rule (old vertex
