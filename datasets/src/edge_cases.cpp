@@ -128,6 +128,20 @@ std::vector<EdgeCase> edge_cases() {
     add("interior-fan-360", "one interior vertex of valence 360", true, fan(360));
     for (int n : {8, 64, 360})
         add("pole-" + std::to_string(n), "closed, two poles of valence " + std::to_string(n), true, pole(n, 4));
+    // The poles above have rings that are exact circles at one height, where the cos 2 theta
+    // and cos 4 theta terms of the high-valence stencils (the modified Butterfly's, Loop's
+    // beyond its table) sum to zero: an error in them cannot show. Here the rings are uneven.
+    add("pole-7-uneven", "closed, two poles of valence 7 whose rings are not circles (radii and heights vary)", true, [] {
+        PolyMesh m = pole(7, 4);
+        for (size_t v = 1; v + 1 < m.positions.size(); ++v) {
+            Vec3& p = m.positions[v];
+            const double a = std::atan2(p.y(), p.x());
+            p.x() *= 1.0 + 0.2 * std::cos(2.0 * a + 0.3);
+            p.y() *= 1.0 + 0.15 * std::sin(3.0 * a);
+            p.z() += 0.1 * std::cos(2.0 * a) + 0.05 * std::sin(a);
+        }
+        return m;
+    }());
     for (int k = 1; k <= 8; ++k)
         add("boundary-fan-" + std::to_string(k),
             "one boundary vertex with " + std::to_string(k) + " incident face(s)" + (k == 1 ? " (a corner)" : ""), true,
