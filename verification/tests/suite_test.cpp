@@ -8,6 +8,7 @@
 #include <regex>
 #include <unistd.h>
 #include <set>
+#include <sstream>
 
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/datasets/edge_cases.h"
@@ -22,6 +23,7 @@
 #include "crossdiv/verification/suite/manifest.h"
 #include "crossdiv/verification/suite/outputs.h"
 #include "crossdiv/verification/suite/runner.h"
+#include "crossdiv/verification/suite/shard_results.h"
 #include "library_guard.h"
 
 namespace crossdiv::verification {
@@ -415,6 +417,32 @@ TEST(Suite, AnInputNamedWithBytesThatAreNotUtf8IsRecordedAndEveryOutputWritten) 
     EXPECT_EQ(results["cases"][0]["input"], valid_utf8(bad_name));
     EXPECT_NE(read(d / "out" / "junit.xml").find("mesh\\xFE.obj"), std::string::npos);
     EXPECT_NE(read(d / "out" / "results.csv").find("mesh\\xFE.obj"), std::string::npos);
+}
+
+TEST(Shards, ANumberPastItsFieldsRangeIsRefusedByNameNotConverted) {
+    // fuzz_merge's finding: "job": 8.9e43 was converted to int by nlohmann (undefined behaviour).
+    const std::string record = R"({"runs": [], "job": JOB})";
+    const auto read = [](const std::string& text) {
+        std::istringstream in(text);
+        return read_shard_results(in, "r.json");
+    };
+    for (const char* job : {"8.888888888888889e43", "2147483648", "-2147483649", "1.5", "\"7\""}) {
+        const std::string text = R"({"suite": "s", "cases": [)" + std::regex_replace(record, std::regex("JOB"), job) + "]}";
+        try {
+            read(text);
+            ADD_FAILURE() << job << " was taken";
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("r.json: case 0: \"job\" is not a"), std::string::npos) << e.what();
+        }
+    }
+    EXPECT_EQ(read(R"({"suite": "s", "cases": [{"runs": [], "job": 2147483647}]})").cases[0].job, 2147483647);
+    EXPECT_EQ(read(R"({"suite": "s", "cases": [{"runs": [], "job": 12.0}]})").cases[0].job, 12);
+    try {
+        read(R"({"suite": "s", "jobs_total": 1e300, "cases": []})");
+        ADD_FAILURE() << "jobs_total 1e300 was taken";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("r.json: \"jobs_total\" is not a whole number"), std::string::npos) << e.what();
+    }
 }
 
 TEST(Suite, ShardsMergeIntoTheSameResultsAsOneRun) {

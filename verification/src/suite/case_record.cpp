@@ -1,11 +1,19 @@
 #include "crossdiv/verification/suite/case_record.h"
 
+#include <cmath>
+#include <limits>
+
 #include "crossdiv/error.h"
 
 namespace crossdiv::verification {
 namespace {
 
 using nlohmann::json;
+
+/// A whole number of int range at `key` (whole_number_field).
+int int_field(const json& j, const char* key, int fallback) {
+    return static_cast<int>(whole_number_field(j, key, fallback, std::numeric_limits<int>::min(), std::numeric_limits<int>::max()));
+}
 
 json finite_or_null(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
 
@@ -51,7 +59,7 @@ RunRecord run_from_json(const json& j) {
         r.measured = number(p, "max_rel");
         r.rms = number(p, "rms_rel");
         if (p.contains("worst") && !p["worst"].empty()) {
-            r.worst_valence = p["worst"][0].value("valence", -1);
+            r.worst_valence = p["worst"][0].is_object() ? int_field(p["worst"][0], "valence", -1) : -1;
             r.worst_boundary = p["worst"][0].value("boundary", false) ? 1 : 0;
         }
     }
@@ -180,6 +188,30 @@ json to_json(const CaseRecord& c) {
     return j;
 }
 
+long long whole_number_field(const json& j, const char* key, long long fallback, long long lo, long long hi) {
+    if (!j.contains(key)) return fallback;
+    const json& v = j[key];
+    const std::string range = "\"" + std::string(key) + "\" is not a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+    if (v.is_number_unsigned()) {
+        const auto u = v.get<unsigned long long>();
+        if (u > static_cast<unsigned long long>(hi)) throw InputError(range);
+        return static_cast<long long>(u);
+    }
+    if (v.is_number_integer()) {
+        const auto x = v.get<long long>();
+        if (x < lo || x > hi) throw InputError(range);
+        return x;
+    }
+    if (v.is_number_float()) {
+        // Compared as doubles before any conversion: 2^63 itself is past a long long.
+        const double x = v.get<double>();
+        if (!(x == std::floor(x) && x >= static_cast<double>(lo) && x <= static_cast<double>(hi) && x < 9.2e18 && x > -9.2e18))
+            throw InputError(range);
+        return static_cast<long long>(x);
+    }
+    throw InputError("\"" + std::string(key) + "\" is not a number");
+}
+
 CaseRecord case_record_from_json(const json& j) {
     if (!j.is_object() || !j.contains("runs") || !j["runs"].is_array())
         throw InputError("not a crossdiv case record (no runs)");
@@ -187,15 +219,15 @@ CaseRecord case_record_from_json(const json& j) {
     try {
         c.detail = j;
         c.detail.erase("runs");
-        c.job = j.value("job", 0);
+        c.job = int_field(j, "job", 0);
         c.id = text(j, "id");
-        c.manifest_line = j.value("manifest_line", 0);
+        c.manifest_line = int_field(j, "manifest_line", 0);
         c.input = text(j, "input");
         c.operation = text(j, "operation");
         if (j.contains("options")) {
             c.weights = text(j["options"], "weights");
             c.boundary = text(j["options"], "boundary");
-            c.levels = j.value("levels", 0);
+            c.levels = int_field(j, "levels", 0);
             c.tier = text(j, "tier");
             c.tolerance = number(j, "tolerance_rel");
         }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <limits>
 #include <utility>
 
 #include "crossdiv/error.h"
@@ -55,7 +56,9 @@ std::vector<std::string> named_files(const CaseRecord& c, const std::string& nam
 }  // namespace
 
 std::string ShardResults::suite() const { return header_field(header, "suite", std::string()); }
-long long ShardResults::jobs_total() const { return header_field(header, "jobs_total", -1LL); }
+long long ShardResults::jobs_total() const {
+    return whole_number_field(header, "jobs_total", -1, -1, std::numeric_limits<int>::max());
+}
 std::string ShardResults::jobs_fingerprint() const { return header_field(header, "jobs_fingerprint", std::string()); }
 std::string ShardResults::shard() const { return header_field(header, "shard", std::string("?")); }
 
@@ -80,7 +83,11 @@ ShardResults read_shard_results(std::istream& in, const std::string& name) {
         }
     };
     check("suite", std::string());
-    check("jobs_total", -1LL);
+    try {
+        (void)s.jobs_total();
+    } catch (const InputError& e) {
+        throw InputError(name + ": " + e.what());
+    }
     check("jobs_fingerprint", std::string());
     check("shard", std::string());
     const json& records = r["cases"];

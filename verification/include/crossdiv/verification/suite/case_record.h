@@ -63,6 +63,11 @@ struct CaseRecord {
 };
 
 /// The label the summary counts a run under: "ours-failed" when core failed, else its outcome.
+/// The whole number at `key` of `j`, `fallback` when absent. A JSON number that is not whole or
+/// does not fit [lo, hi] (1e300 where an int is meant: its conversion would be undefined) is an
+/// InputError naming the key, as is a value that is no number.
+long long whole_number_field(const nlohmann::json& j, const char* key, long long fallback, long long lo, long long hi);
+
 std::string outcome_label(const CaseRecord& c, const RunRecord& r);
 /// The label of a case without runs: "ours-failed" or "ours-rejected".
 std::string outcome_label(const CaseRecord& c);
