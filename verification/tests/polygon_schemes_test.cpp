@@ -207,6 +207,10 @@ TEST(DooSabinComparison, OnlyAMeasuredTopologyDifferenceIsClassifiedTopology) {
     // reference's own and fails.
     EXPECT_EQ(c.runs[2].divergence_class, DivergenceClass::Unexplained) << c.runs[2].explanation;
     EXPECT_NE(c.runs[2].explanation.find("refined topology differs"), std::string::npos) << c.runs[2].explanation;
+    // The faces named: the short face in the reference, the whole one in core.
+    EXPECT_NE(c.runs[2].explanation.find("1 faces only in corner-cutting-doo-sabin (first: face 0 ("), std::string::npos)
+        << c.runs[2].explanation;
+    EXPECT_NE(c.runs[2].explanation.find("1 only in core (first: face 0 ("), std::string::npos) << c.runs[2].explanation;
     EXPECT_NE(c.runs[2].explanation.find("no other reference makes corner-cutting-doo-sabin's faces"), std::string::npos)
         << c.runs[2].explanation;
 }

@@ -609,10 +609,13 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
             if (same_faces || !measured_topology_difference(run.comparison.ours, run.comparison.ref, false,
                                                             run.correspondence.method))
                 return std::nullopt;
+            // The first face only in each, by index and corners in its own numbering.
+            const auto first = [](const PolyMesh& m, int f) { return f >= 0 ? " (first: " + face_text(m, f) + ")" : std::string(); };
             return Classification{DivergenceClass::Topology,
                                   "refined topology differs: " + faces + "; " + std::to_string(run.comparison.faces_only_in_ref) +
-                                      " faces only in " + ref.name() + ", " +
-                                      std::to_string(run.comparison.faces_only_in_ours) + " only in core"};
+                                      " faces only in " + ref.name() + first(theirs, run.comparison.first_face_only_in_ref) +
+                                      ", " + std::to_string(run.comparison.faces_only_in_ours) + " only in core" +
+                                      first(ours, run.comparison.first_face_only_in_ours)};
         };
         tests.unexplained = [&] {
             if (!same_faces)
