@@ -297,7 +297,7 @@ PYBIND11_MODULE(crossdiv, m) {
               PolyMesh out;
               {
                   py::gil_scoped_release unlocked;  // core and the references are C++ and do not touch Python
-                  out = std::move(refine_or_throw(implementation, mesh, req, "the mesh", timeout).back());
+                  out = refine_last_or_throw(implementation, mesh, req, "the mesh", timeout);
               }
               return mesh_tuple(std::move(out));
           },

@@ -181,7 +181,7 @@ int run_subdivide(const std::string& in, const SchemeArgs& flags, const std::str
         request.rule.loop = s.options();
         if (!ref.applies(Scheme::Loop, request.rule))
             throw InputError(impl + " has no Loop with weights=" + s.weights + " boundary=" + std::string(to_string(s.options().boundary)));
-        result = std::move(refine_or_throw(ref, input, request, in, timeout).back());
+        result = refine_last_or_throw(ref, input, request, in, timeout);
     }
     if (color == "age") {
         // The fast Loop driver returns the last level only: the earlier levels' vertex counts

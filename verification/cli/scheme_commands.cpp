@@ -80,7 +80,7 @@ int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const s
     } else {
         const Implementation& ref = *select_references(scheme, {impl}).front();
         const std::string rule = rule_name(scheme, ref.closest_rule(scheme, rule_asked));
-        result = std::move(refine_or_throw(ref, mesh, {scheme, rule_asked, s.levels}, in, timeout).back());
+        result = refine_last_or_throw(ref, mesh, {scheme, rule_asked, s.levels}, in, timeout);
         if (rule != asked) fmt::print("note: {} applies the {} boundary rule, not {}\n", impl, rule, asked);
     }
     // Hole faces were refined around; they are not emitted (OpenSubdiv's convention).

@@ -43,28 +43,53 @@ struct ChildProcess {
     pid_t group;
 };
 
-/// Every child of this process, from /proc/PID/stat (ppid and pgrp are the 2nd and 3rd fields
-/// after the parenthesised command name, which may itself hold spaces or parentheses).
+/// The parent and process group of process `pid` from /proc/PID/stat (the 2nd and 3rd fields
+/// after the parenthesised command name, which may itself hold spaces or parentheses); false
+/// when it has ended.
+bool parent_and_group(const char* pid, int& parent, int& group) {
+    char path[300], text[512];  // /proc/ + a name of up to 255 bytes + /stat
+    std::snprintf(path, sizeof path, "/proc/%s/stat", pid);
+    FILE* f = std::fopen(path, "r");
+    if (!f) return false;
+    const size_t n = std::fread(text, 1, sizeof text - 1, f);
+    std::fclose(f);
+    text[n] = '\0';
+    const char* close = std::strrchr(text, ')');
+    char state = 0;
+    return close && std::sscanf(close + 1, " %c %d %d", &state, &parent, &group) == 3;
+}
+
+/// Every child of this process, read from /proc/self/task/TID/children: each thread's, since an
+/// orphan is re-parented to any thread of its reaper. That costs a read per thread, not per
+/// process on the machine; a kernel without those files (CONFIG_PROC_CHILDREN) has /proc
+/// scanned for the processes whose parent is this one instead.
 std::vector<ChildProcess> children_of_this_process() {
     std::vector<ChildProcess> found;
     const pid_t self = getpid();
+    const auto add = [&](const char* pid) {
+        int parent = 0, group = 0;
+        if (parent_and_group(pid, parent, group) && parent == self) found.push_back({static_cast<pid_t>(std::atoi(pid)), group});
+    };
+    bool listed = false;
+    if (DIR* tasks = opendir("/proc/self/task")) {
+        while (const dirent* task = readdir(tasks)) {
+            if (task->d_name[0] < '0' || task->d_name[0] > '9') continue;
+            char path[300];
+            std::snprintf(path, sizeof path, "/proc/self/task/%s/children", task->d_name);
+            FILE* f = std::fopen(path, "r");
+            if (!f) continue;
+            listed = true;
+            char pid[32];
+            while (std::fscanf(f, "%31s", pid) == 1) add(pid);
+            std::fclose(f);
+        }
+        closedir(tasks);
+    }
+    if (listed) return found;
     DIR* proc = opendir("/proc");
     if (!proc) return found;
-    while (const dirent* entry = readdir(proc)) {
-        if (entry->d_name[0] < '0' || entry->d_name[0] > '9') continue;
-        char path[300], text[512];  // /proc/ + a name of up to 255 bytes + /stat
-        std::snprintf(path, sizeof path, "/proc/%s/stat", entry->d_name);
-        FILE* f = std::fopen(path, "r");
-        if (!f) continue;  // ended meanwhile
-        const size_t n = std::fread(text, 1, sizeof text - 1, f);
-        std::fclose(f);
-        text[n] = '\0';
-        const char* close = std::strrchr(text, ')');
-        char state = 0;
-        int ppid = 0, group = 0;
-        if (!close || std::sscanf(close + 1, " %c %d %d", &state, &ppid, &group) != 3) continue;
-        if (ppid == self) found.push_back({static_cast<pid_t>(std::atoi(entry->d_name)), static_cast<pid_t>(group)});
-    }
+    while (const dirent* entry = readdir(proc))
+        if (entry->d_name[0] >= '0' && entry->d_name[0] <= '9') add(entry->d_name);
     closedir(proc);
     return found;
 }

@@ -1,10 +1,11 @@
 #pragma once
 /// @file
-/// A topology difference is a harmless class only where it is shared. A reference whose faces
-/// are not core's and not any other reference's makes faces no one else makes: that is a bug of
-/// its own (or an unknown rule), not "the library makes different faces". And when the
-/// references that make a result agree with each other on faces that are not core's, core (or
-/// the subject under test) is the one that differs: every one of those divergences fails.
+/// A refined topology that differs from core's, with no named rule to explain it, is never a
+/// harmless class: it fails, and who differs is measured. A reference whose faces are not core's
+/// and not any other reference's makes faces no one else makes: a bug of its own (or an unknown
+/// rule), not "the library makes different faces". When references agree with each other on
+/// faces that are not core's, core (or the subject under test) is the one that differs. Either
+/// way the run is unexplained, its explanation naming which.
 
 #include <optional>
 #include <span>

@@ -22,4 +22,9 @@ namespace crossdiv::verification {
 adapters::LevelTrace refine_or_throw(const Implementation& implementation, const PolyMesh& mesh, const RefineRequest& request,
                                      const std::string& input_name, double timeout_seconds);
 
+/// The last level alone, as refine_or_throw makes it: core keeps no earlier level (its
+/// refine_last), a library's levels come back from its child and the last is kept.
+PolyMesh refine_last_or_throw(const Implementation& implementation, const PolyMesh& mesh, const RefineRequest& request,
+                              const std::string& input_name, double timeout_seconds);
+
 }  // namespace crossdiv::verification
