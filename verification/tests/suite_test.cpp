@@ -30,10 +30,23 @@ namespace crossdiv::verification {
 namespace {
 namespace fs = std::filesystem;
 
+/// The folders temp_dir made, removed when the test program ends, whether its tests passed or not.
+struct MadeFolders {
+    std::vector<fs::path> paths;
+    ~MadeFolders() {
+        for (const fs::path& p : paths) {
+            std::error_code ignored;
+            fs::remove_all(p, ignored);
+        }
+    }
+};
+MadeFolders made_folders;
+
 fs::path temp_dir(const std::string& name) {
     const fs::path d = fs::temp_directory_path() / ("crossdiv_suite_test_" + name + "_" + std::to_string(getpid()));
     fs::remove_all(d);
     fs::create_directories(d);
+    made_folders.paths.push_back(d);
     return d;
 }
 

@@ -419,6 +419,43 @@ void torus_study(CheckReport& r) {
     r.tables["torus"] = rows;
 }
 
+/// A generalized cylinder whose scale varies: a unit circle swept along the z axis from z = 1 to
+/// z = 2 with the scale curve's y = z, which is the cone rho = z. Every ring lies on the cone
+/// exactly (the sweep and the scale are the same straight cubic, so sample i's height and
+/// scale are one number), and the steps between rings are straight, so the normals, tilted
+/// along T by the central (or one-sided) difference of the rings, must be the cone's exact
+/// normal (cos theta, sin theta, -1) / sqrt 2 to rounding: a tilt of the wrong sign or size,
+/// or a scale applied to the wrong sample, is off by an angle of order one.
+void cone_study(CheckReport& r) {
+    json rows = json::array();
+    for (FrameMethod frames : {FrameMethod::Recursive, FrameMethod::DoubleReflection}) {
+        const std::string name = "cone (gcyl scaled by z, " + std::string(to_string(frames)) + ")";
+        std::istringstream in("circ profile 32 1\n"
+                              "bez3 sweep 8 4 [0 0 1] [0 0 1.3333333333333333] [0 0 1.6666666666666667] [0 0 2]\n"
+                              "bez2 size 8 4 [0 1] [1 1.3333333333333333] [2 1.6666666666666667] [3 2]\n"
+                              "gcyl cone profile sweep size\n");
+        const CurveFile f = read_swp(in, "cone.swp");
+        SweepOptions o;
+        o.frames = frames;
+        const SweepSurface s = build_sweep(f, 0, o);
+        double off_cone = 0;  // |rho - z| / sqrt 2, the distance of a vertex from the cone
+        for (const Vec3& p : s.surface.mesh.positions) off_cone = std::max(off_cone, std::abs(std::hypot(p.x(), p.y()) - p.z()) / std::sqrt(2.0));
+        const auto [vn, fnorm] = normal_errors(s.surface, [](const Vec3& p) {
+            const double rho = std::hypot(p.x(), p.y());
+            return Vec3(Vec3(p.x() / rho, p.y() / rho, -1).normalized());
+        });
+        rows.push_back({{"surface", name}, {"vertices", s.surface.mesh.num_vertices()}, {"vertex_distance", off_cone},
+                        {"vertex_normal_error_rad", vn}, {"face_normal_error_rad", fnorm}});
+        // Coordinates up to 2 from a cubic evaluated in a few operations: a few ulps of 2.
+        r.checks.push_back({name, "on-surface", "analytic", off_cone, tolerances::kCurveRoundingUlps * 2 * kEps, "abs",
+                            "largest distance of a vertex from the cone rho = z"});
+        r.checks.push_back({name, "vertex-normal", "analytic", vn, tolerances::kExactNormalRad, "rad",
+                            "vertex normals against the cone's normal (cos theta, sin theta, -1) / sqrt 2"});
+        r.subjects.push_back(name);
+    }
+    r.tables["cone"] = rows;
+}
+
 /// A 6 x 6 control grid (25 quads) with seeded random heights: its 9 inner faces are
 /// regular, and each is the uniform bicubic B-spline patch of the 4 x 4 window around it.
 void bfr_study(const Implementation& bfr, CheckReport& r) {
@@ -510,6 +547,7 @@ CheckReport check_surface_studies() {
     r.operation = "surfaces";
     sphere_study(r);
     torus_study(r);
+    cone_study(r);
     square_frame_study(r);
     if (const auto refs = references_with(&Capabilities::limit_surface); !refs.empty()) bfr_study(*refs.front(), r);
     return r;

@@ -39,6 +39,7 @@ struct AnalyticCase {
     std::string name;
     std::vector<TriMesh> meshes;
     Exact (*exact)(const Vec3&);
+    bool umbilic = false;  ///< every point an umbilic: no principal direction to check
 };
 
 /// The unit sphere: every point an umbilic of curvature 1.
@@ -95,20 +96,28 @@ ErrorRow errors(const TriMesh& m, const PrincipalCurvatures& c, Exact (*exact)(c
     return r;
 }
 
-/// Largest difference of two estimators' mean and Gaussian curvature where both estimated.
-std::pair<double, double> difference(const PrincipalCurvatures& a, const PrincipalCurvatures& b) {
-    double dh = 0, dk = 0;
+/// Largest differences of two estimators where both estimated: mean and Gaussian curvature,
+/// and the angle (rad, 0..pi/2) between their first principal directions where both have one.
+struct Difference {
+    double mean = 0, gaussian = 0, direction = 0;
+};
+
+Difference difference(const PrincipalCurvatures& a, const PrincipalCurvatures& b) {
+    Difference d;
     for (size_t v = 0; v < a.k1.size(); ++v) {
         if (!a.estimated[v] || !b.estimated[v]) continue;
-        dh = std::max(dh, std::abs(a.mean[v] - b.mean[v]));
-        dk = std::max(dk, std::abs(a.gaussian[v] - b.gaussian[v]));
+        d.mean = std::max(d.mean, std::abs(a.mean[v] - b.mean[v]));
+        d.gaussian = std::max(d.gaussian, std::abs(a.gaussian[v] - b.gaussian[v]));
+        const Vec3 &da = a.direction1[v], &db = b.direction1[v];
+        if (!da.isZero() && !db.isZero())
+            d.direction = std::max(d.direction, std::atan2(da.cross(db).norm(), std::abs(da.dot(db))));
     }
-    return {dh, dk};
+    return d;
 }
 
 json convergence(CheckReport& out) {
     std::vector<AnalyticCase> cases(2);
-    cases[0] = {"sphere", {}, sphere_exact};
+    cases[0] = {"sphere", {}, sphere_exact, true};
     // From level 2: at level 1 every vertex star is symmetric enough that both operators are
     // exact to rounding (measured 7e-16), which would make the fitted order meaningless.
     for (int level = 2; level <= 6; ++level) cases[0].meshes.push_back(datasets::icosphere(level));
@@ -124,7 +133,7 @@ json convergence(CheckReport& out) {
     for (const AnalyticCase& c : cases) {
         std::vector<std::vector<ErrorRow>> err(estimators.size());
         std::vector<double> hs;
-        std::vector<std::vector<double>> diff_h(estimators.size()), diff_k(estimators.size());  // from core, per reference
+        std::vector<std::vector<Difference>> diff(estimators.size());  // from core, per reference
         for (const TriMesh& m : c.meshes) {
             std::vector<PrincipalCurvatures> est;
             for (size_t i = 0; i < estimators.size(); ++i) {
@@ -137,10 +146,7 @@ json convergence(CheckReport& out) {
                                 {"gauss_rms", e.gauss_rms}, {"direction_max", e.direction_max}});
             }
             hs.push_back(err[0].back().h);
-            for (size_t i = 1; i < est.size(); ++i) {
-                const auto [dh, dk] = difference(est[0], est[i]);
-                diff_h[i].push_back(dh), diff_k[i].push_back(dk);
-            }
+            for (size_t i = 1; i < est.size(); ++i) diff[i].push_back(difference(est[0], est[i]));
         }
         // Core on the regular torus and the icosphere: second order in the largest error (Meyer
         // et al.'s operators are consistent on meshes whose vertex stars are symmetric).
@@ -152,14 +158,38 @@ json convergence(CheckReport& out) {
                                   0, "order", "core's largest error against the exact curvature over 5 refinements: fitted order " +
                                   std::to_string(order) + " must be >= " + std::to_string(tolerances::kSecondOrderMin)});
         }
+        // Principal directions against the exact ones, for every estimator: the angle falls at
+        // least at first order (Cazals and Pouget 2005: a degree-2 jet's directions are first
+        // order; Meyer et al.'s tensor is second order on symmetric stars). A direction taken
+        // from the wrong eigenvector is off by pi/2 at every vertex and has order 0.
+        if (!c.umbilic)
+            for (size_t i = 0; i < estimators.size(); ++i) {
+                std::vector<double> e;
+                for (const ErrorRow& r : err[i]) e.push_back(r.direction_max);
+                const double order = fitted_order(hs, e);
+                out.checks.push_back({c.name, "principal-direction-order", estimators[i]->name(),
+                                      tolerances::kPrincipalDirectionOrderMin - order, 0, "order",
+                                      "largest angle between " + estimators[i]->name() + "'s first principal direction and the exact "
+                                      "one over 5 refinements (" + std::to_string(e.back()) + " rad at the finest): fitted order " +
+                                      std::to_string(order) + " must be >= " + std::to_string(tolerances::kPrincipalDirectionOrderMin)});
+            }
         for (size_t i = 1; i < estimators.size(); ++i) {
             // Two consistent estimators converge to the same surface: their difference shrinks
             // at least at the slower one's rate (a degree-2 jet's curvature is first order).
-            const double order = std::min(fitted_order(hs, diff_h[i]), fitted_order(hs, diff_k[i]));
+            std::vector<double> dh, dk, dd;
+            for (const Difference& d : diff[i]) dh.push_back(d.mean), dk.push_back(d.gaussian), dd.push_back(d.direction);
+            const double order = std::min(fitted_order(hs, dh), fitted_order(hs, dk));
             out.checks.push_back({c.name, "curvature-agreement-order", estimators[i]->name(),
                                   tolerances::kCurvatureAgreementOrderMin - order, 0, "order",
                                   "largest |H| and |K| difference between core and " + estimators[i]->name() + " over 5 refinements: "
                                   "fitted order " + std::to_string(order) + " must be >= " +
+                                  std::to_string(tolerances::kCurvatureAgreementOrderMin)});
+            if (c.umbilic) continue;
+            const double direction_order = fitted_order(hs, dd);
+            out.checks.push_back({c.name, "principal-direction-agreement-order", estimators[i]->name(),
+                                  tolerances::kCurvatureAgreementOrderMin - direction_order, 0, "order",
+                                  "largest angle between core's and " + estimators[i]->name() + "'s first principal directions over 5 "
+                                  "refinements: fitted order " + std::to_string(direction_order) + " must be >= " +
                                   std::to_string(tolerances::kCurvatureAgreementOrderMin)});
         }
         out.subjects.push_back(c.name);

@@ -191,6 +191,12 @@ inline double gauss_bonnet_bound(int faces) { return kGaussBonnetPerCorner * 3.0
 /// (Cazals and Pouget 2005, theorem 2). 0.9 tells first order from none.
 inline constexpr double kCurvatureAgreementOrderMin = 0.9;
 
+/// Principal directions converge at least at first order where the surface is not umbilic
+/// (Cazals and Pouget 2005, theorem 2, for a degree-2 jet; measured 2.0 for both estimators on
+/// the regular torus). 0.9 tells first order from none: a direction off by a fixed angle, such
+/// as the other eigenvector's, has order 0.
+inline constexpr double kPrincipalDirectionOrderMin = 0.9;
+
 /// Loop's Gaussian curvature at a vertex of valence n changes by (nu / lambda^2)^2 per level
 /// (curvature_study.cpp); the measured ratio approaches it as the next eigenvalue's share
 /// dies out, geometrically, slowest at valence 5 where the two are closest (measured after 10
