@@ -35,18 +35,25 @@ adapters::LevelTrace reference_limit(const PolyMesh& input, const RefineRequest&
 }  // namespace
 
 LimitComparison compare_limit(const PolyMesh& input, const std::string& name, const RefineRequest& request, bool isolate) {
+    adapters::LimitPoints ours;
+    std::string core_error;
+    try {
+        ours = core_implementation().limit_points(input, request);
+    } catch (const InputError& e) {
+        core_error = e.what();
+    }
+    return compare_limit_points(ours, core_error, input, name, request, isolate);
+}
+
+LimitComparison compare_limit_points(const adapters::LimitPoints& ours, const std::string& core_error, const PolyMesh& input,
+                                     const std::string& name, const RefineRequest& request, bool isolate) {
     LimitComparison out;
     out.input = name;
     out.scheme = request.scheme;
     out.rule = rule_name(request.scheme, request.rule);
     out.levels = request.levels;
-    adapters::LimitPoints ours;
-    try {
-        ours = core_implementation().limit_points(input, request);
-        out.vertices = ours.level.num_vertices();
-    } catch (const InputError& e) {
-        out.core_error = e.what();
-    }
+    out.core_error = core_error;
+    out.vertices = ours.level.num_vertices();
     const IsolatedTrace it = run_isolated([&] { return reference_limit(input, request); }, 300, isolate);
     out.outcome = it.outcome;
     if (const std::optional<EarlyVerdict> early = verdict_before_comparing(it.outcome, out.core_error, out.core_error)) {

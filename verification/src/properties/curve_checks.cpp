@@ -1,5 +1,6 @@
 #include "crossdiv/verification/properties/curve_checks.h"
 
+#include <array>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -301,6 +302,54 @@ void check_tcb_reduction(const CurveRecord& r, const BezierChain& c, const std::
             "tension, continuity and bias 0: every Bezier control point equals Catmull-Rom's bit for bit");
 }
 
+/// Overhauser's own construction of a Bessel-Overhauser segment, without tangents or Bezier
+/// points: on the chord from p_i to p_{i+1} (chord-length knots), the linear blend of the
+/// parabola through p_{i-1}, p_i, p_{i+1} and the one through p_i, p_{i+1}, p_{i+2}, each in
+/// Lagrange form on its three knots. The blend is a cubic with the Hermite segment's end points
+/// and end velocities (the first parabola's derivative at u_i is Bessel's tangent), so it is the
+/// same curve; a tangent weighted by the wrong intervals differs wherever the chords are uneven.
+/// `w` holds p_{i-1} .. p_{i+2} relative to p_i (so rounding is relative to the window's
+/// size, not to the distance from the origin), `h` the three chords, `t` in [0, 1].
+Vec3 overhauser_blend(const std::array<Vec3, 4>& w, const std::array<double, 3>& h, double t) {
+    const double u[4] = {0, h[0], h[0] + h[1], h[0] + h[1] + h[2]};
+    const double x = h[0] + t * h[1];
+    const auto parabola = [&](int first) {  // through w[first..first+2] at u[first..first+2]
+        Vec3 sum = Vec3::Zero();
+        for (int a = first; a < first + 3; ++a) {
+            double basis = 1;
+            for (int b = first; b < first + 3; ++b)
+                if (b != a) basis *= (x - u[b]) / (u[a] - u[b]);
+            sum += basis * w[a];
+        }
+        return sum;
+    };
+    return (1 - t) * parabola(0) + t * parabola(1);
+}
+
+/// Every segment of a Bessel-Overhauser chain at 9 parameters against overhauser_blend.
+void check_overhauser_blend(const CurveRecord& r, const BezierChain& c, const std::string& label, Checker& out) {
+    const size_t n = r.control.size();
+    double worst = 0, allowed = 0;
+    for (int k = 0; k < c.num_segments(); ++k) {
+        const size_t i = static_cast<size_t>(k) + 1;  // segment k runs from point k + 1, as Catmull-Rom's
+        const Vec3& origin = r.control[i % n];
+        std::array<Vec3, 4> w;
+        for (size_t j = 0; j < 4; ++j) w[j] = r.control[(i + n - 1 + j) % n] - origin;
+        const std::array<double, 3> h{(w[1] - w[0]).norm(), (w[2] - w[1]).norm(), (w[3] - w[2]).norm()};
+        // The Lagrange weights grow with the ratio of the window's chords, and so does their
+        // rounding: 64 ulps per unit of that ratio, relative to the chain's size.
+        const double ratio = std::max({h[0], h[1], h[2]}) / std::min({h[0], h[1], h[2]});
+        allowed = std::max(allowed, rounding_bound(c.degree, 0) * (1 + ratio));
+        for (int s = 1; s <= 9; ++s) {
+            const double t = s / 10.0;
+            worst = std::max(worst, (bezier_point(c.segment(k), t) - origin - overhauser_blend(w, h, t)).norm());
+        }
+    }
+    out.add(label, "overhauser-blend", "analytic", worst / scale_of(c), allowed, "rel",
+            "each segment at t = 0.1 .. 0.9 against the linear blend of the two parabolas through its window's points "
+            "on chord-length knots (Overhauser's construction, evaluated in Lagrange form)");
+}
+
 /// A camera path's orientations: every slerp of its de Casteljau levels against Eigen's, the
 /// unit norm, the ends, the rotation matrices (against Eigen's, orthonormal); one row of the
 /// report's figure (positions and frames at the tessellation's parameters).
@@ -528,6 +577,7 @@ CheckReport check_curve_file(const CurveFile& file, const std::string& input) {
             check_conversion(r, c, label, out);
         if (interpolating(r)) check_interpolation(r, c, label, out);
         if (is_tcb(r)) check_tcb_reduction(r, c, label, out);
+        if (is_bessel(r)) check_overhauser_blend(r, c, label, out);
         if (is_tcb(r) || is_bessel(r)) shapes.push_back(shape_row(r, label, uniform));
         if (r.type == CurveType::CameraPath) check_orientations(r, label, uniform, out, orientations);
         if (r.type == CurveType::KappaClosed) kappa.push_back(check_kappa_record(r, label, uniform, report));

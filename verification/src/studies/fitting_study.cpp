@@ -5,11 +5,16 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <filesystem>
+#include <random>
 
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/mesh/poly_connectivity.h"
+#include "crossdiv/subdiv/catmull_clark.h"
+#include "crossdiv/subdiv/loop.h"
+#include "crossdiv/verification/comparisons/limit_comparison.h"
 #include "crossdiv/verification/comparisons/limit_fitting_run.h"
 #include "crossdiv/verification/harness/tolerances.h"
 #include "crossdiv/verification/implementations/registry.h"
@@ -87,6 +92,54 @@ json recovery(CheckReport& out) {
                                                             "bipartite meshes under Catmull-Clark"
                                                           : "singular or not against the prediction: " + mispredicted));
     out.subjects.push_back("catalog");
+    return rows;
+}
+
+/// The sampling matrix A = Lim_L S_L ... S_1 that fitting solves with, applied to the control
+/// points, against OpenSubdiv's limit points after the same levels (PrimvarRefiner::Limit): A is
+/// assembled from core's own matrices, so nothing else checks it. Every catalog mesh, 2 levels,
+/// each vertex moved by a seeded random offset so that no symmetry of the mesh hides a wrong
+/// weight.
+json sampling_against_opensubdiv(CheckReport& out) {
+    json rows = json::array();
+    std::mt19937 rng(20261127);
+    std::uniform_real_distribution<double> jitter(-0.1, 0.1);
+    for (const datasets::BundledMesh& b : datasets::catalog_meshes()) {
+        PolyMesh mesh = b.mesh;
+        const double diagonal = bounding_box_diagonal(mesh.positions);
+        for (Vec3& p : mesh.positions) p += diagonal * Vec3(jitter(rng), jitter(rng), jitter(rng));
+        for (Scheme scheme : {Scheme::Loop, Scheme::CatmullClark}) {
+            if (scheme == Scheme::Loop && !mesh.all_triangles()) continue;
+            const RefineRequest request{scheme, SchemeRule{}, 2};
+            adapters::LimitPoints ours;
+            std::string core_error;
+            try {
+                // The rows of A are the vertices of the level the sampling refines to, one level at a
+                // time, in that order (two levels at once may number them otherwise).
+                const bool loop = scheme == Scheme::Loop;
+                const LimitSampling s = loop ? loop_limit_sampling(to_tri_mesh(mesh), request.rule.loop, 2)
+                                             : catmull_clark_limit_sampling(mesh, request.rule.catmull_clark, 2);
+                const LoopOptions& lo = request.rule.loop;
+                const CatmullClarkOptions& co = request.rule.catmull_clark;
+                ours.level = loop ? to_poly_mesh(loop_subdivide(loop_subdivide(to_tri_mesh(mesh), lo, 1), lo, 1))
+                                  : catmull_clark_subdivide(catmull_clark_subdivide(mesh, co, 1), co, 1);
+                ours.position = s.evaluate(mesh.positions);
+                ours.normal.assign(ours.position.size(), Vec3::Constant(NAN));  // A carries no normals
+            } catch (const InputError& e) {
+                core_error = e.what();
+            }
+            const LimitComparison c = compare_limit_points(ours, core_error, mesh, "bundled:" + b.name, request);
+            rows.push_back(to_json(c));
+            const std::string what = "limit sampling " + std::string(to_string(scheme)) + " L2";
+            if (c.verdict != Verdict::Agree && c.verdict != Verdict::Diverge)
+                out.checks.push_back(decided_check("opensubdiv", what, c.input, NAN, tolerances::kLimitAgreementRelative, "rel",
+                                                   c.explanation, {c.verdict, DivergenceClass::None}));
+            else
+                out.checks.push_back(measured_check("opensubdiv", what, c.input, c.max_rel_position,
+                                                    tolerances::kLimitAgreementRelative, "rel",
+                                                    "fitting's sampling matrix times the jittered control points: " + c.explanation));
+        }
+    }
     return rows;
 }
 
@@ -169,6 +222,8 @@ std::vector<FittingTarget> fitting_targets() {
 CheckReport fitting_study(const std::vector<FittingTarget>& targets, const std::vector<int>& edge_budgets, int iterations) {
     CheckReport out;
     out.tables["fitting_recovery"] = recovery(out);
+    if (!references_with(&Capabilities::limit_positions).empty())
+        out.tables["fitting_sampling"] = sampling_against_opensubdiv(out);
     const std::vector<const Implementation*> simplifiers = references_with(&Capabilities::simplification);
     const std::vector<const Implementation*> distances = references_with(&Capabilities::hausdorff_distance);
     json rows = json::array(), figures = json::array();

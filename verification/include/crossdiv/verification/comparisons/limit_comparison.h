@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "crossdiv/adapters/reference.h"
 #include "crossdiv/verification/harness/tolerances.h"
 #include "crossdiv/mesh/poly_mesh.h"
 #include "crossdiv/subdiv/catmull_clark_mask.h"
@@ -38,6 +39,13 @@ struct LimitComparison {
 /// matched by nearest position (the levels agree to rounding).
 LimitComparison compare_limit(const PolyMesh& input, const std::string& name, const RefineRequest& request,
                               bool isolate = true);
+
+/// The same comparison for limit points core computed some other way (`ours`: the level's
+/// mesh in core's vertex order, a position per vertex, and a normal per vertex, NaN where none
+/// is compared), or for core's refusal (`core_error` not empty, `ours` empty). The fitting
+/// study passes its limit sampling matrix applied to the control points here.
+LimitComparison compare_limit_points(const adapters::LimitPoints& ours, const std::string& core_error, const PolyMesh& input,
+                                     const std::string& name, const RefineRequest& request, bool isolate = true);
 
 nlohmann::json to_json(const LimitComparison& c);
 
