@@ -14,6 +14,7 @@ CATEGORIES = [
     ("diverge (unexplained)", "#e53935"),
     ("ref-crashed", "#212121"),
     ("ref-invalid-output", "#6d4c41"),
+    ("ref-nondeterministic", "#f06292"),
     ("ref-rejected", "#9e9e9e"),
     ("ref-unavailable", "#cfd8dc"),
     ("ours-rejected", "#42a5f5"),
@@ -40,6 +41,8 @@ def category(case, run=None):
         return "diverge (classified)"
     if o.startswith("ours-rejected"):
         return "ours-rejected"
+    if o.startswith("ref-nondeterministic"):
+        return "ref-nondeterministic"
     if o not in dict(CATEGORIES):
         raise ValueError(f"unknown outcome '{o}' in {case.get('id')}")
     return o

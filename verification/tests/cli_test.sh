@@ -110,9 +110,13 @@ expect isolated-vertex-cgal-crash 1 "cgal +$cgal_dies" -- "$crossdiv" compare "$
 expect isolated-vertex-opensubdiv-agrees 0 'every reference agrees' -- "$crossdiv" compare "$tmp/isolated.obj" --levels 2 --against opensubdiv
 # OpenMesh's LoopT::smooth returns early for a vertex without a half-edge and never writes
 # its new position (LoopT.hh, smooth()): the isolated vertex gets whatever was in memory.
-# Whether that happens to equal the old position varies, so either outcome is accepted,
-# but an unexplained one is not: the difference must be pinned on the isolated vertex.
-expect isolated-vertex-openmesh-classified '' 'openmesh +ok +(agree|diverge .*isolated-vertex-handling)' -- "$crossdiv" compare "$tmp/isolated.obj" --levels 2 --against openmesh
+# Run again with its heap filled otherwise, that vertex changes: ref-nondeterministic, the
+# difference pinned on the isolated vertex (under the sanitizers, whose allocator fills memory
+# itself, the second run may find the same bytes; then agree or the class alone). Never
+# unexplained.
+if [ "$sanitized" != sanitized ]; then unwritten='ref-nondeterministic .*isolated-vertex-handling: openmesh gives another result when run again'
+else unwritten='(agree|(diverge|ref-nondeterministic) .*isolated-vertex-handling)'; fi
+expect isolated-vertex-openmesh-classified '' "openmesh +ok +$unwritten" -- "$crossdiv" compare "$tmp/isolated.obj" --levels 2 --against openmesh
 
 # The main job's pieces: a small suite writes every output and the report with its figures.
 printf 'suite cli\ncase bundled:tetrahedron,bundled:open-patch loop boundary=edge-and-corner levels=2\n' > "$tmp/cli.suite"

@@ -2,7 +2,9 @@
 // manifest's reference and subject statements, and MeshLab's meshlabserver itself.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -198,6 +200,17 @@ TEST(Callback, IsComparedAndItsRuleNamed) {
     EXPECT_TRUE(d.subject_failed());
 }
 
+/// Core's levels of `request`, one call per level, as a library double's starting point.
+adapters::LevelTrace core_levels(const PolyMesh& mesh, const RefineRequest& request) {
+    adapters::LevelTrace trace{mesh};
+    for (int l = 1; l <= request.levels; ++l) {
+        RefineRequest one = request;
+        one.levels = 1;
+        trace.push_back(core_implementation().refine_last(trace.back(), one));
+    }
+    return trace;
+}
+
 // A library that returns NaN (OpenMesh's sqrt3 reading past its weight table does) gave no
 // answer: ref-invalid-output naming the vertex and level, never a distance of inf.
 class NonFiniteLibrary final : public Implementation {
@@ -206,12 +219,7 @@ public:
         : Implementation("non-finite", "test", ImplementationKind::Library,
                          {.schemes = {{Scheme::Loop, {SchemeRule{}}, false, 0, ""}}}) {}
     adapters::LevelTrace refine(const PolyMesh& mesh, const RefineRequest& request) const override {
-        adapters::LevelTrace trace{mesh};
-        for (int l = 1; l <= request.levels; ++l) {
-            RefineRequest one = request;
-            one.levels = 1;
-            trace.push_back(core_implementation().refine_last(trace.back(), one));
-        }
+        adapters::LevelTrace trace = core_levels(mesh, request);
         trace.back().positions[3].y() = std::numeric_limits<double>::infinity();
         return trace;
     }
@@ -229,36 +237,50 @@ TEST(LibraryReference, WithANonFiniteCoordinateIsAnInvalidOutput) {
 // land among other vertices and pair with the wrong ones, so the final level has no vertex
 // correspondence (moved a thousand times as far, the faces would still place them); level 1
 // still shows the cause: exactly the vertices past the table differ.
+// With `not_a_number`, it puts NaN there instead, as Sqrt3T does when what lies past its vector
+// reads as NaN.
 class ShortTableLibrary final : public Implementation {
 public:
-    ShortTableLibrary()
-        : Implementation("short-table", "test", ImplementationKind::Library,
+    explicit ShortTableLibrary(bool not_a_number = false)
+        : Implementation(not_a_number ? "short-table-nan" : "short-table", "test", ImplementationKind::Library,
                          {.schemes = {{Scheme::Sqrt3, {SchemeRule{.sqrt3 = {Sqrt3Parity::RestartEachLevel}}}, false, 49,
-                                       "a table of 50 weights"}}}) {}
+                                       "a table of 50 weights"}}}),
+          not_a_number_(not_a_number) {}
     adapters::LevelTrace refine(const PolyMesh& mesh, const RefineRequest& request) const override {
-        adapters::LevelTrace trace{mesh};
+        adapters::LevelTrace trace{mesh}, clean{mesh};
         for (int l = 1; l <= request.levels; ++l) {
             RefineRequest one = request;
             one.levels = 1;
             one.rule.sqrt3 = {Sqrt3Parity::RestartEachLevel};
-            const PolyMesh& coarse = trace.back();
+            // NaN stays where it is put (the next level is refined from the finite positions,
+            // as a library that does not check its coordinates goes on).
+            const PolyMesh& coarse = not_a_number_ ? clean.back() : trace.back();
             PolyMesh fine = core_implementation().refine_last(coarse, one);
             const MeshTopology topo = mesh_topology(coarse);
-            for (int v = 0; v < coarse.num_vertices(); ++v)  // core keeps the old vertices first
-                if (topo.valence[v] > 49) fine.positions[v] *= 3;
+            if (not_a_number_) clean.push_back(fine);  // after the last use of `coarse`, which it may move
+            for (size_t v = 0; v < topo.valence.size(); ++v)  // core keeps the old vertices first
+                if (topo.valence[v] > 49) fine.positions[v] = not_a_number_ ? Vec3::Constant(NAN) : Vec3(3 * fine.positions[v]);
             trace.push_back(std::move(fine));
         }
         return trace;
     }
+
+private:
+    bool not_a_number_;
 };
+
+/// `levels` of sqrt3 on pole-64 against `reference` alone.
+RefinementComparison sqrt3_on_pole_64(const std::string& reference, int levels) {
+    RefinementRequest req;
+    req.scheme = Scheme::Sqrt3;
+    req.levels = levels;
+    req.references = {reference};
+    return compare_refinement(datasets::bundled_mesh("pole-64"), "pole-64", req);
+}
 
 TEST(LibraryReference, PastItsValenceTableIsAValenceLimitEvenWithoutACorrespondence) {
     register_reference(std::make_unique<ShortTableLibrary>());
-    RefinementRequest req;
-    req.scheme = Scheme::Sqrt3;
-    req.levels = 3;
-    req.references = {"short-table"};
-    const RefinementComparison c = compare_refinement(datasets::bundled_mesh("pole-64"), "pole-64", req);
+    const RefinementComparison c = sqrt3_on_pole_64("short-table", 3);
     ASSERT_EQ(c.runs.size(), 1u);
     const RefinementRun& r = c.runs[0];
     EXPECT_EQ(r.correspondence.method, MatchMethod::None) << r.correspondence.note;  // level 3 cannot be matched
@@ -267,6 +289,64 @@ TEST(LibraryReference, PastItsValenceTableIsAValenceLimitEvenWithoutACorresponde
     // pole-64's two poles have valence 64.
     EXPECT_NE(r.explanation.find("exactly the 2 vertices of larger valence (up to 64) differ"), std::string::npos)
         << r.explanation;
+}
+
+// NaN past the table is the same valence limit (and not an invalid output, which made the
+// class flip from run to run with what Sqrt3T found past its vector).
+TEST(LibraryReference, NaNPastItsValenceTableIsAValenceLimit) {
+    register_reference(std::make_unique<ShortTableLibrary>(true));
+    const RefinementComparison c = sqrt3_on_pole_64("short-table-nan", 2);
+    ASSERT_EQ(c.runs.size(), 1u);
+    const RefinementRun& r = c.runs[0];
+    EXPECT_EQ(r.outcome.status, RunStatus::NonFiniteOutput);
+    EXPECT_EQ(r.verdict, Verdict::Diverge);
+    EXPECT_EQ(r.divergence_class, DivergenceClass::ValenceLimit) << r.explanation;
+    EXPECT_NE(r.explanation.find("exactly the 2 vertices of larger valence (up to 64) differ, all to non-finite positions"),
+              std::string::npos) << r.explanation;
+}
+
+// A library that leaves one vertex's new position unwritten (as OpenMesh's Loop does at an
+// isolated vertex): it reads whatever its allocation held. Each isolated run fills the heap
+// with one byte, so the result is the same every time; run again with another, it changes, and
+// the run is ref-nondeterministic, naming the vertex and both values.
+class UnwrittenVertexLibrary final : public Implementation {
+public:
+    UnwrittenVertexLibrary()
+        : Implementation("unwritten-vertex", "test", ImplementationKind::Library, {.schemes = {{Scheme::Loop, {SchemeRule{}}, false, 0, ""}}}) {}
+    adapters::LevelTrace refine(const PolyMesh& mesh, const RefineRequest& request) const override {
+        adapters::LevelTrace trace = core_levels(mesh, request);
+        // A fresh allocation, never written, copied byte for byte (reading indeterminate bytes
+        // as unsigned char is defined).
+        auto* unwritten = static_cast<unsigned char*>(std::malloc(4096));
+        std::memcpy(trace.back().positions[0].data(), unwritten + 2048, 3 * sizeof(double));
+        std::free(unwritten);
+        return trace;
+    }
+};
+
+TEST(LibraryReference, ThatReadsMemoryItNeverWroteIsNondeterministic) {
+#ifdef CROSSDIV_SANITIZED
+    GTEST_SKIP() << "the address sanitizer's allocator fills memory itself; the heap fill is glibc's";
+#endif
+    register_reference(std::make_unique<UnwrittenVertexLibrary>());
+    const RefinementComparison c = compare_against("unwritten-vertex", "octahedron", 2);
+    ASSERT_EQ(c.runs.size(), 1u);
+    const RefinementRun& r = c.runs[0];
+    EXPECT_EQ(r.verdict, Verdict::RefNondeterministic) << r.explanation;
+    EXPECT_FALSE((Outcome{r.verdict, r.divergence_class}.is_failure()));
+    EXPECT_NE(r.explanation.find("unwritten-vertex gives another result when run again on the same input with its heap "
+                                 "filled otherwise (it reads memory it never wrote, or depends on more than its input): "
+                                 "level 2 vertex 0 is ("),
+              std::string::npos) << r.explanation;
+    EXPECT_NE(r.explanation.find("; the first run: "), std::string::npos) << r.explanation;
+    // The same comparison again: the same verdict and the same numbers (the fill makes the
+    // unwritten bytes the same in every run, whatever this process's heap held).
+    std::vector<char*> clutter;  // change this process's heap between the comparisons
+    for (int i = 0; i < 100; ++i) clutter.push_back(static_cast<char*>(std::malloc(4096 + 64 * i))), clutter.back()[0] = 1;
+    const RefinementComparison again = compare_against("unwritten-vertex", "octahedron", 2);
+    for (char* p : clutter) std::free(p);
+    EXPECT_EQ(again.runs[0].verdict, Verdict::RefNondeterministic);
+    EXPECT_EQ(again.runs[0].explanation, r.explanation);
 }
 
 // MeshLab as the default suite has it: Loop under each of its weight families against core in

@@ -1,4 +1,5 @@
 #include "crossdiv/verification/comparisons/refinement_comparison.h"
+#include "crossdiv/verification/comparisons/nondeterminism.h"
 #include "crossdiv/verification/comparisons/shared_topology.h"
 
 #include <algorithm>
@@ -140,7 +141,27 @@ bool beyond_valence_table(const Implementation& ref, Scheme scheme, const PolyMe
         largest = std::max(largest, topo.valence[v]);
     }
     if (beyond == 0) return false;
-    const Correspondence c = match_nearest_and_faces(ours, trace[1]);
+    // What it read past the table may be NaN or inf (OpenMesh's Sqrt3T), which no match by
+    // position can place: such a vertex is matched at the mean of its finite neighbours (the
+    // distances below are still taken to the position it made, and count as differing).
+    const PolyMesh& made = trace[1];
+    PolyMesh placed = made;
+    std::vector<Vec3> sum(made.positions.size(), Vec3::Zero());
+    std::vector<int> finite_neighbours(made.positions.size(), 0);
+    for (int f = 0; f < made.num_faces(); ++f) {
+        const int n = made.face_size(f), start = made.face_start[f];
+        for (int k = 0; k < n; ++k) {
+            const int a = made.face_vertices[start + k], b = made.face_vertices[start + (k + 1) % n];
+            if (made.positions[b].allFinite()) sum[a] += made.positions[b], ++finite_neighbours[a];
+            if (made.positions[a].allFinite()) sum[b] += made.positions[a], ++finite_neighbours[b];
+        }
+    }
+    for (size_t v = 0; v < made.positions.size(); ++v)
+        if (!made.positions[v].allFinite()) {
+            if (finite_neighbours[v] == 0) return false;
+            placed.positions[v] = sum[v] / finite_neighbours[v];
+        }
+    const Correspondence c = match_nearest_and_faces(ours, placed);
     if (c.method == MatchMethod::None) return false;
     const std::vector<double> d = vertex_distances(ours, trace[1], c.ref_to_ours);
     const double diagonal = bounding_box_diagonal(ours.positions);
@@ -367,6 +388,15 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
     // The faces of each run whose faces are not core's (runs[i] <-> made_by_run[i]), for the post-pass
     // that lets a topology difference stand only where it is shared (shared_topology.h).
     std::vector<std::optional<MadeFaces>> made_by_run;
+    // Where each run's result changed when it ran again (runs[i] <-> changed[i]; nondeterminism.h).
+    std::vector<std::optional<std::string>> changed;
+    // A reference that computes in float is held to the float tier: the weak tier at the
+    // float bound (tolerances::kFloatAgreementUlps), whatever tier the case asks of doubles.
+    const auto tolerance_for = [&](const Implementation& ref) {
+        return ref.capabilities().precision == Precision::Float
+                   ? agreement_tolerance(ours, true, req.tolerance, largest_valence(), req.levels)
+                   : req.tolerance;
+    };
     for (const Implementation* impl : refs) {
         const Implementation& ref = *impl;
         RefinementRun run;
@@ -377,7 +407,28 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
         const bool rules_differ = !same_rule(req.scheme, run.ran_with, req.rule);
         // Asked for the rule it applies: a program is handed the rule as it is asked.
         IsolatedTrace iso = refine_isolated(ref, input, {req.scheme, run.ran_with, req.levels}, req.timeout_seconds, req.isolate);
+        // The same run again with the heap filled otherwise: a result that changes is recorded
+        // as ref-nondeterministic after the classification below (nondeterminism.h).
+        changed.emplace_back();
+        if (req.isolate && !ref.confines_itself() && reruns_for_determinism(iso.outcome.status))
+            changed.back() = first_difference(iso, refine_isolated(ref, input, {req.scheme, run.ran_with, req.levels},
+                                                                    req.timeout_seconds, true, kSecondHeapFill));
         run.outcome = iso.outcome;
+        // Non-finite coordinates where its weight table ends below the input's valence are what
+        // it read past the table (OpenMesh's Sqrt3T): the valence limit, whether what lay there
+        // read as NaN or as a number in this run.
+        if (iso.outcome.status == RunStatus::NonFiniteOutput && iso.trace && out.core_error.empty()) {
+            const CoreRun& s = core.with(run.ran_with);
+            std::string why;
+            if (s.error.empty() && s.levels().size() >= 2 &&
+                beyond_valence_table(ref, req.scheme, input, s.levels()[1], *iso.trace, tolerance_for(ref), why)) {
+                run.verdict = Verdict::Diverge;
+                run.divergence_class = DivergenceClass::ValenceLimit;
+                run.explanation = why + " (" + iso.outcome.message + ")";
+                out.runs.push_back(std::move(run));
+                continue;
+            }
+        }
         const std::string made = iso.trace ? "core refuses the input (" + out.core_error + "); " + ref.name() + " refines it to " +
                                                  counts(iso.trace->back())
                                            : std::string();
@@ -401,11 +452,8 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
         const adapters::LevelTrace& trace = *iso.trace;
         const PolyMesh& theirs = trace.back();
 
-        // A reference that computes in float is held to the float tier: the weak tier at the
-        // float bound (tolerances::kFloatAgreementUlps), whatever tier the case asks of doubles.
         const bool in_float = ref.capabilities().precision == Precision::Float;
-        const double tolerance =
-            in_float ? agreement_tolerance(ours, true, req.tolerance, largest_valence(), req.levels) : req.tolerance;
+        const double tolerance = tolerance_for(ref);
         const Tier tier = in_float && req.tier == Tier::Strict ? Tier::Weak : req.tier;
         if (tier == Tier::Geometric) {
             const double d = bounding_box_diagonal(ours.positions);
@@ -634,6 +682,23 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
         if (!same_faces) made_by_run.back() = made_faces(theirs, map);
     }
     require_shared_topology(out.runs, made_by_run, subject_name);
+
+    for (size_t i = 0; i < out.runs.size(); ++i) {
+        if (!changed[i]) continue;
+        RefinementRun& run = out.runs[i];
+        // Past a weight table it reads what lies beyond its vector, which may be this process's
+        // data that no fill reaches: a second run may or may not change it, and the verdict would
+        // flip from suite to suite. The class already says that what it reads there is undefined.
+        if (run.divergence_class == DivergenceClass::ValenceLimit) {
+            run.explanation += "; run again with its heap filled otherwise, " + *changed[i];
+            continue;
+        }
+        run.verdict = Verdict::RefNondeterministic;
+        if (run.divergence_class == DivergenceClass::Unexplained) run.divergence_class = DivergenceClass::None;
+        run.explanation = run.reference + " gives another result when run again on the same input with its heap filled "
+                          "otherwise (it reads memory it never wrote, or depends on more than its input): " + *changed[i] +
+                          "; the first run: " + run.explanation;
+    }
 
     const RefinementRun* worst_run = nullptr;
     for (const RefinementRun& r : out.runs)

@@ -3,6 +3,7 @@
 #include "crossdiv/verification/harness/process.h"
 #include "sanitizer.h"
 
+#include <malloc.h>
 #include <signal.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
@@ -11,6 +12,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <thread>
 
@@ -31,6 +33,26 @@ void limit_memory() {
     const rlim_t cap = static_cast<rlim_t>(pages * sysconf(_SC_PAGESIZE) + kIsolatedMemoryBytes);
     const rlimit limit{cap, cap};
     setrlimit(RLIMIT_AS, &limit);
+#endif
+}
+
+/// Makes what an isolated child's allocations hold before they are written the same in every
+/// run, whatever this process's heap held at the fork: every allocation malloc makes is filled
+/// with the complement of `heap_fill` (mallopt M_PERTURB). glibc hands out the thread's cache of
+/// recently freed small chunks (the tcache: up to 7 chunks of each size up to 1032 bytes) without
+/// filling them, so those chunks, freed before the fork and holding the parent's data, are
+/// taken first and kept (the child ends by _exit). The address sanitizer's allocator replaces
+/// malloc's and fills on its own.
+void* taken_chunks[65 * 7];  // settle_heap's; at namespace scope, so that the allocations stay
+
+void settle_heap(int heap_fill) {
+#ifndef CROSSDIV_ADDRESS_SANITIZER
+    mallopt(M_PERTURB, heap_fill);
+    size_t i = 0;
+    for (size_t size = 8; size <= 1032; size += 16)
+        for (int k = 0; k < 7; ++k) taken_chunks[i++] = std::malloc(size);
+#else
+    (void)heap_fill;
 #endif
 }
 
@@ -151,7 +173,8 @@ std::string RunOutcome::summary() const {
     return std::string(to_string(status)) + ": " + message;
 }
 
-IsolatedTrace run_isolated(const std::function<adapters::LevelTrace()>& fn, double timeout_seconds, bool isolate) {
+IsolatedTrace run_isolated(const std::function<adapters::LevelTrace()>& fn, double timeout_seconds, bool isolate,
+                           int heap_fill) {
     if (!isolate) return run_here(fn);
     FILE* result = std::tmpfile();
     FILE* errors = std::tmpfile();
@@ -171,6 +194,7 @@ IsolatedTrace run_isolated(const std::function<adapters::LevelTrace()>& fn, doub
         prctl(PR_SET_PDEATHSIG, SIGKILL);  // not outliving a parent killed outright
         dup2(fileno(errors), STDERR_FILENO);
         limit_memory();
+        settle_heap(heap_fill);
         const IsolatedTrace r = run_here(fn);
         put(result, static_cast<int>(r.outcome.status));
         put_string(result, r.outcome.message);

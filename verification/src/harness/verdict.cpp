@@ -16,6 +16,7 @@ constexpr std::array kVerdicts = {
     std::pair{Verdict::RefInvalidOutput, "ref-invalid-output"},
     std::pair{Verdict::RefUnavailable, "ref-unavailable"},
     std::pair{Verdict::OursRejected, "ours-rejected"},
+    std::pair{Verdict::RefNondeterministic, "ref-nondeterministic"},
 };
 
 constexpr std::array kClasses = {
@@ -68,7 +69,8 @@ const char* to_string(DivergenceClass cls) { return name_of(kClasses, cls); }
 DivergenceClass divergence_class_from_string(std::string_view name) { return parse(kClasses, name, "divergence class"); }
 
 std::string to_string(const Outcome& o) {
-    const bool classed = o.verdict == Verdict::Diverge || o.verdict == Verdict::OursRejected;
+    const bool classed =
+        o.verdict == Verdict::Diverge || o.verdict == Verdict::OursRejected || o.verdict == Verdict::RefNondeterministic;
     if (classed && o.cls != DivergenceClass::None) return std::string(to_string(o.verdict)) + " (" + to_string(o.cls) + ")";
     return to_string(o.verdict);
 }

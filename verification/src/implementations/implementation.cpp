@@ -129,12 +129,13 @@ double Implementation::hausdorff_distance(const TriMesh&, const TriMesh&) const 
 TriMesh Implementation::simplify(const TriMesh&, int) const { lacks("mesh simplification"); }
 
 IsolatedTrace refine_isolated(const Implementation& impl, const PolyMesh& mesh, const RefineRequest& request,
-                              double timeout_seconds, bool isolate) {
-    IsolatedTrace r =
-        run_isolated([&] { return impl.refine(mesh, request); }, timeout_seconds, isolate && !impl.confines_itself());
+                              double timeout_seconds, bool isolate, int heap_fill) {
+    IsolatedTrace r = run_isolated([&] { return impl.refine(mesh, request); }, timeout_seconds,
+                                   isolate && !impl.confines_itself(), heap_fill);
     if (r.outcome.status != RunStatus::Ok || !r.trace) return r;
     // A library that reads past a table (OpenMesh's sqrt3 weights beyond its largest valence)
-    // can return NaN or inf: an answer that is no answer, never a distance to compare.
+    // can return NaN or inf: an answer that is no answer, never a distance to compare. The
+    // trace stays, so that a comparison can still tell where the coordinates went wrong.
     for (size_t level = 1; level < r.trace->size(); ++level) {
         const std::vector<Vec3>& p = (*r.trace)[level].positions;
         for (size_t v = 0; v < p.size(); ++v)
@@ -143,7 +144,6 @@ IsolatedTrace refine_isolated(const Implementation& impl, const PolyMesh& mesh, 
                 r.outcome.message = "vertex " + std::to_string(v) + " of level " + std::to_string(level) +
                                     " is not finite (" + std::to_string(p[v].x()) + ", " + std::to_string(p[v].y()) +
                                     ", " + std::to_string(p[v].z()) + ")";
-                r.trace.reset();
                 return r;
             }
     }

@@ -93,8 +93,19 @@ inline std::optional<EarlyVerdict> verdict_before_comparing(const RunOutcome& re
 
 struct IsolatedTrace {
     RunOutcome outcome;
-    std::optional<adapters::LevelTrace> trace;  ///< present when outcome.status == Ok
+    /// Present when outcome.status is Ok; refine_isolated keeps it for NonFiniteOutput too (the
+    /// positions as the implementation made them), so that a comparison can tell where they are.
+    std::optional<adapters::LevelTrace> trace;
 };
+
+/// The byte glibc's malloc fills an isolated child's memory with (mallopt M_PERTURB: new
+/// allocations get its complement, freed ones the byte itself). A library that reads memory it
+/// never wrote (OpenMesh's Loop leaves an isolated vertex's new position unset) then reads the
+/// same bytes in every run, whatever this process's heap held before the fork, so its result
+/// depends on its input alone; a second run with kSecondHeapFill shows whether it reads such
+/// memory at all. Not in effect under the address sanitizer, whose allocator replaces malloc's.
+inline constexpr int kHeapFill = 0xA5;
+inline constexpr int kSecondHeapFill = 0x3C;
 
 /// Memory an isolated run may take beyond what this process already holds (RLIMIT_AS in the
 /// child): a reference that allocates without bound on hostile input fails fast and is
@@ -116,10 +127,12 @@ struct ForkHooks {
 /// Sets the hooks of every later run_isolated in this process.
 void set_fork_hooks(const ForkHooks& hooks);
 
-/// Runs `fn` in a forked child with a time limit of `timeout_seconds` and a memory limit of
-/// kIsolatedMemoryBytes, and ships its result back through a temporary file; the child's
-/// stderr is captured into the outcome's message when the run fails. With `isolate` false it runs in this process (for debugging; a crash
-/// then takes the process down).
-IsolatedTrace run_isolated(const std::function<adapters::LevelTrace()>& fn, double timeout_seconds, bool isolate = true);
+/// Runs `fn` in a forked child with a time limit of `timeout_seconds`, a memory limit of
+/// kIsolatedMemoryBytes and its heap filled with `heap_fill`, and ships its result back through
+/// a temporary file; the child's stderr is captured into the outcome's message when the run
+/// fails. With `isolate` false it runs in this process (for debugging; a crash then takes the
+/// process down, and the heap is not filled).
+IsolatedTrace run_isolated(const std::function<adapters::LevelTrace()>& fn, double timeout_seconds, bool isolate = true,
+                           int heap_fill = kHeapFill);
 
 }  // namespace crossdiv::verification

@@ -20,10 +20,15 @@ enum class Verdict {
     RefInvalidOutput,  ///< the reference's result is not a mesh of the scheme (unreadable, NaN, wrong counts)
     RefUnavailable,    ///< the reference is not on this machine (an external program whose setup failed)
     OursRejected,  ///< core refused the input (the class names the input handling)
+    /// The reference's result changed when it ran again on the same input with its heap filled
+    /// otherwise (comparisons/nondeterminism.h): it reads memory it never wrote. The class is the
+    /// first run's divergence, if it diverged; not a failure of core's, as no verdict on core can
+    /// be read off a result that changes.
+    RefNondeterministic,
 };
 
 /// "agree", "diverge", "ref-rejected", "ref-crashed", "ref-invalid-output", "ref-unavailable",
-/// "ours-rejected".
+/// "ours-rejected", "ref-nondeterministic".
 const char* to_string(Verdict verdict);
 /// @throws InputError naming the unknown verdict and the known ones.
 Verdict verdict_from_string(std::string_view name);
@@ -87,8 +92,8 @@ struct Outcome {
     friend bool operator==(const Outcome&, const Outcome&) = default;
 };
 
-/// "agree", "diverge (<class>)", "ref-rejected", "ref-crashed", "ours-rejected (<class>)";
-/// a diverge or ours-rejected without a class is the bare verdict.
+/// "agree", "diverge (<class>)", "ref-rejected", "ref-crashed", "ours-rejected (<class>)",
+/// "ref-nondeterministic (<class>)"; a verdict without a class is the bare verdict.
 std::string to_string(const Outcome& outcome);
 
 }  // namespace crossdiv::verification

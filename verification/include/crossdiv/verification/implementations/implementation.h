@@ -206,10 +206,12 @@ private:
     Capabilities capabilities_;
 };
 
-/// `impl.refine(mesh, request)` in a child process with a time limit (run_isolated), so that
-/// a crash, a hang or an exception is recorded as the run's outcome; an implementation that
-/// confines itself runs here. With `isolate` false everything runs here (debugging).
+/// `impl.refine(mesh, request)` in a child process with a time limit and its heap filled with
+/// `heap_fill` (run_isolated), so that a crash, a hang or an exception is recorded as the run's
+/// outcome; an implementation that confines itself runs here. With `isolate` false everything
+/// runs here (debugging). A result with a non-finite coordinate is NonFiniteOutput, naming the
+/// first such vertex, and keeps its trace.
 IsolatedTrace refine_isolated(const Implementation& impl, const PolyMesh& mesh, const RefineRequest& request,
-                              double timeout_seconds, bool isolate);
+                              double timeout_seconds, bool isolate, int heap_fill = kHeapFill);
 
 }  // namespace crossdiv::verification
