@@ -16,6 +16,7 @@
 #include "crossdiv/mesh/discrete_curvature.h"
 #include "crossdiv/verification/implementations/inputs.h"
 #include "crossdiv/verification/harness/tolerances.h"
+#include "crossdiv/verification/implementations/isolated_calls.h"
 #include "crossdiv/verification/implementations/registry.h"
 
 namespace crossdiv::cli {
@@ -78,8 +79,15 @@ int run_curvature(const CurvatureArgs& a) {
     if (!refs.empty())
         for (const verification::Implementation* ref :
              verification::select_references(&verification::Capabilities::curvatures, refs, "curvature estimator")) {
-            try {
-                const verification::PrincipalCurvatures r = ref->curvatures(mesh);
+            const verification::IsolatedValue<verification::PrincipalCurvatures> run = verification::curvatures_isolated(*ref, mesh);
+            if (!run.value) {
+                fmt::print("  {} {}: {}\n", ref->name(),
+                           run.outcome.status == verification::RunStatus::Rejected ? "refused the mesh" : "failed",
+                           run.outcome.failure_explanation());
+                continue;
+            }
+            {
+                const verification::PrincipalCurvatures& r = *run.value;
                 double dh = 0, dk = 0;
                 int both = 0, worst = -1;
                 for (int i = 0; i < mesh.num_vertices(); ++i) {
@@ -90,8 +98,6 @@ int run_curvature(const CurvatureArgs& a) {
                 }
                 fmt::print("  {} ({}): on {} vertices max |H diff| {:.3e} (vertex {}), max |K diff| {:.3e}\n", ref->name(),
                            r.method, both, dh, worst, dk);
-            } catch (const std::exception& e) {
-                fmt::print("  {} refused the mesh: {}\n", ref->name(), e.what());
             }
         }
 

@@ -3,11 +3,13 @@
 
 #include <cstdlib>
 
+#include <chrono>
 #include <csignal>
 #include <thread>
 
 #include "crossdiv/verification/harness/isolate.h"
 #include "crossdiv/verification/harness/process.h"
+#include "crossdiv/verification/implementations/isolated_calls.h"
 
 namespace crossdiv::verification {
 namespace {
@@ -120,6 +122,77 @@ TEST(Isolate, ExitWithoutAnswerIsACrash) {
     const IsolatedTrace r = run_isolated([]() -> adapters::LevelTrace { std::_Exit(3); }, 30);
     EXPECT_EQ(r.outcome.status, RunStatus::Crashed);
     EXPECT_NE(r.outcome.message.find("exited with code 3"), std::string::npos) << r.outcome.message;
+}
+
+}  // namespace
+}  // namespace crossdiv::verification
+
+namespace crossdiv::verification {
+namespace {
+
+/// A library whose curvature estimator crashes, whose Hausdorff distance hangs and whose
+/// simplification refuses; its curvatures on a mesh of three vertices come back when asked
+/// with `honest`.
+class MisbehavingLibrary final : public Implementation {
+public:
+    explicit MisbehavingLibrary(bool honest)
+        : Implementation("misbehaving", "test", ImplementationKind::Library,
+                         {.schemes = {}, .curvatures = true, .hausdorff_distance = true, .simplification = true}),
+          honest_(honest) {}
+    PrincipalCurvatures curvatures(const TriMesh& m) const override {
+        if (!honest_) std::abort();
+        PrincipalCurvatures c{"made up", {1, 0, 1}, {1, 2, 3}, {-1, -2, -3}, {0, 0.5, 1}, {-1, -4, -9}, {}};
+        c.direction1 = {Vec3(1, 0, 0), Vec3::Zero(), Vec3(0, 0.6, 0.8)};
+        c.k1.resize(m.positions.size());
+        return c;
+    }
+    double hausdorff_distance(const TriMesh&, const TriMesh&) const override {
+        std::this_thread::sleep_for(std::chrono::seconds(30));
+        return 0;
+    }
+    TriMesh simplify(const TriMesh&, int) const override { throw adapters::Rejected("no edge can be collapsed"); }
+
+private:
+    bool honest_;
+};
+
+TriMesh one_triangle() {
+    TriMesh m;
+    m.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+    m.triangles = {{0, 1, 2}};
+    return m;
+}
+
+// The library calls besides refinement (curvature, Hausdorff distance, simplification) run
+// isolated: a crash, a hang and a refusal are outcomes, and the caller goes on.
+TEST(IsolatedCalls, ALibraryThatCrashesHangsOrRefusesIsAnOutcome) {
+    const MisbehavingLibrary lib(false);
+    const TriMesh m = one_triangle();
+    const IsolatedValue<PrincipalCurvatures> c = curvatures_isolated(lib, m);
+    EXPECT_EQ(c.outcome.status, RunStatus::Crashed) << c.outcome.summary();
+    EXPECT_NE(c.outcome.message.find("signal 6"), std::string::npos) << c.outcome.message;
+    EXPECT_FALSE(c.value);
+    const IsolatedValue<double> h = hausdorff_isolated(lib, m, m, 0.5);
+    EXPECT_EQ(h.outcome.status, RunStatus::Timeout);
+    EXPECT_FALSE(h.value);
+    const IsolatedValue<TriMesh> s = simplify_isolated(lib, m, 1);
+    EXPECT_EQ(s.outcome.status, RunStatus::Rejected);
+    EXPECT_EQ(s.outcome.message, "no edge can be collapsed");
+}
+
+TEST(IsolatedCalls, CurvaturesCrossTheProcessBoundaryIntact) {
+    const MisbehavingLibrary lib(true);
+    const TriMesh m = one_triangle();
+    const IsolatedValue<PrincipalCurvatures> c = curvatures_isolated(lib, m);
+    ASSERT_TRUE(c.value) << c.outcome.summary();
+    const PrincipalCurvatures want = lib.curvatures(m);
+    EXPECT_EQ(c.value->method, "made up");
+    EXPECT_EQ(c.value->estimated, want.estimated);
+    EXPECT_EQ(c.value->k1, want.k1);
+    EXPECT_EQ(c.value->k2, want.k2);
+    EXPECT_EQ(c.value->mean, want.mean);
+    EXPECT_EQ(c.value->gaussian, want.gaussian);
+    EXPECT_EQ(c.value->direction1, want.direction1);
 }
 
 }  // namespace

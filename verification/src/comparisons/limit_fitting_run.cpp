@@ -1,4 +1,5 @@
 #include "crossdiv/verification/comparisons/limit_fitting_run.h"
+#include "crossdiv/verification/implementations/isolated_calls.h"
 
 #include <fmt/format.h>
 
@@ -40,7 +41,11 @@ TriMesh coarse_control(const TriMesh& target, int edges, const Implementation& s
     } catch (const InputError& e) {
         throw InputError(std::string("the target cannot be simplified to a control mesh (--edges): ") + e.what());
     }
-    TriMesh control = simplifier.simplify(target, edges);
+    IsolatedValue<TriMesh> simplified = simplify_isolated(simplifier, target, edges);
+    if (!simplified.value)
+        throw InputError(simplifier.name() + " could not simplify the target to " + std::to_string(edges) +
+                         " edges: " + simplified.outcome.failure_explanation());
+    TriMesh control = std::move(*simplified.value);
     const TopologyType want = topology_type(target), got = topology_type(control);
     if (got != want)
         throw InputError(fmt::format("{}'s simplification to {} edges changed the topology: Euler characteristic {} and {} "
@@ -72,12 +77,14 @@ FittingRun run_fitting(Scheme scheme, const TriMesh& control, const TriMesh& tar
     run.result = fit_limit_surface(sampling, control.positions, target, {.iterations = iterations});
     if (hausdorff_reference) {
         run.hausdorff_by = hausdorff_reference->name();
-        try {
-            for (const FittingStep& step : run.result.steps)
-                run.hausdorff.push_back(hausdorff_reference->hausdorff_distance(sampling.surface(step.control), target));
-        } catch (const std::exception& e) {
-            run.hausdorff.clear();
-            run.hausdorff_error = e.what();
+        for (const FittingStep& step : run.result.steps) {
+            const IsolatedValue<double> d = hausdorff_isolated(*hausdorff_reference, sampling.surface(step.control), target);
+            if (!d.value) {
+                run.hausdorff.clear();
+                run.hausdorff_error = d.outcome.failure_explanation();
+                break;
+            }
+            run.hausdorff.push_back(*d.value);
         }
     }
     return run;

@@ -56,23 +56,11 @@ void settle_heap(int heap_fill) {
 #endif
 }
 
-// A minimal binary format for the child's answer: a status byte, a message, then the trace.
-template <class T>
-void put(FILE* f, const T& x) { std::fwrite(&x, sizeof x, 1, f); }
-template <class T>
-bool get(FILE* f, T& x) { return std::fread(&x, sizeof x, 1, f) == 1; }
-template <class T>
-void put_vector(FILE* f, const std::vector<T>& v) {
-    put(f, v.size());
-    if (!v.empty()) std::fwrite(v.data(), sizeof(T), v.size(), f);
-}
-template <class T>
-bool get_vector(FILE* f, std::vector<T>& v) {
-    size_t n = 0;
-    if (!get(f, n) || n > (size_t(1) << 34) / sizeof(T)) return false;
-    v.resize(n);
-    return n == 0 || std::fread(v.data(), sizeof(T), n, f) == n;
-}
+using detail::get;
+using detail::get_vector;
+using detail::put;
+using detail::put_vector;
+
 void put_string(FILE* f, const std::string& s) { put_vector(f, std::vector<char>(s.begin(), s.end())); }
 std::string get_string(FILE* f) {
     std::vector<char> v;
@@ -107,24 +95,6 @@ std::string one_line(std::string s) {
     for (char& c : s)
         if (c == '\n' || c == '\r') c = ' ';
     return s;
-}
-
-IsolatedTrace run_here(const std::function<adapters::LevelTrace()>& fn) {
-    IsolatedTrace r;
-    const auto t0 = Clock::now();
-    try {
-        r.trace = fn();
-    } catch (const adapters::Rejected& e) {
-        r.outcome = {RunStatus::Rejected, one_line(e.what()), 0};
-    } catch (const adapters::InvalidResult& e) {
-        r.outcome = {RunStatus::UnreadableOutput, one_line(e.what()), 0};
-    } catch (const ImplementationFailure& e) {
-        r.outcome = {e.status(), one_line(e.what()), 0};
-    } catch (const std::exception& e) {
-        r.outcome = {RunStatus::Threw, one_line(e.what()), 0};
-    }
-    r.outcome.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
-    return r;
 }
 
 /// The last few lines the child wrote to stderr, to explain a crash or a rejection.
@@ -173,15 +143,38 @@ std::string RunOutcome::summary() const {
     return std::string(to_string(status)) + ": " + message;
 }
 
-IsolatedTrace run_isolated(const std::function<adapters::LevelTrace()>& fn, double timeout_seconds, bool isolate,
-                           int heap_fill) {
-    if (!isolate) return run_here(fn);
-    FILE* result = std::tmpfile();
+namespace detail {
+
+RunOutcome outcome_of(const std::function<void()>& call) {
+    RunOutcome o;
+    const auto t0 = Clock::now();
+    try {
+        call();
+    } catch (const adapters::Rejected& e) {
+        o = {RunStatus::Rejected, one_line(e.what()), 0};
+    } catch (const adapters::InvalidResult& e) {
+        o = {RunStatus::UnreadableOutput, one_line(e.what()), 0};
+    } catch (const ImplementationFailure& e) {
+        o = {e.status(), one_line(e.what()), 0};
+    } catch (const std::exception& e) {
+        o = {RunStatus::Threw, one_line(e.what()), 0};
+    }
+    o.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    return o;
+}
+
+RunOutcome run_in_child(const std::function<void(FILE*)>& work, const std::function<bool(FILE*)>& read,
+                        const std::function<RunOutcome()>& here, double timeout_seconds, int heap_fill) {
+    FILE* answer = std::tmpfile();
+    FILE* header = std::tmpfile();
     FILE* errors = std::tmpfile();
-    if (!result || !errors) {
-        if (result) std::fclose(result);
-        if (errors) std::fclose(errors);
-        return run_here(fn);  // no temporary files: better unisolated than not at all
+    const auto close_all = [&] {
+        for (FILE* f : {answer, header, errors})
+            if (f) std::fclose(f);
+    };
+    if (!answer || !header || !errors) {
+        close_all();
+        return here();  // no temporary files: better unisolated than not at all
     }
     std::fflush(nullptr);
     const auto t0 = Clock::now();
@@ -195,19 +188,17 @@ IsolatedTrace run_isolated(const std::function<adapters::LevelTrace()>& fn, doub
         dup2(fileno(errors), STDERR_FILENO);
         limit_memory();
         settle_heap(heap_fill);
-        const IsolatedTrace r = run_here(fn);
-        put(result, static_cast<int>(r.outcome.status));
-        put_string(result, r.outcome.message);
-        if (r.trace) write_trace(result, *r.trace);
-        std::fflush(result);
+        const RunOutcome o = outcome_of([&] { work(answer); });
+        std::fflush(answer);
+        put(header, static_cast<int>(o.status));
+        put_string(header, o.message);
+        std::fflush(header);
         _exit(0);
     }
     if (hooks.in_parent) hooks.in_parent();
-    IsolatedTrace r;
     if (pid < 0) {
-        std::fclose(result);
-        std::fclose(errors);
-        return run_here(fn);
+        close_all();
+        return here();
     }
     const RegisteredChild registration(pid, ChildRole::Isolated);
     int status = 0;
@@ -224,37 +215,43 @@ IsolatedTrace run_isolated(const std::function<adapters::LevelTrace()>& fn, doub
         std::this_thread::sleep_for(pause);
         pause = std::min(pause * 2, std::chrono::microseconds(20000));
     }
-    r.outcome.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    RunOutcome o;
+    o.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     const std::string stderr_tail = tail_of(errors);
+    int code = -1;
+    std::rewind(header);
     if (timed_out) {
-        r.outcome.status = RunStatus::Timeout;
-        r.outcome.message = "no answer after " + std::to_string(timeout_seconds) + " s";
+        o.status = RunStatus::Timeout;
+        o.message = "no answer after " + std::to_string(timeout_seconds) + " s";
     } else if (WIFSIGNALED(status)) {
-        r.outcome.status = RunStatus::Crashed;
-        r.outcome.message = std::string("signal ") + std::to_string(WTERMSIG(status)) + " (" + strsignal(WTERMSIG(status)) + ")";
-        if (!stderr_tail.empty()) r.outcome.message += "; stderr: " + stderr_tail;
+        o.status = RunStatus::Crashed;
+        o.message = std::string("signal ") + std::to_string(WTERMSIG(status)) + " (" + strsignal(WTERMSIG(status)) + ")";
+        if (!stderr_tail.empty()) o.message += "; stderr: " + stderr_tail;
+    } else if (!get(header, code)) {
+        o.status = RunStatus::Crashed;
+        o.message = "exited with code " + std::to_string(WEXITSTATUS(status)) + " before answering";
+        if (!stderr_tail.empty()) o.message += "; stderr: " + stderr_tail;
     } else {
-        std::rewind(result);
-        int code = -1;
-        if (!get(result, code)) {
-            r.outcome.status = RunStatus::Crashed;
-            r.outcome.message = "exited with code " + std::to_string(WEXITSTATUS(status)) + " before answering";
-            if (!stderr_tail.empty()) r.outcome.message += "; stderr: " + stderr_tail;
-        } else {
-            r.outcome.status = static_cast<RunStatus>(code);
-            r.outcome.message = get_string(result);
-            if (r.outcome.status == RunStatus::Ok) {
-                adapters::LevelTrace trace;
-                if (read_trace(result, trace)) r.trace = std::move(trace);
-                else r.outcome = {RunStatus::Crashed, "answer truncated", r.outcome.seconds};
-            } else if (!stderr_tail.empty()) {
-                r.outcome.message += " (stderr: " + stderr_tail + ")";
-            }
+        o.status = static_cast<RunStatus>(code);
+        o.message = get_string(header);
+        if (o.status == RunStatus::Ok) {
+            std::rewind(answer);
+            if (!read(answer)) o = {RunStatus::Crashed, "answer truncated", o.seconds};
+        } else if (!stderr_tail.empty()) {
+            o.message += " (stderr: " + stderr_tail + ")";
         }
     }
-    std::fclose(result);
-    std::fclose(errors);
-    return r;
+    close_all();
+    return o;
+}
+
+}  // namespace detail
+
+IsolatedTrace run_isolated(const std::function<adapters::LevelTrace()>& fn, double timeout_seconds, bool isolate,
+                           int heap_fill) {
+    IsolatedValue<adapters::LevelTrace> v =
+        run_isolated_value<adapters::LevelTrace>(fn, write_trace, read_trace, timeout_seconds, isolate, heap_fill);
+    return {v.outcome, std::move(v.value)};
 }
 
 }  // namespace crossdiv::verification

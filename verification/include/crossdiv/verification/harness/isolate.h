@@ -3,10 +3,12 @@
 /// Runs a reference library in a child process with a time limit, so that a crash, an abort,
 /// a hang or an exception in the library is recorded and the run goes on.
 
+#include <cstdio>
 #include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "crossdiv/adapters/reference.h"
 #include "crossdiv/verification/harness/verdict.h"
@@ -126,6 +128,68 @@ struct ForkHooks {
 };
 /// Sets the hooks of every later run_isolated in this process.
 void set_fork_hooks(const ForkHooks& hooks);
+
+/// The outcome of a call run in an isolated child and, when it is Ok, the value it returned.
+template <class T>
+struct IsolatedValue {
+    RunOutcome outcome;
+    std::optional<T> value;
+};
+
+namespace detail {
+// The child's answer as raw bytes: trivially copyable values and vectors of them.
+template <class T>
+void put(FILE* f, const T& x) { std::fwrite(&x, sizeof x, 1, f); }
+template <class T>
+bool get(FILE* f, T& x) { return std::fread(&x, sizeof x, 1, f) == 1; }
+template <class T>
+void put_vector(FILE* f, const std::vector<T>& v) {
+    put(f, v.size());
+    if (!v.empty()) std::fwrite(v.data(), sizeof(T), v.size(), f);
+}
+template <class T>
+bool get_vector(FILE* f, std::vector<T>& v) {
+    size_t n = 0;
+    if (!get(f, n) || n > (size_t(1) << 34) / sizeof(T)) return false;
+    v.resize(n);
+    return n == 0 || std::fread(v.data(), sizeof(T), n, f) == n;
+}
+
+/// `call`'s outcome: Ok, or the status its exception names (adapters::Rejected: Rejected,
+/// adapters::InvalidResult: UnreadableOutput, ImplementationFailure: its own, any other: Threw),
+/// the message on one line; with its wall time.
+RunOutcome outcome_of(const std::function<void()>& call);
+
+/// Forks; the child runs `work`, which calls the library and writes its value to the file it is
+/// given, under the time and memory limits and the heap fill; the parent reads the value back
+/// with `read` when the child's outcome is Ok. `here` runs the call in this process instead when
+/// no child can be made (no temporary file, fork fails).
+RunOutcome run_in_child(const std::function<void(FILE*)>& work, const std::function<bool(FILE*)>& read,
+                        const std::function<RunOutcome()>& here, double timeout_seconds, int heap_fill);
+}  // namespace detail
+
+/// `fn` in a forked child as run_isolated runs a refinement, for any value that `write` and
+/// `read` ship through a file (detail::put_vector and friends). With `isolate` false it runs here.
+template <class T>
+IsolatedValue<T> run_isolated_value(const std::function<T()>& fn, void (*write)(FILE*, const T&), bool (*read)(FILE*, T&),
+                                    double timeout_seconds, bool isolate = true, int heap_fill = kHeapFill) {
+    IsolatedValue<T> r;
+    const auto here = [&] { return detail::outcome_of([&] { r.value = fn(); }); };
+    if (!isolate) {
+        r.outcome = here();
+        return r;
+    }
+    r.outcome = detail::run_in_child([&](FILE* f) { write(f, fn()); },
+                                     [&](FILE* f) {
+                                         T v;
+                                         if (!read(f, v)) return false;
+                                         r.value = std::move(v);
+                                         return true;
+                                     },
+                                     here, timeout_seconds, heap_fill);
+    if (r.outcome.status != RunStatus::Ok) r.value.reset();
+    return r;
+}
 
 /// Runs `fn` in a forked child with a time limit of `timeout_seconds`, a memory limit of
 /// kIsolatedMemoryBytes and its heap filled with `heap_fill`, and ships its result back through
