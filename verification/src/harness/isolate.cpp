@@ -43,7 +43,9 @@ void limit_memory() {
 /// filling them, so those chunks, freed before the fork and holding the parent's data, are
 /// taken first and kept (the child ends by _exit). The address sanitizer's allocator replaces
 /// malloc's and fills on its own.
+#ifndef CROSSDIV_ADDRESS_SANITIZER
 void* taken_chunks[65 * 7];  // settle_heap's; at namespace scope, so that the allocations stay
+#endif
 
 void settle_heap(int heap_fill) {
 #ifndef CROSSDIV_ADDRESS_SANITIZER
