@@ -53,8 +53,10 @@ def run(argv, cwd, timeout=None, log=None):
 
 
 def copy_tree(work):
-    """The tracked files of SOURCE into `work`, as they are on disk; files that did not change
-    keep their time stamps there, so the build stays incremental between runs."""
+    """The tracked files of SOURCE into `work`, as they are on disk. Files that did not change
+    keep their time stamps there, so the build stays incremental between runs; a copied file is
+    stamped now (not with its time in SOURCE), so that a file an interrupted run left mutated,
+    and built, is rebuilt restored."""
     listed = subprocess.run(["git", "-C", SOURCE, "ls-files", "-z"], check=True, capture_output=True).stdout
     for name in filter(None, listed.decode().split("\0")):
         src, dst = os.path.join(SOURCE, name), os.path.join(work, name)
@@ -63,7 +65,8 @@ def copy_tree(work):
         if os.path.isfile(dst) and open(src, "rb").read() == open(dst, "rb").read():
             continue
         os.makedirs(os.path.dirname(dst), exist_ok=True)
-        shutil.copy2(src, dst)
+        shutil.copyfile(src, dst)
+        shutil.copymode(src, dst)
 
 
 def build(work, targets, log):
@@ -76,12 +79,17 @@ def build(work, targets, log):
     return status == 0
 
 
-def suite_for(operations, work, path):
-    """The default suite with only the case lines of `operations` (the third word of a case line)."""
+def suite_for(operations, work, path, dropped=()):
+    """The default suite with only the case lines of `operations` (the third word of a case line),
+    without the `reference` statements of `dropped` and the cases only they run."""
     kept = []
     for line in open(os.path.join(work, DEFAULT_SUITE)):
         words = line.split()
         if words and words[0] == "case" and (len(words) < 3 or words[2] not in operations):
+            continue
+        if words and words[0] == "reference" and len(words) > 1 and words[1] in dropped:
+            continue
+        if words and words[0] == "case" and any(w.startswith("against=") and w[len("against="):] in dropped for w in words):
             continue
         kept.append(line)
     with open(path, "w") as f:
@@ -106,10 +114,10 @@ def failed_checks(results_path, limit=3):
     return found[:limit] + ([f"... {len(found) - limit} more"] if len(found) > limit else [])
 
 
-def run_suite(work, operations, out, jobs):
+def run_suite(work, operations, out, jobs, dropped=()):
     manifest = os.path.join(out, "mutant.suite")
     os.makedirs(out, exist_ok=True)
-    cases = suite_for(operations, work, manifest)
+    cases = suite_for(operations, work, manifest, dropped)
     crossdiv = os.path.join(work, "build", "verification", "crossdiv")
     status, seconds = run([crossdiv, "suite", manifest, "--out", os.path.join(out, "suite"), "--no-report", "--jobs", str(jobs)],
                           work, timeout=SUITE_TIMEOUT, log=os.path.join(out, "suite.log"))
@@ -120,9 +128,12 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--work", default=os.path.join(tempfile.gettempdir(), "crossdiv-mutation"),
                         help="the copy of the tree and its build (kept between runs)")
-    parser.add_argument("--only", default="", help="comma-separated mutant ids (default: all)")
+    parser.add_argument("--only", default="", help="comma-separated mutant ids, run in that order (default: all)")
     parser.add_argument("--jobs", type=int, default=2, help="suite worker processes")
     parser.add_argument("--no-unit-tests", action="store_true", help="do not run ctest for survivors")
+    parser.add_argument("--drop-reference", action="append", default=[], metavar="NAME",
+                        help="leave out a slow external reference (meshlab: about 3 minutes of every Loop run) at first; "
+                             "a mutant that survives without it is run again with the whole suite before it is called a survivor")
     parser.add_argument("--results", default=os.path.join(SOURCE, "reports", "mutation-results.json"))
     parser.add_argument("--markdown", default=os.path.join(SOURCE, "reports", "mutation.md"))
     args = parser.parse_args()
@@ -134,7 +145,8 @@ def main():
         if unknown:
             print(f"unknown mutant id(s): {', '.join(unknown)}", file=sys.stderr)
             return 2
-        catalogue = [m for m in catalogue if m["id"] in wanted]
+        by_id = {m["id"]: m for m in catalogue}
+        catalogue = [by_id[w] for w in wanted]  # in the order given
     work = os.path.abspath(args.work)
     os.makedirs(work, exist_ok=True)
     logs = os.path.join(work, "mutation-logs")
@@ -149,7 +161,7 @@ def main():
         if not build(work, ["crossdiv"], os.path.join(logs, "baseline-build.log")):
             raise Failure(f"the unmutated tree does not build (see {logs}/baseline-build.log)")
         operations = sorted({op for m in catalogue for op in m["operations"]})
-        status, seconds, cases = run_suite(work, operations, os.path.join(logs, "baseline"), args.jobs)
+        status, seconds, cases = run_suite(work, operations, os.path.join(logs, "baseline"), args.jobs, args.drop_reference)
         if status != 0:
             raise Failure(f"the unmutated suite fails on {', '.join(operations)} (exit {status}): "
                           + "; ".join(failed_checks(os.path.join(logs, "baseline", "suite", "results.json"))))
@@ -173,7 +185,10 @@ def main():
             if not build(work, ["crossdiv"], os.path.join(out, "build.log")):
                 row.update(verdict="does-not-build", caught_by=[])
             else:
-                status, seconds, cases = run_suite(work, m["operations"], out, args.jobs)
+                status, seconds, cases = run_suite(work, m["operations"], out, args.jobs, args.drop_reference)
+                if status == 0 and args.drop_reference:  # survived the reduced suite: the whole one decides
+                    status, more, cases = run_suite(work, m["operations"], out, args.jobs)
+                    seconds += more
                 row["suite_seconds"] = round(seconds, 1)
                 if status is None:
                     row.update(verdict="caught", caught_by=[f"the suite did not finish in {SUITE_TIMEOUT} s (core hangs)"])
@@ -206,7 +221,9 @@ def main():
                 "mutant applied alone to a copy of the tree, crossdiv rebuilt, and the default suite's cases of its\n"
                 "operations run; caught when the suite fails. Survivors are also run against the unit tests.\n\n")
         f.write(f"Last run: {summary['mutants']} mutants, {caught} caught by the suite, {len(survived)} survived, "
-                f"{summary['not_building']} not building; {summary['minutes']} minutes on this machine.\n\n")
+                f"{summary['not_building']} not building; {summary['minutes']} minutes on this machine"
+                + (f" (first without {', '.join(args.drop_reference)}; survivors again with the whole suite)" if args.drop_reference else "")
+                + ".\n\n")
         f.write("| mutant | file | what it breaks | suite | caught by (first failures) |\n| --- | --- | --- | --- | --- |\n")
         for r in rows:
             verdict = r["verdict"] + (f" (unit tests: {r['unit_tests']})" if "unit_tests" in r else "")

@@ -310,6 +310,30 @@ TEST(Suite, ACoreRefusalFailsUnlessTheCaseDeclaresIt) {
     EXPECT_THROW(read_manifest(write(d / "bad.suite", "suite m\ncase edgecase:bowtie sqrt3 refuses=rounding\n")), ParseError);
 }
 
+// An input core refuses before any reference runs (a file that does not read, a curve file
+// whose checks all vanish with it) fails the suite too, unless the case declares it with
+// refuses=invalid-input-handling.
+TEST(Suite, ACaseWhoseInputCoreRefusesBeforeAnyRunFailsUnlessDeclared) {
+    const fs::path d = temp_dir("refused-input");
+    const std::string broken = write(d / "broken.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
+    const Manifest m = read_manifest(write(d / "m.suite", "suite m\ncase " + broken + " loop levels=1\ncase " + broken +
+                                                              " loop levels=1 refuses=invalid-input-handling\n"));
+    const std::vector<CaseRecord> recs = run_jobs(expand_jobs(m), 1, d.string(), [](int, int, const CaseRecord&) {});
+    ASSERT_EQ(recs.size(), 2u);
+    ASSERT_TRUE(recs[0].runs.empty());
+    EXPECT_EQ(outcome_label(recs[0]), "ours-rejected (unexplained)");
+    EXPECT_TRUE(is_failure(recs[0]));
+    EXPECT_NE(recs[0].core_error.find("broken.obj:4"), std::string::npos) << recs[0].core_error;
+    EXPECT_NE(recs[0].core_error.find("a refusal the case does not declare expected"), std::string::npos) << recs[0].core_error;
+    EXPECT_EQ(outcome_label(recs[1]), "ours-rejected (invalid-input-handling)");
+    EXPECT_FALSE(is_failure(recs[1]));
+    const SuiteSummary s = summarize(recs);
+    EXPECT_EQ(s.failures, 1);
+    // The class survives a round trip through results.json (a merge reads it back).
+    EXPECT_EQ(case_record_from_json(to_json(recs[1])).refusal, DivergenceClass::InvalidInputHandling);
+    EXPECT_EQ(case_record_from_json(to_json(recs[0])).refusal, DivergenceClass::Unexplained);
+}
+
 TEST(Suite, AJobPastMaxFacesIsRefusedBeforeAnyWorkAndTheOthersRun) {
     // The tetrahedron makes 4 * 4^2 = 64 faces at level 2, the octahedron 128: a limit of
     // 100 refuses the second alone, with the count, and every output is still written.
@@ -321,7 +345,8 @@ TEST(Suite, AJobPastMaxFacesIsRefusedBeforeAnyWorkAndTheOthersRun) {
     ASSERT_EQ(recs.size(), 2u);
     EXPECT_EQ(recs[0].core_error, "");
     for (const RunRecord& r : recs[0].runs) EXPECT_EQ(outcome_label(recs[0], r), "agree");
-    EXPECT_EQ(outcome_label(recs[1]), "ours-rejected");
+    EXPECT_EQ(outcome_label(recs[1]), "ours-rejected");  // the manifest's own limit: not a failure
+    EXPECT_FALSE(is_failure(recs[1]));
     EXPECT_EQ(recs[1].core_error, "bundled:octahedron: 2 levels would produce 128 faces, over the limit of 100 "
                                   "(the manifest's max-faces); use fewer levels or raise the limit");
     write_suite_outputs((d / "out").string(), {{"tool", "crossdiv suite"}, {"suite", "m"}}, recs);

@@ -22,7 +22,7 @@ long long refined_face_count(const PolyMesh& mesh, Scheme scheme, int levels) {
 void require_refined_size(long long faces, long long limit, int levels, const std::string& name,
                           const std::string& limit_option) {
     if (faces <= limit) return;
-    throw InputError(name + ": " + std::to_string(levels) + " levels would produce " + std::to_string(faces) +
+    throw OverSizeLimit(name + ": " + std::to_string(levels) + " levels would produce " + std::to_string(faces) +
                      " faces, over the limit of " + std::to_string(limit) + " (" + limit_option +
                      "); use fewer levels or raise the limit");
 }

@@ -94,9 +94,13 @@ std::string RunRecord::label() const { return is_check() ? subject + " " + check
 
 std::string outcome_label(const CaseRecord& c, const RunRecord& r) { return c.ours_failed ? "ours-failed" : to_string(r.outcome); }
 
-std::string outcome_label(const CaseRecord& c) { return c.ours_failed ? "ours-failed" : "ours-rejected"; }
+std::string outcome_label(const CaseRecord& c) {
+    return c.ours_failed ? "ours-failed" : to_string(Outcome{Verdict::OursRejected, c.refusal});
+}
 
 bool is_failure(const CaseRecord& c, const RunRecord& r) { return c.ours_failed || r.outcome.is_failure(); }
+
+bool is_failure(const CaseRecord& c) { return c.ours_failed || Outcome{Verdict::OursRejected, c.refusal}.is_failure(); }
 
 CaseRecord case_record(const RefinementComparison& comparison) {
     CaseRecord c;
@@ -172,6 +176,7 @@ json to_json(const CaseRecord& c) {
     if (std::isfinite(c.core_seconds)) j["core_seconds"] = c.core_seconds;
     if (!c.core_error.empty() || j.contains("core_error")) j["core_error"] = c.core_error;
     if (c.ours_failed) j["ours_failed"] = true;
+    if (c.runs.empty() && !c.ours_failed) j["refusal_class"] = to_string(c.refusal);
     j["job"] = c.job;
     j["id"] = c.id;
     j["manifest_line"] = c.manifest_line;
@@ -234,6 +239,7 @@ CaseRecord case_record_from_json(const json& j) {
         c.core_seconds = number(j, "core_seconds");
         c.core_error = text(j, "core_error");
         c.ours_failed = j.value("ours_failed", false);
+        if (j.contains("refusal_class")) c.refusal = divergence_class_from_string(text(j, "refusal_class"));
         for (const json& r : j["runs"]) c.runs.push_back(run_from_json(r));
     } catch (const json::exception& e) {
         throw InputError(std::string("a case record has a field of the wrong type: ") + e.what());

@@ -137,7 +137,7 @@ std::string junit(const std::string& suite, const std::vector<CaseRecord>& cases
                          << "</failure>\n";
                 body << "      <system-out>" << xml_escape(outcome + ": " + text) << "</system-out>\n    </testcase>\n";
             };
-            if (c.runs.empty()) testcase("core", outcome_label(c), c.ours_failed, c.core_error, 0.0);
+            if (c.runs.empty()) testcase("core", outcome_label(c), is_failure(c), c.core_error, 0.0);
             for (const RunRecord& r : c.runs)
                 testcase(r.label(), outcome_label(c, r), is_failure(c, r),
                          r.is_check() ? fmt_measured(r) + "; " + r.explanation : r.explanation, r.seconds);
@@ -172,7 +172,7 @@ SuiteSummary summarize(const std::vector<CaseRecord>& cases) {
     for (const CaseRecord& c : cases) {
         if (c.runs.empty()) {
             ++s.outcomes[outcome_label(c)];
-            s.failures += c.ours_failed;
+            s.failures += is_failure(c);
             ++s.runs;
         }
         for (const RunRecord& r : c.runs) {

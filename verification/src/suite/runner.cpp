@@ -18,6 +18,7 @@
 #include "crossdiv/verification/suite/operations.h"
 #include "crossdiv/verification/harness/appended_lines.h"
 #include "crossdiv/verification/harness/json_text.h"
+#include "crossdiv/verification/implementations/output_size.h"
 
 namespace crossdiv::verification {
 namespace {
@@ -54,9 +55,19 @@ CaseRecord run_job(const SuiteJob& job, const std::string& out_dir) {
     CaseRecord c;
     try {
         c = job.entry->operation->run(job, out_dir);
-    } catch (const InputError& e) {
-        // A file core refuses: recorded, not a failure of ours; nothing to hand the references either.
+    } catch (const OverSizeLimit& e) {
+        // Past the manifest's max-faces: not run, by the manifest's own word.
         c = failed_job(job, e.what(), false);
+        c.refusal = DivergenceClass::None;
+    } catch (const InputError& e) {
+        // An input core refuses, with nothing to hand the references either: a failure unless the
+        // case declares the refusal (a check's file that no longer reads would take its checks with it).
+        c = failed_job(job, e.what(), false);
+        const std::vector<DivergenceClass>& declared = job.entry->request.expected_refusals;
+        if (std::find(declared.begin(), declared.end(), DivergenceClass::InvalidInputHandling) != declared.end())
+            c.refusal = DivergenceClass::InvalidInputHandling;
+        else
+            c.core_error += "; a refusal the case does not declare expected (refuses=invalid-input-handling)";
     } catch (const std::exception& e) {
         c = failed_job(job, std::string("internal error: ") + e.what(), true);
     }

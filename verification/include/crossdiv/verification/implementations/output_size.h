@@ -7,10 +7,18 @@
 
 #include <string>
 
+#include "crossdiv/error.h"
 #include "crossdiv/mesh/poly_mesh.h"
 #include "crossdiv/verification/implementations/scheme.h"
 
 namespace crossdiv::verification {
+
+/// A refinement refused for its size before any work: the limit the caller set (a suite's
+/// max-faces, a command's option), not a refusal of the input by core.
+class OverSizeLimit : public InputError {
+public:
+    using InputError::InputError;
+};
 
 /// Default face limit of one implementation refining alone (`crossdiv subdivide`): core
 /// keeps every level, about 90 bytes per final face (measured: a tetrahedron at 12 Loop

@@ -57,6 +57,10 @@ struct CaseRecord {
     double core_seconds = NAN;
     std::string core_error;    ///< core refused the input (the message)
     bool ours_failed = false;  ///< core crashed or threw internally: a failure of ours
+    /// For a case without runs whose input core refused: the input handling the case declares
+    /// that refusal as (refuses=invalid-input-handling), else Unexplained, a failure: a file
+    /// core used to take, and now refuses, must not pass with its checks gone.
+    DivergenceClass refusal = DivergenceClass::Unexplained;
     std::vector<RunRecord> runs;
     /// The rest of the record as the operation reports it (tables, topology, worst vertex).
     nlohmann::json detail = nlohmann::json::object();
@@ -69,10 +73,13 @@ struct CaseRecord {
 long long whole_number_field(const nlohmann::json& j, const char* key, long long fallback, long long lo, long long hi);
 
 std::string outcome_label(const CaseRecord& c, const RunRecord& r);
-/// The label of a case without runs: "ours-failed" or "ours-rejected".
+/// The label of a case without runs: "ours-failed" or "ours-rejected (<refusal class>)".
 std::string outcome_label(const CaseRecord& c);
 /// Whether a run counts as a failure (JUnit, exit status): core failed, or it diverges unexplained.
 bool is_failure(const CaseRecord& c, const RunRecord& r);
+/// Whether a case without runs counts as a failure: core failed, or refused an input the case
+/// does not declare refused.
+bool is_failure(const CaseRecord& c);
 
 /// A comparison as a case under the operation named after its scheme (the job's identity is
 /// filled in by the runner).
