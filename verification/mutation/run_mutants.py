@@ -124,6 +124,33 @@ def run_suite(work, operations, out, jobs, dropped=()):
     return status, seconds, cases
 
 
+def write_results(rows, planned, minutes, args):
+    """results JSON and the Markdown table; written after every mutant, so that an interrupted run
+    keeps what it measured."""
+    caught = sum(r["verdict"] == "caught" for r in rows)
+    survived = [r for r in rows if r["verdict"] == "survived"]
+    summary = {"mutants": len(rows), "planned": planned, "caught": caught, "survived": len(survived),
+               "not_building": sum(r["verdict"] == "does-not-build" for r in rows), "minutes": round(minutes, 1),
+               "dropped_references": args.drop_reference}
+    json.dump({"summary": summary, "mutants": rows}, open(args.results, "w"), indent=1)
+    with open(args.markdown, "w") as f:
+        f.write("# Mutation testing of core\n\n")
+        f.write("Written by `verification/mutation/run_mutants.py` from `verification/mutation/catalogue.json`: each\n"
+                "mutant applied alone to a copy of the tree, crossdiv rebuilt, and the default suite's cases of its\n"
+                "operations run; caught when the suite fails. Survivors are also run against the unit tests.\n\n")
+        f.write(f"Last run: {len(rows)} of {planned} mutants ({'complete' if len(rows) == planned else 'interrupted'}), "
+                f"{caught} caught by the suite, {len(survived)} survived, {summary['not_building']} not building; "
+                f"{summary['minutes']} minutes on this machine"
+                + (f" (first without {', '.join(args.drop_reference)}; survivors again with the whole suite)" if args.drop_reference else "")
+                + ".\n\n")
+        f.write("| mutant | file | what it breaks | suite | caught by (first failures) |\n| --- | --- | --- | --- | --- |\n")
+        for r in rows:
+            verdict = r["verdict"] + (f" (unit tests: {r['unit_tests']})" if "unit_tests" in r else "")
+            by = "; ".join(r["caught_by"]).replace("|", "\\|")
+            f.write(f"| {r['id']} | {r['file']} | {r['why']} | {verdict} | {by} |\n")
+    return caught, survived, summary
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--work", default=os.path.join(tempfile.gettempdir(), "crossdiv-mutation"),
@@ -208,27 +235,10 @@ def main():
         row["seconds"] = round(time.monotonic() - t0, 1)
         rows.append(row)
         print(f"{m['id']:40} {row['verdict']:15} {row['seconds']:7.0f} s  {(row['caught_by'] or [''])[0]}", flush=True)
+        write_results(rows, len(catalogue), (time.monotonic() - started) / 60, args)
 
-    caught = sum(r["verdict"] == "caught" for r in rows)
-    survived = [r for r in rows if r["verdict"] == "survived"]
-    total_minutes = (time.monotonic() - started) / 60
-    summary = {"mutants": len(rows), "caught": caught, "survived": len(survived),
-               "not_building": sum(r["verdict"] == "does-not-build" for r in rows), "minutes": round(total_minutes, 1)}
-    json.dump({"summary": summary, "mutants": rows}, open(args.results, "w"), indent=1)
-    with open(args.markdown, "w") as f:
-        f.write("# Mutation testing of core\n\n")
-        f.write("Written by `verification/mutation/run_mutants.py` from `verification/mutation/catalogue.json`: each\n"
-                "mutant applied alone to a copy of the tree, crossdiv rebuilt, and the default suite's cases of its\n"
-                "operations run; caught when the suite fails. Survivors are also run against the unit tests.\n\n")
-        f.write(f"Last run: {summary['mutants']} mutants, {caught} caught by the suite, {len(survived)} survived, "
-                f"{summary['not_building']} not building; {summary['minutes']} minutes on this machine"
-                + (f" (first without {', '.join(args.drop_reference)}; survivors again with the whole suite)" if args.drop_reference else "")
-                + ".\n\n")
-        f.write("| mutant | file | what it breaks | suite | caught by (first failures) |\n| --- | --- | --- | --- | --- |\n")
-        for r in rows:
-            verdict = r["verdict"] + (f" (unit tests: {r['unit_tests']})" if "unit_tests" in r else "")
-            by = "; ".join(r["caught_by"]).replace("|", "\\|")
-            f.write(f"| {r['id']} | {r['file']} | {r['why']} | {verdict} | {by} |\n")
+    caught, survived, summary = write_results(rows, len(catalogue), (time.monotonic() - started) / 60, args)
+    total_minutes = summary["minutes"]
     print(f"{caught} of {len(rows)} caught by the suite; {len(survived)} survived"
           + (f": {', '.join(r['id'] for r in survived)}" if survived else "") + f" ({total_minutes:.0f} min)")
     return 0 if not survived and summary["not_building"] == 0 else 1
