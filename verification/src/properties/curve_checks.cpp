@@ -589,6 +589,11 @@ CheckReport check_curve_file(const CurveFile& file, const std::string& input) {
         for (const TessellationRow& row : rows) {
             out.add(label, "distance-mode", "analytic", row.distance_dev, row.tol, "abs",
                     "measured deviation of the distance-adaptive polyline (" + std::to_string(row.distance_edges) + " edges)");
+            if (row.optimal_edges > 0)
+                out.add(label, "distance-mode-edges", "flattening estimate", row.distance_edges / row.optimal_edges,
+                        tolerances::kDistanceModeEdgesOverOptimal, "ratio",
+                        std::to_string(row.distance_edges) + " edges over N* = " + std::to_string(row.optimal_edges) +
+                            ", the fewest any polyline within the tolerance needs");
             out.add(label, "wang-bound", "analytic", row.wang_dev, row.tol, "abs",
                     "measured deviation with Wang's per-segment counts (" + std::to_string(row.wang_edges) + " edges)");
             tess.push_back({{"curve", row.curve}, {"tol", row.tol}, {"uniform_edges", row.uniform_edges},
