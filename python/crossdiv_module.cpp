@@ -27,6 +27,7 @@
 #include "crossdiv/verification/implementations/refine_or_throw.h"
 #include "crossdiv/verification/implementations/output_size.h"
 #include "crossdiv/verification/implementations/registry.h"
+#include "crossdiv/verification/implementations/tag_rules.h"
 
 namespace py = pybind11;
 using namespace crossdiv;
@@ -108,6 +109,49 @@ py::array_t<double, py::array::c_style | py::array::forcecast> positions_of(cons
     return d;
 }
 
+/// The faces of F (an m x k integer array, or a sequence of index sequences), each handed to
+/// `add` as indices checked against `count` targets. `what` names the argument ("F", "FUV"),
+/// `element` what its indices name ("vertex", "texture coordinate") in messages.
+template <class Add>
+void read_faces(const py::object& F, long long count, const char* what, const char* element, const char* targets,
+                const Add& add_face) {
+    std::vector<long long> corners;
+    std::vector<int> face;
+    const auto add = [&](size_t f) {
+        if (corners.size() < 3) throw InputError(std::string(what) + " face " + std::to_string(f) + " has fewer than 3 corners");
+        face.clear();
+        for (size_t c = 0; c < corners.size(); ++c) {
+            if (corners[c] < 0 || corners[c] >= count)
+                throw InputError(std::string(what) + " face " + std::to_string(f) + " corner " + std::to_string(c) + ": " +
+                                 element + " " + std::to_string(corners[c]) + " is not in " + targets + " (" +
+                                 std::to_string(count) + " rows)");
+            face.push_back(static_cast<int>(corners[c]));
+        }
+        add_face(face);
+    };
+    if (py::isinstance<py::array>(F) && py::array(F).ndim() == 2) {
+        const py::array array(F);
+        const char kind = array.dtype().kind();
+        if (kind == 'i' || kind == 'u') {
+            const auto faces = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(F);
+            if (!faces) throw InputError(std::string(what) + " must be an array of integer indices");
+            const auto f = faces.unchecked<2>();
+            for (py::ssize_t i = 0; i < faces.shape(0); ++i) {
+                corners.assign(f.data(i, 0), f.data(i, 0) + faces.shape(1));
+                add(static_cast<size_t>(i));
+            }
+            return;
+        }
+        // Any other dtype (floats, bools, strings, objects): index by index, as a sequence.
+    }
+    size_t i = 0;
+    for (const py::handle row : F) {
+        corners.clear();
+        for (const py::handle index : row) corners.push_back(vertex_index(index, i, corners.size()));
+        add(i++);
+    }
+}
+
 /// A mesh from V (n x 3, any real dtype) and F (an m x k integer array, or a sequence of
 /// index sequences). @throws InputError naming the face and corner of an index out of range,
 /// or a non-finite coordinate.
@@ -129,42 +173,63 @@ PolyMesh mesh_from(const py::object& V_given, const py::object& F) {
         if (!mesh.positions[i].allFinite()) throw InputError("V row " + std::to_string(i) + " is not finite");
     }
     // Indices are checked as read (any integer width), before they become the mesh's ints.
-    std::vector<long long> corners;
-    std::vector<int> face;
-    const auto add = [&](size_t f) {
-        if (corners.size() < 3) throw InputError("F face " + std::to_string(f) + " has fewer than 3 corners");
-        face.clear();
-        for (size_t c = 0; c < corners.size(); ++c) {
-            if (corners[c] < 0 || corners[c] >= mesh.num_vertices())
-                throw InputError("F face " + std::to_string(f) + " corner " + std::to_string(c) + ": vertex " +
-                                 std::to_string(corners[c]) + " is not in V (" + std::to_string(mesh.num_vertices()) +
-                                 " vertices)");
-            face.push_back(static_cast<int>(corners[c]));
-        }
-        mesh.add_face(face);
-    };
-    if (py::isinstance<py::array>(F) && py::array(F).ndim() == 2) {
-        const py::array array(F);
-        const char kind = array.dtype().kind();
-        if (kind == 'i' || kind == 'u') {
-            const auto faces = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(F);
-            if (!faces) throw InputError("F must be an array of integer vertex indices");
-            const auto f = faces.unchecked<2>();
-            for (py::ssize_t i = 0; i < faces.shape(0); ++i) {
-                corners.assign(f.data(i, 0), f.data(i, 0) + faces.shape(1));
-                add(static_cast<size_t>(i));
-            }
-            return mesh;
-        }
-        // Any other dtype (floats, bools, strings, objects): index by index, as a sequence.
-    }
-    size_t i = 0;
-    for (const py::handle row : F) {
-        corners.clear();
-        for (const py::handle index : row) corners.push_back(vertex_index(index, i, corners.size()));
-        add(i++);
-    }
+    read_faces(F, mesh.num_vertices(), "F", "vertex", "V", [&](const std::vector<int>& face) { mesh.add_face(face); });
     return mesh;
+}
+
+/// `mesh` with the face-varying channel of UV (n x d values, d >= 1, any real dtype) and FUV
+/// (its faces: one index into UV per corner of the matching face of F).
+/// @throws InputError for values that are not finite real numbers, or an FUV whose faces do not
+///         match F's in number and size, or an index out of range.
+void add_channel(PolyMesh& mesh, const py::object& UV_given, const py::object& FUV) {
+    const auto UV = positions_of(UV_given);  // the same checks as V: real numbers, converted to float64
+    if (UV.ndim() != 2 || UV.shape(1) < 1) throw InputError("UV must be an n x d array of values (d >= 1)");
+    FaceVaryingChannel ch;
+    ch.dimension = static_cast<int>(UV.shape(1));
+    const auto u = UV.unchecked<2>();
+    for (py::ssize_t i = 0; i < UV.shape(0); ++i)
+        for (py::ssize_t k = 0; k < UV.shape(1); ++k) {
+            if (!std::isfinite(u(i, k))) throw InputError("UV row " + std::to_string(i) + " is not finite");
+            ch.values.push_back(u(i, k));
+        }
+    int f = 0;
+    read_faces(FUV, UV.shape(0), "FUV", "texture coordinate", "UV", [&](const std::vector<int>& face) {
+        if (f >= mesh.num_faces() || mesh.face_size(f) != static_cast<int>(face.size()))
+            throw InputError("FUV face " + std::to_string(f) + " has " + std::to_string(face.size()) + " corners where F " +
+                             (f >= mesh.num_faces() ? std::string("has no such face")
+                                                    : "face " + std::to_string(f) + " has " + std::to_string(mesh.face_size(f))));
+        ch.corner_values.insert(ch.corner_values.end(), face.begin(), face.end());
+        ++f;
+    });
+    if (f != mesh.num_faces())
+        throw InputError("FUV has " + std::to_string(f) + " faces where F has " + std::to_string(mesh.num_faces()));
+    mesh.face_varying = {std::move(ch)};
+}
+
+/// `mesh` given the channel of UV and FUV when they are given (both or neither), and the rule
+/// it is refined under: `fvar` (a FaceVaryingRule name). Nothing without UV.
+/// @throws InputError as add_channel, for one of UV and FUV alone, an unknown rule, or a scheme
+///         without face-varying rules.
+std::optional<FaceVaryingRule> with_channel(PolyMesh& mesh, Scheme scheme, const py::object& UV, const py::object& FUV,
+                                            const std::string& fvar) {
+    if (UV.is_none() != FUV.is_none()) throw InputError("UV and FUV go together: give both or neither");
+    if (UV.is_none()) return std::nullopt;
+    add_channel(mesh, UV, FUV);
+    std::vector<std::string> notes;
+    const std::optional<FaceVaryingRule> rule = face_varying_rule(scheme, fvar, mesh, notes);
+    if (!rule) throw InputError(notes.empty() ? "no face-varying rule" : notes.front());
+    return rule;
+}
+
+/// (UV, FUV) of a mesh's first channel: UV an n x d float64 array, FUV shaped as faces_object
+/// shapes F.
+py::tuple channel_tuple(PolyMesh& mesh) {
+    FaceVaryingChannel& ch = mesh.face_varying.at(0);
+    const py::ssize_t n = ch.num_values(), d = ch.dimension;
+    PolyMesh faces;  // the channel's corners in the faces' shape
+    faces.face_start = mesh.face_start;
+    faces.face_vertices = std::move(ch.corner_values);
+    return py::make_tuple(owning_array(std::move(ch.values), {n, d}), faces_object(faces));
 }
 
 RefineRequest request_for(const std::string& scheme_name, int levels, const std::optional<std::string>& weights,
@@ -289,26 +354,35 @@ PYBIND11_MODULE(crossdiv, m) {
     m.def("subdivide",
           [](const py::object& V, const py::object& F,
              const std::string& scheme, int levels, std::optional<std::string> weights, std::optional<std::string> boundary,
-             const std::string& impl, long long max_faces, double timeout) {
-              const RefineRequest req = request_for(scheme, levels, weights, boundary);
+             const std::string& impl, long long max_faces, double timeout, const py::object& UV, const py::object& FUV,
+             const std::string& fvar) -> py::tuple {
+              RefineRequest req = request_for(scheme, levels, weights, boundary);
               const Implementation& implementation = find_implementation(impl);
               PolyMesh mesh = mesh_from(V, F);
+              req.face_varying = with_channel(mesh, req.scheme, UV, FUV, fvar);
               require_refined_size(mesh, req.scheme, levels, max_faces, "subdivide", "max_faces");
               PolyMesh out;
               {
                   py::gil_scoped_release unlocked;  // core and the references are C++ and do not touch Python
                   out = refine_last_or_throw(implementation, mesh, req, "the mesh", timeout);
               }
-              return mesh_tuple(std::move(out));
+              if (UV.is_none()) return mesh_tuple(std::move(out));
+              if (out.face_varying.empty()) throw InputError(impl + " does not refine texture coordinates");
+              py::tuple channel = channel_tuple(out);
+              py::tuple vf = mesh_tuple(std::move(out));
+              return py::make_tuple(vf[0], vf[1], channel[0], channel[1]);
           },
           py::arg("V"), py::arg("F"), py::arg("scheme") = "loop", py::arg("levels") = 1, py::arg("weights") = py::none(),
           py::arg("boundary") = py::none(), py::arg("impl") = "core", py::arg("max_faces") = kMaxRefinedFaces,
-          py::arg("timeout") = 120.0,
+          py::arg("timeout") = 120.0, py::arg("UV") = py::none(), py::arg("FUV") = py::none(), py::arg("fvar") = "all",
           "Subdivides (V, F) by `levels` levels of `scheme` (loop, catmull-clark, doo-sabin, sqrt3, butterfly, "
           "modified-butterfly) with core or a reference (impl: core, opensubdiv, openmesh, cgal, ...), which applies "
           "the closest rule it has. Returns (V, F) in that implementation's numbering. A result of more than "
           "`max_faces` faces is refused before any work (crossdiv subdivide's --max-faces). A reference runs in a "
-          "child process with `timeout` seconds: its crash, hang or refusal raises crossdiv.InputError naming it.");
+          "child process with `timeout` seconds: its crash, hang or refusal raises crossdiv.InputError naming it. "
+          "With UV (n x d values) and FUV (one index into UV per corner of F, shaped as F): a face-varying channel "
+          "(texture coordinates), refined under `fvar` (none, corners-only, corners-plus1, corners-plus2, boundaries, "
+          "all) by loop, catmull-clark or bilinear; returns (V, F, UV, FUV).");
     m.def("subdivision_matrix",
           [](const py::object& V, const py::object& F,
              const std::string& weights, const std::string& boundary) {
@@ -332,7 +406,7 @@ PYBIND11_MODULE(crossdiv, m) {
           [](const py::object& V, const py::object& F, int levels,
              std::optional<std::string> weights, std::optional<std::string> boundary, std::vector<std::string> references,
              const std::string& tier, double tolerance, py::object subject, const std::string& subject_name,
-             double timeout, const std::string& scheme) {
+             double timeout, const std::string& scheme, const py::object& UV, const py::object& FUV, const std::string& fvar) {
               if (levels < 1 || levels > 12) throw InputError("levels must be in 1..12 (got " + std::to_string(levels) + ")");
               const RefineRequest asked = request_for(scheme, levels, weights, boundary);
               RefinementRequest req;
@@ -349,18 +423,21 @@ PYBIND11_MODULE(crossdiv, m) {
                   under_test = python_subject(subject_name, req.scheme, subject);
                   req.subject = under_test.get();
               }
-              const PolyMesh mesh = mesh_from(V, F);
+              PolyMesh mesh = mesh_from(V, F);
+              req.face_varying = with_channel(mesh, req.scheme, UV, FUV, fvar);
               if (traits(req.scheme).triangles) (void)to_tri_mesh(mesh, "compare");  // a polygon is refused by name
               return json_to_python(to_json(compare_refinement(mesh, "python", req)));
           },
           py::arg("V"), py::arg("F"), py::arg("levels") = 2, py::arg("weights") = py::none(), py::arg("boundary") = py::none(),
           py::arg("references") = std::vector<std::string>{}, py::arg("tier") = "weak", py::arg("tolerance") = 1e-12,
           py::arg("subject") = py::none(), py::arg("subject_name") = "python", py::arg("timeout") = 120.0,
-          py::arg("scheme") = "loop",
+          py::arg("scheme") = "loop", py::arg("UV") = py::none(), py::arg("FUV") = py::none(), py::arg("fvar") = "all",
           "Compares `scheme` (loop, catmull-clark, doo-sabin, sqrt3, butterfly, modified-butterfly, bilinear; "
           "weights for Loop, boundary as crossdiv compare names them, each the scheme's default when None) of "
           "(V, F) by core (or `subject`, a function of that scheme) with each reference that has it (all built when empty): "
           "the same record as `crossdiv compare --json` (runs, verdicts, divergence classes, worst vertex; with a "
           "subject, the named rule it follows). subject(V, F) -> (V, F) refines one level; it runs in a child "
-          "process with `timeout` seconds, so its exception, crash or hang is recorded, not raised.");
+          "process with `timeout` seconds, so its exception, crash or hang is recorded, not raised. With UV and "
+          "FUV (as subdivide takes them), each run's texture coordinates are compared per face corner under `fvar` "
+          "(the record's runs[i]['uv']).");
 }

@@ -31,6 +31,7 @@ void expect_tags_written_back(const PolyMesh& m) {
     EXPECT_EQ(back.method, m.creases.method);
     EXPECT_EQ(back.boundary, m.creases.boundary);
     EXPECT_EQ(back.smooth_triangles, m.creases.smooth_triangles);
+    EXPECT_EQ(back.face_varying, m.creases.face_varying);
 }
 
 std::string obj_error(const std::string& text) {
@@ -167,8 +168,8 @@ TEST(MeshIo, ObjReadsHoleBoundaryAndTriangleTagsAndKeepsUnknownOnesForTheCaller)
     EXPECT_EQ(m.creases.describe(), "0 crease, 0 corner and 2 hole tag(s)");
     EXPECT_EQ(m.creases.boundary, BoundaryTag::None);
     EXPECT_EQ(m.creases.smooth_triangles, true);
-    ASSERT_EQ(m.source.notes.size(), 1u);  // the face-varying tag: read, said to change nothing here
-    EXPECT_NE(m.source.notes[0].find("'facevaryingpropagatecorners' at t.obj:13 concerns face-varying data"),
+    ASSERT_EQ(m.source.notes.size(), 1u);  // the tag OpenSubdiv 3 dropped: read, said to be ignored
+    EXPECT_NE(m.source.notes[0].find("'facevaryingpropagatecorners' at t.obj:13 is ignored: OpenSubdiv 3 has no such option"),
               std::string::npos);
     EXPECT_EQ(m.source.unknown_tags, std::vector<std::string>{"'vertexedit' at t.obj:14"});
 

@@ -1,4 +1,5 @@
 #include "crossdiv/datasets/edge_cases.h"
+#include "crossdiv/datasets/uv_layouts.h"
 
 #include <algorithm>
 #include <cmath>
@@ -260,6 +261,7 @@ EdgeCase edge_case(const std::string& name) {
     std::string known;
     std::vector<EdgeCase> all = edge_cases();
     for (EdgeCase& c : polygon_edge_cases()) all.push_back(std::move(c));
+    for (UvEdgeCase& c : uv_edge_cases()) all.push_back({c.name, c.description, c.name.ends_with("-tri"), std::move(c.mesh)});
     for (EdgeCase& c : all) {
         if (c.name == name) return std::move(c);
         known += (known.empty() ? "" : ", ") + c.name;

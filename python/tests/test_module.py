@@ -290,3 +290,39 @@ def test_the_example_script_names_warrens_rule_and_draws(tmp_path):
     assert done.returncode == 0, done.stderr
     assert "numpy Loop vs opensubdiv: agree" in done.stdout, done.stdout
     assert os.path.getsize(png) > 5000
+
+
+def test_texture_coordinates_refine_under_each_rule_and_compare_per_corner():
+    # Two quads with a seam on their shared edge (1, 4): the left quad's values there are
+    # (1, 0) and (1, 1), the right quad's (3, 0) and (3, 3).
+    V = np.array([[0, 0, 0], [1, 0, 0], [2, 0, 0], [0, 1, 0], [1, 1, 0], [2, 1, 0]], dtype=float)
+    F = np.array([[0, 1, 4, 3], [1, 2, 5, 4]])
+    UV = np.array([[0, 0], [1, 0], [1, 1], [0, 1], [3, 0], [4, 0], [4, 1], [3, 3]], dtype=float)
+    FUV = np.array([[0, 1, 2, 3], [4, 5, 6, 7]])
+    V1, F1, UV1, FUV1 = crossdiv.subdivide(V, F, scheme="catmull-clark", levels=1, UV=UV, FUV=FUV, fvar="none")
+    assert FUV1.shape == F1.shape == (8, 4)
+    # Vertex 4 keeps its index; in the left quad's children (quads 0..3) its value is the
+    # crease 3/4 (1,1) + 1/8 (1,0) + 1/8 (0,1), in the right one's 3/4 (3,3) + 1/8 (4,1) + 1/8 (3,0).
+    left = [UV1[FUV1[q][k]] for q in range(4) for k in range(4) if F1[q][k] == 4]
+    right = [UV1[FUV1[q][k]] for q in range(4, 8) for k in range(4) if F1[q][k] == 4]
+    assert all(np.array_equal(x, [0.875, 0.875]) for x in left) and left
+    assert all(np.array_equal(x, [3.125, 2.375]) for x in right) and right
+    # The same through OpenSubdiv, in its numbering: the same values at vertex 4's corners.
+    Vo, Fo, UVo, FUVo = crossdiv.subdivide(V, F, scheme="catmull-clark", levels=1, UV=UV, FUV=FUV, fvar="none",
+                                           impl="opensubdiv")
+    at4 = sorted(tuple(UVo[FUVo[q][k]]) for q in range(len(Fo)) for k in range(4) if Fo[q][k] == 4)
+    assert at4 == [(0.875, 0.875), (3.125, 2.375)]
+    # compare: a per-corner verdict beside the positions'.
+    record = crossdiv.compare(V, F, scheme="catmull-clark", levels=2, references=["opensubdiv"], UV=UV, FUV=FUV,
+                              fvar="corners-only")
+    assert record["face_varying"] == "corners-only"
+    assert record["runs"][0]["uv"]["verdict"] == "agree"
+    # Bad channels are refused by name.
+    with pytest.raises(crossdiv.InputError, match="FUV face 1 corner 2: texture coordinate 9 is not in UV"):
+        crossdiv.subdivide(V, F, scheme="catmull-clark", UV=UV, FUV=np.array([[0, 1, 2, 3], [4, 5, 9, 7]]))
+    with pytest.raises(crossdiv.InputError, match="FUV face 1 has 3 corners where F face 1 has 4"):
+        crossdiv.subdivide(V, F, scheme="catmull-clark", UV=UV, FUV=[[0, 1, 2, 3], [4, 5, 6]])
+    with pytest.raises(crossdiv.InputError, match="UV and FUV go together"):
+        crossdiv.subdivide(V, F, scheme="catmull-clark", UV=UV)
+    with pytest.raises(crossdiv.InputError, match="unknown face-varying rule 'smooth'"):
+        crossdiv.subdivide(V, F, scheme="catmull-clark", UV=UV, FUV=FUV, fvar="smooth")

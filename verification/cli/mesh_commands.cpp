@@ -47,6 +47,7 @@ struct SchemeArgs {
     long long max_faces = kMaxRefinedFaces;
     bool ignore_unknown_tags = false;
     std::string nonmanifold = "opensubdiv";
+    std::string face_varying;  ///< empty: the file's facevaryinginterpolateboundary tag, else all
 
     /// The scheme options; `max_faces_default` is the command's --max-faces default
     /// (implementations/output_size.h: one implementation alone, or several side by side).
@@ -84,6 +85,14 @@ struct SchemeArgs {
                        "rules, refuse refuses it")
             ->check(CLI::IsMember({"opensubdiv", "refuse"}))
             ->capture_default_str();
+        std::vector<std::string> fvar_rules;
+        for (FaceVaryingRule r : kFaceVaryingRules) fvar_rules.emplace_back(to_string(r));
+        app.add_option("--fvar", face_varying,
+                       "How texture coordinates (face-varying data: OBJ vt) are refined, OpenSubdiv's "
+                       "FVarLinearInterpolation (loop, catmull-clark, bilinear): none (smooth everywhere), "
+                       "corners-only, corners-plus1, corners-plus2, boundaries, all (linear everywhere). Default: the "
+                       "file's 't facevaryinginterpolateboundary' tag, else all (OpenSubdiv's default)")
+            ->check(CLI::IsMember(fvar_rules));
         app.add_flag("--ignore-unknown-tags", ignore_unknown_tags,
                      "Refine a shape file whose tags include one crossdiv does not know, without it (each is noted)");
         max_faces = max_faces_default;
@@ -93,7 +102,8 @@ struct SchemeArgs {
             ->capture_default_str();
     }
     PolySchemeArgs poly() const {
-        return {scheme, boundary, levels, creasing, max_faces, tag_policy(), nonmanifold_rule_from_string(nonmanifold)};
+        return {scheme,    boundary,     levels, creasing, max_faces, tag_policy(), nonmanifold_rule_from_string(nonmanifold),
+                face_varying};
     }
     UnknownTags tag_policy() const { return ignore_unknown_tags ? UnknownTags::Ignore : UnknownTags::Refuse; }
     /// @throws InputError when `levels` of this scheme on `mesh` pass --max-faces.
@@ -141,6 +151,30 @@ int run_loop_subdivide_creased(const std::string& in, const PolyMesh& input, con
     return 0;
 }
 
+/// Loop on an input with texture coordinates: core's face-varying refinement
+/// (face_varying_refinement.h), or a reference's; the tags are honoured as for
+/// run_loop_subdivide_creased.
+int run_loop_subdivide_face_varying(const std::string& in, const PolyMesh& input, const SchemeArgs& s,
+                                    FaceVaryingRule fvar, const std::string& impl, const std::string& out, double timeout) {
+    if (impl == "split-flip") throw InputError("split-flip does not refine texture coordinates; use --impl core");
+    LoopOptions o = s.options();
+    o.creasing = crease_method(s.creasing, input);
+    s.require_size(input, in);
+    RefineRequest request{Scheme::Loop, {}, s.levels, fvar};
+    request.rule.loop = o;
+    const Implementation& chosen = find_implementation(impl);
+    if (!chosen.applies(Scheme::Loop, request.rule))
+        throw InputError(impl + " has no Loop with weights=" + std::string(to_string(o.weights)) +
+                         " boundary=" + std::string(to_string(o.boundary)));
+    const PolyMesh result = impl == "core" ? chosen.refine(input, request).back()
+                                           : refine_last_or_throw(chosen, input, request, in, timeout);
+    const PolyMesh emitted = write_emitted(out, result, fvar, impl);
+    fmt::print("{}: {} vertices, {} faces -> {} ({} vertices, {} faces, {} level(s), uv {}, {})\n", in,
+               input.num_vertices(), input.num_faces(), out, emitted.num_vertices(), emitted.num_faces(), s.levels,
+               to_string(fvar), impl);
+    return 0;
+}
+
 /// `flags` with the boundary rule `input`'s tags ask for (tag_rules.h), the notes printed.
 SchemeArgs with_tag_rules(const SchemeArgs& flags, PolyMesh& input) {
     SchemeArgs s = flags;
@@ -158,6 +192,8 @@ int run_subdivide(const std::string& in, const SchemeArgs& flags, const std::str
     }
     PolyMesh input = load_input(in, flags.tag_policy());
     const SchemeArgs s = with_tag_rules(flags, input);
+    if (const std::optional<FaceVaryingRule> fvar = face_varying_rule_noted(Scheme::Loop, s.face_varying, input))
+        return run_loop_subdivide_face_varying(in, input, s, *fvar, impl, out, timeout);
     if (!input.creases.empty()) return run_loop_subdivide_creased(in, input, s, impl, out, color, timeout);
     s.require_size(input, in);
     const TriMesh mesh = to_tri_mesh(input, "Loop subdivision");
@@ -250,6 +286,7 @@ int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, cons
     std::vector<PolyMesh> meshes;
     std::vector<std::string> refused(inputs.size());
     std::vector<LoopOptions> rules;  // each input's, its tags resolved
+    std::vector<std::optional<FaceVaryingRule>> fvars;  // each input's face-varying rule, when it has channels
     for (size_t i = 0; i < inputs.size(); ++i) {
         PolyMesh m = load_input(inputs[i], s.tag_policy());
         s.require_size(m, inputs[i]);
@@ -265,6 +302,7 @@ int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, cons
             } catch (const InputError& e) {
                 refused[i] = e.what();
             }
+        fvars.push_back(face_varying_rule_noted(Scheme::Loop, s.face_varying, m));
         meshes.push_back(std::move(m));
         rules.push_back(rule);
     }
@@ -284,9 +322,11 @@ int run_compare(const std::vector<std::string>& specs, const SchemeArgs& s, cons
         }
         RefinementRequest this_req = req;
         this_req.rule.loop = rules[i];
+        this_req.face_varying = fvars[i];
         const RefinementComparison c = compare_refinement(meshes[i], inputs[i], this_req);
         for (const std::string& note : c.notes) fmt::print("\nnote: {}\n", note);
         print_table(c);
+        print_uv_runs(c);
         if (!meshes[i].creases.empty())
             fmt::print("  tags: {}, {} decay\n", meshes[i].creases.describe(), to_string(rules[i].creasing));
         if (!subject_command.empty() && symptom_of_subject(c))

@@ -44,6 +44,41 @@ SchemeRule rule_with_tags(Scheme scheme, const PolySchemeArgs& s, PolyMesh& mesh
 
 }  // namespace
 
+std::optional<FaceVaryingRule> face_varying_rule_noted(Scheme scheme, const std::string& flag, const PolyMesh& mesh) {
+    std::vector<std::string> notes;
+    const std::optional<FaceVaryingRule> rule = verification::face_varying_rule(scheme, flag, mesh, notes);
+    for (const std::string& note : notes) fmt::print("note: {}\n", note);
+    return rule;
+}
+
+void print_uv_runs(const RefinementComparison& c) {
+    if (!c.face_varying) return;
+    fmt::print("  texture coordinates ({} rule), per face corner:\n", to_string(*c.face_varying));
+    for (const RefinementRun& r : c.runs) {
+        if (!r.uv) continue;
+        if (!r.uv->compared()) {
+            fmt::print("    {:<17} not compared: {}\n", r.reference, r.uv->not_compared);
+            continue;
+        }
+        fmt::print("    {:<17} {:<13} {:>10}  {}{}\n", r.reference, to_string(r.uv->outcome.verdict),
+                   fmt::format("{:.3g}", r.uv->comparison.max_rel),
+                   r.uv->outcome.cls == DivergenceClass::None ? "" : std::string(to_string(r.uv->outcome.cls)) + ": ",
+                   r.uv->explanation);
+    }
+}
+
+PolyMesh write_emitted(const std::string& out, const PolyMesh& result, const std::optional<FaceVaryingRule>& fvar,
+                       const std::string& impl) {
+    // Hole faces were refined around; they are not emitted (OpenSubdiv's convention).
+    const PolyMesh emitted = without_hole_faces(result);
+    if (fvar && emitted.face_varying.empty())
+        fmt::print("note: {} does not refine texture coordinates; {} has positions only\n", impl, out);
+    else if (fvar && !out.ends_with(".obj"))
+        fmt::print("note: texture coordinates are written to OBJ only; {} has positions only\n", out);
+    write_mesh(out, emitted);
+    return emitted;
+}
+
 void write_json(const std::string& path, const nlohmann::json& j) {
     const std::filesystem::path p(path);
     if (p.has_parent_path()) create_output_folder(p.parent_path().string());
@@ -72,26 +107,26 @@ int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const s
     const SchemeRule rule_asked = rule_with_tags(scheme, s, mesh);
     const std::string asked = rule_name(scheme, rule_asked);
     require_refined_size(mesh, scheme, s.levels, s.max_faces, in, "--max-faces");
+    const std::optional<FaceVaryingRule> fvar = face_varying_rule_noted(scheme, s.face_varying, mesh);
     PolyMesh result;
     if (impl == "core") {
-        const adapters::LevelTrace levels = core_implementation().refine(mesh, {scheme, rule_asked, s.levels});
+        const adapters::LevelTrace levels = core_implementation().refine(mesh, {scheme, rule_asked, s.levels, fvar});
         result = levels.back();
         if (color == "age") color_by_age(result, s.scheme, vertex_counts(levels));
     } else {
         const Implementation& ref = *select_references(scheme, {impl}).front();
         const std::string rule = rule_name(scheme, ref.closest_rule(scheme, rule_asked));
-        result = refine_last_or_throw(ref, mesh, {scheme, rule_asked, s.levels}, in, timeout);
+        result = refine_last_or_throw(ref, mesh, {scheme, rule_asked, s.levels, fvar}, in, timeout);
         if (rule != asked) fmt::print("note: {} applies the {} boundary rule, not {}\n", impl, rule, asked);
     }
-    // Hole faces were refined around; they are not emitted (OpenSubdiv's convention).
-    const PolyMesh emitted = without_hole_faces(result);
-    write_mesh(out, emitted);
+    const PolyMesh emitted = write_emitted(out, result, fvar, impl);
     const std::string tags = mesh.creases.empty() ? "" : ", " + mesh.creases.describe();
     const std::string decay =
         mesh.creases.empty() ? "" : fmt::format(", {} decay", to_string(rule_asked.catmull_clark.creasing));
-    fmt::print("{}: {} vertices, {} faces{} -> {} ({} vertices, {} faces, {} level(s){}, {} {} {})\n", in,
+    const std::string uv = fvar && !emitted.face_varying.empty() ? fmt::format(", uv {}", to_string(*fvar)) : "";
+    fmt::print("{}: {} vertices, {} faces{} -> {} ({} vertices, {} faces, {} level(s){}, {} {}{} {})\n", in,
                mesh.num_vertices(), mesh.num_faces(), tags, out, emitted.num_vertices(), emitted.num_faces(), s.levels,
-               decay, s.scheme, asked, impl);
+               decay, s.scheme, asked, uv, impl);
     return 0;
 }
 
@@ -112,10 +147,12 @@ int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeAr
     if (inputs.empty()) throw InputError("no inputs (a collection folder may be absent)");
     std::vector<PolyMesh> meshes;
     std::vector<SchemeRule> rules;  // each input's, its tags resolved
+    std::vector<std::optional<FaceVaryingRule>> fvars;  // each input's face-varying rule, when it has channels
     for (const std::string& in : inputs) {
         meshes.push_back(load_input(in, s.unknown_tags));
         require_refined_size(meshes.back(), req.scheme, s.levels, s.max_faces, in, "--max-faces");
         rules.push_back(rule_with_tags(req.scheme, s, meshes.back()));
+        fvars.push_back(face_varying_rule_noted(req.scheme, s.face_varying, meshes.back()));
     }
     nlohmann::json results = nlohmann::json::array();
     bool all_agree = true;
@@ -123,6 +160,7 @@ int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeAr
     for (size_t i = 0; i < inputs.size(); ++i) {
         RefinementRequest this_req = req;
         this_req.rule = rules[i];
+        this_req.face_varying = fvars[i];
         const RefinementComparison c = compare_refinement(meshes[i], inputs[i], this_req);
         for (const std::string& note : c.notes) fmt::print("\nnote: {}\n", note);
         fmt::print("\n{} ({} vertices, {} faces) {} boundary={} levels={} (core {:.3f} s)\n", c.input, c.input_vertices,
@@ -143,6 +181,7 @@ int run_scheme_compare(const std::vector<std::string>& specs, const PolySchemeAr
                            : fmt::format("{:.3g}", r.comparison.max_rel),
                        r.divergence_class == DivergenceClass::None ? "" : std::string(to_string(r.divergence_class)) + ": ",
                        r.explanation);
+        print_uv_runs(c);
         nlohmann::json record = to_json(c);
         if (req.scheme == Scheme::Butterfly || req.scheme == Scheme::ModifiedButterfly) {
             // The classic scheme has no reference: its verdict is its properties.

@@ -4,11 +4,13 @@
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "crossdiv/mesh/poly_mesh.h"
 #include "crossdiv/subdiv/nonmanifold_rule.h"
+#include "crossdiv/verification/comparisons/refinement_comparison.h"
 #include "crossdiv/verification/implementations/implementation.h"
 #include "crossdiv/verification/implementations/inputs.h"
 
@@ -25,7 +27,21 @@ struct PolySchemeArgs {
     long long max_faces = 0;  ///< --max-faces: the final level's face limit
     verification::UnknownTags unknown_tags = verification::UnknownTags::Refuse;  ///< --ignore-unknown-tags
     NonManifoldRule nonmanifold = NonManifoldRule::OpenSubdiv;                      ///< --nonmanifold
+    std::string face_varying;  ///< --fvar; empty: the file's tag, else all
 };
+
+/// The face-varying rule of a run on `mesh` (verification::face_varying_rule), its notes printed.
+std::optional<FaceVaryingRule> face_varying_rule_noted(verification::Scheme scheme, const std::string& flag,
+                                                       const PolyMesh& mesh);
+
+/// The face-varying verdict of each run of `c`, one line each, when `c` compared texture
+/// coordinates ("uv <rule>: reference verdict max rel  class: explanation").
+void print_uv_runs(const verification::RefinementComparison& c);
+
+/// Writes a refinement's emitted mesh (hole faces dropped) to `out`, saying when its texture
+/// coordinates were not refined or cannot be written.
+PolyMesh write_emitted(const std::string& out, const PolyMesh& result, const std::optional<FaceVaryingRule>& fvar,
+                       const std::string& impl);
 
 /// `crossdiv subdivide IN --scheme catmull-clark --impl core|opensubdiv|openmesh|cgal -o OUT`;
 /// `color` "age" colours the vertices by the level they were born at (color_by_age). A reference

@@ -51,6 +51,13 @@ expect subdivide-library-crash 2 'cgal failed on edgecase:isolated-vertex: (cras
 expect subdivide-library-abort 2 'openmesh failed on edgecase:valence-2: crashed' -- "$crossdiv" subdivide edgecase:valence-2 --scheme sqrt3 --impl openmesh -o "$tmp/x.obj"
 expect subdivide-library-timeout-option 2 'timeout: Value 0 not in range' -- "$crossdiv" subdivide bundled:icosahedron --impl cgal --timeout 0 -o "$tmp/x.obj"
 expect subdivide-age-core-only 2 '--color age needs --impl core' -- "$crossdiv" subdivide bundled:icosahedron --levels 1 --color age --impl opensubdiv -o "$tmp/x.obj"
+# Texture coordinates (face-varying): refined under the rule asked, written as vt and f v/t.
+expect subdivide-fvar 0 'uv-junction: 25 vertices, 16 faces -> .* \(289 vertices, 256 faces, 2 level\(s\), catmull-clark edge-only, uv corners-plus1 core\)' -- "$crossdiv" subdivide edgecase:uv-junction --scheme catmull-clark --levels 2 --fvar corners-plus1 -o "$tmp/uv.obj"
+expect subdivide-fvar-written 0 '^f [0-9]+/[0-9]+ [0-9]+/[0-9]+ [0-9]+/[0-9]+ [0-9]+/[0-9]+$' -- grep -m1 '^f ' "$tmp/uv.obj"
+expect subdivide-fvar-loop 0 'uv none, opensubdiv' -- "$crossdiv" subdivide edgecase:uv-seam-tri --levels 1 --fvar none --impl opensubdiv -o "$tmp/uvl.obj"
+expect subdivide-fvar-dropped 0 'note: edgecase:uv-seam-tri.s texture coordinates are not refined: sqrt3 has no face-varying rules here' -- "$crossdiv" subdivide edgecase:uv-seam-tri --scheme sqrt3 --levels 1 -o "$tmp/x.obj"
+expect subdivide-fvar-unknown 2 'fvar: .*linear.* not in' -- "$crossdiv" subdivide edgecase:uv-seam --scheme catmull-clark --fvar linear -o "$tmp/x.obj"
+expect subdivide-fvar-no-uvs 0 'note: .* has no texture coordinates \(face-varying data\); the face-varying rule asked for \(none\) changes nothing' -- "$crossdiv" subdivide bundled:quad-cube --scheme catmull-clark --fvar none -o "$tmp/x.obj"
 # Curvature: the octahedron's hand values (H = 1, K = pi / sqrt 3, mixed area 2 sqrt 3 / 3, defect 2 pi / 3),
 # Gauss-Bonnet on the torus, CGAL's jet fit compared, the mesh coloured, and what the operators refuse.
 expect curvature-octahedron 0 '^0,estimated,1\.1547005383792517,2\.0943951023931957,1,1\.8137993642342178,1,1,' -- bash -c "\"$crossdiv\" curvature bundled:octahedron --csv \"$tmp/oct.csv\" >/dev/null && cat \"$tmp/oct.csv\""

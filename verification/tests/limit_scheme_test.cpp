@@ -137,9 +137,9 @@ TEST(BfrComparison, ExactAtLevelOneDyadicPointsEvenOnIrregularFaces) {
 TEST(LimitChecks, UnknownStudyIsRefused) {
     EXPECT_THROW(find_operation("eigen"), InputError);
     const auto& ops = suite_operations();
-    // schemes, creases, limit-positions, vertex-age, curvature, isosurface, fitting,
-    // multiresolution, pages, spectrum, convergence
-    EXPECT_EQ(std::count_if(ops.begin(), ops.end(), [](const SuiteOperation& op) { return op.kind == OperationKind::Study; }), 11);
+    // schemes, creases, limit-positions, face-varying, vertex-age, curvature, isosurface,
+    // fitting, multiresolution, pages, spectrum, convergence
+    EXPECT_EQ(std::count_if(ops.begin(), ops.end(), [](const SuiteOperation& op) { return op.kind == OperationKind::Study; }), 12);
     // A comparison operation per scheme, each named after its scheme.
     for (Scheme s : all_schemes()) {
         const SuiteOperation& op = find_operation(to_string(s));

@@ -86,7 +86,7 @@ TEST(Manifest, ErrorsNameTheFileAndLine) {
     const std::vector<std::pair<std::string, std::string>> bad = {
         {"suite s\ncase bundled:all sqrt4\n", ":2: unknown operation 'sqrt4'"},
         {"suite s\ncase bundled:all catmull-clark weights=loop\n",
-         ":2: unknown key 'weights' (known: boundary, crease-method, levels, against, tier, tolerance, refuses)"},
+         ":2: unknown key 'weights' (known: boundary, crease-method, fvar, levels, against, tier, tolerance, refuses)"},
         {"suite s\ncase bundled:all doo-sabin crease-method=chaikin\n",
          ":2: unknown key 'crease-method' (known: boundary, levels, against, tier, tolerance, refuses)"},
         {"suite s\ncase bundled:all catmull-clark boundary=reflected-wings\n",

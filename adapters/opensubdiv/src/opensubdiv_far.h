@@ -12,6 +12,8 @@
 
 #include "crossdiv/adapters/reference.h"
 #include "crossdiv/mesh/poly_mesh.h"
+#include "crossdiv/subdiv/catmull_clark_mask.h"
+#include "crossdiv/subdiv/loop_mask.h"
 
 namespace crossdiv::adapters::opensubdiv::detail {
 
@@ -26,6 +28,22 @@ inline Sdc::Options sdc_options(bool edge_and_corner, CreaseMethod creasing) {
     sdc.SetCreasingMethod(creasing == CreaseMethod::Uniform ? Sdc::Options::CREASE_UNIFORM
                                                             : Sdc::Options::CREASE_CHAIKIN);
     return sdc;
+}
+
+/// Sdc options of core's Catmull-Clark options. @throws Rejected for the midpoint-average rule.
+inline Sdc::Options catmark_options(const CatmullClarkOptions& options) {
+    if (options.boundary == CatmullClarkBoundary::MidpointAverage)
+        throw Rejected("OpenSubdiv's Catmull-Clark has no midpoint-average boundary rule (OpenMesh's)");
+    Sdc::Options sdc = sdc_options(options.boundary == CatmullClarkBoundary::EdgeAndCorner, options.creasing);
+    if (options.smooth_triangles) sdc.SetTriangleSubdivision(Sdc::Options::TRI_SUB_SMOOTH);
+    return sdc;
+}
+
+/// Sdc options of core's Loop options. @throws Rejected for Warren's weights.
+inline Sdc::Options loop_options(const LoopOptions& options) {
+    if (options.weights != LoopWeights::Loop)
+        throw Rejected("OpenSubdiv's Loop scheme has Loop's 1987 weights only (not " + std::string(to_string(options.weights)) + ")");
+    return sdc_options(options.boundary == LoopBoundary::EdgeAndCorner, options.creasing);
 }
 
 /// Primvar with the Clear/AddWithWeight interface PrimvarRefiner expects.
@@ -53,7 +71,8 @@ inline void collect_far_error(Far::ErrorType, const char* message) {
 /// boundary itself).
 inline std::unique_ptr<Far::TopologyRefiner> make_refiner(int num_vertices, const std::vector<int>& face_sizes,
                                                           const std::vector<int>& corners, Sdc::SchemeType scheme,
-                                                          const Sdc::Options& sdc, const CreaseTags& tags = {}) {
+                                                          const Sdc::Options& sdc, const CreaseTags& tags = {},
+                                                          const FaceVaryingChannel* fvar = nullptr) {
     Far::TopologyDescriptor desc;
     desc.numVertices = num_vertices;
     desc.numFaces = static_cast<int>(face_sizes.size());
@@ -77,6 +96,13 @@ inline std::unique_ptr<Far::TopologyRefiner> make_refiner(int num_vertices, cons
     desc.cornerWeights = corner_weights.data();
     desc.numHoles = static_cast<int>(tags.holes.size());
     desc.holeIndices = tags.holes.data();
+    Far::TopologyDescriptor::FVarChannel channel;
+    if (fvar) {
+        channel.numValues = fvar->num_values();
+        channel.valueIndices = fvar->corner_values.data();
+        desc.numFVarChannels = 1;
+        desc.fvarChannels = &channel;
+    }
     g_far_errors.clear();
     Far::SetErrorCallback(collect_far_error);
     using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
@@ -85,11 +111,13 @@ inline std::unique_ptr<Far::TopologyRefiner> make_refiner(int num_vertices, cons
     return refiner;
 }
 
+/// The refiner of a polygon mesh with its tags, and with face-varying channel `fvar` (channel 0) when given.
 inline std::unique_ptr<Far::TopologyRefiner> make_refiner(const PolyMesh& mesh, Sdc::SchemeType scheme,
-                                                          const Sdc::Options& sdc) {
+                                                          const Sdc::Options& sdc,
+                                                          const FaceVaryingChannel* fvar = nullptr) {
     std::vector<int> sizes(static_cast<size_t>(mesh.num_faces()));
     for (int f = 0; f < mesh.num_faces(); ++f) sizes[f] = mesh.face_size(f);
-    return make_refiner(mesh.num_vertices(), sizes, mesh.face_vertices, scheme, sdc, mesh.creases);
+    return make_refiner(mesh.num_vertices(), sizes, mesh.face_vertices, scheme, sdc, mesh.creases, fvar);
 }
 
 /// Uniform refinement; full topology in the last level when asked (edges, for Limit()).

@@ -16,19 +16,6 @@ bool supports(const CatmullClarkOptions& options) {
 
 namespace {
 
-Sdc::Options catmark_options(const CatmullClarkOptions& options) {
-    if (!supports(options))
-        throw Rejected("OpenSubdiv's Catmull-Clark has no midpoint-average boundary rule (OpenMesh's)");
-    Sdc::Options sdc = sdc_options(options.boundary == CatmullClarkBoundary::EdgeAndCorner, options.creasing);
-    if (options.smooth_triangles) sdc.SetTriangleSubdivision(Sdc::Options::TRI_SUB_SMOOTH);
-    return sdc;
-}
-
-Sdc::Options loop_options(const LoopOptions& options) {
-    if (!supports(options)) throw Rejected("OpenSubdiv's Loop scheme has Loop's 1987 weights only (no Warren)");
-    return sdc_options(options.boundary == LoopBoundary::EdgeAndCorner, options.creasing);
-}
-
 /// Refines `levels` levels with full topology in the last one and evaluates Limit() there.
 LimitPoints limit_of(Far::TopologyRefiner& refiner, const std::vector<Vec3>& positions, int levels) {
     refine_uniform(refiner, levels, true);

@@ -1,4 +1,6 @@
 #include <algorithm>
+#include <array>
+#include <optional>
 #include <charconv>
 #include <limits>
 #include <ostream>
@@ -21,9 +23,9 @@ struct HoleTag {
 
 /// Reads the arguments of a tag line after its name, `t NAME nint/nfloat/nstring ints floats
 /// strings` (the shape-file tag format of OpenSubdiv's regression suite), and stores the
-/// crease, corner, hole, creasemethod, interpolateboundary and smoothtriangles tags; the
-/// face-varying tags are read and noted (they concern texture coordinates, which no scheme
-/// here refines). Returns false for a tag name it does not know.
+/// crease, corner, hole, creasemethod, interpolateboundary, smoothtriangles and
+/// facevaryinginterpolateboundary tags; facevaryingpropagatecorners (an option OpenSubdiv 3
+/// dropped) is noted. Returns false for a tag name it does not know.
 bool read_tag(io_detail::LineReader& r, std::string_view name, CreaseTags& tags, std::vector<HoleTag>& holes,
               std::vector<std::string>& notes) {
     const std::string_view counts = r.token();
@@ -101,13 +103,36 @@ bool read_tag(io_detail::LineReader& r, std::string_view name, CreaseTags& tags,
         tags.smooth_triangles = strings[0] == "smooth";
         return true;
     }
-    if (name == "facevaryinginterpolateboundary" || name == "facevaryingpropagatecorners") {
-        notes.push_back("tag '" + std::string(name) + "' at " + r.name() + ":" + std::to_string(r.line_number()) +
-                        " concerns face-varying data (texture coordinates), which is not refined here; positions "
-                        "do not depend on it");
+    if (name == "facevaryinginterpolateboundary") {
+        const std::optional<FaceVaryingRule> rule = ints.size() == 1 ? face_varying_rule_from_tag(ints[0]) : std::nullopt;
+        if (!rule)
+            r.fail("tag 'facevaryinginterpolateboundary': expects one integer, 0 (none), 1 (corners-only), 2 "
+                   "(corners-plus1), 3 (corners-plus2), 4 (boundaries) or 5 (all)");
+        tags.face_varying = *rule;
+        return true;
+    }
+    if (name == "facevaryingpropagatecorners") {
+        notes.push_back("tag 'facevaryingpropagatecorners' at " + r.name() + ":" + std::to_string(r.line_number()) +
+                        " is ignored: OpenSubdiv 3 has no such option (its regression reader asserts on it); the "
+                        "face-varying rule alone decides corners");
         return true;
     }
     return false;
+}
+
+/// A 1-based OBJ index (negative: counted back from the last element read, of which there
+/// are `count`) as a 0-based one; its range above is checked once the file is read, as
+/// positive indices may name elements defined later.
+int obj_index(io_detail::LineReader& r, std::string_view token, long count, const std::string& what,
+              const char* plural) {
+    const long idx = r.integer(token, (what + " index").c_str());
+    if (idx == 0) r.fail(what + " index 0: OBJ indices start at 1");
+    if (idx > std::numeric_limits<int>::max())
+        r.fail(what + " index " + std::to_string(idx) + " is out of range: 32-bit indices address at most " +
+               std::to_string(std::numeric_limits<int>::max()) + " " + plural);
+    const long i = idx > 0 ? idx - 1 : count + idx;  // negative: relative to the last element
+    if (i < 0) r.fail("relative " + what + " index " + std::to_string(idx) + " points before the first " + what);
+    return static_cast<int>(i);
 }
 
 /// Hole tags name faces from 0; sorted and made unique once every face is read.
@@ -153,6 +178,11 @@ PolyMesh read_obj(std::istream& in, const std::string& name) {
     int unknown_lines = 0, first_unknown = 0;
     std::string first_unknown_word;
     std::vector<HoleTag> holes;
+    std::vector<std::array<double, 3>> texcoords;
+    bool uvw = false;                    // a texture coordinate with a w
+    std::vector<int> corner_texcoords;   // per corner, when the faces give them
+    int texture_corners_from = 0;        // the line of the first corner: whether corners give one decides for all
+    bool texture_corners = false;
     while (r.next()) {
         const std::string_view kw = r.token();
         if (kw.empty()) continue;
@@ -172,23 +202,40 @@ PolyMesh read_obj(std::istream& in, const std::string& name) {
             mesh.positions.push_back(p);
             mesh.colors.push_back(color);
             mesh.source.vertex_line.push_back(r.line_number());
+        } else if (kw == "vt") {
+            // u [v [w]], v and w 0 when absent (the OBJ specification).
+            std::array<double, 3> t{r.real("texture coordinate u"), 0.0, 0.0};
+            int n = 1;
+            for (; n < 3 && !r.at_end_of_line(); ++n) t[n] = r.real(n == 1 ? "texture coordinate v" : "texture coordinate w");
+            if (!r.at_end_of_line()) r.fail("a texture coordinate has at most 3 components (u v w)");
+            if (n == 3) uvw = true;
+            texcoords.push_back(t);
         } else if (kw == "f") {
             corners.clear();
             for (std::string_view t = r.token(); !t.empty(); t = r.token()) {
-                const long idx = r.integer(t.substr(0, t.find('/')), "vertex index");
-                const long nv = static_cast<long>(mesh.positions.size());
-                if (idx == 0) r.fail("vertex index 0: OBJ indices start at 1");
-                if (idx > std::numeric_limits<int>::max())
-                    r.fail("vertex index " + std::to_string(idx) + " is out of range: 32-bit indices address at most " +
-                           std::to_string(std::numeric_limits<int>::max()) + " vertices");
-                const long v = idx > 0 ? idx - 1 : nv + idx;  // negative: relative to the last vertex
-                if (v < 0) r.fail("relative vertex index " + std::to_string(idx) + " points before the first vertex");
-                corners.push_back(static_cast<int>(v));
+                const size_t slash = t.find('/');
+                corners.push_back(obj_index(r, t.substr(0, slash), static_cast<long>(mesh.positions.size()), "vertex", "vertices"));
+                // "v/vt", "v/vt/vn", "v//vn" or "v": the texture index, when there is one.
+                const std::string_view rest = slash == std::string_view::npos ? std::string_view{} : t.substr(slash + 1);
+                const std::string_view tex = rest.substr(0, rest.find('/'));
+                const bool has_tex = !tex.empty();
+                if (texture_corners_from > 0 && has_tex != texture_corners)
+                    r.fail(std::string("a corner ") + (has_tex ? "with" : "without") +
+                           " a texture coordinate index, where the first corner (line " +
+                           std::to_string(texture_corners_from) + ") has " + (texture_corners ? "one" : "none") +
+                           ": either every corner gives one or none does");
+                if (texture_corners_from == 0) {
+                    texture_corners_from = r.line_number();
+                    texture_corners = has_tex;
+                }
+                if (has_tex)
+                    corner_texcoords.push_back(
+                        obj_index(r, tex, static_cast<long>(texcoords.size()), "texture coordinate", "texture coordinates"));
             }
             if (corners.size() < 3) r.fail("a face needs at least 3 vertices, got " + std::to_string(corners.size()));
             mesh.add_face(corners);
             mesh.source.face_line.push_back(r.line_number());
-        } else if (kw == "vt" || kw == "vn" || kw == "vp" || kw == "g" || kw == "o" || kw == "s" ||
+        } else if (kw == "vn" || kw == "vp" || kw == "g" || kw == "o" || kw == "s" ||
                    kw == "usemtl" || kw == "mtllib" || kw == "l" || kw == "p") {
             continue;  // not geometry the schemes use
         } else if (kw == "t") {
@@ -217,6 +264,24 @@ PolyMesh read_obj(std::istream& in, const std::string& name) {
     check_tag_indices(r, mesh);
     mesh.creases.holes = checked_holes(r, holes, mesh.num_faces());
     if (!any_color) mesh.colors.clear();
+    if (texture_corners) {
+        const long nt = static_cast<long>(texcoords.size());
+        int corner = 0;
+        for (int f = 0; f < mesh.num_faces(); ++f)
+            for (int k = 0; k < mesh.face_size(f); ++k, ++corner)
+                if (corner_texcoords[corner] >= nt)
+                    r.fail_at(mesh.source.face_line[f], "texture coordinate index " +
+                                                            std::to_string(corner_texcoords[corner] + 1L) +
+                                                            " out of range: the file has " + std::to_string(nt) +
+                                                            " texture coordinates");
+        FaceVaryingChannel uv;
+        uv.name = "uv";
+        uv.dimension = uvw ? 3 : 2;
+        uv.values.reserve(texcoords.size() * static_cast<size_t>(uv.dimension));
+        for (const auto& t : texcoords) uv.values.insert(uv.values.end(), t.begin(), t.begin() + uv.dimension);
+        uv.corner_values = std::move(corner_texcoords);
+        mesh.face_varying.push_back(std::move(uv));
+    }
     return mesh;
 }
 
@@ -237,6 +302,18 @@ void write_obj(std::ostream& out, const PolyMesh& mesh, std::span<const Vec3> no
             for (double x : mesh.colors[v]) { buf += ' '; append_real(buf, x); }
         buf += '\n';
     }
+    // OBJ carries one texture channel: the first face-varying channel, as `vt`.
+    const FaceVaryingChannel* uv = mesh.face_varying.empty() ? nullptr : &mesh.face_varying.front();
+    if (uv) {
+        if (uv->corner_values.size() != mesh.face_vertices.size() || uv->dimension < 1 || uv->dimension > 3)
+            throw std::logic_error("write_obj: face-varying channel '" + uv->name + "' does not fit the mesh or has " +
+                                   std::to_string(uv->dimension) + " components (OBJ's vt has 1 to 3)");
+        for (int i = 0; i < uv->num_values(); ++i) {
+            buf += "vt";
+            for (int k = 0; k < uv->dimension; ++k) { buf += ' '; append_real(buf, uv->value(i)[k]); }
+            buf += '\n';
+        }
+    }
     for (const Vec3& n : normals) {
         buf += "vn";
         for (double x : n) { buf += ' '; append_real(buf, x); }
@@ -247,10 +324,14 @@ void write_obj(std::ostream& out, const PolyMesh& mesh, std::span<const Vec3> no
         for (int k = 0; k < mesh.face_size(f); ++k) {
             buf += ' ';
             append_int(buf, mesh.face(f)[k] + 1);
-            if (with_normals) {  // vertex i has normal i: "v//v"
-                buf += "//";
-                append_int(buf, mesh.face(f)[k] + 1);
+            if (uv) {  // "v/t" or "v/t/v"
+                buf += '/';
+                append_int(buf, uv->corner_values[static_cast<size_t>(mesh.face_start[f] + k)] + 1);
+                if (with_normals) buf += '/';
+            } else if (with_normals) {
+                buf += "//";  // vertex i has normal i: "v//v"
             }
+            if (with_normals) append_int(buf, mesh.face(f)[k] + 1);
         }
         buf += '\n';
     }
@@ -298,6 +379,11 @@ void write_obj(std::ostream& out, const PolyMesh& mesh, std::span<const Vec3> no
         buf += '\n';
     }
     if (const auto& t = mesh.creases.smooth_triangles) buf += *t ? "t smoothtriangles 0/0/1 smooth\n" : "t smoothtriangles 0/0/1 catmark\n";
+    if (const auto& r = mesh.creases.face_varying) {
+        buf += "t facevaryinginterpolateboundary 1/0/0 ";
+        append_int(buf, face_varying_tag(*r));
+        buf += '\n';
+    }
     out.write(buf.data(), static_cast<std::streamsize>(buf.size()));
 }
 

@@ -16,8 +16,17 @@ PolyMesh without_hole_faces(const PolyMesh& mesh) {
     out.source.file = mesh.source.file;
     out.source.vertex_line = mesh.source.vertex_line;
     out.source.notes = mesh.source.notes;
+    for (const FaceVaryingChannel& ch : mesh.face_varying) {
+        out.face_varying.push_back(ch);
+        out.face_varying.back().corner_values.clear();
+    }
     for_each_emitted_face(mesh, [&](int f) {
         out.face_vertices.insert(out.face_vertices.end(), mesh.face(f), mesh.face(f) + mesh.face_size(f));
+        for (size_t k = 0; k < mesh.face_varying.size(); ++k) {
+            const std::vector<int>& from = mesh.face_varying[k].corner_values;
+            out.face_varying[k].corner_values.insert(out.face_varying[k].corner_values.end(),
+                                                     from.begin() + mesh.face_start[f], from.begin() + mesh.face_start[f + 1]);
+        }
         out.face_start.push_back(static_cast<int>(out.face_vertices.size()));
         if (static_cast<size_t>(f) < mesh.source.face_line.size()) out.source.face_line.push_back(mesh.source.face_line[f]);
     });

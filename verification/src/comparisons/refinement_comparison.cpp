@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <array>
 #include <deque>
+#include <functional>
 
 #include "crossdiv/error.h"
 #include "harness/sci.h"
@@ -32,7 +34,8 @@ struct CoreRun {
 /// Core's refinements of one input, each rule's made once, through core's implementation.
 class CoreRuns {
 public:
-    CoreRuns(const PolyMesh& input, Scheme scheme, int levels) : input_(input), scheme_(scheme), levels_(levels) {}
+    CoreRuns(const PolyMesh& input, Scheme scheme, int levels, std::optional<FaceVaryingRule> face_varying)
+        : input_(input), scheme_(scheme), levels_(levels), face_varying_(face_varying) {}
 
     /// The run under `rule` (its error set when core refuses). A deque: earlier runs stay
     /// where they are while later ones are added.
@@ -42,7 +45,7 @@ public:
         CoreRun& run = runs_.emplace_back();
         run.rule = rule;
         try {
-            run.refinement = core_implementation().refine_with_provenance(input_, {scheme_, rule, levels_});
+            run.refinement = core_implementation().refine_with_provenance(input_, {scheme_, rule, levels_, face_varying_});
         } catch (const InputError& e) {
             run.error = e.what();
             run.refinement.levels = {input_};
@@ -54,8 +57,167 @@ private:
     const PolyMesh& input_;
     Scheme scheme_;
     int levels_;
+    std::optional<FaceVaryingRule> face_varying_;
     std::deque<CoreRun> runs_;
 };
+
+/// Core's last level under the requested vertex rule and each face-varying rule, made when
+/// first needed: what a face-varying divergence is measured against. The face-varying rule
+/// changes no vertex or face, so each is in the numbering of the requested run.
+class CoreFaceVaryingRuns {
+public:
+    CoreFaceVaryingRuns(const PolyMesh& input, Scheme scheme, const SchemeRule& rule, int levels)
+        : input_(input), scheme_(scheme), rule_(rule), levels_(levels) {}
+    /// nullptr when core refuses the input under `fvar`.
+    const PolyMesh* last(FaceVaryingRule fvar) {
+        std::optional<PolyMesh>& slot = made_[static_cast<size_t>(fvar)];
+        if (!tried_[static_cast<size_t>(fvar)]) {
+            tried_[static_cast<size_t>(fvar)] = true;
+            try {
+                slot = core_implementation().refine(input_, {scheme_, rule_, levels_, fvar}).back();
+                if (slot->face_varying.empty()) slot.reset();
+            } catch (const InputError&) {
+            }
+        }
+        return slot ? &*slot : nullptr;
+    }
+
+    const SchemeRule& rule() const { return rule_; }
+    int levels() const { return levels_; }
+
+private:
+    const PolyMesh& input_;
+    Scheme scheme_;
+    SchemeRule rule_;
+    int levels_;
+    std::array<std::optional<PolyMesh>, kFaceVaryingRules.size()> made_;
+    std::array<bool, kFaceVaryingRules.size()> tried_{};
+};
+
+/// The face-varying values of a run whose positions were matched (`map`: its vertices to
+/// ours): agreement within `tolerance` of the UV box, else the rule that explains the
+/// difference -- the reference's values are core's under another rule, or (a subject under
+/// test) the subject's are -- else unexplained.
+/// `mesh` with its faces (and their channel corners and hole tags) listed in `order`.
+PolyMesh with_face_order(const PolyMesh& mesh, const std::vector<int>& order) {
+    PolyMesh out = mesh;
+    out.face_start = {0};
+    out.face_vertices.clear();
+    out.source.face_line.clear();
+    for (FaceVaryingChannel& ch : out.face_varying) ch.corner_values.clear();
+    std::vector<int> new_index(order.size());
+    for (size_t i = 0; i < order.size(); ++i) new_index[static_cast<size_t>(order[i])] = static_cast<int>(i);
+    for (int f : order) {
+        out.face_vertices.insert(out.face_vertices.end(), mesh.face(f), mesh.face(f) + mesh.face_size(f));
+        out.face_start.push_back(static_cast<int>(out.face_vertices.size()));
+        for (size_t k = 0; k < mesh.face_varying.size(); ++k) {
+            const std::vector<int>& from = mesh.face_varying[k].corner_values;
+            out.face_varying[k].corner_values.insert(out.face_varying[k].corner_values.end(), from.begin() + mesh.face_start[f],
+                                                     from.begin() + mesh.face_start[f + 1]);
+        }
+    }
+    for (int& h : out.creases.holes) h = new_index[static_cast<size_t>(h)];
+    std::sort(out.creases.holes.begin(), out.creases.holes.end());
+    return out;
+}
+
+/// Whether `refine(m)` -- an implementation's refinement, its last level -- gives other
+/// face-varying values when the faces of `input` are listed reversed or rotated by half: the
+/// largest change relative to the UV box and the order that shows it, or nothing when no
+/// order changes them beyond `tolerance` (or the runs cannot be compared).
+struct OrderChange {
+    double max_rel;
+    std::string order;
+};
+std::optional<OrderChange> face_order_change(const PolyMesh& input, const PolyMesh& as_given,
+                                             const std::function<std::optional<PolyMesh>(const PolyMesh&)>& refine,
+                                             double tolerance) {
+    const int n = input.num_faces();
+    std::vector<int> reversed(static_cast<size_t>(n)), rotated(static_cast<size_t>(n));
+    for (int f = 0; f < n; ++f) {
+        reversed[static_cast<size_t>(f)] = n - 1 - f;
+        rotated[static_cast<size_t>(f)] = (f + n / 2) % n;
+    }
+    for (const auto& [order, name] : {std::pair{&reversed, "reversed"}, std::pair{&rotated, "rotated by half"}}) {
+        const std::optional<PolyMesh> other = refine(with_face_order(input, *order));
+        if (!other) continue;
+        const Correspondence m = match_nearest_and_faces(as_given, *other);
+        if (m.method == MatchMethod::None) continue;
+        const CornerValueComparison c = compare_corner_values(as_given, *other, m.ref_to_ours);
+        if (c.compared() && c.max_rel > tolerance) return OrderChange{c.max_rel, name};
+    }
+    return std::nullopt;
+}
+
+FaceVaryingRun compare_face_varying(const PolyMesh& ours, const PolyMesh& theirs, const std::vector<int>& map,
+                                    const Implementation& ref, Scheme scheme, FaceVaryingRule requested,
+                                    const std::string& subject, double tolerance, CoreFaceVaryingRuns& core,
+                                    const std::function<std::optional<PolyMesh>(const PolyMesh&)>& rerun_reference,
+                                    const PolyMesh& input) {
+    FaceVaryingRun u;
+    const SchemeSupport* support = ref.support(scheme);
+    if (!support || !support->face_varying) {
+        u.not_compared = ref.name() + " refines no face-varying data";
+        return u;
+    }
+    u.comparison = compare_corner_values(ours, theirs, map);
+    if (!u.comparison.compared()) {
+        u.not_compared = u.comparison.not_compared;
+        return u;
+    }
+    const std::string measured = "max difference " + sci(u.comparison.max_rel) + " of the UV box";
+    if (u.comparison.max_rel <= tolerance) {
+        u.outcome = {Verdict::Agree, DivergenceClass::None};
+        u.explanation = measured + " <= " + sci(tolerance) + " over " + std::to_string(u.comparison.corners) + " corners";
+        return u;
+    }
+    u.worst_class = to_string(uv_vertex_class(ours, u.comparison.worst_face, u.comparison.worst_corner));
+    const std::string where = measured + ", at a " + u.worst_class + " corner";
+    std::vector<int> identity(static_cast<size_t>(ours.num_vertices()));
+    for (size_t i = 0; i < identity.size(); ++i) identity[i] = static_cast<int>(i);
+    for (FaceVaryingRule r : kFaceVaryingRules) {
+        if (r == requested) continue;
+        const PolyMesh* with = core.last(r);
+        if (!with) continue;
+        const CornerValueComparison ref_fit = compare_corner_values(*with, theirs, map);
+        const bool ref_follows = ref_fit.compared() && ref_fit.max_rel <= tolerance;
+        bool subject_follows = false;
+        if (!ref_follows && subject != "core") {
+            const CornerValueComparison s = compare_corner_values(*with, ours, identity);
+            subject_follows = s.compared() && s.max_rel <= tolerance;
+        }
+        if (!ref_follows && !subject_follows) continue;
+        u.outcome = {Verdict::Diverge, DivergenceClass::FaceVaryingRule};
+        u.follows = r;
+        u.who_follows = ref_follows ? ref.name() : subject;
+        const std::string follows(to_string(r)), asked(to_string(requested));
+        u.explanation = u.who_follows + "'s texture coordinates follow the " + follows + " rule, not " + asked +
+                        ": core with " + follows + " agrees with them within " + sci(tolerance) + " (" + where + ")";
+        return u;
+    }
+    // The reference run again on the same mesh with its faces listed otherwise: values that
+    // change are read off how the input is written, where core's (checked the same way) stay.
+    if (const std::optional<OrderChange> changed = face_order_change(input, theirs, rerun_reference, tolerance)) {
+        const auto core_again = [&](const PolyMesh& m) -> std::optional<PolyMesh> {
+            try {
+                return core_implementation().refine(m, {scheme, core.rule(), core.levels(), requested}).back();
+            } catch (const InputError&) {
+                return std::nullopt;
+            }
+        };
+        const PolyMesh* core_given = core.last(requested);
+        if (core_given && !face_order_change(input, *core_given, core_again, tolerance)) {
+            u.outcome = {Verdict::Diverge, DivergenceClass::FaceOrderDependence};
+            u.explanation = ref.name() + "'s texture coordinates change by " + sci(changed->max_rel) +
+                            " of the UV box when the input's faces are " + changed->order + ", where core's stay within " +
+                            sci(tolerance) + " (" + where + ")";
+            return u;
+        }
+    }
+    u.outcome = {Verdict::Diverge, DivergenceClass::Unexplained};
+    u.explanation = where + "; no face-varying rule of core's explains it";
+    return u;
+}
 
 /// The correspondence's vertex map at level `l` of `last`: its level map when matched level by
 /// level, the last level's map when matched by position (nullptr at the levels before).
@@ -255,7 +417,9 @@ PolyMesh subdivide(Scheme scheme, const SchemeRule& rule, const PolyMesh& mesh, 
 
 bool RefinementComparison::all_agree() const {
     if (!core_error.empty() || runs.empty()) return false;
-    return std::all_of(runs.begin(), runs.end(), [](const RefinementRun& r) { return r.verdict == Verdict::Agree; });
+    return std::all_of(runs.begin(), runs.end(), [](const RefinementRun& r) {
+        return r.verdict == Verdict::Agree && (!r.uv || !r.uv->compared() || r.uv->outcome.verdict == Verdict::Agree);
+    });
 }
 
 namespace {
@@ -305,7 +469,10 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
     const bool primal = traits(req.scheme).primal;
 
     const auto t0 = std::chrono::steady_clock::now();
-    CoreRuns core(input, req.scheme, req.levels);
+    const std::optional<FaceVaryingRule> fvar = input.face_varying.empty() ? std::nullopt : req.face_varying;
+    out.face_varying = fvar;
+    CoreRuns core(input, req.scheme, req.levels, fvar);
+    CoreFaceVaryingRuns core_fvar(input, req.scheme, req.rule, req.levels);
     const CoreRun& requested = core.with(req.rule);
     out.core_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     out.core_error = requested.error;
@@ -319,7 +486,7 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
     const std::string subject_name = req.subject ? req.subject->name() : "core";
     if (req.subject && out.core_error.empty()) {
         out.subject = subject_name;
-        IsolatedTrace iso = refine_isolated(*req.subject, input, {req.scheme, req.rule, req.levels}, req.timeout_seconds,
+        IsolatedTrace iso = refine_isolated(*req.subject, input, {req.scheme, req.rule, req.levels, fvar}, req.timeout_seconds,
                                             req.isolate);
         out.subject_outcome = iso.outcome;
         if (iso.outcome.status != RunStatus::Ok) return out;
@@ -406,12 +573,16 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
         run.rule = rule_name(req.scheme, run.ran_with);
         const bool rules_differ = !same_rule(req.scheme, run.ran_with, req.rule);
         // Asked for the rule it applies: a program is handed the rule as it is asked.
-        IsolatedTrace iso = refine_isolated(ref, input, {req.scheme, run.ran_with, req.levels}, req.timeout_seconds, req.isolate);
+        if (fvar) {
+            run.uv.emplace();
+            run.uv->not_compared = "the positions were not matched";
+        }
+        IsolatedTrace iso = refine_isolated(ref, input, {req.scheme, run.ran_with, req.levels, fvar}, req.timeout_seconds, req.isolate);
         // The same run again with the heap filled otherwise: a result that changes is recorded
         // as ref-nondeterministic after the classification below (nondeterminism.h).
         changed.emplace_back();
         if (req.isolate && !ref.confines_itself() && reruns_for_determinism(iso.outcome.status))
-            changed.back() = first_difference(iso, refine_isolated(ref, input, {req.scheme, run.ran_with, req.levels},
+            changed.back() = first_difference(iso, refine_isolated(ref, input, {req.scheme, run.ran_with, req.levels, fvar},
                                                                     req.timeout_seconds, true, kSecondHeapFill));
         run.outcome = iso.outcome;
         // Non-finite coordinates where its weight table ends below the input's valence are what
@@ -535,6 +706,15 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
         }
 
         run.comparison = compare_meshes(ours, theirs, map);
+        if (fvar && map_holds) {
+            const auto rerun = [&](const PolyMesh& m) -> std::optional<PolyMesh> {
+                IsolatedTrace again = refine_isolated(ref, m, {req.scheme, run.ran_with, req.levels, fvar}, req.timeout_seconds, req.isolate);
+                if (again.outcome.status != RunStatus::Ok || !again.trace) return std::nullopt;
+                return again.trace->back();
+            };
+            run.uv = compare_face_varying(ours, theirs, map, ref, req.scheme, *fvar, subject_name, tolerance, core_fvar,
+                                          rerun, input);
+        }
         if (map_holds) {
             run.level_max_rel = level_errors(*under_test, trace, run.correspondence);
             in_our_order[ref.name()] = in_our_numbering(theirs, map, ours.num_vertices());
@@ -800,6 +980,24 @@ nlohmann::json to_json(const RefinementComparison& c) {
                     {"divergence_class", to_string(r.divergence_class)},
                     {"explanation", r.explanation}};
         if (c.scheme == Scheme::Loop) run["ran_with"] = loop_options(r.ran_with);
+        if (r.uv) {
+            json uv = {{"compared", r.uv->compared()}, {"not_compared", r.uv->not_compared}};
+            if (r.uv->compared()) {
+                uv["verdict"] = to_string(r.uv->outcome.verdict);
+                uv["divergence_class"] = to_string(r.uv->outcome.cls);
+                uv["explanation"] = r.uv->explanation;
+                uv["corners"] = r.uv->comparison.corners;
+                uv["max_abs"] = finite(r.uv->comparison.max_abs);
+                uv["max_rel"] = finite(r.uv->comparison.max_rel);
+                uv["uv_box"] = r.uv->comparison.uv_box;
+                if (r.uv->follows) {
+                    uv["follows"] = std::string(to_string(*r.uv->follows));
+                    uv["who_follows"] = r.uv->who_follows;
+                }
+                if (!r.uv->worst_class.empty()) uv["worst_class"] = r.uv->worst_class;
+            }
+            run["uv"] = uv;
+        }
         if (!std::isnan(r.hausdorff_rel)) run["hausdorff_rel"] = finite(r.hausdorff_rel);
         if (r.outcome.status == RunStatus::Ok && c.core_error.empty()) {
             run["match"] = {{"method", to_string(r.correspondence.method)}, {"note", r.correspondence.note}};
@@ -834,6 +1032,7 @@ nlohmann::json to_json(const RefinementComparison& c) {
                 {"runs", runs},
                 {"worst_vertex", worst}};
     if (c.scheme == Scheme::Loop) out["options"] = loop_options(c.rule);
+    if (c.face_varying) out["face_varying"] = std::string(to_string(*c.face_varying));
     if (!c.notes.empty()) out["notes"] = c.notes;
     if (c.subject != "core") out["subject"] = subject_json(c);
     return out;

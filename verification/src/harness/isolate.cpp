@@ -77,16 +77,31 @@ void write_trace(FILE* f, const adapters::LevelTrace& trace) {
         put_vector(f, m.face_start);
         put_vector(f, m.face_vertices);
         put_vector(f, m.creases.holes);  // faces the library does not emit
+        put(f, m.face_varying.size());
+        for (const FaceVaryingChannel& ch : m.face_varying) {
+            put_string(f, ch.name);
+            put(f, ch.dimension);
+            put_vector(f, ch.values);
+            put_vector(f, ch.corner_values);
+        }
     }
 }
 bool read_trace(FILE* f, adapters::LevelTrace& trace) {
     size_t n = 0;
     if (!get(f, n) || n > 64) return false;
     trace.resize(n);
-    for (PolyMesh& m : trace)
+    for (PolyMesh& m : trace) {
         if (!get_vector(f, m.positions) || !get_vector(f, m.face_start) || !get_vector(f, m.face_vertices) ||
             !get_vector(f, m.creases.holes))
             return false;
+        size_t channels = 0;
+        if (!get(f, channels) || channels > 64) return false;
+        m.face_varying.resize(channels);
+        for (FaceVaryingChannel& ch : m.face_varying) {
+            ch.name = get_string(f);
+            if (!get(f, ch.dimension) || !get_vector(f, ch.values) || !get_vector(f, ch.corner_values)) return false;
+        }
+    }
     return true;
 }
 

@@ -6,6 +6,7 @@
 #include "crossdiv/subdiv/catmull_clark.h"
 #include "crossdiv/subdiv/catmull_clark_streaming.h"
 #include "crossdiv/subdiv/doo_sabin.h"
+#include "crossdiv/subdiv/face_varying_refinement.h"
 #include "crossdiv/subdiv/limit.h"
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/subdiv/loop_streaming.h"
@@ -33,13 +34,14 @@ Capabilities core_capabilities() {
     for (DooSabinWeights w : {DooSabinWeights::DooSabin, DooSabinWeights::CatmullClark})
         for (DooSabinBoundary b : {DooSabinBoundary::ChaikinBoundary, DooSabinBoundary::DropBorderFaces})
             doo_sabin.push_back(doo_sabin_rule(b, w));
-    c.schemes = {supports(Scheme::Loop, loop, true), supports(Scheme::CatmullClark, catmull_clark, true),
+    c.schemes = {with_face_varying(supports(Scheme::Loop, loop, true)),
+                 with_face_varying(supports(Scheme::CatmullClark, catmull_clark, true)),
                  supports(Scheme::DooSabin, doo_sabin),
                  supports(Scheme::Sqrt3, {sqrt3_rule(Sqrt3Parity::CountFromInput), sqrt3_rule(Sqrt3Parity::RestartEachLevel)}),
                  supports(Scheme::Butterfly, {butterfly_rule(ButterflyWings::Reflected), butterfly_rule(ButterflyWings::OppositeVertex)}),
                  supports(Scheme::ModifiedButterfly,
                           {butterfly_rule(ButterflyWings::Reflected), butterfly_rule(ButterflyWings::OppositeVertex)}),
-                 supports(Scheme::Bilinear, {SchemeRule{}})};
+                 with_face_varying(supports(Scheme::Bilinear, {SchemeRule{}}))};
     c.limit_positions = true;
     c.curvatures = true;
     return c;
@@ -60,8 +62,38 @@ PolyMesh subdivide(const PolyMesh& mesh, const RefineRequest& r, int levels) {
     throw InputError("unknown scheme");
 }
 
+/// Levels 0..N with the face-varying channels refined (face_varying_refinement.h), for Loop,
+/// Catmull-Clark and bilinear on a manifold; nothing for a mesh that is not one (its
+/// positions are then refined without the channels, and the comparison says so), or for a
+/// tagged mesh under bilinear (refused there, as without channels).
+std::optional<adapters::LevelTrace> face_varying_levels(const PolyMesh& mesh, const RefineRequest& r) {
+    if (r.scheme == Scheme::Bilinear && !mesh.creases.empty()) return std::nullopt;  // refused as without channels
+    const FaceVaryingScheme scheme = r.scheme == Scheme::Loop           ? FaceVaryingScheme::Loop
+                                     : r.scheme == Scheme::CatmullClark ? FaceVaryingScheme::CatmullClark
+                                                                        : FaceVaryingScheme::Bilinear;
+    const bool corners_sharp = r.scheme == Scheme::Loop ? r.rule.loop.boundary == LoopBoundary::EdgeAndCorner
+                                                        : r.rule.catmull_clark.boundary == CatmullClarkBoundary::EdgeAndCorner;
+    const FaceVaryingOptions options{*r.face_varying, corners_sharp && r.scheme != Scheme::Bilinear,
+                                     r.scheme == Scheme::Loop ? r.rule.loop.creasing : r.rule.catmull_clark.creasing};
+    try {
+        return subdivide_levels_with_face_varying(mesh, scheme, options, r.levels,
+                                                  [&](const PolyMesh& m, const PolyConnectivity& conn) {
+                                                      switch (r.scheme) {
+                                                          case Scheme::Loop: return loop_step(m, conn, r.rule.loop);
+                                                          case Scheme::CatmullClark: return catmull_clark_step(m, conn, r.rule.catmull_clark);
+                                                          default: return bilinear_step(m);
+                                                      }
+                                                  });
+    } catch (const NonManifoldInput&) {
+        return std::nullopt;
+    }
+}
+
 /// Levels 0..N, with Loop's provenance when `births` is asked for.
 Refinement refinement(const PolyMesh& mesh, const RefineRequest& r, bool births) {
+    if (r.face_varying && !mesh.face_varying.empty() &&
+        (r.scheme == Scheme::Loop || r.scheme == Scheme::CatmullClark || r.scheme == Scheme::Bilinear))
+        if (std::optional<adapters::LevelTrace> levels = face_varying_levels(mesh, r)) return {std::move(*levels), {}};
     Refinement out{{mesh}, {}};
     adapters::LevelTrace& trace = out.levels;
     using Kind = VertexBirth::Kind;
@@ -121,7 +153,10 @@ public:
         return out;
     }
 
-    PolyMesh refine_last(const PolyMesh& mesh, const RefineRequest& r) const override { return subdivide(mesh, r, r.levels); }
+    PolyMesh refine_last(const PolyMesh& mesh, const RefineRequest& r) const override {
+        if (r.face_varying && !mesh.face_varying.empty()) return refinement(mesh, r, false).levels.back();
+        return subdivide(mesh, r, r.levels);
+    }
 
 
     size_t refine_native(const TriMesh& mesh, const RefineRequest& r) const override {

@@ -7,6 +7,7 @@
 
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/datasets/edge_cases.h"
+#include "crossdiv/datasets/uv_layouts.h"
 #include "crossdiv/error.h"
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/verification/implementations/registry.h"
@@ -57,7 +58,13 @@ std::vector<std::string> folder_inputs(const std::string& spec) {
 std::vector<std::string> expand_inputs(const std::vector<std::string>& specs) {
     std::vector<std::string> out;
     for (const std::string& s : specs) {
-        if (s.starts_with("dir:")) {
+        if (s.starts_with("uv:") && s.ends_with(":all")) {
+            // uv:LAYOUT:COLLECTION: each input of the collection with texture coordinates.
+            const size_t colon = s.find(':', 3);
+            const std::string layout = s.substr(3, colon - 3);
+            (void)datasets::uv_layout_from_string(layout);  // an unknown layout is refused here
+            for (std::string& in : expand_inputs({s.substr(colon + 1)})) out.push_back("uv:" + layout + ":" + in);
+        } else if (s.starts_with("dir:")) {
             for (std::string& f : folder_inputs(s)) out.push_back(std::move(f));
         } else if (s == "bundled:all") {
             for (const auto& b : datasets::bundled_meshes()) out.push_back("bundled:" + b.name);
@@ -67,6 +74,11 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& specs) {
             for (const auto& c : datasets::edge_cases()) out.push_back("edgecase:" + c.name);
         } else if (s == "polygon-edgecases:all") {
             for (const auto& c : datasets::polygon_edge_cases()) out.push_back("edgecase:" + c.name);
+        } else if (s == "uv-edgecases:all") {
+            for (const auto& c : datasets::uv_edge_cases()) out.push_back("edgecase:" + c.name);
+        } else if (s == "uv-edgecases-tri:all") {  // their triangulations: Loop's inputs
+            for (const auto& c : datasets::uv_edge_cases())
+                if (c.name.ends_with("-tri")) out.push_back("edgecase:" + c.name);
         } else if (s == "course:all") {
             for (const auto& f : datasets::course_mesh_files()) out.push_back(f);
         } else if (s == "meshedit:all") {
@@ -74,7 +86,7 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& specs) {
         } else if (s == "cgal:all") {
             for (const auto& f : datasets::cgal_mesh_files()) out.push_back(f);
         } else if (s.ends_with(":all")) {
-            throw InputError("unknown collection '" + s + "' (known: bundled:all, polygons:all, edgecases:all, polygon-edgecases:all, course:all, meshedit:all, cgal:all)");
+            throw InputError("unknown collection '" + s + "' (known: bundled:all, polygons:all, edgecases:all, polygon-edgecases:all, uv-edgecases:all, uv-edgecases-tri:all, course:all, meshedit:all, cgal:all)");
         } else {
             out.push_back(s);
         }
@@ -85,6 +97,16 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& specs) {
 namespace {
 
 PolyMesh read_input(const std::string& spec) {
+    if (spec.starts_with("uv:")) {
+        // uv:LAYOUT:INPUT, the input with texture coordinates in a named layout (uv_layouts.h).
+        const size_t colon = spec.find(':', 3);
+        if (colon == std::string::npos)
+            throw InputError("'" + spec + "': expected uv:LAYOUT:INPUT (layouts: " + variant_names(datasets::kUvLayouts) + ")");
+        const datasets::UvLayout layout = datasets::uv_layout_from_string(spec.substr(3, colon - 3));
+        PolyMesh m = datasets::with_uv_layout(read_input(spec.substr(colon + 1)), layout);
+        m.source.file = spec;
+        return m;
+    }
     if (spec.starts_with("bundled:")) return datasets::bundled_mesh(spec.substr(8));
     if (spec.starts_with("edgecase:")) return datasets::edge_case(spec.substr(9)).mesh;
     if (std::optional<PolyMesh> m = read_with_input_adapter(spec)) return std::move(*m);
@@ -93,8 +115,8 @@ PolyMesh read_input(const std::string& spec) {
     if (const size_t colon = spec.find(':'); colon != std::string::npos && colon > 0 &&
                                              spec.find('/') > colon && !std::filesystem::exists(spec))
         throw InputError("'" + spec + "' is neither a file nor a known input name (known: bundled:NAME, " +
-                         "edgecase:NAME, dir:FOLDER, and the collections bundled:all, polygons:all, edgecases:all, " +
-                         "polygon-edgecases:all, " +
+                         "edgecase:NAME, uv:LAYOUT:INPUT, dir:FOLDER, and the collections bundled:all, polygons:all, edgecases:all, " +
+                         "polygon-edgecases:all, uv-edgecases:all, uv-edgecases-tri:all, " +
                          "course:all, meshedit:all, cgal:all)");
     return read_mesh(spec);
 }

@@ -22,7 +22,13 @@ std::unique_ptr<Implementation> make_skimage_implementation();
 /// The scheme support of one rule list, for the declarations below.
 inline SchemeSupport supports(Scheme scheme, std::vector<SchemeRule> rules, bool creases = false, int max_valence = 0,
                               std::string valence_table = {}) {
-    return {scheme, std::move(rules), creases, max_valence, std::move(valence_table)};
+    return {scheme, std::move(rules), creases, max_valence, std::move(valence_table), false};
+}
+
+/// `s` with face-varying channels refined too.
+inline SchemeSupport with_face_varying(SchemeSupport s) {
+    s.face_varying = true;
+    return s;
 }
 
 /// A rule of `scheme` given by its variant alone.

@@ -12,17 +12,17 @@ class OpenSubdiv final : public Implementation {
 public:
     OpenSubdiv()
         : Implementation("opensubdiv", osd::version(), ImplementationKind::Library,
-                         {.schemes = {supports(Scheme::Loop,
-                                               {loop_rule(LoopWeights::Loop, LoopBoundary::EdgeOnly),
-                                                loop_rule(LoopWeights::Loop, LoopBoundary::EdgeAndCorner)},
-                                               true),
-                                      supports(Scheme::CatmullClark,
-                                               {catmull_clark_rule(CatmullClarkBoundary::EdgeOnly),
-                                                catmull_clark_rule(CatmullClarkBoundary::EdgeAndCorner),
-                                                catmull_clark_rule(CatmullClarkBoundary::EdgeOnly, true),
-                                                catmull_clark_rule(CatmullClarkBoundary::EdgeAndCorner, true)},
-                                               true),
-                                      supports(Scheme::Bilinear, {SchemeRule{}})},
+                         {.schemes = {with_face_varying(supports(Scheme::Loop,
+                                                                 {loop_rule(LoopWeights::Loop, LoopBoundary::EdgeOnly),
+                                                                  loop_rule(LoopWeights::Loop, LoopBoundary::EdgeAndCorner)},
+                                                                 true)),
+                                      with_face_varying(supports(Scheme::CatmullClark,
+                                                                 {catmull_clark_rule(CatmullClarkBoundary::EdgeOnly),
+                                                                  catmull_clark_rule(CatmullClarkBoundary::EdgeAndCorner),
+                                                                  catmull_clark_rule(CatmullClarkBoundary::EdgeOnly, true),
+                                                                  catmull_clark_rule(CatmullClarkBoundary::EdgeAndCorner, true)},
+                                                                 true)),
+                                      with_face_varying(supports(Scheme::Bilinear, {SchemeRule{}}))},
                           .limit_positions = true,
                           .limit_surface = true}) {}
 
@@ -41,6 +41,12 @@ private:
     adapters::LevelTrace levels(const PolyMesh& mesh, const RefineRequest& r, adapters::LevelBirths* births) const {
         check_refinable(r.scheme);
         const SchemeRule rule = closest_rule(r.scheme, r.rule);
+        if (r.face_varying && !mesh.face_varying.empty()) {  // PrimvarRefiner::InterpolateFaceVarying too
+            if (r.scheme == Scheme::CatmullClark)
+                return osd::catmull_clark_face_varying(mesh, rule.catmull_clark, *r.face_varying, r.levels, births);
+            if (r.scheme == Scheme::Bilinear) return osd::bilinear_face_varying(mesh, *r.face_varying, r.levels, births);
+            return osd::loop_face_varying(mesh, rule.loop, *r.face_varying, r.levels, births);
+        }
         if (r.scheme == Scheme::CatmullClark) return osd::catmull_clark(mesh, rule.catmull_clark, r.levels, births);
         if (r.scheme == Scheme::Bilinear) return osd::bilinear(mesh, r.levels, births);
         // Untagged triangle meshes go through Far's triangle path, tagged ones carry their tags.

@@ -50,6 +50,28 @@ CreaseMethod crease_method(const std::string& flag, const PolyMesh& mesh) {
     return mesh.creases.method.value_or(CreaseMethod::Uniform);
 }
 
+std::optional<FaceVaryingRule> face_varying_rule(Scheme scheme, const std::string& flag, const PolyMesh& mesh,
+                                                 std::vector<std::string>& notes) {
+    const std::optional<FaceVaryingRule> named =
+        flag.empty() ? std::nullopt : std::optional<FaceVaryingRule>(face_varying_rule_from_string(flag));
+    const std::string file = mesh.source.file.empty() ? "the input" : mesh.source.file;
+    if (mesh.face_varying.empty()) {
+        if (named)
+            notes.push_back(file + " has no texture coordinates (face-varying data); the face-varying rule asked for (" + flag +
+                            ") changes nothing");
+        return std::nullopt;
+    }
+    if (scheme != Scheme::Loop && scheme != Scheme::CatmullClark && scheme != Scheme::Bilinear) {
+        notes.push_back(file + "'s texture coordinates are not refined: " + to_string(scheme) +
+                        " has no face-varying rules here (loop, catmull-clark and bilinear have)");
+        return std::nullopt;
+    }
+    if (named && mesh.creases.face_varying && *mesh.creases.face_varying != *named)
+        notes.push_back("the face-varying rule asked for (" + flag + ") overrides " + file +
+                        "'s facevaryinginterpolateboundary tag (" + std::string(to_string(*mesh.creases.face_varying)) + ")");
+    return named ? named : mesh.creases.face_varying.value_or(FaceVaryingRule::All);
+}
+
 SchemeRule rule_with_tags(Scheme scheme, const RuleFlags& flags, PolyMesh& mesh, std::vector<std::string>& notes) {
     const TagRules tags = resolve_tag_rules(scheme, flags.boundary, mesh);
     notes.insert(notes.end(), tags.notes.begin(), tags.notes.end());

@@ -129,6 +129,23 @@ CaseRecord case_record(const RefinementComparison& comparison) {
                                                                                : comparison.subject_topology);
     }
     for (size_t i = 0; i < comparison.runs.size(); ++i) c.runs.push_back(reference_run(runs[i], comparison.runs[i]));
+    // Texture coordinates compared per corner: a run of their own, beside the positions', so
+    // that the summary, JUnit and the exit status count a face-varying verdict as they count
+    // any other (an unexplained one is a failure).
+    for (const RefinementRun& run : comparison.runs) {
+        if (!run.uv || !run.uv->compared()) continue;
+        RunRecord r;
+        r.reference = run.reference;
+        r.subject = comparison.subject;
+        r.check = "texture coordinates (" + std::string(to_string(*comparison.face_varying)) + ")";
+        r.outcome = run.uv->outcome;
+        r.status = run.outcome.status;
+        r.measured = run.uv->comparison.max_rel;
+        r.tolerance = comparison.tolerance;
+        r.unit = "of the UV box";
+        r.explanation = run.uv->explanation;
+        c.runs.push_back(std::move(r));
+    }
     return c;
 }
 

@@ -93,11 +93,14 @@ void parse_keys(const std::string& file, int line, std::istringstream& words, co
 }
 
 /// The keys of a loop case: its rules, levels, references, tier and tolerance.
-void parse_loop_keys(const std::string& file, int line, std::istringstream& words, RefinementRequest& r) {
+void parse_loop_keys(const std::string& file, int line, std::istringstream& words, RefinementRequest& r, RuleFlags& flags) {
     r.rule.loop = {LoopWeights::Loop, LoopBoundary::EdgeOnly};
-    parse_keys(file, line, words, "weights, boundary, levels, against, tier, tolerance, refuses",
+    parse_keys(file, line, words, "weights, boundary, fvar, levels, against, tier, tolerance, refuses",
                [&](const std::string& key, const std::string& value) {
-                   if (key == "weights") {
+                   if (key == "fvar") {
+                       flags.face_varying = value;
+                       at_line(file, line, [&] { return face_varying_rule_from_string(value); });
+                   } else if (key == "weights") {
                        r.rule.loop.weights = at_line(file, line, [&] { return loop_weights_from_string(value); });
                    } else if (key == "boundary") {
                        if (value != "edge-only" && value != "edge-and-corner")
@@ -116,10 +119,15 @@ void parse_loop_keys(const std::string& file, int line, std::istringstream& word
 void parse_scheme_keys(const std::string& file, int line, std::istringstream& words, Scheme scheme, RefinementRequest& r,
                        RuleFlags& flags) {
     const bool creases = scheme == Scheme::CatmullClark;
+    const bool fvar = creases || scheme == Scheme::Bilinear;
     parse_keys(file, line, words,
-               std::string("boundary, ") + (creases ? "crease-method, " : "") + "levels, against, tier, tolerance, refuses",
+               std::string("boundary, ") + (creases ? "crease-method, " : "") + (fvar ? "fvar, " : "") +
+                   "levels, against, tier, tolerance, refuses",
                [&](const std::string& key, const std::string& value) {
-                   if (key == "boundary") {
+                   if (key == "fvar" && fvar) {
+                       flags.face_varying = value;
+                       at_line(file, line, [&] { return face_varying_rule_from_string(value); });
+                   } else if (key == "boundary") {
                        // `none` is OpenSubdiv's VTX_BOUNDARY_NONE: edge-only with the boundary
                        // faces made holes, per input (resolve_tag_rules).
                        if (value != "none" || scheme != Scheme::CatmullClark)
@@ -191,7 +199,7 @@ ManifestEntry parse_case(const std::string& file, int line, std::istringstream& 
     const Scheme scheme = e.operation->scheme;
     e.request.scheme = scheme;
     std::vector<std::string>& references = e.request.references;
-    if (scheme == Scheme::Loop) parse_loop_keys(file, line, words, e.request);
+    if (scheme == Scheme::Loop) parse_loop_keys(file, line, words, e.request, e.rule_flags);
     else parse_scheme_keys(file, line, words, scheme, e.request, e.rule_flags);
     // Without against=, the references registered so far: a `reference` statement joins
     // the cases after it.
@@ -222,6 +230,7 @@ std::string describe_entry(const ManifestEntry& e) {
         s += " boundary=" + (e.rule_flags.boundary.empty() ? std::string("default") : e.rule_flags.boundary);
         if (!e.rule_flags.creasing.empty()) s += " crease-method=" + e.rule_flags.creasing;
     }
+    if (!e.rule_flags.face_varying.empty()) s += " fvar=" + e.rule_flags.face_varying;
     s += " L" + std::to_string(e.request.levels) + " " + to_string(tier);
     if (tier != Tier::Strict) {
         char buf[32];

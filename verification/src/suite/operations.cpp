@@ -120,10 +120,15 @@ CaseRecord run_refinement(const SuiteJob& job, const std::string& out_dir) {
     PolyMesh input = load_input(job.input);
     require_refined_size(input, req.scheme, req.levels, entry.max_faces, job.input, "the manifest's max-faces");
     std::vector<std::string> notes;
-    if (req.scheme == Scheme::Loop)
-        (void)to_tri_mesh(input, "Loop subdivision");  // a polygon is refused by name, as the CLI does
-    else
+    if (req.scheme == Scheme::Loop) {
+        PolyMesh faces_only = input;  // a polygon is refused by name, tagged or not, as the CLI does
+        faces_only.creases = {};
+        (void)to_tri_mesh(faces_only, "Loop subdivision");
+    } else {
         req.rule = rule_with_tags(req.scheme, entry.rule_flags, input, notes);
+    }
+    // Texture coordinates, where the input has them: the case's fvar=, the file's tag, or all.
+    req.face_varying = face_varying_rule(req.scheme, entry.rule_flags.face_varying, input, notes);
     RefinementComparison c = compare_refinement(input, job.input, req);
     if (c.view) c.view->minimal = shrink_for_view(input, job.input, req, c, minimal_obj_name(job));
     CaseRecord rec = case_record(c);
@@ -208,6 +213,8 @@ const std::vector<SuiteOperation>& suite_operations() {
          run_study<creases_study>},
         {"limit-positions", OperationKind::Study, "limit positions and normals against OpenSubdiv, Bfr at (u, v)",
          one_collection<kCatalog>, run_study<limit_positions_study>},
+        {"face-varying", OperationKind::Study, "texture coordinates from x and y refine, under the smooth rule, as the positions do: core and each reference with face-varying rules",
+         one_collection<kCatalog>, run_study<face_varying_study>},
         {"vertex-age", OperationKind::Study, "the level each vertex was born at, every scheme, against the topology",
          one_collection<kCatalog>, run_study<vertex_age_study>},
         {"curvature", OperationKind::Study, "discrete curvature against the analytic sphere and torus and CGAL's jet fitting, Gauss-Bonnet, Loop's curvature at extraordinary vertices",

@@ -13,15 +13,19 @@
 
 namespace crossdiv {
 
-/// Reads a Wavefront OBJ: `v x y z [r g b]` and `f` lines (`i`, `i/t`, `i//n`, `i/t/n`;
-/// negative indices count back from the last vertex read). Texture coordinates, normals,
-/// groups, objects, smoothing groups, materials, lines and tags are skipped. Lines with an
+/// Reads a Wavefront OBJ: `v x y z [r g b]`, `vt u [v [w]]` and `f` lines (`i`, `i/t`, `i//n`,
+/// `i/t/n`; negative indices count back from the last vertex or texture coordinate read).
+/// Texture coordinates the faces index become face-varying channel "uv" (2 components, 3
+/// when a `vt` has a w), exactly as written; normals, groups, objects, smoothing groups,
+/// materials and lines are skipped; OpenSubdiv's shape-file tags are read (crease_tags.h). Lines with an
 /// unknown statement are skipped too (real course files carry browser HTML around the OBJ)
 /// and summarized in source.notes with the first such line; geometry lost that way shows up
 /// as an out-of-range index, which is an error.
 /// @param name the file name used in messages.
-/// @throws ParseError with `name:line` on a malformed `v` or `f` line, a missing or
-///         non-numeric coordinate, NaN or infinity, or an index that is 0 or out of range.
+/// @throws ParseError with `name:line` on a malformed `v`, `vt` or `f` line, a missing or
+///         non-numeric coordinate, NaN or infinity, an index that is 0 or out of range, or a
+///         face corner without a texture index in a file whose first corner has one (or the
+///         reverse).
 PolyMesh read_obj(std::istream& in, const std::string& name);
 
 /// Reads an OFF file (`OFF` or `COFF` header, counts, vertices, faces `n i0 .. in-1`).
@@ -45,9 +49,12 @@ std::span<const std::string_view> mesh_extensions();
 ///         on malformed content.
 PolyMesh read_mesh(const std::string& path);
 
-/// Writes OBJ (`v x y z [r g b]`, 1-based `f` lines) with 17 significant digits. With
-/// `normals` (one per vertex), also `vn` lines and faces as `f a//a b//b c//c`.
-/// @throws std::logic_error if normals is neither empty nor one per vertex.
+/// Writes OBJ (`v x y z [r g b]`, 1-based `f` lines) with 17 significant digits. The first
+/// face-varying channel, if any, is written as `vt` lines and faces `f v/t ...`. With
+/// `normals` (one per vertex), also `vn` lines and faces as `f a//a b//b c//c` (`a/t/a` with
+/// texture coordinates). Tags are written in the shape-file format.
+/// @throws std::logic_error if normals is neither empty nor one per vertex, or the channel
+///         does not fit the mesh.
 void write_obj(std::ostream& out, const PolyMesh& mesh, std::span<const Vec3> normals = {});
 /// Writes OFF with 17 significant digits.
 void write_off(std::ostream& out, const PolyMesh& mesh);

@@ -15,6 +15,7 @@
 #include <string_view>
 #include <vector>
 
+#include "crossdiv/mesh/face_varying_rule.h"
 #include "crossdiv/named_variant.h"
 
 namespace crossdiv {
@@ -87,6 +88,8 @@ struct CreaseTags {
     /// `t smoothtriangles 0/0/1 smooth|catmark`: Catmull-Clark's edge points next to
     /// triangles use OpenSubdiv's TRI_SUB_SMOOTH weights (true) or the plain ones.
     std::optional<bool> smooth_triangles;
+    /// The face-varying rule a file asks for (`t facevaryinginterpolateboundary 1/0/0 k`).
+    std::optional<FaceVaryingRule> face_varying;
 
     /// No sharpness and no holes: nothing that needs the rules of a tagged mesh. (The
     /// options above change a rule, which the commands resolve, not the mesh's refinement.)

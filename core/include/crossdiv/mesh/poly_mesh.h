@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "crossdiv/mesh/crease_tags.h"
+#include "crossdiv/mesh/face_varying.h"
 #include "crossdiv/mesh/source.h"
 
 namespace crossdiv {
@@ -31,6 +32,9 @@ struct PolyMesh {
     /// non-manifold refinement (subdiv/nonmanifold.h) makes and reads it; any label values,
     /// equal labels meaning one edge.
     std::vector<int> corner_edges;
+    /// Face-varying channels (texture coordinates): values per face corner, with their own
+    /// indexing (face_varying.h). Refinements that do not refine them drop them.
+    std::vector<FaceVaryingChannel> face_varying;
     MeshSource source;
 
     int num_vertices() const { return static_cast<int>(positions.size()); }

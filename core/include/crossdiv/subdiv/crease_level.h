@@ -54,6 +54,10 @@ public:
 
     /// Sharpness of edge e at this level (infinite on the boundary).
     float edge_sharpness(int e) const { return edge_[static_cast<size_t>(e)]; }
+    /// Sharpness of the next level's half of edge e that ends at vertex v (an end of e).
+    float child_half_sharpness(int e, int v) const {
+        return half_[2 * static_cast<size_t>(e) + (conn_.edge_vertices[e][0] == v ? 0 : 1)];
+    }
     /// Whether the new point on edge e is a crease in the next level (both halves stay sharp).
     bool edge_child_is_crease(int e) const {
         return is_sharp(half_[2 * static_cast<size_t>(e)]) && is_sharp(half_[2 * static_cast<size_t>(e) + 1]);

@@ -22,6 +22,10 @@ namespace crossdiv {
 /// Sharpness at and above which a feature is infinitely sharp (Sdc::Crease::SHARPNESS_INFINITE).
 inline constexpr float kSharpnessInfinite = 10.0f;
 
+/// The crease mask (Sdc::Crease, Hoppe et al. 1994): 3/4 on the vertex, 1/8 on each end of
+/// its two sharp edges -- the cubic B-spline's vertex rule along the crease.
+inline constexpr double kCreaseVertexWeight = 0.75, kCreaseEdgeWeight = 0.125;
+
 inline bool is_sharp(float s) { return s > 0.0f; }
 inline bool is_infinitely_sharp(float s) { return s >= kSharpnessInfinite; }
 inline bool is_semi_sharp(float s) { return s > 0.0f && s < kSharpnessInfinite; }
@@ -103,10 +107,10 @@ struct VertexPointMask {
     /// The crease mask: 3/4 on the vertex, 1/8 on the other ends of incident edges `end0`
     /// and `end1` (indices into the vertex's edge order), of `edges` incident edges.
     void set_crease(int edges, int end0, int end1) {
-        vertex = 0.75;
+        vertex = kCreaseVertexWeight;
         has_edges = true;
         edge.assign(static_cast<size_t>(edges), 0.0);
-        edge[static_cast<size_t>(end0)] = edge[static_cast<size_t>(end1)] = 0.125;
+        edge[static_cast<size_t>(end0)] = edge[static_cast<size_t>(end1)] = kCreaseEdgeWeight;
         face.clear();
     }
     /// The corner mask: the vertex stays.

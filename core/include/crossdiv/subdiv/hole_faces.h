@@ -29,7 +29,8 @@ void for_each_emitted_face(const PolyMesh& mesh, const Fn& fn) {
 
 /// The mesh as emitted: every face that is not a hole, in order, with its source line;
 /// every vertex kept, as Far keeps them, so that vertex numbers stay those of the refinement
-/// (a vertex only holes use is then unreferenced). The hole tags are dropped.
+/// (a vertex only holes use is then unreferenced). The hole tags are dropped; face-varying
+/// channels keep their values and the corners of the emitted faces.
 PolyMesh without_hole_faces(const PolyMesh& mesh);
 
 /// Sdc VTX_BOUNDARY_NONE, as TopologyRefinerFactoryBase::prepareComponentTagsAndSharpness

@@ -29,7 +29,8 @@ std::vector<EdgeCase> edge_cases();
 /// `valid_loop_input` says here whether the mesh is a manifold, consistently oriented.
 std::vector<EdgeCase> polygon_edge_cases();
 
-/// One case by name, of either list. @throws InputError naming the unknown name.
+/// One case by name, of either list or of the face-varying cases (uv_layouts.h).
+/// @throws InputError naming the unknown name.
 EdgeCase edge_case(const std::string& name);
 
 /// The closed benchmark mesh: an irregular torus (valences 4..8) with 2 nu nv faces,

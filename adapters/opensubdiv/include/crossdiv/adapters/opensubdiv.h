@@ -115,6 +115,20 @@ LimitPoints catmull_clark_limit(const PolyMesh& mesh, const CatmullClarkOptions&
 /// (tag_boundary_faces_as_holes). @throws Rejected when Far's factory refuses the mesh.
 std::vector<int> boundary_none_holes(const PolyMesh& mesh, bool loop);
 
+/// `levels` uniform levels with the mesh's first face-varying channel refined by
+/// PrimvarRefinerReal<double>::InterpolateFaceVarying under `rule` (Sdc
+/// FVarLinearInterpolation), level by level in double: every level in Far's order (positions,
+/// faces, hole faces as hole tags), each with the channel in Far's value numbering
+/// (GetFaceFVarValues). Tags, options and `births` as catmull_clark() and loop().
+/// @throws Rejected for a mesh without a channel, options Far lacks, or a topology Far refuses.
+LevelTrace catmull_clark_face_varying(const PolyMesh& mesh, const CatmullClarkOptions& options, FaceVaryingRule rule,
+                                      int levels, LevelBirths* births = nullptr);
+/// Loop, as catmull_clark_face_varying. @throws Rejected also for a face that is not a triangle.
+LevelTrace loop_face_varying(const PolyMesh& mesh, const LoopOptions& options, FaceVaryingRule rule, int levels,
+                             LevelBirths* births = nullptr);
+/// Bilinear (SCHEME_BILINEAR): every rule refines linearly there.
+LevelTrace bilinear_face_varying(const PolyMesh& mesh, FaceVaryingRule rule, int levels, LevelBirths* births = nullptr);
+
 /// "OpenSubdiv 3.5.0" (from opensubdiv/version.h).
 std::string version();
 

@@ -22,6 +22,7 @@
 #include "crossdiv/mesh/poly_mesh.h"
 #include "crossdiv/verification/comparisons/divergence_view.h"
 #include "crossdiv/verification/comparisons/rule_identification.h"
+#include "crossdiv/verification/harness/corner_values.h"
 #include "crossdiv/verification/harness/correspondence.h"
 #include "crossdiv/verification/harness/isolate.h"
 #include "crossdiv/verification/harness/mesh_comparison.h"
@@ -68,6 +69,27 @@ struct RefinementRequest {
     /// (ours-rejected, class unexplained) when not: core refusing what it used to take is a
     /// regression like any other.
     std::vector<DivergenceClass> expected_refusals;
+    /// Refine and compare the input's face-varying channels (texture coordinates) under this
+    /// rule, beside the positions (RefinementRun::uv); unset: positions only.
+    std::optional<FaceVaryingRule> face_varying;
+};
+
+/// The face-varying values (texture coordinates) of one run against the implementation under
+/// test's, corner by corner (harness/corner_values.h), in the request's tier: a verdict of its
+/// own beside the positions'.
+struct FaceVaryingRun {
+    /// Why nothing was compared ("" when compared): the reference refines no face-varying
+    /// data, the positions could not be matched, a side gave no values.
+    std::string not_compared;
+    CornerValueComparison comparison;
+    /// agree, or diverge with class fvar-rule (one side follows another of the six rules:
+    /// core re-run with that rule agrees with it) or unexplained (a failure).
+    Outcome outcome;
+    std::optional<FaceVaryingRule> follows;  ///< for fvar-rule: the rule that side follows
+    std::string who_follows;                 ///< that side: the reference's name or the implementation under test's
+    std::string worst_class;                 ///< the UV-vertex class of the worst corner (to_string(UvVertexClass))
+    std::string explanation;                 ///< one sentence with the measured figures
+    bool compared() const { return not_compared.empty(); }
 };
 
 /// One reference on one input.
@@ -86,6 +108,7 @@ struct RefinementRun {
     std::string explanation;                   ///< one sentence with the measured figures
     double max_rel_with_reference_rule = NAN;  ///< core re-run with the reference's rule, last level
     double hausdorff_rel = NAN;                ///< geometric tier: vertex-set Hausdorff distance / diagonal
+    std::optional<FaceVaryingRun> uv;          ///< when the request refines face-varying data
 };
 
 /// The vertex where some reference parts most from the implementation under test, with every
@@ -125,7 +148,9 @@ struct RefinementComparison {
     std::vector<RefinementRun> runs;
     std::optional<CaseWorstVertex> worst_vertex;  ///< when some reference diverges
     std::optional<DivergenceView> view;           ///< see RefinementRequest::view_max_faces
-    /// Some reference ran, and every one agrees (false when core refused the input).
+    std::optional<FaceVaryingRule> face_varying;  ///< the face-varying rule asked for, when the input has channels
+    /// Some reference ran, and every one agrees, in positions and, where compared, in
+    /// face-varying values (false when core refused the input).
     bool all_agree() const;
     /// The subject failed (crashed, hung, wrote nothing or something that is not a mesh of
     /// the scheme) or cannot be matched to core's refinement.

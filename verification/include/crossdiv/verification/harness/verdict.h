@@ -49,11 +49,18 @@ enum class DivergenceClass {
     Parity,                    ///< sqrt3: the boundary generations are counted per call
     WingRule,                  ///< Butterfly: another stand-in for a wing point beyond the boundary
     TriangleRule,              ///< Catmull-Clark: OpenSubdiv's smooth-triangle edge weights, or not
+    /// Face-varying values (texture coordinates) refined under another of OpenSubdiv's six
+    /// linear-interpolation rules than the one asked for
+    FaceVaryingRule,
     NormalRule,                ///< vertex normals by a rule that is none of our weightings (CGAL's most visible normal)
     /// A course task's subject follows another named convention than core's (a curve's
     /// basis, t read as 1 - t, a normal weighting, a cylinder's frames)
     Convention,
     // Something else measured:
+    /// The reference's result changes when the input's faces are listed in another order
+    /// (reversed, or rotated by half), the mesh unchanged: it depends on how the input is
+    /// written, where core's does not (OpenSubdiv's face-varying values at a UV bowtie)
+    FaceOrderDependence,
     Rounding,                  ///< same faces, within tolerances::kRoundingUlps of the coordinates
     IsolatedVertexHandling,    ///< only vertices without faces differ
     ValenceLimit,              ///< the reference's weight table ends below the input's valence
@@ -70,8 +77,9 @@ enum class DivergenceClass {
 };
 
 /// "" for None, else the class's name in results.json ("weight-family", "corner-rule",
-/// "weight-family+corner-rule", "boundary-rule", "border-faces-dropped", "parity", "wing-rule", "triangle-rule", "normal-rule",
-/// "convention", "rounding",
+/// "weight-family+corner-rule", "boundary-rule", "border-faces-dropped", "parity", "wing-rule", "triangle-rule",
+/// "fvar-rule", "normal-rule",
+/// "convention", "face-order-dependence", "rounding",
 /// "isolated-vertex-handling", "valence-limit", "topology", "triangulation",
 /// "unexplained", "non-manifold-handling", "orientation-handling", "degenerate-face-handling",
 /// "invalid-input-handling").

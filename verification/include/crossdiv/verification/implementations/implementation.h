@@ -51,6 +51,8 @@ struct SchemeSupport {
     /// it the implementation reads outside the table.
     int max_valence = 0;
     std::string valence_table;
+    /// Refines face-varying channels under OpenSubdiv's six rules (RefineRequest::face_varying).
+    bool face_varying = false;
 };
 
 /// What an implementation can do, declared.

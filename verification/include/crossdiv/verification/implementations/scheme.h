@@ -3,10 +3,12 @@
 /// The schemes every implementation is asked for, and their named rules: the vocabulary in
 /// which the harness states what it asks of core, of a library or of a user's code.
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "crossdiv/mesh/face_varying_rule.h"
 #include "crossdiv/subdiv/butterfly_mask.h"
 #include "crossdiv/subdiv/catmull_clark_mask.h"
 #include "crossdiv/subdiv/doo_sabin_mask.h"
@@ -75,6 +77,11 @@ struct RefineRequest {
     Scheme scheme = Scheme::Loop;
     SchemeRule rule;
     int levels = 1;
+    /// Refine the input's face-varying channels (texture coordinates) under this rule, on
+    /// every level returned. An implementation that cannot (SchemeSupport::face_varying false,
+    /// or a mesh it refines without them) returns positions only, and the comparison says the
+    /// values were not compared; unset, no implementation refines them.
+    std::optional<FaceVaryingRule> face_varying = std::nullopt;
 };
 
 }  // namespace crossdiv::verification

@@ -4,6 +4,7 @@
 /// resolved against a command's flags: an explicit flag wins, and says so when the file
 /// asked for something else.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,12 +37,22 @@ TagRules resolve_tag_rules(Scheme scheme, const std::string& boundary_flag, Poly
 /// @throws InputError for another flag.
 CreaseMethod crease_method(const std::string& flag, const PolyMesh& mesh);
 
+/// The face-varying rule a run refines `mesh`'s channels with: `flag` (a FaceVaryingRule name)
+/// when given, else the file's `t facevaryinginterpolateboundary` tag, else OpenSubdiv's
+/// default (`all`); nothing for a mesh without channels (a flag is then noted in `notes`), or
+/// for a scheme without face-varying rules (Loop, Catmull-Clark and bilinear have them; the
+/// channels are then noted as dropped).
+/// @throws InputError for an unknown rule name.
+std::optional<FaceVaryingRule> face_varying_rule(Scheme scheme, const std::string& flag, const PolyMesh& mesh,
+                                                 std::vector<std::string>& notes);
+
 /// What a command's flags or a manifest case's keys say of a polygon scheme's rule; an empty
 /// name leaves it to the file's tags, then to the default.
 struct RuleFlags {
     std::string boundary;  ///< rule_from_boundary_name's names
     std::string creasing;  ///< crease_method's flag
     NonManifoldRule nonmanifold = NonManifoldRule::OpenSubdiv;
+    std::string face_varying = {};  ///< face_varying_rule's flag (a FaceVaryingRule name)
 };
 
 /// The rule a run uses on `mesh`: the flags, the file's tags where no flag is given

@@ -32,6 +32,11 @@ CheckReport vertex_age_study();
 CheckReport spectrum_study();
 /// The convergence table, valence 3..12, levels 1..8.
 CheckReport convergence_study();
+/// The identity OpenSubdiv documents for face-varying data: texture coordinates copied from x
+/// and y, one per vertex, refine under the smooth rule (`none`) exactly as the positions do.
+/// Checked for core and for every reference that refines face-varying data, Catmull-Clark on
+/// every catalog and crease mesh and Loop on the triangle ones, both boundary rules, 2 levels.
+CheckReport face_varying_study();
 
 /// A mesh as {positions, faces} for the report's figures (mesh_json.cpp).
 nlohmann::json mesh_json(const PolyMesh& m);

@@ -1,0 +1,238 @@
+// Face-varying refinement through the harness: what `crossdiv subdivide --fvar RULE -o OUT.obj`
+// writes (core's refinement, hole faces dropped, OBJ written and read back) is what
+// OpenSubdiv's refiner gives, to 1e-12 of the UV box, for every rule, on every face-varying
+// edge case and on every catalog mesh in every UV layout; and the per-corner comparison
+// itself, on hand-made differences.
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "library_guard.h"
+
+#include "crossdiv/datasets/bundled.h"
+#include "crossdiv/datasets/edge_cases.h"
+#include "crossdiv/datasets/uv_layouts.h"
+#include "crossdiv/error.h"
+#include "crossdiv/io/mesh_io.h"
+#include "crossdiv/subdiv/hole_faces.h"
+#include "crossdiv/verification/harness/corner_values.h"
+#include "crossdiv/verification/harness/correspondence.h"
+#include "crossdiv/verification/comparisons/refinement_comparison.h"
+#include "crossdiv/verification/implementations/callback_implementation.h"
+#include "crossdiv/verification/implementations/registry.h"
+
+namespace crossdiv::verification {
+namespace {
+
+/// What the face-varying issue asks of `subdivide`: agreement with Far to 1e-12 of the UV box.
+/// Both sum a handful of terms per level in double, so two levels differ by rounding only
+/// (measured: 1e-16 of the box).
+constexpr double kUvAgreement = 1e-12;
+
+PolyMesh obj_round_trip(const PolyMesh& m) {
+    std::ostringstream out;
+    write_obj(out, m);
+    std::istringstream in(out.str());
+    return read_obj(in, "out.obj");
+}
+
+struct Case {
+    std::string name;
+    PolyMesh mesh;
+};
+
+std::vector<Case> face_varying_inputs() {
+    std::vector<Case> out;
+    for (datasets::UvEdgeCase& c : datasets::uv_edge_cases()) out.push_back({"edgecase:" + c.name, std::move(c.mesh)});
+    std::vector<datasets::BundledMesh> meshes = datasets::catalog_meshes();
+    for (datasets::BundledMesh& c : datasets::crease_meshes()) meshes.push_back(std::move(c));
+    for (const datasets::BundledMesh& m : meshes)
+        for (datasets::UvLayout layout : datasets::kUvLayouts)
+            out.push_back({"uv:" + std::string(to_string(layout)) + ":bundled:" + m.name, datasets::with_uv_layout(m.mesh, layout)});
+    return out;
+}
+
+TEST(FaceVaryingSubdivide, WhatSubdivideWritesIsWhatFarComputesForEveryRule) {
+    CROSSDIV_REQUIRE_LIBRARIES("opensubdiv");
+    const Implementation& core = core_implementation();
+    const Implementation& far = find_implementation("opensubdiv");
+    int compared = 0;
+    std::vector<std::string> refused;
+    for (const Case& c : face_varying_inputs()) {
+        for (Scheme scheme : {Scheme::CatmullClark, Scheme::Loop}) {
+            if (scheme == Scheme::Loop && !c.mesh.all_triangles()) continue;
+            for (bool corners : {false, true})
+                for (FaceVaryingRule rule : kFaceVaryingRules) {
+                    RefineRequest r{scheme, {}, 2, rule};
+                    r.rule.loop.boundary = corners ? LoopBoundary::EdgeAndCorner : LoopBoundary::EdgeOnly;
+                    r.rule.catmull_clark.boundary = corners ? CatmullClarkBoundary::EdgeAndCorner : CatmullClarkBoundary::EdgeOnly;
+                    const std::string what = c.name + " " + to_string(scheme) + " " + std::string(to_string(rule)) +
+                                             (corners ? " edge-and-corner" : " edge-only");
+                    adapters::LevelTrace ours;
+                    try {
+                        ours = core.refine(c.mesh, r);
+                    } catch (const InputError& e) {
+                        refused.push_back(what + ": " + e.what());
+                        continue;
+                    }
+                    const adapters::LevelTrace theirs = far.refine(c.mesh, r);
+                    const Correspondence match = match_refinement(level_view(ours), theirs);
+                    ASSERT_NE(match.method, MatchMethod::None) << what << ": " << match.note;
+                    const PolyMesh written = obj_round_trip(without_hole_faces(ours.back()));
+                    ASSERT_EQ(written.face_varying.size(), 1u) << what;
+                    const CornerValueComparison cmp = compare_corner_values(written, without_hole_faces(theirs.back()), match.ref_to_ours);
+                    ASSERT_TRUE(cmp.compared()) << what << ": " << cmp.not_compared;
+                    EXPECT_EQ(cmp.corners, static_cast<int>(written.face_vertices.size())) << what;
+                    ++compared;
+                    if (rule == FaceVaryingRule::None && c.name.starts_with("edgecase:uv-bowtie")) {
+                        // Far splits one of the bowtie vertex's values by face order (its test
+                        // FarSplitsABowtieValueByFaceOrder); core keeps both, whatever the order.
+                        EXPECT_GT(cmp.max_rel, 1e-3) << what;
+                        continue;
+                    }
+                    EXPECT_LE(cmp.max_rel, kUvAgreement) << what;
+                }
+        }
+    }
+    EXPECT_EQ(refused, std::vector<std::string>{});  // core refines every one
+    EXPECT_GT(compared, 2000);
+    std::printf("%d refinements written and compared with Far\n", compared);
+}
+
+TEST(FaceVaryingSubdivide, TheCornerComparisonMeasuresAndLocates) {
+    // One quad with a seam-free channel against the same with one corner's value moved by 0.25
+    // in u: measured at that corner, relative to the box (diagonal of (0,0)-(1,2): sqrt 5).
+    PolyMesh a;
+    a.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
+    a.add_face({0, 1, 2, 3});
+    a.face_varying.push_back({"uv", 2, {0, 0, 1, 0, 1, 1, 0, 2}, {0, 1, 2, 3}});
+    PolyMesh b = a;
+    // The reference numbers its vertices backwards (3 2 1 0) and its values its own way.
+    b.face_vertices = {3, 2, 1, 0};
+    b.face_varying[0] = {"uv", 2, {0, 2, 1.25, 1, 1, 0, 0, 0}, {0, 1, 2, 3}};
+    const std::vector<int> ref_to_ours = {0, 1, 2, 3};  // vertex i of b is a's vertex i
+    const CornerValueComparison c = compare_corner_values(a, b, ref_to_ours);
+    ASSERT_TRUE(c.compared()) << c.not_compared;
+    EXPECT_EQ(c.corners, 4);
+    EXPECT_DOUBLE_EQ(c.max_abs, 0.25);
+    EXPECT_DOUBLE_EQ(c.uv_box, std::sqrt(5.0));
+    EXPECT_EQ(c.worst_corner, 2);  // a's corner at vertex 2
+    // In a single quad every value has one face at its vertex: a UV corner.
+    EXPECT_EQ(uv_vertex_class(a, 0, 2), UvVertexClass::Corner);
+    // No channel on one side: said, not measured as agreement.
+    PolyMesh bare = b;
+    bare.face_varying.clear();
+    EXPECT_EQ(compare_corner_values(a, bare, ref_to_ours).not_compared, "the reference gave no face-varying values");
+}
+
+TEST(FaceVaryingSubdivide, UvVertexClassesOnTheEdgeCases) {
+    // The junction case: vertex (2, 2) (index 12) has three values; (2, 0) on the boundary two.
+    const PolyMesh j = datasets::edge_case("uv-junction").mesh;
+    auto class_at = [](const PolyMesh& m, int v) {
+        for (int f = 0; f < m.num_faces(); ++f)
+            for (int k = 0; k < m.face_size(f); ++k)
+                if (m.face(f)[k] == v) return uv_vertex_class(m, f, k);
+        return UvVertexClass::Interior;
+    };
+    EXPECT_EQ(class_at(j, 12), UvVertexClass::Junction);
+    EXPECT_EQ(class_at(j, 7), UvVertexClass::Seam);       // (2, 1): the seam between regions 0 and 1
+    EXPECT_EQ(class_at(j, 6), UvVertexClass::Interior);   // (1, 1)
+    EXPECT_EQ(class_at(j, 1), UvVertexClass::Boundary);   // (1, 0)
+    EXPECT_EQ(class_at(j, 0), UvVertexClass::Corner);     // (0, 0): one face
+}
+
+}  // namespace
+}  // namespace crossdiv::verification
+
+namespace crossdiv::verification {
+namespace {
+
+/// A subject that refines texture coordinates under `rule` whatever it is asked: core's
+/// refinement with the rule planted.
+std::unique_ptr<Implementation> subject_with_rule(FaceVaryingRule rule) {
+    return make_callback_implementation("planted-" + std::string(to_string(rule)), {Scheme::CatmullClark, Scheme::Loop},
+                                        [rule](const PolyMesh& mesh, const RefineRequest& r) {
+                                            RefineRequest asked = r;
+                                            asked.face_varying = rule;
+                                            return core_implementation().refine(mesh, asked).back();
+                                        });
+}
+
+TEST(FaceVaryingCompare, CompareGivesAPerCornerVerdictBesideThePositions) {
+    CROSSDIV_REQUIRE_LIBRARIES("opensubdiv", "openmesh");
+    RefinementRequest req;
+    req.scheme = Scheme::CatmullClark;
+    req.levels = 2;
+    req.face_varying = FaceVaryingRule::None;
+    req.references = {"opensubdiv", "openmesh"};
+    const PolyMesh mesh = datasets::edge_case("uv-junction").mesh;
+    const RefinementComparison c = compare_refinement(mesh, "edgecase:uv-junction", req);
+    ASSERT_EQ(c.runs.size(), 2u);
+    EXPECT_EQ(c.face_varying, FaceVaryingRule::None);
+    const RefinementRun& far = c.runs[0];
+    ASSERT_TRUE(far.uv && far.uv->compared()) << (far.uv ? far.uv->not_compared : "no uv");
+    EXPECT_EQ(far.uv->outcome.verdict, Verdict::Agree) << far.uv->explanation;
+    EXPECT_EQ(far.uv->comparison.corners, 4 * 256);
+    EXPECT_LE(far.uv->comparison.max_rel, 1e-12);
+    // OpenMesh refines positions only: its values are said not compared, and do not count.
+    const RefinementRun& om = c.runs[1];
+    ASSERT_TRUE(om.uv);
+    EXPECT_EQ(om.uv->not_compared, "openmesh refines no face-varying data");
+    const nlohmann::json j = to_json(c);
+    EXPECT_EQ(j["face_varying"], "none");
+    EXPECT_EQ(j["runs"][0]["uv"]["verdict"], "agree");
+    EXPECT_EQ(j["runs"][1]["uv"]["compared"], false);
+}
+
+TEST(FaceVaryingCompare, AReferenceOnAnotherRuleIsNamed) {
+    CROSSDIV_REQUIRE_LIBRARIES("opensubdiv");
+    // Core asked for none, Far asked for none too: agreement. Core asked for none, compared
+    // with Far's values as a subject planted with corners-only: named.
+    const PolyMesh mesh = datasets::edge_case("uv-seam").mesh;
+    for (FaceVaryingRule planted : {FaceVaryingRule::CornersOnly, FaceVaryingRule::Boundaries, FaceVaryingRule::All}) {
+        const std::unique_ptr<Implementation> subject = subject_with_rule(planted);
+        RefinementRequest req;
+        req.scheme = Scheme::CatmullClark;
+        req.levels = 2;
+        req.face_varying = FaceVaryingRule::None;
+        req.references = {"opensubdiv"};
+        req.subject = subject.get();
+        const RefinementComparison c = compare_refinement(mesh, "edgecase:uv-seam", req);
+        ASSERT_EQ(c.runs.size(), 1u);
+        const RefinementRun& far = c.runs[0];
+        EXPECT_EQ(far.verdict, Verdict::Agree) << far.explanation;  // positions: the subject is core's
+        ASSERT_TRUE(far.uv && far.uv->compared()) << (far.uv ? far.uv->not_compared : "no uv");
+        EXPECT_EQ(far.uv->outcome.verdict, Verdict::Diverge);
+        EXPECT_EQ(far.uv->outcome.cls, DivergenceClass::FaceVaryingRule) << far.uv->explanation;
+        EXPECT_EQ(far.uv->follows, planted) << far.uv->explanation;
+        EXPECT_EQ(far.uv->who_follows, subject->name());
+        EXPECT_FALSE(c.all_agree());
+    }
+}
+
+TEST(FaceVaryingCompare, AReferenceThatDependsOnFaceOrderIsNamedSo) {
+    CROSSDIV_REQUIRE_LIBRARIES("opensubdiv");
+    // The UV bowtie under `none`: Far splits one of the vertex's two values, which one
+    // depending on the order of the faces (OpenSubdivFaceVarying.FarSplitsABowtieValueByFaceOrder).
+    // Measured by running Far again with the faces listed otherwise; core's values do not move.
+    const PolyMesh mesh = datasets::edge_case("uv-bowtie").mesh;
+    RefinementRequest req;
+    req.scheme = Scheme::CatmullClark;
+    req.levels = 2;
+    req.face_varying = FaceVaryingRule::None;
+    req.references = {"opensubdiv"};
+    const RefinementComparison c = compare_refinement(mesh, "edgecase:uv-bowtie", req);
+    ASSERT_EQ(c.runs.size(), 1u);
+    const FaceVaryingRun& uv = *c.runs[0].uv;
+    EXPECT_EQ(uv.outcome.cls, DivergenceClass::FaceOrderDependence) << uv.explanation;
+    EXPECT_NE(uv.explanation.find("when the input's faces are rotated by half, where core's stay within"), std::string::npos)
+        << uv.explanation;
+    EXPECT_FALSE(uv.outcome.is_failure());
+    // Under a rule that keeps a one-face value (every other rule), the split changes nothing.
+    req.face_varying = FaceVaryingRule::CornersOnly;
+    const RefinementComparison kept = compare_refinement(mesh, "edgecase:uv-bowtie", req);
+    EXPECT_EQ(kept.runs[0].uv->outcome.verdict, Verdict::Agree) << kept.runs[0].uv->explanation;
+}
+
+}  // namespace
+}  // namespace crossdiv::verification
