@@ -29,12 +29,17 @@ PolyMesh read_mesh(const std::string& path) {
     const aiScene* scene = importer.ReadFile(path, aiProcess_PreTransformVertices);
     if (!scene) throw InputError(path + ": Assimp could not read it: " + importer.GetErrorString());
 
-    // Every face corner with its position, in file order.
-    std::vector<std::array<double, 3>> corner_pos;
+    // Every face corner with its position and (first channel) texture coordinate, in file order.
+    std::vector<std::array<double, 3>> corner_pos, corner_uv;
     std::vector<int> face_start{0};
     long skipped = 0;
+    unsigned uv_components = 0;
+    int mesh_without_uv = -1;  // the first mesh with polygons and no texture coordinates
     for (unsigned mi = 0; mi < scene->mNumMeshes; ++mi) {
         const aiMesh* mesh = scene->mMeshes[mi];
+        const bool has_uv = mesh->HasTextureCoords(0);
+        if (has_uv) uv_components = std::max(uv_components, mesh->mNumUVComponents[0]);
+        else if (mesh_without_uv < 0 && mesh->mNumFaces > 0) mesh_without_uv = static_cast<int>(mi);
         for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
             const aiFace& face = mesh->mFaces[f];
             if (face.mNumIndices < 3) {
@@ -44,6 +49,8 @@ PolyMesh read_mesh(const std::string& path) {
             for (unsigned k = 0; k < face.mNumIndices; ++k) {
                 const aiVector3D& p = mesh->mVertices[face.mIndices[k]];
                 corner_pos.push_back({p.x, p.y, p.z});
+                const aiVector3D t = has_uv ? mesh->mTextureCoords[0][face.mIndices[k]] : aiVector3D(0, 0, 0);
+                corner_uv.push_back({t.x, t.y, t.z});
             }
             face_start.push_back(static_cast<int>(corner_pos.size()));
         }
@@ -86,6 +93,54 @@ PolyMesh read_mesh(const std::string& path) {
     out.source.file = path;
     out.source.notes.push_back("read with " + version() + ": " + std::to_string(nc) + " face corners welded into " +
                                std::to_string(out.positions.size()) + " vertices by identical position");
+    if (uv_components > 0 && mesh_without_uv >= 0) {
+        out.source.notes.push_back("texture coordinates not read: mesh " + std::to_string(mesh_without_uv) +
+                                   " of the scene has none (a channel is on every corner or on none)");
+    } else if (uv_components > 0) {
+        // The face-varying channel: corners of one vertex with bit-identical coordinates share a
+        // value (Assimp keeps one per corner, so the file's own value indices are gone; equal
+        // coordinates at a vertex are the same value, different ones a seam).
+        FaceVaryingChannel uv;
+        uv.dimension = uv_components >= 3 ? 3 : 2;
+        std::vector<int> by_key(nc);
+        std::iota(by_key.begin(), by_key.end(), 0);
+        const auto key_less = [&](int a, int b) {
+            const int va = out.face_vertices[static_cast<size_t>(a)], vb = out.face_vertices[static_cast<size_t>(b)];
+            if (va != vb) return va < vb;
+            return corner_uv[static_cast<size_t>(a)] != corner_uv[static_cast<size_t>(b)]
+                       ? corner_uv[static_cast<size_t>(a)] < corner_uv[static_cast<size_t>(b)]
+                       : a < b;
+        };
+        std::sort(by_key.begin(), by_key.end(), key_less);
+        std::vector<int> value_of_corner(nc), first_corner_of_value;
+        for (size_t i = 0; i < nc; ++i) {
+            const int c = by_key[i], prev = i == 0 ? -1 : by_key[i - 1];
+            const bool same = prev >= 0 && out.face_vertices[static_cast<size_t>(prev)] == out.face_vertices[static_cast<size_t>(c)] &&
+                              corner_uv[static_cast<size_t>(prev)] == corner_uv[static_cast<size_t>(c)];
+            if (!same) first_corner_of_value.push_back(c);
+            value_of_corner[static_cast<size_t>(c)] = static_cast<int>(first_corner_of_value.size()) - 1;
+        }
+        // Values numbered by their first corner in file order, as vertices are.
+        std::vector<int> values_by_first(first_corner_of_value.size());
+        std::iota(values_by_first.begin(), values_by_first.end(), 0);
+        std::sort(values_by_first.begin(), values_by_first.end(), [&](int a, int b) {
+            return first_corner_of_value[static_cast<size_t>(a)] < first_corner_of_value[static_cast<size_t>(b)];
+        });
+        std::vector<int> number(first_corner_of_value.size());
+        for (size_t i = 0; i < values_by_first.size(); ++i) {
+            const int value = values_by_first[i];
+            number[static_cast<size_t>(value)] = static_cast<int>(i);
+            const auto& t = corner_uv[static_cast<size_t>(first_corner_of_value[static_cast<size_t>(value)])];
+            for (int k = 0; k < uv.dimension; ++k) {
+                if (!std::isfinite(t[static_cast<size_t>(k)]))
+                    throw InputError(path + ": texture coordinate " + std::to_string(i) + " is NaN or infinite");
+                uv.values.push_back(t[static_cast<size_t>(k)]);
+            }
+        }
+        uv.corner_values.resize(nc);
+        for (size_t c = 0; c < nc; ++c) uv.corner_values[c] = number[static_cast<size_t>(value_of_corner[c])];
+        out.face_varying.push_back(std::move(uv));
+    }
     if (skipped) out.source.notes.push_back(std::to_string(skipped) + " point or line primitives skipped");
     return out;
 }

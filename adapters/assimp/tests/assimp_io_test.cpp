@@ -117,3 +117,42 @@ TEST(Assimp, UnreadableFileNamesTheFile) {
 
 }  // namespace
 }  // namespace crossdiv::adapters::assimp
+
+namespace crossdiv::adapters::assimp {
+namespace {
+
+TEST(AssimpIo, TextureCoordinatesBecomeAChannelWithItsSeams) {
+    // Two quads sharing the edge 2-5 with a seam on it: the left quad has u = 1 there, the
+    // right one u = 3. Read by Assimp (which keeps a value per corner), the channel has one
+    // value per vertex and side of the seam: 8 values, the seam's two vertices with two each.
+    const std::string obj = write_temp("seam.obj",
+                                       "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 0\nv 2 1 0\n"
+                                       "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvt 3 0\nvt 4 0\nvt 4 1\nvt 3 1\n"
+                                       "f 1/1 2/2 5/3 4/4\nf 2/5 3/6 6/7 5/8\n");
+    const PolyMesh m = read_mesh(obj);
+    ASSERT_EQ(m.face_varying.size(), 1u);
+    const FaceVaryingChannel& uv = m.face_varying[0];
+    EXPECT_EQ(uv.num_values(), 8);
+    ASSERT_EQ(uv.corner_values.size(), 8u);
+    // Each corner's value is its file's: compare by vertex position within each face.
+    for (int f = 0; f < 2; ++f)
+        for (int k = 0; k < 4; ++k) {
+            const Vec3& p = m.positions[m.face(f)[k]];
+            const double* t = uv.value(uv.corner_values[static_cast<size_t>(4 * f + k)]);
+            EXPECT_EQ(t[0], f == 0 ? p.x() : p.x() + 2) << "face " << f << " corner " << k;
+            EXPECT_EQ(t[1], p.y());
+        }
+    // The seam: the shared vertices have different values in the two faces.
+    int seam_corners = 0;
+    for (int k = 0; k < 4; ++k)
+        for (int j = 0; j < 4; ++j)
+            if (m.face(0)[k] == m.face(1)[j]) {
+                EXPECT_NE(uv.corner_values[static_cast<size_t>(k)], uv.corner_values[static_cast<size_t>(4 + j)]);
+                ++seam_corners;
+            }
+    EXPECT_EQ(seam_corners, 2);
+    std::filesystem::remove(obj);
+}
+
+}  // namespace
+}  // namespace crossdiv::adapters::assimp

@@ -68,6 +68,8 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& specs) {
             for (std::string& f : folder_inputs(s)) out.push_back(std::move(f));
         } else if (s == "bundled:all") {
             for (const auto& b : datasets::bundled_meshes()) out.push_back("bundled:" + b.name);
+        } else if (s == "creases:all") {
+            for (const auto& b : datasets::crease_meshes()) out.push_back("bundled:" + b.name);
         } else if (s == "polygons:all") {
             for (const auto& b : datasets::polygon_meshes()) out.push_back("bundled:" + b.name);
         } else if (s == "edgecases:all") {
@@ -86,7 +88,7 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& specs) {
         } else if (s == "cgal:all") {
             for (const auto& f : datasets::cgal_mesh_files()) out.push_back(f);
         } else if (s.ends_with(":all")) {
-            throw InputError("unknown collection '" + s + "' (known: bundled:all, polygons:all, edgecases:all, polygon-edgecases:all, uv-edgecases:all, uv-edgecases-tri:all, course:all, meshedit:all, cgal:all)");
+            throw InputError("unknown collection '" + s + "' (known: bundled:all, polygons:all, creases:all, edgecases:all, polygon-edgecases:all, uv-edgecases:all, uv-edgecases-tri:all, course:all, meshedit:all, cgal:all)");
         } else {
             out.push_back(s);
         }
@@ -115,7 +117,7 @@ PolyMesh read_input(const std::string& spec) {
     if (const size_t colon = spec.find(':'); colon != std::string::npos && colon > 0 &&
                                              spec.find('/') > colon && !std::filesystem::exists(spec))
         throw InputError("'" + spec + "' is neither a file nor a known input name (known: bundled:NAME, " +
-                         "edgecase:NAME, uv:LAYOUT:INPUT, dir:FOLDER, and the collections bundled:all, polygons:all, edgecases:all, " +
+                         "edgecase:NAME, uv:LAYOUT:INPUT, dir:FOLDER, and the collections bundled:all, polygons:all, creases:all, edgecases:all, " +
                          "polygon-edgecases:all, uv-edgecases:all, uv-edgecases-tri:all, " +
                          "course:all, meshedit:all, cgal:all)");
     return read_mesh(spec);

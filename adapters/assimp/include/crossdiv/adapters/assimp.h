@@ -20,7 +20,10 @@ const std::vector<std::string>& extensions();
 /// bit-identical positions (Assimp's JoinIdenticalVertices would also compare normals and
 /// uses a tolerance). Vertices are numbered in order of first use by the faces, which is the
 /// vertex order `crossdiv edit` indices refer to for these formats. Point and line
-/// primitives are skipped and counted in source.notes.
+/// primitives are skipped and counted in source.notes. Texture coordinates (the first set)
+/// become face-varying channel "uv" when every mesh of the scene has them (else a note says
+/// which has none): the corners of one vertex with bit-identical coordinates share a value,
+/// and different ones are a seam (Assimp keeps a value per corner, not the file's indices).
 /// @throws InputError naming the file with Assimp's message when it cannot read it, when the
 ///         scene has no polygon, or naming the vertex when a coordinate is NaN or infinite.
 PolyMesh read_mesh(const std::string& path);

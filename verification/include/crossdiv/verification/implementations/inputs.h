@@ -2,7 +2,7 @@
 /// @file
 /// Input names the CLI accepts: a mesh file (.obj, .off, .ply; .dae, .stl through Assimp), `bundled:NAME`, `edgecase:NAME`,
 /// `uv:LAYOUT:INPUT` (an input with texture coordinates in a named layout: welded, per-face,
-/// half-seam, three-regions; datasets/uv_layouts.h), or a collection: `bundled:all`,
+/// half-seam, three-regions; datasets/uv_layouts.h), or a collection: `bundled:all`, `creases:all` (the crease catalog),
 /// `edgecases:all`, `uv-edgecases:all` (the face-varying cases; `uv-edgecases-tri:all` their triangulations), `uv:LAYOUT:COLLECTION` (each of its
 /// inputs with texture coordinates), `course:all` (../shared/data/c3100/objs),
 /// `meshedit:all` (../shared/data/meshedit/dae), `cgal:all` (datasets/cgal), and a user's own
