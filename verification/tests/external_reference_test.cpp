@@ -375,6 +375,20 @@ TEST(Nondeterminism, FirstDifferenceNamesWhereTwoRunsPart) {
     PolyMesh turned = m;
     turned.face_vertices = {0, 2, 1};
     EXPECT_EQ(first_difference(a, run_that_made(turned)).value_or(""), "level 0's faces differ between the runs");
+    // Texture coordinates: a value that changes, and a value whose index changes.
+    PolyMesh with_uv = m;
+    with_uv.face_varying.push_back({"uv", 2, {0, 0, 1, 0, 0, 1}, {0, 1, 2}});
+    const IsolatedTrace u = run_that_made(with_uv);
+    EXPECT_FALSE(first_difference(u, run_that_made(with_uv)));
+    PolyMesh other_value = with_uv;
+    other_value.face_varying[0].values[3] = 0.5;
+    EXPECT_EQ(first_difference(u, run_that_made(other_value)).value_or(""),
+              "level 0's face-varying value 1 of channel 'uv' is 0 in one run and 0.5 in the other");
+    PolyMesh other_index = with_uv;
+    other_index.face_varying[0].corner_values = {0, 1, 1};
+    EXPECT_EQ(first_difference(u, run_that_made(other_index)).value_or(""),
+              "level 0's face-varying channel 'uv' is indexed differently in the two runs");
+    EXPECT_EQ(first_difference(u, a).value_or(""), "level 0 has 1 face-varying channels in one run, 0 in the other");
     IsolatedTrace crashed;
     crashed.outcome.status = RunStatus::Crashed;
     EXPECT_EQ(first_difference(a, crashed).value_or(""), "one run ended ok, the other crashed");

@@ -1,5 +1,9 @@
 #include "crossdiv/verification/comparisons/nondeterminism.h"
 
+#include <algorithm>
+#include <bit>
+#include <cstdint>
+
 #include <fmt/format.h>
 
 #include <cstring>
@@ -34,6 +38,19 @@ std::optional<std::string> first_difference(const IsolatedTrace& a, const Isolat
                                    point_text(y.positions[v]));
         if (x.face_start != y.face_start || x.face_vertices != y.face_vertices)
             return fmt::format("level {}'s faces differ between the runs", l);
+        // Face-varying values too, bit for bit, with their indexing.
+        if (x.face_varying.size() != y.face_varying.size())
+            return fmt::format("level {} has {} face-varying channels in one run, {} in the other", l, x.face_varying.size(),
+                               y.face_varying.size());
+        for (size_t k = 0; k < x.face_varying.size(); ++k) {
+            const FaceVaryingChannel &p = x.face_varying[k], &q = y.face_varying[k];
+            if (p.corner_values != q.corner_values || p.values.size() != q.values.size())
+                return fmt::format("level {}'s face-varying channel '{}' is indexed differently in the two runs", l, p.name);
+            for (size_t i = 0; i < p.values.size(); ++i)
+                if (std::bit_cast<std::uint64_t>(p.values[i]) != std::bit_cast<std::uint64_t>(q.values[i]))
+                    return fmt::format("level {}'s face-varying value {} of channel '{}' is {} in one run and {} in the other", l,
+                                       i / static_cast<size_t>(std::max(p.dimension, 1)), p.name, p.values[i], q.values[i]);
+        }
     }
     return std::nullopt;
 }
