@@ -398,6 +398,7 @@ int run_diff(const std::string& in, const SchemeArgs& flags, const std::string& 
     req.levels = s.levels;
     req.subject = subject;
     req.timeout_seconds = timeout;
+    req.face_varying = face_varying_rule_noted(Scheme::Loop, s.face_varying, input);
     if (against.empty()) {
         if (!subject) throw InputError("diff: name the diverging reference (--against) or a subject (--subject)");
         req.without_references = true;
@@ -411,17 +412,19 @@ int run_diff(const std::string& in, const SchemeArgs& flags, const std::string& 
         fmt::print("{} ({} faces): {} failed: {}\n", in, mesh.num_faces(), under_test, r.original.subject_outcome.summary());
     else
         fmt::print("{} ({} faces): {}{}\n", in, mesh.num_faces(), describe(r.symptom, under_test, against),
-                   r.original.runs.empty() ? "" : ": " + r.original.runs[0].explanation);
+                   r.original.runs.empty() ? "" : ": " + symptom_explanation(r.original));
     const std::optional<ShrinkSymptom> minimal_symptom = symptom_of(r.minimal_comparison);
     const std::string minimal =
         write_shrunk(out_dir, r.neighbourhood, r.k, "the worst vertex's coarse ancestors", r.minimal,
                      r.tests, minimal_symptom ? describe(*minimal_symptom, under_test, against) : std::string("no symptom"),
-                     r.minimal_comparison.runs.empty() ? std::string() : r.minimal_comparison.runs[0].explanation);
+                     symptom_explanation(r.minimal_comparison));
     if (r.minimal_comparison.subject != "core") print_subject(r.minimal_comparison);
     const std::string subject_args =
         subject ? fmt::format(" --subject-name {} --subject '{}'", subject->name(), subject_command) : std::string();
-    fmt::print("reproduce:     crossdiv compare {} --weights {} --boundary {} --levels {}{}{}\n", minimal, s.weights,
-               to_string(s.options().boundary), s.levels, against.empty() ? "" : " --against " + against, subject_args);
+    const std::string fvar = req.face_varying ? fmt::format(" --fvar {}", to_string(*req.face_varying)) : "";
+    fmt::print("reproduce:     crossdiv compare {} --weights {} --boundary {} --levels {}{}{}{}\n", minimal, s.weights,
+               to_string(s.options().boundary), s.levels, fvar, against.empty() ? "" : " --against " + against,
+               subject_args);
     return 0;
 }
 

@@ -241,20 +241,24 @@ int run_scheme_diff(const std::string& in, const PolySchemeArgs& s, const std::s
     PolyMesh mesh = load_input(in, s.unknown_tags);  // boundary none tags holes on it
     require_refined_size(mesh, req.scheme, s.levels, s.max_faces, in, "--max-faces");
     req.rule = rule_with_tags(req.scheme, s, mesh);
+    req.face_varying = face_varying_rule_noted(req.scheme, s.face_varying, mesh);
     const ShrinkResult r = shrink_divergence(mesh, in, req);
     const std::string under_test = subject ? "subject '" + subject->name() + "'" : std::string("core");
+    const std::string why = symptom_explanation(r.original);
     fmt::print("{} ({} faces): {}{}\n", in, mesh.num_faces(), describe(r.symptom, under_test, against),
-               r.original.runs.empty() ? "" : ": " + r.original.runs[0].explanation);
+               why.empty() ? "" : ": " + why);
     const std::optional<ShrinkSymptom> minimal_symptom = symptom_of(r.minimal_comparison);
     const std::string minimal =
         write_shrunk(out_dir, r.neighbourhood, r.k, "the symptom's coarse vertices", r.minimal, r.tests,
                      minimal_symptom ? describe(*minimal_symptom, under_test, against) : std::string("no symptom"),
-                     r.minimal_comparison.runs.empty() ? std::string() : r.minimal_comparison.runs[0].explanation);
+                     symptom_explanation(r.minimal_comparison));
     if (subject) print_subject(r.minimal_comparison);
     const std::string subject_args =
         subject ? " --subject-name " + subject->name() + " --subject '" + subject_command + "'" : std::string();
-    fmt::print("reproduce:     crossdiv compare {} --scheme {} --boundary {} --levels {}{}{}\n", minimal, s.scheme,
-               boundary_name(req.scheme, req.rule), s.levels, against.empty() ? "" : " --against " + against, subject_args);
+    const std::string fvar = req.face_varying ? fmt::format(" --fvar {}", to_string(*req.face_varying)) : "";
+    fmt::print("reproduce:     crossdiv compare {} --scheme {} --boundary {} --levels {}{}{}{}\n", minimal, s.scheme,
+               boundary_name(req.scheme, req.rule), s.levels, fvar, against.empty() ? "" : " --against " + against,
+               subject_args);
     return 0;
 }
 

@@ -169,6 +169,11 @@ expect edgecases 0 'genus-3.obj +closed slab with three holes' -- "$crossdiv" ed
 expect diff-corner 0 'minimal: .* \(1 faces, 3 vertices\)' -- "$crossdiv" diff bundled:open-patch --boundary edge-and-corner --levels 2 --against openmesh --out "$tmp/diff"
 expect diff-reproduces 1 'corner-rule' -- "$crossdiv" compare "$tmp/diff/minimal.obj" --boundary edge-and-corner --levels 2 --against openmesh
 expect diff-nothing 2 'does not diverge' -- "$crossdiv" diff bundled:torus --against cgal --out "$tmp/diff2"
+# A texture-coordinate divergence shrinks like any other: the UV bowtie under `none` (Far's
+# values depend on the order of the faces) down to the faces around the bowtie vertex.
+expect diff-uv 0 "opensubdiv's texture coordinates diverge from core's \(face-order-dependence\)" -- "$crossdiv" diff edgecase:uv-bowtie --scheme catmull-clark --levels 2 --fvar none --against opensubdiv --out "$tmp/diff-uv"
+expect diff-uv-reproduce 0 'reproduce: +crossdiv compare .*minimal.obj --scheme catmull-clark --boundary edge-only --levels 2 --fvar none --against opensubdiv' -- "$crossdiv" diff edgecase:uv-bowtie --scheme catmull-clark --levels 2 --fvar none --against opensubdiv --out "$tmp/diff-uv"
+expect diff-uv-minimal-has-uvs 0 '^f [0-9]+/[0-9]+ ' -- grep -m1 '^f ' "$tmp/diff-uv/minimal.obj"
 # A folder of the user's own: each mesh file its own comparison, in name order.
 mkdir -p "$tmp/own"
 printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n' > "$tmp/own/a-quad.obj"

@@ -18,6 +18,7 @@
 #include "crossdiv/verification/harness/corner_values.h"
 #include "crossdiv/verification/harness/correspondence.h"
 #include "crossdiv/verification/comparisons/refinement_comparison.h"
+#include "crossdiv/verification/comparisons/shrink.h"
 #include "crossdiv/verification/implementations/callback_implementation.h"
 #include "crossdiv/verification/implementations/registry.h"
 
@@ -232,6 +233,24 @@ TEST(FaceVaryingCompare, AReferenceThatDependsOnFaceOrderIsNamedSo) {
     req.face_varying = FaceVaryingRule::CornersOnly;
     const RefinementComparison kept = compare_refinement(mesh, "edgecase:uv-bowtie", req);
     EXPECT_EQ(kept.runs[0].uv->outcome.verdict, Verdict::Agree) << kept.runs[0].uv->explanation;
+}
+
+TEST(FaceVaryingCompare, ATextureCoordinateDivergenceShrinksToTheBowtieVertex) {
+    CROSSDIV_REQUIRE_LIBRARIES("opensubdiv");
+    RefinementRequest req;
+    req.scheme = Scheme::CatmullClark;
+    req.levels = 2;
+    req.face_varying = FaceVaryingRule::None;
+    req.references = {"opensubdiv"};
+    const ShrinkResult r = shrink_divergence(datasets::edge_case("uv-bowtie").mesh, "edgecase:uv-bowtie", req);
+    EXPECT_EQ(r.symptom.kind, ShrinkSymptom::Kind::ReferenceUvDiverges);
+    EXPECT_EQ(r.symptom.divergence_class, DivergenceClass::FaceOrderDependence);
+    // The four faces around vertex (2, 2), alternating between the two regions, are what shows
+    // it; fewer break the alternation. The minimal mesh keeps its channel.
+    EXPECT_EQ(r.minimal.num_faces(), 4) << r.tests << " comparisons";
+    ASSERT_EQ(r.minimal.face_varying.size(), 1u);
+    EXPECT_EQ(r.minimal.face_varying[0].corner_values.size(), r.minimal.face_vertices.size());
+    EXPECT_EQ(symptom_of(r.minimal_comparison), r.symptom);
 }
 
 }  // namespace

@@ -137,7 +137,7 @@ private:
         classify(t, v, base, static_cast<int>(t.slot_value.size()) - base);
     }
 
-  public:
+public:
     /// OpenSubdiv's FVarRefinement::getFractionalWeight: the transition weight, between this
     /// level and the next, of vertex v and of the edges inside the span of `slot`.
     double fractional_weight(const Topology& t, int v, int slot) {
@@ -189,7 +189,7 @@ private:
         return slot == base ? base + 1 : base;
     }
 
-  private:
+private:
 
     bool edge_inf_sharp(int e) const { return is_infinitely_sharp(sharpness_.edge_sharpness(e)); }
     bool edge_semi_sharp(int e) const { return is_sharp(sharpness_.edge_sharpness(e)) && !edge_inf_sharp(e); }

@@ -48,6 +48,9 @@ std::vector<int> coarse_ancestors(const Refinement& core, int v) {
 std::optional<std::pair<int, int>> symptom_site(const RefinementComparison& c, const ShrinkSymptom& s) {
     if (s.kind == ShrinkSymptom::Kind::ReferenceDiverges && !c.runs.empty() && !c.runs[0].comparison.worst.empty())
         return std::pair{c.levels, c.runs[0].comparison.worst[0].ours_index};
+    if (s.kind == ShrinkSymptom::Kind::ReferenceUvDiverges && !c.runs.empty() && c.runs[0].uv &&
+        c.runs[0].uv->comparison.worst_vertex >= 0)
+        return std::pair{c.levels, c.runs[0].uv->comparison.worst_vertex};
     if (s.kind == ShrinkSymptom::Kind::SubjectFollowsNoRule && c.rules && c.rules->classified_level > 0) {
         const VertexClassRow* worst = nullptr;
         double worst_fit = -1;
@@ -147,6 +150,11 @@ std::optional<ShrinkSymptom> reference_symptom(const RefinementRun& run) {
         s.divergence_class = run.divergence_class;
         return s;
     }
+    if (run.verdict == Verdict::Agree && run.uv && run.uv->compared() && run.uv->outcome.verdict == Verdict::Diverge) {
+        s.kind = ShrinkSymptom::Kind::ReferenceUvDiverges;
+        s.divergence_class = run.uv->outcome.cls;
+        return s;
+    }
     if (!shrinkable_failure(run.outcome.status)) return std::nullopt;
     s.kind = ShrinkSymptom::Kind::ReferenceFails;
     s.status = run.outcome.status;
@@ -173,8 +181,17 @@ std::string describe(const ShrinkSymptom& s, const std::string& subject, const s
         case ShrinkSymptom::Kind::SubjectUnmatched: return subject + "'s vertices match none of core's";
         case ShrinkSymptom::Kind::SubjectTopology: return subject + "'s faces are not core's";
         case ShrinkSymptom::Kind::SubjectFollowsNoRule: return "no named rule fits " + subject;
+        case ShrinkSymptom::Kind::ReferenceUvDiverges:
+            return reference + "'s texture coordinates diverge from " + subject + "'s (" + to_string(s.divergence_class) + ")";
     }
     return "unknown";
+}
+
+std::string symptom_explanation(const RefinementComparison& c) {
+    if (c.runs.empty()) return "";
+    const RefinementRun& r = c.runs[0];
+    const bool uv = r.verdict == Verdict::Agree && r.uv && r.uv->compared() && r.uv->outcome.verdict == Verdict::Diverge;
+    return uv ? r.uv->explanation : r.explanation;
 }
 
 std::optional<ShrinkSymptom> symptom_of(const RefinementComparison& c) {
@@ -223,6 +240,15 @@ PolyMesh submesh(const PolyMesh& mesh, const std::vector<int>& faces) {
     for (const SharpVertex& c : mesh.creases.vertices)
         if (remap[static_cast<size_t>(c.v)] >= 0) out.creases.vertices.push_back({remap[static_cast<size_t>(c.v)], c.sharpness});
     std::sort(out.creases.holes.begin(), out.creases.holes.end());
+    // Face-varying channels: every value kept (the indices stay valid), the kept faces' corners.
+    for (const FaceVaryingChannel& ch : mesh.face_varying) {
+        FaceVaryingChannel& kept = out.face_varying.emplace_back(ch);
+        kept.corner_values.clear();
+        for (int f : faces)
+            kept.corner_values.insert(kept.corner_values.end(), ch.corner_values.begin() + mesh.face_start[f],
+                                      ch.corner_values.begin() + mesh.face_start[f + 1]);
+    }
+    out.creases.face_varying = mesh.creases.face_varying;
     out.creases.method = mesh.creases.method;
     out.creases.boundary = mesh.creases.boundary;
     out.creases.smooth_triangles = mesh.creases.smooth_triangles;
@@ -253,7 +279,7 @@ ShrinkResult shrink_divergence(const PolyMesh& mesh, const std::string& name, co
     const auto shows = [&](const PolyMesh& candidate) { return still_shows(candidate, req, r.symptom, r.tests); };
     std::vector<int> seeds;
     if (const auto site = symptom_site(r.original, r.symptom)) {
-        const Refinement core = core_implementation().refine_with_provenance(mesh, {req.scheme, req.rule, site->first});
+        const Refinement core = core_implementation().refine_with_provenance(mesh, {req.scheme, req.rule, site->first, req.face_varying});
         if (static_cast<int>(core.births.size()) == site->first)
             seeds = coarse_ancestors(core, site->second);
         else

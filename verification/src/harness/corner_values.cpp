@@ -81,6 +81,7 @@ CornerValueComparison compare_corner_values(const PolyMesh& ours, const PolyMesh
                     out.max_abs = std::isnan(diff) ? INFINITY : diff;
                     out.worst_face = f;
                     out.worst_corner = j;
+                    out.worst_vertex = ours.face(f)[j];
                 }
             }
             ++out.corners;

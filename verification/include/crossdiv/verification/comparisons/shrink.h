@@ -28,6 +28,9 @@ struct ShrinkSymptom {
         SubjectUnmatched,      ///< the subject's vertices match none of core's
         SubjectTopology,       ///< the subject's vertices match core's, its faces do not
         SubjectFollowsNoRule,  ///< no named rule fits the subject's refinement
+        /// the one reference agrees in positions and its texture coordinates diverge with
+        /// `divergence_class` (RefinementRun::uv)
+        ReferenceUvDiverges,
     };
     Kind kind = Kind::ReferenceDiverges;
     DivergenceClass divergence_class = DivergenceClass::None;
@@ -35,8 +38,13 @@ struct ShrinkSymptom {
     bool operator==(const ShrinkSymptom&) const = default;
 };
 /// "opensubdiv diverges from core (corner-rule)", "openmesh fails (unreadable-output)",
-/// "the subject fails (crashed)", "no named rule fits the subject".
+/// "the subject fails (crashed)", "no named rule fits the subject", "opensubdiv's texture
+/// coordinates diverge from core's (face-order-dependence)".
 std::string describe(const ShrinkSymptom& symptom, const std::string& subject, const std::string& reference);
+
+/// The one-line explanation of a comparison's first run: its texture coordinates' when they
+/// are what diverges, else its positions'; "" without a run.
+std::string symptom_explanation(const RefinementComparison& comparison);
 
 /// The symptom of a comparison, when it has one: core refines the input, and the subject
 /// fails or follows no named rule, or the one reference diverges or fails.

@@ -24,6 +24,7 @@ struct CornerValueComparison {
     double max_rel = 0;     ///< max_abs / uv_box (max_abs when the box is a point)
     int worst_face = -1;    ///< ours, where max_abs is
     int worst_corner = -1;  ///< its corner (0 .. face size - 1)
+    int worst_vertex = -1;  ///< ours, the vertex of that corner
     bool compared() const { return not_compared.empty(); }
 };
 
