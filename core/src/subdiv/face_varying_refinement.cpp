@@ -377,9 +377,6 @@ FaceVaryingChannel refine_face_varying(const PolyMesh& parent, const PolyConnect
                                        FaceVaryingSemiSharp* semi_out) {
     Analyzer analyzer(parent, conn, channel, options, semi_in);
     const Topology t = analyzer.run();
-    const auto fractional_weight = [&](const Topology& topology, int v, int slot) {
-        return analyzer.fractional_weight(topology, v, slot);
-    };
     const ChildOrigins origin = child_origins(parent, conn, step, scheme);
     const int nv = parent.num_vertices();
     const int child_nv = step.stencils.num_rows();
@@ -408,6 +405,14 @@ FaceVaryingChannel refine_face_varying(const PolyMesh& parent, const PolyConnect
     auto mark_face = [&](int f, bool set) {
         for (int c = parent.face_start[f]; c < parent.face_start[f + 1]; ++c)
             local[static_cast<size_t>(parent.face_vertices[c])] = set ? channel.corner_values[c] : -1;
+    };
+    auto mark_fan = [&](int v, bool set) {  // the faces around v
+        const int start = conn.vertex_corner[v];
+        for (int c = start; c >= 0;) {
+            mark_face(conn.corner_face[c], set);
+            c = conn.next_around_vertex(c);
+            if (c == start) break;
+        }
     };
     const StencilTable& st = step.stencils;
     auto apply_stencil = [&](int x) {
@@ -474,24 +479,15 @@ FaceVaryingChannel refine_face_varying(const PolyMesh& parent, const PolyConnect
                     continue;
                 }
                 const int from = tag == SemiSharpTag::Dependent ? Analyzer::other_value(t, v, s) : s;
-                const double corner = tag == SemiSharpTag::None || from < 0 ? 0.0 : fractional_weight(t, v, from);
+                const double corner = tag == SemiSharpTag::None || from < 0 ? 0.0 : analyzer.fractional_weight(t, v, from);
                 w.begin(x);
                 w.add_parent(t.slot_ends[s][0], (1.0 - corner) * kCreaseEdgeWeight);
                 w.add_parent(t.slot_ends[s][1], (1.0 - corner) * kCreaseEdgeWeight);
                 w.add_parent(t.slot_value[s], (1.0 - corner) * kCreaseVertexWeight + corner);
             } else {
-                const int start = conn.vertex_corner[v];
-                for (int c = start;;) {
-                    mark_face(conn.corner_face[c], true);
-                    c = conn.next_around_vertex(c);
-                    if (c < 0 || c == start) break;
-                }
+                mark_fan(v, true);
                 apply_stencil(v);
-                for (int c = start;;) {
-                    mark_face(conn.corner_face[c], false);
-                    c = conn.next_around_vertex(c);
-                    if (c < 0 || c == start) break;
-                }
+                mark_fan(v, false);
             }
         }
     }

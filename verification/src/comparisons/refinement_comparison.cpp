@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
-#include <array>
 #include <deque>
 #include <functional>
 
@@ -25,6 +24,7 @@ using detail::sci;
 /// gives it, each refined vertex's origin; or why core refused.
 struct CoreRun {
     SchemeRule rule;
+    std::optional<FaceVaryingRule> face_varying;
     Refinement refinement;
     std::string error;
     const adapters::LevelTrace& levels() const { return refinement.levels; }
@@ -37,15 +37,21 @@ public:
     CoreRuns(const PolyMesh& input, Scheme scheme, int levels, std::optional<FaceVaryingRule> face_varying)
         : input_(input), scheme_(scheme), levels_(levels), face_varying_(face_varying) {}
 
-    /// The run under `rule` (its error set when core refuses). A deque: earlier runs stay
-    /// where they are while later ones are added.
-    const CoreRun& with(const SchemeRule& rule) {
+    /// The run under `rule` (its error set when core refuses), its face-varying channels under
+    /// the request's face-varying rule. A deque: earlier runs stay where they are while later
+    /// ones are added.
+    const CoreRun& with(const SchemeRule& rule) { return with(rule, face_varying_); }
+
+    /// The run under `rule` with the channels refined under `fvar` (what a face-varying
+    /// divergence is measured against; the face-varying rule changes no vertex or face).
+    const CoreRun& with(const SchemeRule& rule, std::optional<FaceVaryingRule> fvar) {
         for (const CoreRun& run : runs_)
-            if (same_rule(scheme_, run.rule, rule)) return run;
+            if (run.face_varying == fvar && same_rule(scheme_, run.rule, rule)) return run;
         CoreRun& run = runs_.emplace_back();
         run.rule = rule;
+        run.face_varying = fvar;
         try {
-            run.refinement = core_implementation().refine_with_provenance(input_, {scheme_, rule, levels_, face_varying_});
+            run.refinement = core_implementation().refine_with_provenance(input_, {scheme_, rule, levels_, fvar});
         } catch (const InputError& e) {
             run.error = e.what();
             run.refinement.levels = {input_};
@@ -53,45 +59,14 @@ public:
         return run;
     }
 
+    int levels() const { return levels_; }
+
 private:
     const PolyMesh& input_;
     Scheme scheme_;
     int levels_;
     std::optional<FaceVaryingRule> face_varying_;
     std::deque<CoreRun> runs_;
-};
-
-/// Core's last level under the requested vertex rule and each face-varying rule, made when
-/// first needed: what a face-varying divergence is measured against. The face-varying rule
-/// changes no vertex or face, so each is in the numbering of the requested run.
-class CoreFaceVaryingRuns {
-public:
-    CoreFaceVaryingRuns(const PolyMesh& input, Scheme scheme, const SchemeRule& rule, int levels)
-        : input_(input), scheme_(scheme), rule_(rule), levels_(levels) {}
-    /// nullptr when core refuses the input under `fvar`.
-    const PolyMesh* last(FaceVaryingRule fvar) {
-        std::optional<PolyMesh>& slot = made_[static_cast<size_t>(fvar)];
-        if (!tried_[static_cast<size_t>(fvar)]) {
-            tried_[static_cast<size_t>(fvar)] = true;
-            try {
-                slot = core_implementation().refine(input_, {scheme_, rule_, levels_, fvar}).back();
-                if (slot->face_varying.empty()) slot.reset();
-            } catch (const InputError&) {
-            }
-        }
-        return slot ? &*slot : nullptr;
-    }
-
-    const SchemeRule& rule() const { return rule_; }
-    int levels() const { return levels_; }
-
-private:
-    const PolyMesh& input_;
-    Scheme scheme_;
-    SchemeRule rule_;
-    int levels_;
-    std::array<std::optional<PolyMesh>, kFaceVaryingRules.size()> made_;
-    std::array<bool, kFaceVaryingRules.size()> tried_{};
 };
 
 /// The face-varying values of a run whose positions were matched (`map`: its vertices to
@@ -151,7 +126,7 @@ std::optional<OrderChange> face_order_change(const PolyMesh& input, const PolyMe
 
 FaceVaryingRun compare_face_varying(const PolyMesh& ours, const PolyMesh& theirs, const std::vector<int>& map,
                                     const Implementation& ref, Scheme scheme, FaceVaryingRule requested,
-                                    const std::string& subject, double tolerance, CoreFaceVaryingRuns& core,
+                                    const SchemeRule& rule, const std::string& subject, double tolerance, CoreRuns& core,
                                     const std::function<std::optional<PolyMesh>(const PolyMesh&)>& rerun_reference,
                                     const PolyMesh& input) {
     FaceVaryingRun u;
@@ -177,8 +152,9 @@ FaceVaryingRun compare_face_varying(const PolyMesh& ours, const PolyMesh& theirs
     for (size_t i = 0; i < identity.size(); ++i) identity[i] = static_cast<int>(i);
     for (FaceVaryingRule r : kFaceVaryingRules) {
         if (r == requested) continue;
-        const PolyMesh* with = core.last(r);
-        if (!with) continue;
+        const CoreRun& run = core.with(rule, r);
+        if (!run.error.empty() || run.last().face_varying.empty()) continue;
+        const PolyMesh* with = &run.last();
         const CornerValueComparison ref_fit = compare_corner_values(*with, theirs, map);
         const bool ref_follows = ref_fit.compared() && ref_fit.max_rel <= tolerance;
         bool subject_follows = false;
@@ -200,13 +176,13 @@ FaceVaryingRun compare_face_varying(const PolyMesh& ours, const PolyMesh& theirs
     if (const std::optional<OrderChange> changed = face_order_change(input, theirs, rerun_reference, tolerance)) {
         const auto core_again = [&](const PolyMesh& m) -> std::optional<PolyMesh> {
             try {
-                return core_implementation().refine(m, {scheme, core.rule(), core.levels(), requested}).back();
+                return core_implementation().refine(m, {scheme, rule, core.levels(), requested}).back();
             } catch (const InputError&) {
                 return std::nullopt;
             }
         };
-        const PolyMesh* core_given = core.last(requested);
-        if (core_given && !face_order_change(input, *core_given, core_again, tolerance)) {
+        const CoreRun& given = core.with(rule, requested);
+        if (given.error.empty() && !face_order_change(input, given.last(), core_again, tolerance)) {
             u.outcome = {Verdict::Diverge, DivergenceClass::FaceOrderDependence};
             u.explanation = ref.name() + "'s texture coordinates change by " + sci(changed->max_rel) +
                             " of the UV box when the input's faces are " + changed->order + ", where core's stay within " +
@@ -472,7 +448,6 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
     const std::optional<FaceVaryingRule> fvar = input.face_varying.empty() ? std::nullopt : req.face_varying;
     out.face_varying = fvar;
     CoreRuns core(input, req.scheme, req.levels, fvar);
-    CoreFaceVaryingRuns core_fvar(input, req.scheme, req.rule, req.levels);
     const CoreRun& requested = core.with(req.rule);
     out.core_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     out.core_error = requested.error;
@@ -715,7 +690,7 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
                 if (again.outcome.status != RunStatus::Ok || !again.trace) return std::nullopt;
                 return again.trace->back();
             };
-            run.uv = compare_face_varying(ours, theirs, map, ref, req.scheme, *fvar, subject_name, tolerance, core_fvar,
+            run.uv = compare_face_varying(ours, theirs, map, ref, req.scheme, *fvar, req.rule, subject_name, tolerance, core,
                                           rerun, input);
         }
         if (map_holds) {
