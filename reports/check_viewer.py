@@ -214,6 +214,12 @@ def check(folder, screenshots=False, case=None):
             assert name in text, f"the picked vertex's panel does not name {name}: {text!r}"
         assert len(info["rows"]) == 1 + len(refs), info
         seen.append(f"picked v{info['vertex']} at level {info['level']} ({info['cls']}); {len(refs)} reference(s) shown")
+        if driver.execute_script("return !!window.crossdivViewer.state.view.levels[window.crossdivViewer.state.level].uv"):
+            # Texture coordinates: the clicked side's corner, with every implementation's value.
+            assert info["corner"] >= 0 and "texture coordinates" in text, f"the picked corner's values are not shown: {text!r}"
+            uv_refs = driver.execute_script("return Object.keys(window.crossdivViewer.state.view.referenceUvs)")
+            assert len(info["uvRows"]) == 1 + len(uv_refs), info["uvRows"]
+            seen.append(f"picked corner {info['corner']} of face {info['face']}: {len(info['uvRows'])} texture-coordinate rows")
         if screenshots:
             canvas.screenshot(os.path.join(shots, "viewer.png"))
             driver.find_element(By.ID, "crossdiv-viewer").screenshot(os.path.join(shots, "viewer-panel.png"))

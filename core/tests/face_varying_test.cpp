@@ -7,6 +7,7 @@
 #include "crossdiv/error.h"
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/subdiv/catmull_clark.h"
+#include "crossdiv/subdiv/face_varying_limit.h"
 #include "crossdiv/subdiv/face_varying_refinement.h"
 #include "crossdiv/subdiv/hole_faces.h"
 #include "crossdiv/subdiv/loop.h"
@@ -177,6 +178,77 @@ TEST(FaceVarying, ASeamBetweenTwoQuadsByHand) {
     ASSERT_EQ(emitted.num_faces(), 4);
     EXPECT_EQ(emitted.face_varying[0].corner_values.size(), 16u);
     EXPECT_EQ(uv_of(emitted, 2, 4), (UV{0.875, 0.875}));
+}
+
+/// The limit value of vertex v's value in face f of `mesh` under `rule` (Catmull-Clark).
+UV limit_of(const PolyMesh& mesh, int f, int v, FaceVaryingRule rule, bool corners_sharp) {
+    PolyMesh limit = mesh;
+    limit.face_varying[0] = face_varying_limit(mesh, mesh.face_varying[0], FaceVaryingScheme::CatmullClark,
+                                               FaceVaryingOptions{rule, corners_sharp});
+    return uv_of(limit, f, v);
+}
+
+TEST(FaceVarying, LimitValuesOfAQuadGridByHand) {
+    // The 2 x 2 quad grid, UVs (x, y) but for the centre (1, 1.5) and the boundary vertex
+    // (1, 0) given (1, 0.3): not affine, so that every mask shows.
+    const PolyMesh m = obj("v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 0\nv 2 1 0\nv 0 2 0\nv 1 2 0\nv 2 2 0\n"
+                           "vt 0 0\nvt 1 0.3\nvt 2 0\nvt 0 1\nvt 1 1.5\nvt 2 1\nvt 0 2\nvt 1 2\nvt 2 2\n"
+                           "f 1/1 2/2 5/5 4/4\nf 2/2 3/3 6/6 5/5\nf 4/4 5/5 8/8 7/7\nf 5/5 6/6 9/9 8/8\n");
+    // The centre, smooth and regular: (16 v + 4 sum e + sum f) / 36 with edge neighbours (1, 0.3),
+    // (2, 1), (1, 2), (0, 1) and face neighbours (0, 0), (2, 0), (2, 2), (0, 2):
+    // u = (16 + 16 + 4) / 36 = 1, v = (24 + 4 (4.3) + 4) / 36 = 45.2 / 36.
+    const UV centre = limit_of(m, 0, 4, FaceVaryingRule::None, false);
+    EXPECT_DOUBLE_EQ(centre[0], 1.0);
+    EXPECT_DOUBLE_EQ(centre[1], 45.2 / 36.0);
+    // Every rule but all smooths an interior value; all keeps it.
+    EXPECT_EQ(limit_of(m, 0, 4, FaceVaryingRule::CornersOnly, false), centre);
+    EXPECT_EQ(limit_of(m, 0, 4, FaceVaryingRule::All, false), (UV{1, 1.5}));
+    // The boundary vertex (1, 0): the crease limit along the boundary, 2/3 (1, 0.3) + 1/6 (0, 0)
+    // + 1/6 (2, 0) = (1, 0.2); `boundaries` makes it linear: kept.
+    const UV b = limit_of(m, 0, 1, FaceVaryingRule::None, false);
+    EXPECT_DOUBLE_EQ(b[0], 1.0);
+    EXPECT_DOUBLE_EQ(b[1], 0.2);
+    EXPECT_EQ(limit_of(m, 0, 1, FaceVaryingRule::Boundaries, false), (UV{1, 0.3}));
+    // The corner (0, 0) under edge-only and none: the crease limit too, 2/3 (0, 0) + 1/6 (1, 0.3)
+    // + 1/6 (0, 1); under edge-and-corner (a sharp corner), or a rule that sharpens one-face
+    // values, it stays.
+    const UV c = limit_of(m, 0, 0, FaceVaryingRule::None, false);
+    EXPECT_DOUBLE_EQ(c[0], 1.0 / 6.0);
+    EXPECT_DOUBLE_EQ(c[1], 1.3 / 6.0);
+    EXPECT_EQ(limit_of(m, 0, 0, FaceVaryingRule::None, true), (UV{0, 0}));
+    EXPECT_EQ(limit_of(m, 0, 0, FaceVaryingRule::CornersOnly, false), (UV{0, 0}));
+}
+
+TEST(FaceVarying, LimitValuesOnASeamByHand) {
+    // The two quads of ASeamBetweenTwoQuadsByHand: under none, each side of vertex 4 is a
+    // crease along its own face's edges: L 2/3 (1,1) + 1/6 (1,0) + 1/6 (0,1) = (5/6, 5/6);
+    // R 2/3 (3,3) + 1/6 (4,1) + 1/6 (3,0) = (19/6, 13/6). corners-only keeps both.
+    const PolyMesh m = obj("v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 0\nv 2 1 0\n"
+                           "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvt 3 0\nvt 4 0\nvt 4 1\nvt 3 3\n"
+                           "f 1/1 2/2 5/3 4/4\nf 2/5 3/6 6/7 5/8\n");
+    const UV l = limit_of(m, 0, 4, FaceVaryingRule::None, false), r = limit_of(m, 1, 4, FaceVaryingRule::None, false);
+    EXPECT_DOUBLE_EQ(l[0], 5.0 / 6.0);
+    EXPECT_DOUBLE_EQ(l[1], 5.0 / 6.0);
+    EXPECT_DOUBLE_EQ(r[0], 19.0 / 6.0);
+    EXPECT_DOUBLE_EQ(r[1], 13.0 / 6.0);
+    EXPECT_EQ(limit_of(m, 1, 4, FaceVaryingRule::CornersOnly, false), (UV{3, 3}));
+}
+
+TEST(FaceVarying, TheLimitOfASmoothVertexAmongTrianglesNeedsAQuadLevel) {
+    // A smooth vertex with a triangle around it: Catmull-Clark's limit mask is for quads.
+    const PolyMesh fan = obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nv -1 0 0\nv 0 -1 0\n"
+                             "vt 0 0\nvt 1 0\nvt 0 1\nvt -1 0\nvt 0 -1\n"
+                             "f 1/1 2/2 3/3\nf 1/1 3/3 4/4\nf 1/1 4/4 5/5\nf 1/1 5/5 2/2\n");
+    try {
+        face_varying_limit(fan, fan.face_varying[0], FaceVaryingScheme::CatmullClark, {FaceVaryingRule::None, false});
+        FAIL() << "a triangle around a smooth vertex was taken";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("vertex 0 has a face of 3 corners"), std::string::npos) << e.what();
+    }
+    // Loop takes it: the valence-4 mask with Loop's beta on the ring (symmetric: the centre stays).
+    const FaceVaryingChannel loop =
+        face_varying_limit(fan, fan.face_varying[0], FaceVaryingScheme::Loop, {FaceVaryingRule::None, false});
+    EXPECT_NEAR(loop.value(fan.face_varying[0].corner_values[0])[0], 0.0, 1e-15);
 }
 
 TEST(FaceVarying, LoopRefinesAChannelToo) {

@@ -9,7 +9,10 @@ import re
 import subprocess
 import sys
 
+import io
+
 import pytest
+from PIL import Image
 from selenium.webdriver.common.by import By
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -23,13 +26,15 @@ CROSSDIV = os.path.abspath(os.environ.get("CROSSDIV_BIN") or os.path.join(REPORT
 # Two divergences with a known cause: OpenMesh and CGAL lack Loop's corner rule (open-patch),
 # and no reference has Warren's weights (octahedron); a case where all agree; the pages
 # study's curve editor and subdivision-levels pages; and a polygon scheme's divergence:
-# OpenMesh's Catmull-Clark boundary rule on the quad grid.
+# OpenMesh's Catmull-Clark boundary rule on the quad grid; and texture coordinates that diverge
+# where the positions agree: OpenSubdiv splits one of the UV bowtie's values by face order.
 MANIFEST = """suite viewer-test
 case bundled:open-patch  loop weights=loop boundary=edge-and-corner levels=2 tier=weak tolerance=1e-12 against=opensubdiv,openmesh
 case bundled:octahedron  loop weights=warren boundary=edge-only levels=2 tier=weak tolerance=1e-12 against=opensubdiv
 case bundled:tetrahedron loop weights=loop boundary=edge-only levels=1 tier=weak tolerance=1e-12 against=opensubdiv
 case catalog pages
 case bundled:quad-grid   catmull-clark levels=2 tier=weak tolerance=1e-12 against=opensubdiv,openmesh
+case edgecase:uv-bowtie  catmull-clark fvar=none levels=2 tier=weak tolerance=1e-12 against=opensubdiv
 """
 
 
@@ -67,7 +72,8 @@ def open_report(driver, report):
 def test_every_divergence_has_a_view_and_the_page_needs_no_network(report):
     views = sorted(os.listdir(os.path.join(report, "views")))
     # The agreeing tetrahedron has none; every divergence was shrunk to a minimal input.
-    assert views == ["job0-minimal.obj", "job0.js", "job1-minimal.obj", "job1.js", "job4-minimal.obj", "job4.js"]
+    assert views == ["job0-minimal.obj", "job0.js", "job1-minimal.obj", "job1.js", "job4-minimal.obj", "job4.js",
+                     "job5-minimal.obj", "job5.js"]
     for name in ("three.min.js", "OrbitControls.js", "viewer.js"):
         assert os.path.getsize(os.path.join(report, "viewer", name)) > 1000
     with open(os.path.join(report, "index.html")) as f:
@@ -137,7 +143,7 @@ def test_a_polygon_scheme_case_is_drawn_with_its_polygons_and_its_minimal_input(
     assert any(line.startswith("picked v") and "2 reference(s)" in line for line in seen), seen
     assert seen[-1] == "no console error", seen
     with open(os.path.join(report, "results.json")) as f:
-        [case] = [c for c in json.load(f)["cases"] if c["operation"] == "catmull-clark"]
+        [case] = [c for c in json.load(f)["cases"] if c["input"] == "bundled:quad-grid"]
     assert case["view"] == "views/job4.js" and case["minimal"]["faces"] == 1, case
     assert "boundary-rule" in case["minimal"]["symptom"]
     driver = check_viewer.browser()
@@ -209,6 +215,57 @@ def test_a_shrunk_case_shows_its_minimal_input_which_reproduces_it(report):
         # The next case shows its own.
         show_case(driver, "octahedron")
         assert "4 face(s) still show that" in box.text and "weight-family" in box.text, box.text
+        assert not check_viewer.console_errors(driver)
+    finally:
+        driver.quit()
+
+
+def dark_pixels(png):
+    """Pixels darker than any shade the untextured viewer gives a surface whose references agree."""
+    img = Image.open(io.BytesIO(png)).convert("RGB")
+    return sum(1 for p in img.getdata() if sum(p) < 3 * 110)
+
+
+def test_texture_coordinates_are_drawn_as_a_checkerboard_with_their_layout_and_each_value_at_a_corner(report):
+    # The UV bowtie under `none`: the positions agree, OpenSubdiv's texture coordinates do not
+    # (face-order-dependence). The case has a view for them alone, and its shrunk input keeps them.
+    with open(os.path.join(report, "results.json")) as f:
+        [case] = [c for c in json.load(f)["cases"] if c["input"] == "edgecase:uv-bowtie"]
+    assert case["view"] == "views/job5.js" and case["minimal"]["faces"] == 4, case
+    with open(os.path.join(report, case["minimal"]["mesh"])) as f:
+        assert sum(line.startswith("vt ") for line in f) > 4
+    seen = check_viewer.check(report, case="uv-bowtie")
+    assert any(line.startswith("picked corner ") and "2 texture-coordinate rows" in line for line in seen), seen
+    driver = check_viewer.browser()
+    try:
+        open_report(driver, report)
+        show_case(driver, "uv-bowtie")
+        viewer = "window.crossdivViewer"
+        # Opened at the corner where the texture coordinates part most; each implementation's
+        # value there, OpenSubdiv's away from core's.
+        info = driver.execute_script(f"return {viewer}.pickedInfo")
+        worst = driver.execute_script(f"return {viewer}.state.view.uvWorstCorner")
+        assert worst >= 0 and info["corner"] == worst, (worst, info)
+        assert [r[0] for r in info["uvRows"]] == ["core", "opensubdiv"], info["uvRows"]
+        assert float(info["uvRows"][1][2]) > 1e-3, info["uvRows"]
+        panel = driver.find_element(By.CSS_SELECTOR, "#crossdiv-viewer .cv-picked").text
+        assert "texture coordinates" in panel and "face-order-dependence" in panel, panel
+        # The checkerboard: dark squares on the surface with the texture, none without it.
+        canvas = driver.find_element(By.CSS_SELECTOR, "#crossdiv-viewer canvas")
+        driver.execute_script("arguments[0].scrollIntoView()", canvas)
+        textured = dark_pixels(canvas.screenshot_as_png)
+        driver.execute_script(f"document.querySelector('.cv-texture').checked = false; {viewer}.rebuild(false)")
+        plain = dark_pixels(canvas.screenshot_as_png)
+        assert textured > 5000 and plain < textured / 20, (textured, plain)
+        driver.execute_script(f"document.querySelector('.cv-texture').checked = true; {viewer}.rebuild(false)")
+        # The UV layout: drawn, with the seams of the bowtie's regions.
+        layout = driver.find_element(By.CSS_SELECTOR, "#crossdiv-viewer .cv-uv")
+        assert check_viewer.differing_pixels(layout.screenshot_as_png, (255, 255, 255)) > 2000
+        seams = driver.execute_script(f"return {viewer}.uvSeams")
+        text = driver.find_element(By.CSS_SELECTOR, "#crossdiv-viewer .cv-uv-text").text
+        assert seams > 0 and f"{seams} on a seam" in text, text
+        os.makedirs(os.path.join(report, "screenshots"), exist_ok=True)
+        assert driver.find_element(By.ID, "crossdiv-viewer").screenshot(os.path.join(report, "screenshots", "viewer-uv.png"))
         assert not check_viewer.console_errors(driver)
     finally:
         driver.quit()

@@ -109,7 +109,8 @@ def view_entries(mesh_cases):
                         "failure": any(_kind(c, r) == "failure" for r in c["runs"]),
                         "reference": worst["reference"] if worst else None,
                         "worst_vertex": (c.get("worst_vertex") or {}).get("ours_index", -1),
-                        "runs": [{"reference": r["reference"], "outcome": outcome(c, r), "explanation": r.get("explanation", "")}
+                        "runs": [{"reference": r["reference"], "check": r.get("check", ""), "outcome": outcome(c, r),
+                                  "explanation": r.get("explanation", "")}
                                  for r in c["runs"]]})
     # Representatives: the first case of each class, the most frequent classes first.
     frequency = Counter(k for e in entries for k in e["classes"])
@@ -146,12 +147,19 @@ def viewer_html(entries):
             "reference <select class='cv-reference'></select> <select class='cv-level'></select> "
             "<label><input type='checkbox' class='cv-net' checked> control net and ancestors</label> "
             "<label><input type='checkbox' class='cv-wire'> wireframe</label> "
-            "<label><input type='checkbox' class='cv-flat'> flat shading</label></div>"
+            "<label><input type='checkbox' class='cv-flat'> flat shading</label> "
+            "<label><input type='checkbox' class='cv-texture' checked> checkerboard through the texture coordinates "
+            "(cases that compare them)</label></div>"
             "<canvas></canvas><div class='cv-side'><p class='cv-info'></p><div class='cv-picked'></div>"
+            "<div class='cv-uv-box' style='display: none'><p class='cv-uv-text'></p>"
+            "<canvas class='cv-uv' style='width: 300px; height: 300px'></canvas></div>"
             "<div class='cv-minimal'></div>"
             "<p>Drag to orbit, wheel to zoom, right-drag to pan, click to pick a vertex. Colour: distance to the chosen "
             "reference at the chosen level (light: equal, dark red: the largest at that level; grey: no matched vertex). Green: the "
-            "selected vertex (the worst until a pick); blue: the input vertices it descends from, on the control net.</p>"
+            "selected vertex (the worst until a pick); blue: the input vertices it descends from, on the control net. "
+            "Where texture coordinates are compared, the surface carries a checkerboard through them, coloured by each "
+            "corner's distance to the reference's value at the last level, and a click picks a face corner: the side "
+            "of a seam that was clicked.</p>"
             "</div></div>"
             f"<script>window.CROSSDIV_VIEWS = {data};</script>"
             "<script src='viewer/three.min.js'></script><script src='viewer/OrbitControls.js'></script>"

@@ -1,6 +1,9 @@
 // crossdiv's 3D divergence viewer: the refined mesh of the implementation under test, coloured
 // by each vertex's distance to a chosen reference at a chosen level, the worst vertex marked,
-// the coarse ancestors of the picked vertex highlighted on the control net.
+// the coarse ancestors of the picked vertex highlighted on the control net. Where the case
+// compares texture coordinates: the surface textured with a checkerboard through them (coloured
+// by each corner's distance to the reference's value), the UV layout in 2D with its seams, and
+// every implementation's value at the picked corner.
 //
 // Runs from disk, offline: three.js and its OrbitControls are Debian's (libjs-three), copied
 // beside this file by the report. Each case's data is a script views/jobN.js, written by
@@ -28,11 +31,17 @@
         triangles: new Int32Array(bytes(l.triangles)),
         sizes: l.sizes ? new Int32Array(bytes(l.sizes)) : null,
         origins: l.origins ? new Int32Array(bytes(l.origins)) : null,
+        uv: l.uv ? { name: l.uv.name, dimension: l.uv.dimension, values: new Float64Array(bytes(l.uv.values)),
+                     corners: new Int32Array(bytes(l.uv.corners)) } : null,
       })),
       references: {},
+      referenceUvs: {},
+      uvWorstCorner: data.uv_worst_corner === undefined ? -1 : data.uv_worst_corner,
     };
     for (const [name, perLevel] of Object.entries(data.references))
       view.references[name] = perLevel.map((o) => (o === null ? null : new Float32Array(bytes(o))));
+    for (const [name, values] of Object.entries(data.reference_uvs || {}))
+      view.referenceUvs[name] = values === null ? null : new Float64Array(bytes(values));
     for (const level of view.levels) describeVertices(level);
     if (data.minimal) {
       const m = data.minimal;
@@ -70,6 +79,101 @@
       cycles.push(cycle);
     }
     return cycles;
+  }
+
+  // The corner (an index into the level's face corners, as the texture coordinates' `corners`
+  // are numbered) of every triangle slot: a polygon's fan v0 v1 v2, v0 v2 v3, ... takes its
+  // corners 0, j + 1, j + 2. Cached on the level.
+  function slotCorners(L) {
+    if (L.slotCorners) return L.slotCorners;
+    const out = new Int32Array(L.triangles.length);
+    if (!L.sizes) for (let i = 0; i < out.length; ++i) out[i] = i;
+    else {
+      let slot = 0, start = 0;
+      for (const n of L.sizes) {
+        for (let j = 0; j < n - 2; ++j) { out[slot++] = start; out[slot++] = start + j + 1; out[slot++] = start + j + 2; }
+        start += n;
+      }
+    }
+    return (L.slotCorners = out);
+  }
+
+  // A corner of vertex v (its first in face order), for showing values where only a vertex
+  // was chosen; -1 when the level has no texture coordinates.
+  function cornerOfVertex(L, v) {
+    if (!L.uv) return -1;
+    const T = L.triangles, C = slotCorners(L);
+    for (let i = 0; i < T.length; ++i) if (T[i] === v) return C[i];
+    return -1;
+  }
+
+  // The face a corner belongs to and its place in it.
+  function cornerFace(L, corner) {
+    if (!L.sizes) return [Math.floor(corner / 3), corner % 3];
+    if (!L.faceStarts) {
+      L.faceStarts = new Int32Array(L.sizes.length + 1);
+      L.sizes.forEach((n, f) => { L.faceStarts[f + 1] = L.faceStarts[f] + n; });
+    }
+    let lo = 0, hi = L.sizes.length;  // the last face whose start is <= corner
+    while (hi - lo > 1) { const mid = (lo + hi) >> 1; if (L.faceStarts[mid] <= corner) lo = mid; else hi = mid; }
+    return [lo, corner - L.faceStarts[lo]];
+  }
+
+  // The value (u, v) at a corner of a level's channel.
+  function uvAt(L, corner) {
+    const d = L.uv.dimension, i = L.uv.corners[corner] * d;
+    return [L.uv.values[i], d > 1 ? L.uv.values[i + 1] : 0];
+  }
+
+  // The box of a channel's values: [umin, vmin, size of its larger side, its diagonal (what
+  // crossdiv's face-varying tolerances are relative to)].
+  function uvBox(uv) {
+    let u0 = Infinity, v0 = Infinity, u1 = -Infinity, v1 = -Infinity;
+    const d = uv.dimension;
+    for (let i = 0; i < uv.values.length; i += d) {
+      u0 = Math.min(u0, uv.values[i]); u1 = Math.max(u1, uv.values[i]);
+      if (d > 1) { v0 = Math.min(v0, uv.values[i + 1]); v1 = Math.max(v1, uv.values[i + 1]); }
+    }
+    if (d === 1) { v0 = 0; v1 = 0; }
+    return [u0, v0, Math.max(u1 - u0, v1 - v0) || 1, Math.hypot(u1 - u0, v1 - v0)];
+  }
+
+  // How far the reference's value is from ours at every corner of the last level (NaN: its
+  // face has no partner), its maximum and where it is reached: the largest component
+  // difference, as crossdiv's comparison measures it (harness/corner_values.h).
+  function uvDistances(view, reference) {
+    const L = view.levels[view.levels.length - 1], theirs = view.referenceUvs[reference];
+    const n = L.uv ? L.uv.corners.length : 0, d = L.uv ? L.uv.dimension : 0;
+    const dist = new Float64Array(n).fill(NaN);
+    let max = 0, worst = -1;
+    if (!theirs) return { d: dist, max, worst, mapped: false };
+    for (let c = 0; c < n; ++c) {
+      let largest = 0;
+      for (let k = 0; k < d; ++k) largest = Math.max(largest, Math.abs(theirs[c * d + k] - L.uv.values[L.uv.corners[c] * d + k]));
+      dist[c] = largest;
+      if (Number.isFinite(dist[c]) && (worst < 0 || dist[c] > max)) { max = dist[c]; worst = c; }
+    }
+    return { d: dist, max, worst, mapped: true };
+  }
+
+  // A checkerboard of 8 x 8 squares with a finer grid, drawn once: what a texture artist
+  // checks UVs with (stretching, flips and seams show as bent, uneven or broken squares).
+  let checker = null;
+  function checkerTexture() {
+    if (checker) return checker;
+    const canvas = document.createElement("canvas");
+    canvas.width = canvas.height = 512;
+    const g = canvas.getContext("2d");
+    for (let i = 0; i < 8; ++i)
+      for (let j = 0; j < 8; ++j) {
+        g.fillStyle = (i + j) % 2 ? "#3b4a5a" : "#f2f2f2";
+        g.fillRect(64 * i, 64 * j, 64, 64);
+      }
+    g.fillStyle = "#c62828";  // the origin's square, to show which way the layout turns
+    g.fillRect(0, 512 - 64, 32, 32);
+    checker = new THREE.CanvasTexture(canvas);
+    checker.wrapS = checker.wrapT = THREE.RepeatWrapping;
+    return checker;
   }
 
   // Valence (distinct neighbours) and boundary (an edge with one face) of every vertex, and the
@@ -172,6 +276,7 @@
       cases: root.querySelector(".cv-case"), reference: root.querySelector(".cv-reference"),
       level: root.querySelector(".cv-level"), net: root.querySelector(".cv-net"),
       wire: root.querySelector(".cv-wire"), flat: root.querySelector(".cv-flat"),
+      texture: root.querySelector(".cv-texture"), uv: root.querySelector(".cv-uv"),
     };
     this.renderer = new THREE.WebGLRenderer({ canvas: this.canvas, antialias: true, preserveDrawingBuffer: true });
     this.renderer.setPixelRatio(window.devicePixelRatio || 1);
@@ -186,7 +291,7 @@
     this.controls.addEventListener("change", () => this.draw());
     this.group = new THREE.Group();
     this.scene.add(this.group);
-    this.state = { entry: null, view: null, reference: null, level: 0, vertex: -1 };
+    this.state = { entry: null, view: null, reference: null, level: 0, vertex: -1, corner: -1 };
 
     entries.forEach((e, i) => {
       const o = document.createElement("option");
@@ -196,8 +301,13 @@
     });
     this.ui.cases.addEventListener("change", () => this.show(Number(this.ui.cases.value)));
     this.ui.reference.addEventListener("change", () => { this.state.reference = this.ui.reference.value; this.rebuild(false); });
-    this.ui.level.addEventListener("change", () => { this.state.level = Number(this.ui.level.value); this.state.vertex = -1; this.rebuild(true); });
-    for (const box of [this.ui.net, this.ui.wire, this.ui.flat]) box.addEventListener("change", () => this.rebuild(false));
+    this.ui.level.addEventListener("change", () => {
+      this.state.level = Number(this.ui.level.value);
+      this.state.vertex = this.state.corner = -1;
+      this.rebuild(true);
+    });
+    for (const box of [this.ui.net, this.ui.wire, this.ui.flat, this.ui.texture])
+      if (box) box.addEventListener("change", () => this.rebuild(false));
 
     // A click that did not drag picks the vertex nearest the hit point.
     let down = null;
@@ -213,7 +323,14 @@
     this.ui.cases.value = index;
     this.info.textContent = "loading " + entry.view + " ...";
     return load(entry).then((view) => {
-      this.state = { entry, view, reference: entry.reference, level: view.levels.length - 1, vertex: entry.worst_vertex };
+      this.state = { entry, view, reference: entry.reference, level: view.levels.length - 1, vertex: entry.worst_vertex, corner: -1 };
+      // A case whose texture coordinates diverge opens at their worst corner when its
+      // positions agree (no worst vertex), or when that corner is the worst vertex's.
+      const last = view.levels[view.levels.length - 1];
+      if (view.uvWorstCorner >= 0 && last.uv) {
+        const at = last.triangles.length ? cornerVertex(last, view.uvWorstCorner) : -1;
+        if (this.state.vertex < 0 || this.state.vertex === at) { this.state.vertex = at; this.state.corner = view.uvWorstCorner; }
+      }
       this.ui.reference.innerHTML = "";
       for (const name of Object.keys(view.references)) {
         const o = document.createElement("option");
@@ -246,17 +363,23 @@
       this.group.remove(child);
       if (child.geometry) child.geometry.dispose();
     }
-    const position = new Float32Array(L.positions);
-    const colours = new Float32Array(position.length);
-    for (let v = 0; v < dist.d.length; ++v) colour(dist.max > 0 ? dist.d[v] / dist.max : dist.mapped ? 0 : NaN).forEach((c, k) => { colours[3 * v + k] = c; });
-    const geometry = new THREE.BufferGeometry();
-    geometry.setAttribute("position", new THREE.BufferAttribute(position, 3));
-    geometry.setAttribute("color", new THREE.BufferAttribute(colours, 3));
-    geometry.setIndex(new THREE.BufferAttribute(new Uint32Array(L.triangles), 1));
-    geometry.computeVertexNormals();
+    const textured = !!(this.ui.texture && this.ui.texture.checked && L.uv);
+    const uvDist = textured && level === view.levels.length - 1 ? uvDistances(view, reference) : null;
+    this.uvDist = uvDist;
+    const geometry = textured ? texturedGeometry(view, L, uvDist) : new THREE.BufferGeometry();
+    if (!textured) {
+      const position = new Float32Array(L.positions);
+      const colours = new Float32Array(position.length);
+      for (let v = 0; v < dist.d.length; ++v) colour(dist.max > 0 ? dist.d[v] / dist.max : dist.mapped ? 0 : NaN).forEach((c, k) => { colours[3 * v + k] = c; });
+      geometry.setAttribute("position", new THREE.BufferAttribute(position, 3));
+      geometry.setAttribute("color", new THREE.BufferAttribute(colours, 3));
+      geometry.setIndex(new THREE.BufferAttribute(new Uint32Array(L.triangles), 1));
+      geometry.computeVertexNormals();
+    }
     geometry.computeBoundingSphere();
     this.mesh = new THREE.Mesh(geometry, new THREE.MeshPhongMaterial({
       vertexColors: THREE.VertexColors, side: THREE.DoubleSide, flatShading: this.ui.flat.checked,
+      map: textured ? checkerTexture() : null,
       polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1 }));
     this.group.add(this.mesh);
     // Framed round the control net and the surface together (the net encloses a Loop surface).
@@ -271,7 +394,7 @@
     this.markVertex();
     if (aim) {
       // From outside the marked vertex: along its normal, leaning away from the centre.
-      const c = sphere.center, w = this.state.vertex, N = geometry.attributes.normal.array;
+      const c = sphere.center, w = this.state.vertex, N = vertexNormals(L);
       const out = new THREE.Vector3(L.positions[3 * w] - c.x, L.positions[3 * w + 1] - c.y, L.positions[3 * w + 2] - c.z);
       const dir = new THREE.Vector3(N[3 * w], N[3 * w + 1], N[3 * w + 2]);
       if (out.dot(dir) < 0) dir.negate();
@@ -293,9 +416,143 @@
     this.info.innerHTML = "<b>" + escapeHtml(entry.id) + "</b><br>" + escapeHtml(entry.runs.map((r) => r.reference + ": " + r.outcome).join("; ")) +
       "<br>level " + level + ": " + L.valence.length + " vertices, " +
       (L.sizes ? L.sizes.length + " faces; " : L.triangles.length / 3 + " triangles; ") +
-      (dist.mapped ? "largest distance to " + escapeHtml(reference) + " " + fmt(dist.max) + " at v" + dist.worst + " (colour scale 0 .. " + fmt(dist.max) + ")"
+      (textured ? uvLine(view, reference, level, uvDist)
+       : dist.mapped ? "largest distance to " + escapeHtml(reference) + " " + fmt(dist.max) + " at v" + dist.worst + " (colour scale 0 .. " + fmt(dist.max) + ")"
                    : escapeHtml(reference) + " has no vertex map at this level (grey)");
+    this.drawUv();
     this.draw();
+  };
+
+  // What the colours of the textured surface say.
+  function uvLine(view, reference, level, uvDist) {
+    if (!uvDist) return "texture coordinates (checkerboard); the references' values are kept at the last level only";
+    if (!uvDist.mapped) return "texture coordinates (checkerboard); " + escapeHtml(reference) + " gave no texture coordinates (grey)";
+    const L = view.levels[level], box = uvBox(L.uv);
+    return "texture coordinates (checkerboard), coloured by the difference from " + escapeHtml(reference) + "'s value at each corner: largest " +
+      fmt(uvDist.max) + " (" + fmt(uvDist.max / (box[3] || 1)) + " of the UV box) at corner " + uvDist.worst + " of face " + cornerFace(L, uvDist.worst)[0];
+  }
+
+  // Smooth normals per vertex of a level (cached): the textured surface is drawn with its
+  // corners apart, and takes its normals from here so that it shades as the untextured one.
+  function vertexNormals(L) {
+    if (L.normals) return L.normals;
+    const g = new THREE.BufferGeometry();
+    g.setAttribute("position", new THREE.BufferAttribute(new Float32Array(L.positions), 3));
+    g.setIndex(new THREE.BufferAttribute(new Uint32Array(L.triangles), 1));
+    g.computeVertexNormals();
+    return (L.normals = g.attributes.normal.array);
+  }
+
+  // The level drawn corner by corner (three slots per triangle, in the triangles' order, so that
+  // a ray's faceIndex is the triangle's), each slot with its corner's texture coordinates
+  // normalised to the input's UV box and the colour of its corner's distance to the reference.
+  function texturedGeometry(view, L, uvDist) {
+    const T = L.triangles, C = slotCorners(L), N = vertexNormals(L), P = L.positions;
+    const box = uvBox(view.levels[0].uv || L.uv);
+    const position = new Float32Array(3 * T.length), normal = new Float32Array(3 * T.length);
+    const uv = new Float32Array(2 * T.length), colours = new Float32Array(3 * T.length);
+    for (let i = 0; i < T.length; ++i) {
+      const v = T[i], [u, w] = uvAt(L, C[i]);
+      for (let k = 0; k < 3; ++k) { position[3 * i + k] = P[3 * v + k]; normal[3 * i + k] = N[3 * v + k]; }
+      uv[2 * i] = (u - box[0]) / box[2];  // the box is the texture's square: 8 x 8 checks across it
+      uv[2 * i + 1] = (w - box[1]) / box[2];
+      const c = !uvDist ? [1, 1, 1] : colour(uvDist.max > 0 ? uvDist.d[C[i]] / uvDist.max : uvDist.mapped ? 0 : NaN);
+      const tint = c.map((x) => 0.35 + 0.65 * x);  // keep the squares visible under dark red
+      for (let k = 0; k < 3; ++k) colours[3 * i + k] = tint[k];
+    }
+    const g = new THREE.BufferGeometry();
+    g.setAttribute("position", new THREE.BufferAttribute(position, 3));
+    g.setAttribute("normal", new THREE.BufferAttribute(normal, 3));
+    g.setAttribute("uv", new THREE.BufferAttribute(uv, 2));
+    g.setAttribute("color", new THREE.BufferAttribute(colours, 3));
+    return g;
+  }
+
+  // The class of the value at a corner, as crossdiv names it (harness/corner_values.h): a
+  // junction (three or more values at its vertex), a corner (its value on one face), a seam
+  // (two values), else boundary or interior.
+  function uvClass(L, corner) {
+    const v = cornerVertex(L, corner), value = L.uv.corners[corner], T = L.triangles, C = slotCorners(L);
+    const values = new Set(), faces = new Set();
+    for (let i = 0; i < T.length; ++i) {
+      if (T[i] !== v) continue;
+      values.add(L.uv.corners[C[i]]);
+      if (L.uv.corners[C[i]] === value) faces.add(cornerFace(L, C[i])[0]);
+    }
+    if (values.size >= 3) return "junction";
+    if (faces.size === 1) return "UV corner";
+    if (values.size === 2) return "seam";
+    return L.boundary[v] ? "boundary" : "interior";
+  }
+
+  // The vertex at a corner of a level.
+  function cornerVertex(L, corner) {
+    const C = slotCorners(L);
+    for (let i = 0; i < C.length; ++i) if (C[i] === corner) return L.triangles[i];
+    return -1;
+  }
+
+  // The UV layout of the shown level in 2D: every face's edges in UV, the seams (an edge whose
+  // two faces give its ends different values) in red, the UV boundary darker, the picked corner
+  // green and each reference's value there as a ring.
+  Viewer.prototype.drawUv = function () {
+    const canvas = this.ui.uv;
+    if (!canvas) return;
+    const { view, level, corner, reference } = this.state;
+    const L = view.levels[level];
+    const box = canvas.parentNode;
+    box.style.display = L.uv ? "" : "none";
+    if (!L.uv) return;
+    const size = 300, pad = 12, ratio = window.devicePixelRatio || 1;
+    canvas.width = canvas.height = size * ratio;
+    const g = canvas.getContext("2d");
+    g.setTransform(ratio, 0, 0, ratio, 0, 0);
+    g.fillStyle = "#ffffff";
+    g.fillRect(0, 0, size, size);
+    const [u0, v0, span] = uvBox(view.levels[0].uv || L.uv);
+    const at = (p) => [pad + (p[0] - u0) / span * (size - 2 * pad), size - pad - (p[1] - v0) / span * (size - 2 * pad)];
+    // Each edge once, keyed by its vertices: the values at its ends on each side.
+    const n = L.positions.length / 3, edges = new Map();
+    const cycles = L.cycles || (L.cycles = faceCycles(L));
+    let start = 0;
+    for (const cycle of cycles) {
+      for (let k = 0; k < cycle.length; ++k) {
+        const a = cycle[k], b = cycle[(k + 1) % cycle.length];
+        const ca = start + k, cb = start + (k + 1) % cycle.length;
+        const key = a < b ? a * n + b : b * n + a;
+        const ends = a < b ? [L.uv.corners[ca], L.uv.corners[cb]] : [L.uv.corners[cb], L.uv.corners[ca]];
+        const e = edges.get(key);
+        if (!e) edges.set(key, { sides: [ends], from: [ca, cb] });
+        else e.sides.push(ends);
+      }
+      start += cycle.length;
+    }
+    const stroke = (p, q, colour, width) => {
+      g.strokeStyle = colour; g.lineWidth = width;
+      g.beginPath(); g.moveTo(...at(p)); g.lineTo(...at(q)); g.stroke();
+    };
+    const d = L.uv.dimension, value = (i) => [L.uv.values[i * d], d > 1 ? L.uv.values[i * d + 1] : 0];
+    let seams = 0;
+    const later = [];
+    for (const e of edges.values()) {
+      const [a, b] = e.sides[0];
+      const seam = e.sides.some(([x, y]) => x !== a || y !== b);
+      if (seam) { seams++; for (const [x, y] of e.sides) later.push([value(x), value(y), "#d32f2f", 2]); }
+      else stroke(value(a), value(b), e.sides.length === 1 ? "#455a64" : "#b0bec5", e.sides.length === 1 ? 1.5 : 0.7);
+    }
+    for (const args of later) stroke(...args);
+    this.uvSeams = seams;
+    if (corner >= 0 && corner < L.uv.corners.length) {
+      const dot = (p, colour, r, fill) => {
+        g.beginPath(); g.arc(...at(p), r, 0, 2 * Math.PI);
+        if (fill) { g.fillStyle = colour; g.fill(); } else { g.strokeStyle = colour; g.lineWidth = 2; g.stroke(); }
+      };
+      dot(uvAt(L, corner), "#00c853", 4, true);
+      const theirs = level === view.levels.length - 1 && view.referenceUvs[reference];
+      if (theirs && Number.isFinite(theirs[corner * d])) dot([theirs[corner * d], d > 1 ? theirs[corner * d + 1] : 0], "#6a1b9a", 7, false);
+    }
+    box.querySelector(".cv-uv-text").textContent = "UV layout at level " + level + ": " + edges.size + " edges, " + seams +
+      " on a seam (red); green: the picked corner, ringed: " + reference + "'s value there";
   };
 
   function lines(positions, edges, colour, opacity) {
@@ -333,13 +590,34 @@
       rows.push([name, vec(q), fmt(Math.hypot(o[3 * vertex], o[3 * vertex + 1], o[3 * vertex + 2]))]);
     }
     const run = entry.runs.find((r) => r.reference === reference);
-    this.pickedInfo = { level, vertex, cls: vertexClass(view, level, vertex), valence: L.valence[vertex], ancestors: roots, rows };
+    const uvRun = entry.runs.find((r) => r.reference === reference && r.check && r.check.startsWith("texture"));
+    // The texture coordinates at the picked corner (a vertex picked without one: its first).
+    let corner = this.state.corner;
+    if (L.uv && (corner < 0 || cornerVertex(L, corner) !== vertex)) corner = this.state.corner = cornerOfVertex(L, vertex);
+    const uvRows = [];
+    if (L.uv && corner >= 0) {
+      const ours = uvAt(L, corner), d = L.uv.dimension;
+      uvRows.push([view.subject, vec(ours), "-"]);
+      for (const [name, theirs] of Object.entries(view.referenceUvs)) {
+        if (level !== view.levels.length - 1) { uvRows.push([name, "kept at the last level only", "-"]); continue; }
+        if (!theirs) { uvRows.push([name, "gave no texture coordinates", "-"]); continue; }
+        const q = [theirs[corner * d], d > 1 ? theirs[corner * d + 1] : 0];
+        uvRows.push([name, vec(q), fmt(Math.max(Math.abs(q[0] - ours[0]), Math.abs(q[1] - ours[1])))]);
+      }
+    }
+    const [face, place] = corner >= 0 ? cornerFace(L, corner) : [-1, -1];
+    this.pickedInfo = { level, vertex, cls: vertexClass(view, level, vertex), valence: L.valence[vertex], ancestors: roots, rows,
+                        corner, face, uvRows };
     this.picked.innerHTML = "<b>v" + vertex + "</b> at level " + level + (vertex === entry.worst_vertex && level === view.levels.length - 1 ? " (the case's worst vertex)" : "") +
       "<br>" + escapeHtml(this.pickedInfo.cls) +
       (roots.length ? "<br>descends from input vertices " + roots.map((a) => "v" + a).join(", ") : "") +
       (run ? "<br>" + escapeHtml(reference) + ": " + escapeHtml(run.outcome) + (run.explanation ? " — " + escapeHtml(run.explanation) : "") : "") +
       "<table><tr><th>implementation</th><th>position</th><th>distance</th></tr>" +
-      rows.map((r) => "<tr><td>" + r.map(escapeHtml).join("</td><td>") + "</td></tr>").join("") + "</table>";
+      rows.map((r) => "<tr><td>" + r.map(escapeHtml).join("</td><td>") + "</td></tr>").join("") + "</table>" +
+      (uvRows.length ? "<p>corner " + place + " of face " + face + " (" + uvClass(L, corner) + ")" +
+        (uvRun ? ": " + escapeHtml(uvRun.outcome) + (uvRun.explanation ? " — " + escapeHtml(uvRun.explanation) : "") : "") + "</p>" +
+        "<table class='cv-uv-table'><tr><th>implementation</th><th>texture coordinates</th><th>difference</th></tr>" +
+        uvRows.map((r) => "<tr><td>" + r.map(escapeHtml).join("</td><td>") + "</td></tr>").join("") + "</table>" : "");
   };
 
   Viewer.prototype.pickAt = function (clientX, clientY) {
@@ -349,13 +627,17 @@
     ray.setFromCamera(ndc, this.camera);
     const hit = ray.intersectObject(this.mesh)[0];
     if (!hit) return false;
-    const P = this.state.view.levels[this.state.level].positions;
+    // The hit triangle's corner nearest the hit point: its vertex, and its face corner (the
+    // vertex's value on the side that was clicked, where a seam gives it two).
+    const L = this.state.view.levels[this.state.level], P = L.positions;
     let best = -1, bestD = Infinity;
-    for (const v of [hit.face.a, hit.face.b, hit.face.c]) {
+    for (let k = 0; k < 3; ++k) {
+      const v = L.triangles[3 * hit.faceIndex + k];
       const d = hit.point.distanceToSquared(new THREE.Vector3(P[3 * v], P[3 * v + 1], P[3 * v + 2]));
-      if (d < bestD) { bestD = d; best = v; }
+      if (d < bestD) { bestD = d; best = 3 * hit.faceIndex + k; }
     }
-    this.state.vertex = best;
+    this.state.vertex = L.triangles[best];
+    this.state.corner = L.uv ? slotCorners(L)[best] : -1;
     this.rebuild(false);
     return true;
   };

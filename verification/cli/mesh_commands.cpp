@@ -10,6 +10,7 @@
 #include <set>
 
 #include "command.h"
+#include "invariance_command.h"
 #include "crossdiv/io/output_file.h"
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/datasets/edge_cases.h"
@@ -26,6 +27,7 @@
 #include "crossdiv/verification/implementations/output_size.h"
 #include "crossdiv/verification/implementations/tag_rules.h"
 #include "crossdiv/subdiv/hole_faces.h"
+#include "crossdiv/verification/comparisons/input_transformation.h"
 #include "crossdiv/verification/implementations/program_implementation.h"
 #include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/verification/suite/manifest.h"
@@ -48,6 +50,7 @@ struct SchemeArgs {
     bool ignore_unknown_tags = false;
     std::string nonmanifold = "opensubdiv";
     std::string face_varying;  ///< empty: the file's facevaryinginterpolateboundary tag, else all
+    std::string triangles;     ///< empty: the file's smoothtriangles tag, else catmark
 
     /// The scheme options; `max_faces_default` is the command's --max-faces default
     /// (implementations/output_size.h: one implementation alone, or several side by side).
@@ -93,6 +96,11 @@ struct SchemeArgs {
                        "corners-only, corners-plus1, corners-plus2, boundaries, all (linear everywhere). Default: the "
                        "file's 't facevaryinginterpolateboundary' tag, else all (OpenSubdiv's default)")
             ->check(CLI::IsMember(fvar_rules));
+        app.add_option("--triangles", triangles,
+                       "Catmull-Clark's edge weights where an edge has a triangle on a side: catmark (the scheme's "
+                       "own, OpenSubdiv's TRI_SUB_CATMARK) or smooth (TRI_SUB_SMOOTH, the weights that keep a "
+                       "triangle's surface rounder). Default: the file's 't smoothtriangles' tag, else catmark")
+            ->check(CLI::IsMember({"catmark", "smooth"}));
         app.add_flag("--ignore-unknown-tags", ignore_unknown_tags,
                      "Refine a shape file whose tags include one crossdiv does not know, without it (each is noted)");
         max_faces = max_faces_default;
@@ -103,7 +111,7 @@ struct SchemeArgs {
     }
     PolySchemeArgs poly() const {
         return {scheme,    boundary,     levels, creasing, max_faces, tag_policy(), nonmanifold_rule_from_string(nonmanifold),
-                face_varying};
+                face_varying, triangles};
     }
     UnknownTags tag_policy() const { return ignore_unknown_tags ? UnknownTags::Ignore : UnknownTags::Refuse; }
     /// @throws InputError when `levels` of this scheme on `mesh` pass --max-faces.
@@ -177,6 +185,9 @@ int run_loop_subdivide_face_varying(const std::string& in, const PolyMesh& input
 
 /// `flags` with the boundary rule `input`'s tags ask for (tag_rules.h), the notes printed.
 SchemeArgs with_tag_rules(const SchemeArgs& flags, PolyMesh& input) {
+    if (!flags.triangles.empty())
+        throw InputError("--triangles (catmark or smooth: OpenSubdiv's TRI_SUB_CATMARK or TRI_SUB_SMOOTH) is "
+                         "Catmull-Clark's; loop has no triangle rule");
     SchemeArgs s = flags;
     const TagRules tags = resolve_tag_rules(Scheme::Loop, flags.boundary, input);
     for (const std::string& note : tags.notes) fmt::print("note: {}\n", note);
@@ -573,6 +584,50 @@ int diff_command(const DiffArgs& a) {
     return run_diff(a.input, a.scheme, a.against, a.out, subject.get(), a.programs.timeout, a.programs.subject);
 }
 
+struct InvarianceArgs {
+    std::vector<std::string> inputs;
+    SchemeArgs scheme;
+    ProgramArgs programs;
+    std::string impls, transforms, json;
+    std::uint64_t seed = 1;
+    double tolerance = 1e-12;
+    bool no_isolate = false;
+    void add_to(CLI::App& app) {
+        app.add_option("inputs", inputs, "Mesh files, bundled:NAME, edgecase:NAME, collections (bundled:all, ...)")->required();
+        scheme.add_scheme_options(app, kMaxComparedFaces);
+        app.add_option("--impl", impls,
+                       "Implementations to check, comma-separated (core, a reference's name); default: core and every "
+                       "reference that has the scheme");
+        std::string names;
+        for (InputTransformation t : kInputTransformations) names += (names.empty() ? "" : ", ") + std::string(to_string(t));
+        app.add_option("--transform", transforms, "Transformations, comma-separated (default: all): " + names);
+        app.add_option("--seed", seed, "Seed of the random transformations (the same seed, the same inputs)")->capture_default_str();
+        app.add_option("--tolerance", tolerance,
+                       "Largest difference, relative to the diagonal, of a transformation floating point does not keep exact")
+            ->check(CLI::PositiveNumber)
+            ->capture_default_str();
+        app.add_option("--json", json, "Write the results as JSON to this file");
+        app.add_flag("--no-isolate", no_isolate, "Run implementations in this process (debugging; a crash ends the run)");
+        programs.add_to(app);
+    }
+};
+int invariance_command(const InvarianceArgs& a) {
+    if (!a.programs.subject.empty() && !a.impls.empty()) throw InputError("--impl and --subject exclude each other");
+    const std::unique_ptr<Implementation> subject = a.programs.setup(scheme_from_string(a.scheme.scheme));
+    InvarianceOptions o;
+    o.inputs = a.inputs;
+    o.scheme = a.scheme.poly();
+    o.weights = a.scheme.weights;
+    o.impls = split_commas(a.impls);
+    o.transforms = split_commas(a.transforms);
+    o.seed = a.seed;
+    o.tolerance = a.tolerance;
+    o.timeout = a.programs.timeout;
+    o.isolate = !a.no_isolate;
+    o.json = a.json;
+    return run_invariance(o, subject.get());
+}
+
 }  // namespace
 
 void add_mesh_commands(CLI::App& app, int& status) {
@@ -584,6 +639,10 @@ void add_mesh_commands(CLI::App& app, int& status) {
                             status, edgecases_command);
     add_command<DiffArgs>(app, "diff", "Shrink a divergence to the worst vertex's neighbourhood and a minimal mesh", status,
                           diff_command);
+    add_command<InvarianceArgs>(app, "invariance",
+                                "Check that each implementation's refinement does not depend on how the input is written "
+                                "(faces rotated, reordered, relabelled, reversed; the mesh scaled, mirrored, rotated; run again)",
+                                status, invariance_command);
 }
 
 }  // namespace crossdiv::cli

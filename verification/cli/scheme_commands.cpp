@@ -30,19 +30,15 @@
 #include "crossdiv/verification/implementations/registry.h"
 
 namespace crossdiv::cli {
-namespace {
 
 using namespace crossdiv::verification;
 
-/// The rule a run uses on `mesh` (rule_with_tags), its notes printed.
 SchemeRule rule_with_tags(Scheme scheme, const PolySchemeArgs& s, PolyMesh& mesh) {
     std::vector<std::string> notes;
-    const SchemeRule rule = verification::rule_with_tags(scheme, {s.boundary, s.creasing, s.nonmanifold}, mesh, notes);
+    const SchemeRule rule = verification::rule_with_tags(scheme, {s.boundary, s.creasing, s.nonmanifold, s.face_varying, s.triangles}, mesh, notes);
     for (const std::string& note : notes) fmt::print("note: {}\n", note);
     return rule;
 }
-
-}  // namespace
 
 std::optional<FaceVaryingRule> face_varying_rule_noted(Scheme scheme, const std::string& flag, const PolyMesh& mesh) {
     std::vector<std::string> notes;
@@ -294,7 +290,8 @@ int run_limit(const LimitArgs& a) {
     if (!mesh.creases.empty())
         throw InputError(a.input + " has crease or corner tags; limit positions under creases are not implemented "
                          "(the limit masks here are the smooth and boundary ones); use subdivide");
-    const RefineRequest request = limit_request(a);
+    RefineRequest request = limit_request(a);
+    request.face_varying = face_varying_rule_noted(request.scheme, a.face_varying, mesh);
     const adapters::LimitPoints limit = core_implementation().limit_points(mesh, request);
     PolyMesh level = limit.level;
     const double diagonal = bounding_box_diagonal(level.positions);
@@ -303,13 +300,27 @@ int run_limit(const LimitArgs& a) {
         moved = std::max(moved, (limit.position[v] - level.positions[v]).norm() / diagonal);
     fmt::print("{}: level {} has {} vertices; the largest move to the limit is {:.3g} of the diagonal\n", a.input,
                a.levels, level.num_vertices(), moved);
+    nlohmann::json j{{"tool", "crossdiv limit"}, {"input", a.input}, {"scheme", a.scheme}, {"levels", a.levels},
+                     {"max_move_rel", moved}};
+    if (limit.uv) {
+        // How far the texture coordinates move to their limits, relative to the UV box.
+        const FaceVaryingChannel& refined = level.face_varying.front();
+        const double box = verification::uv_box_diagonal(refined);
+        double uv_moved = 0;
+        for (size_t i = 0; i < refined.values.size(); ++i)
+            uv_moved = std::max(uv_moved, std::abs(limit.uv->values[i] - refined.values[i]));
+        uv_moved = box > 0 ? uv_moved / box : uv_moved;
+        fmt::print("texture coordinates ({} rule): {} values; the largest move to the limit is {:.3g} of the UV box\n",
+                   to_string(*request.face_varying), refined.num_values(), uv_moved);
+        j["face_varying"] = to_string(*request.face_varying);
+        j["uv_max_move_rel"] = uv_moved;
+    }
     if (!a.out.empty()) {
         level.positions = limit.position;
+        if (limit.uv) level.face_varying = {*limit.uv};
         write_mesh(a.out, level);
         fmt::print("limit mesh written to {}\n", a.out);
     }
-    nlohmann::json j{{"tool", "crossdiv limit"}, {"input", a.input}, {"scheme", a.scheme}, {"levels", a.levels},
-                     {"max_move_rel", moved}};
     bool ok = true;
     if (!a.against.empty()) {
         if (a.against != "opensubdiv") throw InputError("limit: only opensubdiv has limit positions, not '" + a.against + "'");
@@ -363,7 +374,16 @@ void LimitArgs::add_to(CLI::App& app) {
     app.add_option("--levels", levels, "Level whose vertices are moved (0: the input)")->capture_default_str();
     app.add_option("--against", against, "opensubdiv: compare with PrimvarRefiner::Limit");
     app.add_option("--json", json, "Write the results as JSON");
-    app.add_option("-o,--output", out, "Write the level with every vertex at its limit position");
+    app.add_option("-o,--output", out,
+                   "Write the level with every vertex at its limit position (and, with texture coordinates, each "
+                   "value at its limit, as OBJ vt)");
+    std::vector<std::string> fvar_rules;
+    for (FaceVaryingRule r : kFaceVaryingRules) fvar_rules.emplace_back(to_string(r));
+    app.add_option("--fvar", face_varying,
+                   "The rule the input's texture coordinates are refined by before their limit values are taken "
+                   "(none, corners-only, corners-plus1, corners-plus2, boundaries, all). Default: the file's "
+                   "'t facevaryinginterpolateboundary' tag, else all")
+        ->check(CLI::IsMember(fvar_rules));
 }
 
 void SpectrumArgs::add_to(CLI::App& app) {

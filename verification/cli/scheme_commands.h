@@ -28,7 +28,12 @@ struct PolySchemeArgs {
     verification::UnknownTags unknown_tags = verification::UnknownTags::Refuse;  ///< --ignore-unknown-tags
     NonManifoldRule nonmanifold = NonManifoldRule::OpenSubdiv;                      ///< --nonmanifold
     std::string face_varying;  ///< --fvar; empty: the file's tag, else all
+    std::string triangles;     ///< --triangles (Catmull-Clark); empty: the file's tag, else catmark
 };
+
+/// The rule a run of `scheme` uses on `mesh` (verification::rule_with_tags: the flags, else the
+/// file's tags), its notes printed.
+verification::SchemeRule rule_with_tags(verification::Scheme scheme, const PolySchemeArgs& s, PolyMesh& mesh);
 
 /// The face-varying rule of a run on `mesh` (verification::face_varying_rule), its notes printed.
 std::optional<FaceVaryingRule> face_varying_rule_noted(verification::Scheme scheme, const std::string& flag,
@@ -79,13 +84,15 @@ int run_scheme_diff(const std::string& in, const PolySchemeArgs& s, const std::s
 
 struct LimitArgs {
     std::string input, scheme = "loop", weights = "loop", boundary = "edge-only", against, json, out;
+    std::string face_varying;  ///< --fvar; empty: the file's tag, else all
     int levels = 0;
     void add_to(CLI::App& app);
 };
 /// `crossdiv limit IN --scheme loop|catmull-clark [--weights] [--boundary] [--levels N]
-/// [--against opensubdiv] [--json F] [-o OUT]`: the level-N mesh with every vertex moved to
-/// its limit position; with --against, the comparison with OpenSubdiv's Limit() (exit 1 when
-/// it diverges).
+/// [--fvar RULE] [--against opensubdiv] [--json F] [-o OUT]`: the level-N mesh with every vertex
+/// moved to its limit position, and its texture coordinates (when it has them) to their limit
+/// values; with --against, the comparison with OpenSubdiv's Limit() and LimitFaceVarying() (exit
+/// 1 when it diverges).
 int run_limit(const LimitArgs& a);
 
 struct SpectrumArgs {

@@ -17,6 +17,23 @@ std::string short_name(Scheme scheme, const RuleFit& f) {
     return fmt::format("{}/{}", to_string(f.rule.loop.weights), to_string(f.rule.loop.boundary));
 }
 
+/// The fit of each face-varying rule per class of UV vertex, and the rule the subject's texture
+/// coordinates follow.
+void print_uv_rules(const FaceVaryingIdentification& id) {
+    fmt::print("  {:<22} {:>7}", "texture coordinates", "corners");
+    for (FaceVaryingRule r : kFaceVaryingRules) fmt::print(" {:>14}", to_string(r));
+    fmt::print("\n");
+    auto cell = [&](double x) { return fmt::format("{}{:.2g}", x <= id.tolerance ? "= " : "  ", x); };
+    for (const UvClassFit& row : id.rows) {
+        fmt::print("  {:<22} {:>7}", to_string(row.cls), row.corners);
+        for (double x : row.max_rel) fmt::print(" {:>14}", cell(x));
+        fmt::print("\n");
+    }
+    fmt::print("  {:<22} {:>7}", "every corner", "");
+    for (double x : id.whole) fmt::print(" {:>14}", cell(x));
+    fmt::print("\n  texture coordinates follow {}\n", id.summary());
+}
+
 }  // namespace
 
 /// The subject's run, its match to core and the rule fits of each vertex class.
@@ -31,6 +48,7 @@ void print_subject(const RefinementComparison& c) {
     }
     fmt::print("  subject '{}' ran in {:.3f} s; vertices matched to core's by {}\n", c.subject, c.subject_outcome.seconds,
                to_string(c.subject_match.method));
+    if (c.uv_rules) print_uv_rules(*c.uv_rules);
     if (!c.rules) return;
     fmt::print("  {:<22} {:>7}", c.rules->classified_level ? fmt::format("class at level {}", c.rules->classified_level)
                                                            : std::string("whole mesh"),
@@ -87,6 +105,11 @@ void SubjectVerdict::add(const RefinementComparison& c) {
         agree += r.verdict == Verdict::Agree;
         if (r.verdict == Verdict::Diverge) classes.insert(to_string(r.divergence_class));
         unexplained += r.verdict == Verdict::Diverge && r.divergence_class == DivergenceClass::Unexplained;
+        // Its texture coordinates: a verdict of their own, counted the same way.
+        if (r.uv && r.uv->compared() && r.uv->outcome.verdict == Verdict::Diverge) {
+            classes.insert(to_string(r.uv->outcome.cls));
+            unexplained += r.uv->outcome.cls == DivergenceClass::Unexplained;
+        }
     }
 }
 

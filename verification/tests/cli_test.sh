@@ -58,6 +58,13 @@ expect subdivide-fvar-loop 0 'uv none, opensubdiv' -- "$crossdiv" subdivide edge
 expect subdivide-fvar-dropped 0 'note: edgecase:uv-seam-tri.s texture coordinates are not refined: sqrt3 has no face-varying rules here' -- "$crossdiv" subdivide edgecase:uv-seam-tri --scheme sqrt3 --levels 1 -o "$tmp/x.obj"
 expect subdivide-fvar-unknown 2 'fvar: .*linear.* not in' -- "$crossdiv" subdivide edgecase:uv-seam --scheme catmull-clark --fvar linear -o "$tmp/x.obj"
 expect subdivide-fvar-no-uvs 0 'note: .* has no texture coordinates \(face-varying data\); the face-varying rule asked for \(none\) changes nothing' -- "$crossdiv" subdivide bundled:quad-cube --scheme catmull-clark --fvar none -o "$tmp/x.obj"
+# Catmull-Clark's triangle rule: smooth (TRI_SUB_SMOOTH) as OpenSubdiv refines it; OpenMesh has
+# only the scheme's own weights (triangle-rule); Loop has no triangle rule.
+expect triangles-smooth 0 'opensubdiv .* agree' -- "$crossdiv" compare bundled:tetrahedron --scheme catmull-clark --triangles smooth --levels 2 --against opensubdiv
+expect triangles-smooth-openmesh 1 'openmesh .*triangle-rule: openmesh applies the catmark weights at triangles' -- "$crossdiv" compare bundled:tetrahedron --scheme catmull-clark --triangles smooth --levels 2 --against openmesh
+expect triangles-differ 1 '' -- cmp -s <("$crossdiv" subdivide bundled:tetrahedron --scheme catmull-clark --triangles smooth -o "$tmp/ts.obj" >/dev/null; cat "$tmp/ts.obj") <("$crossdiv" subdivide bundled:tetrahedron --scheme catmull-clark --triangles catmark -o "$tmp/tc.obj" >/dev/null; cat "$tmp/tc.obj")
+expect triangles-loop 2 'is Catmull-Clark.s; loop has no triangle rule' -- "$crossdiv" subdivide bundled:tetrahedron --triangles smooth -o "$tmp/x.obj"
+expect triangles-unknown 2 'triangles: .*loop.* not in' -- "$crossdiv" subdivide bundled:tetrahedron --scheme catmull-clark --triangles loop -o "$tmp/x.obj"
 # Curvature: the octahedron's hand values (H = 1, K = pi / sqrt 3, mixed area 2 sqrt 3 / 3, defect 2 pi / 3),
 # Gauss-Bonnet on the torus, CGAL's jet fit compared, the mesh coloured, and what the operators refuse.
 expect curvature-octahedron 0 '^0,estimated,1\.1547005383792517,2\.0943951023931957,1,1\.8137993642342178,1,1,' -- bash -c "\"$crossdiv\" curvature bundled:octahedron --csv \"$tmp/oct.csv\" >/dev/null && cat \"$tmp/oct.csv\""
@@ -277,10 +284,27 @@ expect cc-subdivide 0 '26 vertices, 24 faces, 1 level\(s\), catmull-clark edge-o
 expect cc-compare 1 'openmesh +midpoint-average +diverge .*boundary-rule' -- "$crossdiv" compare bundled:quad-grid --scheme catmull-clark --levels 2
 expect cc-compare-closed 0 'every reference agrees' -- "$crossdiv" compare bundled:quad-torus --scheme catmull-clark --levels 2 --json "$tmp/cc.json"
 expect cc-subject-named 0 'rule: midpoint-average' -- "$crossdiv" compare bundled:quad-grid --scheme catmull-clark --levels 2 --subject-name mine --subject "$crossdiv subdivide {in} --scheme catmull-clark --boundary midpoint-average --levels {levels} -o {out}"
+# A program subject that returns texture coordinates (OBJ vt) refined by another rule than the
+# one asked for: its face-varying verdict names the rule it follows, class by class of UV vertex.
+expect uv-subject-rule 0 'texture coordinates follow the corners-only rule' -- "$crossdiv" compare edgecase:uv-seam --scheme catmull-clark --levels 2 --fvar none --against opensubdiv --subject-name mine --subject "$crossdiv subdivide {in} --scheme catmull-clark --fvar corners-only --levels {levels} -o {out}"
+expect uv-subject-verdict 0 "opensubdiv +diverge .*mine's texture coordinates follow the corners-only rule, not none" -- "$crossdiv" compare edgecase:uv-seam --scheme catmull-clark --levels 2 --fvar none --against opensubdiv --subject-name mine --subject "$crossdiv subdivide {in} --scheme catmull-clark --fvar corners-only --levels {levels} -o {out}"
 expect cc-midpoint-loop 2 "loop has no boundary rule 'midpoint-average'" -- "$crossdiv" subdivide bundled:torus --boundary midpoint-average -o "$tmp/x.obj"
 expect limit-loop 0 'against opensubdiv: agree' -- "$crossdiv" limit bundled:open-patch --scheme loop --levels 2 --against opensubdiv -o "$tmp/lim.obj" --json "$tmp/lim.json"
 expect limit-cc-nonquad 2 'needs quads \(refine one level first\)' -- "$crossdiv" limit bundled:prism-5 --scheme catmull-clark
 expect limit-cc 0 'against opensubdiv: agree' -- "$crossdiv" limit bundled:prism-5 --scheme catmull-clark --levels 1 --against opensubdiv
+# Invariance: core under every transformation; OpenMesh's Loop, whose isolated vertex does not
+# move with a translated input; a subject program; bad names.
+expect invariance-core 0 '^24 of 24 checks invariant, 0 not invariant' -- "$crossdiv" invariance bundled:icosahedron bundled:open-patch --levels 2 --impl core
+expect invariance-openmesh 1 'openmesh +translate +not-invariant .*\(worst: vertex 4, valence 0' -- "$crossdiv" invariance edgecase:isolated-vertex --levels 2 --impl openmesh
+expect invariance-subject 0 'mine +rotate-corners +invariant' -- "$crossdiv" invariance bundled:quad-cube --scheme catmull-clark --levels 1 --transform rotate-corners,scale --subject-name mine --subject "$crossdiv subdivide {in} --scheme catmull-clark --levels {levels} -o {out}"
+expect invariance-json 0 '"transformation": "mirror"' -- bash -c "\"$crossdiv\" invariance bundled:octahedron --levels 1 --impl core --transform mirror --json \"$tmp/inv.json\" >/dev/null && cat \"$tmp/inv.json\""
+expect invariance-unknown 2 "unknown transformation 'spin' \(known: rotate-corners" -- "$crossdiv" invariance bundled:octahedron --transform spin
+expect invariance-impl-and-subject 2 '\-\-impl and \-\-subject exclude each other' -- "$crossdiv" invariance bundled:octahedron --impl core --subject "x {in} {out}"
+# Limit texture coordinates (LimitFaceVarying): core's against Far's, and written as vt.
+expect limit-uv 0 'limit texture coordinates within .* of the UV box over 1024 corners' -- "$crossdiv" limit edgecase:uv-junction --scheme catmull-clark --levels 2 --fvar none --against opensubdiv
+expect limit-uv-loop 0 'against opensubdiv: agree .*limit texture coordinates within' -- "$crossdiv" limit edgecase:uv-junction-tri --scheme loop --levels 1 --fvar corners-plus1 --against opensubdiv
+expect limit-uv-move 0 'texture coordinates \(all rule\): .* values; the largest move to the limit is 0 of the UV box' -- "$crossdiv" limit edgecase:uv-seam --scheme catmull-clark --levels 1 --fvar all
+expect limit-uv-written 0 '^vt ' -- bash -c "\"$crossdiv\" limit edgecase:uv-seam --scheme catmull-clark --levels 1 --fvar none -o \"$tmp/limuv.obj\" >/dev/null && grep -m1 '^vt ' \"$tmp/limuv.obj\""
 expect spectrum 0 'catmull-clark +4 +0\.500000 +2 ' -- "$crossdiv" spectrum --scheme catmull-clark --valence 3..6 --json "$tmp/sp.json"
 expect spectrum-bad 2 "--valence wants N or A..B" -- "$crossdiv" spectrum --valence 2..5
 expect sqrt3-subdivide 0 '10 vertices, 9 faces, 2 level\(s\), sqrt3 count-from-input core' -- "$crossdiv" subdivide "$tmp/triangle.obj" --scheme sqrt3 --levels 2 -o "$tmp/s3.obj"

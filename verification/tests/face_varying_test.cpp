@@ -5,6 +5,7 @@
 // itself, on hand-made differences.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <sstream>
 
 #include "library_guard.h"
@@ -209,6 +210,89 @@ TEST(FaceVaryingCompare, AReferenceOnAnotherRuleIsNamed) {
         EXPECT_EQ(far.uv->who_follows, subject->name());
         EXPECT_FALSE(c.all_agree());
     }
+}
+
+TEST(FaceVaryingCompare, ASubjectsRuleIsIdentifiedClassByClass) {
+    CROSSDIV_REQUIRE_LIBRARIES("opensubdiv");
+    const PolyMesh mesh = datasets::edge_case("uv-seam").mesh;
+    RefinementRequest req;
+    req.scheme = Scheme::CatmullClark;
+    req.levels = 2;
+    req.face_varying = FaceVaryingRule::None;
+    req.references = {"opensubdiv"};
+    // A subject on one rule: that rule fits every corner.
+    for (FaceVaryingRule planted : {FaceVaryingRule::None, FaceVaryingRule::CornersOnly, FaceVaryingRule::All}) {
+        const std::unique_ptr<Implementation> subject = subject_with_rule(planted);
+        req.subject = subject.get();
+        const RefinementComparison c = compare_refinement(mesh, "edgecase:uv-seam", req);
+        ASSERT_TRUE(c.uv_rules) << to_string(planted);
+        ASSERT_TRUE(c.uv_rules->rule) << c.uv_rules->summary();
+        const size_t k = static_cast<size_t>(std::find(kFaceVaryingRules.begin(), kFaceVaryingRules.end(), planted) -
+                                             kFaceVaryingRules.begin());
+        EXPECT_EQ(c.uv_rules->whole[k], 0.0) << to_string(planted);  // core's own values, bit for bit
+        // The rule named is the planted one or one that gives this mesh the same values.
+        const size_t named = static_cast<size_t>(
+            std::find(kFaceVaryingRules.begin(), kFaceVaryingRules.end(), *c.uv_rules->rule) - kFaceVaryingRules.begin());
+        EXPECT_LE(c.uv_rules->whole[named], req.tolerance);
+        if (planted == FaceVaryingRule::None) {
+            EXPECT_EQ(*c.uv_rules->rule, FaceVaryingRule::None);  // the requested rule first
+        }
+        const nlohmann::json j = to_json(c);
+        EXPECT_EQ(j["subject"]["uv_rules"]["classes"].size(), c.uv_rules->rows.size());
+    }
+    // A subject that smooths inside and keeps its seams linear (none's interior, all's seams,
+    // at the last level): no one rule, and each class names its own.
+    const std::unique_ptr<Implementation> mixed = make_callback_implementation(
+        "mixed", {Scheme::CatmullClark}, [](const PolyMesh& m, const RefineRequest& r) {
+            RefineRequest smooth = r, linear = r;
+            smooth.face_varying = FaceVaryingRule::None;
+            linear.face_varying = FaceVaryingRule::All;
+            PolyMesh out = core_implementation().refine(m, smooth).back();
+            const PolyMesh lin = core_implementation().refine(m, linear).back();
+            FaceVaryingChannel& ch = out.face_varying.front();
+            const FaceVaryingChannel& from = lin.face_varying.front();
+            const std::vector<UvVertexClass> classes = uv_corner_classes(out);
+            for (size_t c = 0; c < classes.size(); ++c)
+                if (classes[c] == UvVertexClass::Seam)
+                    for (int d = 0; d < ch.dimension; ++d)
+                        ch.values[static_cast<size_t>(ch.corner_values[c] * ch.dimension + d)] =
+                            from.value(from.corner_values[c])[d];
+            return out;
+        });
+    req.subject = mixed.get();
+    const RefinementComparison c = compare_refinement(mesh, "edgecase:uv-seam", req);
+    ASSERT_TRUE(c.uv_rules);
+    EXPECT_FALSE(c.uv_rules->rule) << c.uv_rules->summary();
+    bool interior = false, seam = false;
+    for (const UvClassFit& row : c.uv_rules->rows) {
+        const std::vector<FaceVaryingRule> fits = row.fitting(req.tolerance);
+        if (row.cls == UvVertexClass::Interior) {
+            interior = true;
+            EXPECT_NE(std::find(fits.begin(), fits.end(), FaceVaryingRule::None), fits.end());
+            EXPECT_EQ(std::find(fits.begin(), fits.end(), FaceVaryingRule::All), fits.end());
+        }
+        if (row.cls == UvVertexClass::Seam) {
+            seam = true;
+            EXPECT_NE(std::find(fits.begin(), fits.end(), FaceVaryingRule::All), fits.end());
+            EXPECT_EQ(std::find(fits.begin(), fits.end(), FaceVaryingRule::None), fits.end());
+        }
+    }
+    EXPECT_TRUE(interior && seam) << c.uv_rules->summary();
+    EXPECT_NE(c.uv_rules->summary().find("no one rule (interior: none"), std::string::npos) << c.uv_rules->summary();
+}
+
+TEST(FaceVaryingCompare, CornerClassesAreReadInOnePass) {
+    // The UV junction: the per-corner classes equal the one-corner question asked everywhere.
+    const PolyMesh j = datasets::edge_case("uv-junction").mesh;
+    const std::vector<UvVertexClass> all = uv_corner_classes(j);
+    ASSERT_EQ(all.size(), j.face_vertices.size());
+    std::vector<int> seen(5, 0);
+    for (int f = 0; f < j.num_faces(); ++f)
+        for (int k = 0; k < j.face_size(f); ++k) {
+            EXPECT_EQ(all[static_cast<size_t>(j.face_start[static_cast<size_t>(f)] + k)], uv_vertex_class(j, f, k));
+            ++seen[static_cast<size_t>(all[static_cast<size_t>(j.face_start[static_cast<size_t>(f)] + k)])];
+        }
+    for (int n : seen) EXPECT_GT(n, 0);  // every class occurs on the junction mesh
 }
 
 TEST(FaceVaryingCompare, AReferenceThatDependsOnFaceOrderIsNamedSo) {

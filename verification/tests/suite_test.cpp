@@ -86,7 +86,9 @@ TEST(Manifest, ErrorsNameTheFileAndLine) {
     const std::vector<std::pair<std::string, std::string>> bad = {
         {"suite s\ncase bundled:all sqrt4\n", ":2: unknown operation 'sqrt4'"},
         {"suite s\ncase bundled:all catmull-clark weights=loop\n",
-         ":2: unknown key 'weights' (known: boundary, crease-method, fvar, levels, against, tier, tolerance, refuses)"},
+         ":2: unknown key 'weights' (known: boundary, crease-method, triangles, fvar, levels, against, tier, tolerance, refuses)"},
+        {"suite s\ncase bundled:all catmull-clark triangles=loop\n", ":2: triangles must be catmark or smooth"},
+        {"suite s\ncase bundled:all doo-sabin triangles=smooth\n", ":2: unknown key 'triangles'"},
         {"suite s\ncase bundled:all doo-sabin crease-method=chaikin\n",
          ":2: unknown key 'crease-method' (known: boundary, levels, against, tier, tolerance, refuses)"},
         {"suite s\ncase bundled:all catmull-clark boundary=reflected-wings\n",
@@ -151,13 +153,14 @@ TEST(Manifest, ReadsTheKeysOfEveryScheme) {
     const Manifest m = read_manifest(write(d / "a.suite",
                                            "suite s\ntimeout 7\n"
                                            "case bundled:all catmull-clark boundary=edge-and-corner crease-method=chaikin "
-                                           "levels=3 against=opensubdiv,cgal tier=strict\n"
+                                           "triangles=smooth levels=3 against=opensubdiv,cgal tier=strict\n"
                                            "case polygons:all doo-sabin\n"));
     ASSERT_EQ(m.entries.size(), 2u);
     const ManifestEntry& cc = m.entries[0];
     EXPECT_EQ(cc.request.scheme, Scheme::CatmullClark);
     EXPECT_EQ(cc.rule_flags.boundary, "edge-and-corner");
     EXPECT_EQ(cc.rule_flags.creasing, "chaikin");
+    EXPECT_EQ(cc.rule_flags.triangles, "smooth");
     EXPECT_EQ(cc.request.levels, 3);
     EXPECT_EQ(cc.request.references, (std::vector<std::string>{"opensubdiv", "cgal"}));
     EXPECT_EQ(cc.request.tier, Tier::Strict);
@@ -171,7 +174,7 @@ TEST(Manifest, ReadsTheKeysOfEveryScheme) {
     EXPECT_EQ(ds.request.references, having);
     const std::vector<SuiteJob> jobs = expand_jobs(m);
     EXPECT_EQ(jobs.front().id, "bundled:" + datasets::bundled_meshes().front().name +
-                                   " | catmull-clark boundary=edge-and-corner crease-method=chaikin L3 strict");
+                                   " | catmull-clark boundary=edge-and-corner crease-method=chaikin triangles=smooth L3 strict");
     EXPECT_EQ(jobs.back().id, "bundled:" + datasets::polygon_meshes().back().name + " | doo-sabin boundary=default L1 weak tol=1e-12");
     // A subject replaces core in the comparisons of every scheme, not in a study.
     const Manifest with_subject = read_manifest(write(d / "b.suite", "suite s\nsubject s command='a {out}'\ncase bundled:all sqrt3\n"));

@@ -37,8 +37,10 @@ struct Value3 {
     }
 };
 
+/// The levels with the channel refined; with `limit`, the last level's values replaced by
+/// their limits (PrimvarRefinerReal<double>::LimitFaceVarying).
 LevelTrace refine(const PolyMesh& mesh, Sdc::SchemeType scheme, Sdc::Options sdc, FaceVaryingRule rule, int levels,
-                  LevelBirths* births) {
+                  LevelBirths* births, bool limit = false) {
     if (mesh.face_varying.empty()) throw Rejected("the mesh has no face-varying channel");
     const FaceVaryingChannel& channel = mesh.face_varying.front();
     sdc.SetFVarLinearInterpolation(fvar_option(rule));
@@ -74,6 +76,12 @@ LevelTrace refine(const PolyMesh& mesh, Sdc::SchemeType scheme, Sdc::Options sdc
                 primvar.InterpolateFaceVarying(level, in, out_values, 0);
                 src = std::move(dst);
             }
+            if (limit && level == levels) {
+                std::vector<Value3> dst(src.size());
+                Value3* out_values = dst.data();
+                primvar.LimitFaceVarying(src.data(), out_values, 0);
+                src = std::move(dst);
+            }
             std::vector<double>& values = trace[static_cast<size_t>(level)].face_varying.back().values;
             for (size_t i = 0; i < src.size(); ++i)
                 for (int k = 0; k < count; ++k) values[i * static_cast<size_t>(d) + static_cast<size_t>(first + k)] = src[i].v[k];
@@ -93,6 +101,15 @@ LevelTrace catmull_clark_face_varying(const PolyMesh& mesh, const CatmullClarkOp
 LevelTrace loop_face_varying(const PolyMesh& mesh, const LoopOptions& options, FaceVaryingRule rule, int levels,
                              LevelBirths* births) {
     return refine(mesh, Sdc::SCHEME_LOOP, loop_options(options), rule, levels, births);
+}
+
+PolyMesh catmull_clark_face_varying_limit(const PolyMesh& mesh, const CatmullClarkOptions& options, FaceVaryingRule rule,
+                                          int levels) {
+    return refine(mesh, Sdc::SCHEME_CATMARK, catmark_options(options), rule, levels, nullptr, true).back();
+}
+
+PolyMesh loop_face_varying_limit(const PolyMesh& mesh, const LoopOptions& options, FaceVaryingRule rule, int levels) {
+    return refine(mesh, Sdc::SCHEME_LOOP, loop_options(options), rule, levels, nullptr, true).back();
 }
 
 LevelTrace bilinear_face_varying(const PolyMesh& mesh, FaceVaryingRule rule, int levels, LevelBirths* births) {

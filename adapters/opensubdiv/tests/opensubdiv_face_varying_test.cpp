@@ -14,6 +14,7 @@
 #include "crossdiv/error.h"
 #include "crossdiv/subdiv/bilinear.h"
 #include "crossdiv/subdiv/catmull_clark.h"
+#include "crossdiv/subdiv/face_varying_limit.h"
 #include "crossdiv/subdiv/face_varying_refinement.h"
 #include "crossdiv/subdiv/loop.h"
 
@@ -145,6 +146,82 @@ TEST(OpenSubdivFaceVarying, CoreAgreesWithFarOnEveryRuleLayoutAndCatalogMesh) {
     EXPECT_EQ(refused, std::vector<std::string>{});
     EXPECT_GT(compared, 1000);
     std::printf("compared %d refinements\n", compared);
+}
+
+/// Core's limit values of `levels` levels of `mesh` (face_varying_limit on its last level), and
+/// Far's (LimitFaceVarying).
+std::pair<PolyMesh, PolyMesh> both_limits(const PolyMesh& mesh, FaceVaryingScheme scheme, bool edge_and_corner,
+                                          FaceVaryingRule rule, int levels) {
+    const FaceVaryingOptions fo{rule, edge_and_corner};
+    std::vector<PolyMesh> ours;
+    std::vector<FaceVaryingSemiSharp> semi;
+    PolyMesh far;
+    if (scheme == FaceVaryingScheme::CatmullClark) {
+        const CatmullClarkOptions o{edge_and_corner ? CatmullClarkBoundary::EdgeAndCorner : CatmullClarkBoundary::EdgeOnly};
+        ours = subdivide_levels_with_face_varying(
+            mesh, scheme, fo, levels, [&](const PolyMesh& m, const PolyConnectivity& c) { return catmull_clark_step(m, c, o); },
+            &semi);
+        far = opensubdiv::catmull_clark_face_varying_limit(mesh, o, rule, levels);
+    } else {
+        const LoopOptions o{LoopWeights::Loop, edge_and_corner ? LoopBoundary::EdgeAndCorner : LoopBoundary::EdgeOnly};
+        ours = subdivide_levels_with_face_varying(
+            mesh, scheme, fo, levels, [&](const PolyMesh& m, const PolyConnectivity& c) { return loop_step(m, c, o); }, &semi);
+        far = opensubdiv::loop_face_varying_limit(mesh, o, rule, levels);
+    }
+    PolyMesh limit = ours.back();
+    limit.face_varying[0] = face_varying_limit(limit, limit.face_varying[0], scheme, fo, semi.empty() ? nullptr : &semi[0]);
+    return {limit, far};
+}
+
+TEST(OpenSubdivFaceVarying, CoreLimitValuesAgreeWithFarsOnEveryRuleLayoutAndCatalogMesh) {
+    std::vector<datasets::BundledMesh> meshes = datasets::catalog_meshes();
+    for (const datasets::BundledMesh& c : datasets::crease_meshes()) meshes.push_back(c);
+    for (const datasets::UvEdgeCase& e : datasets::uv_edge_cases()) meshes.push_back({e.name, e.description, e.mesh});
+    int compared = 0;
+    double worst_rel = 0;
+    std::vector<std::string> refused;
+    for (const datasets::BundledMesh& bm : meshes) {
+        for (FaceVaryingScheme scheme : {FaceVaryingScheme::CatmullClark, FaceVaryingScheme::Loop}) {
+            if (scheme == FaceVaryingScheme::Loop && !bm.mesh.all_triangles()) continue;
+            std::vector<PolyMesh> inputs;
+            if (bm.mesh.face_varying.empty())
+                for (datasets::UvLayout layout : datasets::kUvLayouts) inputs.push_back(datasets::with_uv_layout(bm.mesh, layout));
+            else
+                inputs.push_back(bm.mesh);
+            for (const PolyMesh& mesh : inputs)
+                for (int levels : {1, 2})
+                    for (bool corners : {false, true})
+                        for (FaceVaryingRule rule : kFaceVaryingRules) {
+                            const std::string what = bm.name + (scheme == FaceVaryingScheme::Loop ? " loop " : " catmull-clark ") +
+                                                     std::to_string(levels) + " " + std::string(to_string(rule)) +
+                                                     (corners ? " edge-and-corner" : " edge-only");
+                            // The UV bowtie under none: Far's refined values already depend on
+                            // the order of the faces (FarSplitsABowtieValueByFaceOrder), and
+                            // its limits with them; that difference is measured there.
+                            if (bm.name.starts_with("uv-bowtie") && rule == FaceVaryingRule::None) continue;
+                            std::pair<PolyMesh, PolyMesh> r;
+                            try {
+                                r = both_limits(mesh, scheme, corners, rule, levels);
+                            } catch (const InputError& e) {
+                                refused.push_back(what + ": " + e.what());
+                                continue;
+                            }
+                            ++compared;
+                            // Far weighs a crease value's limit with float constants (1.0f/6.0f,
+                            // 2.0f/3.0f in limitFVar): off by up to 2^-25 of the largest |value|
+                            // summed; twice that, or kUvAgreement of the box.
+                            double largest = 0;
+                            for (double x : r.first.face_varying[0].values) largest = std::max(largest, std::abs(x));
+                            const double worst = worst_corner_difference(r.first, r.second, what);
+                            EXPECT_LE(worst, std::max(kUvAgreement * uv_box(r.second.face_varying[0]), 0x1p-24 * largest))
+                                << what;
+                            worst_rel = std::max(worst_rel, worst / std::max(largest, 1e-300));
+                        }
+        }
+    }
+    EXPECT_EQ(refused, std::vector<std::string>{});
+    EXPECT_GT(compared, 1000);
+    std::printf("compared %d limits; largest difference %.3g of the largest |value|\n", compared, worst_rel);
 }
 
 TEST(OpenSubdivFaceVarying, TheComparisonTellsEveryRuleApart) {

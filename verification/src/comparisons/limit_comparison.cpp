@@ -20,8 +20,9 @@ namespace {
 
 using detail::sci;
 
-/// OpenSubdiv's limit points of `request` as three meshes {level, positions, normals} (the
-/// isolation ships a LevelTrace).
+/// OpenSubdiv's limit points of `request` as three meshes {level, positions, normals}, and a
+/// fourth, the level with its limit texture coordinates, when it computed them (the isolation
+/// ships a LevelTrace).
 adapters::LevelTrace reference_limit(const PolyMesh& input, const RefineRequest& request) {
     const std::vector<const Implementation*> refs = select_references(&Capabilities::limit_positions, {}, "limit");
     if (refs.empty()) throw adapters::Rejected("OpenSubdiv is not built into this binary");
@@ -29,7 +30,13 @@ adapters::LevelTrace reference_limit(const PolyMesh& input, const RefineRequest&
     PolyMesh positions, normals;
     positions.positions = l.position;
     normals.positions = l.normal;
-    return {l.level, positions, normals};
+    adapters::LevelTrace out{l.level, positions, normals};
+    if (l.uv) {
+        PolyMesh uv = l.level;
+        uv.face_varying = {*l.uv};
+        out.push_back(std::move(uv));
+    }
+    return out;
 }
 
 }  // namespace
@@ -82,11 +89,31 @@ LimitComparison compare_limit_points(const adapters::LimitPoints& ours, const st
     }
     const bool positions_ok = out.max_rel_position <= tolerances::kLimitAgreementRelative;
     const bool normals_ok = out.normals_compared == 0 || out.max_normal_angle <= tolerances::kLimitNormalRad;
-    out.verdict = positions_ok && normals_ok ? Verdict::Agree : Verdict::Diverge;
+    // Texture coordinates, corner by corner through the same vertex match, relative to the UV
+    // box and held to the same bar as the positions (both are sums of the same masks).
+    bool uv_ok = true;
+    std::string uv_text;
+    if (ours.uv) {
+        PolyMesh mine = ours.level, theirs = t[0];
+        mine.face_varying = {*ours.uv};
+        theirs.face_varying.clear();
+        if (t.size() > 3) theirs.face_varying = t[3].face_varying;
+        out.uv = compare_corner_values(mine, theirs, c.ref_to_ours);
+        double largest = 0;
+        for (double x : ours.uv->values) largest = std::max(largest, std::abs(x));
+        const double bar = std::max(tolerances::kLimitAgreementRelative * out.uv->uv_box, tolerances::kFarFloatLimitWeight * largest);
+        uv_ok = out.uv->compared() && out.uv->max_abs <= bar;
+        uv_text = out.uv->compared() ? "; limit texture coordinates within " + sci(out.uv->max_rel) + " of the UV box over " +
+                                           std::to_string(out.uv->corners) + " corners (bar " +
+                                           sci(out.uv->uv_box > 0 ? bar / out.uv->uv_box : bar) +
+                                           ": Far weighs a seam's values with float constants)"
+                                     : "; limit texture coordinates not compared: " + out.uv->not_compared;
+    }
+    out.verdict = positions_ok && normals_ok && uv_ok ? Verdict::Agree : Verdict::Diverge;
     out.explanation = "limit positions within " + sci(out.max_rel_position) + " of the diagonal (bar " +
                       sci(tolerances::kLimitAgreementRelative) + "), " + std::to_string(out.normals_compared) +
                       " interior normals within " + sci(out.max_normal_angle) + " rad (bar " +
-                      sci(tolerances::kLimitNormalRad) + ")";
+                      sci(tolerances::kLimitNormalRad) + ")" + uv_text;
     return out;
 }
 
@@ -104,6 +131,11 @@ nlohmann::json to_json(const LimitComparison& c) {
             {"max_rel_position", finite(c.max_rel_position)},
             {"normals_compared", c.normals_compared},
             {"max_normal_angle", finite(c.max_normal_angle)},
+            {"uv", c.uv ? nlohmann::json{{"compared", c.uv->compared()},
+                                         {"not_compared", c.uv->not_compared},
+                                         {"corners", c.uv->corners},
+                                         {"max_rel", finite(c.uv->max_rel)}}
+                        : nlohmann::json(nullptr)},
             {"explanation", c.explanation}};
 }
 

@@ -1,4 +1,6 @@
 #include "crossdiv/verification/comparisons/refinement_comparison.h"
+
+#include "crossdiv/verification/comparisons/input_transformation.h"
 #include "crossdiv/verification/comparisons/nondeterminism.h"
 #include "crossdiv/verification/comparisons/shared_topology.h"
 
@@ -69,33 +71,6 @@ private:
     std::deque<CoreRun> runs_;
 };
 
-/// The face-varying values of a run whose positions were matched (`map`: its vertices to
-/// ours): agreement within `tolerance` of the UV box, else the rule that explains the
-/// difference -- the reference's values are core's under another rule, or (a subject under
-/// test) the subject's are -- else unexplained.
-/// `mesh` with its faces (and their channel corners and hole tags) listed in `order`.
-PolyMesh with_face_order(const PolyMesh& mesh, const std::vector<int>& order) {
-    PolyMesh out = mesh;
-    out.face_start = {0};
-    out.face_vertices.clear();
-    out.source.face_line.clear();
-    for (FaceVaryingChannel& ch : out.face_varying) ch.corner_values.clear();
-    std::vector<int> new_index(order.size());
-    for (size_t i = 0; i < order.size(); ++i) new_index[static_cast<size_t>(order[i])] = static_cast<int>(i);
-    for (int f : order) {
-        out.face_vertices.insert(out.face_vertices.end(), mesh.face(f), mesh.face(f) + mesh.face_size(f));
-        out.face_start.push_back(static_cast<int>(out.face_vertices.size()));
-        for (size_t k = 0; k < mesh.face_varying.size(); ++k) {
-            const std::vector<int>& from = mesh.face_varying[k].corner_values;
-            out.face_varying[k].corner_values.insert(out.face_varying[k].corner_values.end(), from.begin() + mesh.face_start[f],
-                                                     from.begin() + mesh.face_start[f + 1]);
-        }
-    }
-    for (int& h : out.creases.holes) h = new_index[static_cast<size_t>(h)];
-    std::sort(out.creases.holes.begin(), out.creases.holes.end());
-    return out;
-}
-
 /// Whether `refine(m)` -- an implementation's refinement, its last level -- gives other
 /// face-varying values when the faces of `input` are listed reversed or rotated by half: the
 /// largest change relative to the UV box and the order that shows it, or nothing when no
@@ -124,6 +99,10 @@ std::optional<OrderChange> face_order_change(const PolyMesh& input, const PolyMe
     return std::nullopt;
 }
 
+/// The face-varying values of a run whose positions were matched (`map`: its vertices to
+/// ours): agreement within `tolerance` of the UV box, else the rule that explains the
+/// difference -- the reference's values are core's under another rule, or (a subject under
+/// test) the subject's are -- else unexplained.
 FaceVaryingRun compare_face_varying(const PolyMesh& ours, const PolyMesh& theirs, const std::vector<int>& map,
                                     const Implementation& ref, Scheme scheme, FaceVaryingRule requested,
                                     const SchemeRule& rule, const std::string& subject, double tolerance, CoreRuns& core,
@@ -147,7 +126,10 @@ FaceVaryingRun compare_face_varying(const PolyMesh& ours, const PolyMesh& theirs
         return u;
     }
     u.worst_class = to_string(uv_vertex_class(ours, u.comparison.worst_face, u.comparison.worst_corner));
-    const std::string where = measured + ", at a " + u.worst_class + " corner";
+    const std::string where = measured + ", worst at " + (u.worst_class == "corner" ? std::string("a UV corner")
+                                                         : u.worst_class == "interior"
+                                                             ? std::string("an interior value")
+                                                             : "a " + u.worst_class + " value");
     std::vector<int> identity(static_cast<size_t>(ours.num_vertices()));
     for (size_t i = 0; i < identity.size(); ++i) identity[i] = static_cast<int>(i);
     for (FaceVaryingRule r : kFaceVaryingRules) {
@@ -499,6 +481,14 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
         out.rules = identify_rule(req.scheme, input, {subject.begin() + 1, subject.end()}, by_rule,
                                   numbered_as->refinement.births, req.rule, req.tolerance);
         subject_rule = out.rules->rule;
+        if (fvar) {
+            std::vector<const PolyMesh*> by_fvar_rule;
+            for (FaceVaryingRule r : kFaceVaryingRules) {
+                const CoreRun& run = core.with(numbered_as->rule, r);
+                by_fvar_rule.push_back(run.error.empty() ? &run.last() : nullptr);
+            }
+            out.uv_rules = identify_face_varying_rule(subject.back(), by_fvar_rule, *fvar, req.tolerance);
+        }
         under_test = &subject;
     }
     const PolyMesh& ours = under_test->back();
@@ -530,6 +520,7 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
     std::map<std::string, std::vector<Vec3>> in_our_order;
     const bool keep_view = req.view_max_faces > 0 && out.core_error.empty() && ours.num_faces() <= req.view_max_faces;
     std::map<std::string, std::vector<std::vector<Vec3>>> at_each_level;
+    std::map<std::string, std::vector<double>> uvs_at_our_corners;  // the view's texture coordinates
     // The faces of each run whose faces are not core's (runs[i] <-> made_by_run[i]), for the post-pass
     // that lets a topology difference stand only where it is shared (shared_topology.h).
     std::vector<std::optional<MadeFaces>> made_by_run;
@@ -692,6 +683,7 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
             };
             run.uv = compare_face_varying(ours, theirs, map, ref, req.scheme, *fvar, req.rule, subject_name, tolerance, core,
                                           rerun, input);
+            if (keep_view && run.uv->compared()) uvs_at_our_corners[ref.name()] = corner_values_in_our_order(ours, theirs, map);
         }
         if (map_holds) {
             run.level_max_rel = level_errors(*under_test, trace, run.correspondence);
@@ -788,11 +780,36 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
                                   : " make" + std::string(verb[std::strlen(verb) - 1] == 's' ? "s" : "") + " different faces (" + faces + ")";
             };
             const DivergenceClass cls = rule_difference_class(req.scheme, run.ran_with, *applied_rule);
+            // The reference's rule differs in its triangle weights and in more: when the triangle
+            // weights alone explain it (the rest changes nothing on this mesh, a boundary rule on a
+            // closed one), that is the class, measured as the whole rule was.
+            if (req.scheme == Scheme::CatmullClark && cls != DivergenceClass::TriangleRule &&
+                run.ran_with.catmull_clark.smooth_triangles != applied_rule->catmull_clark.smooth_triangles) {
+                SchemeRule triangles_only = *applied_rule;
+                triangles_only.catmull_clark.smooth_triangles = run.ran_with.catmull_clark.smooth_triangles;
+                const CoreRun& t = core.with(triangles_only);
+                if (t.error.empty()) {
+                    const MeshComparison c3 = compare_meshes(t.last(), theirs, run.correspondence.ref_to_ours);
+                    if (within_weak(c3, level_errors(t.levels(), trace, run.correspondence), bar)) {
+                        const std::string weights = run.ran_with.catmull_clark.smooth_triangles ? "smooth" : "catmark";
+                        return Classification{DivergenceClass::TriangleRule,
+                                              ref.name() + " applies the " + weights + " weights at triangles (its " + run.rule +
+                                                  " rule differs from " + rule + " in nothing else this mesh shows): core with " +
+                                                  rule_name(req.scheme, triangles_only) + " agrees to " + sci(c3.max_rel) +
+                                                  "; " + (req.subject ? subject_name : std::string("core")) + "'s " + rule +
+                                                  differs("differs")};
+                    }
+                }
+            }
             if (req.subject)
                 return Classification{cls, subject_name + " applies " + rule + ", " + ref.name() + " " + run.rule + " (" +
                                                agrees + "); they" + differs("differ")};
-            return Classification{cls, rule_effect(req.scheme, ref.name(), rule, run.rule, req.levels) + ": " + agrees +
-                                           "; core's " + rule + differs("differs")};
+            const std::string effect =
+                cls == DivergenceClass::TriangleRule
+                    ? ref.name() + " applies the " + (run.ran_with.catmull_clark.smooth_triangles ? "smooth" : "catmark") +
+                          " weights at triangles"
+                    : rule_effect(req.scheme, ref.name(), rule, run.rule, req.levels);
+            return Classification{cls, effect + ": " + agrees + "; core's " + rule + differs("differs")};
         };
         tests.valence_table = valence_table;
         tests.nonmanifold = [&]() -> std::optional<Classification> {
@@ -863,13 +880,24 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
         if (r.verdict == Verdict::Diverge && !r.comparison.worst.empty() &&
             (!worst_run || r.comparison.worst[0].distance > worst_run->comparison.worst[0].distance))
             worst_run = &r;
+    // The texture coordinates' worst corner among the references that diverge on them.
+    const FaceVaryingRun* worst_uv = nullptr;
+    for (const RefinementRun& r : out.runs)
+        if (r.uv && r.uv->compared() && r.uv->outcome.verdict == Verdict::Diverge &&
+            (!worst_uv || r.uv->comparison.max_rel > worst_uv->comparison.max_rel))
+            worst_uv = &*r.uv;
     const bool diverges =
+        worst_uv ||
         std::any_of(out.runs.begin(), out.runs.end(), [](const RefinementRun& r) { return r.verdict == Verdict::Diverge; });
     if (diverges && keep_view) {
         DivergenceView& view = out.view.emplace();
         view.levels.assign(under_test->begin(), under_test->end());
         view.births = requested.refinement.births;
         view.references = std::move(at_each_level);
+        view.reference_uvs = std::move(uvs_at_our_corners);
+        if (worst_uv)
+            view.uv_worst_corner = ours.face_start[static_cast<size_t>(worst_uv->comparison.worst_face)] +
+                                   worst_uv->comparison.worst_corner;
     }
     if (worst_run) {
         const WorstVertex& w = worst_run->comparison.worst[0];
@@ -913,6 +941,24 @@ nlohmann::json subject_json(const RefinementComparison& c) {
         for (const OtherSchemeFit& f : c.rules->other_schemes)
             others.push_back({{"scheme", to_string(f.scheme)}, {"rule", f.rule}, {"max_rel", finite(f.max_rel)}, {"fits", f.fits}});
         s["rules"]["other_schemes"] = others;
+    }
+    if (c.uv_rules) {
+        json rows = json::array();
+        for (const UvClassFit& r : c.uv_rules->rows) {
+            json fits = json::array();
+            for (size_t k = 0; k < r.max_rel.size(); ++k)
+                fits.push_back({{"rule", to_string(kFaceVaryingRules[k])}, {"max_rel", finite(r.max_rel[k])},
+                                {"fits", r.max_rel[k] <= c.uv_rules->tolerance}});
+            rows.push_back({{"class", to_string(r.cls)}, {"corners", r.corners}, {"worst_corner", r.worst_corner}, {"fits", fits}});
+        }
+        json whole = json::array();
+        for (size_t k = 0; k < c.uv_rules->whole.size(); ++k)
+            whole.push_back({{"rule", to_string(kFaceVaryingRules[k])}, {"max_rel", finite(c.uv_rules->whole[k])},
+                             {"fits", c.uv_rules->whole[k] <= c.uv_rules->tolerance}});
+        s["uv_rules"] = {{"rule", c.uv_rules->rule ? json(to_string(*c.uv_rules->rule)) : json(nullptr)},
+                         {"summary", c.uv_rules->summary()},
+                         {"whole", whole},
+                         {"classes", rows}};
     }
     return s;
 }

@@ -34,30 +34,20 @@ struct VertexFaces {
 
 }  // namespace
 
-CornerValueComparison compare_corner_values(const PolyMesh& ours, const PolyMesh& ref, const std::vector<int>& ref_to_ours) {
-    CornerValueComparison out;
-    if (ours.face_varying.empty() || ref.face_varying.empty()) {
-        out.not_compared = ours.face_varying.empty() ? "the implementation under test gave no face-varying values"
-                                                     : "the reference gave no face-varying values";
-        return out;
-    }
-    const FaceVaryingChannel &a = ours.face_varying.front(), &b = ref.face_varying.front();
-    if (a.dimension != b.dimension) {
-        out.not_compared = "values of " + std::to_string(a.dimension) + " and " + std::to_string(b.dimension) + " components";
-        return out;
-    }
-    if (ref_to_ours.size() != static_cast<size_t>(ref.num_vertices())) {
-        out.not_compared = "no vertex correspondence";
-        return out;
-    }
-    out.uv_box = uv_box_diagonal(a);
+namespace {
+
+/// Calls `each(ours_corner, ref_corner)` for every corner of every face of `ref`, with the
+/// corner of its partner face in `ours` (the face with the same mapped vertices, found among
+/// the faces around its first vertex) that has the same vertex. Returns the first face of
+/// `ref` with no partner, or -1.
+template <typename Each>
+int for_each_matched_corner(const PolyMesh& ours, const PolyMesh& ref, const std::vector<int>& ref_to_ours, Each each) {
     const VertexFaces around(ours);
     std::vector<int> mapped;
     for (int g = 0; g < ref.num_faces(); ++g) {
         const int n = ref.face_size(g);
         mapped.assign(ref.face(g), ref.face(g) + n);
         for (int& v : mapped) v = ref_to_ours[static_cast<size_t>(v)];
-        // Our face with the same vertices, among the faces around its first vertex.
         int f = -1;
         const int v0 = mapped[0];
         for (int i = around.start[static_cast<size_t>(v0)]; i < around.start[static_cast<size_t>(v0) + 1] && f < 0; ++i) {
@@ -67,27 +57,75 @@ CornerValueComparison compare_corner_values(const PolyMesh& ours, const PolyMesh
             for (int k = 0; k < n && same; ++k) same = std::find(ours.face(cand), ours.face(cand) + n, mapped[k]) != ours.face(cand) + n;
             if (same) f = cand;
         }
-        if (f < 0) {
-            out.not_compared = "the reference's face " + std::to_string(g) + " has no partner among ours";
-            return out;
-        }
+        if (f < 0) return g;
         for (int k = 0; k < n; ++k) {
             const int j = static_cast<int>(std::find(ours.face(f), ours.face(f) + n, mapped[k]) - ours.face(f));
-            const double* x = a.value(a.corner_values[static_cast<size_t>(ours.face_start[f] + j)]);
-            const double* y = b.value(b.corner_values[static_cast<size_t>(ref.face_start[g] + k)]);
-            for (int d = 0; d < a.dimension; ++d) {
-                const double diff = std::abs(x[d] - y[d]);
-                if (diff > out.max_abs || std::isnan(diff)) {
-                    out.max_abs = std::isnan(diff) ? INFINITY : diff;
-                    out.worst_face = f;
-                    out.worst_corner = j;
-                    out.worst_vertex = ours.face(f)[j];
-                }
-            }
-            ++out.corners;
+            each(ours.face_start[f] + j, ref.face_start[g] + k);
         }
     }
+    return -1;
+}
+
+/// Why two meshes' first channels cannot be compared corner by corner ("" when they can).
+std::string why_not_comparable(const PolyMesh& ours, const PolyMesh& ref, const std::vector<int>& ref_to_ours) {
+    if (ours.face_varying.empty()) return "the implementation under test gave no face-varying values";
+    if (ref.face_varying.empty()) return "the reference gave no face-varying values";
+    const FaceVaryingChannel &a = ours.face_varying.front(), &b = ref.face_varying.front();
+    if (a.dimension != b.dimension)
+        return "values of " + std::to_string(a.dimension) + " and " + std::to_string(b.dimension) + " components";
+    if (ref_to_ours.size() != static_cast<size_t>(ref.num_vertices())) return "no vertex correspondence";
+    return "";
+}
+
+/// The face of `mesh` that corner `c` (an index into face_vertices) belongs to.
+int face_of_corner(const PolyMesh& mesh, int c) {
+    return static_cast<int>(std::upper_bound(mesh.face_start.begin(), mesh.face_start.end(), c) - mesh.face_start.begin()) - 1;
+}
+
+}  // namespace
+
+CornerValueComparison compare_corner_values(const PolyMesh& ours, const PolyMesh& ref, const std::vector<int>& ref_to_ours) {
+    CornerValueComparison out;
+    out.not_compared = why_not_comparable(ours, ref, ref_to_ours);
+    if (!out.compared()) return out;
+    const FaceVaryingChannel &a = ours.face_varying.front(), &b = ref.face_varying.front();
+    out.uv_box = uv_box_diagonal(a);
+    int worst = -1;
+    const int unmatched = for_each_matched_corner(ours, ref, ref_to_ours, [&](int oc, int rc) {
+        const double* x = a.value(a.corner_values[static_cast<size_t>(oc)]);
+        const double* y = b.value(b.corner_values[static_cast<size_t>(rc)]);
+        for (int d = 0; d < a.dimension; ++d) {
+            const double diff = std::abs(x[d] - y[d]);
+            if (diff > out.max_abs || std::isnan(diff)) {
+                out.max_abs = std::isnan(diff) ? INFINITY : diff;
+                worst = oc;
+            }
+        }
+        ++out.corners;
+    });
+    if (unmatched >= 0) {
+        out = CornerValueComparison{};
+        out.not_compared = "the reference's face " + std::to_string(unmatched) + " has no partner among ours";
+        return out;
+    }
+    if (worst >= 0) {
+        out.worst_face = face_of_corner(ours, worst);
+        out.worst_corner = worst - ours.face_start[static_cast<size_t>(out.worst_face)];
+        out.worst_vertex = ours.face_vertices[static_cast<size_t>(worst)];
+    }
     out.max_rel = out.uv_box > 0 ? out.max_abs / out.uv_box : out.max_abs;
+    return out;
+}
+
+std::vector<double> corner_values_in_our_order(const PolyMesh& ours, const PolyMesh& ref, const std::vector<int>& ref_to_ours) {
+    if (!why_not_comparable(ours, ref, ref_to_ours).empty()) return {};
+    const FaceVaryingChannel& b = ref.face_varying.front();
+    const size_t dim = static_cast<size_t>(b.dimension);
+    std::vector<double> out(ours.face_vertices.size() * dim, NAN);
+    for_each_matched_corner(ours, ref, ref_to_ours, [&](int oc, int rc) {
+        const double* y = b.value(b.corner_values[static_cast<size_t>(rc)]);
+        std::copy(y, y + dim, out.begin() + static_cast<std::ptrdiff_t>(static_cast<size_t>(oc) * dim));
+    });
     return out;
 }
 
@@ -102,31 +140,57 @@ const char* to_string(UvVertexClass c) {
     return "?";
 }
 
-UvVertexClass uv_vertex_class(const PolyMesh& mesh, int face, int corner) {
+std::vector<UvVertexClass> uv_corner_classes(const PolyMesh& mesh) {
     const FaceVaryingChannel& ch = mesh.face_varying.at(0);
-    const int v = mesh.face(face)[corner];
-    const int value = ch.corner_values[static_cast<size_t>(mesh.face_start[face] + corner)];
-    // The faces at v: their values, and whether an edge at v has one face (a boundary).
-    std::vector<int> values;
-    int faces_with_value = 0;
-    std::vector<std::pair<int, int>> edges;  // (other end, count)
+    const size_t corners = mesh.face_vertices.size();
+    // The corners sorted by (vertex, value): a vertex's run holds its values, a value's run
+    // its faces (a face meets a vertex at one corner).
+    std::vector<int> order(corners);
+    for (size_t c = 0; c < corners; ++c) order[c] = static_cast<int>(c);
+    const auto key = [&](int c) {
+        return std::pair{mesh.face_vertices[static_cast<size_t>(c)], ch.corner_values[static_cast<size_t>(c)]};
+    };
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return key(a) < key(b); });
+    // A vertex on the boundary: an end of an edge that one face uses.
+    std::vector<std::pair<int, int>> edges;
+    edges.reserve(corners);
     for (int f = 0; f < mesh.num_faces(); ++f)
-        for (int k = 0; k < mesh.face_size(f); ++k) {
-            if (mesh.face(f)[k] != v) continue;
-            const int x = ch.corner_values[static_cast<size_t>(mesh.face_start[f] + k)];
-            if (std::find(values.begin(), values.end(), x) == values.end()) values.push_back(x);
-            if (x == value) ++faces_with_value;
-            for (int other : {mesh.face(f)[(k + 1) % mesh.face_size(f)], mesh.face(f)[(k + mesh.face_size(f) - 1) % mesh.face_size(f)]}) {
-                auto it = std::find_if(edges.begin(), edges.end(), [&](const auto& e) { return e.first == other; });
-                if (it == edges.end()) edges.emplace_back(other, 1);
-                else ++it->second;
-            }
+        for (int k = 0, n = mesh.face_size(f); k < n; ++k) {
+            const int a = mesh.face(f)[k], b = mesh.face(f)[(k + 1) % n];
+            edges.emplace_back(std::min(a, b), std::max(a, b));
         }
-    if (values.size() >= 3) return UvVertexClass::Junction;
-    if (faces_with_value == 1) return UvVertexClass::Corner;
-    if (values.size() == 2) return UvVertexClass::Seam;
-    const bool boundary = std::any_of(edges.begin(), edges.end(), [](const auto& e) { return e.second == 1; });
-    return boundary ? UvVertexClass::Boundary : UvVertexClass::Interior;
+    std::sort(edges.begin(), edges.end());
+    std::vector<char> boundary(static_cast<size_t>(mesh.num_vertices()), 0);
+    for (size_t i = 0; i < edges.size();) {
+        size_t j = i;
+        while (j < edges.size() && edges[j] == edges[i]) ++j;
+        if (j - i == 1) boundary[static_cast<size_t>(edges[i].first)] = boundary[static_cast<size_t>(edges[i].second)] = 1;
+        i = j;
+    }
+    std::vector<UvVertexClass> out(corners, UvVertexClass::Interior);
+    for (size_t i = 0; i < corners;) {
+        const int v = key(order[i]).first;
+        size_t end = i, values = 0;
+        while (end < corners && key(order[end]).first == v) ++end;
+        for (size_t k = i; k < end; ++k) values += k == i || key(order[k]).second != key(order[k - 1]).second;
+        for (size_t k = i; k < end;) {
+            size_t same = k;
+            while (same < end && key(order[same]).second == key(order[k]).second) ++same;
+            const UvVertexClass cls = values >= 3                        ? UvVertexClass::Junction
+                                      : same - k == 1                    ? UvVertexClass::Corner
+                                      : values == 2                      ? UvVertexClass::Seam
+                                      : boundary[static_cast<size_t>(v)] ? UvVertexClass::Boundary
+                                                                         : UvVertexClass::Interior;
+            for (size_t x = k; x < same; ++x) out[static_cast<size_t>(order[x])] = cls;
+            k = same;
+        }
+        i = end;
+    }
+    return out;
+}
+
+UvVertexClass uv_vertex_class(const PolyMesh& mesh, int face, int corner) {
+    return uv_corner_classes(mesh)[static_cast<size_t>(mesh.face_start[static_cast<size_t>(face)] + corner)];
 }
 
 }  // namespace crossdiv::verification

@@ -6,6 +6,7 @@
 #include "crossdiv/subdiv/catmull_clark.h"
 #include "crossdiv/subdiv/catmull_clark_streaming.h"
 #include "crossdiv/subdiv/doo_sabin.h"
+#include "crossdiv/subdiv/face_varying_limit.h"
 #include "crossdiv/subdiv/face_varying_refinement.h"
 #include "crossdiv/subdiv/limit.h"
 #include "crossdiv/subdiv/loop.h"
@@ -66,15 +67,26 @@ PolyMesh subdivide(const PolyMesh& mesh, const RefineRequest& r, int levels) {
 /// Catmull-Clark and bilinear on a manifold; nothing for a mesh that is not one (its
 /// positions are then refined without the channels, and the comparison says so), or for a
 /// tagged mesh under bilinear (refused there, as without channels).
-std::optional<adapters::LevelTrace> face_varying_levels(const PolyMesh& mesh, const RefineRequest& r) {
-    if (r.scheme == Scheme::Bilinear && !mesh.creases.empty()) return std::nullopt;  // refused as without channels
-    const FaceVaryingScheme scheme = r.scheme == Scheme::Loop           ? FaceVaryingScheme::Loop
-                                     : r.scheme == Scheme::CatmullClark ? FaceVaryingScheme::CatmullClark
-                                                                        : FaceVaryingScheme::Bilinear;
+/// The face-varying scheme of a request's scheme (bilinear for any other).
+FaceVaryingScheme face_varying_scheme(Scheme s) {
+    return s == Scheme::Loop ? FaceVaryingScheme::Loop : s == Scheme::CatmullClark ? FaceVaryingScheme::CatmullClark
+                                                                                   : FaceVaryingScheme::Bilinear;
+}
+
+/// The face-varying options of a request: its rule, and what of the geometry's rule decides
+/// a value's sharpness.
+FaceVaryingOptions face_varying_options(const RefineRequest& r) {
     const bool corners_sharp = r.scheme == Scheme::Loop ? r.rule.loop.boundary == LoopBoundary::EdgeAndCorner
                                                         : r.rule.catmull_clark.boundary == CatmullClarkBoundary::EdgeAndCorner;
-    const FaceVaryingOptions options{*r.face_varying, corners_sharp && r.scheme != Scheme::Bilinear,
-                                     r.scheme == Scheme::Loop ? r.rule.loop.creasing : r.rule.catmull_clark.creasing};
+    return {*r.face_varying, corners_sharp && r.scheme != Scheme::Bilinear,
+            r.scheme == Scheme::Loop ? r.rule.loop.creasing : r.rule.catmull_clark.creasing};
+}
+
+std::optional<adapters::LevelTrace> face_varying_levels(const PolyMesh& mesh, const RefineRequest& r,
+                                                        std::vector<FaceVaryingSemiSharp>* semi_tags = nullptr) {
+    if (r.scheme == Scheme::Bilinear && !mesh.creases.empty()) return std::nullopt;  // refused as without channels
+    const FaceVaryingScheme scheme = face_varying_scheme(r.scheme);
+    const FaceVaryingOptions options = face_varying_options(r);
     try {
         return subdivide_levels_with_face_varying(mesh, scheme, options, r.levels,
                                                   [&](const PolyMesh& m, const PolyConnectivity& conn) {
@@ -83,7 +95,8 @@ std::optional<adapters::LevelTrace> face_varying_levels(const PolyMesh& mesh, co
                                                           case Scheme::CatmullClark: return catmull_clark_step(m, conn, r.rule.catmull_clark);
                                                           default: return bilinear_step(m);
                                                       }
-                                                  });
+                                                  },
+                                                  semi_tags);
     } catch (const NonManifoldInput&) {
         return std::nullopt;
     }
@@ -172,18 +185,27 @@ public:
     }
 
     adapters::LimitPoints limit_points(const PolyMesh& mesh, const RefineRequest& r) const override {
+        if (r.scheme != Scheme::Loop && r.scheme != Scheme::CatmullClark) lacks(std::string(to_string(r.scheme)) + " limit positions");
         adapters::LimitPoints out;
-        LimitResult limit;
-        if (r.scheme == Scheme::Loop) {
-            const TriMesh level = loop_subdivide(to_tri_mesh(mesh, "Loop subdivision"), r.rule.loop, r.levels);
-            limit = loop_limit(level, r.rule.loop);
-            out.level = to_poly_mesh(level);
-        } else if (r.scheme == Scheme::CatmullClark) {
-            out.level = catmull_clark_subdivide(mesh, r.rule.catmull_clark, r.levels);
-            limit = catmull_clark_limit(out.level, r.rule.catmull_clark);
+        // With texture coordinates, the level is refined with its channel, whose limit values
+        // are taken on it too (face_varying_limit.h).
+        const bool uv = r.face_varying && !mesh.face_varying.empty();
+        if (uv) {
+            std::vector<FaceVaryingSemiSharp> semi;
+            std::optional<adapters::LevelTrace> levels = face_varying_levels(mesh, r, &semi);
+            if (!levels)
+                throw InputError("the limit of texture coordinates needs a manifold mesh (core refines a non-manifold "
+                                 "mesh's positions without them)");
+            out.level = std::move(levels->back());
+            out.uv = face_varying_limit(out.level, out.level.face_varying.front(), face_varying_scheme(r.scheme),
+                                        face_varying_options(r), semi.empty() ? nullptr : &semi.front());
+        } else if (r.scheme == Scheme::Loop) {
+            out.level = to_poly_mesh(loop_subdivide(to_tri_mesh(mesh, "Loop subdivision"), r.rule.loop, r.levels));
         } else {
-            lacks(std::string(to_string(r.scheme)) + " limit positions");
+            out.level = catmull_clark_subdivide(mesh, r.rule.catmull_clark, r.levels);
         }
+        LimitResult limit = r.scheme == Scheme::Loop ? loop_limit(to_tri_mesh(out.level, "Loop subdivision"), r.rule.loop)
+                                                     : catmull_clark_limit(out.level, r.rule.catmull_clark);
         out.position = std::move(limit.position);
         out.normal = std::move(limit.normal);
         return out;

@@ -68,8 +68,20 @@ public:
 
     adapters::LimitPoints limit_points(const PolyMesh& mesh, const RefineRequest& r) const override {
         check_refinable(r.scheme);
-        if (r.scheme == Scheme::Loop) return osd::loop_limit(triangles_for(mesh, r.scheme), r.rule.loop, r.levels);
-        return osd::catmull_clark_limit(mesh, r.rule.catmull_clark, r.levels);
+        adapters::LimitPoints out = r.scheme == Scheme::Loop
+                                        ? osd::loop_limit(triangles_for(mesh, r.scheme), r.rule.loop, r.levels)
+                                        : osd::catmull_clark_limit(mesh, r.rule.catmull_clark, r.levels);
+        // Texture coordinates: LimitFaceVarying on the same refinement's last level (Far numbers
+        // the two runs' vertices and faces alike).
+        if (r.face_varying && !mesh.face_varying.empty()) {
+            const PolyMesh uv = r.scheme == Scheme::Loop
+                                    ? osd::loop_face_varying_limit(mesh, r.rule.loop, *r.face_varying, r.levels)
+                                    : osd::catmull_clark_face_varying_limit(mesh, r.rule.catmull_clark, *r.face_varying, r.levels);
+            if (uv.face_vertices != out.level.face_vertices)
+                throw adapters::Rejected("Far's face-varying refinement made other faces than its vertex refinement");
+            out.uv = uv.face_varying.front();
+        }
+        return out;
     }
 
     adapters::LimitEvaluation limit_surface(const PolyMesh& mesh, Scheme scheme, int face,

@@ -78,6 +78,19 @@ SchemeRule rule_with_tags(Scheme scheme, const RuleFlags& flags, PolyMesh& mesh,
     SchemeRule rule = rule_from_boundary_name(scheme, tags.boundary);
     rule.catmull_clark.creasing = crease_method(flags.creasing, mesh);
     rule.catmull_clark.smooth_triangles = tags.smooth_triangles;
+    if (!flags.triangles.empty()) {
+        if (flags.triangles != "catmark" && flags.triangles != "smooth")
+            throw InputError("triangle rule '" + flags.triangles + "' is not catmark or smooth");
+        if (scheme != Scheme::CatmullClark)
+            throw InputError("the triangle rule (catmark or smooth: OpenSubdiv's TRI_SUB_CATMARK or TRI_SUB_SMOOTH) is "
+                             "Catmull-Clark's; " + std::string(to_string(scheme)) + " has none");
+        const bool smooth = flags.triangles == "smooth";
+        if (mesh.creases.smooth_triangles && *mesh.creases.smooth_triangles != smooth)
+            notes.push_back("--triangles " + flags.triangles + " wins over " +
+                            (mesh.source.file.empty() ? std::string("the mesh") : mesh.source.file) +
+                            "'s 't smoothtriangles' (" + (*mesh.creases.smooth_triangles ? "smooth" : "catmark") + ")");
+        rule.catmull_clark.smooth_triangles = smooth;
+    }
     rule.catmull_clark.nonmanifold = flags.nonmanifold;
     return rule;
 }

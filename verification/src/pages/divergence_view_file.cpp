@@ -44,6 +44,13 @@ std::string divergence_view_script(const DivergenceView& view, int job, const st
         if (!m.all_triangles()) level["sizes"] = face_sizes32(m);
         if (l >= 1 && l - 1 < view.births.size() && !view.births[l - 1].empty())
             level["origins"] = origins32(view.births[l - 1]);
+        if (!m.face_varying.empty()) {
+            const FaceVaryingChannel& ch = m.face_varying.front();
+            level["uv"] = {{"name", ch.name},
+                           {"dimension", ch.dimension},
+                           {"values", base64(ch.values)},
+                           {"corners", base64(ch.corner_values)}};
+        }
         levels.push_back(std::move(level));
     }
     json references = json::object();
@@ -57,6 +64,12 @@ std::string divergence_view_script(const DivergenceView& view, int job, const st
         references[name] = std::move(per_level);
     }
     json data{{"job", job}, {"subject", subject}, {"levels", levels}, {"references", references}};
+    if (!view.reference_uvs.empty()) {
+        json uvs = json::object();
+        for (const auto& [name, values] : view.reference_uvs) uvs[name] = values.empty() ? json(nullptr) : json(base64(values));
+        data["reference_uvs"] = std::move(uvs);
+        data["uv_worst_corner"] = view.uv_worst_corner;
+    }
     if (const auto& m = view.minimal) {
         data["minimal"] = {{"reference", m->reference},     {"symptom", m->symptom},
                            {"tests", m->tests},             {"faces", m->mesh.num_faces()},

@@ -121,7 +121,7 @@ void parse_scheme_keys(const std::string& file, int line, std::istringstream& wo
     const bool creases = scheme == Scheme::CatmullClark;
     const bool fvar = creases || scheme == Scheme::Bilinear;
     parse_keys(file, line, words,
-               std::string("boundary, ") + (creases ? "crease-method, " : "") + (fvar ? "fvar, " : "") +
+               std::string("boundary, ") + (creases ? "crease-method, triangles, " : "") + (fvar ? "fvar, " : "") +
                    "levels, against, tier, tolerance, refuses",
                [&](const std::string& key, const std::string& value) {
                    if (key == "fvar" && fvar) {
@@ -133,6 +133,10 @@ void parse_scheme_keys(const std::string& file, int line, std::istringstream& wo
                        if (value != "none" || scheme != Scheme::CatmullClark)
                            at_line(file, line, [&] { return rule_from_boundary_name(scheme, value); });
                        flags.boundary = value;
+                   } else if (key == "triangles" && creases) {
+                       if (value != "catmark" && value != "smooth")
+                           throw ParseError(file, line, "triangles must be catmark or smooth");
+                       flags.triangles = value;
                    } else if (key == "crease-method" && creases) {
                        at_line(file, line, [&] { return crease_method(value, PolyMesh{}); });
                        flags.creasing = value;
@@ -231,6 +235,7 @@ std::string describe_entry(const ManifestEntry& e) {
         if (!e.rule_flags.creasing.empty()) s += " crease-method=" + e.rule_flags.creasing;
     }
     if (!e.rule_flags.face_varying.empty()) s += " fvar=" + e.rule_flags.face_varying;
+    if (!e.rule_flags.triangles.empty()) s += " triangles=" + e.rule_flags.triangles;
     s += " L" + std::to_string(e.request.levels) + " " + to_string(tier);
     if (tier != Tier::Strict) {
         char buf[32];

@@ -45,43 +45,38 @@ std::string minimal_obj_name(const SuiteJob& job) { return "views/job" + std::to
 /// 0.03 to 0.08 s a case); larger inputs would take seconds each, and `crossdiv diff` is there.
 constexpr int kShrinkMaxFaces = 500;
 
-/// The first divergence from a library reference among `runs` that shrinks (`shrink(name)`,
-/// as `crossdiv diff` shrinks; it throws InputError when the symptom needs the whole input or
-/// is a refusal). A reference that is a program is passed over: each comparison would start it
-/// again.
-template <class Runs, class Shrink>
-std::optional<MinimalDivergence> first_shrunk(const Runs& runs, Shrink&& shrink) {
-    for (const auto& run : runs) {
-        if (run.verdict != Verdict::Diverge || find_implementation(run.reference).confines_itself()) continue;
+/// The first divergence from a library reference among `runs` (of the positions, or of the
+/// texture coordinates) that shrinks, as `crossdiv diff` shrinks it: nothing when core is not
+/// what is under test or the input is too large. A reference that is a program is passed over:
+/// each comparison would start it again. A symptom that needs the whole input, or is a
+/// refusal, does not shrink (shrink_divergence throws InputError): the view stands alone.
+std::optional<MinimalDivergence> shrink_for_view(const PolyMesh& mesh, const std::string& input,
+                                                 const RefinementRequest& req, const RefinementComparison& c,
+                                                 const std::string& obj_name) {
+    if (req.subject || mesh.num_faces() > kShrinkMaxFaces) return std::nullopt;
+    const std::string rule = req.scheme == Scheme::Loop
+                                 ? " --weights " + std::string(to_string(req.rule.loop.weights)) + " --boundary " +
+                                       std::string(to_string(req.rule.loop.boundary))
+                                 : " --scheme " + std::string(to_string(req.scheme)) + " --boundary " +
+                                       boundary_name(req.scheme, req.rule);
+    const std::string fvar = req.face_varying ? " --fvar " + std::string(to_string(*req.face_varying)) : "";
+    for (const RefinementRun& run : c.runs) {
+        const bool uv_diverges = run.uv && run.uv->compared() && run.uv->outcome.verdict == Verdict::Diverge;
+        if ((run.verdict != Verdict::Diverge && !uv_diverges) || find_implementation(run.reference).confines_itself())
+            continue;
         try {
-            return shrink(run.reference);
+            RefinementRequest one = req;
+            one.references = {run.reference};
+            one.view_max_faces = 0;
+            const ShrinkResult r = shrink_divergence(mesh, input, one);
+            return MinimalDivergence{run.reference, describe(r.symptom, "core", run.reference), r.minimal, r.tests,
+                                     "crossdiv compare " + obj_name + rule + fvar + " --levels " +
+                                         std::to_string(req.levels) + " --against " + run.reference};
         } catch (const InputError&) {
             // Nothing to shrink here: the view stands alone.
         }
     }
     return std::nullopt;
-}
-
-/// The case's first divergence from a library reference shrunk to a minimal input, for the
-/// viewer; nothing when core is not what is under test or the input is too large.
-std::optional<MinimalDivergence> shrink_for_view(const PolyMesh& mesh, const std::string& input,
-                                                 const RefinementRequest& req, const RefinementComparison& c,
-                                                 const std::string& obj_name) {
-    if (req.subject || mesh.num_faces() > kShrinkMaxFaces) return std::nullopt;
-    return first_shrunk(c.runs, [&](const std::string& reference) {
-        RefinementRequest one = req;
-        one.references = {reference};
-        one.view_max_faces = 0;
-        const ShrinkResult r = shrink_divergence(mesh, input, one);
-        const std::string rule = req.scheme == Scheme::Loop
-                                     ? " --weights " + std::string(to_string(req.rule.loop.weights)) + " --boundary " +
-                                           std::string(to_string(req.rule.loop.boundary))
-                                     : " --scheme " + std::string(to_string(req.scheme)) + " --boundary " +
-                                           boundary_name(req.scheme, req.rule);
-        return MinimalDivergence{reference, describe(r.symptom, "core", reference), r.minimal, r.tests,
-                                 "crossdiv compare " + obj_name + rule + " --levels " + std::to_string(req.levels) +
-                                     " --against " + reference};
-    });
 }
 
 /// Writes the case's 3D view as views/jobN.js (and its minimal input as views/jobN-minimal.obj)

@@ -93,10 +93,13 @@ FaceVaryingChannel refine_face_varying(const PolyMesh& parent, const PolyConnect
 
 /// Levels 0..`levels` of a scheme (level 0: `mesh` itself), every face-varying channel
 /// refined alongside the positions. `step(m, conn)` is the scheme's traversal. Hole tags are
-/// carried, not applied. @throws as subdivide_with_face_varying.
+/// carried, not applied. `semi_tags`, when given, receives the semi-sharp tags of the last
+/// level's channels, one per channel (empty after no level: they are then read off the
+/// sharpness), for face_varying_limit. @throws as subdivide_with_face_varying.
 std::vector<PolyMesh> subdivide_levels_with_face_varying(
     const PolyMesh& mesh, FaceVaryingScheme scheme, const FaceVaryingOptions& options, int levels,
-    const std::function<RefinementStep(const PolyMesh&, const PolyConnectivity&)>& step);
+    const std::function<RefinementStep(const PolyMesh&, const PolyConnectivity&)>& step,
+    std::vector<FaceVaryingSemiSharp>* semi_tags = nullptr);
 
 /// `levels` levels of a scheme with every face-varying channel of `mesh` refined alongside
 /// its positions: `step(m, conn)` is the scheme's traversal. Hole tags are carried, not

@@ -5,6 +5,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <optional>
 #include <vector>
 
 #include "crossdiv/mesh/poly_mesh.h"
@@ -60,10 +61,12 @@ struct LimitEvaluation {
 
 /// Limit positions and limit normals of every vertex of a refined level (the normal is the
 /// normalized cross product of the two limit tangents, zero where they are parallel); `level`
-/// is that level's mesh in the library's order.
+/// is that level's mesh in the library's order. When the request refines texture coordinates,
+/// `uv` holds the limit values of the level's first channel, indexed by its corners.
 struct LimitPoints {
     PolyMesh level;
     std::vector<Vec3> position, normal;
+    std::optional<FaceVaryingChannel> uv = std::nullopt;
 };
 
 /// Position and first and second derivatives at each requested parameter.

@@ -126,6 +126,13 @@ LevelTrace catmull_clark_face_varying(const PolyMesh& mesh, const CatmullClarkOp
 /// Loop, as catmull_clark_face_varying. @throws Rejected also for a face that is not a triangle.
 LevelTrace loop_face_varying(const PolyMesh& mesh, const LoopOptions& options, FaceVaryingRule rule, int levels,
                              LevelBirths* births = nullptr);
+/// The last of `levels` levels (as catmull_clark_face_varying) with its channel's values
+/// replaced by their limits, PrimvarRefinerReal<double>::LimitFaceVarying: the reference for
+/// core's face_varying_limit. @throws as catmull_clark_face_varying.
+PolyMesh catmull_clark_face_varying_limit(const PolyMesh& mesh, const CatmullClarkOptions& options, FaceVaryingRule rule,
+                                          int levels);
+/// Loop, as catmull_clark_face_varying_limit.
+PolyMesh loop_face_varying_limit(const PolyMesh& mesh, const LoopOptions& options, FaceVaryingRule rule, int levels);
 /// Bilinear (SCHEME_BILINEAR): every rule refines linearly there.
 LevelTrace bilinear_face_varying(const PolyMesh& mesh, FaceVaryingRule rule, int levels, LevelBirths* births = nullptr);
 

@@ -3,7 +3,8 @@
 /// What the report's 3D viewer shows of a case where some reference diverges, for every
 /// scheme: the implementation under test's levels with each vertex's provenance where it is
 /// known, and each matched reference's positions in that numbering; and, when the suite made
-/// one, the divergence shrunk to a small input (comparisons/shrink.h, as `crossdiv diff`).
+/// one, the divergence shrunk to a small input (comparisons/shrink.h, as `crossdiv diff`);
+/// where texture coordinates are compared, each implementation's values per corner.
 
 #include <map>
 #include <optional>
@@ -34,8 +35,15 @@ struct DivergenceView {
     /// vertex map there (a match by position sees the last level only); NaN marks a vertex
     /// the reference has no match for.
     std::map<std::string, std::vector<std::vector<Vec3>>> references;
+    /// When the case compares texture coordinates (the levels then carry their channel): per
+    /// reference that gave values, its value at every corner of the last level in our corner
+    /// order (harness/corner_values.h: corner_values_in_our_order; NaN where unmatched).
+    std::map<std::string, std::vector<double>> reference_uvs = {};
+    /// The corner of the last level (an index into its face_vertices) where some reference's
+    /// texture coordinates part most from ours; -1 when none diverge.
+    int uv_worst_corner = -1;
     /// The divergence of one library reference shrunk, when the suite made one.
-    std::optional<MinimalDivergence> minimal;
+    std::optional<MinimalDivergence> minimal = std::nullopt;
 };
 
 }  // namespace crossdiv::verification

@@ -5,10 +5,12 @@
 /// matrices (eigen-analysis of limit behaviour).
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "crossdiv/adapters/reference.h"
+#include "crossdiv/verification/harness/corner_values.h"
 #include "crossdiv/verification/harness/tolerances.h"
 #include "crossdiv/mesh/poly_mesh.h"
 #include "crossdiv/subdiv/catmull_clark_mask.h"
@@ -31,6 +33,9 @@ struct LimitComparison {
     double max_rel_position = NAN;  ///< over every vertex, relative to the diagonal
     int normals_compared = 0;       ///< interior vertices (core computes no boundary normal)
     double max_normal_angle = NAN;  ///< radians, over those
+    /// The limit texture coordinates, corner by corner, when the request refines them
+    /// (RefineRequest::face_varying) and the input has them.
+    std::optional<CornerValueComparison> uv = std::nullopt;
     std::string explanation;
 };
 

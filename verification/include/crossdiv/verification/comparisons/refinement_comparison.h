@@ -22,6 +22,7 @@
 #include "crossdiv/mesh/poly_mesh.h"
 #include "crossdiv/verification/comparisons/divergence_view.h"
 #include "crossdiv/verification/comparisons/rule_identification.h"
+#include "crossdiv/verification/comparisons/face_varying_rule_identification.h"
 #include "crossdiv/verification/harness/corner_values.h"
 #include "crossdiv/verification/harness/correspondence.h"
 #include "crossdiv/verification/harness/isolate.h"
@@ -145,6 +146,9 @@ struct RefinementComparison {
     /// only in each, when they do: a failure, as a crash is.
     std::string subject_topology;
     std::optional<RuleIdentification> rules;
+    /// The face-varying rule the subject's texture coordinates follow, class by class of UV
+    /// vertex, when the request compares them and the subject gave them.
+    std::optional<FaceVaryingIdentification> uv_rules;
     std::vector<RefinementRun> runs;
     std::optional<CaseWorstVertex> worst_vertex;  ///< when some reference diverges
     std::optional<DivergenceView> view;           ///< see RefinementRequest::view_max_faces

@@ -32,6 +32,12 @@ struct CornerValueComparison {
 /// Correspondence's ref_to_ours, a bijection).
 CornerValueComparison compare_corner_values(const PolyMesh& ours, const PolyMesh& ref, const std::vector<int>& ref_to_ours);
 
+/// The values of `ref`'s first channel at every corner of `ours`, in ours' corner order
+/// (face_vertices), `dimension` numbers per corner; NaN at a corner of a face that has no
+/// partner in `ref`. Empty when compare_corner_values could not compare the channels. What
+/// the report's viewer shows beside ours at a picked corner.
+std::vector<double> corner_values_in_our_order(const PolyMesh& ours, const PolyMesh& ref, const std::vector<int>& ref_to_ours);
+
 /// The diagonal of the box of a channel's first two components (of its only one, for a
 /// one-component channel): the scale face-varying tolerances are relative to.
 double uv_box_diagonal(const FaceVaryingChannel& channel);
@@ -47,7 +53,11 @@ enum class UvVertexClass {
 /// "interior", "boundary", "seam", "junction", "corner".
 const char* to_string(UvVertexClass c);
 
-/// The class of the value at corner `corner` of face `face` of `mesh` (its first channel).
+/// The class of the value at every corner of `mesh` (its first channel), in corner order
+/// (face_vertices); O(corners log corners).
+std::vector<UvVertexClass> uv_corner_classes(const PolyMesh& mesh);
+
+/// The class of the value at corner `corner` of face `face` of `mesh` (uv_corner_classes).
 UvVertexClass uv_vertex_class(const PolyMesh& mesh, int face, int corner);
 
 }  // namespace crossdiv::verification

@@ -238,6 +238,14 @@ inline constexpr double kLimitAgreementRelative = 1e-12;
 /// masks that differ by a scale per tangent (OpenSubdiv normalizes its masks differently),
 /// which moves the direction by rounding only, a few ulps of the tangents' conditioning.
 inline constexpr double kLimitNormalRad = 1e-10;
+/// OpenSubdiv's LimitFaceVarying weighs a value of a vertex whose face-varying topology does
+/// not match its vertex (a seam's crease value) with float constants, 1.0f/6.0f and 2.0f/3.0f
+/// (PrimvarRefinerReal::limitFVar), even when it computes in double: each weight is off by up
+/// to 2^-25 of itself, so such a limit value by up to 2^-25 of the largest |value| it sums
+/// (the weights sum to 1; measured 4.4e-8 on values of magnitude 3). Limit texture coordinates
+/// agree within this times the channel's largest |value|, or within kLimitAgreementRelative
+/// of the UV box, whichever is larger: twice the bound, and 1e4 times below what a rule moves.
+inline constexpr double kFarFloatLimitWeight = 0x1p-24;
 
 // ---- Limit surface evaluation (Bfr).
 

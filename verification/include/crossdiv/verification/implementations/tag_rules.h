@@ -53,12 +53,16 @@ struct RuleFlags {
     std::string creasing;  ///< crease_method's flag
     NonManifoldRule nonmanifold = NonManifoldRule::OpenSubdiv;
     std::string face_varying = {};  ///< face_varying_rule's flag (a FaceVaryingRule name)
+    /// Catmull-Clark's edge weights at triangles: "catmark" (the scheme's own), "smooth"
+    /// (OpenSubdiv's TRI_SUB_SMOOTH), or "" for the file's `t smoothtriangles` tag, else catmark.
+    std::string triangles = {};
 };
 
 /// The rule a run uses on `mesh`: the flags, the file's tags where no flag is given
 /// (resolve_tag_rules; `none` tags the boundary faces of `mesh` as holes), and the notes to
 /// show the user.
-/// @throws InputError as resolve_tag_rules, rule_from_boundary_name and crease_method.
+/// @throws InputError as resolve_tag_rules, rule_from_boundary_name and crease_method; for a
+///         `triangles` flag on a scheme other than Catmull-Clark, or one not catmark or smooth.
 SchemeRule rule_with_tags(Scheme scheme, const RuleFlags& flags, PolyMesh& mesh, std::vector<std::string>& notes);
 
 }  // namespace crossdiv::verification

@@ -13,6 +13,12 @@
 ///   provenance is known (the primal schemes) `origins` (int32 pairs: the vertex point of old
 ///   vertex a as (a, -1), the edge point of old edge (a, b) as (a, b), the face point of old
 ///   face f as (f, -2));
+/// - `levels[l].uv`, when the case compares texture coordinates: `name`, `dimension`,
+///   `values` (float64, `dimension` per value) and `corners` (int32, the value of every face
+///   corner in face order: a seam is two corners of one vertex with different values);
+/// - `reference_uvs[name]`, with those: float64 values of the reference at every corner of the
+///   last level in our corner order (NaN: its face has no partner), or null when it gave none;
+///   `uv_worst_corner`, the corner where the references' values part most (-1: none diverge);
 /// - `references[name][l]`: float32 xyz per vertex, the reference's position minus ours (NaN:
 ///   unmatched), or null where the reference has no vertex map at level l. An offset in float32
 ///   keeps the reference's value to 1e-7 of its distance from ours, far finer than any

@@ -1,0 +1,80 @@
+#pragma once
+/// @file
+/// Invariance (metamorphic) testing: an implementation refines an input and the same input
+/// written otherwise (input_transformation.h); mapped back, the two refinements must be the
+/// same surface. No reference is needed: what is checked is that the implementation's answer
+/// depends on the mesh and not on how it was written -- where every reference shares a blind
+/// spot (a bug that shows only when an extraordinary vertex is a face's third corner), or in a
+/// reference itself.
+///
+/// The refinement of the input is mapped as the input was (positions through the
+/// transformation's affine map, faces reversed for reverse-orientation) and matched to the
+/// refinement of the transformed input vertex by vertex through positions and faces
+/// (correspondence.h). It is `invariant` when the faces are the same and the positions agree
+/// bit for bit where floating point makes the transformation exact (scale, swap-axes, mirror,
+/// repeat), within the tolerance elsewhere (summation order, rounding); `nondeterministic` when
+/// the same input run again differs; else `not-invariant`, with the worst vertex. An input the
+/// implementation refuses is `not-compared` (a refusal of the input written otherwise, when the
+/// input itself is taken, is `not-invariant`), as is a refinement with vertices at one position
+/// whose positions all agree but whose faces positions cannot match.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "crossdiv/mesh/poly_mesh.h"
+#include "crossdiv/verification/comparisons/input_transformation.h"
+#include "crossdiv/verification/harness/isolate.h"
+#include "crossdiv/verification/implementations/implementation.h"
+
+namespace crossdiv::verification {
+
+enum class InvarianceResult {
+    Invariant,
+    NotInvariant,
+    Nondeterministic,  ///< the same input, run again, refined otherwise
+    /// The implementation refused (or failed on) the input itself, or the refinement has
+    /// vertices at one position, whose faces positions cannot match: nothing is said either way.
+    NotCompared,
+};
+/// "invariant", "not-invariant", "nondeterministic", "not-compared".
+const char* to_string(InvarianceResult r);
+
+/// One implementation under one transformation of one input.
+struct InvarianceCheck {
+    InputTransformation transformation = InputTransformation::Repeat;
+    InvarianceResult result = InvarianceResult::NotCompared;
+    bool exact = false;          ///< bit-identical results expected (TransformedInput::exact)
+    bool faces_equal = false;    ///< the same faces, as oriented faces up to rotation
+    bool bit_identical = false;  ///< faces equal and every matched position equal bit for bit
+    double max_rel = NAN;        ///< largest matched distance over the diagonal
+    /// The worst vertex, in the numbering of the refinement of the untransformed input.
+    int worst_vertex = -1;
+    int worst_valence = 0;
+    bool worst_boundary = false;
+    std::string explanation;  ///< one sentence with the figures
+};
+
+/// Compares `refined` (the last level of the input's refinement) with `refined_transformed`
+/// (of `transformed.mesh`'s) as the transformation says they relate.
+InvarianceCheck measure_invariance(const PolyMesh& refined, const PolyMesh& refined_transformed,
+                                   const TransformedInput& transformed, double tolerance);
+
+/// What an implementation did under every transformation asked for.
+struct InvarianceReport {
+    std::string implementation;
+    RunOutcome outcome;  ///< its run on the untransformed input
+    std::vector<InvarianceCheck> checks;
+    /// No check not-invariant or nondeterministic (a check not compared says nothing).
+    bool invariant() const;
+};
+
+/// Runs `impl` on `input` and on each transformation of it (drawn from `seed`), `request.levels`
+/// levels, each run isolated as refinements are (refine_isolated: a crash or a hang is an
+/// outcome), and measures each.
+InvarianceReport check_invariance(const Implementation& impl, const PolyMesh& input, const RefineRequest& request,
+                                  const std::vector<InputTransformation>& transformations, std::uint64_t seed,
+                                  double tolerance, double timeout_seconds, bool isolate = true);
+
+}  // namespace crossdiv::verification
