@@ -2,10 +2,14 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "command.h"
 #include "crossdiv/error.h"
+#include "crossdiv/io/mesh_io.h"
+#include "crossdiv/io/output_file.h"
 #include "crossdiv/verification/comparisons/invariance.h"
 #include "crossdiv/verification/harness/json_text.h"
 #include "crossdiv/verification/implementations/inputs.h"
@@ -15,6 +19,21 @@
 namespace crossdiv::cli {
 
 using namespace crossdiv::verification;
+
+namespace {
+
+/// Inputs up to this many faces are shrunk (as the suite's views are: tens of checks of
+/// milliseconds each).
+constexpr int kShrinkMaxFaces = 500;
+
+/// A file name's stem for an input spec: "bundled:torus" -> "bundled-torus", "a/b.obj" -> "b".
+std::string file_stem(const std::string& spec) {
+    std::string s = std::filesystem::path(spec).stem().string();
+    std::replace(s.begin(), s.end(), ':', '-');
+    return s;
+}
+
+}  // namespace
 
 int run_invariance(const InvarianceOptions& o, const Implementation* subject) {
     const Scheme scheme = scheme_from_string(o.scheme.scheme);
@@ -49,6 +68,7 @@ int run_invariance(const InvarianceOptions& o, const Implementation* subject) {
         for (const Implementation* impl : impls) {
             const InvarianceReport r = check_invariance(*impl, mesh, request, transforms, o.seed, o.tolerance, o.timeout, o.isolate);
             nlohmann::json rows = nlohmann::json::array();
+            nlohmann::json minimal = nullptr;
             if (r.outcome.status != RunStatus::Ok) {
                 // Its run on the input itself failed: nothing to compare, said once.
                 fmt::print("  {:<17} {}\n", impl->name(), r.outcome.summary());
@@ -71,7 +91,33 @@ int run_invariance(const InvarianceOptions& o, const Implementation* subject) {
                                 {"worst_boundary", c.worst_boundary},
                                 {"explanation", c.explanation}});
             }
+            // The first finding shrunk, where the input is small enough for delta debugging to be quick.
+            const auto finding = std::find_if(r.checks.begin(), r.checks.end(), [](const InvarianceCheck& c) {
+                return c.result == InvarianceResult::NotInvariant || c.result == InvarianceResult::Nondeterministic;
+            });
+            if (finding != r.checks.end() && mesh.num_faces() <= kShrinkMaxFaces) {
+                try {
+                    const InvarianceShrink s = shrink_not_invariant(*impl, mesh, request, finding->transformation, o.seed,
+                                                                    o.tolerance, o.timeout, o.isolate);
+                    create_output_folder(o.out);
+                    const std::string file = (std::filesystem::path(o.out) / (file_stem(in) + "-" + impl->name() + "-" +
+                                                                               to_string(finding->transformation) + ".obj"))
+                                                 .string();
+                    write_mesh(file, s.minimal);
+                    const std::string reproduce =
+                        "crossdiv invariance " + file + " --scheme " + o.scheme.scheme + " --levels " + std::to_string(o.scheme.levels) +
+                        (subject ? " --subject-name " + impl->name() + " --subject '...'" : " --impl " + impl->name()) +
+                        " --transform " + to_string(finding->transformation) + " --seed " + std::to_string(o.seed);
+                    fmt::print("  {:<17} minimal input: {} faces ({} checks): {}\n  {:<17} reproduce: {}\n", impl->name(),
+                               s.minimal.num_faces(), s.tests, s.check.explanation, "", reproduce);
+                    minimal = {{"mesh", file}, {"faces", s.minimal.num_faces()}, {"tests", s.tests},
+                               {"transformation", to_string(finding->transformation)}, {"reproduce", reproduce}};
+                } catch (const InputError& e) {
+                    fmt::print("  {:<17} not shrunk: {}\n", impl->name(), e.what());
+                }
+            }
             results.push_back({{"input", in},
+                               {"minimal", minimal},
                                {"implementation", impl->name()},
                                {"outcome", r.outcome.summary()},
                                {"invariant", r.invariant()},

@@ -23,12 +23,15 @@ struct InvarianceOptions {
     double timeout = 120;
     bool isolate = true;
     std::string json;
+    std::string out = "invariance-out";  ///< where the minimal inputs of the findings go
 };
 
 /// `crossdiv invariance IN... --scheme S --levels N [--impl NAME,... | --subject CMD]
 /// [--transform NAME,...] [--seed K]`: exit 1 when some implementation is not invariant (or is
 /// nondeterministic, or could not be compared), 0 when every one is. `subject`, when given, is
-/// the only implementation checked.
+/// the only implementation checked. Each implementation's first non-invariant check on an
+/// input of at most 500 faces is shrunk to a minimal input, written to `out` with the line
+/// that reproduces it.
 int run_invariance(const InvarianceOptions& o, const verification::Implementation* subject);
 
 }  // namespace crossdiv::cli

@@ -588,7 +588,7 @@ struct InvarianceArgs {
     std::vector<std::string> inputs;
     SchemeArgs scheme;
     ProgramArgs programs;
-    std::string impls, transforms, json;
+    std::string impls, transforms, json, out = "invariance-out";
     std::uint64_t seed = 1;
     double tolerance = 1e-12;
     bool no_isolate = false;
@@ -607,6 +607,7 @@ struct InvarianceArgs {
             ->check(CLI::PositiveNumber)
             ->capture_default_str();
         app.add_option("--json", json, "Write the results as JSON to this file");
+        app.add_option("--out", out, "Folder for the minimal inputs of the findings")->capture_default_str();
         app.add_flag("--no-isolate", no_isolate, "Run implementations in this process (debugging; a crash ends the run)");
         programs.add_to(app);
     }
@@ -625,6 +626,7 @@ int invariance_command(const InvarianceArgs& a) {
     o.timeout = a.programs.timeout;
     o.isolate = !a.no_isolate;
     o.json = a.json;
+    o.out = a.out;
     return run_invariance(o, subject.get());
 }
 

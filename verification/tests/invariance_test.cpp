@@ -8,6 +8,7 @@
 #include <algorithm>
 
 #include "crossdiv/datasets/bundled.h"
+#include "crossdiv/datasets/edge_cases.h"
 #include "crossdiv/error.h"
 #include "crossdiv/mesh/poly_connectivity.h"
 #include "crossdiv/verification/comparisons/input_transformation.h"
@@ -112,6 +113,31 @@ TEST(Invariance, CoreIsInvariantUnderEveryTransformation) {
         EXPECT_EQ(c.result, InvarianceResult::Invariant) << "quad-cube " << to_string(c.transformation) << ": " << c.explanation;
 }
 
+TEST(Invariance, TextureCoordinatesAreCheckedToo) {
+    // Core refines the UV junction's channel as invariantly as its positions; a subject whose
+    // texture coordinates depend on the first face's first corner is caught by them alone.
+    RefineRequest request{Scheme::CatmullClark, {}, 2, FaceVaryingRule::None};
+    const PolyMesh mesh = datasets::edge_case("uv-junction").mesh;
+    const InvarianceReport core = check_invariance(core_implementation(), mesh, request,
+                                                   {kInputTransformations.begin(), kInputTransformations.end()}, 1, 1e-12, 60, false);
+    for (const InvarianceCheck& c : core.checks) {
+        EXPECT_EQ(c.result, InvarianceResult::Invariant) << to_string(c.transformation) << ": " << c.explanation;
+        EXPECT_LE(c.uv_max_rel, 1e-12) << to_string(c.transformation);
+    }
+    const std::unique_ptr<Implementation> shifty =
+        make_callback_implementation("uv-shift", {Scheme::CatmullClark}, [](const PolyMesh& m, const RefineRequest& r) {
+            PolyMesh out = core_implementation().refine(m, r).back();
+            const double shift = 1e-3 * m.face_vertices[0];  // read off how the input is written
+            for (double& x : out.face_varying[0].values) x += shift;
+            return out;
+        });
+    const InvarianceReport r = check_invariance(*shifty, mesh, request, {InputTransformation::RotateCorners}, 1, 1e-12, 60, false);
+    ASSERT_EQ(r.checks.size(), 1u);
+    EXPECT_EQ(r.checks[0].result, InvarianceResult::NotInvariant) << r.checks[0].explanation;
+    EXPECT_EQ(r.checks[0].max_rel, r.checks[0].max_rel);  // the positions were compared
+    EXPECT_NE(r.checks[0].explanation.find("texture coordinates"), std::string::npos) << r.checks[0].explanation;
+}
+
 /// Core's refinement, with the vertex point of every interior extraordinary vertex (valence
 /// other than `regular`) that is corner 2 of the first face listing it moved 1e-3 of its way
 /// from the input's centroid (a move every affine map carries alike): right unless such a
@@ -151,7 +177,19 @@ TEST(Invariance, ASubjectWrongAtOneCornerPositionIsNotInvariantUnderFaceRotation
         for (InputTransformation t : {InputTransformation::Scale, InputTransformation::Mirror, InputTransformation::Repeat})
             EXPECT_EQ(check_of(r, t).result, InvarianceResult::Invariant) << name << " " << to_string(t);
         EXPECT_FALSE(r.invariant());
+        // Shrunk by delta debugging: the fan of one extraordinary vertex still shows it.
+        RefineRequest request{scheme, {}, 1};
+        if (scheme == Scheme::Loop) request.rule.loop = {LoopWeights::Loop, LoopBoundary::EdgeOnly};
+        const InvarianceShrink s = shrink_not_invariant(*subject, datasets::bundled_mesh(name), request,
+                                                        InputTransformation::RotateCorners, 1, 1e-12, 60, false);
+        EXPECT_EQ(s.minimal.num_faces(), scheme == Scheme::Loop ? 5 : 3) << name << " after " << s.tests << " checks";
+        EXPECT_EQ(s.check.result, InvarianceResult::NotInvariant);
+        EXPECT_NE(s.check.worst_valence, regular);
     }
+    // Nothing to shrink where it is invariant.
+    EXPECT_THROW(shrink_not_invariant(core_implementation(), datasets::bundled_mesh("icosahedron"), {Scheme::Loop, {}, 1},
+                                      InputTransformation::RotateCorners, 1, 1e-12, 60, false),
+                 InputError);
 }
 
 /// Core's refinement with each old vertex's position summed from three parts in an order set

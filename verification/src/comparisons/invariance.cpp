@@ -3,8 +3,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <optional>
 
+#include "crossdiv/error.h"
+#include "crossdiv/verification/comparisons/shrink.h"
+#include "crossdiv/verification/harness/corner_values.h"
 #include "crossdiv/verification/harness/correspondence.h"
 #include "crossdiv/verification/harness/tolerances.h"
 #include "crossdiv/mesh/tri_mesh.h"
@@ -36,22 +41,36 @@ InvarianceCheck compare_repeat(const PolyMesh& a, const PolyMesh& b) {
     const bool same_count = a.positions.size() == b.positions.size();
     out.max_rel = same_count ? max_relative_distance(a, b, identity_map(a.positions.size())) : INFINITY;
     out.bit_identical = out.faces_equal && same_count && a.positions == b.positions;
+    if (!a.face_varying.empty() || !b.face_varying.empty()) {
+        // Texture coordinates: the same values at the same indices.
+        const bool same_uv = a.face_varying.size() == b.face_varying.size() && !a.face_varying.empty() &&
+                             a.face_varying[0].corner_values == b.face_varying[0].corner_values &&
+                             a.face_varying[0].values == b.face_varying[0].values;
+        out.uv_max_rel = same_uv ? 0.0 : INFINITY;
+        out.bit_identical = out.bit_identical && same_uv;
+    }
     if (out.bit_identical) {
         out.result = InvarianceResult::Invariant;
         out.explanation = "identical bytes";
         return out;
     }
     out.result = InvarianceResult::Nondeterministic;
-    if (same_count) {
-        const std::vector<double> d = vertex_distances(a, b, identity_map(a.positions.size()));
-        const auto worst = std::max_element(d.begin(), d.end(), [](double x, double y) { return !(x >= y); });
-        if (worst != d.end()) out.worst_vertex = static_cast<int>(worst - d.begin());
-    }
+    // The first vertex whose bytes differ (a NaN differs from itself: compared by bits).
+    for (size_t v = 0; same_count && v < a.positions.size() && out.worst_vertex < 0; ++v)
+        if (std::memcmp(a.positions[v].data(), b.positions[v].data(), sizeof(double) * 3) != 0) out.worst_vertex = static_cast<int>(v);
+    const auto text = [](const Vec3& p) {
+        char buf[96];
+        std::snprintf(buf, sizeof buf, "(%.17g, %.17g, %.17g)", p.x(), p.y(), p.z());
+        return std::string(buf);
+    };
     out.explanation = "the same input run again (its heap filled otherwise) gives " +
                       (!same_count ? std::to_string(b.positions.size()) + " vertices, not " + std::to_string(a.positions.size())
-                       : !out.faces_equal ? std::string("other faces")
-                                          : "vertex " + std::to_string(out.worst_vertex) + " elsewhere, by " + sci(out.max_rel) +
-                                                " of the diagonal");
+                       : out.worst_vertex < 0
+                           ? std::string(out.faces_equal ? "other texture coordinates" : "other faces")
+                           : "vertex " + std::to_string(out.worst_vertex) + " at " +
+                                 text(b.positions[static_cast<size_t>(out.worst_vertex)]) + ", not " +
+                                 text(a.positions[static_cast<size_t>(out.worst_vertex)]) + " (largest move " +
+                                 sci(out.max_rel) + " of the diagonal)");
     return out;
 }
 
@@ -81,9 +100,13 @@ InvarianceCheck measure_invariance(const PolyMesh& refined, const PolyMesh& refi
     PolyMesh expected = refined;
     for (Vec3& p : expected.positions) p = transformed.linear * p + transformed.offset;
     if (transformed.reversed)
-        for (int f = 0; f < expected.num_faces(); ++f)
+        for (int f = 0; f < expected.num_faces(); ++f) {
             std::reverse(expected.face_vertices.begin() + expected.face_start[f] + 1,
                          expected.face_vertices.begin() + expected.face_start[f + 1]);
+            for (FaceVaryingChannel& ch : expected.face_varying)
+                std::reverse(ch.corner_values.begin() + expected.face_start[f] + 1,
+                             ch.corner_values.begin() + expected.face_start[f + 1]);
+        }
     // Far from the origin two summation orders of the same stencils (or a translated or rotated
     // input's own rounding) part by a few ulps of the coordinates, more than a relative
     // tolerance of a small diagonal: the same allowance as the comparisons' (kRoundingUlps).
@@ -146,6 +169,21 @@ InvarianceCheck measure_invariance(const PolyMesh& refined, const PolyMesh& refi
         out.result = InvarianceResult::NotInvariant;
         out.explanation = sci(out.max_rel) + " of the diagonal > " + sci(bar) + where;
     }
+    // Texture coordinates, corner by corner through the same vertices (no map moves them).
+    if (!expected.face_varying.empty() && !refined_transformed.face_varying.empty()) {
+        const CornerValueComparison uv = compare_corner_values(expected, refined_transformed, m.ref_to_ours);
+        out.uv_max_rel = uv.compared() ? uv.max_rel : INFINITY;
+        const bool uv_ok = uv.compared() && (out.exact ? uv.max_abs == 0.0 : uv.max_rel <= tolerance);
+        if (!uv_ok) {
+            out.result = InvarianceResult::NotInvariant;
+            out.explanation += "; texture coordinates " +
+                               (uv.compared() ? sci(uv.max_rel) + " of the UV box apart" + (out.exact ? " (exact: bit for bit expected)" : "")
+                                              : "not compared: " + uv.not_compared);
+        } else {
+            out.explanation += uv.max_abs == 0.0 ? "; texture coordinates bit for bit"
+                                                 : "; texture coordinates within " + sci(uv.max_rel) + " of the UV box";
+        }
+    }
     return out;
 }
 
@@ -185,6 +223,58 @@ InvarianceReport check_invariance(const Implementation& impl, const PolyMesh& in
         check.transformation = t;
         out.checks.push_back(std::move(check));
     }
+    return out;
+}
+
+InvarianceShrink shrink_not_invariant(const Implementation& impl, const PolyMesh& input, const RefineRequest& request,
+                                      InputTransformation t, std::uint64_t seed, double tolerance, double timeout_seconds,
+                                      bool isolate) {
+    InvarianceShrink out;
+    const auto shows = [&](const PolyMesh& mesh, InvarianceCheck* check) {
+        ++out.tests;
+        const InvarianceReport r = check_invariance(impl, mesh, request, {t}, seed, tolerance, timeout_seconds, isolate);
+        const bool bad = r.checks.size() == 1 && (r.checks[0].result == InvarianceResult::NotInvariant ||
+                                                  r.checks[0].result == InvarianceResult::Nondeterministic);
+        if (bad && check) *check = r.checks[0];
+        return bad;
+    };
+    if (!shows(input, &out.check))
+        throw InputError(impl.name() + " is " + std::string(to_string(out.check.result)) + " under " + to_string(t) +
+                         " on this input: nothing to shrink");
+    std::vector<int> faces(static_cast<size_t>(input.num_faces()));
+    for (size_t f = 0; f < faces.size(); ++f) faces[f] = static_cast<int>(f);
+    // ddmin: try each of n chunks alone, then each complement; on success restart coarser.
+    size_t n = 2;
+    while (faces.size() >= 2) {
+        const size_t chunk = (faces.size() + n - 1) / n;
+        bool reduced = false;
+        for (size_t i = 0; i < n && !reduced; ++i) {
+            const size_t lo = std::min(faces.size(), i * chunk), hi = std::min(faces.size(), lo + chunk);
+            if (lo == hi) continue;
+            const std::vector<int> part(faces.begin() + static_cast<std::ptrdiff_t>(lo), faces.begin() + static_cast<std::ptrdiff_t>(hi));
+            std::vector<int> rest(faces.begin(), faces.begin() + static_cast<std::ptrdiff_t>(lo));
+            rest.insert(rest.end(), faces.begin() + static_cast<std::ptrdiff_t>(hi), faces.end());
+            InvarianceCheck check;
+            if (shows(submesh(input, part), &check)) {
+                faces = part;
+                out.check = check;
+                n = 2;
+                reduced = true;
+            } else if (n > 2 && shows(submesh(input, rest), &check)) {
+                faces = rest;
+                out.check = check;
+                n = std::max<size_t>(n - 1, 2);
+                reduced = true;
+            }
+        }
+        if (!reduced) {
+            if (n >= faces.size()) break;
+            n = std::min(faces.size(), 2 * n);
+        }
+    }
+    // Nothing removed: the input itself (submesh drops vertices no face uses, which the
+    // symptom may need: an isolated vertex).
+    out.minimal = faces.size() == static_cast<size_t>(input.num_faces()) ? input : submesh(input, faces);
     return out;
 }
 

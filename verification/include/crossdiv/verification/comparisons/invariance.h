@@ -49,6 +49,9 @@ struct InvarianceCheck {
     bool faces_equal = false;    ///< the same faces, as oriented faces up to rotation
     bool bit_identical = false;  ///< faces equal and every matched position equal bit for bit
     double max_rel = NAN;        ///< largest matched distance over the diagonal
+    /// With texture coordinates on both sides: the largest corner difference over the UV box
+    /// (bit for bit expected where the transformation is exact; no map moves them).
+    double uv_max_rel = NAN;
     /// The worst vertex, in the numbering of the refinement of the untransformed input.
     int worst_vertex = -1;
     int worst_valence = 0;
@@ -76,5 +79,20 @@ struct InvarianceReport {
 InvarianceReport check_invariance(const Implementation& impl, const PolyMesh& input, const RefineRequest& request,
                                   const std::vector<InputTransformation>& transformations, std::uint64_t seed,
                                   double tolerance, double timeout_seconds, bool isolate = true);
+
+/// A non-invariant input shrunk: the fewest faces found by delta debugging over faces (ddmin:
+/// Zeller and Hildebrandt 2002, as comparisons/shrink.h) on which the implementation is still
+/// not invariant (nondeterministic, for repeat) under the same transformation.
+struct InvarianceShrink {
+    PolyMesh minimal;
+    int tests = 0;  ///< invariance checks run while shrinking
+    InvarianceCheck check;  ///< the check on the minimal input
+};
+
+/// Shrinks `input`, on which `impl` is not invariant under `t` (check_invariance's arguments).
+/// @throws InputError when the check on `input` itself shows nothing to shrink.
+InvarianceShrink shrink_not_invariant(const Implementation& impl, const PolyMesh& input, const RefineRequest& request,
+                                      InputTransformation t, std::uint64_t seed, double tolerance, double timeout_seconds,
+                                      bool isolate = true);
 
 }  // namespace crossdiv::verification
