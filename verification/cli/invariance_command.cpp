@@ -107,6 +107,7 @@ int run_invariance(const InvarianceOptions& o, const Implementation* subject) {
                     const std::string reproduce =
                         "crossdiv invariance " + file + " --scheme " + o.scheme.scheme + " --levels " + std::to_string(o.scheme.levels) +
                         (subject ? " --subject-name " + impl->name() + " --subject '...'" : " --impl " + impl->name()) +
+                        (request.face_varying ? " --fvar " + std::string(to_string(*request.face_varying)) : std::string()) +
                         " --transform " + to_string(finding->transformation) + " --seed " + std::to_string(o.seed);
                     fmt::print("  {:<17} minimal input: {} faces ({} checks): {}\n  {:<17} reproduce: {}\n", impl->name(),
                                s.minimal.num_faces(), s.tests, s.check.explanation, "", reproduce);

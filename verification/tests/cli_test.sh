@@ -294,12 +294,13 @@ expect limit-cc-nonquad 2 'needs quads \(refine one level first\)' -- "$crossdiv
 expect limit-cc 0 'against opensubdiv: agree' -- "$crossdiv" limit bundled:prism-5 --scheme catmull-clark --levels 1 --against opensubdiv
 # Invariance: core under every transformation; OpenMesh's Loop, whose isolated vertex does not
 # move with a translated input; a subject program; bad names.
-expect invariance-core 0 '^24 of 24 checks invariant, 0 not invariant' -- "$crossdiv" invariance bundled:icosahedron bundled:open-patch --levels 2 --impl core
+expect invariance-core 0 '^26 of 26 checks invariant, 0 not invariant' -- "$crossdiv" invariance bundled:icosahedron bundled:open-patch --levels 2 --impl core
 expect invariance-openmesh 1 'openmesh +translate +not-invariant .*\(worst: vertex 4, valence 0' -- "$crossdiv" invariance edgecase:isolated-vertex --levels 2 --impl openmesh --out "$tmp/inv-out"
 expect invariance-shrunk 1 'cgal +minimal input: 2 faces \([0-9]+ checks\)' -- "$crossdiv" invariance edgecase:bowtie-5 --levels 2 --impl cgal --transform reverse-faces --out "$tmp/inv-out"
 expect invariance-reproduce-line 1 'reproduce: crossdiv invariance .*bowtie-5-cgal-reverse-faces.obj --scheme loop --levels 2 --impl cgal --transform reverse-faces' -- "$crossdiv" invariance edgecase:bowtie-5 --levels 2 --impl cgal --transform reverse-faces --out "$tmp/inv-out"
 expect invariance-reproduced 1 'cgal +reverse-faces +not-invariant' -- "$crossdiv" invariance "$tmp/inv-out/edgecase-bowtie-5-cgal-reverse-faces.obj" --levels 2 --impl cgal --transform reverse-faces --out "$tmp/inv-out2"
 expect invariance-subject 0 'mine +rotate-corners +invariant' -- "$crossdiv" invariance bundled:quad-cube --scheme catmull-clark --levels 1 --transform rotate-corners,scale --subject-name mine --subject "$crossdiv subdivide {in} --scheme catmull-clark --levels {levels} -o {out}"
+expect invariance-uv 1 'reproduce: crossdiv invariance .*uv-bowtie-opensubdiv-rotate-faces.obj --scheme catmull-clark --levels 2 --impl opensubdiv --fvar none --transform rotate-faces' -- "$crossdiv" invariance edgecase:uv-bowtie --scheme catmull-clark --fvar none --levels 2 --impl opensubdiv --transform rotate-faces --out "$tmp/inv-out"
 expect invariance-json 0 '"transformation": "mirror"' -- bash -c "\"$crossdiv\" invariance bundled:octahedron --levels 1 --impl core --transform mirror --json \"$tmp/inv.json\" >/dev/null && cat \"$tmp/inv.json\""
 expect invariance-unknown 2 "unknown transformation 'spin' \(known: rotate-corners" -- "$crossdiv" invariance bundled:octahedron --transform spin
 expect invariance-impl-and-subject 2 '\-\-impl and \-\-subject exclude each other' -- "$crossdiv" invariance bundled:octahedron --impl core --subject "x {in} {out}"

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 
+#include "library_guard.h"
+
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/datasets/edge_cases.h"
 #include "crossdiv/error.h"
@@ -55,6 +57,8 @@ TEST(InputTransformation, EachOneByHand) {
     EXPECT_EQ(face(rev.mesh, 0), (std::vector<int>{1, 4, 2}));
     EXPECT_EQ(rev.mesh.creases.holes, (std::vector<int>{1}));
     EXPECT_EQ(rev.mesh.face_varying[0].corner_values, (std::vector<int>{4, 5, 6, 0, 1, 2, 3}));
+    // Rotated by half: of two faces, the second first (as reversed, here).
+    EXPECT_EQ(face(transform_input(m, InputTransformation::RotateFaces, 1).mesh, 0), (std::vector<int>{1, 4, 2}));
     // Orientation: the first corner stays, the rest in the other order.
     const TransformedInput ori = transform_input(m, InputTransformation::ReverseOrientation, 1);
     EXPECT_EQ(face(ori.mesh, 0), (std::vector<int>{0, 3, 2, 1}));
@@ -84,7 +88,7 @@ TEST(InputTransformation, EachOneByHand) {
     EXPECT_TRUE(transform_input(m, InputTransformation::Mirror, 1).exact);
     // Names.
     for (InputTransformation t : kInputTransformations) EXPECT_EQ(input_transformation_from_string(to_string(t)), t);
-    EXPECT_THROW(input_transformation_from_string("rotate-faces"), InputError);
+    EXPECT_THROW(input_transformation_from_string("spin-faces"), InputError);
 }
 
 /// Each transformation's check of `impl` on `mesh`.
@@ -136,6 +140,20 @@ TEST(Invariance, TextureCoordinatesAreCheckedToo) {
     EXPECT_EQ(r.checks[0].result, InvarianceResult::NotInvariant) << r.checks[0].explanation;
     EXPECT_EQ(r.checks[0].max_rel, r.checks[0].max_rel);  // the positions were compared
     EXPECT_NE(r.checks[0].explanation.find("texture coordinates"), std::string::npos) << r.checks[0].explanation;
+}
+
+TEST(Invariance, FarsUvBowtieDependsOnTheFaceListRotatedByHalf) {
+    CROSSDIV_REQUIRE_LIBRARIES("opensubdiv");
+    // The comparison's face-order-dependence, found with no reference: under `none`, Far splits
+    // one of the bowtie's two values, which one depending on the face that comes first.
+    RefineRequest request{Scheme::CatmullClark, {}, 2, FaceVaryingRule::None};
+    const InvarianceReport r = check_invariance(find_implementation("opensubdiv"), datasets::edge_case("uv-bowtie").mesh, request,
+                                                {InputTransformation::RotateFaces, InputTransformation::ReverseFaces}, 1, 1e-12, 60, false);
+    ASSERT_EQ(r.checks.size(), 2u);
+    EXPECT_EQ(r.checks[0].result, InvarianceResult::NotInvariant) << r.checks[0].explanation;
+    EXPECT_GT(r.checks[0].uv_max_rel, 0.01) << r.checks[0].explanation;
+    EXPECT_LE(r.checks[0].max_rel, 1e-12);  // its positions do not move
+    EXPECT_EQ(r.checks[1].result, InvarianceResult::Invariant) << r.checks[1].explanation;  // reversed: the same values
 }
 
 /// Core's refinement, with the vertex point of every interior extraordinary vertex (valence

@@ -15,6 +15,7 @@ constexpr std::pair<InputTransformation, const char*> kNames[] = {
     {InputTransformation::RotateCorners, "rotate-corners"},
     {InputTransformation::RotateCornersRandom, "rotate-corners-random"},
     {InputTransformation::ReverseFaces, "reverse-faces"},
+    {InputTransformation::RotateFaces, "rotate-faces"},
     {InputTransformation::ShuffleFaces, "shuffle-faces"},
     {InputTransformation::RelabelVertices, "relabel-vertices"},
     {InputTransformation::ReverseOrientation, "reverse-orientation"},
@@ -144,6 +145,13 @@ TransformedInput transform_input(const PolyMesh& mesh, InputTransformation t, st
         case InputTransformation::ReverseFaces: {
             std::vector<int> order(static_cast<size_t>(mesh.num_faces()));
             for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(order.size() - 1 - i);
+            out.mesh = with_face_order(mesh, order);
+            break;
+        }
+        case InputTransformation::RotateFaces: {
+            const size_t n = static_cast<size_t>(mesh.num_faces());
+            std::vector<int> order(n);
+            for (size_t i = 0; i < n; ++i) order[i] = static_cast<int>((i + n / 2) % n);
             out.mesh = with_face_order(mesh, order);
             break;
         }

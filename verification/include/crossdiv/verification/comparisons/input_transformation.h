@@ -8,6 +8,9 @@
 ///                         faces (matched through the vertex correspondence)
 ///   rotate-corners-random every face starts at a corner drawn from the seed
 ///   reverse-faces         the faces listed last to first
+///   rotate-faces          the face list rotated by half (the second half first): where a
+///                         library reads something off the first face around a vertex, an
+///                         order other than the reversed one
 ///   shuffle-faces         the faces in an order drawn from the seed
 ///   relabel-vertices      the vertices renumbered by a permutation drawn from the seed
 ///   reverse-orientation   every face's corners in the other order: the same points, every
@@ -41,6 +44,7 @@ enum class InputTransformation {
     RotateCorners,
     RotateCornersRandom,
     ReverseFaces,
+    RotateFaces,
     ShuffleFaces,
     RelabelVertices,
     ReverseOrientation,
@@ -53,11 +57,12 @@ enum class InputTransformation {
 };
 inline constexpr std::array kInputTransformations{
     InputTransformation::RotateCorners,    InputTransformation::RotateCornersRandom, InputTransformation::ReverseFaces,
-    InputTransformation::ShuffleFaces,     InputTransformation::RelabelVertices,     InputTransformation::ReverseOrientation,
+    InputTransformation::RotateFaces,      InputTransformation::ShuffleFaces,        InputTransformation::RelabelVertices,
+    InputTransformation::ReverseOrientation,
     InputTransformation::Translate,        InputTransformation::Scale,               InputTransformation::SwapAxes,
     InputTransformation::Mirror,           InputTransformation::Rotate,              InputTransformation::Repeat};
 
-/// "rotate-corners", "rotate-corners-random", ... (the names above).
+/// "rotate-corners", "rotate-corners-random", "reverse-faces", "rotate-faces", ... (the names above).
 const char* to_string(InputTransformation t);
 /// @throws InputError naming the known names.
 InputTransformation input_transformation_from_string(std::string_view name);
