@@ -138,7 +138,7 @@ TEST(Invariance, TextureCoordinatesAreCheckedToo) {
     const InvarianceReport r = check_invariance(*shifty, mesh, request, {InputTransformation::RotateCorners}, 1, 1e-12, 60, false);
     ASSERT_EQ(r.checks.size(), 1u);
     EXPECT_EQ(r.checks[0].result, InvarianceResult::NotInvariant) << r.checks[0].explanation;
-    EXPECT_EQ(r.checks[0].max_rel, r.checks[0].max_rel);  // the positions were compared
+    EXPECT_LE(r.checks[0].max_rel, 1e-12);  // the positions agree: the texture coordinates alone show it
     EXPECT_NE(r.checks[0].explanation.find("texture coordinates"), std::string::npos) << r.checks[0].explanation;
 }
 
@@ -249,7 +249,7 @@ TEST(Invariance, ANondeterministicSubjectIsNamedSo) {
                                                 {InputTransformation::Repeat}, 1, 1e-12, 60, false);
     ASSERT_EQ(r.checks.size(), 1u);
     EXPECT_EQ(r.checks[0].result, InvarianceResult::Nondeterministic) << r.checks[0].explanation;
-    EXPECT_EQ(r.checks[0].worst_vertex, 0);
+    EXPECT_NE(r.checks[0].explanation.find("vertex 0"), std::string::npos) << r.checks[0].explanation;
 }
 
 }  // namespace

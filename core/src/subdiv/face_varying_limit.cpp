@@ -1,10 +1,10 @@
 #include "crossdiv/subdiv/face_varying_limit.h"
 
 #include <cmath>
-#include <numbers>
 #include <string>
 
 #include "crossdiv/error.h"
+#include "crossdiv/subdiv/limit.h"
 #include "face_varying_topology.h"
 
 namespace crossdiv {
@@ -42,12 +42,11 @@ SmoothWeights catmull_clark_limit_weights(int n) {
     const double face = 1.0 / (n * (n + 5.0)), edge = 4.0 * face;
     return {1.0 - n * (edge + face), edge, face};
 }
-/// Sdc's Loop smooth limit weights at valence n (Loop's beta): (vertex, edge).
+/// Loop's smooth limit weights at valence n (limit.h's ring weight, Sdc's; the regular case
+/// as Sdc spells it): (vertex, edge).
 SmoothWeights loop_limit_weights(int n) {
     if (n == 6) return {0.5, 1.0 / 12.0, 0.0};
-    const double beta = 0.25 * std::cos(2.0 * std::numbers::pi / n) + 0.375;
-    const double gamma = (0.625 - beta * beta) / n;
-    const double edge = 1.0 / (n + 3.0 / (8.0 * gamma));
+    const double edge = loop_limit_ring_weight(LoopWeights::Loop, n);
     return {1.0 - edge * n, edge, 0.0};
 }
 

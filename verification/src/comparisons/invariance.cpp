@@ -3,11 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
 #include <optional>
 
 #include "crossdiv/error.h"
+#include "crossdiv/verification/comparisons/nondeterminism.h"
 #include "crossdiv/verification/comparisons/shrink.h"
 #include "crossdiv/verification/harness/corner_values.h"
 #include "crossdiv/verification/harness/correspondence.h"
@@ -29,49 +28,6 @@ bool has_coincident_vertices(const PolyMesh& mesh) {
     for (const Vec3& x : mesh.positions) p.push_back({x.x(), x.y(), x.z()});
     std::sort(p.begin(), p.end());
     return std::adjacent_find(p.begin(), p.end()) != p.end();
-}
-
-/// The same input run twice: the same bytes, vertex for vertex and face for face, or
-/// nondeterministic with the largest move of a vertex (by index).
-InvarianceCheck compare_repeat(const PolyMesh& a, const PolyMesh& b) {
-    InvarianceCheck out;
-    out.transformation = InputTransformation::Repeat;
-    out.exact = true;
-    out.faces_equal = a.face_start == b.face_start && a.face_vertices == b.face_vertices;
-    const bool same_count = a.positions.size() == b.positions.size();
-    out.max_rel = same_count ? max_relative_distance(a, b, identity_map(a.positions.size())) : INFINITY;
-    out.bit_identical = out.faces_equal && same_count && a.positions == b.positions;
-    if (!a.face_varying.empty() || !b.face_varying.empty()) {
-        // Texture coordinates: the same values at the same indices.
-        const bool same_uv = a.face_varying.size() == b.face_varying.size() && !a.face_varying.empty() &&
-                             a.face_varying[0].corner_values == b.face_varying[0].corner_values &&
-                             a.face_varying[0].values == b.face_varying[0].values;
-        out.uv_max_rel = same_uv ? 0.0 : INFINITY;
-        out.bit_identical = out.bit_identical && same_uv;
-    }
-    if (out.bit_identical) {
-        out.result = InvarianceResult::Invariant;
-        out.explanation = "identical bytes";
-        return out;
-    }
-    out.result = InvarianceResult::Nondeterministic;
-    // The first vertex whose bytes differ (a NaN differs from itself: compared by bits).
-    for (size_t v = 0; same_count && v < a.positions.size() && out.worst_vertex < 0; ++v)
-        if (std::memcmp(a.positions[v].data(), b.positions[v].data(), sizeof(double) * 3) != 0) out.worst_vertex = static_cast<int>(v);
-    const auto text = [](const Vec3& p) {
-        char buf[96];
-        std::snprintf(buf, sizeof buf, "(%.17g, %.17g, %.17g)", p.x(), p.y(), p.z());
-        return std::string(buf);
-    };
-    out.explanation = "the same input run again (its heap filled otherwise) gives " +
-                      (!same_count ? std::to_string(b.positions.size()) + " vertices, not " + std::to_string(a.positions.size())
-                       : out.worst_vertex < 0
-                           ? std::string(out.faces_equal ? "other texture coordinates" : "other faces")
-                           : "vertex " + std::to_string(out.worst_vertex) + " at " +
-                                 text(b.positions[static_cast<size_t>(out.worst_vertex)]) + ", not " +
-                                 text(a.positions[static_cast<size_t>(out.worst_vertex)]) + " (largest move " +
-                                 sci(out.max_rel) + " of the diagonal)");
-    return out;
 }
 
 }  // namespace
@@ -207,16 +163,28 @@ InvarianceReport check_invariance(const Implementation& impl, const PolyMesh& in
         // never wrote changes with it.
         const IsolatedTrace second = refine_isolated(impl, transformed.mesh, request, timeout_seconds, isolate,
                                                      t == InputTransformation::Repeat ? kSecondHeapFill : kHeapFill);
+        if (t == InputTransformation::Repeat) {
+            // Every level, bit for bit, as the comparisons' determinism reruns read it.
+            check.exact = true;
+            if (const std::optional<std::string> diff = first_difference(first, second)) {
+                check.result = InvarianceResult::Nondeterministic;
+                check.explanation = "the same input run again (its heap filled otherwise): " + *diff;
+            } else {
+                check.result = InvarianceResult::Invariant;
+                check.faces_equal = check.bit_identical = true;
+                check.max_rel = 0;
+                if (!first.trace->back().face_varying.empty()) check.uv_max_rel = 0;
+                check.explanation = "identical bytes";
+            }
+            out.checks.push_back(std::move(check));
+            continue;
+        }
         if (second.outcome.status != RunStatus::Ok || !second.trace) {
             // Refusing the input written otherwise, or crashing on it, is a dependence on how
             // it is written too.
             check.result = InvarianceResult::NotInvariant;
             check.explanation = "the run on the transformed input: " + second.outcome.summary();
             out.checks.push_back(std::move(check));
-            continue;
-        }
-        if (t == InputTransformation::Repeat) {
-            out.checks.push_back(compare_repeat(first.trace->back(), second.trace->back()));
             continue;
         }
         check = measure_invariance(first.trace->back(), second.trace->back(), transformed, tolerance);
