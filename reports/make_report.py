@@ -13,6 +13,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 from report import roster, sections, viewer  # noqa: E402
+from report.invariance import invariance_cases, invariance_section  # noqa: E402
 from report.model import render_html, render_markdown  # noqa: E402
 from report.records import halfedge_cases, split_cases  # noqa: E402
 from report.records import SCHEMA_VERSION, fmt  # noqa: E402
@@ -48,9 +49,11 @@ def build(results, bench, folder, figdir):
     body = [viewer.first_screen(results["cases"], mesh + schemes, [r["name"] for r in results.get("references", [])], folder), sections.outcomes_section(s),
             *([roster_table] if roster_table else []), *([subject] if subject else []), *before,
             sections.catalogue_section(sections.catalogue_rows(mesh + schemes, curves + surfaces + studies +
-                                                              halfedge_cases(results["cases"]))), *after,
+                                                              halfedge_cases(results["cases"]) +
+                                                              invariance_cases(results))), *after,
             sections.curve_section(curves, bench, figdir), sections.surface_section(surfaces, bench, figdir),
-            sections.schemes_section(schemes), sections.halfedge_section(halfedge_cases(results["cases"])),
+            sections.schemes_section(schemes), invariance_section(invariance_cases(results)),
+            sections.halfedge_section(halfedge_cases(results["cases"])),
             sections.studies_section(studies, figdir), sections.timing_section(bench, figdir)]
     return f"crossdiv conformance report: suite {results.get('suite')}", intro, [b for b in body if b is not None]
 

@@ -19,6 +19,7 @@ CATEGORIES = [
     ("ref-unavailable", "#cfd8dc"),
     ("ours-rejected", "#42a5f5"),
     ("ours-failed", "#8e24aa"),
+    ("not-compared", "#e0e0e0"),
     ("not run", "#ffffff"),
 ]
 

@@ -72,7 +72,15 @@ def _kind(case, run):
 
 
 def _row_name(case):
+    if case.get("operation") == "invariance":
+        return f"invariance ({case.get('scheme', '?')})"
     return case.get("scheme") or case.get("operation") or "?"
+
+
+def _library_of(case, run):
+    """The library a run speaks of: its reference, or in an invariance case the implementation
+    checked against itself."""
+    return run.get("subject") if case.get("operation") == "invariance" else run["reference"]
 
 
 def matrix_table(cases, libraries):
@@ -82,7 +90,7 @@ def matrix_table(cases, libraries):
     counts = defaultdict(Counter)
     for c in cases:
         for r in c.get("runs", []):
-            column = r["reference"] if r["reference"] in libraries else own
+            column = _library_of(c, r) if _library_of(c, r) in libraries else own
             counts[_row_name(c)][(column, _kind(c, r))] += 1
         if not c.get("runs"):
             counts[_row_name(c)][(own, _kind(c, None))] += 1
@@ -181,7 +189,7 @@ def first_screen(cases, mesh_cases, libraries, folder):
         Text("Runs per scheme (or study) and reference: agree / classified (a measured difference with a named "
              "cause, or a reference's own failure) / failure (ours failed, or a divergence no test explains)."),
         matrix_table(cases, libraries))
-    failures = [(case_link(c), r["reference"], outcome(c, r), r.get("explanation", "")) for c in cases
+    failures = [(case_link(c), _library_of(c, r), outcome(c, r), r.get("explanation", "")) for c in cases
                 for r in c.get("runs", []) if _kind(c, r) == "failure"]
     failures += [(case_link(c), "core", outcome(c), c.get("core_error", "")) for c in cases
                  if not c.get("runs") and _kind(c, None) == "failure"]
@@ -190,7 +198,7 @@ def first_screen(cases, mesh_cases, libraries, folder):
         s.add(Table(["case", "reference", "outcome", "explanation"], failures))
     representatives, counts = {}, Counter()
     for c in cases:
-        runs = [(outcome(c, r), r["reference"]) for r in c.get("runs", []) if _kind(c, r) == "classified"]
+        runs = [(outcome(c, r), _library_of(c, r)) for r in c.get("runs", []) if _kind(c, r) == "classified"]
         if not c.get("runs") and _kind(c, None) == "classified":
             runs = [(outcome(c), "core")]
         for key in runs:

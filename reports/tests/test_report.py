@@ -425,3 +425,46 @@ def test_a_view_file_reads_back_and_names_the_first_level_where_surfaces_part(tm
     (tmp_path / "views" / "bad.js").write_text("alert(1);")
     with pytest.raises(ValueError, match="not a crossdiv view file"):
         read_view(str(tmp_path), "views/bad.js")
+
+
+def test_invariance_gets_its_table_and_a_representative_per_finding(tmp_path):
+    results = results_fixture()
+    results["operations"].append({"name": "invariance", "kind": "invariance"})
+
+    def run(impl, transformation, verdict, cls="", bit_identical=True, measured=0.0):
+        outcome = verdict if not cls else f"{verdict} ({cls})"
+        return {"reference": "the input as written", "subject": impl, "check": transformation, "measured": measured,
+                "tolerance": 1e-12, "unit": "rel", "verdict": verdict, "divergence_class": cls, "outcome": outcome,
+                "bit_identical": bit_identical, "explanation": f"{impl} {transformation}"}
+
+    minimal = {"mesh": "invariance/job5-cgal-reverse-faces.obj", "faces": 2, "tests": 3,
+               "transformation": "reverse-faces", "explanation": "0.155 of the diagonal",
+               "reproduce": "crossdiv invariance invariance/job5-cgal-reverse-faces.obj --scheme loop --levels 2 "
+                            "--impl cgal --transform reverse-faces --seed 1"}
+    case = {"input": "edgecase:bowtie", "operation": "invariance", "job": 5, "scheme": "loop", "input_faces": 2,
+            "id": "edgecase:bowtie | invariance loop", "transformations": ["reverse-faces", "relabel-vertices"],
+            "implementations": [{"name": "core", "under_test": True, "invariant": True},
+                                {"name": "cgal", "under_test": False, "invariant": False, "minimal": minimal}],
+            "runs": [run("core", "reverse-faces", "agree", bit_identical=False, measured=1e-17),
+                     run("core", "relabel-vertices", "agree"),
+                     run("cgal", "reverse-faces", "diverge", "non-manifold-handling", False, 0.155),
+                     run("cgal", "relabel-vertices", "not-compared")]}
+    results["cases"].append(case)
+    (tmp_path / "results.json").write_text(json.dumps(results))
+    make_report.main(str(tmp_path))
+    md = (tmp_path / "report.md").read_text()
+    assert "## Invariance" in md
+    [table] = [t for t in tables_of(md) if [h.strip() for h in t[0]][:3] == ["scheme", "implementation", "reverse-faces"]]
+    rows = {row[1].strip(): [c.strip() for c in row] for row in table[2:]}
+    # Invariant of compared, how many only within the tolerance (weak tier, not strict), findings by class.
+    assert rows["core"][2:] == ["1 of 1 (1 not bit for bit)", "1 of 1"]
+    assert rows["cgal"][2:] == ["0 of 1; 1 diverge (non-manifold-handling)", "0 of 0 (+1 n/c)"]
+    [reps] = [t for t in tables_of(md) if [h.strip() for h in t[0]][:3] == ["scheme", "implementation", "transformation"]]
+    [rep] = reps[2:]
+    assert [c.strip() for c in rep][:8] == ["loop", "cgal", "reverse-faces", "diverge (non-manifold-handling)", "1",
+                                           "edgecase:bowtie", "0.155", "2 faces"]
+    assert "--transform reverse-faces" in rep[8]
+    html = (tmp_path / "index.html").read_text()
+    assert "href='invariance/job5-cgal-reverse-faces.obj'" in html
+    # The catalogue lists the finding among the runs that are not agreement.
+    assert "cgal reverse-faces" in html

@@ -15,16 +15,13 @@
 #include "crossdiv/verification/implementations/inputs.h"
 #include "crossdiv/verification/implementations/output_size.h"
 #include "crossdiv/verification/implementations/registry.h"
+#include "crossdiv/verification/suite/invariance_case.h"
 
 namespace crossdiv::cli {
 
 using namespace crossdiv::verification;
 
 namespace {
-
-/// Inputs up to this many faces are shrunk (as the suite's views are: tens of checks of
-/// milliseconds each).
-constexpr int kShrinkMaxFaces = 500;
 
 /// A file name's stem for an input spec: "bundled:torus" -> "bundled-torus", "a/b.obj" -> "b".
 std::string file_stem(const std::string& spec) {
@@ -80,7 +77,16 @@ int run_invariance(const InvarianceOptions& o, const Implementation* subject) {
                 if (r.outcome.status == RunStatus::Ok)
                     fmt::print("  {:<17} {:<22} {:<16} {}\n", impl->name(), to_string(c.transformation), to_string(c.result),
                                c.explanation);
+                nlohmann::json cause = nullptr;
+                if (c.result == InvarianceResult::NotInvariant || c.result == InvarianceResult::Nondeterministic) {
+                    // What the finding measures to be (a reference's class in the suite).
+                    const InvarianceCause why =
+                        explain_not_invariant(*impl, mesh, request, c, o.seed, o.tolerance, o.timeout, o.isolate);
+                    fmt::print("  {:<17} {:<22} cause: {}: {}\n", "", "", to_string(why.cls), why.why);
+                    cause = {{"class", to_string(why.cls)}, {"why", why.why}};
+                }
                 rows.push_back({{"transformation", to_string(c.transformation)},
+                                {"cause", cause},
                                 {"result", to_string(c.result)},
                                 {"exact", c.exact},
                                 {"bit_identical", c.bit_identical},
@@ -92,30 +98,12 @@ int run_invariance(const InvarianceOptions& o, const Implementation* subject) {
                                 {"explanation", c.explanation}});
             }
             // The first finding shrunk, where the input is small enough for delta debugging to be quick.
-            const auto finding = std::find_if(r.checks.begin(), r.checks.end(), [](const InvarianceCheck& c) {
-                return c.result == InvarianceResult::NotInvariant || c.result == InvarianceResult::Nondeterministic;
-            });
-            if (finding != r.checks.end() && mesh.num_faces() <= kShrinkMaxFaces) {
-                try {
-                    const InvarianceShrink s = shrink_not_invariant(*impl, mesh, request, finding->transformation, o.seed,
-                                                                    o.tolerance, o.timeout, o.isolate);
-                    create_output_folder(o.out);
-                    const std::string file = (std::filesystem::path(o.out) / (file_stem(in) + "-" + impl->name() + "-" +
-                                                                               to_string(finding->transformation) + ".obj"))
-                                                 .string();
-                    write_mesh(file, s.minimal);
-                    const std::string reproduce =
-                        "crossdiv invariance " + file + " --scheme " + o.scheme.scheme + " --levels " + std::to_string(o.scheme.levels) +
-                        (subject ? " --subject-name " + impl->name() + " --subject '...'" : " --impl " + impl->name()) +
-                        (request.face_varying ? " --fvar " + std::string(to_string(*request.face_varying)) : std::string()) +
-                        " --transform " + to_string(finding->transformation) + " --seed " + std::to_string(o.seed);
-                    fmt::print("  {:<17} minimal input: {} faces ({} checks): {}\n  {:<17} reproduce: {}\n", impl->name(),
-                               s.minimal.num_faces(), s.tests, s.check.explanation, "", reproduce);
-                    minimal = {{"mesh", file}, {"faces", s.minimal.num_faces()}, {"tests", s.tests},
-                               {"transformation", to_string(finding->transformation)}, {"reproduce", reproduce}};
-                } catch (const InputError& e) {
-                    fmt::print("  {:<17} not shrunk: {}\n", impl->name(), e.what());
-                }
+            if (const std::optional<InvarianceMinimal> m = shrink_first_finding(
+                    *impl, subject != nullptr, mesh, request, r, o.seed, o.tolerance, o.timeout, o.isolate, o.out, file_stem(in))) {
+                fmt::print("  {:<17} minimal input: {} faces ({} checks): {}\n  {:<17} reproduce: {}\n", impl->name(), m->faces,
+                           m->tests, m->explanation, "", m->reproduce);
+                minimal = {{"mesh", m->mesh}, {"faces", m->faces}, {"tests", m->tests},
+                           {"transformation", to_string(m->transformation)}, {"reproduce", m->reproduce}};
             }
             results.push_back({{"input", in},
                                {"minimal", minimal},

@@ -159,7 +159,7 @@ TEST(Manifest, BadReferenceAndSubjectStatementsNameTheLine) {
     EXPECT_NE(error("reference w command='a {out}\n").find(":2: unclosed '"), std::string::npos);
     EXPECT_NE(error("reference opensubdiv command='a {out}'\n").find(":2: a reference named 'opensubdiv' exists already"),
               std::string::npos);
-    EXPECT_NE(error("subject s command='a {out}'\ncase catalog spectrum\n").find(":3: a subject is compared in the scheme comparisons and the course tasks only"),
+    EXPECT_NE(error("subject s command='a {out}'\ncase catalog spectrum\n").find(":3: a subject is compared in the scheme comparisons, the invariance checks and the course tasks only"),
               std::string::npos);
     // A subject named as core or a reference would be taken for it.
     EXPECT_NE(error("subject core command='a {in} {out}'\n").find(":2: a subject cannot be named 'core'"), std::string::npos);

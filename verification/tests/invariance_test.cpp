@@ -17,6 +17,14 @@
 #include "crossdiv/verification/comparisons/invariance.h"
 #include "crossdiv/verification/implementations/callback_implementation.h"
 #include "crossdiv/verification/implementations/registry.h"
+#include "crossdiv/verification/harness/tolerances.h"
+#include "crossdiv/verification/suite/invariance_case.h"
+#include "crossdiv/verification/suite/manifest.h"
+#include "crossdiv/verification/suite/operations.h"
+
+#include <filesystem>
+#include <sstream>
+#include <unistd.h>
 
 namespace crossdiv::verification {
 namespace {
@@ -250,6 +258,178 @@ TEST(Invariance, ANondeterministicSubjectIsNamedSo) {
     ASSERT_EQ(r.checks.size(), 1u);
     EXPECT_EQ(r.checks[0].result, InvarianceResult::Nondeterministic) << r.checks[0].explanation;
     EXPECT_NE(r.checks[0].explanation.find("vertex 0"), std::string::npos) << r.checks[0].explanation;
+}
+
+TEST(Invariance, AFloatImplementationIsHeldToTwiceTheFloatTier) {
+    // Two runs in float part by up to twice one run's rounding: a vertex moved by one float ulp
+    // of the largest coordinate is within that bar, and outside the double one.
+    const PolyMesh refined = core_implementation().refine(datasets::bundled_mesh("icosahedron"), {Scheme::Loop, {}, 1}).back();
+    PolyMesh moved = refined;
+    float largest = 0;
+    for (const Vec3& p : refined.positions) largest = std::max(largest, static_cast<float>(p.cwiseAbs().maxCoeff()));
+    moved.positions[3].x() += static_cast<double>(std::nextafter(largest, INFINITY) - largest);
+    const TransformedInput same = transform_input(datasets::bundled_mesh("icosahedron"), InputTransformation::RotateCorners, 1);
+    EXPECT_EQ(measure_invariance(refined, moved, same, 1e-12).result, InvarianceResult::NotInvariant);
+    const double b = tolerances::kFloatAgreementUlps + 0.5 * (5 + 2) * 1;
+    const InvarianceCheck in_float = measure_invariance(refined, moved, same, 1e-12, b);
+    EXPECT_EQ(in_float.result, InvarianceResult::Invariant) << in_float.explanation;
+    EXPECT_FALSE(in_float.bit_identical);
+}
+
+/// A finding of `impl` on `mesh` under `t`, and what explains it.
+InvarianceCause cause_of(const Implementation& impl, const PolyMesh& mesh, const RefineRequest& request, InputTransformation t) {
+    const InvarianceReport r = check_invariance(impl, mesh, request, {t}, 1, 1e-12, 60, true);
+    EXPECT_EQ(r.checks.size(), 1u);
+    if (r.checks.empty()) return {};
+    EXPECT_NE(r.checks[0].result, InvarianceResult::Invariant) << impl.name() << " " << to_string(t);
+    return explain_not_invariant(impl, mesh, request, r.checks[0], 1, 1e-12, 60, true);
+}
+
+TEST(InvarianceCause, AReferencesFindingIsClassedByWhatRemovesIt) {
+    CROSSDIV_REQUIRE_LIBRARIES("openmesh", "cgal", "opensubdiv");
+    RefineRequest loop{Scheme::Loop, {}, 2};
+    loop.rule.loop = {LoopWeights::Loop, LoopBoundary::EdgeOnly};
+    struct Expected {
+        const char* impl;
+        const char* mesh;
+        RefineRequest request;
+        InputTransformation t;
+        DivergenceClass cls;
+        const char* why;
+    };
+    const std::vector<Expected> cases = {
+        // OpenMesh leaves an isolated vertex where memory had it: removed, the rest moves right.
+        {"openmesh", "isolated-vertex", loop, InputTransformation::Translate, DivergenceClass::IsolatedVertexHandling,
+         "invariant once its 1 vertices no face uses are removed"},
+        // Three fans at one vertex: which keep it is read off the face order. Split into its
+        // fans (not into single faces, which would make new bowties at the rims), invariant.
+        {"cgal", "bowtie-3", loop, InputTransformation::ReverseFaces, DivergenceClass::NonManifoldHandling,
+         "split into their fans"},
+        {"openmesh", "bowtie", loop, InputTransformation::ShuffleFaces, DivergenceClass::NonManifoldHandling, "fans"},
+        // Past Sqrt3T's 50 weights at a valence-64 pole.
+        {"openmesh", "pole-64", {Scheme::Sqrt3, {}, 2}, InputTransformation::Translate, DivergenceClass::ValenceLimit,
+         "valence 64"},
+        // CGAL's Doo-Sabin makes a 2-gon at a valence-2 vertex, whose orientation no rule fixes.
+        {"cgal", "valence-2", {Scheme::DooSabin, {}, 2}, InputTransformation::ReverseOrientation,
+         DivergenceClass::DegenerateFaceHandling, "degenerate face at level 1"},
+        // Far's UV bowtie under `none`: split into one value per fan, its values stay put.
+        {"opensubdiv", "uv-bowtie", {Scheme::CatmullClark, {}, 2, FaceVaryingRule::None}, InputTransformation::RotateFaces,
+         DivergenceClass::FaceOrderDependence, "bowtie values are split"},
+    };
+    for (const Expected& e : cases) {
+        const InvarianceCause c = cause_of(find_implementation(e.impl), datasets::edge_case(e.mesh).mesh, e.request, e.t);
+        EXPECT_EQ(c.cls, e.cls) << e.impl << " on " << e.mesh << ": " << c.why;
+        EXPECT_NE(c.why.find(e.why), std::string::npos) << c.why;
+    }
+}
+
+TEST(InvarianceCause, NothingNamedExplainsAPlantedCornerBug) {
+    const std::unique_ptr<Implementation> subject = corner_position_subject(Scheme::Loop, 6);
+    RefineRequest request{Scheme::Loop, {}, 1};
+    const InvarianceCause c = cause_of(*subject, datasets::bundled_mesh("icosahedron"), request, InputTransformation::RotateCorners);
+    EXPECT_EQ(c.cls, DivergenceClass::Unexplained) << c.why;
+}
+
+std::filesystem::path fresh_folder(const std::string& name) {
+    const std::filesystem::path d = std::filesystem::temp_directory_path() / ("crossdiv_invariance_" + name + "_" + std::to_string(getpid()));
+    std::filesystem::remove_all(d);
+    std::filesystem::create_directories(d);
+    return d;
+}
+
+Manifest manifest_of(const std::string& text) {
+    std::istringstream in(text);
+    return read_manifest(in, "t.suite", ".", ProgramStatements::CheckOnly);
+}
+
+TEST(InvarianceCase, TheManifestTakesTheSchemesKeysAndRefusesWhatHasNoMeaningHere) {
+    const Manifest m = manifest_of("suite t\ncase bundled:icosahedron,edgecase:bowtie invariance scheme=loop levels=2 "
+                                   "boundary=edge-and-corner impls=core transform=rotate-corners,repeat seed=7\n"
+                                   "case bundled:quad-cube invariance scheme=catmull-clark triangles=smooth fvar=none\n");
+    ASSERT_EQ(m.entries.size(), 2u);
+    const ManifestEntry& e = m.entries[0];
+    EXPECT_EQ(e.operation->kind, OperationKind::Invariance);
+    EXPECT_EQ(e.request.scheme, Scheme::Loop);
+    EXPECT_EQ(e.request.levels, 2);
+    EXPECT_EQ(e.request.rule.loop.boundary, LoopBoundary::EdgeAndCorner);
+    EXPECT_EQ(e.invariance.implementations, std::vector<std::string>{"core"});
+    EXPECT_EQ(e.invariance.transformations,
+              (std::vector<InputTransformation>{InputTransformation::RotateCorners, InputTransformation::Repeat}));
+    EXPECT_EQ(e.invariance.seed, 7u);
+    // Without impls=: core and every reference of the scheme.
+    EXPECT_EQ(m.entries[1].invariance.implementations.front(), "core");
+    EXPECT_EQ(m.entries[1].invariance.implementations.size(), 1 + references_for(Scheme::CatmullClark).size());
+    EXPECT_EQ(m.entries[1].rule_flags.triangles, "smooth");
+    const std::vector<SuiteJob> jobs = expand_jobs(m);
+    ASSERT_EQ(jobs.size(), 3u);
+    EXPECT_EQ(jobs[0].id, "bundled:icosahedron | invariance loop weights=loop boundary=edge-and-corner L2 tol=1e-12 impls=core "
+                          "transform=rotate-corners,repeat seed=7");
+    for (const char* bad : {"case bundled:all invariance levels=2",                       // no scheme
+                            "case bundled:all invariance scheme=loop against=cgal",        // a comparison's key
+                            "case bundled:all invariance scheme=loop tier=strict",
+                            "case bundled:all invariance scheme=loop transform=spin",      // no such transformation
+                            "case bundled:all invariance scheme=loop impls=nosuch",        // no such implementation
+                            "case bundled:all invariance scheme=doo-sabin impls=opensubdiv",  // not its scheme
+                            "case bundled:all invariance scheme=loop seed=-1",
+                            "case bundled:all invariance scheme=loop crease-method=chaikin"})  // not Loop's key
+        EXPECT_THROW(manifest_of(std::string("suite t\n") + bad + "\n"), ParseError) << bad;
+    EXPECT_THROW(manifest_of("suite t\nsubject s result=out/{input}.obj\ncase bundled:all invariance scheme=loop\n"),
+                 ParseError);
+}
+
+TEST(InvarianceCase, APlantedSubjectFailsWithItsMinimalInputAndCoreIsInvariant) {
+    const std::filesystem::path d = fresh_folder("case");
+    Manifest m = manifest_of("suite t\ncase bundled:icosahedron invariance scheme=loop levels=1 impls=core\n");
+    ASSERT_EQ(m.entries.size(), 1u);
+    const std::vector<SuiteJob> jobs = expand_jobs(m);
+    const CaseRecord core = run_invariance_case(jobs[0], d.string());
+    ASSERT_EQ(core.runs.size(), kInputTransformations.size());
+    for (const RunRecord& r : core.runs) {
+        EXPECT_EQ(r.subject, "core");
+        EXPECT_EQ(outcome_label(core, r), "agree") << r.check << ": " << r.explanation;
+    }
+    EXPECT_FALSE(core.detail["implementations"][0].contains("minimal"));
+
+    // The same case with a subject wrong only where an extraordinary vertex is corner 2.
+    auto subject = std::make_shared<ManifestSubject>();
+    subject->name = "corner-bug";
+    subject->program = corner_position_subject(Scheme::Loop, 6);
+    m.entries[0].subject = subject;
+    const CaseRecord planted = run_invariance_case(jobs[0], d.string());
+    const auto rot = std::find_if(planted.runs.begin(), planted.runs.end(), [](const RunRecord& r) { return r.check == "rotate-corners"; });
+    ASSERT_NE(rot, planted.runs.end());
+    EXPECT_EQ(rot->subject, "corner-bug");
+    EXPECT_EQ(outcome_label(planted, *rot), "diverge (unexplained)") << rot->explanation;
+    EXPECT_TRUE(is_failure(planted, *rot));
+    EXPECT_NE(rot->worst_valence, 6);
+    const nlohmann::json& minimal = planted.detail["implementations"][0]["minimal"];
+    EXPECT_EQ(minimal["faces"], 5);  // one valence-5 fan
+    EXPECT_EQ(minimal["transformation"], "rotate-corners");
+    EXPECT_TRUE(std::filesystem::exists(d / minimal["mesh"].get<std::string>()));
+    EXPECT_NE(minimal["reproduce"].get<std::string>().find("--transform rotate-corners --seed 1"), std::string::npos);
+    std::filesystem::remove_all(d);
+}
+
+TEST(InvarianceCase, CoresRefusalFailsUnlessDeclaredAndAReferencesFindingPassesClassed) {
+    CROSSDIV_REQUIRE_LIBRARIES("cgal");
+    const std::filesystem::path d = fresh_folder("refusal");
+    const Manifest m = manifest_of("suite t\ncase edgecase:bowtie-3 invariance scheme=sqrt3 levels=2 impls=core,cgal-one-call "
+                                   "transform=reverse-faces\n"
+                                   "case edgecase:bowtie-3 invariance scheme=sqrt3 levels=2 impls=core,cgal-one-call "
+                                   "transform=reverse-faces refuses=non-manifold-handling\n");
+    const std::vector<SuiteJob> jobs = expand_jobs(m);
+    ASSERT_EQ(jobs.size(), 2u);
+    for (size_t k = 0; k < 2; ++k) {
+        const CaseRecord c = run_invariance_case(jobs[k], d.string());
+        ASSERT_EQ(c.runs.size(), 2u);
+        EXPECT_EQ(c.runs[0].check, "input");
+        EXPECT_EQ(outcome_label(c, c.runs[0]), k == 0 ? "ours-rejected (unexplained)" : "ours-rejected (non-manifold-handling)");
+        EXPECT_EQ(is_failure(c, c.runs[0]), k == 0);
+        EXPECT_EQ(c.runs[1].subject, "cgal-one-call");
+        EXPECT_EQ(outcome_label(c, c.runs[1]), "diverge (non-manifold-handling)") << c.runs[1].explanation;
+        EXPECT_FALSE(is_failure(c, c.runs[1]));
+    }
+    std::filesystem::remove_all(d);
 }
 
 }  // namespace

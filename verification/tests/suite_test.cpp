@@ -423,7 +423,7 @@ TEST(Suite, AJobLineCountsFailuresAsTheSummaryDoes) {
     };
     c.runs = {run(Verdict::Agree, DivergenceClass::None, "a"), run(Verdict::Diverge, DivergenceClass::WingRule, "b"),
               run(Verdict::RefCrashed, DivergenceClass::None, "c")};
-    EXPECT_EQ(describe_record(c), "3 checks, 1 classified divergences, 1 ref-crashed");
+    EXPECT_EQ(describe_record(c), "3 checks, 1 classified divergences, 1 ref-crashed, no failure");
     c.runs.push_back(run(Verdict::Diverge, DivergenceClass::Unexplained, "d"));
     EXPECT_EQ(describe_record(c), "4 checks, 1 classified divergences, 1 ref-crashed, 1 FAILED: mesh/d");
     c.runs.resize(1);

@@ -11,7 +11,9 @@
 #include "crossdiv/verification/harness/corner_values.h"
 #include "crossdiv/verification/harness/correspondence.h"
 #include "crossdiv/verification/harness/tolerances.h"
+#include "crossdiv/mesh/mesh_checks.h"
 #include "crossdiv/mesh/tri_mesh.h"
+#include "crossdiv/subdiv/nonmanifold.h"
 #include "crossdiv/verification/harness/mesh_comparison.h"
 #include "harness/sci.h"
 
@@ -28,6 +30,149 @@ bool has_coincident_vertices(const PolyMesh& mesh) {
     for (const Vec3& x : mesh.positions) p.push_back({x.x(), x.y(), x.z()});
     std::sort(p.begin(), p.end());
     return std::adjacent_find(p.begin(), p.end()) != p.end();
+}
+
+/// Each vertex's face corners (a counting sort of the corners by vertex) and each corner's face.
+struct VertexCorners {
+    std::vector<int> first;   ///< vertex v's corners are corners[first[v] .. first[v + 1])
+    std::vector<int> corners;
+    std::vector<int> face;    ///< of each corner
+    explicit VertexCorners(const PolyMesh& mesh)
+        : first(static_cast<size_t>(mesh.num_vertices()) + 1, 0), corners(mesh.face_vertices.size()),
+          face(mesh.face_vertices.size()) {
+        for (int f = 0; f < mesh.num_faces(); ++f)
+            for (int k = mesh.face_start[f]; k < mesh.face_start[f + 1]; ++k) face[static_cast<size_t>(k)] = f;
+        for (int v : mesh.face_vertices) ++first[static_cast<size_t>(v) + 1];
+        for (size_t v = 0; v + 1 < first.size(); ++v) first[v + 1] += first[v];
+        std::vector<int> fill(first.begin(), first.end() - 1);
+        for (size_t k = 0; k < mesh.face_vertices.size(); ++k)
+            corners[static_cast<size_t>(fill[static_cast<size_t>(mesh.face_vertices[k])]++)] = static_cast<int>(k);
+    }
+};
+
+/// The fans of vertex `v`: its corners joined across each edge (v, w) that exactly two of its
+/// corners of one group use (group: what must agree for two corners to be one fan, such as
+/// their texture coordinate; `group` maps a corner to it). Returns, for each of v's corners in
+/// VertexCorners order, the slot of its fan's first corner.
+template <class Group>
+std::vector<int> fans_of(const PolyMesh& mesh, const VertexCorners& vc, int v, Group group) {
+    const int lo = vc.first[static_cast<size_t>(v)], count = vc.first[static_cast<size_t>(v) + 1] - lo;
+    std::vector<int> parent(static_cast<size_t>(count));
+    for (int i = 0; i < count; ++i) parent[static_cast<size_t>(i)] = i;
+    const auto root = [&](int x) {
+        while (parent[static_cast<size_t>(x)] != x) x = parent[static_cast<size_t>(x)] = parent[static_cast<size_t>(parent[static_cast<size_t>(x)])];
+        return x;
+    };
+    std::vector<std::array<int, 3>> ends;  // (group, the other end of an edge at v, slot)
+    ends.reserve(static_cast<size_t>(2 * count));
+    for (int i = 0; i < count; ++i) {
+        const int k = vc.corners[static_cast<size_t>(lo + i)];
+        const int f = vc.face[static_cast<size_t>(k)];
+        const int b = mesh.face_start[f], size = mesh.face_size(f);
+        const int g = group(k);
+        ends.push_back({g, mesh.face_vertices[static_cast<size_t>(b + (k - b + 1) % size)], i});
+        ends.push_back({g, mesh.face_vertices[static_cast<size_t>(b + (k - b + size - 1) % size)], i});
+    }
+    std::sort(ends.begin(), ends.end());
+    for (size_t a = 0, e = 0; a < ends.size(); a = e) {
+        while (e < ends.size() && ends[e][0] == ends[a][0] && ends[e][1] == ends[a][1]) ++e;
+        if (e - a == 2) parent[static_cast<size_t>(root(ends[a][2]))] = root(ends[a + 1][2]);
+    }
+    // Each fan named by its first slot, so that the first fan is the one that keeps the element.
+    std::vector<int> first_slot(static_cast<size_t>(count), -1), out(static_cast<size_t>(count));
+    for (int i = 0; i < count; ++i) {
+        int& f = first_slot[static_cast<size_t>(root(i))];
+        if (f < 0) f = i;
+        out[static_cast<size_t>(i)] = f;
+    }
+    return out;
+}
+
+/// `mesh` with each vertex of `split` given one copy per fan (fans_of, every corner one group):
+/// a bowtie vertex comes apart into its fans, and the faces around a non-manifold edge get a
+/// copy of each end apiece, so that no vertex or edge of the split mesh is non-manifold where
+/// the input's were. The first fan keeps the vertex and its tags.
+PolyMesh with_fans_split(const PolyMesh& mesh, const std::vector<int>& split) {
+    PolyMesh out = mesh;
+    const VertexCorners vc(mesh);
+    for (int v : split) {
+        const std::vector<int> fan = fans_of(mesh, vc, v, [](int) { return 0; });
+        std::vector<int> copy(fan.size(), -1);
+        for (size_t i = 0; i < fan.size(); ++i) {
+            if (fan[i] == fan[0]) continue;
+            int& c = copy[static_cast<size_t>(fan[i])];
+            if (c < 0) {
+                out.positions.push_back(mesh.positions[static_cast<size_t>(v)]);
+                c = out.num_vertices() - 1;
+            }
+            out.face_vertices[static_cast<size_t>(vc.corners[static_cast<size_t>(vc.first[static_cast<size_t>(v)]) + i])] = c;
+        }
+    }
+    return out;
+}
+
+/// `mesh` with each face-varying value that is a bowtie at a vertex (its corners there form
+/// several fans: faces of one value alternating with faces of another around the vertex) given
+/// one copy per fan; the number of values so split is added to `split`.
+PolyMesh with_value_fans_split(const PolyMesh& mesh, int& split) {
+    PolyMesh out = mesh;
+    const VertexCorners vc(mesh);
+    for (size_t ch = 0; ch < mesh.face_varying.size(); ++ch) {
+        const FaceVaryingChannel& in = mesh.face_varying[ch];
+        FaceVaryingChannel& channel = out.face_varying[ch];
+        for (int v = 0; v < mesh.num_vertices(); ++v) {
+            const std::vector<int> fan = fans_of(mesh, vc, v, [&](int k) { return in.corner_values[static_cast<size_t>(k)]; });
+            const int lo = vc.first[static_cast<size_t>(v)];
+            // Each fan holds one value; a value's first fan keeps it, each other fan gets a copy.
+            const auto value_at = [&](size_t i) { return in.corner_values[static_cast<size_t>(vc.corners[static_cast<size_t>(lo) + i])]; };
+            std::vector<std::pair<int, int>> fans;  // (value, first slot)
+            for (size_t i = 0; i < fan.size(); ++i)
+                if (fan[i] == static_cast<int>(i)) fans.emplace_back(value_at(i), static_cast<int>(i));
+            std::sort(fans.begin(), fans.end());
+            std::vector<int> renamed(fan.size(), -1);
+            for (size_t j = 1; j < fans.size(); ++j) {
+                if (fans[j].first != fans[j - 1].first) continue;
+                channel.values.insert(channel.values.end(), in.value(fans[j].first), in.value(fans[j].first) + in.dimension);
+                renamed[static_cast<size_t>(fans[j].second)] = channel.num_values() - 1;
+                ++split;
+            }
+            for (size_t i = 0; i < fan.size(); ++i)
+                if (const int r = renamed[static_cast<size_t>(fan[i])]; r >= 0)
+                    channel.corner_values[static_cast<size_t>(vc.corners[static_cast<size_t>(lo) + i])] = r;
+        }
+    }
+    return out;
+}
+
+/// The largest number of distinct neighbours of a vertex along the faces' edges.
+int max_valence(const PolyMesh& mesh) {
+    std::vector<std::pair<int, int>> edges;
+    edges.reserve(mesh.face_vertices.size() * 2);
+    for (int f = 0; f < mesh.num_faces(); ++f) {
+        const int* c = mesh.face(f);
+        const int n = mesh.face_size(f);
+        for (int k = 0; k < n; ++k) {
+            const int a = c[k], b = c[(k + 1) % n];
+            if (a == b) continue;
+            edges.emplace_back(a, b);
+            edges.emplace_back(b, a);
+        }
+    }
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    int best = 0;
+    for (size_t i = 0, j = 0; i < edges.size(); i = j) {
+        while (j < edges.size() && edges[j].first == edges[i].first) ++j;
+        best = std::max(best, static_cast<int>(j - i));
+    }
+    return best;
+}
+
+/// The first face with fewer than 3 distinct corners, in the words of the mesh checker.
+std::optional<std::string> first_degenerate_face(const PolyMesh& mesh) {
+    for (const MeshIssue& issue : check_mesh(mesh))
+        if (issue.kind == MeshIssueKind::RepeatedVertex || issue.kind == MeshIssueKind::TooFewCorners) return issue.message;
+    return std::nullopt;
 }
 
 }  // namespace
@@ -49,7 +194,7 @@ bool InvarianceReport::invariant() const {
 }
 
 InvarianceCheck measure_invariance(const PolyMesh& refined, const PolyMesh& refined_transformed,
-                                   const TransformedInput& transformed, double tolerance) {
+                                   const TransformedInput& transformed, double tolerance, double float_ulps) {
     InvarianceCheck out;
     out.exact = transformed.exact;
     // The refinement of the input, transformed as the input was.
@@ -69,7 +214,14 @@ InvarianceCheck measure_invariance(const PolyMesh& refined, const PolyMesh& refi
     const double diagonal = std::max(bounding_box_diagonal(expected.positions), 1e-300);
     const double rounding = tolerances::kRoundingUlps *
                             std::max(ulp_of_largest_coordinate(expected), ulp_of_largest_coordinate(refined_transformed)) / diagonal;
-    const double bar = std::max(tolerance, rounding);
+    double bar = std::max(tolerance, rounding);
+    if (float_ulps > 0) {
+        float largest = 0;
+        for (const PolyMesh* m : {static_cast<const PolyMesh*>(&expected), &refined_transformed})
+            for (const Vec3& p : m->positions) largest = std::max(largest, static_cast<float>(p.cwiseAbs().maxCoeff()));
+        const double ulp = static_cast<double>(std::nextafter(largest, INFINITY)) - largest;
+        bar = std::max(bar, 2 * float_ulps * ulp / diagonal);
+    }
     const Correspondence m = match_nearest_and_faces(expected, refined_transformed);
     std::optional<MeshComparison> c;
     if (m.method != MatchMethod::None) c = compare_meshes(expected, refined_transformed, m.ref_to_ours);
@@ -150,6 +302,9 @@ InvarianceReport check_invariance(const Implementation& impl, const PolyMesh& in
     out.implementation = impl.name();
     const IsolatedTrace first = refine_isolated(impl, input, request, timeout_seconds, isolate);
     out.outcome = first.outcome;
+    const double float_ulps = impl.capabilities().precision == Precision::Float
+                                  ? tolerances::kFloatAgreementUlps + 0.5 * (max_valence(input) + 2) * request.levels
+                                  : 0.0;
     for (InputTransformation t : transformations) {
         InvarianceCheck check;
         check.transformation = t;
@@ -187,11 +342,63 @@ InvarianceReport check_invariance(const Implementation& impl, const PolyMesh& in
             out.checks.push_back(std::move(check));
             continue;
         }
-        check = measure_invariance(first.trace->back(), second.trace->back(), transformed, tolerance);
+        check = measure_invariance(first.trace->back(), second.trace->back(), transformed, tolerance, float_ulps);
         check.transformation = t;
         out.checks.push_back(std::move(check));
     }
     return out;
+}
+
+InvarianceCause explain_not_invariant(const Implementation& impl, const PolyMesh& input, const RefineRequest& request,
+                                      const InvarianceCheck& finding, std::uint64_t seed, double tolerance,
+                                      double timeout_seconds, bool isolate) {
+    const InputTransformation t = finding.transformation;
+    const auto invariant_on = [&](const PolyMesh& mesh) {
+        const InvarianceReport r = check_invariance(impl, mesh, request, {t}, seed, tolerance, timeout_seconds, isolate);
+        return r.checks.size() == 1 && r.checks[0].result == InvarianceResult::Invariant;
+    };
+    std::vector<int> all_faces(static_cast<size_t>(input.num_faces()));
+    for (size_t f = 0; f < all_faces.size(); ++f) all_faces[f] = static_cast<int>(f);
+    const PolyMesh used = submesh(input, all_faces);  // drops the vertices no face uses
+    const int isolated = input.num_vertices() - used.num_vertices();
+    if (isolated > 0 && used.num_faces() > 0 && invariant_on(used))
+        return {DivergenceClass::IsolatedVertexHandling,
+                "invariant once its " + std::to_string(isolated) + " vertices no face uses are removed"};
+    std::vector<int> nonmanifold;
+    try {
+        nonmanifold = nonmanifold_vertices(input);
+    } catch (const InputError&) {
+        // A face the steps refuse (a repeated corner): the degenerate test below names it.
+    }
+    if (!nonmanifold.empty() && invariant_on(with_fans_split(input, nonmanifold)))
+        return {DivergenceClass::NonManifoldHandling,
+                "invariant once its " + std::to_string(nonmanifold.size()) +
+                    " non-manifold vertices are split into their fans (vertex " + std::to_string(nonmanifold[0]) +
+                    (nonmanifold.size() > 1 ? ", ...)" : ")")};
+    if (!input.face_varying.empty()) {
+        int split = 0;
+        const PolyMesh apart = with_value_fans_split(input, split);
+        if (split > 0 && invariant_on(apart))
+            return {DivergenceClass::FaceOrderDependence,
+                    "its texture coordinates depend on the order of the faces at a UV bowtie (a value whose faces "
+                    "alternate with another's around a vertex): invariant once its " + std::to_string(split) +
+                        " bowtie values are split, one per fan"};
+    }
+    const SchemeSupport* support = impl.support(request.scheme);
+    if (const int valence = max_valence(input); support && support->max_valence > 0 && valence > support->max_valence)
+        return {DivergenceClass::ValenceLimit, "a vertex of valence " + std::to_string(valence) +
+                                                   " lies past its weight table, which ends at valence " +
+                                                   std::to_string(support->max_valence) + " (" + support->valence_table + ")"};
+    if (const std::optional<std::string> face = first_degenerate_face(input))
+        return {DivergenceClass::DegenerateFaceHandling, "the input has a degenerate face: " + *face};
+    const IsolatedTrace run = refine_isolated(impl, input, request, timeout_seconds, isolate);
+    if (run.trace)
+        for (size_t level = 1; level < run.trace->size(); ++level)
+            if (const std::optional<std::string> face = first_degenerate_face((*run.trace)[level]))
+                return {DivergenceClass::DegenerateFaceHandling,
+                        "its refinement has a degenerate face at level " + std::to_string(level) + ": " + *face};
+    return {DivergenceClass::Unexplained, "not explained by isolated vertices, non-manifold vertices, a weight table or "
+                                          "a degenerate face"};
 }
 
 InvarianceShrink shrink_not_invariant(const Implementation& impl, const PolyMesh& input, const RefineRequest& request,

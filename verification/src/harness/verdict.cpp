@@ -17,6 +17,7 @@ constexpr std::array kVerdicts = {
     std::pair{Verdict::RefUnavailable, "ref-unavailable"},
     std::pair{Verdict::OursRejected, "ours-rejected"},
     std::pair{Verdict::RefNondeterministic, "ref-nondeterministic"},
+    std::pair{Verdict::NotCompared, "not-compared"},
 };
 
 constexpr std::array kClasses = {

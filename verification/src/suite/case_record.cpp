@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "crossdiv/error.h"
+#include "crossdiv/verification/harness/json_text.h"
 
 namespace crossdiv::verification {
 namespace {
@@ -15,7 +16,6 @@ int int_field(const json& j, const char* key, int fallback) {
     return static_cast<int>(whole_number_field(j, key, fallback, std::numeric_limits<int>::min(), std::numeric_limits<int>::max()));
 }
 
-json finite_or_null(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
 
 double number(const json& j, const char* key) {
     return j.contains(key) && j[key].is_number() ? j[key].get<double>() : NAN;

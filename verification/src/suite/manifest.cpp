@@ -2,6 +2,7 @@
 
 #include <fnmatch.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -183,6 +184,50 @@ void parse_task_keys(const std::string& file, int line, std::istringstream& word
     if (op == "flip-split" && e.task.ops.empty()) throw ParseError(file, line, "the flip-split task needs ops='flip A B, split C D, ...'");
 }
 
+/// An invariance case's keys: scheme= (required) with that scheme's rule keys, levels= and
+/// tolerance=, and impls=, transform=, seed=. A comparison's against= and tier= have no
+/// meaning here (the implementations are compared with themselves, within the tolerance or
+/// bit for bit as each transformation says).
+void parse_invariance_keys(const std::string& file, int line, std::istringstream& words, ManifestEntry& e) {
+    std::string scheme, rule_keys;
+    for (std::string kv; words >> kv;) {
+        const size_t eq = kv.find('=');
+        const std::string key = kv.substr(0, eq), value = eq == std::string::npos ? "" : kv.substr(eq + 1);
+        if (key == "scheme") {
+            scheme = value;
+        } else if (key == "impls") {
+            e.invariance.implementations = split(value, ',');
+        } else if (key == "transform") {
+            for (const std::string& t : split(value, ','))
+                e.invariance.transformations.push_back(at_line(file, line, [&] { return input_transformation_from_string(t); }));
+        } else if (key == "seed") {
+            const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), e.invariance.seed);
+            if (ec != std::errc() || end != value.data() + value.size())
+                throw ParseError(file, line, "seed=" + value + " is not a whole number in [0, 2^64)");
+        } else if (key == "against" || key == "tier") {
+            throw ParseError(file, line, "the invariance operation takes no " + key +
+                                             "= (each implementation is compared with itself; choose them with impls=)");
+        } else {
+            rule_keys += kv + " ";
+        }
+    }
+    if (scheme.empty()) throw ParseError(file, line, "the invariance operation needs scheme=NAME");
+    e.request.scheme = at_line(file, line, [&] { return scheme_from_string(scheme); });
+    std::istringstream rest(rule_keys);
+    if (e.request.scheme == Scheme::Loop) parse_loop_keys(file, line, rest, e.request, e.rule_flags);
+    else parse_scheme_keys(file, line, rest, e.request.scheme, e.request, e.rule_flags);
+    for (const std::string& name : e.invariance.implementations)
+        at_line(file, line, [&] {
+            if (!find_implementation(name).support(e.request.scheme))
+                throw InputError("impls=" + name + ": it has no " + std::string(to_string(e.request.scheme)) + " refinement");
+            return 0;
+        });
+    if (e.invariance.implementations.empty()) {
+        e.invariance.implementations.push_back(core_implementation().name());
+        for (const Implementation* r : references_for(e.request.scheme)) e.invariance.implementations.push_back(r->name());
+    }
+}
+
 ManifestEntry parse_case(const std::string& file, int line, std::istringstream& words) {
     ManifestEntry e;
     e.line = line;
@@ -192,6 +237,10 @@ ManifestEntry parse_case(const std::string& file, int line, std::istringstream& 
     e.operation = at_line(file, line, [&] { return &find_operation(op); });
     if (e.operation->kind == OperationKind::Task) {
         parse_task_keys(file, line, words, e);
+        return e;
+    }
+    if (e.operation->kind == OperationKind::Invariance) {
+        parse_invariance_keys(file, line, words, e);
         return e;
     }
     if (e.operation->kind != OperationKind::Comparison) {
@@ -222,11 +271,12 @@ std::string describe_entry(const ManifestEntry& e) {
                (op == "sweep" ? " frames=" + e.task.frames : "") + (op == "flip-split" ? " ops=" + e.task.ops : "") +
                (e.subject ? " subject=" + e.subject->name : "");
     }
-    if (e.operation->kind != OperationKind::Comparison) return e.operation->name;
-    const bool loop = e.operation->scheme == Scheme::Loop;
-    const Tier tier = e.request.tier;
+    const bool invariance = e.operation->kind == OperationKind::Invariance;
+    if (e.operation->kind != OperationKind::Comparison && !invariance) return e.operation->name;
+    const bool loop = e.request.scheme == Scheme::Loop;
+    const Tier tier = invariance ? Tier::Weak : e.request.tier;
     const double tolerance = e.request.tolerance;
-    std::string s = e.operation->name;
+    std::string s = e.operation->name + (invariance ? " " + std::string(to_string(e.request.scheme)) : "");
     if (loop) {
         s += " " + rule_name(Scheme::Loop, e.request.rule);
     } else {
@@ -236,7 +286,7 @@ std::string describe_entry(const ManifestEntry& e) {
     }
     if (!e.rule_flags.face_varying.empty()) s += " fvar=" + e.rule_flags.face_varying;
     if (!e.rule_flags.triangles.empty()) s += " triangles=" + e.rule_flags.triangles;
-    s += " L" + std::to_string(e.request.levels) + " " + to_string(tier);
+    s += " L" + std::to_string(e.request.levels) + (invariance ? "" : " " + std::string(to_string(tier)));
     if (tier != Tier::Strict) {
         char buf[32];
         std::snprintf(buf, sizeof buf, "%g", tolerance);
@@ -244,6 +294,16 @@ std::string describe_entry(const ManifestEntry& e) {
     }
     for (size_t k = 0; k < e.request.expected_refusals.size(); ++k)
         s += (k == 0 ? std::string(" refuses=") : std::string(",")) + to_string(e.request.expected_refusals[k]);
+    if (invariance) {
+        if (!e.subject) {
+            s += " impls=";
+            for (size_t k = 0; k < e.invariance.implementations.size(); ++k)
+                s += (k ? "," : "") + e.invariance.implementations[k];
+        }
+        for (size_t k = 0; k < e.invariance.transformations.size(); ++k)
+            s += (k == 0 ? std::string(" transform=") : std::string(",")) + to_string(e.invariance.transformations[k]);
+        s += " seed=" + std::to_string(e.invariance.seed);
+    }
     if (e.subject) s += " subject=" + e.subject->name;
     return s;
 }
@@ -485,10 +545,14 @@ Manifest read_manifest(std::istream& in, const std::string& path, const std::str
         } else if (keyword == "case") {
             const ManifestEntry entry = parse_case(path, line, words);
             const bool task = entry.operation->kind == OperationKind::Task;
-            if (!subjects.empty() && entry.operation->kind != OperationKind::Comparison && !task)
-                throw ParseError(path, line, "a subject is compared in the scheme comparisons and the course tasks only (loop, "
-                                             "catmull-clark, ..., tessellate, sweep, ...); put the " + entry.operation->name +
-                                             " cases before the subject statement");
+            const bool invariance = entry.operation->kind == OperationKind::Invariance;
+            if (!subjects.empty() && entry.operation->kind != OperationKind::Comparison && !task && !invariance)
+                throw ParseError(path, line, "a subject is compared in the scheme comparisons, the invariance checks and the "
+                                             "course tasks only (loop, catmull-clark, ..., invariance, tessellate, sweep, ...); "
+                                             "put the " + entry.operation->name + " cases before the subject statement");
+            if (invariance && std::any_of(subjects.begin(), subjects.end(), [](const auto& s) { return !s->result_pattern.empty(); }))
+                throw ParseError(path, line, "the invariance operation runs the subject on inputs it writes itself: it needs a "
+                                             "program (command=), not result files");
             if (task && subjects.empty())
                 throw ParseError(path, line, "the " + entry.operation->name + " task puts a subject in core's place: give a "
                                              "subject or subjects statement before it");

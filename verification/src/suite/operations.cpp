@@ -18,6 +18,7 @@
 #include "crossdiv/verification/properties/surface_checks.h"
 #include "crossdiv/verification/harness/json_text.h"
 #include "crossdiv/verification/suite/features_under_test.h"
+#include "crossdiv/verification/suite/invariance_case.h"
 #include "crossdiv/verification/suite/task_cases.h"
 #include "crossdiv/verification/studies/curvature_study.h"
 #include "crossdiv/verification/studies/fitting_study.h"
@@ -226,6 +227,8 @@ const std::vector<SuiteOperation>& suite_operations() {
          run_study<spectrum_study>},
         {"convergence", OperationKind::Study, "convergence of extraordinary vertices to their limit",
          one_collection<kFans>, run_study<convergence_study>},
+        {"invariance", OperationKind::Invariance, "each implementation of the case's scheme on a mesh and on the mesh written otherwise (corners rotated, faces reordered, vertices relabelled, moved, run again): the same surface, no reference needed",
+         expand_inputs, run_invariance_case},
         {"tessellate", OperationKind::Task, "a subject's uniform tessellation and frames of every curve record, named",
          expand_curve_inputs, run_task_case},
         {"casteljau", OperationKind::Task, "a subject's de Casteljau levels of a Bezier curve at t", expand_curve_inputs,
@@ -247,6 +250,7 @@ const char* to_string(OperationKind kind) {
         case OperationKind::Checks: return "checks";
         case OperationKind::Study: return "study";
         case OperationKind::Task: return "task";
+        case OperationKind::Invariance: return "invariance";
     }
     return "unknown";
 }

@@ -204,7 +204,8 @@ std::string describe_record(const CaseRecord& c) {
     std::string s = std::to_string(c.runs.size()) + what;
     if (classified) s += ", " + std::to_string(classified) + " classified divergences";
     for (const auto& [label, n] : other) s += ", " + std::to_string(n) + " " + label;
-    return s + (failed ? ", " + std::to_string(failed) + " FAILED:" + which : other.empty() ? ", all within tolerance" : "");
+    if (failed) return s + ", " + std::to_string(failed) + " FAILED:" + which;
+    return s + (classified || !other.empty() ? ", no failure" : ", all within tolerance");
 }
 
 }  // namespace crossdiv::verification

@@ -26,6 +26,7 @@
 #include "crossdiv/mesh/poly_mesh.h"
 #include "crossdiv/verification/comparisons/input_transformation.h"
 #include "crossdiv/verification/harness/isolate.h"
+#include "crossdiv/verification/harness/verdict.h"
 #include "crossdiv/verification/implementations/implementation.h"
 
 namespace crossdiv::verification {
@@ -60,9 +61,12 @@ struct InvarianceCheck {
 };
 
 /// Compares `refined` (the last level of the input's refinement) with `refined_transformed`
-/// (of `transformed.mesh`'s) as the transformation says they relate.
+/// (of `transformed.mesh`'s) as the transformation says they relate. `float_ulps`: for an
+/// implementation that computes in float, the float tier's bound B on each run's rounding
+/// (tolerances::kFloatAgreementUlps + (n + 2) / 2 * L float ulps of the largest coordinate);
+/// two runs then part by up to 2B, the bar where the transformation is not exact.
 InvarianceCheck measure_invariance(const PolyMesh& refined, const PolyMesh& refined_transformed,
-                                   const TransformedInput& transformed, double tolerance);
+                                   const TransformedInput& transformed, double tolerance, double float_ulps = 0);
 
 /// What an implementation did under every transformation asked for.
 struct InvarianceReport {
@@ -79,6 +83,32 @@ struct InvarianceReport {
 InvarianceReport check_invariance(const Implementation& impl, const PolyMesh& input, const RefineRequest& request,
                                   const std::vector<InputTransformation>& transformations, std::uint64_t seed,
                                   double tolerance, double timeout_seconds, bool isolate = true);
+
+/// Why an implementation is not invariant (or not deterministic) on an input, by measurement:
+/// the check is run again on the input without what one input handling concerns, and the class
+/// is the first whose removal makes it invariant.
+///   isolated-vertex-handling   invariant once the vertices no face uses are removed
+///   non-manifold-handling      invariant once each non-manifold vertex is split into its fans
+///   face-order-dependence      invariant once each texture coordinate that is a bowtie at a
+///                              vertex (its faces alternating with another value's) is split,
+///                              one per fan: which fan keeps the value is read off the face order
+///   valence-limit              the input has a vertex past the weight table the implementation
+///                              declares (SchemeSupport::max_valence): what it reads there is undefined
+///   degenerate-face-handling   its refinement of the input has a face with fewer than 3 distinct
+///                              corners, whose orientation and position no rule fixes
+///   unexplained                none of these
+/// The class is what a reference's finding is recorded as; a finding of core's or a subject's is
+/// a failure whatever it measures (the caller records it unexplained, the cause in its words).
+struct InvarianceCause {
+    DivergenceClass cls = DivergenceClass::Unexplained;
+    std::string why;  ///< the measurement, one clause
+};
+
+/// The cause of `finding` (a not-invariant or nondeterministic check of check_invariance's
+/// arguments): at most four more checks under the same transformation and one run.
+InvarianceCause explain_not_invariant(const Implementation& impl, const PolyMesh& input, const RefineRequest& request,
+                                      const InvarianceCheck& finding, std::uint64_t seed, double tolerance,
+                                      double timeout_seconds, bool isolate = true);
 
 /// A non-invariant input shrunk: the fewest faces found by delta debugging over faces (ddmin:
 /// Zeller and Hildebrandt 2002, as comparisons/shrink.h) on which the implementation is still

@@ -5,6 +5,7 @@
 /// (type_error.316), which would end a run and lose its outputs. Such bytes are written as
 /// the four characters \xFE instead: shown, never dropped, never fatal.
 
+#include <cmath>
 #include <string>
 #include <string_view>
 
@@ -18,5 +19,8 @@ std::string valid_utf8(std::string_view text);
 
 /// j.dump(indent) after valid_utf8 of every string and object key.
 std::string json_text(const nlohmann::json& j, int indent = -1);
+
+/// `x` as a JSON number, or null where it is NaN or infinite (JSON has neither).
+inline nlohmann::json finite_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
 
 }  // namespace crossdiv::verification

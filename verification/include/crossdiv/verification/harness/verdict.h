@@ -25,10 +25,14 @@ enum class Verdict {
     /// first run's divergence, if it diverged; not a failure of core's, as no verdict on core can
     /// be read off a result that changes.
     RefNondeterministic,
+    /// Nothing was compared (an invariance check, comparisons/invariance.h): the refinement has
+    /// vertices at one position, whose faces positions cannot match, and its point sets agree.
+    /// Neither agreement nor a divergence.
+    NotCompared,
 };
 
 /// "agree", "diverge", "ref-rejected", "ref-crashed", "ref-invalid-output", "ref-unavailable",
-/// "ours-rejected", "ref-nondeterministic".
+/// "ours-rejected", "ref-nondeterministic", "not-compared".
 const char* to_string(Verdict verdict);
 /// @throws InputError naming the unknown verdict and the known ones.
 Verdict verdict_from_string(std::string_view name);

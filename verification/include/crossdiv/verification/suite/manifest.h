@@ -3,12 +3,14 @@
 /// A suite manifest (cases x operations x rules x tolerances; the format is documented in
 /// reports/suite-manifest.md) and its expansion into jobs, whole or one shard of them.
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <istream>
 #include <string>
 #include <vector>
 
+#include "crossdiv/verification/comparisons/input_transformation.h"
 #include "crossdiv/verification/comparisons/refinement_comparison.h"
 #include "crossdiv/verification/implementations/tag_rules.h"
 #include "crossdiv/verification/implementations/output_size.h"
@@ -46,6 +48,17 @@ struct TaskKeys {
     std::string ops;                    ///< flip-split: "flip A B, split C D, ..."
 };
 
+/// An invariance case's keys (suite/invariance_case.h): which implementations, which
+/// transformations, which seed.
+struct InvarianceKeys {
+    /// impls=NAME,...: core or registered implementations of the scheme; empty: core and every
+    /// reference of the scheme registered when the case is read.
+    std::vector<std::string> implementations;
+    /// transform=NAME,...; empty: every transformation (kInputTransformations).
+    std::vector<InputTransformation> transformations;
+    std::uint64_t seed = 1;  ///< seed=K: the random rotations, shuffles and relabellings
+};
+
 struct ManifestEntry {
     int line = 0;                      ///< in the manifest file
     std::vector<std::string> inputs;   ///< as the operation's expand() accepts them (collections allowed)
@@ -56,6 +69,7 @@ struct ManifestEntry {
     RefinementRequest request;
     RuleFlags rule_flags;              ///< another scheme's boundary= and crease-method= keys
     TaskKeys task;                     ///< a course task's keys
+    InvarianceKeys invariance;         ///< an invariance case's keys (its scheme and rule are in `request`)
     /// The implementation under test (the last `subject` statement before the case, or one
     /// subject of the last `subjects` statement: a case line makes one entry per subject); none: core.
     std::shared_ptr<const ManifestSubject> subject;

@@ -18,6 +18,8 @@
 ///   spectrum         the eigen table of the local subdivision matrices, valence 3..20, against
 ///                    the published closed forms; the Loop rule oracle of loop and warren
 ///   convergence      the convergence table, valence 3..12, levels 1..8
+///   invariance      each implementation of a scheme on a mesh and on the mesh written otherwise
+///                    (suite/invariance_case.h): the same surface, no reference needed
 ///   tessellate, casteljau, patch, sweep, vertex-normals, flip-split
 ///                    the course tasks, each with a subject in core's place (task_cases.h)
 
@@ -37,6 +39,9 @@ enum class OperationKind {
     Checks,      ///< one run per measured check of an input file (curves, surfaces)
     Study,       ///< one job over a fixed catalog, measured checks and tables
     Task,        ///< a subject put in core's place for a course task (task_cases.h); takes the task's keys
+    /// one run per implementation and transformation of a mesh (invariance_case.h); takes
+    /// scheme= with its rule keys, impls=, transform=, seed=
+    Invariance,
 };
 
 struct SuiteOperation {
@@ -49,13 +54,13 @@ struct SuiteOperation {
     /// Runs one job; core's refusal of an input is recorded, not thrown.
     /// @param out_dir where side files (error fields) go.
     CaseRecord (*run)(const SuiteJob& job, const std::string& out_dir);
-    Scheme scheme = Scheme::Loop;  ///< a comparison's scheme
+    Scheme scheme = Scheme::Loop;  ///< a comparison's scheme (an invariance case names its own)
 };
 
 /// Every operation, in the order above.
 const std::vector<SuiteOperation>& suite_operations();
 
-/// "comparison", "checks", "study", "task".
+/// "comparison", "checks", "study", "task", "invariance".
 const char* to_string(OperationKind kind);
 /// Every operation's name, kind and (a comparison) scheme, as results.json lists them: what
 /// the report reads to tell the kinds of cases apart.
