@@ -20,6 +20,7 @@
 #include "crossdiv/io/curve_io.h"
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/subdiv/loop.h"
+#include "crossdiv/verification/comparisons/invariance.h"
 #include "crossdiv/verification/comparisons/refinement_comparison.h"
 #include "crossdiv/verification/harness/isolate.h"
 #include "crossdiv/verification/harness/json_text.h"
@@ -440,4 +441,66 @@ PYBIND11_MODULE(crossdiv, m) {
           "process with `timeout` seconds, so its exception, crash or hang is recorded, not raised. With UV and "
           "FUV (as subdivide takes them), each run's texture coordinates are compared per face corner under `fvar` "
           "(the record's runs[i]['uv']).");
+
+    m.def("invariance",
+          [](const py::object& V, const py::object& F, const std::string& scheme, int levels, std::optional<std::string> weights,
+             std::optional<std::string> boundary, std::vector<std::string> impls, std::vector<std::string> transforms,
+             std::uint64_t seed, double tolerance, py::object subject, const std::string& subject_name, double timeout) {
+              if (levels < 1 || levels > 12) throw InputError("levels must be in 1..12 (got " + std::to_string(levels) + ")");
+              const RefineRequest request = request_for(scheme, levels, weights, boundary);
+              std::vector<InputTransformation> ts;
+              for (const std::string& t : transforms) ts.push_back(input_transformation_from_string(t));
+              if (ts.empty()) ts.assign(kInputTransformations.begin(), kInputTransformations.end());
+              std::unique_ptr<Implementation> under_test;
+              std::vector<const Implementation*> checked;
+              if (!subject.is_none()) {
+                  if (!impls.empty()) throw InputError("impls and subject exclude each other");
+                  if (!PyCallable_Check(subject.ptr())) throw InputError("subject must be callable: subject(V, F) -> (V, F)");
+                  under_test = python_subject(subject_name, request.scheme, subject);
+                  checked.push_back(under_test.get());
+              } else if (!impls.empty()) {
+                  for (const std::string& name : impls) checked.push_back(&find_implementation(name));
+              } else {
+                  checked.push_back(&core_implementation());
+                  for (const Implementation* r : references_for(request.scheme)) checked.push_back(r);
+              }
+              for (const Implementation* impl : checked)
+                  if (!impl->support(request.scheme))
+                      throw InputError(impl->name() + " has no " + std::string(to_string(request.scheme)) + " refinement");
+              PolyMesh mesh = mesh_from(V, F);
+              if (traits(request.scheme).triangles) (void)to_tri_mesh(mesh, "invariance");  // a polygon is refused by name
+              nlohmann::json rows = nlohmann::json::array();
+              for (const Implementation* impl : checked) {
+                  const InvarianceReport r = check_invariance(*impl, mesh, request, ts, seed, tolerance, timeout, true);
+                  for (const InvarianceCheck& c : r.checks) {
+                      nlohmann::json row = {{"implementation", impl->name()},
+                                            {"transformation", to_string(c.transformation)},
+                                            {"result", to_string(c.result)},
+                                            {"exact", c.exact},
+                                            {"bit_identical", c.bit_identical},
+                                            {"max_rel", finite_or_null(c.max_rel)},
+                                            {"uv_max_rel", finite_or_null(c.uv_max_rel)},
+                                            {"worst_vertex", c.worst_vertex},
+                                            {"worst_valence", c.worst_valence},
+                                            {"explanation", c.explanation}};
+                      if (c.result == InvarianceResult::NotInvariant || c.result == InvarianceResult::Nondeterministic) {
+                          const InvarianceCause why = explain_not_invariant(*impl, mesh, request, c, seed, tolerance, timeout);
+                          row["cause"] = {{"class", to_string(why.cls)}, {"why", why.why}};
+                      }
+                      rows.push_back(std::move(row));
+                  }
+              }
+              return json_to_python(rows);
+          },
+          py::arg("V"), py::arg("F"), py::arg("scheme") = "loop", py::arg("levels") = 2, py::arg("weights") = py::none(),
+          py::arg("boundary") = py::none(), py::arg("impls") = std::vector<std::string>{},
+          py::arg("transforms") = std::vector<std::string>{}, py::arg("seed") = 1, py::arg("tolerance") = 1e-12,
+          py::arg("subject") = py::none(), py::arg("subject_name") = "python", py::arg("timeout") = 120.0,
+          "Whether each implementation's refinement of (V, F) depends on how the input is written, as `crossdiv "
+          "invariance` checks it: core and every reference of `scheme` (or `impls`, or `subject`, a function "
+          "subject(V, F) -> (V, F) refining one level, run in a child process) refine the mesh and the mesh with its "
+          "corners rotated, faces reordered, vertices relabelled, orientation reversed, moved, scaled, mirrored, "
+          "rotated, and run again (`transforms`: their names; all when empty). One dict per implementation and "
+          "transformation: result (invariant, not-invariant, nondeterministic, not-compared), exact, bit_identical, "
+          "max_rel, the worst vertex, the explanation, and for a finding its measured cause {class, why}.");
 }

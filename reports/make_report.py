@@ -46,13 +46,16 @@ def build(results, bench, folder, figdir):
     # With a roster, roster.html holds each subject's cases; the per-case table is for one subject.
     roster_table = roster.roster_section(results, folder)
     subject = None if roster_table else sections.subject_section(mesh)
-    body = [viewer.first_screen(results["cases"], mesh + schemes, [r["name"] for r in results.get("references", [])], folder), sections.outcomes_section(s),
+    invariance = invariance_cases(results)
+    viewed = mesh + schemes + invariance  # the cases the 3D viewer may show
+    body = [viewer.first_screen(results["cases"], viewed, [r["name"] for r in results.get("references", [])], folder),
+            sections.outcomes_section(s),
             *([roster_table] if roster_table else []), *([subject] if subject else []), *before,
             sections.catalogue_section(sections.catalogue_rows(mesh + schemes, curves + surfaces + studies +
                                                               halfedge_cases(results["cases"]) +
-                                                              invariance_cases(results))), *after,
+                                                              invariance)), *after,
             sections.curve_section(curves, bench, figdir), sections.surface_section(surfaces, bench, figdir),
-            sections.schemes_section(schemes), invariance_section(invariance_cases(results)),
+            sections.schemes_section(schemes), invariance_section(invariance, viewer.view_index(viewed)),
             sections.halfedge_section(halfedge_cases(results["cases"])),
             sections.studies_section(studies, figdir), sections.timing_section(bench, figdir)]
     return f"crossdiv conformance report: suite {results.get('suite')}", intro, [b for b in body if b is not None]

@@ -326,3 +326,27 @@ def test_texture_coordinates_refine_under_each_rule_and_compare_per_corner():
         crossdiv.subdivide(V, F, scheme="catmull-clark", UV=UV)
     with pytest.raises(crossdiv.InputError, match="unknown face-varying rule 'smooth'"):
         crossdiv.subdivide(V, F, scheme="catmull-clark", UV=UV, FUV=FUV, fvar="smooth")
+
+
+def test_invariance_finds_a_python_loop_that_reads_how_the_input_is_written():
+    V = np.array([[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]], dtype=float)
+    F = np.array([[0, 2, 4], [2, 1, 4], [1, 3, 4], [3, 0, 4], [2, 0, 5], [1, 2, 5], [3, 1, 5], [0, 3, 5]])
+    # Loop itself: the same surface however the octahedron is written.
+    rows = crossdiv.invariance(V, F, levels=1, impls=["core"])
+    assert len(rows) == 13 and {r["result"] for r in rows} == {"invariant"}, rows
+    assert {r["transformation"] for r in rows if r["bit_identical"]} >= {"scale", "swap-axes", "mirror", "repeat"}
+
+    def shifted(V, F):  # right, except that its first new point moves with the first face's first corner
+        V2, F2 = loop_once(V, F)
+        V2 = np.array(V2, dtype=float)
+        V2[len(V)] += 1e-3 * int(F[0][0])
+        return V2, F2
+    rows = crossdiv.invariance(V, F, levels=1, subject=shifted, subject_name="shifted",
+                               transforms=["rotate-corners", "scale"])
+    by = {r["transformation"]: r for r in rows}
+    assert by["rotate-corners"]["result"] == "not-invariant", by["rotate-corners"]
+    assert by["rotate-corners"]["implementation"] == "shifted"
+    assert by["rotate-corners"]["cause"]["class"] == "unexplained"
+    assert by["scale"]["result"] == "invariant"
+    with pytest.raises(ValueError, match="unknown transformation"):
+        crossdiv.invariance(V, F, transforms=["spin"])

@@ -34,7 +34,10 @@ def _cell(counter):
     return text + ("; " + ", ".join(findings) if findings else "")
 
 
-def invariance_section(cases):
+def invariance_section(cases, view_index=None):
+    """`view_index`: each viewed case's place in the 3D viewer (viewer.view_index), to link a
+    representative to its view."""
+    view_index = view_index or {}
     if not cases:
         return None
     transformations = []
@@ -91,11 +94,15 @@ def invariance_section(cases):
         reps = []
         for (scheme, impl, t, o), (_, c, r, shrunk, n) in sorted(representatives.items()):
             minimal = Link(f"{shrunk['faces']} faces", shrunk["mesh"]) if shrunk else "-"
-            reps.append((scheme, impl, t, o, n, short_input(c["input"]), fmt(r.get("measured")), minimal,
+            shown = short_input(c["input"])
+            if c["job"] in view_index:
+                shown = Link(shown, "#crossdiv-viewer", f" data-view='{view_index[c['job']]}'")
+            reps.append((scheme, impl, t, o, n, shown, fmt(r.get("measured")), minimal,
                          shrunk["reproduce"] if shrunk else "-", r.get("explanation", "")))
         section.add(Text("One representative per finding (implementation, transformation, outcome): the smallest input "
-                         "that shows it, shrunk by delta debugging where it has at most 500 faces, and the command "
-                         "that reproduces it."),
+                         "that shows it (a link opens the case's first finding in the 3D viewer: the implementation's "
+                         "levels, and as its reference its run on the input written otherwise, mapped back), shrunk "
+                         "by delta debugging where it has at most 500 faces, and the command that reproduces it."),
                     Table(["scheme", "implementation", "transformation", "outcome", "inputs", "representative",
                            "max rel", "minimal input", "reproduce", "explanation"], reps))
     return section

@@ -83,6 +83,19 @@ def _library_of(case, run):
     return run.get("subject") if case.get("operation") == "invariance" else run["reference"]
 
 
+def _invariance_entry(case):
+    """An invariance case's view: the implementation on the input, and as its one reference
+    its run on the input written otherwise, mapped back (invariance_view); the findings listed."""
+    findings = [r for r in case["runs"] if r["verdict"] not in ("agree", "not-compared")]
+    label = case.get("view_reference")
+    return {"job": case["job"], "id": case["id"], "view": case["view"],
+            "classes": sorted({r.get("divergence_class") or r["verdict"] for r in findings}),
+            "failure": any(_kind(case, r) == "failure" for r in findings),
+            "reference": label, "worst_vertex": case.get("view_worst_vertex", -1),
+            "runs": [{"reference": f"{r['subject']} under {r['check']}", "check": "", "outcome": outcome(case, r),
+                      "explanation": r.get("explanation", "")} for r in findings]}
+
+
 def matrix_table(cases, libraries):
     """Per scheme (or study) x reference library: agree / classified / failure run counts; the
     checks against exact answers, oracles and second algorithms of ours share one column."""
@@ -109,6 +122,9 @@ def view_entries(mesh_cases):
     entries = []
     for c in mesh_cases:
         if "view" not in c:
+            continue
+        if c.get("operation") == "invariance":
+            entries.append(_invariance_entry(c))
             continue
         diverging = [r for r in c["runs"] if r["verdict"] == "diverge"]
         worst = max(diverging, key=lambda r: r.get("positions", {}).get("max_rel") or 0, default=None)
@@ -172,6 +188,11 @@ def viewer_html(entries):
             f"<script>window.CROSSDIV_VIEWS = {data};</script>"
             "<script src='viewer/three.min.js'></script><script src='viewer/OrbitControls.js'></script>"
             "<script src='viewer/viewer.js'></script>")
+
+
+def view_index(mesh_cases):
+    """Each viewed case's place in the viewer's list, by job: what a link's data-view names."""
+    return {e["job"]: i for i, e in enumerate(view_entries(mesh_cases))}
 
 
 def first_screen(cases, mesh_cases, libraries, folder):

@@ -443,6 +443,7 @@ def test_invariance_gets_its_table_and_a_representative_per_finding(tmp_path):
                             "--impl cgal --transform reverse-faces --seed 1"}
     case = {"input": "edgecase:bowtie", "operation": "invariance", "job": 5, "scheme": "loop", "input_faces": 2,
             "id": "edgecase:bowtie | invariance loop", "transformations": ["reverse-faces", "relabel-vertices"],
+            "view": "views/job5.js", "view_reference": "cgal under reverse-faces", "view_worst_vertex": 0,
             "implementations": [{"name": "core", "under_test": True, "invariant": True},
                                 {"name": "cgal", "under_test": False, "invariant": False, "minimal": minimal}],
             "runs": [run("core", "reverse-faces", "agree", bit_identical=False, measured=1e-17),
@@ -468,3 +469,7 @@ def test_invariance_gets_its_table_and_a_representative_per_finding(tmp_path):
     assert "href='invariance/job5-cgal-reverse-faces.obj'" in html
     # The catalogue lists the finding among the runs that are not agreement.
     assert "cgal reverse-faces" in html
+    # The representative opens the case's view: CGAL's levels against its run on the faces reversed.
+    assert "<a href='#crossdiv-viewer' data-view='0'>edgecase:bowtie</a>" in html
+    assert '"reference": "cgal under reverse-faces"' in html
+    assert '"runs": [{"reference": "cgal under reverse-faces", "check": "", "outcome": "diverge (non-manifold-handling)"' in html

@@ -342,6 +342,23 @@ Manifest manifest_of(const std::string& text) {
     return read_manifest(in, "t.suite", ".", ProgramStatements::CheckOnly);
 }
 
+TEST(InvarianceView, TheOtherRunIsMappedBackIntoTheFirstsNumbering) {
+    // Core under scale: the other run, mapped back (halved), lands on the first bit
+    // for bit, vertex for vertex; every level is there, the earlier ones without a map.
+    const PolyMesh mesh = datasets::bundled_mesh("open-patch");
+    RefineRequest request{Scheme::Loop, {}, 2};
+    request.rule.loop = {LoopWeights::Loop, LoopBoundary::EdgeOnly};
+    const std::optional<DivergenceView> view =
+        invariance_view(core_implementation(), mesh, request, InputTransformation::Scale, 1, 60, false);
+    ASSERT_TRUE(view);
+    ASSERT_EQ(view->levels.size(), 3u);
+    const auto& other = view->references.at("core under scale");
+    ASSERT_EQ(other.size(), 3u);
+    EXPECT_TRUE(other[0].empty());
+    ASSERT_EQ(other[2].size(), view->levels[2].positions.size());
+    for (size_t v = 0; v < other[2].size(); ++v) EXPECT_EQ(other[2][v], view->levels[2].positions[v]) << v;
+}
+
 TEST(InvarianceCase, TheManifestTakesTheSchemesKeysAndRefusesWhatHasNoMeaningHere) {
     const Manifest m = manifest_of("suite t\ncase bundled:icosahedron,edgecase:bowtie invariance scheme=loop levels=2 "
                                    "boundary=edge-and-corner impls=core transform=rotate-corners,repeat seed=7\n"
@@ -428,6 +445,10 @@ TEST(InvarianceCase, CoresRefusalFailsUnlessDeclaredAndAReferencesFindingPassesC
         EXPECT_EQ(c.runs[1].subject, "cgal-one-call");
         EXPECT_EQ(outcome_label(c, c.runs[1]), "diverge (non-manifold-handling)") << c.runs[1].explanation;
         EXPECT_FALSE(is_failure(c, c.runs[1]));
+        // The finding drawn for the viewer: CGAL's levels, and its run on the faces reversed.
+        ASSERT_TRUE(c.detail.contains("view"));
+        EXPECT_TRUE(std::filesystem::exists(d / c.detail["view"].get<std::string>()));
+        EXPECT_EQ(c.detail["view_reference"], "cgal-one-call under reverse-faces");
     }
     std::filesystem::remove_all(d);
 }

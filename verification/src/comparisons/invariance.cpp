@@ -5,6 +5,8 @@
 #include <cmath>
 #include <optional>
 
+#include <Eigen/LU>
+
 #include "crossdiv/error.h"
 #include "crossdiv/verification/comparisons/nondeterminism.h"
 #include "crossdiv/verification/comparisons/shrink.h"
@@ -144,6 +146,22 @@ PolyMesh with_value_fans_split(const PolyMesh& mesh, int& split) {
     return out;
 }
 
+/// The refinement of the input, transformed as the input was: what the refinement of the
+/// transformed input must equal.
+PolyMesh mapped_as_the_input(const PolyMesh& refined, const TransformedInput& transformed) {
+    PolyMesh expected = refined;
+    for (Vec3& p : expected.positions) p = transformed.linear * p + transformed.offset;
+    if (transformed.reversed)
+        for (int f = 0; f < expected.num_faces(); ++f) {
+            std::reverse(expected.face_vertices.begin() + expected.face_start[f] + 1,
+                         expected.face_vertices.begin() + expected.face_start[f + 1]);
+            for (FaceVaryingChannel& ch : expected.face_varying)
+                std::reverse(ch.corner_values.begin() + expected.face_start[f] + 1,
+                             ch.corner_values.begin() + expected.face_start[f + 1]);
+        }
+    return expected;
+}
+
 /// The largest number of distinct neighbours of a vertex along the faces' edges.
 int max_valence(const PolyMesh& mesh) {
     std::vector<std::pair<int, int>> edges;
@@ -197,17 +215,7 @@ InvarianceCheck measure_invariance(const PolyMesh& refined, const PolyMesh& refi
                                    const TransformedInput& transformed, double tolerance, double float_ulps) {
     InvarianceCheck out;
     out.exact = transformed.exact;
-    // The refinement of the input, transformed as the input was.
-    PolyMesh expected = refined;
-    for (Vec3& p : expected.positions) p = transformed.linear * p + transformed.offset;
-    if (transformed.reversed)
-        for (int f = 0; f < expected.num_faces(); ++f) {
-            std::reverse(expected.face_vertices.begin() + expected.face_start[f] + 1,
-                         expected.face_vertices.begin() + expected.face_start[f + 1]);
-            for (FaceVaryingChannel& ch : expected.face_varying)
-                std::reverse(ch.corner_values.begin() + expected.face_start[f] + 1,
-                             ch.corner_values.begin() + expected.face_start[f + 1]);
-        }
+    const PolyMesh expected = mapped_as_the_input(refined, transformed);
     // Far from the origin two summation orders of the same stencils (or a translated or rotated
     // input's own rounding) part by a few ulps of the coordinates, more than a relative
     // tolerance of a small diagonal: the same allowance as the comparisons' (kRoundingUlps).
@@ -399,6 +407,36 @@ InvarianceCause explain_not_invariant(const Implementation& impl, const PolyMesh
                         "its refinement has a degenerate face at level " + std::to_string(level) + ": " + *face};
     return {DivergenceClass::Unexplained, "not explained by isolated vertices, non-manifold vertices, a weight table or "
                                           "a degenerate face"};
+}
+
+std::optional<DivergenceView> invariance_view(const Implementation& impl, const PolyMesh& input, const RefineRequest& request,
+                                            InputTransformation t, std::uint64_t seed, double timeout_seconds, bool isolate) {
+    const IsolatedTrace first = refine_isolated(impl, input, request, timeout_seconds, isolate);
+    const TransformedInput transformed = transform_input(input, t, seed);
+    const IsolatedTrace second = refine_isolated(impl, transformed.mesh, request, timeout_seconds, isolate,
+                                                 t == InputTransformation::Repeat ? kSecondHeapFill : kHeapFill);
+    if (!first.trace || !second.trace || first.trace->size() < 2) return std::nullopt;
+    const PolyMesh& theirs = second.trace->back();
+    const Correspondence m = match_nearest_and_faces(mapped_as_the_input(first.trace->back(), transformed), theirs);
+    if (m.method == MatchMethod::None) return std::nullopt;
+    DivergenceView view;
+    view.levels = *first.trace;
+    view.births.resize(view.levels.size() - 1);  // no provenance: the levels are the implementation's own
+    // The other run's last level, mapped back through the inverse of the transformation into
+    // the numbering of the first; earlier levels have no vertex map (empty), unmatched vertices NaN.
+    const Eigen::Matrix3d inverse = transformed.linear.inverse();
+    std::vector<Vec3> back(static_cast<size_t>(view.levels.back().num_vertices()), Vec3::Constant(NAN));
+    for (size_t i = 0; i < m.ref_to_ours.size(); ++i)
+        if (const int v = m.ref_to_ours[i]; v >= 0 && v < static_cast<int>(back.size()))
+            back[static_cast<size_t>(v)] = inverse * (theirs.positions[i] - transformed.offset);
+    std::vector<std::vector<Vec3>> levels(view.levels.size());
+    levels.back() = std::move(back);
+    view.references[invariance_view_label(impl.name(), t)] = std::move(levels);
+    return view;
+}
+
+std::string invariance_view_label(const std::string& implementation, InputTransformation t) {
+    return implementation + " under " + to_string(t);
 }
 
 InvarianceShrink shrink_not_invariant(const Implementation& impl, const PolyMesh& input, const RefineRequest& request,

@@ -14,6 +14,7 @@
 #include "crossdiv/verification/implementations/output_size.h"
 #include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/verification/implementations/tag_rules.h"
+#include "crossdiv/verification/pages/divergence_view_file.h"
 #include "crossdiv/verification/suite/operations.h"
 
 namespace crossdiv::verification {
@@ -181,6 +182,9 @@ CaseRecord run_invariance_case(const SuiteJob& job, const std::string& out_dir) 
     for (const std::string& note : notes) rec.detail["notes"].push_back(note);
 
     const std::string stem = "job" + std::to_string(job.index);
+    // The case's first finding, drawn for the viewer after the checks.
+    const Implementation* drawn = nullptr;
+    InvarianceCheck drawn_check;
     for (const Implementation* impl : impls) {
         const bool under_test = impl == &core_implementation() || (entry.subject && impl == entry.subject->program.get());
         const InvarianceReport report = check_invariance(*impl, input, request, transformations, keys.seed, tolerance, timeout);
@@ -192,8 +196,13 @@ CaseRecord run_invariance_case(const SuiteJob& job, const std::string& out_dir) 
         }
         for (const InvarianceCheck& check : report.checks) {
             std::optional<InvarianceCause> cause;
-            if (is_finding(check))
+            if (is_finding(check)) {
                 cause = explain_not_invariant(*impl, input, request, check, keys.seed, tolerance, timeout);
+                if (!drawn) {
+                    drawn = impl;
+                    drawn_check = check;
+                }
+            }
             rec.runs.push_back(check_run(*impl, under_test, check, cause, tolerance));
         }
         summary["invariant"] = report.invariant();
@@ -212,6 +221,16 @@ CaseRecord run_invariance_case(const SuiteJob& job, const std::string& out_dir) 
         rec.detail["implementations"].push_back(std::move(summary));
     }
     if (entry.subject) rec.detail["subject_name"] = entry.subject->name;
+    if (drawn && refined_face_count(input, request.scheme, request.levels) <= kViewMaxFaces)
+        if (const std::optional<DivergenceView> view =
+                invariance_view(*drawn, input, request, drawn_check.transformation, keys.seed, timeout)) {
+            const std::string name = "views/job" + std::to_string(job.index) + ".js";
+            create_output_folder((std::filesystem::path(out_dir) / "views").string());
+            write_divergence_view(*view, job.index, drawn->name(), (std::filesystem::path(out_dir) / name).string());
+            rec.detail["view"] = name;
+            rec.detail["view_reference"] = invariance_view_label(drawn->name(), drawn_check.transformation);
+            rec.detail["view_worst_vertex"] = drawn_check.worst_vertex;
+        }
     return rec;
 }
 

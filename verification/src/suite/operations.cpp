@@ -34,10 +34,6 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-/// 3D views larger than this (faces at the last level) are not written: about 1 MB of side
-/// file per view with four references, and a mesh any browser turns in real time.
-constexpr int kViewMaxFaces = 50000;
-
 /// The file of a case's minimal input, beside its view.
 std::string minimal_obj_name(const SuiteJob& job) { return "views/job" + std::to_string(job.index) + "-minimal.obj"; }
 

@@ -16,6 +16,10 @@
 
 namespace crossdiv::verification {
 
+/// 3D views larger than this (faces at the last level) are not written: about 1 MB of side
+/// file per view with four references, and a mesh any browser turns in real time.
+inline constexpr int kViewMaxFaces = 50000;
+
 /// A case's divergence shrunk to a small input that still shows it, shown beside its view.
 struct MinimalDivergence {
     std::string reference;  ///< the reference whose divergence was shrunk

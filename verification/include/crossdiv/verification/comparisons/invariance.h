@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "crossdiv/mesh/poly_mesh.h"
+#include "crossdiv/verification/comparisons/divergence_view.h"
 #include "crossdiv/verification/comparisons/input_transformation.h"
 #include "crossdiv/verification/harness/isolate.h"
 #include "crossdiv/verification/harness/verdict.h"
@@ -109,6 +110,17 @@ struct InvarianceCause {
 InvarianceCause explain_not_invariant(const Implementation& impl, const PolyMesh& input, const RefineRequest& request,
                                       const InvarianceCheck& finding, std::uint64_t seed, double tolerance,
                                       double timeout_seconds, bool isolate = true);
+
+/// A finding drawn for the report's 3D viewer: the implementation's levels on the input, and as
+/// its one "reference", named invariance_view_label, its last level on the input written
+/// otherwise, mapped back into the first run's numbering (positions through the inverse of the
+/// transformation's map, vertices matched as measure_invariance matches them). Nothing when
+/// either run fails or the two last levels do not match vertex for vertex.
+std::optional<DivergenceView> invariance_view(const Implementation& impl, const PolyMesh& input, const RefineRequest& request,
+                                            InputTransformation t, std::uint64_t seed, double timeout_seconds,
+                                            bool isolate = true);
+/// "cgal under reverse-faces": the reference name of an invariance view.
+std::string invariance_view_label(const std::string& implementation, InputTransformation t);
 
 /// A non-invariant input shrunk: the fewest faces found by delta debugging over faces (ddmin:
 /// Zeller and Hildebrandt 2002, as comparisons/shrink.h) on which the implementation is still
