@@ -473,17 +473,9 @@ PYBIND11_MODULE(crossdiv, m) {
               for (const Implementation* impl : checked) {
                   const InvarianceReport r = check_invariance(*impl, mesh, request, ts, seed, tolerance, timeout, true);
                   for (const InvarianceCheck& c : r.checks) {
-                      nlohmann::json row = {{"implementation", impl->name()},
-                                            {"transformation", to_string(c.transformation)},
-                                            {"result", to_string(c.result)},
-                                            {"exact", c.exact},
-                                            {"bit_identical", c.bit_identical},
-                                            {"max_rel", finite_or_null(c.max_rel)},
-                                            {"uv_max_rel", finite_or_null(c.uv_max_rel)},
-                                            {"worst_vertex", c.worst_vertex},
-                                            {"worst_valence", c.worst_valence},
-                                            {"explanation", c.explanation}};
-                      if (c.result == InvarianceResult::NotInvariant || c.result == InvarianceResult::Nondeterministic) {
+                      nlohmann::json row = to_json(c);
+                      row["implementation"] = impl->name();
+                      if (c.finding()) {
                           const InvarianceCause why = explain_not_invariant(*impl, mesh, request, c, seed, tolerance, timeout);
                           row["cause"] = {{"class", to_string(why.cls)}, {"why", why.why}};
                       }

@@ -72,30 +72,22 @@ int run_invariance(const InvarianceOptions& o, const Implementation* subject) {
             }
             for (const InvarianceCheck& c : r.checks) {
                 ++checks;
-                failures += c.result == InvarianceResult::NotInvariant || c.result == InvarianceResult::Nondeterministic;
+                failures += c.finding();
                 not_compared += c.result == InvarianceResult::NotCompared;
                 if (r.outcome.status == RunStatus::Ok)
                     fmt::print("  {:<17} {:<22} {:<16} {}\n", impl->name(), to_string(c.transformation), to_string(c.result),
                                c.explanation);
                 nlohmann::json cause = nullptr;
-                if (c.result == InvarianceResult::NotInvariant || c.result == InvarianceResult::Nondeterministic) {
+                if (c.finding()) {
                     // What the finding measures to be (a reference's class in the suite).
                     const InvarianceCause why =
                         explain_not_invariant(*impl, mesh, request, c, o.seed, o.tolerance, o.timeout, o.isolate);
                     fmt::print("  {:<17} {:<22} cause: {}: {}\n", "", "", to_string(why.cls), why.why);
                     cause = {{"class", to_string(why.cls)}, {"why", why.why}};
                 }
-                rows.push_back({{"transformation", to_string(c.transformation)},
-                                {"cause", cause},
-                                {"result", to_string(c.result)},
-                                {"exact", c.exact},
-                                {"bit_identical", c.bit_identical},
-                                {"faces_equal", c.faces_equal},
-                                {"max_rel", std::isfinite(c.max_rel) ? nlohmann::json(c.max_rel) : nlohmann::json(nullptr)},
-                                {"worst_vertex", c.worst_vertex},
-                                {"worst_valence", c.worst_valence},
-                                {"worst_boundary", c.worst_boundary},
-                                {"explanation", c.explanation}});
+                nlohmann::json row = to_json(c);
+                row["cause"] = cause;
+                rows.push_back(std::move(row));
             }
             // The first finding shrunk, where the input is small enough for delta debugging to be quick.
             if (const std::optional<InvarianceMinimal> m = shrink_first_finding(

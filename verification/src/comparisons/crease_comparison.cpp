@@ -8,6 +8,7 @@
 #include "crossdiv/verification/comparisons/refinement_comparison.h"
 #include "crossdiv/verification/harness/mesh_comparison.h"
 #include "crossdiv/verification/implementations/registry.h"
+#include "crossdiv/verification/harness/json_text.h"
 
 namespace crossdiv::verification {
 namespace {
@@ -103,13 +104,12 @@ std::vector<CreaseComparison> compare_crease_catalog() {
 }
 
 nlohmann::json to_json(const CreaseComparison& c) {
-    auto num = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
     nlohmann::json levels = nlohmann::json::array();
-    for (double x : c.max_rel_per_level) levels.push_back(num(x));
+    for (double x : c.max_rel_per_level) levels.push_back(finite_or_null(x));
     nlohmann::json j = {{"input", c.input},          {"scheme", to_string(c.scheme)}, {"method", c.method},
                         {"levels", c.levels},        {"edge_tags", c.edge_tags},     {"vertex_tags", c.vertex_tags}, {"hole_tags", c.hole_tags},
-                        {"verdict", to_string(c.verdict)},      {"max_rel", num(c.max_rel)},    {"max_rel_per_level", levels},
-                        {"faces_equal", c.faces_equal}, {"effect_of_tags", num(c.effect_of_tags)},
+                        {"verdict", to_string(c.verdict)},      {"max_rel", finite_or_null(c.max_rel)},    {"max_rel_per_level", levels},
+                        {"faces_equal", c.faces_equal}, {"effect_of_tags", finite_or_null(c.effect_of_tags)},
                         {"explanation", c.explanation}};
     if (!c.core_error.empty()) j["core_error"] = c.core_error;
     if (c.divergence_class != DivergenceClass::None) j["divergence_class"] = to_string(c.divergence_class);

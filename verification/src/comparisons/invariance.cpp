@@ -16,7 +16,9 @@
 #include "crossdiv/mesh/mesh_checks.h"
 #include "crossdiv/mesh/tri_mesh.h"
 #include "crossdiv/subdiv/nonmanifold.h"
+#include "crossdiv/verification/harness/json_text.h"
 #include "crossdiv/verification/harness/mesh_comparison.h"
+#include "crossdiv/verification/harness/mesh_topology.h"
 #include "harness/sci.h"
 
 namespace crossdiv::verification {
@@ -162,28 +164,10 @@ PolyMesh mapped_as_the_input(const PolyMesh& refined, const TransformedInput& tr
     return expected;
 }
 
-/// The largest number of distinct neighbours of a vertex along the faces' edges.
+/// The largest number of distinct edge neighbours of a vertex.
 int max_valence(const PolyMesh& mesh) {
-    std::vector<std::pair<int, int>> edges;
-    edges.reserve(mesh.face_vertices.size() * 2);
-    for (int f = 0; f < mesh.num_faces(); ++f) {
-        const int* c = mesh.face(f);
-        const int n = mesh.face_size(f);
-        for (int k = 0; k < n; ++k) {
-            const int a = c[k], b = c[(k + 1) % n];
-            if (a == b) continue;
-            edges.emplace_back(a, b);
-            edges.emplace_back(b, a);
-        }
-    }
-    std::sort(edges.begin(), edges.end());
-    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-    int best = 0;
-    for (size_t i = 0, j = 0; i < edges.size(); i = j) {
-        while (j < edges.size() && edges[j].first == edges[i].first) ++j;
-        best = std::max(best, static_cast<int>(j - i));
-    }
-    return best;
+    const std::vector<int> valence = mesh_topology(mesh).valence;
+    return valence.empty() ? 0 : *std::max_element(valence.begin(), valence.end());
 }
 
 /// The first face with fewer than 3 distinct corners, in the words of the mesh checker.
@@ -205,10 +189,22 @@ const char* to_string(InvarianceResult r) {
     return "?";
 }
 
+nlohmann::json to_json(const InvarianceCheck& c) {
+    return {{"transformation", to_string(c.transformation)},
+            {"result", to_string(c.result)},
+            {"exact", c.exact},
+            {"bit_identical", c.bit_identical},
+            {"faces_equal", c.faces_equal},
+            {"max_rel", finite_or_null(c.max_rel)},
+            {"uv_max_rel", finite_or_null(c.uv_max_rel)},
+            {"worst_vertex", c.worst_vertex},
+            {"worst_valence", c.worst_valence},
+            {"worst_boundary", c.worst_boundary},
+            {"explanation", c.explanation}};
+}
+
 bool InvarianceReport::invariant() const {
-    return std::none_of(checks.begin(), checks.end(), [](const InvarianceCheck& c) {
-        return c.result == InvarianceResult::NotInvariant || c.result == InvarianceResult::Nondeterministic;
-    });
+    return std::none_of(checks.begin(), checks.end(), [](const InvarianceCheck& c) { return c.finding(); });
 }
 
 InvarianceCheck measure_invariance(const PolyMesh& refined, const PolyMesh& refined_transformed,
@@ -446,8 +442,7 @@ InvarianceShrink shrink_not_invariant(const Implementation& impl, const PolyMesh
     const auto shows = [&](const PolyMesh& mesh, InvarianceCheck* check) {
         ++out.tests;
         const InvarianceReport r = check_invariance(impl, mesh, request, {t}, seed, tolerance, timeout_seconds, isolate);
-        const bool bad = r.checks.size() == 1 && (r.checks[0].result == InvarianceResult::NotInvariant ||
-                                                  r.checks[0].result == InvarianceResult::Nondeterministic);
+        const bool bad = r.checks.size() == 1 && r.checks[0].finding();
         if (bad && check) *check = r.checks[0];
         return bad;
     };

@@ -14,6 +14,7 @@
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/verification/harness/correspondence.h"
 #include "crossdiv/verification/implementations/registry.h"
+#include "crossdiv/verification/harness/json_text.h"
 
 namespace crossdiv::verification {
 namespace {
@@ -118,7 +119,6 @@ LimitComparison compare_limit_points(const adapters::LimitPoints& ours, const st
 }
 
 nlohmann::json to_json(const LimitComparison& c) {
-    const auto finite = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
     return {{"input", c.input},
             {"scheme", to_string(c.scheme)},
             {"rule", c.rule},
@@ -128,13 +128,13 @@ nlohmann::json to_json(const LimitComparison& c) {
             {"reference", "opensubdiv"},
             {"outcome", c.outcome.summary()},
             {"verdict", to_string(c.verdict)},
-            {"max_rel_position", finite(c.max_rel_position)},
+            {"max_rel_position", finite_or_null(c.max_rel_position)},
             {"normals_compared", c.normals_compared},
-            {"max_normal_angle", finite(c.max_normal_angle)},
+            {"max_normal_angle", finite_or_null(c.max_normal_angle)},
             {"uv", c.uv ? nlohmann::json{{"compared", c.uv->compared()},
                                          {"not_compared", c.uv->not_compared},
                                          {"corners", c.uv->corners},
-                                         {"max_rel", finite(c.uv->max_rel)}}
+                                         {"max_rel", finite_or_null(c.uv->max_rel)}}
                         : nlohmann::json(nullptr)},
             {"explanation", c.explanation}};
 }
@@ -290,25 +290,23 @@ ConvergenceRow convergence(const std::string& scheme, int n, int levels) {
 }
 
 nlohmann::json to_json(const SpectrumRow& r) {
-    const auto finite = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
     return {{"scheme", r.scheme},
             {"valence", r.valence},
             {"eigenvalues", r.eigenvalues},
             {"closed_form", r.closed_form},
-            {"max_difference", finite(r.max_difference)},
-            {"max_imaginary", finite(r.max_imaginary)},
-            {"subdominant", finite(r.subdominant)},
+            {"max_difference", finite_or_null(r.max_difference)},
+            {"max_imaginary", finite_or_null(r.max_imaginary)},
+            {"subdominant", finite_or_null(r.subdominant)},
             {"subdominant_multiplicity", r.subdominant_multiplicity},
-            {"next", finite(r.next)},
+            {"next", finite_or_null(r.next)},
             {"regular_characteristic_map", r.regular_characteristic_map},
-            {"vertex_rate", finite(r.vertex_rate)}};
+            {"vertex_rate", finite_or_null(r.vertex_rate)}};
 }
 
 nlohmann::json to_json(const ConvergenceRow& r) {
-    const auto finite = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
     return {{"scheme", r.scheme},       {"valence", r.valence},
-            {"distance", r.distance},   {"fitted_rate", finite(r.fitted_rate)},
-            {"vertex_rate", finite(r.vertex_rate)}, {"subdominant", finite(r.subdominant)}};
+            {"distance", r.distance},   {"fitted_rate", finite_or_null(r.fitted_rate)},
+            {"vertex_rate", finite_or_null(r.vertex_rate)}, {"subdominant", finite_or_null(r.subdominant)}};
 }
 
 }  // namespace crossdiv::verification

@@ -16,6 +16,7 @@
 #include "crossdiv/verification/harness/mesh_topology.h"
 #include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/verification/properties/rule_oracle.h"
+#include "crossdiv/verification/harness/json_text.h"
 
 namespace crossdiv::verification {
 namespace {
@@ -914,10 +915,9 @@ namespace {
 
 nlohmann::json subject_json(const RefinementComparison& c) {
     using nlohmann::json;
-    auto finite = [](double x) { return std::isfinite(x) ? json(x) : json(nullptr); };
     auto fits = [&](const std::vector<RuleFit>& list) {
         json a = json::array();
-        for (const RuleFit& f : list) a.push_back({{"rule", f.name}, {"max_rel", finite(f.max_rel)}, {"fits", f.fits}});
+        for (const RuleFit& f : list) a.push_back({{"rule", f.name}, {"max_rel", finite_or_null(f.max_rel)}, {"fits", f.fits}});
         return a;
     };
     json s = {{"name", c.subject},
@@ -939,7 +939,7 @@ nlohmann::json subject_json(const RefinementComparison& c) {
                       {"classes", rows}};
         json others = json::array();
         for (const OtherSchemeFit& f : c.rules->other_schemes)
-            others.push_back({{"scheme", to_string(f.scheme)}, {"rule", f.rule}, {"max_rel", finite(f.max_rel)}, {"fits", f.fits}});
+            others.push_back({{"scheme", to_string(f.scheme)}, {"rule", f.rule}, {"max_rel", finite_or_null(f.max_rel)}, {"fits", f.fits}});
         s["rules"]["other_schemes"] = others;
     }
     if (c.uv_rules) {
@@ -947,13 +947,13 @@ nlohmann::json subject_json(const RefinementComparison& c) {
         for (const UvClassFit& r : c.uv_rules->rows) {
             json fits = json::array();
             for (size_t k = 0; k < r.max_rel.size(); ++k)
-                fits.push_back({{"rule", to_string(kFaceVaryingRules[k])}, {"max_rel", finite(r.max_rel[k])},
+                fits.push_back({{"rule", to_string(kFaceVaryingRules[k])}, {"max_rel", finite_or_null(r.max_rel[k])},
                                 {"fits", r.max_rel[k] <= c.uv_rules->tolerance}});
             rows.push_back({{"class", to_string(r.cls)}, {"corners", r.corners}, {"worst_corner", r.worst_corner}, {"fits", fits}});
         }
         json whole = json::array();
         for (size_t k = 0; k < c.uv_rules->whole.size(); ++k)
-            whole.push_back({{"rule", to_string(kFaceVaryingRules[k])}, {"max_rel", finite(c.uv_rules->whole[k])},
+            whole.push_back({{"rule", to_string(kFaceVaryingRules[k])}, {"max_rel", finite_or_null(c.uv_rules->whole[k])},
                              {"fits", c.uv_rules->whole[k] <= c.uv_rules->tolerance}});
         s["uv_rules"] = {{"rule", c.uv_rules->rule ? json(to_string(*c.uv_rules->rule)) : json(nullptr)},
                          {"summary", c.uv_rules->summary()},
@@ -975,7 +975,6 @@ nlohmann::json to_json(const RefinementComparison& c) {
                     {"boundary_loops", t.boundary_loops}};
     };
     auto vec = [](const Vec3& v) { return json::array({v.x(), v.y(), v.z()}); };
-    auto finite = [](double x) { return std::isfinite(x) ? json(x) : json(nullptr); };
     json worst = nullptr;
     if (c.worst_vertex) {
         json at = json::object();
@@ -1011,8 +1010,8 @@ nlohmann::json to_json(const RefinementComparison& c) {
                 uv["divergence_class"] = to_string(r.uv->outcome.cls);
                 uv["explanation"] = r.uv->explanation;
                 uv["corners"] = r.uv->comparison.corners;
-                uv["max_abs"] = finite(r.uv->comparison.max_abs);
-                uv["max_rel"] = finite(r.uv->comparison.max_rel);
+                uv["max_abs"] = finite_or_null(r.uv->comparison.max_abs);
+                uv["max_rel"] = finite_or_null(r.uv->comparison.max_rel);
                 uv["uv_box"] = r.uv->comparison.uv_box;
                 if (r.uv->follows) {
                     uv["follows"] = std::string(to_string(*r.uv->follows));
@@ -1022,7 +1021,7 @@ nlohmann::json to_json(const RefinementComparison& c) {
             }
             run["uv"] = uv;
         }
-        if (!std::isnan(r.hausdorff_rel)) run["hausdorff_rel"] = finite(r.hausdorff_rel);
+        if (!std::isnan(r.hausdorff_rel)) run["hausdorff_rel"] = finite_or_null(r.hausdorff_rel);
         if (r.outcome.status == RunStatus::Ok && c.core_error.empty()) {
             run["match"] = {{"method", to_string(r.correspondence.method)}, {"note", r.correspondence.note}};
             if (r.correspondence.method != MatchMethod::None) {
@@ -1032,11 +1031,11 @@ nlohmann::json to_json(const RefinementComparison& c) {
                                    {"faces_only_in_core", r.comparison.faces_only_in_ours},
                                    {"faces_only_in_reference", r.comparison.faces_only_in_ref}};
                 json levels = json::array();
-                for (double e : r.level_max_rel) levels.push_back(finite(e));
-                run["positions"] = {{"diagonal", r.comparison.diagonal},  {"max_abs", finite(r.comparison.max_abs)},
-                                    {"rms_abs", finite(r.comparison.rms_abs)}, {"max_rel", finite(r.comparison.max_rel)},
-                                    {"rms_rel", finite(r.comparison.rms_rel)}, {"level_max_rel", levels},
-                                    {"max_rel_with_reference_rule", finite(r.max_rel_with_reference_rule)},
+                for (double e : r.level_max_rel) levels.push_back(finite_or_null(e));
+                run["positions"] = {{"diagonal", r.comparison.diagonal},  {"max_abs", finite_or_null(r.comparison.max_abs)},
+                                    {"rms_abs", finite_or_null(r.comparison.rms_abs)}, {"max_rel", finite_or_null(r.comparison.max_rel)},
+                                    {"rms_rel", finite_or_null(r.comparison.rms_rel)}, {"level_max_rel", levels},
+                                    {"max_rel_with_reference_rule", finite_or_null(r.max_rel_with_reference_rule)},
                                     {"worst", worst_list}};
             }
         }
@@ -1050,7 +1049,7 @@ nlohmann::json to_json(const RefinementComparison& c) {
                 {"levels", c.levels},
                 {"core_seconds", c.core_seconds},
                 {"tier", to_string(c.tier)},
-                {"tolerance_rel", finite(c.tolerance)},
+                {"tolerance_rel", finite_or_null(c.tolerance)},
                 {"core_error", c.core_error},
                 {"all_agree", c.all_agree()},
                 {"runs", runs},

@@ -22,10 +22,6 @@ namespace {
 
 using nlohmann::json;
 
-bool is_finding(const InvarianceCheck& c) {
-    return c.result == InvarianceResult::NotInvariant || c.result == InvarianceResult::Nondeterministic;
-}
-
 /// The rule flags of a reproduce line: what `crossdiv invariance` needs to run the same rule.
 std::string rule_flags(const RefineRequest& r) {
     std::string s;
@@ -53,15 +49,9 @@ RunRecord check_run(const Implementation& impl, bool under_test, const Invarianc
         r.worst_valence = check.worst_valence;
         r.worst_boundary = check.worst_boundary ? 1 : 0;
     }
-    r.detail = {{"result", to_string(check.result)},
-                {"exact", check.exact},
-                {"bit_identical", check.bit_identical},
-                {"faces_equal", check.faces_equal},
-                {"max_rel", finite_or_null(check.max_rel)},
-                {"uv_max_rel", finite_or_null(check.uv_max_rel)},
-                {"worst_vertex", check.worst_vertex},
-                {"worst_valence", check.worst_valence},
-                {"worst_boundary", check.worst_boundary}};
+    r.detail = to_json(check);
+    r.detail.erase("transformation");  // the run's check names it
+    r.detail.erase("explanation");     // the run's own, with the cause
     switch (check.result) {
         case InvarianceResult::Invariant: r.outcome = {Verdict::Agree, DivergenceClass::None}; break;
         case InvarianceResult::NotCompared: r.outcome = {Verdict::NotCompared, DivergenceClass::None}; break;
@@ -117,7 +107,7 @@ std::optional<InvarianceMinimal> shrink_first_finding(const Implementation& impl
                                                       const RefineRequest& request, const InvarianceReport& report,
                                                       std::uint64_t seed, double tolerance, double timeout_seconds,
                                                       bool isolate, const std::string& folder, const std::string& file_stem) {
-    const auto finding = std::find_if(report.checks.begin(), report.checks.end(), is_finding);
+    const auto finding = std::find_if(report.checks.begin(), report.checks.end(), [](const InvarianceCheck& c) { return c.finding(); });
     if (finding == report.checks.end() || input.num_faces() > kInvarianceShrinkMaxFaces) return std::nullopt;
     InvarianceShrink s;
     try {
@@ -196,7 +186,7 @@ CaseRecord run_invariance_case(const SuiteJob& job, const std::string& out_dir) 
         }
         for (const InvarianceCheck& check : report.checks) {
             std::optional<InvarianceCause> cause;
-            if (is_finding(check)) {
+            if (check.finding()) {
                 cause = explain_not_invariant(*impl, input, request, check, keys.seed, tolerance, timeout);
                 if (!drawn) {
                     drawn = impl;

@@ -19,6 +19,7 @@
 /// whose positions all agree but whose faces positions cannot match.
 
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -59,7 +60,15 @@ struct InvarianceCheck {
     int worst_valence = 0;
     bool worst_boundary = false;
     std::string explanation;  ///< one sentence with the figures
+
+    /// Not invariant, or nondeterministic: what is reported, shrunk and explained.
+    bool finding() const { return result == InvarianceResult::NotInvariant || result == InvarianceResult::Nondeterministic; }
 };
+
+/// The check's fields as the CLI's --json, the suite's runs and the Python module write them:
+/// transformation, result, exact, bit_identical, faces_equal, max_rel, uv_max_rel (null when not
+/// measured), the worst vertex, the explanation.
+nlohmann::json to_json(const InvarianceCheck& check);
 
 /// Compares `refined` (the last level of the input's refinement) with `refined_transformed`
 /// (of `transformed.mesh`'s) as the transformation says they relate. `float_ulps`: for an
