@@ -492,7 +492,7 @@ PYBIND11_MODULE(crossdiv, m) {
           "invariance` checks it: core and every reference of `scheme` (or `impls`, or `subject`, a function "
           "subject(V, F) -> (V, F) refining one level, run in a child process) refine the mesh and the mesh with its "
           "corners rotated, faces reordered, vertices relabelled, orientation reversed, moved, scaled, mirrored, "
-          "rotated, and run again (`transforms`: their names; all when empty). One dict per implementation and "
+          "rotated, its connected components refined apart, its levels run one at a time, and run again (`transforms`: their names; all when empty). One dict per implementation and "
           "transformation: result (invariant, not-invariant, nondeterministic, not-compared), exact, bit_identical, "
           "max_rel, the worst vertex, the explanation, and for a finding its measured cause {class, why}.");
 }

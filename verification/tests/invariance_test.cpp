@@ -13,6 +13,8 @@
 #include "crossdiv/datasets/edge_cases.h"
 #include "crossdiv/error.h"
 #include "crossdiv/mesh/poly_connectivity.h"
+#include "crossdiv/mesh/tri_mesh.h"
+#include "crossdiv/subdiv/bilinear.h"
 #include "crossdiv/verification/comparisons/input_transformation.h"
 #include "crossdiv/verification/comparisons/invariance.h"
 #include "crossdiv/verification/implementations/callback_implementation.h"
@@ -99,6 +101,70 @@ TEST(InputTransformation, EachOneByHand) {
     EXPECT_THROW(input_transformation_from_string("spin-faces"), InputError);
 }
 
+TEST(InputTransformation, ComponentsByHand) {
+    // Faces 0 and 2 share vertex 2 (a bowtie: one component), face 1 stands apart, vertex 8 no
+    // face uses; the tags and the texture coordinates go with their parts.
+    PolyMesh m;
+    for (int v = 0; v < 9; ++v) m.positions.push_back(Vec3(v, v * v, 0));
+    m.add_face({0, 1, 2});
+    m.add_face({3, 4, 5});
+    m.add_face({2, 6, 7});
+    m.creases.edges = {{4, 5, 1.5f}};
+    m.creases.vertices = {{6, 2.0f}};
+    m.creases.holes = {2};
+    FaceVaryingChannel uv;
+    uv.dimension = 1;
+    for (int c = 0; c < 9; ++c) {
+        uv.values.push_back(10 + c);
+        uv.corner_values.push_back(c);
+    }
+    m.face_varying.push_back(uv);
+    const std::vector<PolyMesh> parts = connected_components(m);
+    ASSERT_EQ(parts.size(), 2u);
+    // The first: faces 0 and 2 over vertices 0 1 2 6 7 and the unused 8, in input order.
+    EXPECT_EQ(parts[0].positions, (std::vector<Vec3>{m.positions[0], m.positions[1], m.positions[2], m.positions[6],
+                                                     m.positions[7], m.positions[8]}));
+    EXPECT_EQ(parts[0].face_vertices, (std::vector<int>{0, 1, 2, 2, 3, 4}));
+    EXPECT_EQ(parts[0].creases.holes, (std::vector<int>{1}));
+    ASSERT_EQ(parts[0].creases.vertices.size(), 1u);
+    EXPECT_EQ(parts[0].creases.vertices[0].v, 3);
+    EXPECT_TRUE(parts[0].creases.edges.empty());
+    EXPECT_EQ(parts[0].face_varying[0].corner_values, (std::vector<int>{0, 1, 2, 6, 7, 8}));
+    // The second: face 1 alone, its crease renumbered.
+    EXPECT_EQ(parts[1].face_vertices, (std::vector<int>{0, 1, 2}));
+    ASSERT_EQ(parts[1].creases.edges.size(), 1u);
+    EXPECT_EQ(parts[1].creases.edges[0].a, 1);
+    EXPECT_EQ(parts[1].creases.edges[0].b, 2);
+    EXPECT_EQ(parts[1].face_varying[0].corner_values, (std::vector<int>{3, 4, 5}));
+    // A connected mesh is its own only part; components and level-by-level leave the input as it is.
+    EXPECT_EQ(connected_components(datasets::bundled_mesh("icosahedron")).size(), 1u);
+    for (InputTransformation t : {InputTransformation::SplitComponents, InputTransformation::LevelByLevel}) {
+        EXPECT_TRUE(runs_otherwise(t));
+        EXPECT_EQ(transform_input(m, t, 1).mesh.face_vertices, m.face_vertices);
+        EXPECT_FALSE(transform_input(m, t, 1).exact);
+    }
+}
+
+/// `a` and `b` side by side, `b` moved along x past `a`'s box: a mesh of two components.
+PolyMesh beside(const PolyMesh& a, const PolyMesh& b) {
+    PolyMesh out = a;
+    double right = -INFINITY;
+    for (const Vec3& p : a.positions) right = std::max(right, p.x());
+    for (const Vec3& p : b.positions) out.positions.push_back(p + Vec3(right + 4, 0, 0));
+    for (int f = 0; f < b.num_faces(); ++f) {
+        std::vector<int> corners(b.face(f), b.face(f) + b.face_size(f));
+        for (int& v : corners) v += a.num_vertices();
+        out.add_face(corners);
+    }
+    for (size_t ch = 0; ch < out.face_varying.size(); ++ch) {
+        FaceVaryingChannel& into = out.face_varying[ch];
+        const int offset = into.num_values();
+        into.values.insert(into.values.end(), b.face_varying[ch].values.begin(), b.face_varying[ch].values.end());
+        for (int v : b.face_varying[ch].corner_values) into.corner_values.push_back(v + offset);
+    }
+    return out;
+}
+
 /// Each transformation's check of `impl` on `mesh`.
 InvarianceReport checked(const Implementation& impl, const PolyMesh& mesh, Scheme scheme, int levels) {
     RefineRequest r{scheme, {}, levels};
@@ -111,18 +177,126 @@ const InvarianceCheck& check_of(const InvarianceReport& r, InputTransformation t
 }
 
 TEST(Invariance, CoreIsInvariantUnderEveryTransformation) {
-    for (const char* name : {"icosahedron", "open-patch", "octahedron"}) {
-        const InvarianceReport r = checked(core_implementation(), datasets::bundled_mesh(name), Scheme::Loop, 2);
+    const PolyMesh two = beside(datasets::bundled_mesh("icosahedron"), datasets::bundled_mesh("open-patch"));
+    for (const auto& [name, mesh] : {std::pair{"icosahedron", datasets::bundled_mesh("icosahedron")},
+                                     std::pair{"open-patch", datasets::bundled_mesh("open-patch")},
+                                     std::pair{"octahedron", datasets::bundled_mesh("octahedron")},
+                                     std::pair{"icosahedron beside open-patch", two}}) {
+        const InvarianceReport r = checked(core_implementation(), mesh, Scheme::Loop, 2);
         ASSERT_EQ(r.checks.size(), kInputTransformations.size());
-        for (const InvarianceCheck& c : r.checks)
-            EXPECT_EQ(c.result, InvarianceResult::Invariant) << name << " " << to_string(c.transformation) << ": " << c.explanation;
+        for (const InvarianceCheck& c : r.checks) {
+            // A connected mesh has no parts to refine apart.
+            const bool one_part = c.transformation == InputTransformation::SplitComponents && mesh.num_vertices() != two.num_vertices();
+            EXPECT_EQ(c.result, one_part ? InvarianceResult::NotCompared : InvarianceResult::Invariant)
+                << name << " " << to_string(c.transformation) << ": " << c.explanation;
+        }
         // Exact transformations are bit for bit.
         EXPECT_TRUE(check_of(r, InputTransformation::Scale).bit_identical) << name;
         EXPECT_TRUE(check_of(r, InputTransformation::Repeat).bit_identical) << name;
     }
-    const InvarianceReport cc = checked(core_implementation(), datasets::bundled_mesh("quad-cube"), Scheme::CatmullClark, 2);
+    const InvarianceReport cc = checked(core_implementation(), beside(datasets::bundled_mesh("quad-cube"), datasets::bundled_mesh("quad-cube")),
+                                        Scheme::CatmullClark, 2);
     for (const InvarianceCheck& c : cc.checks)
-        EXPECT_EQ(c.result, InvarianceResult::Invariant) << "quad-cube " << to_string(c.transformation) << ": " << c.explanation;
+        EXPECT_EQ(c.result, InvarianceResult::Invariant) << "two quad-cubes " << to_string(c.transformation) << ": " << c.explanation;
+}
+
+TEST(Invariance, LevelByLevelIsComparedWhereTheRuleComposes) {
+    const auto level_by_level = [](const PolyMesh& mesh, RefineRequest request) {
+        return check_invariance(core_implementation(), mesh, request, {InputTransformation::LevelByLevel}, 1, 1e-12, 60, false).checks.at(0);
+    };
+    const PolyMesh icosahedron = datasets::bundled_mesh("icosahedron");
+    const PolyMesh patch = datasets::bundled_mesh("open-patch");
+    // One level has nothing to run level by level; a tagged mesh's levels lose their tags.
+    const InvarianceCheck one = level_by_level(icosahedron, {Scheme::Loop, {}, 1});
+    EXPECT_EQ(one.result, InvarianceResult::NotCompared);
+    EXPECT_EQ(one.explanation, "one level: nothing to run level by level");
+    PolyMesh tagged = icosahedron;
+    tagged.creases.edges = {{icosahedron.face(0)[0], icosahedron.face(0)[1], 2.0f}};
+    const InvarianceCheck tags = level_by_level(tagged, {Scheme::Loop, {}, 2});
+    EXPECT_EQ(tags.result, InvarianceResult::NotCompared);
+    EXPECT_NE(tags.explanation.find("1 crease and 0 corner tag(s)"), std::string::npos) << tags.explanation;
+    // Two triangles back to back: level 1 holds each face's interior edges twice over on the
+    // same vertex pairs, which a face list read back makes one edge; a face naming a vertex twice
+    // has the two halves of its degenerate edge. Neither can be written out as faces.
+    const InvarianceCheck pillow = level_by_level(datasets::edge_case("valence-2").mesh, {Scheme::Loop, {}, 2});
+    EXPECT_EQ(pillow.result, InvarianceResult::NotCompared);
+    EXPECT_NE(pillow.explanation.find("level 1's result has 3 vertex pairs"), std::string::npos) << pillow.explanation;
+    const InvarianceCheck repeated = level_by_level(datasets::edge_case("repeated-vertex-triangle").mesh, {Scheme::Loop, {}, 2});
+    EXPECT_EQ(repeated.result, InvarianceResult::NotCompared);
+    EXPECT_NE(repeated.explanation.find("repeated vertex 0"), std::string::npos) << repeated.explanation;
+    // A bowtie's children are bowties again: compared, and core composes.
+    EXPECT_EQ(level_by_level(datasets::edge_case("bowtie").mesh, {Scheme::Loop, {}, 2}).result, InvarianceResult::Invariant);
+    // sqrt3 counted from the input trisects its boundary every second level: compared on a
+    // closed mesh, not on one with a boundary; restarted each level, compared on both.
+    RefineRequest sqrt3{Scheme::Sqrt3, {}, 2};
+    sqrt3.rule.sqrt3.parity = Sqrt3Parity::CountFromInput;
+    EXPECT_EQ(level_by_level(icosahedron, sqrt3).result, InvarianceResult::Invariant);
+    const InvarianceCheck bounded = level_by_level(patch, sqrt3);
+    EXPECT_EQ(bounded.result, InvarianceResult::NotCompared);
+    EXPECT_NE(bounded.explanation.find("every second level"), std::string::npos) << bounded.explanation;
+    sqrt3.rule.sqrt3.parity = Sqrt3Parity::RestartEachLevel;
+    EXPECT_EQ(level_by_level(patch, sqrt3).result, InvarianceResult::Invariant);
+    // Every scheme composes, on a mesh with a boundary: core's levels one at a time are its
+    // levels in one run, within the strict tier (its multi-level Loop sums the last level in
+    // another order: 4e-17 of the diagonal apart).
+    for (Scheme scheme : all_schemes()) {
+        RefineRequest request{scheme, {}, 3};
+        request.rule.sqrt3.parity = Sqrt3Parity::RestartEachLevel;
+        const InvarianceCheck c = level_by_level(traits(scheme).triangles ? patch : datasets::bundled_mesh("quad-cube"), request);
+        EXPECT_EQ(c.result, InvarianceResult::Invariant) << to_string(scheme) << ": " << c.explanation;
+        EXPECT_LE(c.max_rel, 1e-15) << to_string(scheme) << ": " << c.explanation;
+    }
+}
+
+TEST(Invariance, ASubjectThatSmoothsOnceAfterSplittingIsNotInvariantLevelByLevel) {
+    // Catmull-Clark done as n - 1 bilinear splits and one smoothing step: right for one level
+    // (and so run one level at a time), wrong for two.
+    const std::unique_ptr<Implementation> once =
+        make_callback_implementation("smooth-once", {Scheme::CatmullClark}, [](const PolyMesh& m, const RefineRequest& r) {
+            RefineRequest last = r;
+            last.levels = 1;
+            return core_implementation().refine(bilinear_subdivide(m, r.levels - 1), last).back();
+        });
+    const PolyMesh cube = datasets::bundled_mesh("quad-cube");
+    const InvarianceCheck c =
+        check_invariance(*once, cube, {Scheme::CatmullClark, {}, 2}, {InputTransformation::LevelByLevel}, 1, 1e-12, 60, false).checks.at(0);
+    EXPECT_EQ(c.result, InvarianceResult::NotInvariant) << c.explanation;
+    EXPECT_TRUE(c.faces_equal);  // the same faces, other positions
+    EXPECT_GT(c.max_rel, 1e-3);
+    EXPECT_EQ(c.worst_valence, 3);  // a cube corner
+    // The same subject passes every transformation that writes the input otherwise.
+    const InvarianceCheck rot =
+        check_invariance(*once, cube, {Scheme::CatmullClark, {}, 2}, {InputTransformation::RotateCorners}, 1, 1e-12, 60, false).checks.at(0);
+    EXPECT_EQ(rot.result, InvarianceResult::Invariant) << rot.explanation;
+}
+
+TEST(Invariance, ASubjectThatKeepsTheWholesSizeIsNotInvariantOverComponents) {
+    // Loop, then the result scaled about its centroid back to the input's bounding-box
+    // diagonal (a "keep the size" option): a property of the whole mesh, so the parts refined
+    // apart are scaled otherwise. Every map and order leaves it alone.
+    const std::unique_ptr<Implementation> sized =
+        make_callback_implementation("keep-size", {Scheme::Loop}, [](const PolyMesh& m, const RefineRequest& r) {
+            PolyMesh out = core_implementation().refine(m, r).back();
+            Vec3 centroid = Vec3::Zero();
+            for (const Vec3& p : out.positions) centroid += p / out.num_vertices();
+            const double ratio = bounding_box_diagonal(m.positions) / bounding_box_diagonal(out.positions);
+            for (Vec3& p : out.positions) p = centroid + ratio * (p - centroid);
+            return out;
+        });
+    const PolyMesh two = beside(datasets::bundled_mesh("icosahedron"), datasets::bundled_mesh("open-patch"));
+    const std::vector<InvarianceCheck> checks =
+        check_invariance(*sized, two, {Scheme::Loop, {}, 1},
+                         {InputTransformation::SplitComponents, InputTransformation::RotateCorners, InputTransformation::Scale},
+                         1, 1e-12, 60, false).checks;
+    EXPECT_EQ(checks.at(0).result, InvarianceResult::NotInvariant) << checks[0].explanation;
+    EXPECT_GT(checks[0].max_rel, 1e-3) << checks[0].explanation;  // too far to match: the point sets' distance
+    EXPECT_EQ(checks.at(1).result, InvarianceResult::Invariant) << checks[1].explanation;
+    EXPECT_EQ(checks.at(2).result, InvarianceResult::Invariant) << checks[2].explanation;
+    // Its finding shrinks to a face of each component: the fewest that still make two parts.
+    const InvarianceShrink s =
+        shrink_not_invariant(*sized, two, {Scheme::Loop, {}, 1}, InputTransformation::SplitComponents, 1, 1e-12, 60, false);
+    EXPECT_EQ(s.minimal.num_faces(), 2);
+    EXPECT_EQ(connected_components(s.minimal).size(), 2u);
 }
 
 TEST(Invariance, TextureCoordinatesAreCheckedToo) {
@@ -133,9 +307,15 @@ TEST(Invariance, TextureCoordinatesAreCheckedToo) {
     const InvarianceReport core = check_invariance(core_implementation(), mesh, request,
                                                    {kInputTransformations.begin(), kInputTransformations.end()}, 1, 1e-12, 60, false);
     for (const InvarianceCheck& c : core.checks) {
+        if (c.transformation == InputTransformation::SplitComponents) continue;  // one component: below
         EXPECT_EQ(c.result, InvarianceResult::Invariant) << to_string(c.transformation) << ": " << c.explanation;
         EXPECT_LE(c.uv_max_rel, 1e-12) << to_string(c.transformation);
     }
+    // Two copies refined apart: their channels, concatenated, are the channel of the whole.
+    const InvarianceCheck apart = check_invariance(core_implementation(), beside(mesh, mesh), request,
+                                                   {InputTransformation::SplitComponents}, 1, 1e-12, 60, false).checks.at(0);
+    EXPECT_EQ(apart.result, InvarianceResult::Invariant) << apart.explanation;
+    EXPECT_LE(apart.uv_max_rel, 1e-12) << apart.explanation;
     const std::unique_ptr<Implementation> shifty =
         make_callback_implementation("uv-shift", {Scheme::CatmullClark}, [](const PolyMesh& m, const RefineRequest& r) {
             PolyMesh out = core_implementation().refine(m, r).back();
@@ -403,7 +583,9 @@ TEST(InvarianceCase, APlantedSubjectFailsWithItsMinimalInputAndCoreIsInvariant) 
     ASSERT_EQ(core.runs.size(), kInputTransformations.size());
     for (const RunRecord& r : core.runs) {
         EXPECT_EQ(r.subject, "core");
-        EXPECT_EQ(outcome_label(core, r), "agree") << r.check << ": " << r.explanation;
+        // One component and one level: nothing to refine apart or level by level.
+        const bool nothing_to_run = r.check == "components" || r.check == "level-by-level";
+        EXPECT_EQ(outcome_label(core, r), nothing_to_run ? "not-compared" : "agree") << r.check << ": " << r.explanation;
     }
     EXPECT_FALSE(core.detail["implementations"][0].contains("minimal"));
 

@@ -7,6 +7,7 @@
 #include <random>
 
 #include "crossdiv/error.h"
+#include "crossdiv/verification/comparisons/shrink.h"
 
 namespace crossdiv::verification {
 namespace {
@@ -24,6 +25,8 @@ constexpr std::pair<InputTransformation, const char*> kNames[] = {
     {InputTransformation::SwapAxes, "swap-axes"},
     {InputTransformation::Mirror, "mirror"},
     {InputTransformation::Rotate, "rotate"},
+    {InputTransformation::SplitComponents, "components"},
+    {InputTransformation::LevelByLevel, "level-by-level"},
     {InputTransformation::Repeat, "repeat"},
 };
 
@@ -100,6 +103,39 @@ InputTransformation input_transformation_from_string(std::string_view name) {
         known += (known.empty() ? "" : ", ") + std::string(n);
     }
     throw InputError("unknown transformation '" + std::string(name) + "' (known: " + known + ")");
+}
+
+std::vector<PolyMesh> connected_components(const PolyMesh& mesh) {
+    // Union-find over the vertices, each face joining its corners.
+    std::vector<int> parent(static_cast<size_t>(mesh.num_vertices()));
+    std::iota(parent.begin(), parent.end(), 0);
+    const auto root = [&](int x) {
+        while (parent[static_cast<size_t>(x)] != x) x = parent[static_cast<size_t>(x)] = parent[static_cast<size_t>(parent[static_cast<size_t>(x)])];
+        return x;
+    };
+    for (int f = 0; f < mesh.num_faces(); ++f)
+        for (int k = 1; k < mesh.face_size(f); ++k) parent[static_cast<size_t>(root(mesh.face(f)[k]))] = root(mesh.face(f)[0]);
+    // Components numbered by their first face; the faces of each in input order.
+    std::vector<int> component_of_root(parent.size(), -1);
+    std::vector<std::vector<int>> faces;
+    for (int f = 0; f < mesh.num_faces(); ++f) {
+        int& c = component_of_root[static_cast<size_t>(root(mesh.face(f)[0]))];
+        if (c < 0) {
+            c = static_cast<int>(faces.size());
+            faces.emplace_back();
+        }
+        faces[static_cast<size_t>(c)].push_back(f);
+    }
+    std::vector<int> unused;
+    std::vector<char> used(parent.size(), 0);
+    for (int v : mesh.face_vertices) used[static_cast<size_t>(v)] = 1;
+    for (size_t v = 0; v < used.size(); ++v)
+        if (!used[v]) unused.push_back(static_cast<int>(v));
+    if (faces.empty()) return {mesh};
+    std::vector<PolyMesh> parts;
+    parts.reserve(faces.size());
+    for (size_t c = 0; c < faces.size(); ++c) parts.push_back(submesh(mesh, faces[c], c == 0 ? unused : std::vector<int>{}));
+    return parts;
 }
 
 PolyMesh with_face_order(const PolyMesh& mesh, const std::vector<int>& order) {
@@ -194,6 +230,10 @@ TransformedInput transform_input(const PolyMesh& mesh, InputTransformation t, st
             break;
         case InputTransformation::Rotate:
             mapped(Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix(), Vec3::Zero());
+            break;
+        case InputTransformation::SplitComponents:
+        case InputTransformation::LevelByLevel:
+            out.mesh = mesh;
             break;
         case InputTransformation::Repeat:
             out.mesh = mesh;

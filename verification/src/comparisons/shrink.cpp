@@ -74,8 +74,10 @@ std::span<const int> corners(const PolyMesh& m, int f) { return {m.face(f), stat
 
 /// The vertices the listed faces use, in their order, appended to `positions`; returns each
 /// vertex's new index, -1 for the vertices left out.
-std::vector<int> kept_vertices(const PolyMesh& mesh, const std::vector<int>& faces, std::vector<Vec3>& positions) {
+std::vector<int> kept_vertices(const PolyMesh& mesh, const std::vector<int>& faces, std::vector<Vec3>& positions,
+                               const std::vector<int>& also_vertices = {}) {
     std::vector<int> remap(static_cast<size_t>(mesh.num_vertices()), -1);
+    for (int v : also_vertices) remap[static_cast<size_t>(v)] = 0;
     for (int f : faces)
         for (int v : corners(mesh, f)) remap[static_cast<size_t>(v)] = 0;
     for (int v = 0; v < mesh.num_vertices(); ++v)
@@ -221,9 +223,9 @@ std::optional<ShrinkSymptom> symptom_of(const RefinementComparison& c) {
     return std::nullopt;
 }
 
-PolyMesh submesh(const PolyMesh& mesh, const std::vector<int>& faces) {
+PolyMesh submesh(const PolyMesh& mesh, const std::vector<int>& faces, const std::vector<int>& also_vertices) {
     PolyMesh out;
-    const std::vector<int> remap = kept_vertices(mesh, faces, out.positions);
+    const std::vector<int> remap = kept_vertices(mesh, faces, out.positions, also_vertices);
     if (!mesh.colors.empty())
         for (int v = 0; v < mesh.num_vertices(); ++v)
             if (remap[static_cast<size_t>(v)] >= 0) out.colors.push_back(mesh.colors[static_cast<size_t>(v)]);

@@ -25,10 +25,20 @@
 ///   mirror                x negated: exact, bit for bit
 ///   rotate                a general rotation (about the axis (1, 2, 3) by 0.7 rad): within
 ///                         the tier
+///   components            each connected component (faces joined through shared vertices)
+///                         refined on its own, the vertices no face uses with the first: the
+///                         union of the results is the refinement of the whole, within the tier
+///                         (each part is numbered otherwise, so sums may run in another order)
+///   level-by-level        one level at a time, each run given the last one's result: the
+///                         same as all the levels in one run, within the tier. Not where the
+///                         rule counts levels from the input (sqrt3 count-from-input on a mesh
+///                         with a boundary) nor on a tagged mesh (the levels returned carry no
+///                         sharpness, corner or hole tags), nor for one level
 ///   repeat                the same input again: identical bytes (determinism)
 ///
 /// Crease, corner and hole tags and face-varying channels travel with their vertices, faces
-/// and corners.
+/// and corners. The first eleven write the input otherwise (transform_input); components and
+/// level-by-level run the implementation otherwise on the input as it is (runs_otherwise).
 
 #include <array>
 #include <cstdint>
@@ -53,6 +63,8 @@ enum class InputTransformation {
     SwapAxes,
     Mirror,
     Rotate,
+    SplitComponents,
+    LevelByLevel,
     Repeat,
 };
 inline constexpr std::array kInputTransformations{
@@ -60,7 +72,14 @@ inline constexpr std::array kInputTransformations{
     InputTransformation::RotateFaces,      InputTransformation::ShuffleFaces,        InputTransformation::RelabelVertices,
     InputTransformation::ReverseOrientation,
     InputTransformation::Translate,        InputTransformation::Scale,               InputTransformation::SwapAxes,
-    InputTransformation::Mirror,           InputTransformation::Rotate,              InputTransformation::Repeat};
+    InputTransformation::Mirror,           InputTransformation::Rotate,              InputTransformation::SplitComponents,
+    InputTransformation::LevelByLevel,     InputTransformation::Repeat};
+
+/// The transformation runs the implementation otherwise (several runs) on the input as it is
+/// rather than once on the input written otherwise: components, level-by-level.
+constexpr bool runs_otherwise(InputTransformation t) {
+    return t == InputTransformation::SplitComponents || t == InputTransformation::LevelByLevel;
+}
 
 /// "rotate-corners", "rotate-corners-random", "reverse-faces", "rotate-faces", ... (the names above).
 const char* to_string(InputTransformation t);
@@ -83,8 +102,15 @@ struct TransformedInput {
     bool exact = false;
 };
 
-/// `mesh` under `t`; `seed` draws the random ones (the same seed, the same transformation).
+/// `mesh` under `t`; `seed` draws the random ones (the same seed, the same transformation). For
+/// the transformations that run otherwise (runs_otherwise), `mesh` itself under the identity.
 TransformedInput transform_input(const PolyMesh& mesh, InputTransformation t, std::uint64_t seed);
+
+/// The connected components of `mesh` (faces joined through a shared vertex, so a bowtie stays
+/// whole), each with its faces in input order and its vertices in input order, its tags and
+/// face-varying corners; the vertices no face uses go with the first. One part when the mesh
+/// is connected.
+std::vector<PolyMesh> connected_components(const PolyMesh& mesh);
 
 /// `mesh` with its faces listed in `order` (order[i]: the face that becomes face i), hole tags
 /// and face-varying corners following their faces.
