@@ -2,10 +2,11 @@
 // from the eigenvectors of the local subdivision matrix for both weight families.
 #include <gtest/gtest.h>
 
-#include <Eigen/Eigenvalues>
+#include <Eigen/Core>
 
 #include "crossdiv/error.h"
 #include "crossdiv/subdiv/catmull_clark.h"
+#include "crossdiv/subdiv/eigendecomposition.h"
 #include "crossdiv/subdiv/limit.h"
 #include "crossdiv/subdiv/loop.h"
 
@@ -48,11 +49,11 @@ TEST(LoopLimit, MaskIsTheLeftEigenvectorOfEigenvalueOneForBothFamilies) {
             const Eigen::MatrixXd dense(S);
             for (int r = 0; r <= n; ++r) L.row(r) = dense.row(rows[r]).head(n + 1);
             // Left eigenvector of eigenvalue 1 = right eigenvector of L^T, normalized to sum 1.
-            Eigen::EigenSolver<Eigen::MatrixXd> es(L.transpose());
+            const Eigendecomposition es = eigendecomposition(L.transpose(), true);
             int one = 0;
             for (int k = 0; k <= n; ++k)
-                if (std::abs(es.eigenvalues()[k] - 1.0) < std::abs(es.eigenvalues()[one] - 1.0)) one = k;
-            Eigen::VectorXd l = es.eigenvectors().col(one).real();
+                if (std::abs(es.values[k] - 1.0) < std::abs(es.values[one] - 1.0)) one = k;
+            Eigen::VectorXd l = es.vectors.col(one).real();
             l /= l.sum();
             const double chi = loop_limit_ring_weight(w, n);
             EXPECT_NEAR(l[0], 1 - n * chi, 1e-13) << to_string(w) << " n=" << n;

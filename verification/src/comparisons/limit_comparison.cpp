@@ -1,7 +1,6 @@
 #include "crossdiv/verification/comparisons/limit_comparison.h"
 #include "crossdiv/verification/harness/fans.h"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -10,6 +9,7 @@
 #include "crossdiv/error.h"
 #include "harness/sci.h"
 #include "crossdiv/subdiv/catmull_clark.h"
+#include "crossdiv/subdiv/eigendecomposition.h"
 #include "crossdiv/subdiv/limit.h"
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/verification/harness/correspondence.h"
@@ -192,11 +192,11 @@ SpectrumRow local_spectrum(const std::string& scheme, int n) {
     SpectrumRow row;
     row.scheme = scheme;
     row.valence = n;
-    const Eigen::EigenSolver<Eigen::MatrixXd> es(local_matrix(scheme, n), false);
+    const Eigen::VectorXcd values = eigendecomposition(local_matrix(scheme, n), false).values;
     row.max_imaginary = 0;
-    for (int k = 0; k < es.eigenvalues().size(); ++k) {
-        row.eigenvalues.push_back(std::abs(es.eigenvalues()[k]));
-        row.max_imaginary = std::max(row.max_imaginary, std::abs(es.eigenvalues()[k].imag()));
+    for (const std::complex<double>& value : values) {
+        row.eigenvalues.push_back(std::abs(value));
+        row.max_imaginary = std::max(row.max_imaginary, std::abs(value.imag()));
     }
     row.eigenvalues = sorted_desc(row.eigenvalues);
 
@@ -216,13 +216,10 @@ SpectrumRow local_spectrum(const std::string& scheme, int n) {
         // Catmull-Clark (Ball and Storry 1988; Halstead et al. 1993): mode k != 0 is the 2x2 block
         // with eigenvalues (5 + cos t +- cos(t/2) sqrt(2 (9 + cos t))) / 16, t = 2 pi k / n; the
         // rotation-invariant block acts on (v, mean e, mean f).
-        Eigen::Matrix3d M0;
+        Eigen::MatrixXd M0(3, 3);
         M0 << (n - 2.0) / n + 1.0 / (4.0 * n), 3.0 / (2.0 * n), 1.0 / (4.0 * n), 0.375, 0.5, 0.125, 0.25, 0.5, 0.25;
         std::vector<double> b0;
-        // A named solver: eigenvalues() refers into it, and a range-for over a temporary's
-        // member would read it after the temporary is gone.
-        const Eigen::EigenSolver<Eigen::Matrix3d> block0(M0, false);
-        for (int k = 0; k < 3; ++k) b0.push_back(std::abs(block0.eigenvalues()[k]));
+        for (const std::complex<double>& value : eigendecomposition(M0, false).values) b0.push_back(std::abs(value));
         b0 = sorted_desc(b0);  // b0[0] is 1
         row.vertex_rate = b0[1];
         cf = b0;
