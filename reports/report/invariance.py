@@ -80,10 +80,13 @@ def invariance_section(cases, view_index=None):
     section = Section("Invariance").add(
         Text("Each implementation refines every input and the input written otherwise (corners rotated, faces "
              "reordered, vertices relabelled, orientation reversed, the mesh moved, scaled, mirrored, rotated, the "
-             "same run again); mapped back, the two must be the same surface: bit for bit where floating point makes "
-             "the transformation exact, within the tolerance elsewhere. No reference is needed. Each cell: inputs "
-             "invariant of those compared (of which not bit for bit: invariant in the weak tier, not in the strict; "
-             "n/c: vertices at one position, only the point sets compared), then the "
+             "same run again) and run otherwise (its connected components apart, whose union must be the whole; its "
+             "levels one at a time, which must equal the levels in one run); mapped back, the two must be the same "
+             "surface: bit for bit where floating point makes the transformation exact, within the tolerance "
+             "elsewhere. No reference is needed. Each cell: inputs invariant of those compared (of which not bit for "
+             "bit: invariant in the weak tier, not in the strict; n/c: not compared, for vertices at one position, "
+             "where only the point sets are compared, or nothing to run otherwise: one component, a tagged mesh, a "
+             "rule that counts its levels from the input, a level a face list cannot state), then the "
              "findings by outcome; a reference's finding is classed by what removes it (its isolated vertices, its "
              "non-manifold vertices split), core's is a failure."),
         Table(["scheme", "implementation", *transformations], rows))
