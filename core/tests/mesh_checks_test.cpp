@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "crossdiv/mesh/disjoint_union.h"
 #include "crossdiv/mesh/mesh_checks.h"
 
 namespace crossdiv {
@@ -94,6 +95,32 @@ TEST(MeshChecks, ThinSliverIsNotZeroArea) {
     std::vector<Vec3> p = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5, 1e-9, 0)};
     for (const MeshIssue& i : check_mesh(mesh_of(p, {{0, 1, 2}})))
         EXPECT_NE(i.kind, MeshIssueKind::ZeroAreaFace) << i.message;
+}
+
+TEST(DisjointUnion, RenumbersFacesAndValuesPastTheEarlierParts) {
+    // A triangle with a UV per corner, then a quad with two UVs shared by its corners.
+    PolyMesh a, b;
+    a.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    a.add_face({0, 1, 2});
+    a.face_varying.push_back({"uv", 2, {0, 0, 1, 0, 0, 1}, {0, 1, 2}});
+    b.positions = {{5, 0, 0}, {6, 0, 0}, {6, 1, 0}, {5, 1, 0}};
+    b.add_face({3, 2, 1, 0});
+    b.face_varying.push_back({"uv", 2, {7, 7, 8, 8}, {0, 1, 0, 1}});
+    const PolyMesh u = disjoint_union({a, b});
+    EXPECT_EQ(u.num_vertices(), 7);
+    EXPECT_EQ(u.face_start, (std::vector<int>{0, 3, 7}));
+    EXPECT_EQ(u.face_vertices, (std::vector<int>{0, 1, 2, 6, 5, 4, 3}));
+    EXPECT_EQ(u.positions[3], Vec3(5, 0, 0));
+    ASSERT_EQ(u.face_varying.size(), 1u);
+    EXPECT_EQ(u.face_varying[0].corner_values, (std::vector<int>{0, 1, 2, 3, 4, 3, 4}));
+    EXPECT_EQ(u.face_varying[0].values, (std::vector<double>{0, 0, 1, 0, 0, 1, 7, 7, 8, 8}));
+    // Channels that differ between the parts are dropped rather than misnumbered; colours too.
+    b.face_varying[0].dimension = 1;
+    b.colors.assign(4, Vec3(1, 0, 0));
+    const PolyMesh v = disjoint_union({a, b});
+    EXPECT_TRUE(v.face_varying.empty());
+    EXPECT_TRUE(v.colors.empty());
+    EXPECT_EQ(disjoint_union({}).num_faces(), 0);
 }
 
 }  // namespace

@@ -6,26 +6,12 @@
 #include <string>
 
 #include "crossdiv/error.h"
+#include "crossdiv/mesh/disjoint_union.h"
 #include "shapes.h"
 
 namespace crossdiv::datasets {
 using namespace shapes;
 namespace {
-
-/// The union of several meshes as separate components.
-PolyMesh disjoint_union(const std::vector<std::pair<PolyMesh, Vec3>>& parts) {
-    PolyMesh out;
-    for (const auto& [m, offset] : parts) {
-        const int base = out.num_vertices();
-        for (const Vec3& p : m.positions) out.positions.push_back(p + offset);
-        for (int f = 0; f < m.num_faces(); ++f) {
-            std::vector<int> face;
-            for (int i = m.face_start[f]; i < m.face_start[f + 1]; ++i) face.push_back(base + m.face_vertices[i]);
-            out.add_face(face);
-        }
-    }
-    return out;
-}
 
 std::vector<std::vector<int>> faces_of(const PolyMesh& m) {
     std::vector<std::vector<int>> f;
@@ -167,7 +153,7 @@ std::vector<EdgeCase> edge_cases() {
     add("zero-area-triangle", "disc of three faces, one with three collinear vertices", true,
         make({Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0.2)}, {{0, 2, 3}, {2, 1, 3}, {2, 0, 1}}));
     add("several-components", "two tetrahedra and an octahedron, apart", true,
-        disjoint_union({{tetrahedron(), Vec3(0, 0, 0)}, {tetrahedron(), Vec3(4, 0, 0)}, {octahedron(), Vec3(0, 4, 0)}}));
+        disjoint_union({tetrahedron(), transformed(tetrahedron(), 1.0, Vec3(4, 0, 0)), transformed(octahedron(), 1.0, Vec3(0, 4, 0))}));
     add("holes", "pole-8 sphere with three separate faces removed: three boundary loops", true,
         with_faces_removed(pole(8, 4), {0, 20, 45}));
     add("genus-3", "closed slab with three holes through it: Euler characteristic -4", true, slab_with_holes(3));
@@ -183,7 +169,7 @@ std::vector<EdgeCase> edge_cases() {
     add("near-coincident", "two tetrahedra whose nearest vertices are 1e-12 apart, not shared", true, [] {
         PolyMesh a = tetrahedron(), b = tetrahedron();
         const Vec3 offset = a.positions[0] - b.positions[3] + Vec3(1e-12, 0, 0);  // b's vertex 3 next to a's vertex 0
-        return disjoint_union({{a, Vec3::Zero()}, {b, offset}});
+        return disjoint_union({a, transformed(b, 1.0, offset)});
     }());
     // Not manifold: core refines them by OpenSubdiv's non-manifold rules (nonmanifold.h), and
     // refuses them, naming the element, under NonManifoldRule::Refuse.

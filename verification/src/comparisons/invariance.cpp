@@ -13,6 +13,7 @@
 #include "crossdiv/verification/harness/corner_values.h"
 #include "crossdiv/verification/harness/correspondence.h"
 #include "crossdiv/verification/harness/tolerances.h"
+#include "crossdiv/mesh/disjoint_union.h"
 #include "crossdiv/mesh/mesh_checks.h"
 #include "crossdiv/mesh/tri_mesh.h"
 #include "crossdiv/subdiv/nonmanifold.h"
@@ -171,42 +172,6 @@ int max_valence(const PolyMesh& mesh) {
 }
 
 
-/// The refinements of the parts as one mesh: positions, faces and colours one after another,
-/// the face-varying channels too where every part has the same ones.
-PolyMesh union_of(const std::vector<PolyMesh>& parts) {
-    PolyMesh out;
-    const bool colors = std::all_of(parts.begin(), parts.end(), [](const PolyMesh& p) { return !p.colors.empty(); });
-    const auto same_channels = [&](const PolyMesh& p) {
-        if (p.face_varying.size() != parts[0].face_varying.size()) return false;
-        for (size_t ch = 0; ch < p.face_varying.size(); ++ch)
-            if (p.face_varying[ch].dimension != parts[0].face_varying[ch].dimension) return false;
-        return true;
-    };
-    if (std::all_of(parts.begin(), parts.end(), same_channels)) {
-        out.face_varying = parts[0].face_varying;
-        for (FaceVaryingChannel& ch : out.face_varying) {
-            ch.values.clear();
-            ch.corner_values.clear();
-        }
-    }
-    for (const PolyMesh& p : parts) {
-        const int offset = out.num_vertices();
-        out.positions.insert(out.positions.end(), p.positions.begin(), p.positions.end());
-        if (colors) out.colors.insert(out.colors.end(), p.colors.begin(), p.colors.end());
-        for (int f = 0; f < p.num_faces(); ++f) {
-            for (int k = 0; k < p.face_size(f); ++k) out.face_vertices.push_back(p.face(f)[k] + offset);
-            out.face_start.push_back(static_cast<int>(out.face_vertices.size()));
-        }
-        for (size_t ch = 0; ch < out.face_varying.size(); ++ch) {
-            FaceVaryingChannel& into = out.face_varying[ch];
-            const int values = into.num_values();
-            for (int v : p.face_varying[ch].corner_values) into.corner_values.push_back(v + values);
-            into.values.insert(into.values.end(), p.face_varying[ch].values.begin(), p.face_varying[ch].values.end());
-        }
-    }
-    return out;
-}
-
 /// The first face with fewer than 3 distinct corners, in the words of the mesh checker.
 std::optional<std::string> first_degenerate_face(const PolyMesh& mesh) {
     for (const MeshIssue& issue : check_mesh(mesh))
@@ -214,30 +179,19 @@ std::optional<std::string> first_degenerate_face(const PolyMesh& mesh) {
     return std::nullopt;
 }
 
-/// Edges that a mesh written as faces cannot state: vertex pairs that more than two face sides
-/// join, and faces naming a vertex twice. The refinement may hold several edges there (the
-/// children of back-to-back faces, each face's own interior edges); written out and read back,
-/// they are one. Nothing when the mesh states its edges (PolyMesh::corner_edges).
-int unstated_edges(const PolyMesh& mesh) {
-    if (!mesh.corner_edges.empty()) return 0;
-    std::vector<std::pair<int, int>> sides;
-    sides.reserve(mesh.face_vertices.size());
-    int repeated = 0;
-    for (int f = 0; f < mesh.num_faces(); ++f) {
-        const int n = mesh.face_size(f);
-        const int* c = mesh.face(f);
-        for (int k = 0; k < n; ++k) sides.emplace_back(std::minmax(c[k], c[(k + 1) % n]));
-        std::vector<int> corners(c, c + n);
-        std::sort(corners.begin(), corners.end());
-        repeated += std::adjacent_find(corners.begin(), corners.end()) != corners.end();
-    }
-    std::sort(sides.begin(), sides.end());
-    int crowded = 0;
-    for (size_t a = 0, e = 0; a < sides.size(); a = e) {
-        while (e < sides.size() && sides[e] == sides[a]) ++e;
-        crowded += e - a > 2;
-    }
-    return crowded + repeated;
+/// Edges that a mesh written as faces cannot state, in the words of the mesh checker: edges
+/// that more than two faces share, and faces naming a vertex twice. The refinement may hold
+/// several edges there (the children of back-to-back faces, each face's own interior edges);
+/// written out and read back, they are one. None when the mesh states its edges
+/// (PolyMesh::corner_edges).
+std::vector<std::string> unstated_edges(const PolyMesh& mesh) {
+    std::vector<std::string> out;
+    if (!mesh.corner_edges.empty()) return out;
+    for (const MeshIssue& issue : check_mesh(mesh))
+        if (issue.kind == MeshIssueKind::NonManifoldEdge || issue.kind == MeshIssueKind::RepeatedVertex ||
+            issue.kind == MeshIssueKind::TooFewCorners)
+            out.push_back(issue.message);
+    return out;
 }
 
 /// The second run of a check: the implementation on the input written otherwise, or run
@@ -276,7 +230,7 @@ SecondRun run_second(const Implementation& impl, const PolyMesh& input, const Re
             }
             refined.push_back(std::move(r.trace->back()));
         }
-        out.run.trace = adapters::LevelTrace{input, union_of(refined)};
+        out.run.trace = adapters::LevelTrace{input, disjoint_union(refined)};
         return out;
     }
     if (t == InputTransformation::LevelByLevel) {
@@ -304,15 +258,15 @@ SecondRun run_second(const Implementation& impl, const PolyMesh& input, const Re
         RefineRequest one = request;
         one.levels = 1;
         adapters::LevelTrace levels{input};
-        const int unstated_in_input = unstated_edges(input);
+        const size_t unstated_in_input = unstated_edges(input).size();
         for (int level = 1; level <= request.levels; ++level) {
             // A level whose refinement made edges a face list cannot state (more than the
             // children of the input's own, two per edge and level) is read back as another mesh.
-            if (const int unstated = level > 1 ? unstated_edges(levels.back()) : 0;
-                unstated > (unstated_in_input << (level - 1))) {
-                out.not_compared = "level " + std::to_string(level - 1) + "'s result has " + std::to_string(unstated) +
-                                   " vertex pairs that more than two face sides join, or faces naming a vertex twice "
-                                   "(the input " + std::to_string(unstated_in_input) +
+            if (const std::vector<std::string> unstated = level > 1 ? unstated_edges(levels.back()) : std::vector<std::string>{};
+                unstated.size() > (unstated_in_input << (level - 1))) {
+                out.not_compared = "level " + std::to_string(level - 1) + "'s result has " + std::to_string(unstated.size()) +
+                                   " edges that more than two faces share, or faces naming a vertex twice (the input " +
+                                   std::to_string(unstated_in_input) + "; first: " + unstated[0] +
                                    "): written as faces, the next run cannot tell the refinement's separate edges there apart";
                 return out;
             }
