@@ -31,7 +31,7 @@ trap 'if [ $? -eq 0 ]; then end_phase ok; else end_phase failed; fi' EXIT
 # Debian packages the build, the references and the tests need (meshlab, xvfb and xauth: the
 # external MeshLab reference of the default suite, run as meshlabserver under Xvfb; python3-skimage:
 # scikit-image's marching cubes, the isosurface reference).
-PACKAGES="g++ make cmake libeigen3-dev libosd-dev libopenmesh-dev libcgal-dev libgtest-dev \
+PACKAGES="g++ make cmake ccache libeigen3-dev libosd-dev libopenmesh-dev libcgal-dev libgtest-dev \
 libcli11-dev nlohmann-json3-dev libfmt-dev libnanoflann-dev libassimp-dev python3-matplotlib python3-numpy \
 meshlab xvfb xauth \
 python3-pytest python3-skimage \
@@ -74,9 +74,20 @@ run_ctest() {
     grep -v -E '^ +Start +[0-9]+: |Passed +[0-9.]+ sec$'
 }
 
+# Compiler cache: every compilation goes through ccache (Debian's), in its default folder
+# (~/.cache/ccache), so a build of sources this machine has compiled before, in any clone, takes
+# seconds instead of minutes. Paths under the source tree are hashed relative to it (base_dir) and
+# the working folder is not hashed (hash_dir), so two clones in different folders share entries;
+# a cold cache (a new machine) builds as without it. CI prints the cache's hit count.
+export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=true
+
 # CROSSDIV_WERROR=ON (CI) turns every compiler warning into an error.
 configure() {
-  cmake "$@" -DCMAKE_COMPILE_WARNING_AS_ERROR="${CROSSDIV_WERROR:-OFF}"
+  local launcher=()
+  if command -v ccache > /dev/null; then
+    launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  fi
+  cmake "$@" "${launcher[@]}" -DCMAKE_COMPILE_WARNING_AS_ERROR="${CROSSDIV_WERROR:-OFF}"
 }
 
 build() {
