@@ -29,11 +29,12 @@ begin_phase() {
 trap 'if [ $? -eq 0 ]; then end_phase ok; else end_phase failed; fi' EXIT
 
 # Debian packages the build, the references and the tests need (meshlab, xvfb and xauth: the
-# external MeshLab reference of the default suite, run as meshlabserver under Xvfb; python3-skimage:
-# scikit-image's marching cubes, the isosurface reference).
+# external MeshLab reference of the default suite, run as meshlabserver under Xvfb; python3-open3d:
+# the Open3D reference, adapters/open3d; python3-skimage: scikit-image's marching cubes, the
+# isosurface reference).
 PACKAGES="g++ make cmake ccache libeigen3-dev libosd-dev libopenmesh-dev libcgal-dev libgtest-dev \
 libcli11-dev nlohmann-json3-dev libfmt-dev libnanoflann-dev libassimp-dev python3-matplotlib python3-numpy \
-meshlab xvfb xauth \
+meshlab xvfb xauth python3-open3d \
 python3-pytest python3-skimage \
 libjs-three chromium chromium-driver python3-selenium python3-pil \
 pybind11-dev python3-dev python3-scipy"

@@ -108,6 +108,25 @@ TEST(ExternalReference, DeclaredRulesAreTheOnesItIsAskedFor) {
     EXPECT_THROW(make_program_implementation(spec), InputError);
 }
 
+
+// A reference with one weight family that is not Loop's (Open3D's Warren weights) applies that
+// family whatever is asked; "same rules" there would hide a weight-family divergence as
+// unexplained.
+TEST(ExternalReference, AFamilyOfItsOwnIsTheRuleItApplies) {
+    ProgramSpec spec = float_program("warren-only");
+    spec.weights = {"warren"};
+    spec.boundaries = {"edge-only"};
+    const auto p = make_program_implementation(spec);
+    SchemeRule asked;
+    for (LoopBoundary b : {LoopBoundary::EdgeOnly, LoopBoundary::EdgeAndCorner}) {
+        asked.loop = {LoopWeights::Loop, b};
+        EXPECT_EQ(p->closest_rule(Scheme::Loop, asked).loop, (LoopOptions{LoopWeights::Warren, LoopBoundary::EdgeOnly}));
+    }
+    spec.boundaries = {"edge-only", "edge-and-corner"};
+    asked.loop = {LoopWeights::Regularity, LoopBoundary::EdgeAndCorner};
+    EXPECT_EQ(make_program_implementation(spec)->closest_rule(Scheme::Loop, asked).loop,
+              (LoopOptions{LoopWeights::Warren, LoopBoundary::EdgeAndCorner}));
+}
 TEST(Manifest, ReferenceAndSubjectStatementsJoinTheCasesAfterThem) {
     const std::string script = "python3 " + kSource + "/verification/tests/subjects/misbehaving_subject.py ";
     const std::string cmd = script + "float {in} {levels} {out.ply}";
@@ -482,6 +501,73 @@ TEST(MeshLab, ButterflyTakesTheOppositeVertexForAWingBeyondTheBoundary) {
             }
         }
     }
+}
+
+// Open3D as the default suite has it (adapters/open3d): TriangleMesh.subdivide_loop. Needs
+// Debian's python3-open3d, which run.sh installs before it runs the tests.
+const Implementation& open3d_from_default_suite() {
+    const Manifest m = read_manifest(kSource + "/verification/suites/default.suite");
+    EXPECT_TRUE(is_built("open3d"));
+    return find_implementation("open3d");
+}
+
+// Its vertex rule, by hand: the apex of a four-triangle pyramid (apex (0,0,1), base corners
+// (+-1,0,0), (0,+-1,0)) moves to (1 - 4 beta) (0,0,1) + beta (sum of the corners) with Warren's
+// beta = 3/(8*4) = 3/32: z = 1 - 12/32 = 0.625. Loop's beta (31/256) would give 0.515625.
+TEST(Open3D, MovesAnInteriorVertexByWarrensWeights) {
+    const Implementation& open3d = open3d_from_default_suite();
+    PolyMesh pyramid;
+    pyramid.positions = {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}};
+    for (int k = 0; k < 4; ++k) pyramid.add_face({0, 1 + k, 1 + (k + 1) % 4});
+    PolyMesh once;
+    ASSERT_NO_THROW(once = open3d.refine_last(pyramid, {Scheme::Loop, SchemeRule{}, 1}))
+        << "open3d is unavailable (apt-get install python3-open3d)";
+    ASSERT_EQ(once.num_vertices(), 13);  // 5 vertices + 8 edges
+    // The program's vertex order is its own; the apex is the one point on the axis above z = 0.5.
+    int on_axis = 0;
+    for (const Vec3& p : once.positions)
+        if (p.x() == 0 && p.y() == 0 && p.z() > 0.5) {
+            EXPECT_EQ(p.z(), 0.625);
+            ++on_axis;
+        }
+    EXPECT_EQ(on_axis, 1);
+}
+
+// Against core: Warren's weights with the edge-only boundary agree to rounding (double); asked
+// for Loop's weights it still applies Warren's, and the divergence is the weight family (with
+// the corner rule, which it lacks, where the boundary has corners).
+TEST(Open3D, AgreesWithCoreUnderWarrensWeightsAndNamesTheRest) {
+    open3d_from_default_suite();
+    auto compare = [](const char* mesh, LoopWeights w, LoopBoundary b) {
+        RefinementRequest req;
+        req.levels = 2;
+        req.rule.loop = {w, b};
+        req.references = {"open3d"};
+        RefinementComparison c = compare_refinement(datasets::bundled_mesh(mesh), mesh, req);
+        EXPECT_EQ(c.runs.size(), 1u);
+        return c.runs.at(0);
+    };
+    for (const char* mesh : {"cube-asymmetric", "fan-5", "open-patch", "icosahedron"}) {
+        const auto run = compare(mesh, LoopWeights::Warren, LoopBoundary::EdgeOnly);
+        EXPECT_EQ(run.verdict, Verdict::Agree) << mesh << ": " << run.explanation;
+    }
+    EXPECT_EQ(compare("icosahedron", LoopWeights::Loop, LoopBoundary::EdgeOnly).divergence_class, DivergenceClass::WeightFamily);
+    EXPECT_EQ(compare("open-patch", LoopWeights::Loop, LoopBoundary::EdgeAndCorner).divergence_class,
+              DivergenceClass::WeightFamilyAndCornerRule);
+}
+
+// A vertex without faces: Open3D divides by its valence, 0, and writes NaN for it; recorded as
+// the reference's invalid output, never compared as a surface.
+TEST(Open3D, WritesNaNForAVertexWithoutFaces) {
+    open3d_from_default_suite();
+    RefinementRequest req;
+    req.levels = 1;
+    req.rule.loop = {LoopWeights::Warren, LoopBoundary::EdgeOnly};
+    req.references = {"open3d"};
+    const RefinementComparison c = compare_refinement(datasets::edge_case("isolated-vertex").mesh, "isolated-vertex", req);
+    ASSERT_EQ(c.runs.size(), 1u);
+    EXPECT_EQ(c.runs[0].outcome.status, RunStatus::NonFiniteOutput) << c.runs[0].outcome.message;
+    EXPECT_EQ(c.runs[0].verdict, Verdict::RefInvalidOutput);
 }
 
 }  // namespace

@@ -137,7 +137,8 @@ TEST(SuiteFaults, TheJobsThatCoverEachFeaturePassWithCore) {
     const SuiteRun run = run_default_jobs({{"edits", ""}, {"normals", ""}, {"spectrum", ""}, {"schemes", ""},
                                            {"catmull-clark", "bundled:"}, {"doo-sabin", "bundled:"},
                                            {"sqrt3", "bundled:"}, {"modified-butterfly", "bundled:"},
-                                           {"surfaces", "surface:vase"}, {"loop", "weights=warren"}});
+                                           {"surfaces", "surface:vase"}, {"loop", "warren boundary=edge-only L2 weak"},
+                                           {"loop", "warren boundary=edge-only L3 geometric"}});
     EXPECT_EQ(run.failures, 0) << junit_failures(run.junit);
 }
 
@@ -181,7 +182,7 @@ TEST(SuiteFaults, WarrensBetaAsThreeOverNineNFails) {
     const ScopedCoreImplementation fault(core_with_slip(
         Scheme::Loop, [](const SchemeRule& r) { return r.loop.weights == LoopWeights::Warren; },
         test::warren_beta_slip));
-    expect_failures_naming({{"spectrum", ""}, {"loop", "weights=warren"}}, {"loop rule oracle", "weights=warren"});
+    expect_failures_naming({{"spectrum", ""}, {"loop", "warren boundary=edge-only L2 weak"}}, {"loop rule oracle", "weights=warren"});
 }
 
 TEST(SuiteFaults, AModifiedButterflyWeightSlipFails) {

@@ -68,7 +68,13 @@ SchemeRule Implementation::closest_rule(Scheme scheme, const SchemeRule& request
             candidate.loop = o;
             if (has_variant(scheme, *s, candidate)) return candidate;
         }
-        return requested;
+        // A family of its own and not Loop's (Open3D has Warren's only): that family, with the
+        // requested boundary rule where it has it.
+        for (const SchemeRule& r : s->rules) {
+            SchemeRule candidate = requested;
+            candidate.loop.weights = r.loop.weights;
+            if (has_variant(scheme, *s, candidate)) return candidate;
+        }
     }
     return with_variant(scheme, requested, s->rules.front());
 }
