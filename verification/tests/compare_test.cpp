@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "crossdiv/datasets/bundled.h"
 #include "crossdiv/datasets/edge_cases.h"
 #include "crossdiv/verification/comparisons/classification.h"
 #include "crossdiv/verification/comparisons/refinement_comparison.h"
@@ -49,6 +50,33 @@ TEST(Compare, ACornerRuleBesideAnIsolatedVertexIsNamedBoth) {
     EXPECT_NE(c.runs[0].explanation.find(" vertex 9 is ("), std::string::npos) << c.runs[0].explanation;  // the isolated vertex
 #endif
     EXPECT_EQ(c.runs[0].divergence_class, DivergenceClass::CornerRule) << c.runs[0].explanation;
+}
+
+// VTK's vtkLoopSubdivisionFilter: Loop's weights and the edge-only boundary, its points
+// stored in single precision: agrees with core in the float tier, lacks the corner rule, and
+// crashes (a stack array overrun, "stack smashing detected") at a vertex of valence 360, which
+// the isolated run records. Measured with fans: valence 256 refines, 257 aborts.
+TEST(Compare, VtkIsLoopInTheFloatTierWithoutTheCornerRule) {
+    CROSSDIV_REQUIRE_LIBRARIES("vtk");
+    auto run = [](const PolyMesh& mesh, LoopBoundary boundary) {
+        RefinementRequest req;
+        req.rule.loop = {LoopWeights::Loop, boundary};
+        req.levels = 2;
+        req.references = {"vtk"};
+        const RefinementComparison c = compare_refinement(mesh, "mesh", req);
+        EXPECT_EQ(c.runs.size(), 1u);
+        return c.runs.at(0);
+    };
+    for (const char* name : {"icosahedron", "open-patch", "cube-asymmetric", "fan-5"}) {
+        const auto r = run(datasets::bundled_mesh(name), LoopBoundary::EdgeOnly);
+        EXPECT_EQ(r.verdict, Verdict::Agree) << name << ": " << r.explanation;
+        EXPECT_GT(r.comparison.max_rel, 0.0) << name;  // float, not bit for bit
+    }
+    EXPECT_EQ(run(datasets::bundled_mesh("open-patch"), LoopBoundary::EdgeAndCorner).divergence_class, DivergenceClass::CornerRule);
+    EXPECT_EQ(run(datasets::edge_case("pole-360").mesh, LoopBoundary::EdgeOnly).outcome.status, RunStatus::Crashed);
+    const auto rejected = run(datasets::edge_case("nonmanifold-edge-3").mesh, LoopBoundary::EdgeOnly);
+    EXPECT_EQ(rejected.outcome.status, RunStatus::Rejected);
+    EXPECT_NE(rejected.outcome.message.find("Dataset is non-manifold"), std::string::npos) << rejected.outcome.message;
 }
 
 TEST(Compare, IdenticalMeshesUnderAPermutationAgree) {

@@ -129,8 +129,12 @@ TEST_P(LoopConformance, CoreAgreesWithEachReferenceOrDivergesByTheMissingRule) {
             (weights_missing && fp.curved_irregular_interior) || (boundary_missing && fp.curved_one_face_corner);
         if (!expect_diverge) {
             EXPECT_EQ(r.verdict, Verdict::Agree);
-            for (int l = 0; l < c.levels; ++l)
-                EXPECT_LE(r.level_max_rel[l], tolerances::kAgreementRelative) << "level " << l + 1;
+            // A reference that stores its points in float (VTK) is held to the float tier, which
+            // its verdict applies; one in double agrees to rounding at every level.
+            if (find_implementation(r.reference).capabilities().precision == Precision::Double) {
+                for (int l = 0; l < c.levels; ++l)
+                    EXPECT_LE(r.level_max_rel[l], tolerances::kAgreementRelative) << "level " << l + 1;
+            }
             continue;
         }
         EXPECT_EQ(r.verdict, Verdict::Diverge);

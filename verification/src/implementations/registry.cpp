@@ -26,6 +26,9 @@ std::vector<std::unique_ptr<Implementation>> build() {
 #ifdef CROSSDIV_HAS_CGAL
     for (auto& i : detail::make_cgal_implementations()) all.push_back(std::move(i));
 #endif
+#ifdef CROSSDIV_HAS_VTK
+    all.push_back(detail::make_vtk_implementation());
+#endif
 #ifdef CROSSDIV_HAS_EIGEN_SPLINES
     all.push_back(detail::make_eigen_implementation());
 #endif
