@@ -32,7 +32,7 @@ trap 'if [ $? -eq 0 ]; then end_phase ok; else end_phase failed; fi' EXIT
 # external MeshLab reference of the default suite, run as meshlabserver under Xvfb; python3-open3d:
 # the Open3D reference, adapters/open3d; python3-skimage: scikit-image's marching cubes, the
 # isosurface reference).
-PACKAGES="g++ make cmake ccache libeigen3-dev libosd-dev libopenmesh-dev libcgal-dev libgtest-dev \
+PACKAGES="g++ make cmake ccache libeigen3-dev libosd-dev libopenmesh-dev libcgal-dev libvtk9-dev libgtest-dev \
 libcli11-dev nlohmann-json3-dev libfmt-dev libnanoflann-dev libassimp-dev python3-matplotlib python3-numpy \
 meshlab xvfb xauth python3-open3d \
 python3-pytest python3-skimage \
