@@ -338,8 +338,10 @@ InvarianceCheck measure_invariance(const PolyMesh& refined, const PolyMesh& refi
         bar = std::max(bar, 2 * float_ulps * ulp / diagonal);
     }
     // The same faces on the same vertex numbers (a moved, scaled or rotated input keeps its
-    // order, and so does a deterministic implementation): vertex i is vertex i. Positions alone
-    // cannot pair float results whose vertices lie closer than their rounding (slivers).
+    // order, and so does a deterministic implementation): vertex i is first paired with vertex i,
+    // since positions alone cannot pair float results whose vertices lie closer than their
+    // rounding (slivers). Where that pairing differs, the faces may have a symmetry the
+    // implementation numbered otherwise (a triangle from rotated corners): then by position.
     const bool same_numbering = expected.num_vertices() == refined_transformed.num_vertices() &&
                                 expected.face_start == refined_transformed.face_start &&
                                 expected.face_vertices == refined_transformed.face_vertices;
@@ -348,6 +350,11 @@ InvarianceCheck measure_invariance(const PolyMesh& refined, const PolyMesh& refi
         m.method = MatchMethod::Order;
         m.ref_to_ours.resize(static_cast<size_t>(expected.num_vertices()));
         std::iota(m.ref_to_ours.begin(), m.ref_to_ours.end(), 0);
+        const MeshComparison by_number = compare_meshes(expected, refined_transformed, m.ref_to_ours);
+        if (!by_number.topology_equal() || by_number.max_rel > bar) {
+            Correspondence by_position = match_nearest_and_faces(expected, refined_transformed);
+            if (by_position.method != MatchMethod::None) m = std::move(by_position);
+        }
     } else {
         m = match_nearest_and_faces(expected, refined_transformed);
     }
