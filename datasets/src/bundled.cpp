@@ -6,6 +6,7 @@
 #include <string>
 
 #include "crossdiv/error.h"
+#include "crossdiv/datasets/data_paths.h"
 #include "shapes.h"
 
 namespace crossdiv::datasets {
@@ -73,14 +74,14 @@ PolyMesh bundled_mesh(const std::string& name) {
     throw InputError("unknown bundled mesh '" + name + "' (known: " + known + ")");
 }
 
-std::vector<std::string> cgal_mesh_files() { return files_in(std::filesystem::path(CROSSDIV_DATASETS_DIR) / "cgal", ".off"); }
+std::vector<std::string> cgal_mesh_files() { return files_in(datasets_dir() / "cgal", ".off"); }
 
 std::vector<std::string> course_mesh_files() {
-    return files_in(std::filesystem::path(CROSSDIV_SHARED_DATA) / "c3100" / "objs", ".obj");
+    return files_in(shared_data_dir() / "c3100" / "objs", ".obj");
 }
 
 std::vector<std::string> meshedit_mesh_files() {
-    return files_in(std::filesystem::path(CROSSDIV_SHARED_DATA) / "meshedit" / "dae", ".dae");
+    return files_in(shared_data_dir() / "meshedit" / "dae", ".dae");
 }
 
 }  // namespace crossdiv::datasets

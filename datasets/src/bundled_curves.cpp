@@ -6,6 +6,7 @@
 
 #include "crossdiv/error.h"
 #include "crossdiv/io/curve_io.h"
+#include "crossdiv/datasets/data_paths.h"
 
 namespace crossdiv::datasets {
 
@@ -95,7 +96,7 @@ std::vector<std::string> course_curve_files() {
         std::sort(found.begin(), found.end());
         out.insert(out.end(), found.begin(), found.end());
     };
-    const fs::path data(CROSSDIV_SHARED_DATA);
+    const fs::path data = shared_data_dir();
     collect(data / "c3100" / "swp", ".swp", true);
     collect(data / "meshedit" / "bzc", ".bzc", false);
     return out;

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "crossdiv/error.h"
+#include "crossdiv/datasets/data_paths.h"
 
 namespace crossdiv::datasets {
 
@@ -86,7 +87,7 @@ const BundledCurve& bundled_surface(const std::string& name) {
 std::vector<std::string> course_surface_files() {
     namespace fs = std::filesystem;
     std::vector<std::string> out;
-    const fs::path data(CROSSDIV_SHARED_DATA);
+    const fs::path data = shared_data_dir();
     for (const fs::path& dir : {data / "c3100/swp/srev", data / "c3100/swp/gcyl", data / "meshedit/bez"}) {
         if (!fs::is_directory(dir)) continue;
         std::vector<std::string> found;

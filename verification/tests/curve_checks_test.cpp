@@ -10,6 +10,7 @@
 #include "crossdiv/error.h"
 #include "crossdiv/verification/properties/curve_checks.h"
 #include "crossdiv/verification/harness/tolerances.h"
+#include "crossdiv/datasets/data_paths.h"
 
 using namespace crossdiv;
 using namespace crossdiv::verification;
@@ -31,7 +32,7 @@ TEST(CurveChecks, CourseCurveFilesReadAndPass) {
     // The course data is optional (../shared beside the checkout). Without it the collection
     // must be empty, not an error; with it, all 13 files are found and every check passes.
     const std::vector<std::string> files = datasets::course_curve_files();
-    const bool present = std::filesystem::is_directory(CROSSDIV_SHARED_DATA "/c3100/swp");
+    const bool present = std::filesystem::is_directory(datasets::shared_data_dir() / "c3100/swp");
     EXPECT_EQ(files.empty(), !present);
     EXPECT_EQ(expand_curve_inputs({"curves:course"}).size(), files.size());
     if (present) {

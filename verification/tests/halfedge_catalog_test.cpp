@@ -14,11 +14,12 @@
 #include "crossdiv/verification/comparisons/edit_differential.h"
 #include "crossdiv/verification/implementations/inputs.h"
 #include "crossdiv/verification/comparisons/normals_comparison.h"
+#include "crossdiv/datasets/data_paths.h"
 
 namespace crossdiv::verification {
 namespace {
 
-const bool kMeshedit = std::filesystem::is_directory(CROSSDIV_SHARED_DATA "/meshedit/dae");
+const bool kMeshedit = std::filesystem::is_directory(datasets::shared_data_dir() / "meshedit/dae");
 
 // Every input, both weight families, both boundary rules: the same vertices bit for bit and
 // the same faces, or both refuse. The only input the split-and-flip method refuses on its own
@@ -106,7 +107,7 @@ TEST(HalfedgeCatalog, MeshEditFlipAndSplitResultsAreReproduced) {
         return;
     }
     for (const std::string name : {"cube", "icosahedron", "torus"}) {
-        const std::string dir = std::string(CROSSDIV_SHARED_DATA) + "/meshedit/dae/" + name + "/";
+        const std::string dir = (datasets::shared_data_dir() / "meshedit/dae" / name).string() + "/";
         const TriMesh input = to_tri_mesh(load_input(dir + "input.dae"));
         for (const std::string op : {"edgeFlip", "edgeSplit"}) {
             const TriMesh theirs = to_tri_mesh(load_input(dir + op + ".dae"));

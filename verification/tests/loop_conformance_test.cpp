@@ -19,6 +19,7 @@
 #include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/verification/harness/tolerances.h"
 #include "crossdiv/subdiv/nonmanifold.h"
+#include "crossdiv/datasets/data_paths.h"
 
 namespace crossdiv::verification {
 namespace {
@@ -273,7 +274,7 @@ TEST(LoopConformance, CatmullClarkOnEveryNonManifoldAndPolygonEdgeCaseAgreesWith
 TEST(LoopConformanceData, TheCatalogIsComplete) {
     // The bundled catalog is always there; the course and CGAL folders are optional inputs.
     EXPECT_EQ(datasets::bundled_meshes().size(), 7u + 10u + 1u);
-    if (std::filesystem::is_directory(CROSSDIV_SHARED_DATA "/c3100/objs")) {
+    if (std::filesystem::is_directory(datasets::shared_data_dir() / "c3100/objs")) {
         EXPECT_EQ(datasets::course_mesh_files().size(), 3u);
     }
 }

@@ -15,6 +15,7 @@
 #include "crossdiv/io/patch_io.h"
 #include "fault_doubles.h"
 #include "crossdiv/verification/properties/surface_checks.h"
+#include "crossdiv/datasets/data_paths.h"
 
 using namespace crossdiv;
 using namespace crossdiv::verification;
@@ -108,7 +109,7 @@ TEST(SurfaceChecks, InputNamesAreValidated) {
 TEST(SurfaceChecks, CourseSurfacesAreFoundExactlyWhenTheSharedDataIsThere) {
     // ../shared/data is optional; when present its 8 srev/gcyl files and 2 BEZ files must
     // all be found, build, and pass (closed ones watertight, manifold and outward).
-    const bool present = std::filesystem::exists(std::filesystem::path(CROSSDIV_SHARED_DATA) / "c3100/swp/srev");
+    const bool present = std::filesystem::exists(datasets::shared_data_dir() / "c3100/swp/srev");
     const std::vector<std::string> files = expand_surface_inputs({"surfaces:course"});
     EXPECT_EQ(files.size(), present ? 10u : 0u);
     for (const std::string& f : files) {

@@ -9,13 +9,15 @@
 
 namespace crossdiv::verification::test {
 
-/// The source tree this build was configured from.
-inline const std::string kSource = CROSSDIV_SOURCE_DIR;
+/// The source tree this build was configured from (test_paths.cpp).
+const std::string& source_dir();
+/// The crossdiv command-line program of this build (test_paths.cpp).
+const std::string& crossdiv_cli();
 
-#ifdef CROSSDIV_CLI
-/// The crossdiv command-line program of this build (test binaries that run it define it).
-inline const std::string kCrossdiv = CROSSDIV_CLI;
-#endif
+/// The source tree this build was configured from.
+inline const std::string kSource = source_dir();
+/// The crossdiv command-line program of this build.
+inline const std::string kCrossdiv = crossdiv_cli();
 
 /// The bundled mesh `name` as triangles, its source named "test".
 inline TriMesh bundled(const std::string& name) { return to_tri_mesh(datasets::bundled_mesh(name), "test"); }
