@@ -85,6 +85,36 @@ TEST(CreaseMask, TransitionWeightAveragesWhatDecayed) {
     EXPECT_EQ(transition_weight(0.0f, 0.0f, std::vector<float>{1.5f}, std::vector<float>{0.0f}), 1.0f);  // clamped
 }
 
+// Hbr's rule change: the average of the sharpnesses strictly between 0 and 1 (a vertex of
+// exactly 1 is left out: it is still sharp in Hbr's next rule).
+TEST(CreaseMask, HbrsTransitionWeightAveragesWhatLiesBelowOne) {
+    EXPECT_EQ(hbr_transition_weight(1.0f, std::vector<float>{0.5f, 0.5f, 0.5f, 0.5f}), 0.5f);
+    EXPECT_EQ(hbr_transition_weight(0.5f, std::vector<float>{0.25f, 2.0f}), 0.375f);
+    EXPECT_EQ(hbr_transition_weight(0.0f, std::vector<float>{1.0f, 10.0f}), 0.0f);
+    EXPECT_EQ(hbr_child_rule_sharpness(1.0f), 1.0f);
+    EXPECT_EQ(hbr_child_rule_sharpness(0.999f), 0.0f);
+}
+
+// A 2x2 grid of quads whose centre (1,1,1/2) is a corner of sharpness 1 with its four edges at
+// 1/2: Far blends the corner (z = 1/2) with the smooth point (z = 1/4 + (4 x 1/8)/16 = 9/32) by
+// the average of 1 and four 1/2, 3/5 (in float, as Sdc): 0.6 x 1/2 + 0.4 x 9/32 = 0.4125. Hbr's
+// rule keeps the corner whole: 1/2.
+TEST(Creases, HbrsTransitionKeepsAVertexOfSharpnessOneSharp) {
+    PolyMesh m;
+    for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 3; ++x) m.positions.emplace_back(x, y, x == 1 && y == 1 ? 0.5 : 0.0);
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 2; ++x) m.add_face({3 * y + x, 3 * y + x + 1, 3 * y + x + 4, 3 * y + x + 3});
+    m.creases.vertices.push_back({4, 1.0f});
+    for (int b : {1, 3, 5, 7}) m.creases.edges.push_back({4, b, 0.5f});
+    CatmullClarkOptions far{CatmullClarkBoundary::EdgeOnly};
+    const double p = 0.6f;
+    EXPECT_NEAR(catmull_clark_subdivide(m, far, 1).positions[4].z(), p * 0.5 + (1 - p) * 9.0 / 32.0, 1e-15);
+    CatmullClarkOptions hbr = far;
+    hbr.crease_rules = CreaseRules::Hbr;
+    EXPECT_EQ(catmull_clark_subdivide(m, hbr, 1).positions[4].z(), 0.5);
+}
+
 TEST(CreaseMask, BlendTakesWhatTheParentLacksFromTheChild) {
     VertexPointMask corner, smooth;
     corner.set_corner();

@@ -79,6 +79,54 @@ TEST(Compare, VtkIsLoopInTheFloatTierWithoutTheCornerRule) {
     EXPECT_NE(rejected.outcome.message.find("Dataset is non-manifold"), std::string::npos) << rejected.outcome.message;
 }
 
+// OpenSubdiv's Hbr, the second implementation OpenSubdiv ships: float weights, so the float
+// tier. It agrees with core under each rule it has; it splits a bowtie's centre into one vertex
+// per fan (non-manifold-handling, measured against core on the split mesh); it refuses what its
+// half-edges cannot hold, by face; and on two triangles back to back (every vertex of valence
+// 2) its Loop loops forever in HbrVertex::AddIncidentEdge making level 2: a hang, recorded.
+TEST(Compare, HbrIsOpenSubdivsSecondImplementationInTheFloatTier) {
+    CROSSDIV_REQUIRE_LIBRARIES("hbr");
+    auto run = [](const PolyMesh& mesh, Scheme scheme, SchemeRule rule, double timeout = 60) {
+        RefinementRequest req;
+        req.scheme = scheme;
+        req.rule = rule;
+        req.levels = 2;
+        req.references = {"hbr"};
+        req.timeout_seconds = timeout;
+        const RefinementComparison c = compare_refinement(mesh, "mesh", req);
+        EXPECT_EQ(c.runs.size(), 1u);
+        return c.runs.at(0);
+    };
+    SchemeRule loop, loop_corners, catmark, catmark_corners;
+    loop.loop = {LoopWeights::Loop, LoopBoundary::EdgeOnly};
+    loop_corners.loop = {LoopWeights::Loop, LoopBoundary::EdgeAndCorner};
+    catmark.catmull_clark.boundary = CatmullClarkBoundary::EdgeOnly;
+    catmark_corners.catmull_clark.boundary = CatmullClarkBoundary::EdgeAndCorner;
+    for (const char* name : {"icosahedron", "open-patch", "fan-5"})
+        for (const SchemeRule& rule : {loop, loop_corners}) {
+            const auto r = run(datasets::bundled_mesh(name), Scheme::Loop, rule);
+            EXPECT_EQ(r.verdict, Verdict::Agree) << name << ": " << r.explanation;
+        }
+    for (const char* name : {"quad-grid", "prism-5", "quad-fan-5"})
+        for (const SchemeRule& rule : {catmark, catmark_corners}) {
+            const auto r = run(datasets::bundled_mesh(name), Scheme::CatmullClark, rule);
+            EXPECT_EQ(r.verdict, Verdict::Agree) << name << ": " << r.explanation;
+            EXPECT_GT(r.comparison.max_rel, 0.0) << name;  // float weights (1/n^2), not bit for bit
+        }
+    EXPECT_EQ(run(datasets::bundled_mesh("quad-grid"), Scheme::Bilinear, {}).verdict, Verdict::Agree);
+
+    const auto bowtie = run(datasets::edge_case("bowtie").mesh, Scheme::CatmullClark, catmark);
+    EXPECT_EQ(bowtie.divergence_class, DivergenceClass::NonManifoldHandling) << bowtie.explanation;
+    EXPECT_NE(bowtie.explanation.find("one vertex per fan (1 vertex into 2)"), std::string::npos) << bowtie.explanation;
+
+    const auto fin = run(datasets::edge_case("nonmanifold-edge-3").mesh, Scheme::Loop, loop);
+    EXPECT_EQ(fin.outcome.status, RunStatus::Rejected);
+    EXPECT_NE(fin.outcome.message.find("Hbr cannot hold face 2"), std::string::npos) << fin.outcome.message;
+
+    const auto pillow = run(datasets::edge_case("valence-2").mesh, Scheme::Loop, loop, 3.0);
+    EXPECT_EQ(pillow.outcome.status, RunStatus::Timeout) << pillow.outcome.message;
+}
+
 TEST(Compare, IdenticalMeshesUnderAPermutationAgree) {
     const PolyMesh ours = square_pair();
     PolyMesh ref;  // reference numbers vertices 3,2,1,0 and stores faces rotated

@@ -19,6 +19,7 @@ namespace crossdiv::verification::test {
 /// The CMake option that builds `library`'s implementation.
 inline std::string option_of(std::string_view library) {
     if (library == "eigen") return "CROSSDIV_WITH_EIGEN_SPLINES";
+    if (library == "hbr") return "CROSSDIV_WITH_OPENSUBDIV";  // Hbr's headers come with OpenSubdiv
     std::string s = "CROSSDIV_WITH_";
     for (char c : library.substr(0, library.find('-'))) s += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     return s;

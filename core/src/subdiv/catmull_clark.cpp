@@ -41,7 +41,7 @@ RefinementStep catmull_clark_step(const PolyMesh& mesh, const PolyConnectivity& 
         if (options.boundary == CatmullClarkBoundary::MidpointAverage)
             throw InputError("crease and hole tags follow OpenSubdiv's rules, whose boundary is edge-only or "
                              "edge-and-corner; the midpoint-average boundary rule has no tags");
-        crease.emplace(mesh, conn, options.creasing, options.boundary == CatmullClarkBoundary::EdgeAndCorner);
+        crease.emplace(mesh, conn, options.creasing, options.boundary == CatmullClarkBoundary::EdgeAndCorner, options.crease_rules);
         step.creases = crease->child_tags(edge_point);
         // One quad per corner, in corner order (below): face f's children are its corners.
         step.creases.holes = child_holes(mesh.creases.holes, [&](int f) { return mesh.face_start[f]; });

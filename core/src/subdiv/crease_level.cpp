@@ -22,8 +22,9 @@ void check_sharpness(float s, const std::string& tag) {
 
 }  // namespace
 
-CreaseLevel::CreaseLevel(const PolyMesh& mesh, const PolyConnectivity& conn, CreaseMethod method, bool sharpen_corners)
-    : conn_(conn), method_(method) {
+CreaseLevel::CreaseLevel(const PolyMesh& mesh, const PolyConnectivity& conn, CreaseMethod method, bool sharpen_corners,
+                         CreaseRules rules)
+    : conn_(conn), method_(method), rules_(rules) {
     const int nv = mesh.num_vertices(), ne = conn.num_edges();
     const CreaseTags& tags = mesh.creases;
     edge_.assign(static_cast<size_t>(ne), 0.0f);
@@ -60,7 +61,7 @@ CreaseLevel::CreaseLevel(const PolyMesh& mesh, const PolyConnectivity& conn, Cre
     // of the edges around it (gathered into buffers reused from vertex to vertex).
     half_.assign(2 * static_cast<size_t>(ne), 0.0f);
     vertices_.assign(static_cast<size_t>(nv), Vertex{});
-    std::vector<float> around, child_around;
+    std::vector<float> around, child_around, rule_around;
     std::vector<int> edges;
     for (int v = 0; v < nv; ++v) {
         around.clear();
@@ -73,7 +74,8 @@ CreaseLevel::CreaseLevel(const PolyMesh& mesh, const PolyConnectivity& conn, Cre
         child_around.resize(around.size());
         for (size_t i = 0; i < edges.size(); ++i) {
             const int e = edges[i];
-            child_around[i] = child_edge_sharpness(method, around[i], around);
+            child_around[i] = rules == CreaseRules::OpenSubdiv ? child_edge_sharpness(method, around[i], around)
+                                                               : hbr_child_edge_sharpness(method, around[i], around, i);
             half_[2 * static_cast<size_t>(e) + (conn.edge_vertices[e][0] == v ? 0 : 1)] = child_around[i];
         }
         float sharpness = vertex_tag_[static_cast<size_t>(v)];
@@ -93,8 +95,17 @@ CreaseLevel::CreaseLevel(const PolyMesh& mesh, const PolyConnectivity& conn, Cre
             return vertex_rule(vs, count);
         };
         out.parent = classify(around, sharpness, out.parent_ends);
-        out.child = classify(child_around, child_sharpness, out.child_ends);
-        if (out.parent != out.child) out.weight = transition_weight(sharpness, child_sharpness, around, child_around);
+        if (rules == CreaseRules::OpenSubdiv) {
+            out.child = classify(child_around, child_sharpness, out.child_ends);
+            if (out.parent != out.child) out.weight = transition_weight(sharpness, child_sharpness, around, child_around);
+        } else {
+            // Hbr's child rule reads the sharpness before the step (>= 1 is still sharp); the
+            // decayed values above stay those of the next level's tags.
+            rule_around.resize(around.size());
+            for (size_t i = 0; i < around.size(); ++i) rule_around[i] = hbr_child_rule_sharpness(around[i]);
+            out.child = classify(rule_around, hbr_child_rule_sharpness(sharpness), out.child_ends);
+            if (out.parent != out.child) out.weight = hbr_transition_weight(sharpness, around);
+        }
     }
 }
 

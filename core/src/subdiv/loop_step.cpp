@@ -44,7 +44,7 @@ RefinementStep loop_step(const PolyMesh& mesh, const PolyConnectivity& conn, con
 
     std::optional<CreaseLevel> crease;
     if (!mesh.creases.empty()) {
-        crease.emplace(mesh, conn, options.creasing, options.boundary == LoopBoundary::EdgeAndCorner);
+        crease.emplace(mesh, conn, options.creasing, options.boundary == LoopBoundary::EdgeAndCorner, options.crease_rules);
         step.creases = crease->child_tags(nv);
         step.creases.holes = child_holes(mesh.creases.holes, [](int f) { return 4 * f; });  // 4 per triangle, below
     }

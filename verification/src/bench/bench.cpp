@@ -107,9 +107,21 @@ std::vector<BenchRecord> run_bench(const std::vector<BenchInput>& inputs, const 
             const PolyConnectivity c = build_poly_connectivity(in.polygons);
             return std::none_of(c.twin.begin(), c.twin.end(), [](int t) { return t < 0; });
         }();
+        // Without crease tags the crease rules are moot too: an implementation with its own
+        // (Hbr) refines such a mesh as the rule asked for.
+        const bool untagged = in.polygons.creases.empty();  // a TriMesh carries no tags
+        const auto applies = [&](const Implementation* impl) {
+            if (impl->applies(in.scheme, request.rule)) return true;
+            for (CreaseRules t : {CreaseRules::OpenSubdiv, CreaseRules::Hbr}) {
+                SchemeRule r = request.rule;
+                r.loop.crease_rules = r.catmull_clark.crease_rules = t;
+                if (untagged && impl->applies(in.scheme, r)) return true;
+            }
+            return false;
+        };
         std::vector<const Implementation*> impls;
         for (const Implementation* impl : implementations())
-            if (impl->has(in.scheme) && (closed || impl->applies(in.scheme, request.rule))) impls.push_back(impl);
+            if (impl->has(in.scheme) && (closed || applies(impl))) impls.push_back(impl);
         // The repeats in rounds, every implementation in turn within a round (each in a child
         // of its own, warmed up once): the speed of a shared virtual machine drifts over
         // seconds, and a drift should weigh on every implementation alike, not on whichever

@@ -3,6 +3,9 @@
 #include <algorithm>
 
 #include "crossdiv/mesh/mesh_checks.h"
+#include "crossdiv/mesh/vertex_fans.h"
+#include "crossdiv/verification/harness/correspondence.h"
+#include "crossdiv/verification/harness/mesh_comparison.h"
 #include "crossdiv/subdiv/nonmanifold.h"
 #include "crossdiv/mesh/tri_mesh.h"
 #include "harness/sci.h"
@@ -22,6 +25,7 @@ DivergenceClass rule_difference_class(Scheme scheme, const SchemeRule& applied, 
         case Scheme::Loop: {
             const bool weights = applied.loop.weights != requested.loop.weights;
             const bool boundary = applied.loop.boundary != requested.loop.boundary;
+            if (!weights && !boundary && applied.loop.crease_rules != requested.loop.crease_rules) return DivergenceClass::CreaseRules;
             return weights && boundary ? DivergenceClass::WeightFamilyAndCornerRule
                    : weights           ? DivergenceClass::WeightFamily
                                        : DivergenceClass::CornerRule;
@@ -29,6 +33,8 @@ DivergenceClass rule_difference_class(Scheme scheme, const SchemeRule& applied, 
         case Scheme::CatmullClark: {
             const CatmullClarkOptions &a = applied.catmull_clark, &r = requested.catmull_clark;
             const bool boundary = a.boundary != r.boundary, vertex = a.vertex != r.vertex;
+            if (!boundary && !vertex && a.smooth_triangles == r.smooth_triangles && a.crease_rules != r.crease_rules)
+                return DivergenceClass::CreaseRules;
             if (a.smooth_triangles != r.smooth_triangles && !boundary && !vertex) return DivergenceClass::TriangleRule;
             const auto corner_only = [](CatmullClarkBoundary x) {
                 return x == CatmullClarkBoundary::EdgeOnly || x == CatmullClarkBoundary::EdgeAndCorner;
@@ -117,6 +123,30 @@ std::optional<Classification> nonmanifold_handling(const std::vector<char>& reac
                           (isolated ? "; " + std::to_string(isolated) + " vertices no face uses differ too "
                                                                         "(isolated-vertex-handling)"
                                     : "")};
+}
+
+std::optional<Classification> split_fans_handling(const PolyMesh& input, const PolyMesh& ref,
+                                                  const std::function<std::optional<PolyMesh>(const PolyMesh&)>& core_refine,
+                                                  double tolerance, const std::string& reference) {
+    std::vector<int> original;
+    const PolyMesh split = split_vertex_fans(input, &original);
+    if (split.num_vertices() == input.num_vertices()) return std::nullopt;
+    const std::optional<PolyMesh> ours = core_refine(split);
+    if (!ours || ours->num_vertices() != ref.num_vertices()) return std::nullopt;
+    const Correspondence c = match_nearest_and_faces(*ours, ref);
+    if (c.method == MatchMethod::None) return std::nullopt;
+    const MeshComparison m = compare_meshes(*ours, ref, c.ref_to_ours);
+    if (!m.topology_equal() || !(m.max_rel <= tolerance)) return std::nullopt;
+    std::vector<char> split_vertex(static_cast<size_t>(input.num_vertices()), 0);
+    for (size_t v = static_cast<size_t>(input.num_vertices()); v < original.size(); ++v) split_vertex[static_cast<size_t>(original[v])] = 1;
+    const auto vertices = std::count(split_vertex.begin(), split_vertex.end(), 1);
+    return Classification{DivergenceClass::NonManifoldHandling,
+                          reference + " splits each vertex whose faces form more than one fan into one vertex per fan (" +
+                              std::to_string(vertices) + (vertices == 1 ? " vertex into " : " vertices into ") +
+                              std::to_string(vertices + split.num_vertices() - input.num_vertices()) +
+                              ") and refines the result as a manifold: it agrees with core on that split mesh (max "
+                              "relative error " + detail::sci(m.max_rel) + " <= " + detail::sci(tolerance) +
+                              "), where core follows OpenSubdiv's non-manifold rules on the input itself"};
 }
 
 bool measured_topology_difference(const TopologyCounts& ours, const TopologyCounts& ref, bool face_sets_equal,

@@ -660,6 +660,16 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
                                           " against core's " + counts(against);
             DivergenceTests only_topology;
             only_topology.valence_table = valence_table;
+            only_topology.nonmanifold = [&]() -> std::optional<Classification> {
+                const auto core_refine = [&](const PolyMesh& m) -> std::optional<PolyMesh> {
+                    try {
+                        return core_implementation().refine(m, {req.scheme, run.ran_with, req.levels}).back();
+                    } catch (const std::exception&) {
+                        return std::nullopt;
+                    }
+                };
+                return split_fans_handling(input, theirs, core_refine, tolerance, ref.name());
+            };
             only_topology.topology = [&]() -> std::optional<Classification> {
                 if (!measured_topology_difference(topology_counts(against), topology_counts(theirs), false, MatchMethod::None))
                     return std::nullopt;
@@ -809,6 +819,10 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
                 cls == DivergenceClass::TriangleRule
                     ? ref.name() + " applies the " + (run.ran_with.catmull_clark.smooth_triangles ? "smooth" : "catmark") +
                           " weights at triangles"
+                : cls == DivergenceClass::CreaseRules
+                    ? ref.name() + " applies Hbr's semi-sharp crease rules (" + run.rule +
+                          ": a sharpness of exactly 1 stays sharp one step longer, and Chaikin's decay averages every "
+                          "sharp edge beside, infinitely sharp ones too)"
                     : rule_effect(req.scheme, ref.name(), rule, run.rule, req.levels);
             return Classification{cls, effect + ": " + agrees + "; core's " + rule + differs("differs")};
         };

@@ -30,6 +30,7 @@ constexpr std::array kClasses = {
     std::pair{DivergenceClass::Parity, "parity"},
     std::pair{DivergenceClass::WingRule, "wing-rule"},
     std::pair{DivergenceClass::TriangleRule, "triangle-rule"},
+    std::pair{DivergenceClass::CreaseRules, "crease-rules"},
     std::pair{DivergenceClass::FaceVaryingRule, "fvar-rule"},
     std::pair{DivergenceClass::NormalRule, "normal-rule"},
     std::pair{DivergenceClass::Convention, "convention"},

@@ -18,11 +18,13 @@ SchemeRule with_variant(Scheme scheme, SchemeRule requested, const SchemeRule& f
         case Scheme::Loop:
             requested.loop.weights = from.loop.weights;
             requested.loop.boundary = from.loop.boundary;
+            requested.loop.crease_rules = from.loop.crease_rules;
             break;
         case Scheme::CatmullClark:
             requested.catmull_clark.boundary = from.catmull_clark.boundary;
             requested.catmull_clark.smooth_triangles = from.catmull_clark.smooth_triangles;
             requested.catmull_clark.vertex = from.catmull_clark.vertex;
+            requested.catmull_clark.crease_rules = from.catmull_clark.crease_rules;
             break;
         case Scheme::DooSabin: requested.doo_sabin = from.doo_sabin; break;
         case Scheme::Sqrt3: requested.sqrt3 = from.sqrt3; break;
@@ -55,17 +57,28 @@ const SchemeSupport* Implementation::support(Scheme scheme) const {
     return nullptr;
 }
 
-SchemeRule Implementation::closest_rule(Scheme scheme, const SchemeRule& requested) const {
+SchemeRule Implementation::closest_rule(Scheme scheme, const SchemeRule& asked) const {
     const SchemeSupport* s = support(scheme);
-    if (!s || s->rules.empty() || has_variant(scheme, *s, requested)) return requested;
+    if (!s || s->rules.empty() || has_variant(scheme, *s, asked)) return asked;
+    // Crease rules of their own (Hbr's) are the ones it applies, whatever else is asked.
+    SchemeRule requested = asked;
+    if (scheme == Scheme::Loop &&
+        std::none_of(s->rules.begin(), s->rules.end(), [&](const SchemeRule& r) { return r.loop.crease_rules == asked.loop.crease_rules; }))
+        requested.loop.crease_rules = s->rules.front().loop.crease_rules;
+    if (scheme == Scheme::CatmullClark &&
+        std::none_of(s->rules.begin(), s->rules.end(),
+                     [&](const SchemeRule& r) { return r.catmull_clark.crease_rules == asked.catmull_clark.crease_rules; }))
+        requested.catmull_clark.crease_rules = s->rules.front().catmull_clark.crease_rules;
+    if (has_variant(scheme, *s, requested)) return requested;
     if (scheme == Scheme::Loop) {
         // Keep the weight family before the boundary rule: Loop's weights are what every
         // library has, the corner rule is what some lack.
-        for (const LoopOptions& o : {LoopOptions{LoopWeights::Loop, requested.loop.boundary, requested.loop.creasing},
-                                     LoopOptions{requested.loop.weights, LoopBoundary::EdgeOnly, requested.loop.creasing},
-                                     LoopOptions{LoopWeights::Loop, LoopBoundary::EdgeOnly, requested.loop.creasing}}) {
+        for (const auto& [weights, boundary] : {std::pair{LoopWeights::Loop, requested.loop.boundary},
+                                                std::pair{requested.loop.weights, LoopBoundary::EdgeOnly},
+                                                std::pair{LoopWeights::Loop, LoopBoundary::EdgeOnly}}) {
             SchemeRule candidate = requested;
-            candidate.loop = o;
+            candidate.loop.weights = weights;
+            candidate.loop.boundary = boundary;
             if (has_variant(scheme, *s, candidate)) return candidate;
         }
         // A family of its own and not Loop's (Open3D has Warren's only): that family, with the

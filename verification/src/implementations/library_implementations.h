@@ -17,6 +17,7 @@ std::unique_ptr<Implementation> make_opensubdiv_implementation();
 std::vector<std::unique_ptr<Implementation>> make_openmesh_implementations();
 std::vector<std::unique_ptr<Implementation>> make_cgal_implementations();
 std::unique_ptr<Implementation> make_vtk_implementation();
+std::unique_ptr<Implementation> make_hbr_implementation();
 std::unique_ptr<Implementation> make_eigen_implementation();
 std::unique_ptr<Implementation> make_skimage_implementation();
 

@@ -20,6 +20,9 @@ std::vector<std::unique_ptr<Implementation>> build() {
 #ifdef CROSSDIV_HAS_OPENSUBDIV
     all.push_back(detail::make_opensubdiv_implementation());
 #endif
+#ifdef CROSSDIV_HAS_HBR
+    all.push_back(detail::make_hbr_implementation());
+#endif
 #ifdef CROSSDIV_HAS_OPENMESH
     for (auto& i : detail::make_openmesh_implementations()) all.push_back(std::move(i));
 #endif

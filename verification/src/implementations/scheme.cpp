@@ -48,16 +48,27 @@ Scheme scheme_from_string(std::string_view name) {
     return variant_from_string<Scheme>(name, all_schemes(), "scheme");
 }
 
+namespace {
+
+/// " creases=hbr" for Hbr's semi-sharp crease rules; nothing for OpenSubdiv's, everyone else's.
+std::string crease_rules_suffix(CreaseRules t) {
+    return t == CreaseRules::OpenSubdiv ? "" : " creases=" + std::string(to_string(t));
+}
+
+}  // namespace
+
 std::string rule_name(Scheme scheme, const SchemeRule& rule) {
     switch (scheme) {
         case Scheme::Loop:
-            return "weights=" + std::string(to_string(rule.loop.weights)) + " boundary=" + std::string(to_string(rule.loop.boundary));
+            return "weights=" + std::string(to_string(rule.loop.weights)) + " boundary=" + std::string(to_string(rule.loop.boundary)) +
+                   crease_rules_suffix(rule.loop.crease_rules);
         case Scheme::CatmullClark:
             return std::string(to_string(rule.catmull_clark.boundary)) +
                    (rule.catmull_clark.smooth_triangles ? " smooth-triangles" : "") +
                    (rule.catmull_clark.vertex != CatmullClarkVertexRule::Standard
                         ? " vertex=" + std::string(to_string(rule.catmull_clark.vertex))
-                        : "");
+                        : "") +
+                   crease_rules_suffix(rule.catmull_clark.crease_rules);
         case Scheme::DooSabin:
             return std::string(to_string(rule.doo_sabin.boundary)) +
                    (rule.doo_sabin.weights != DooSabinWeights::DooSabin ? " weights=" + std::string(to_string(rule.doo_sabin.weights))
@@ -83,7 +94,7 @@ bool same_rule(Scheme scheme, const SchemeRule& a, const SchemeRule& b) {
         case Scheme::CatmullClark:
             return a.catmull_clark.boundary == b.catmull_clark.boundary && a.catmull_clark.creasing == b.catmull_clark.creasing &&
                    a.catmull_clark.smooth_triangles == b.catmull_clark.smooth_triangles &&
-                   a.catmull_clark.vertex == b.catmull_clark.vertex;
+                   a.catmull_clark.vertex == b.catmull_clark.vertex && a.catmull_clark.crease_rules == b.catmull_clark.crease_rules;
         default: return rule_name(scheme, a) == rule_name(scheme, b);
     }
 }

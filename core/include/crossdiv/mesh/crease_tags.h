@@ -37,6 +37,34 @@ inline CreaseMethod crease_method_from_string(std::string_view name) {
     return variant_from_string<CreaseMethod>(name, std::array{CreaseMethod::Uniform, CreaseMethod::Chaikin}, "creasing method");
 }
 
+/// Whose rules for semi-sharp creases: the two implementations OpenSubdiv ships differ in three.
+enum class CreaseRules {
+    /// Far (Sdc::Crease): a vertex whose features decay takes its next rule from the decayed
+    /// sharpness (1 becomes 0, smooth) and weighs the parent rule by the average of every
+    /// sharpness that decays to zero, 1 included (transition_weight, subdiv/crease_mask.h);
+    /// Chaikin's decay averages the other semi-sharp edges at the end vertex, and a lone
+    /// edge drops by 1 (child_edge_sharpness); an edge point is the crease's midpoint when
+    /// both halves stay sharp in the next level.
+    OpenSubdiv,
+    /// Hbr (HbrVertex::GetMask, GetFractionalMask, HbrSubdivision::SubdivideCreaseWeight): a
+    /// feature of sharpness at least 1 is still sharp in the next rule (IsSharp(false) is
+    /// `sharpness >= 1`), and the parent rule is weighed by the average of the sharpnesses
+    /// strictly between 0 and 1 -- a corner of 1 with four edges of 0.5 stays a corner, where
+    /// Far keeps 3/5 of it; Chaikin's decay averages every other sharp edge at the end vertex,
+    /// infinitely sharp ones included, and takes 3/4 of a lone edge's sharpness before the
+    /// drop by 1 (hbr_child_edge_sharpness); an edge point is the midpoint when the edge's
+    /// sharpness is at least 1, else blended by it, whatever Chaikin's decay gives its halves.
+    Hbr,
+};
+
+/// "opensubdiv" / "hbr".
+constexpr std::string_view to_string(CreaseRules t) { return t == CreaseRules::OpenSubdiv ? "opensubdiv" : "hbr"; }
+/// @throws InputError listing the names.
+inline CreaseRules crease_rules_from_string(std::string_view name) {
+    return variant_from_string<CreaseRules>(name, std::array{CreaseRules::OpenSubdiv, CreaseRules::Hbr},
+                                                 "crease rules");
+}
+
 /// Sharpness of the edge between vertices a and b (either order). 0 is smooth; 10 and above
 /// is infinitely sharp (Sdc::Crease::SHARPNESS_INFINITE); in between the edge is semi-sharp
 /// and stays sharp for about that many levels. Stored as float, as OpenSubdiv stores it, so

@@ -59,6 +59,8 @@ struct CatmullClarkOptions {
     /// The smooth interior vertex rule (the literature's variants, for naming what an
     /// implementation under test does; Standard is everyone's).
     CatmullClarkVertexRule vertex = CatmullClarkVertexRule::Standard;
+    /// Whose semi-sharp crease rules (crease_tags.h): Far's, or Hbr's where they differ.
+    CreaseRules crease_rules = CreaseRules::OpenSubdiv;
     friend bool operator==(const CatmullClarkOptions&, const CatmullClarkOptions&) = default;
 };
 

@@ -40,7 +40,10 @@ public:
     /// @throws InputError naming the tag (and its file line) for a crease whose two vertices
     ///         share no edge, a vertex index out of range, or a sharpness that is negative or
     ///         not finite.
-    CreaseLevel(const PolyMesh& mesh, const PolyConnectivity& conn, CreaseMethod method, bool sharpen_corners);
+    /// @param rules whose semi-sharp rules: the decay of Chaikin's creasing and the rule change
+    ///        of a vertex whose features decay (Far's, or Hbr's: crease_tags.h).
+    CreaseLevel(const PolyMesh& mesh, const PolyConnectivity& conn, CreaseMethod method, bool sharpen_corners,
+                CreaseRules rules = CreaseRules::OpenSubdiv);
 
     /// The rules of a vertex at this level and the next, and how to blend them.
     struct Vertex {
@@ -58,8 +61,11 @@ public:
     float child_half_sharpness(int e, int v) const {
         return half_[2 * static_cast<size_t>(e) + (conn_.edge_vertices[e][0] == v ? 0 : 1)];
     }
-    /// Whether the new point on edge e is a crease in the next level (both halves stay sharp).
+    /// Whether the new point on edge e takes the crease rule (the edge's midpoint) whole: when
+    /// both halves stay sharp in the next level (Far), or when the edge's sharpness is at least
+    /// 1 (Hbr's rules: below 1 it blends by the sharpness, HbrCatmarkSubdivision::Subdivide).
     bool edge_child_is_crease(int e) const {
+        if (rules_ == CreaseRules::Hbr) return edge_[static_cast<size_t>(e)] >= 1.0f;
         return is_sharp(half_[2 * static_cast<size_t>(e)]) && is_sharp(half_[2 * static_cast<size_t>(e) + 1]);
     }
 
@@ -70,6 +76,7 @@ public:
 private:
     const PolyConnectivity& conn_;
     CreaseMethod method_;
+    CreaseRules rules_;
     std::vector<float> edge_;        ///< per edge
     std::vector<float> half_;        ///< child sharpness of edge e's half at edge_vertices[e][k]: 2e + k
     std::vector<float> vertex_tag_;  ///< per vertex, as tagged (not sharpened)

@@ -5,7 +5,7 @@
 /// of a rule transition, the sharp masks (crease, corner) and the blend of two masks. As
 /// OpenSubdiv's Sdc::Crease and Sdc::Scheme define them (after T. DeRose, M. Kass, T. Truong,
 /// "Subdivision Surfaces in Character Animation", SIGGRAPH 1998: semi-sharp creases; Chaikin
-/// decay as in Hbr). Scheme-free: each scheme brings its smooth masks; crease_level.h gathers
+/// decay). Hbr's variants of two of them beside (CreaseRules::Hbr). Scheme-free: each scheme brings its smooth masks; crease_level.h gathers
 /// the sharpness of a level; the traversals are catmull_clark.cpp and loop_step.cpp.
 ///
 /// Sharpness is float, as in OpenSubdiv, so that decay and thresholds match the library's bit
@@ -92,6 +92,46 @@ inline float transition_weight(float parent_vertex, float child_vertex, std::spa
         }
     if (count == 0) return 0.0f;
     return std::min(sum / static_cast<float>(count), 1.0f);
+}
+
+/// Sharpness of the child half of edge `self` (of sharpness `s`, among the end vertex's edges
+/// `around`) under Hbr's rules (CreaseRules::Hbr, HbrSubdivision::SubdivideCreaseWeight): as
+/// child_edge_sharpness for the uniform decay; Chaikin's takes 1/4 of the average of every
+/// other sharp edge (infinitely sharp ones too) plus 3/4 of its own, then drops by 1, a lone
+/// sharp edge 3/4 of its own. In float, in Hbr's order.
+inline float hbr_child_edge_sharpness(CreaseMethod method, float s, std::span<const float> around, size_t self) {
+    if (method == CreaseMethod::Uniform || s <= 0.0f || is_infinitely_sharp(s)) return decrement_sharpness(s);
+    float others = 0.0f;
+    int n = 0;
+    for (size_t i = 0; i < around.size(); ++i)
+        if (i != self && around[i] > 0.0f) {
+            others += around[i];
+            ++n;
+        }
+    float child = n ? others * 0.25f / static_cast<float>(n) : 0.0f;
+    child += s * 0.75f;
+    child -= 1.0f;
+    return child > 0.0f ? child : 0.0f;
+}
+
+/// Hbr's sharpness of a feature in the child rule (CreaseRules::Hbr): sharp when at least 1.
+inline float hbr_child_rule_sharpness(float s) { return s >= 1.0f ? s : 0.0f; }
+
+/// Hbr's weight of the parent rule (HbrVertex::GetFractionalMask): the average of the vertex's
+/// and its edges' sharpnesses strictly between 0 and 1, in float as Hbr sums them; 0 when
+/// there is none (the rules then do not differ).
+inline float hbr_transition_weight(float parent_vertex, std::span<const float> parent_edges) {
+    float sum = 0.0f, n = 0.0f;
+    if (parent_vertex > 0.0f && parent_vertex < 1.0f) {
+        sum += parent_vertex;
+        n += 1.0f;
+    }
+    for (float s : parent_edges)
+        if (s > 0.0f && s < 1.0f) {
+            sum += s;
+            n += 1.0f;
+        }
+    return n > 0.0f ? sum / n : 0.0f;
 }
 
 /// A vertex-point mask in OpenSubdiv's form: a weight on the vertex, one per incident edge

@@ -61,6 +61,8 @@ struct LoopOptions {
     CreaseMethod creasing = CreaseMethod::Uniform;
     /// A mesh that is not a manifold: OpenSubdiv's rules (nonmanifold.h) or refused.
     NonManifoldRule nonmanifold = NonManifoldRule::OpenSubdiv;
+    /// Whose semi-sharp crease rules (crease_tags.h): Far's, or Hbr's where they differ.
+    CreaseRules crease_rules = CreaseRules::OpenSubdiv;
     friend bool operator==(const LoopOptions&, const LoopOptions&) = default;
 };
 

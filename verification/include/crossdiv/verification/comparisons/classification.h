@@ -13,7 +13,10 @@
 ///   4. valence-limit             at level 1 exactly the vertices beyond the reference's weight
 ///                                table differ
 ///   5. non-manifold-handling     core took OpenSubdiv's non-manifold rules, and every vertex
-///                                that differs lies where the non-manifold vertices reach
+///                                that differs lies where the non-manifold vertices reach; or,
+///                                where no vertex bijection exists, the reference agrees with
+///                                core on the input with every vertex split into one per fan
+///                                of faces (split_fans_handling)
 ///   6. topology                  a measured difference of the refined connectivity: the
 ///                                counts differ, or the face sets differ under a correspondence
 ///                                derived from provenance (measured_topology_difference). Face
@@ -65,6 +68,7 @@ Classification classify_divergence(const DivergenceTests& tests);
 /// The class of a divergence that the reference's rule `applied` explains, against the rule
 /// `requested`: Loop weight-family, corner-rule or both; Catmull-Clark weight-family for another
 /// interior vertex rule, corner-rule between edge-only and edge-and-corner, else boundary-rule;
+/// crease-rules where only the crease transition differs (Loop, Catmull-Clark);
 /// Doo-Sabin weight-family for other corner weights on the same border, else
 /// border-faces-dropped; sqrt3 parity.
 DivergenceClass rule_difference_class(Scheme scheme, const SchemeRule& applied, const SchemeRule& requested);
@@ -85,6 +89,16 @@ std::optional<Classification> nonmanifold_handling(const std::vector<char>& reac
                                                    const PolyMesh& ref, const std::vector<int>& ref_to_ours,
                                                    double tolerance, const std::string& reference, double max_rel,
                                                    const std::string& against = "");
+
+/// Test 5 where no vertex bijection exists: non-manifold-handling when the input has a vertex
+/// whose faces form more than one fan, and the reference's last level `ref` agrees in faces
+/// and within `tolerance` with `core_refine` of the input split into one vertex per fan
+/// (split_vertex_fans): the reference split those vertices, as a half-edge structure must,
+/// and refined a manifold. `core_refine` returns core's last level under the reference's
+/// rule, or nothing when core refuses. Nothing otherwise.
+std::optional<Classification> split_fans_handling(const PolyMesh& input, const PolyMesh& ref,
+                                                  const std::function<std::optional<PolyMesh>(const PolyMesh&)>& core_refine,
+                                                  double tolerance, const std::string& reference);
 
 /// Whether a comparison measured a difference of topology (test 6): the counts differ, or
 /// the face sets differ under a correspondence found by `method` Order or Topology (from

@@ -53,6 +53,9 @@ enum class DivergenceClass {
     Parity,                    ///< sqrt3: the boundary generations are counted per call
     WingRule,                  ///< Butterfly: another stand-in for a wing point beyond the boundary
     TriangleRule,              ///< Catmull-Clark: OpenSubdiv's smooth-triangle edge weights, or not
+    /// Loop, Catmull-Clark: other semi-sharp crease rules (Hbr's, crossdiv::CreaseRules: a
+    /// sharpness of exactly 1 stays sharp a step longer; Chaikin's decay of its own)
+    CreaseRules,
     /// Face-varying values (texture coordinates) refined under another of OpenSubdiv's six
     /// linear-interpolation rules than the one asked for
     FaceVaryingRule,

@@ -1,0 +1,209 @@
+// OpenSubdiv's Hbr (hierarchical boundary representation): the one translation unit that
+// includes its headers, compiled as C++17 (hbr_refiner.h). Hbr is header-only templates over
+// the vertex data type, here a double-precision point; Hbr's own weights are floats.
+//
+// HBR_ADAPTIVE declares the split-vertex list (a vertex whose faces form more than one fan is
+// split by Finish()). Hbr's headers are not self-contained: mesh.h first, as OpenSubdiv's own
+// regression code includes them.
+#define HBR_ADAPTIVE
+// clang-format off
+#include <cassert>
+#include <opensubdiv/hbr/mesh.h>
+#include <opensubdiv/hbr/bilinear.h>
+#include <opensubdiv/hbr/loop.h>
+#include <opensubdiv/hbr/catmark.h>
+#include <opensubdiv/hbr/vertexEdit.h>
+#include <opensubdiv/version.h>
+// clang-format on
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "hbr_refiner.h"
+
+namespace crossdiv::adapters::hbr::detail {
+namespace {
+
+/// Hbr's vertex data: a position, combined with Hbr's (float) weights in double.
+class Point {
+public:
+    Point() = default;
+    explicit Point(int) {}  // HbrMesh::NewVertex(id) makes its data from the ID
+    Point(double x, double y, double z) : p_{x, y, z} {}
+
+    void Clear(void* = nullptr) { p_[0] = p_[1] = p_[2] = 0.0; }
+    void AddWithWeight(const Point& src, float weight, void* = nullptr) {
+        for (int i = 0; i < 3; ++i) p_[i] += static_cast<double>(weight) * src.p_[i];
+    }
+    /// Varying data (linearly interpolated primvars): a position has none.
+    void AddVaryingWithWeight(const Point&, float, void* = nullptr) {}
+    /// A hierarchical edit of the position ("P"): set, add or subtract three values.
+    void ApplyVertexEdit(const OpenSubdiv::HbrVertexEdit<Point>& edit) {
+        const float* value = edit.GetEdit();
+        for (int i = 0; i < 3; ++i) {
+            switch (edit.GetOperation()) {
+                case OpenSubdiv::HbrHierarchicalEdit<Point>::Set: p_[i] = value[i]; break;
+                case OpenSubdiv::HbrHierarchicalEdit<Point>::Add: p_[i] += value[i]; break;
+                case OpenSubdiv::HbrHierarchicalEdit<Point>::Subtract: p_[i] -= value[i]; break;
+            }
+        }
+    }
+    void ApplyMovingVertexEdit(const OpenSubdiv::HbrMovingVertexEdit<Point>&) {}
+
+    const double* data() const { return p_; }
+
+private:
+    double p_[3] = {0.0, 0.0, 0.0};
+};
+
+using Mesh = OpenSubdiv::HbrMesh<Point>;
+using Vertex = OpenSubdiv::HbrVertex<Point>;
+using Face = OpenSubdiv::HbrFace<Point>;
+using Halfedge = OpenSubdiv::HbrHalfedge<Point>;
+using Subdivision = OpenSubdiv::HbrSubdivision<Point>;
+
+/// The Hbr mesh of `in` with its tags, finished; empty with `error` set when a tag names
+/// something the mesh does not have.
+std::unique_ptr<Mesh> build(const HbrInput& in, Subdivision* scheme, std::string& error) {
+    auto out = std::make_unique<Mesh>(scheme);
+    const int nv = static_cast<int>(in.positions.size() / 3);
+    for (int v = 0; v < nv; ++v) out->NewVertex(v, Point(in.positions[3 * v], in.positions[3 * v + 1], in.positions[3 * v + 2]));
+    for (size_t f = 0, c = 0; f < in.face_sizes.size(); c += static_cast<size_t>(in.face_sizes[f]), ++f)
+        out->NewFace(in.face_sizes[f], const_cast<int*>(in.corners.data() + c), 0);
+    for (size_t e = 0; e < in.crease_sharpness.size(); ++e) {
+        Vertex* a = out->GetVertex(in.crease_ends[2 * e]);
+        Vertex* b = out->GetVertex(in.crease_ends[2 * e + 1]);
+        Halfedge* h = a && b ? (a->GetEdge(b) ? a->GetEdge(b) : b->GetEdge(a)) : nullptr;
+        if (!h) {
+            error = "a crease tag names edge " + std::to_string(in.crease_ends[2 * e]) + "-" +
+                    std::to_string(in.crease_ends[2 * e + 1]) + ", which the mesh does not have";
+            return nullptr;
+        }
+        h->SetSharpness(in.crease_sharpness[e]);
+    }
+    for (size_t c = 0; c < in.corner_sharpness.size(); ++c) {
+        Vertex* v = out->GetVertex(in.corner_vertices[c]);
+        if (!v) {
+            error = "a corner tag names vertex " + std::to_string(in.corner_vertices[c]) + ", which the mesh does not have";
+            return nullptr;
+        }
+        v->SetSharpness(in.corner_sharpness[c]);
+    }
+    for (int f : in.holes) out->GetFace(f)->SetHole();
+    out->SetInterpolateBoundaryMethod(in.edge_and_corner ? Mesh::k_InterpolateBoundaryEdgeAndCorner : Mesh::k_InterpolateBoundaryEdgeOnly);
+    scheme->SetCreaseSubdivisionMethod(in.chaikin ? Subdivision::k_CreaseChaikin : Subdivision::k_CreaseNormal);
+    out->Finish();
+    return out;
+}
+
+/// The parent of `v` (a vertex of the level after `index`'s), in the numbering of its level:
+/// `index` maps Hbr's vertex IDs, `face_index` its face IDs. False when Hbr names none.
+bool record_parent(Vertex* v, const std::vector<int>& index, const std::vector<int>& face_index, HbrLevel& lv) {
+    int kind = 0, a = -1, b = -1;
+    if (Face* pf = v->GetParentFace()) {
+        kind = 2;
+        a = face_index[static_cast<size_t>(pf->GetID())];
+    } else if (Halfedge* pe = v->GetParentEdge()) {
+        kind = 1;
+        a = index[static_cast<size_t>(pe->GetOrgVertex()->GetID())];
+        b = index[static_cast<size_t>(pe->GetDestVertex()->GetID())];
+    } else if (Vertex* pv = v->GetParentVertex()) {
+        a = index[static_cast<size_t>(pv->GetID())];
+    } else {
+        return false;
+    }
+    lv.parent_kind.push_back(kind);
+    lv.parent_a.push_back(a);
+    lv.parent_b.push_back(b);
+    return true;
+}
+
+/// Refines every face of every level (hole faces too: Hbr hands their holes down to their
+/// children, as Far does) and reads each level back. Each level's vertices are numbered as
+/// Far and core number them where they can be: first the children of the level before's
+/// vertices, in its order, so that a vertex keeps its number; then the others (edge and face
+/// points) in order of first use by the child faces.
+void refine_levels(Mesh& mesh, int num_vertices, int num_faces, int levels, HbrOutput& out) {
+    std::vector<Face*> faces;
+    for (int f = 0; f < num_faces; ++f) faces.push_back(mesh.GetFace(f));
+    // The vertices of the current level in its numbering; a split vertex (Hbr's copy of a
+    // vertex whose faces form more than one fan, made by Finish()) after the input's, and
+    // named as its original.
+    std::vector<Vertex*> vertices;
+    std::vector<int> index(static_cast<size_t>(mesh.GetNumVertices()), -1);
+    for (int v = 0; v < num_vertices; ++v) {
+        vertices.push_back(mesh.GetVertex(v));
+        index[static_cast<size_t>(v)] = v;
+    }
+    for (const std::pair<int, int>& split : mesh.GetSplitVertices()) {
+        vertices.push_back(mesh.GetVertex(split.first));
+        index[static_cast<size_t>(split.first)] = split.second;
+    }
+    std::vector<int> face_index;  // Hbr face ID -> position in `faces`
+    Subdivision* scheme = mesh.GetSubdivision();
+    for (int level = 1; level <= levels; ++level) {
+        face_index.assign(static_cast<size_t>(mesh.GetNumFaces()), -1);
+        for (size_t f = 0; f < faces.size(); ++f) face_index[static_cast<size_t>(faces[f]->GetID())] = static_cast<int>(f);
+        for (Face* f : faces) f->Refine();
+        std::vector<Face*> children;
+        for (Face* f : faces) {
+            const int n = scheme->GetFaceChildrenCount(f->GetNumVertices());
+            for (int c = 0; c < n; ++c)
+                if (Face* child = f->GetChild(c)) children.push_back(child);
+        }
+        HbrLevel lv;
+        std::vector<Vertex*> next_vertices;
+        std::vector<int> next(static_cast<size_t>(mesh.GetNumVertices()), -1);
+        const auto number = [&](Vertex* v) {
+            int& id = next[static_cast<size_t>(v->GetID())];
+            if (id >= 0) return true;
+            id = static_cast<int>(next_vertices.size());
+            next_vertices.push_back(v);
+            const double* p = v->GetData().data();
+            lv.positions.insert(lv.positions.end(), p, p + 3);
+            if (record_parent(v, index, face_index, lv)) return true;
+            out.error = "Hbr made vertex " + std::to_string(v->GetID()) + " of level " + std::to_string(level) + " without a parent";
+            return false;
+        };
+        for (Vertex* v : vertices)
+            if (v->HasChild() && !number(v->Subdivide())) return;
+        for (Face* f : children) {
+            if (f->IsHole()) lv.holes.push_back(static_cast<int>(lv.face_sizes.size()));
+            lv.face_sizes.push_back(f->GetNumVertices());
+            for (int k = 0; k < f->GetNumVertices(); ++k) {
+                if (!number(f->GetVertex(k))) return;
+                lv.corners.push_back(next[static_cast<size_t>(f->GetVertex(k)->GetID())]);
+            }
+        }
+        out.levels.push_back(std::move(lv));
+        index = std::move(next);
+        vertices = std::move(next_vertices);
+        faces = std::move(children);
+    }
+}
+
+}  // namespace
+
+HbrOutput refine(const HbrInput& in) {
+    OpenSubdiv::HbrCatmarkSubdivision<Point> catmark;
+    OpenSubdiv::HbrLoopSubdivision<Point> loop;
+    OpenSubdiv::HbrBilinearSubdivision<Point> bilinear;
+    catmark.SetTriangleSubdivisionMethod(in.smooth_triangles ? OpenSubdiv::HbrCatmarkSubdivision<Point>::k_New
+                                                             : OpenSubdiv::HbrCatmarkSubdivision<Point>::k_Normal);
+    Subdivision* scheme = in.scheme == HbrScheme::CatmullClark ? static_cast<Subdivision*>(&catmark)
+                          : in.scheme == HbrScheme::Loop       ? static_cast<Subdivision*>(&loop)
+                                                               : static_cast<Subdivision*>(&bilinear);
+    HbrOutput out;
+    std::unique_ptr<Mesh> mesh = build(in, scheme, out.error);
+    if (mesh)
+        refine_levels(*mesh, static_cast<int>(in.positions.size() / 3), static_cast<int>(in.face_sizes.size()), in.levels, out);
+    return out;
+}
+
+std::string version() {
+    return std::to_string(OPENSUBDIV_VERSION_MAJOR) + "." + std::to_string(OPENSUBDIV_VERSION_MINOR) + "." +
+           std::to_string(OPENSUBDIV_VERSION_PATCH);
+}
+
+}  // namespace crossdiv::adapters::hbr::detail

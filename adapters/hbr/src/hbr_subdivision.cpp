@@ -1,0 +1,134 @@
+// The Hbr adapter's conversions: crossdiv's meshes and rules to Hbr's input, Hbr's levels back
+// to a LevelTrace. Hbr itself is in hbr_refiner.cpp (C++17).
+#include "crossdiv/adapters/hbr.h"
+
+#include <algorithm>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "hbr_refiner.h"
+
+namespace crossdiv::adapters::hbr {
+namespace {
+
+constexpr const char* kOwnCreaseRules =
+    "Hbr changes crease rules its own way where semi-sharp features decay (creases=hbr); it has no other";
+
+/// Hbr asserts (or corrupts its half-edges) on a face it cannot link; refuse such a mesh first,
+/// as OpenSubdiv's regression reader does before it calls NewFace: a face naming a vertex twice,
+/// a directed edge used twice (a flipped face, or more than two faces on an edge), a vertex
+/// without faces (Hbr never refines it).
+void check_topology(const PolyMesh& mesh) {
+    struct DirectedEdge {
+        int a, b, face;
+    };
+    std::vector<DirectedEdge> edges;
+    edges.reserve(mesh.face_vertices.size());
+    std::vector<int> last_face(static_cast<size_t>(mesh.num_vertices()), -1);
+    for (int f = 0; f < mesh.num_faces(); ++f) {
+        const int* c = mesh.face(f);
+        const int n = mesh.face_size(f);
+        for (int k = 0; k < n; ++k) {
+            int& seen = last_face[static_cast<size_t>(c[k])];
+            if (seen == f) throw Rejected("Hbr cannot hold face " + std::to_string(f) + ": it names vertex " + std::to_string(c[k]) + " twice");
+            seen = f;
+            edges.push_back({c[k], c[(k + 1) % n], f});
+        }
+    }
+    std::sort(edges.begin(), edges.end(), [](const DirectedEdge& x, const DirectedEdge& y) {
+        return x.a != y.a ? x.a < y.a : x.b != y.b ? x.b < y.b : x.face < y.face;
+    });
+    for (size_t i = 1; i < edges.size(); ++i)
+        if (edges[i].a == edges[i - 1].a && edges[i].b == edges[i - 1].b)
+            throw Rejected("Hbr cannot hold face " + std::to_string(edges[i].face) + ": its edge " + std::to_string(edges[i].a) + "-" +
+                           std::to_string(edges[i].b) + " runs the same way in face " + std::to_string(edges[i - 1].face) +
+                           " (a flipped face, or more than two faces on the edge)");
+    for (int v = 0; v < mesh.num_vertices(); ++v)
+        if (last_face[static_cast<size_t>(v)] < 0)
+            throw Rejected("Hbr does not refine vertex " + std::to_string(v) + ", which has no faces");
+}
+
+/// Hbr's input for `mesh` under `scheme`.
+detail::HbrInput input_of(const PolyMesh& mesh, detail::HbrScheme scheme, int levels) {
+    check_topology(mesh);
+    detail::HbrInput in;
+    in.scheme = scheme;
+    in.levels = levels;
+    for (const Vec3& p : mesh.positions) in.positions.insert(in.positions.end(), {p.x(), p.y(), p.z()});
+    for (int f = 0; f < mesh.num_faces(); ++f) in.face_sizes.push_back(mesh.face_size(f));
+    in.corners = mesh.face_vertices;
+    for (const SharpEdge& e : mesh.creases.edges) {
+        in.crease_ends.insert(in.crease_ends.end(), {e.a, e.b});
+        in.crease_sharpness.push_back(e.sharpness);
+    }
+    for (const SharpVertex& v : mesh.creases.vertices) {
+        in.corner_vertices.push_back(v.v);
+        in.corner_sharpness.push_back(v.sharpness);
+    }
+    in.holes = mesh.creases.holes;
+    return in;
+}
+
+/// Hbr's levels as a LevelTrace (level 0 the input), each vertex's parent in `births`.
+LevelTrace run(const PolyMesh& mesh, const detail::HbrInput& in, LevelBirths* births) {
+    detail::HbrOutput out = detail::refine(in);
+    if (!out.error.empty()) throw Rejected(out.error);
+    LevelTrace trace;
+    trace.push_back(mesh);
+    trace.back().source = {};
+    for (const detail::HbrLevel& lv : out.levels) {
+        PolyMesh level;
+        for (size_t i = 0; i < lv.positions.size(); i += 3) level.positions.emplace_back(lv.positions[i], lv.positions[i + 1], lv.positions[i + 2]);
+        for (size_t f = 0, c = 0; f < lv.face_sizes.size(); c += static_cast<size_t>(lv.face_sizes[f]), ++f)
+            level.add_face(std::span<const int>(lv.corners.data() + c, static_cast<size_t>(lv.face_sizes[f])));
+        level.creases.holes = lv.holes;
+        if (births) {
+            std::vector<VertexBirth> born(lv.parent_kind.size());
+            for (size_t v = 0; v < born.size(); ++v) {
+                const VertexBirth::Kind kind = lv.parent_kind[v] == 0   ? VertexBirth::Kind::Vertex
+                                               : lv.parent_kind[v] == 1 ? VertexBirth::Kind::Edge
+                                                                        : VertexBirth::Kind::Face;
+                born[v] = {kind, lv.parent_a[v], lv.parent_b[v]};
+            }
+            births->push_back(std::move(born));
+        }
+        trace.push_back(std::move(level));
+    }
+    return trace;
+}
+
+}  // namespace
+
+LevelTrace catmull_clark(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels, LevelBirths* births) {
+    if (options.boundary == CatmullClarkBoundary::MidpointAverage)
+        throw Rejected("Hbr's Catmull-Clark has no midpoint-average boundary rule (OpenMesh's)");
+    if (options.vertex != CatmullClarkVertexRule::Standard) throw Rejected("Hbr's Catmull-Clark has the standard vertex rule only");
+    if (options.crease_rules != CreaseRules::Hbr) throw Rejected(kOwnCreaseRules);
+    detail::HbrInput in = input_of(mesh, detail::HbrScheme::CatmullClark, levels);
+    in.edge_and_corner = options.boundary == CatmullClarkBoundary::EdgeAndCorner;
+    in.chaikin = options.creasing == CreaseMethod::Chaikin;
+    in.smooth_triangles = options.smooth_triangles;
+    return run(mesh, in, births);
+}
+
+LevelTrace loop(const PolyMesh& mesh, const LoopOptions& options, int levels, LevelBirths* births) {
+    if (options.weights != LoopWeights::Loop)
+        throw Rejected("Hbr's Loop scheme has Loop's 1987 weights only (not " + std::string(to_string(options.weights)) + ")");
+    if (options.crease_rules != CreaseRules::Hbr) throw Rejected(kOwnCreaseRules);
+    for (int f = 0; f < mesh.num_faces(); ++f)
+        if (mesh.face_size(f) != 3)
+            throw Rejected("Hbr's Loop scheme takes triangles; face " + std::to_string(f) + " has " + std::to_string(mesh.face_size(f)) + " corners");
+    detail::HbrInput in = input_of(mesh, detail::HbrScheme::Loop, levels);
+    in.edge_and_corner = options.boundary == LoopBoundary::EdgeAndCorner;
+    in.chaikin = options.creasing == CreaseMethod::Chaikin;
+    return run(mesh, in, births);
+}
+
+LevelTrace bilinear(const PolyMesh& mesh, int levels, LevelBirths* births) {
+    return run(mesh, input_of(mesh, detail::HbrScheme::Bilinear, levels), births);
+}
+
+std::string version() { return "OpenSubdiv Hbr " + detail::version(); }
+
+}  // namespace crossdiv::adapters::hbr
