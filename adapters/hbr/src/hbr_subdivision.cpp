@@ -126,6 +126,8 @@ LevelTrace loop(const PolyMesh& mesh, const LoopOptions& options, int levels, Le
 }
 
 LevelTrace bilinear(const PolyMesh& mesh, int levels, LevelBirths* births) {
+    // Bilinear has no crease rules; Hbr would refine the holes and drop the creases.
+    reject_crease_tags(mesh, "Hbr's bilinear scheme");
     return run(mesh, input_of(mesh, detail::HbrScheme::Bilinear, levels), births);
 }
 

@@ -37,7 +37,8 @@ LevelTrace catmull_clark(const PolyMesh& mesh, const CatmullClarkOptions& option
 ///         and for a face that is not a triangle.
 LevelTrace loop(const PolyMesh& mesh, const LoopOptions& options, int levels, LevelBirths* births = nullptr);
 
-/// `levels` uniform bilinear levels (HbrBilinearSubdivision). @throws Rejected as catmull_clark().
+/// `levels` uniform bilinear levels (HbrBilinearSubdivision). @throws Rejected as catmull_clark(),
+/// and for crease, corner or hole tags (bilinear has no crease rules, as in OpenSubdiv's Far).
 LevelTrace bilinear(const PolyMesh& mesh, int levels, LevelBirths* births = nullptr);
 
 /// "OpenSubdiv Hbr 3.5.0" (the version of the OpenSubdiv headers it comes with).
