@@ -112,12 +112,10 @@ std::vector<BenchRecord> run_bench(const std::vector<BenchInput>& inputs, const 
         const bool untagged = in.polygons.creases.empty();  // a TriMesh carries no tags
         const auto applies = [&](const Implementation* impl) {
             if (impl->applies(in.scheme, request.rule)) return true;
-            for (CreaseRules t : {CreaseRules::OpenSubdiv, CreaseRules::Hbr}) {
-                SchemeRule r = request.rule;
-                r.loop.crease_rules = r.catmull_clark.crease_rules = t;
-                if (untagged && impl->applies(in.scheme, r)) return true;
-            }
-            return false;
+            if (!untagged) return false;
+            SchemeRule r = request.rule;
+            r.loop.crease_rules = r.catmull_clark.crease_rules = CreaseRules::Hbr;
+            return impl->applies(in.scheme, r);
         };
         std::vector<const Implementation*> impls;
         for (const Implementation* impl : implementations())

@@ -59,11 +59,6 @@ enum class CreaseRules {
 
 /// "opensubdiv" / "hbr".
 constexpr std::string_view to_string(CreaseRules t) { return t == CreaseRules::OpenSubdiv ? "opensubdiv" : "hbr"; }
-/// @throws InputError listing the names.
-inline CreaseRules crease_rules_from_string(std::string_view name) {
-    return variant_from_string<CreaseRules>(name, std::array{CreaseRules::OpenSubdiv, CreaseRules::Hbr},
-                                                 "crease rules");
-}
 
 /// Sharpness of the edge between vertices a and b (either order). 0 is smooth; 10 and above
 /// is infinitely sharp (Sdc::Crease::SHARPNESS_INFINITE); in between the edge is semi-sharp

@@ -5,8 +5,9 @@
 /// of a rule transition, the sharp masks (crease, corner) and the blend of two masks. As
 /// OpenSubdiv's Sdc::Crease and Sdc::Scheme define them (after T. DeRose, M. Kass, T. Truong,
 /// "Subdivision Surfaces in Character Animation", SIGGRAPH 1998: semi-sharp creases; Chaikin
-/// decay). Hbr's variants of two of them beside (CreaseRules::Hbr). Scheme-free: each scheme brings its smooth masks; crease_level.h gathers
-/// the sharpness of a level; the traversals are catmull_clark.cpp and loop_step.cpp.
+/// decay), and beside them Hbr's variants (CreaseRules::Hbr). Scheme-free: each scheme brings
+/// its smooth masks; crease_level.h gathers the sharpness of a level; the traversals are
+/// catmull_clark.cpp and loop_step.cpp.
 ///
 /// Sharpness is float, as in OpenSubdiv, so that decay and thresholds match the library's bit
 /// for bit; mask weights are double.
