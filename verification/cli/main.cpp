@@ -3,11 +3,14 @@
 // message), 3 an internal error. Each command group adds its subcommands (*_commands.h).
 #include <CLI/CLI.hpp>
 
+#include <fmt/format.h>
+
 #include <iostream>
 
 #include "bench_commands.h"
 #include "crossdiv/error.h"
 #include "crossdiv/verification/harness/interruption.h"
+#include "crossdiv/verification/implementations/registry.h"
 #include "curvature_command.h"
 #include "curve_commands.h"
 #include "edit_commands.h"
@@ -20,11 +23,34 @@
 #include "suite_commands.h"
 #include "surface_commands.h"
 
+namespace {
+
+/// What `crossdiv --version` prints: crossdiv's version and compiler, then every implementation
+/// built into this binary with the version of the library it calls (external programs, found at
+/// run time, are not listed: `crossdiv compare --help` names them).
+std::string version_text() {
+    std::string text = fmt::format("crossdiv {} ({} build, {} {}, C++{})\n", CROSSDIV_VERSION, CROSSDIV_BUILD_TYPE,
+#if defined(__clang__)
+                                   "clang", __clang_version__,
+#else
+                                   "GCC", __VERSION__,
+#endif
+                                   __cplusplus / 100 % 100);
+    text += "implementations built in:\n";
+    for (const crossdiv::verification::Implementation* impl : crossdiv::verification::implementations())
+        text += fmt::format("  {:<18} {}\n", impl->name(), impl->version());
+    text.pop_back();  // CLI11 ends the text with a line break of its own
+    return text;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
     namespace cli = crossdiv::cli;
     // Ctrl-C or SIGTERM during a run stops the programs under test and removes their folders too.
     crossdiv::verification::stop_cleanly_on_signals();
     CLI::App app{"crossdiv: spline and subdivision algorithms verified against OpenSubdiv, OpenMesh and CGAL"};
+    app.set_version_flag("--version", version_text, "Print crossdiv's version and the libraries built in, and exit");
     app.require_subcommand(1);
     int status = 0;
     cli::add_mesh_commands(app, status);     // subdivide, compare, check, datasets, edgecases, diff

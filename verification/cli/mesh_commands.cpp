@@ -127,17 +127,28 @@ struct SchemeArgs {
     }
 };
 
-/// Loop on a crease-tagged input: core's generic step, or OpenSubdiv, the one reference with
-/// crease rules; the others (and split-and-flip) have none and refuse.
+/// `o` with the semi-sharp crease rules `impl` applies when it has only its own (Hbr's): on an
+/// untagged mesh they decide nothing, and on a tagged one they are what it refines by, so the
+/// request names them rather than refusing the implementation.
+LoopOptions with_own_crease_rules(const Implementation& impl, LoopOptions o) {
+    RefineRequest request{Scheme::Loop, {}, 1};
+    request.rule.loop = o;
+    o.crease_rules = impl.closest_rule(Scheme::Loop, request.rule).loop.crease_rules;
+    return o;
+}
+
+/// Loop on a crease-tagged input: core's generic step, or a reference with crease rules
+/// (OpenSubdiv, Hbr under its own); the others (and split-and-flip) have none and refuse.
 int run_loop_subdivide_creased(const std::string& in, const PolyMesh& input, const SchemeArgs& s,
                                const std::string& impl, const std::string& out, const std::string& color, double timeout) {
     LoopOptions o = s.options();
     o.creasing = crease_method(s.creasing, input);
     s.require_size(input, in);
     PolyMesh result;
+    const Implementation& chosen = find_implementation(impl == "split-flip" ? "core" : impl);
+    o = with_own_crease_rules(chosen, o);
     RefineRequest request{Scheme::Loop, {}, s.levels};
     request.rule.loop = o;
-    const Implementation& chosen = find_implementation(impl == "split-flip" ? "core" : impl);
     const SchemeSupport* support = chosen.support(Scheme::Loop);
     if (impl != "split-flip" && support && support->creases) {
         if (!chosen.applies(Scheme::Loop, request.rule))
@@ -155,7 +166,8 @@ int run_loop_subdivide_creased(const std::string& in, const PolyMesh& input, con
     write_mesh(out, emitted);
     fmt::print("{}: {} vertices, {} faces, {} -> {} ({} vertices, {} faces, {} level(s), {} decay, {})\n", in,
                input.num_vertices(), input.num_faces(), input.creases.describe(), out, emitted.num_vertices(),
-               emitted.num_faces(), s.levels, to_string(o.creasing), impl);
+               emitted.num_faces(), s.levels, to_string(o.creasing),
+               impl + (o.crease_rules == CreaseRules::Hbr ? " under its own crease rules (creases=hbr)" : ""));
     return 0;
 }
 
@@ -168,9 +180,9 @@ int run_loop_subdivide_face_varying(const std::string& in, const PolyMesh& input
     LoopOptions o = s.options();
     o.creasing = crease_method(s.creasing, input);
     s.require_size(input, in);
-    RefineRequest request{Scheme::Loop, {}, s.levels, fvar};
-    request.rule.loop = o;
     const Implementation& chosen = find_implementation(impl);
+    RefineRequest request{Scheme::Loop, {}, s.levels, fvar};
+    request.rule.loop = with_own_crease_rules(chosen, o);
     if (!chosen.applies(Scheme::Loop, request.rule))
         throw InputError(impl + " has no Loop with weights=" + std::string(to_string(o.weights)) +
                          " boundary=" + std::string(to_string(o.boundary)));
@@ -225,7 +237,7 @@ int run_subdivide(const std::string& in, const SchemeArgs& flags, const std::str
     } else {
         const Implementation& ref = *select_references(Scheme::Loop, {impl}).front();
         RefineRequest request{Scheme::Loop, {}, s.levels};
-        request.rule.loop = s.options();
+        request.rule.loop = with_own_crease_rules(ref, s.options());
         if (!ref.applies(Scheme::Loop, request.rule))
             throw InputError(impl + " has no Loop with weights=" + s.weights + " boundary=" + std::string(to_string(s.options().boundary)));
         result = refine_last_or_throw(ref, input, request, in, timeout);
@@ -446,8 +458,22 @@ struct SubdivideArgs {
     void add_to(CLI::App& app) {
         app.add_option("input", input, "Mesh file (.obj, .off) or bundled:NAME")->required();
         scheme.add_scheme_options(app, kMaxRefinedFaces);
-        app.add_option("--impl", impl, "Implementation (split-flip: our Loop by edge splits and flips)")
-            ->check(CLI::IsMember({"core", "split-flip", "opensubdiv", "openmesh", "cgal"}))
+        // Any implementation of the registry (the references built in and the programs found),
+        // checked when the option is read, so that the list cannot fall behind the registry.
+        app.add_option("--impl", impl,
+                       "Implementation: core, split-flip (our Loop by edge splits and flips), or a reference "
+                       "(opensubdiv, hbr, openmesh, cgal, vtk, ...: those built in)")
+            ->check(CLI::Validator(
+                [](std::string& name) {
+                    if (name == "split-flip") return std::string();
+                    try {
+                        find_implementation(name);
+                    } catch (const InputError& e) {
+                        return std::string(e.what());
+                    }
+                    return std::string();
+                },
+                "IMPL"))
             ->capture_default_str();
         app.add_option("-o,--output", out, "Output mesh (.obj, .off)")->required();
         app.add_option("--color", color,

@@ -49,6 +49,14 @@ expect subdivide-age 0 '^ *480 v 0\.99299999999999999 0\.90600000000000003 0\.14
 # (CGAL's Loop dies by SIGSEGV on the isolated vertex; in the sanitizer build it may read on without end instead.)
 expect subdivide-library-crash 2 'cgal failed on edgecase:isolated-vertex: (crashed|timeout)' -- "$crossdiv" subdivide edgecase:isolated-vertex --impl cgal --timeout 5 -o "$tmp/x.obj"
 expect subdivide-library-abort 2 'openmesh failed on edgecase:valence-2: crashed' -- "$crossdiv" subdivide edgecase:valence-2 --scheme sqrt3 --impl openmesh -o "$tmp/x.obj"
+# --version: crossdiv's, then each implementation built in with its library's version.
+expect version 0 '^crossdiv [0-9]+\.[0-9]+ \(.* build, .*C\+\+20\)' -- "$crossdiv" --version
+expect version-libraries 0 '^  opensubdiv +OpenSubdiv 3\.' -- "$crossdiv" --version
+# --impl takes any implementation of the registry; an unknown one is named with those built.
+expect subdivide-impl-hbr 0 '\(162 vertices, 320 faces, 2 level\(s\), hbr\)' -- "$crossdiv" subdivide bundled:icosahedron --levels 2 --impl hbr -o "$tmp/x.obj"
+expect subdivide-impl-unknown 2 "--impl: unknown or not built implementation 'nope' \(built: core, " -- "$crossdiv" subdivide bundled:icosahedron --impl nope -o "$tmp/x.obj"
+# Hbr's Loop would loop without end on the second level of two triangles back to back: refused, named.
+expect subdivide-hbr-back-to-back 2 'hbr refused edgecase:valence-2: faces 0 and 1 are two triangles back to back' -- "$crossdiv" subdivide edgecase:valence-2 --levels 2 --impl hbr -o "$tmp/x.obj"
 expect subdivide-library-timeout-option 2 'timeout: Value 0 not in range' -- "$crossdiv" subdivide bundled:icosahedron --impl cgal --timeout 0 -o "$tmp/x.obj"
 expect subdivide-age-core-only 2 '--color age needs --impl core' -- "$crossdiv" subdivide bundled:icosahedron --levels 1 --color age --impl opensubdiv -o "$tmp/x.obj"
 # Texture coordinates (face-varying): refined under the rule asked, written as vt and f v/t.

@@ -200,5 +200,26 @@ TEST(HbrSubdivision, RefusesAMeshItCannotHoldByTheFaceOrVertex) {
     EXPECT_THROW(catmull_clark(twice, catmark(CatmullClarkBoundary::EdgeOnly), 1), Rejected);
 }
 
+// Two triangles back to back, beside an open pyramid: Hbr's Loop makes level 1 (4 triangles
+// each), and would loop without end making level 2, so two levels are refused naming the pair.
+// Catmull-Clark refines the pair: 3 quads per triangle, then 4 per quad.
+TEST(HbrSubdivision, RefusesLoopsSecondLevelOfTwoTrianglesBackToBack) {
+    PolyMesh mesh = pyramid();
+    const int a = mesh.num_vertices();
+    mesh.positions.insert(mesh.positions.end(), {{5, 0, 0}, {6, 0, 0}, {5, 1, 0}});
+    mesh.add_face({a, a + 1, a + 2});
+    mesh.add_face({a, a + 2, a + 1});
+    const int pair = mesh.num_faces() - 2;
+    EXPECT_EQ(loop(mesh, loop_options(), 1).back().num_faces(), 4 * mesh.num_faces());
+    try {
+        loop(mesh, loop_options(), 2);
+        FAIL() << "two levels of two triangles back to back were run";
+    } catch (const Rejected& e) {
+        EXPECT_NE(std::string(e.what()).find("faces " + std::to_string(pair) + " and " + std::to_string(pair + 1)), std::string::npos)
+            << e.what();
+    }
+    EXPECT_EQ(catmull_clark(mesh, catmark(CatmullClarkBoundary::EdgeOnly), 2).back().num_faces(), 12 * mesh.num_faces());
+}
+
 }  // namespace
 }  // namespace crossdiv::adapters::hbr
