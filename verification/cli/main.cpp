@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <iostream>
 
 #include "bench_commands.h"
@@ -18,6 +19,7 @@
 #include "fit_command.h"
 #include "isosurface_command.h"
 #include "mesh_commands.h"
+#include "nearest_name.h"
 #include "multires_command.h"
 #include "scheme_commands.h"
 #include "suite_commands.h"
@@ -43,6 +45,44 @@ std::string version_text() {
     return text;
 }
 
+/// The names of `app`'s subcommands.
+std::vector<std::string> command_names(CLI::App& app) {
+    std::vector<std::string> names;
+    for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) names.push_back(sub->get_name());
+    return names;
+}
+
+/// A first argument that names no command: the error, with the nearest command when one is
+/// near (exit 2, as for any usage error). CLI11 alone would only say that a command is needed.
+bool refuse_unknown_command(CLI::App& app, int argc, char** argv) {
+    if (argc < 2 || argv[1][0] == '-') return false;
+    const std::vector<std::string> names = command_names(app);
+    const std::string typed = argv[1];
+    if (std::find(names.begin(), names.end(), typed) != names.end()) return false;
+    std::cerr << "crossdiv: unknown command '" << typed << "'";
+    if (const auto near = crossdiv::cli::nearest_name(typed, names)) std::cerr << "; did you mean '" << *near << "'?";
+    std::cerr << "\nRun crossdiv --help for the commands.\n";
+    return true;
+}
+
+/// After CLI11's "argument was not expected": for each `--name` the command does not have, the
+/// nearest one it has, when one is near.
+void suggest_options(CLI::App& app, int argc, char** argv) {
+    const std::vector<CLI::App*> chosen = app.get_subcommands();
+    if (chosen.empty()) return;
+    std::vector<std::string> known;
+    for (const CLI::Option* option : chosen.front()->get_options())
+        for (const std::string& name : option->get_lnames()) known.push_back("--" + name);
+    for (int i = 2; i < argc; ++i) {
+        std::string typed = argv[i];
+        if (!typed.starts_with("--")) continue;
+        typed = typed.substr(0, typed.find('='));
+        if (std::find(known.begin(), known.end(), typed) != known.end()) continue;
+        if (const auto near = crossdiv::cli::nearest_name(typed, known))
+            std::cerr << "crossdiv " << chosen.front()->get_name() << ": no option " << typed << "; did you mean " << *near << "?\n";
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -65,10 +105,13 @@ int main(int argc, char** argv) {
     cli::add_multires_command(app, status);    // multires
     cli::add_editor_command(app, status);      // editor
     cli::add_scheme_commands(app, status);   // limit, spectrum
+    if (refuse_unknown_command(app, argc, argv)) return 2;
     try {
         app.parse(argc, argv);  // runs the selected command
     } catch (const CLI::ParseError& e) {
-        return app.exit(e) == 0 ? 0 : 2;
+        const int code = app.exit(e);
+        if (dynamic_cast<const CLI::ExtrasError*>(&e)) suggest_options(app, argc, argv);
+        return code == 0 ? 0 : 2;
     } catch (const crossdiv::InputError& e) {
         std::cerr << "crossdiv: error: " << e.what() << "\n";
         return 2;

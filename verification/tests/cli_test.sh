@@ -52,6 +52,9 @@ expect subdivide-library-abort 2 'openmesh failed on edgecase:valence-2: crashed
 # --version: crossdiv's, then each implementation built in with its library's version.
 expect version 0 '^crossdiv [0-9]+\.[0-9]+ \(.* build, .*C\+\+20\)' -- "$crossdiv" --version
 expect version-libraries 0 '^  opensubdiv +OpenSubdiv 3\.' -- "$crossdiv" --version
+# A mistyped command or option: exit 2, with the nearest valid name.
+expect unknown-command 2 "unknown command 'comapre'; did you mean 'compare'\?" -- "$crossdiv" comapre bundled:icosahedron
+expect unknown-option 2 'crossdiv compare: no option --levles; did you mean --levels\?' -- "$crossdiv" compare bundled:icosahedron --levles=2
 # --impl takes any implementation of the registry; an unknown one is named with those built.
 expect subdivide-impl-hbr 0 '\(162 vertices, 320 faces, 2 level\(s\), hbr\)' -- "$crossdiv" subdivide bundled:icosahedron --levels 2 --impl hbr -o "$tmp/x.obj"
 expect subdivide-impl-unknown 2 "--impl: unknown or not built implementation 'nope' \(built: core, " -- "$crossdiv" subdivide bundled:icosahedron --impl nope -o "$tmp/x.obj"
