@@ -29,13 +29,13 @@ using namespace crossdiv::verification;
 
 void TessellateArgs::add_to(CLI::App& app) {
     app.add_option("input", input, "Curve file (.swp, .bzc) or curve:NAME")->required();
-    app.add_option("-o,--out", out, "Output: .obj (v and one l line per curve), .csv or .json (required without --subject)");
-    app.add_option("--mode", mode, "uniform, angle (--angle-tol) or distance (--tol)")
+    app.add_option("-o,--output", out, "Output: .obj (v and one l line per curve), .csv or .json (required without --subject)");
+    app.add_option("--mode", mode, "uniform, angle (--angle-tolerance) or distance (--tolerance)")
         ->check(CLI::IsMember({"uniform", "angle", "distance"}))
         ->capture_default_str();
     app.add_option("--intervals", intervals, "Uniform: intervals per segment (default: the file's STEPS)")->check(CLI::Range(1, 1 << 20));
-    app.add_option("--angle-tol", angle_tol_deg, "Angle mode: tolerance in degrees, (0, 180]");
-    app.add_option("--tol", tol, "Distance mode: the largest distance between curve and polyline");
+    app.add_option("--angle-tolerance", angle_tol_deg, "Angle mode: tolerance in degrees, (0, 180]");
+    app.add_option("--tolerance", tol, "Distance mode: the largest distance between curve and polyline");
     app.add_option("--frames", frames,
                    "Frames to output: none, recursive (the seed's), rmf (double reflection) or orientation (a cam3 "
                    "record's quaternions: T N B the columns of the rotation)")
@@ -116,11 +116,11 @@ int run_tessellate(const TessellateArgs& a) {
         o.mode = TessellationMode::Uniform;
         if (a.intervals > 0) o.intervals = a.intervals;
     } else if (a.mode == "angle") {
-        if (!(a.angle_tol_deg > 0 && a.angle_tol_deg <= 180)) throw InputError("--mode angle needs --angle-tol in (0, 180] degrees");
+        if (!(a.angle_tol_deg > 0 && a.angle_tol_deg <= 180)) throw InputError("--mode angle needs --angle-tolerance in (0, 180] degrees");
         o.mode = TessellationMode::Angle;
         o.angle_tol = a.angle_tol_deg * M_PI / 180;
     } else {
-        if (!(a.tol > 0) || !std::isfinite(a.tol)) throw InputError("--mode distance needs a positive, finite --tol");
+        if (!(a.tol > 0) || !std::isfinite(a.tol)) throw InputError("--mode distance needs a positive, finite --tolerance");
         o.mode = TessellationMode::Distance;
         o.tol = a.tol;
     }

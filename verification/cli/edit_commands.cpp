@@ -23,7 +23,7 @@ namespace crossdiv::cli {
 
 void EditArgs::add_to(CLI::App& app) {
     app.add_option("input", input, "Triangle mesh: file (.obj, .off, .dae, .ply, .stl) or bundled:NAME")->required();
-    app.add_option("-o,--out", out, "Output mesh (.obj, .off); required without --subject");
+    app.add_option("-o,--output", out, "Output mesh (.obj, .off); required without --subject");
     // One callback per occurrence, so that flips and splits keep their command-line order.
     app.add_option_function<std::string>("--flip", [this](const std::string& e) { ops.emplace_back("flip", e); },
                                          "Flip the edge A-B (vertex indices, 0-based)")

@@ -16,7 +16,7 @@ struct EditorArgs {
     std::string out = "editor";
     void add_to(CLI::App& app) {
         app.add_option("input", input, "Curve file (.swp) or curve:NAME to start from; without it, one small Bezier curve");
-        app.add_option("-o,--out", out, "Folder to write the page into (editor.html)")->capture_default_str();
+        app.add_option("--out", out, "Folder to write the page into (editor.html)")->capture_default_str();
     }
 };
 

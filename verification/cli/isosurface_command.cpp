@@ -1,4 +1,4 @@
-// crossdiv isosurface IN [--level L] [--res N] [--inside below|above] [--rule decider|minority]
+// crossdiv isosurface IN [--isovalue L] [--res N] [--inside below|above] [--rule decider|minority]
 //                       [--against skimage,skimage-lorensen] [--write-volume V] [-o OUT]
 #include "isosurface_command.h"
 
@@ -25,7 +25,7 @@ struct IsosurfaceArgs {
     void add_to(CLI::App& app) {
         app.add_option("input", input, "implicit:sphere|torus|genus2|gyroid|ambiguous, or a volume file "
                                        "(MetaImage .mhd/.mha, NRRD .nrrd/.nhdr with raw samples)")->required();
-        app.add_option("--level", level, "The isovalue (default 0 for implicit inputs; required for a volume file)");
+        app.add_option("--isovalue", level, "The isovalue (default 0 for implicit inputs; required for a volume file)");
         app.add_option("--res", resolution, "Samples along the longest side of an implicit surface's box (default 65)");
         app.add_option("--inside", inside, "Where the solid is: below the level (distances) or above (densities)")
             ->check(CLI::IsMember({"below", "above"}));
@@ -56,7 +56,7 @@ int run_isosurface(const IsosurfaceArgs& a) {
         }
     } else {
         if (a.resolution) throw InputError("--res samples an implicit surface; " + a.input + " has its own grid");
-        if (!a.level) throw InputError("--level is needed for a volume file: the isovalue depends on what its samples measure");
+        if (!a.level) throw InputError("--isovalue is needed for a volume file: the isovalue depends on what its samples measure");
         grid = read_volume(a.input);
     }
     IsosurfaceOptions options{a.level.value_or(0), a.inside == "below" ? InsideIs::Below : InsideIs::Above,

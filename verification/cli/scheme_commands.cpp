@@ -276,7 +276,7 @@ std::pair<int, int> valence_range(const std::string& s) {
         if (a < 3 || b < a || b > 64) throw InputError("");
         return {a, b};
     } catch (const std::exception&) {
-        throw InputError("--valence wants N or A..B with 3 <= A <= B <= 64, got '" + s + "'");
+        throw InputError("--valences wants N or A..B with 3 <= A <= B <= 64, got '" + s + "'");
     }
 }
 
@@ -371,7 +371,7 @@ void LimitArgs::add_to(CLI::App& app) {
     app.add_option("--scheme", scheme, "loop or catmull-clark")->check(CLI::IsMember({"loop", "catmull-clark"}))->capture_default_str();
     app.add_option("--weights", weights, "Loop weight family: loop or warren")->capture_default_str();
     app.add_option("--boundary", boundary, "edge-only or edge-and-corner")->capture_default_str();
-    app.add_option("--levels", levels, "Level whose vertices are moved (0: the input)")->capture_default_str();
+    app.add_option("--levels", levels, "Level whose vertices are moved (0: the input)")->check(CLI::Range(0, 12))->capture_default_str();
     app.add_option("--against", against, "opensubdiv: compare with PrimvarRefiner::Limit");
     app.add_option("--json", json, "Write the results as JSON");
     app.add_option("-o,--output", out,
@@ -390,7 +390,7 @@ void SpectrumArgs::add_to(CLI::App& app) {
     app.add_option("--scheme", scheme, "loop, warren, catmull-clark or all")
         ->check(CLI::IsMember({"loop", "warren", "catmull-clark", "all"}))
         ->capture_default_str();
-    app.add_option("--valence", valence, "N or A..B (3..64)")->capture_default_str();
+    app.add_option("--valences", valence, "The valences of the eigen table: N or A..B (3..64)")->capture_default_str();
     app.add_option("--levels", levels, "Levels of the convergence table")->check(CLI::Range(2, 8))->capture_default_str();
     app.add_option("--json", json, "Write both tables as JSON");
 }

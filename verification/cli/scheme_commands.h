@@ -100,7 +100,7 @@ struct SpectrumArgs {
     int levels = 8;  ///< of the convergence table
     void add_to(CLI::App& app);
 };
-/// `crossdiv spectrum --scheme loop|warren|catmull-clark|all --valence A..B [--json F]`: the eigen
+/// `crossdiv spectrum --scheme loop|warren|catmull-clark|all --valences A..B [--json F]`: the eigen
 /// table (core's local matrix against the closed form) and the convergence table; exit 1 when
 /// a spectrum departs from its closed form by more than 1e-12.
 int run_spectrum(const SpectrumArgs& a);

@@ -23,12 +23,12 @@ using nlohmann::json;
 
 void SweepArgs::add_to(CLI::App& app) {
     app.add_option("input", input, "SWP file with srev and gcyl records, or surface:NAME (bundled)")->required();
-    app.add_option("-o,--out", out, "Output OBJ (v, vn, f a//a); required without --subject");
+    app.add_option("-o,--output", out, "Output OBJ (v, vn, f a//a); required without --subject");
     app.add_option("--frames", frames, "gcyl frames: recursive (the seed's) or rmf (double reflection)")
         ->check(CLI::IsMember({"recursive", "rmf"}))
         ->capture_default_str();
     app.add_flag("--adaptive", adaptive, "Distance-adaptive curves (and srev slices) instead of each record's STEPS");
-    app.add_option("--tol", tol, "Adaptive: the largest distance from the exact surface (absolute)");
+    app.add_option("--tolerance", tol, "Adaptive: the largest distance from the exact surface (absolute)");
     app.add_option("--max-faces", max_faces, "Refuse a surface of more triangles than this, before building it")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
@@ -39,7 +39,7 @@ void SweepArgs::add_to(CLI::App& app) {
 
 void PatchArgs::add_to(CLI::App& app) {
     app.add_option("input", input, "BEZ file, or surface:NAME (a bundled BEZ model)")->required();
-    app.add_option("-o,--out", out, "Output OBJ (v, vn, f a//a); required without --subject");
+    app.add_option("-o,--output", out, "Output OBJ (v, vn, f a//a); required without --subject");
     app.add_option("--res", res, "Quads per patch side")->check(CLI::Range(1, 1024))->capture_default_str();
     subject.add_to(app, "'python3 patches.py {in} 8 {out}' ({in}: the BEZ file, the resolution a literal equal to --res; "
                         "{out}: an OBJ with a vn per v, welded or not); matched to core's tessellation by position both ways, "
@@ -116,8 +116,8 @@ int run_sweep(const SweepArgs& a) {
         file = read_swp(a.input);
     }
     if (file.sweeps.empty()) throw InputError(a.input + ": no srev or gcyl record");
-    if (a.adaptive && !(a.tol > 0 && std::isfinite(a.tol))) throw InputError("--adaptive needs a positive, finite --tol");
-    if (!a.adaptive && a.tol != 0) throw InputError("--tol is for --adaptive sweeps");
+    if (a.adaptive && !(a.tol > 0 && std::isfinite(a.tol))) throw InputError("--adaptive needs a positive, finite --tolerance");
+    if (!a.adaptive && a.tol != 0) throw InputError("--tolerance is for --adaptive sweeps");
     SweepOptions o;
     o.frames = a.frames == "rmf" ? FrameMethod::DoubleReflection : FrameMethod::Recursive;
     o.adaptive = a.adaptive;

@@ -86,8 +86,8 @@ expect curvature-colour-needs-obj 2 'is not an .obj file' -- "$crossdiv" curvatu
 expect curvature-non-manifold 2 'edge \(0, 1\) is shared by 3 triangles' -- "$crossdiv" curvature "$tmp/nonmanifold.obj"
 expect curvature-quads 2 'discrete curvature needs triangles' -- "$crossdiv" curvature bundled:quad-cube
 expect isosurface-genus2 0 'Euler characteristic -2, 0 boundary edges in 0 loops, 0 mesh errors' -- "$crossdiv" isosurface implicit:genus2 --res 65 -o "$tmp/genus2.off" --write-volume "$tmp/genus2.nrrd"
-expect isosurface-volume-file 0 'Euler characteristic -2, 0 boundary edges' -- "$crossdiv" isosurface "$tmp/genus2.nrrd" --level 0
-expect isosurface-volume-needs-level 2 '--level is needed for a volume file' -- "$crossdiv" isosurface "$tmp/genus2.nrrd"
+expect isosurface-volume-file 0 'Euler characteristic -2, 0 boundary edges' -- "$crossdiv" isosurface "$tmp/genus2.nrrd" --isovalue 0
+expect isosurface-volume-needs-level 2 '--isovalue is needed for a volume file' -- "$crossdiv" isosurface "$tmp/genus2.nrrd"
 expect isosurface-minority-holes 0 '2008 boundary edges in 225 loops' -- "$crossdiv" isosurface implicit:ambiguous --res 17 --rule minority
 expect isosurface-skimage 0 'skimage \(.* s\): other-triangulation: the same crossings' -- "$crossdiv" isosurface implicit:sphere --res 17 --against skimage
 expect fit-torus 0 'hausdorff\(cgal\)' -- "$crossdiv" fit bundled:torus --edges 200 --against cgal --surface "$tmp/fit_surface.obj" -o "$tmp/fit_control.obj"
@@ -102,7 +102,7 @@ expect multires-vertex-range 2 'base vertex 500 of 96' -- "$crossdiv" multires b
 expect isosurface-unknown 2 "unknown implicit surface 'klein'" -- "$crossdiv" isosurface implicit:klein
 expect isosurface-unknown-reference 2 'the isosurface references are skimage and skimage-lorensen' -- "$crossdiv" isosurface implicit:sphere --against meshlab
 printf 'NDims = 3\nDimSize = 2 2 2\nElementType = MET_FLOAT\nElementDataFile = LOCAL\n' > "$tmp/short.mha"
-expect isosurface-short-volume 2 'short.mha: 8 samples of 4 bytes need 32 bytes' -- "$crossdiv" isosurface "$tmp/short.mha" --level 0
+expect isosurface-short-volume 2 'short.mha: 8 samples of 4 bytes need 32 bytes' -- "$crossdiv" isosurface "$tmp/short.mha" --isovalue 0
 expect too-many-levels 2 'would produce 335544320 faces, over the limit' -- "$crossdiv" subdivide bundled:icosahedron --levels 12 -o "$tmp/x.obj"
 expect compare-max-faces 2 'bundled:icosahedron: 3 levels would produce 1280 faces, over the limit of 1000 \(--max-faces\)' -- "$crossdiv" compare bundled:icosahedron --levels 3 --max-faces 1000
 expect cc-max-faces 2 'would produce 96 faces, over the limit of 95' -- "$crossdiv" subdivide bundled:quad-cube --scheme catmull-clark --levels 2 --max-faces 95 -o "$tmp/x.obj"
@@ -237,7 +237,7 @@ printf 'spline . 4\n' > "$tmp/unknown.swp"
 printf '4\n0.2 0.35 0.3 0.6 0.8 0.75 0.9 0.45\n' > "$tmp/c.bzc"
 expect tessellate-obj 0 'spine: bsp3 \(bspline\), 5 points' -- "$crossdiv" tessellate "$tmp/core.swp" -o "$tmp/core.obj"
 expect tessellate-obj-lines 0 '^l 1 2 3 4 5$' -- cat "$tmp/core.obj"
-expect tessellate-distance 0 'measured max deviation 0\.000[0-9]' -- "$crossdiv" tessellate "$tmp/core.swp" --mode distance --tol 1e-3 -o "$tmp/core.csv"
+expect tessellate-distance 0 'measured max deviation 0\.000[0-9]' -- "$crossdiv" tessellate "$tmp/core.swp" --mode distance --tolerance 1e-3 -o "$tmp/core.csv"
 expect tessellate-frames 0 'frame mismatch after one lap' -- "$crossdiv" tessellate curve:trefoil --frames rmf --close-frames -o "$tmp/t.json"
 expect tessellate-json 0 '"closure_mismatch_deg"' -- cat "$tmp/t.json"
 expect tessellate-right-normals 0 '^#0 bez2,0,0,3,0,0,0,1,0,1,0,0$' -- bash -c "\"$crossdiv\" tessellate \"$tmp/core.swp\" --normal-side right -o \"$tmp/r.csv\" >/dev/null && cat \"$tmp/r.csv\""
@@ -247,7 +247,7 @@ expect tessellate-orientation-needs-cam3 2 "curve 's' \\(bez2\\) has no orientat
 expect tessellate-tcb-parameter 2 'key 2 of 4: tension 2\.000000 is outside \[-1, 1\]' -- bash -c "printf 'tcb2 a 8 4 [0 0] [1 1 2 0 0] [2 0] [3 1]\\n' > \"$tmp/tcb.swp\" && \"$crossdiv\" tessellate \"$tmp/tcb.swp\" -o \"$tmp/x.obj\""
 expect tessellate-kappa 0 'yan: kpc2 \(kappa-closed\), 65 points' -- "$crossdiv" tessellate curve:kappa-curves -o "$tmp/k.csv"
 expect tessellate-kappa-not-converged 2 'kappa.swp:1: kpc2 .a.: the kappa-curve iteration did not converge: after 5000 iterations .*\(tolerance 1e-13\)' -- bash -c "printf 'kpc2 a 8 4 [0 0] [10 0.05] [0 0.1] [-2 0.05]\n' > \"$tmp/kappa.swp\" && \"$crossdiv\" tessellate \"$tmp/kappa.swp\" -o \"$tmp/x.obj\""
-expect tessellate-angle-needs-tol 2 'needs --angle-tol' -- "$crossdiv" tessellate "$tmp/core.swp" --mode angle -o "$tmp/x.obj"
+expect tessellate-angle-needs-tol 2 'needs --angle-tolerance' -- "$crossdiv" tessellate "$tmp/core.swp" --mode angle -o "$tmp/x.obj"
 expect swp-count 2 'count.swp:1: bez2 .*3n \+ 1 control points .* got 5' -- "$crossdiv" tessellate "$tmp/count.swp" -o "$tmp/x.obj"
 expect swp-bracket 2 "bracket.swp:3: unbalanced bracket" -- "$crossdiv" tessellate "$tmp/bracket.swp" -o "$tmp/x.obj"
 expect swp-undefined 2 "undefined.swp:2: undefined curve 'b'" -- "$crossdiv" tessellate "$tmp/undefined.swp" -o "$tmp/x.obj"
@@ -265,8 +265,8 @@ expect suite-curves-report 0 'curve_frames.png' -- cat "$tmp/cs/report.md"
 expect sweep-vase 0 'vase \(srev, line 3\): .* closed, watertight, signed volume' -- "$crossdiv" sweep surface:vase -o "$tmp/vase.obj"
 expect sweep-obj-normals 0 '^f [0-9]+//[0-9]+ [0-9]+//[0-9]+ [0-9]+//[0-9]+$' -- cat "$tmp/vase.obj"
 expect sweep-rmf 0 'knot-tube \(gcyl, line 3\): 2880 vertices, 5760 triangles, closed, watertight' -- "$crossdiv" sweep surface:knot-tube --frames rmf -o "$tmp/knot.obj"
-expect sweep-adaptive 0 'closed, watertight' -- "$crossdiv" sweep surface:vase --adaptive --tol 1e-3 -o "$tmp/vase_a.obj"
-expect sweep-no-tol 2 '--adaptive needs a positive, finite --tol' -- "$crossdiv" sweep surface:vase --adaptive -o "$tmp/x.obj"
+expect sweep-adaptive 0 'closed, watertight' -- "$crossdiv" sweep surface:vase --adaptive --tolerance 1e-3 -o "$tmp/vase_a.obj"
+expect sweep-no-tol 2 '--adaptive needs a positive, finite --tolerance' -- "$crossdiv" sweep surface:vase --adaptive -o "$tmp/x.obj"
 printf 'bez2 p 8 4 [-1 1] [1 0.5] [1 -0.5] [-1 -1]\nsrev cup 16 p\n' > "$tmp/cross.swp"
 expect sweep-cross-axis 2 'cross.swp:2: cup: the profile crosses the axis of revolution' -- "$crossdiv" sweep "$tmp/cross.swp" -o "$tmp/x.obj"
 printf 'circ c 8 1\n' > "$tmp/nosweep.swp"
@@ -330,8 +330,8 @@ expect limit-uv 0 'limit texture coordinates within .* of the UV box over 1024 c
 expect limit-uv-loop 0 'against opensubdiv: agree .*limit texture coordinates within' -- "$crossdiv" limit edgecase:uv-junction-tri --scheme loop --levels 1 --fvar corners-plus1 --against opensubdiv
 expect limit-uv-move 0 'texture coordinates \(all rule\): .* values; the largest move to the limit is 0 of the UV box' -- "$crossdiv" limit edgecase:uv-seam --scheme catmull-clark --levels 1 --fvar all
 expect limit-uv-written 0 '^vt ' -- bash -c "\"$crossdiv\" limit edgecase:uv-seam --scheme catmull-clark --levels 1 --fvar none -o \"$tmp/limuv.obj\" >/dev/null && grep -m1 '^vt ' \"$tmp/limuv.obj\""
-expect spectrum 0 'catmull-clark +4 +0\.500000 +2 ' -- "$crossdiv" spectrum --scheme catmull-clark --valence 3..6 --json "$tmp/sp.json"
-expect spectrum-bad 2 "--valence wants N or A..B" -- "$crossdiv" spectrum --valence 2..5
+expect spectrum 0 'catmull-clark +4 +0\.500000 +2 ' -- "$crossdiv" spectrum --scheme catmull-clark --valences 3..6 --json "$tmp/sp.json"
+expect spectrum-bad 2 "--valences wants N or A..B" -- "$crossdiv" spectrum --valences 2..5
 expect sqrt3-subdivide 0 '10 vertices, 9 faces, 2 level\(s\), sqrt3 count-from-input core' -- "$crossdiv" subdivide "$tmp/triangle.obj" --scheme sqrt3 --levels 2 -o "$tmp/s3.obj"
 expect sqrt3-parity 1 'openmesh +restart-each-level +diverge .*parity: openmesh counts generations per call' -- "$crossdiv" compare bundled:fan-5 --scheme sqrt3 --levels 2
 expect sqrt3-one-call 0 'every reference agrees' -- "$crossdiv" compare bundled:fan-5 --scheme sqrt3 --levels 3 --against openmesh-one-call,cgal-one-call

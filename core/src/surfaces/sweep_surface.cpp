@@ -49,7 +49,7 @@ ExactSurface exact_revolution(const CurveRecord& profile) {
 }
 
 SweepSurface build_sweep(const CurveFile& file, int index, const SweepOptions& o) {
-    if (o.adaptive && !(o.tol > 0)) throw InputError("adaptive sweeps need a positive --tol");
+    if (o.adaptive && !(o.tol > 0)) throw InputError("adaptive sweeps need a positive tolerance");
     if (o.adaptive && !(o.curve_share > 0 && o.curve_share < 1)) throw InputError("curve_share must be in (0, 1)");
     const SweepRecord& rec = file.sweeps.at(index);
     SweepSurface out;
