@@ -32,13 +32,14 @@ trap 'if [ $? -eq 0 ]; then end_phase ok; else end_phase failed; fi' EXIT
 # external MeshLab reference of the default suite, run as meshlabserver under Xvfb; python3-open3d:
 # the Open3D reference, adapters/open3d; blender: Blender's Subdivision Surface modifier, run headless,
 # adapters/blender; python3-skimage: scikit-image's marching cubes, the
-# isosurface reference).
+# isosurface reference; help2man and man-db: the man page, generated from the binary's help and
+# rendered by its test).
 PACKAGES="g++ make cmake ccache libeigen3-dev libosd-dev libopenmesh-dev libcgal-dev libvtk9-dev libgtest-dev \
 libcli11-dev nlohmann-json3-dev libfmt-dev libnanoflann-dev libassimp-dev python3-matplotlib python3-numpy \
 meshlab xvfb xauth python3-open3d blender \
 python3-pytest python3-skimage \
 libjs-three chromium chromium-driver python3-selenium python3-pil \
-pybind11-dev python3-dev python3-scipy"
+pybind11-dev python3-dev python3-scipy help2man man-db"
 
 install_missing() {
   local missing=""

@@ -91,6 +91,8 @@ int main(int argc, char** argv) {
     crossdiv::verification::stop_cleanly_on_signals();
     CLI::App app{"crossdiv: spline and subdivision algorithms verified against OpenSubdiv, OpenMesh and CGAL"};
     app.set_version_flag("--version", version_text, "Print crossdiv's version and the libraries built in, and exit");
+    // Every command's help on one page: what the man page is generated from (help2man).
+    app.set_help_all_flag("--help-all", "Print the help of every command and exit");
     app.require_subcommand(1);
     int status = 0;
     cli::add_mesh_commands(app, status);     // subdivide, compare, check, datasets, edgecases, diff
