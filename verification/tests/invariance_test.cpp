@@ -18,6 +18,7 @@
 #include "crossdiv/subdiv/bilinear.h"
 #include "crossdiv/verification/comparisons/input_transformation.h"
 #include "crossdiv/verification/comparisons/invariance.h"
+#include "crossdiv/verification/harness/coincident_vertices.h"
 #include "crossdiv/verification/implementations/callback_implementation.h"
 #include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/verification/harness/tolerances.h"
@@ -163,6 +164,26 @@ InvarianceReport checked(const Implementation& impl, const PolyMesh& mesh, Schem
 
 const InvarianceCheck& check_of(const InvarianceReport& r, InputTransformation t) {
     return *std::find_if(r.checks.begin(), r.checks.end(), [&](const InvarianceCheck& c) { return c.transformation == t; });
+}
+
+// Which vertices positions cannot tell apart, counted by hand: the bound is included, a pair
+// across a cell border or a cell corner is found, and far from the origin (where the cell
+// numbers pass 2^53) only the distance decides.
+TEST(CoincidentVertices, WithinTheDistanceIncludedAcrossCellsAndFarFromTheOrigin) {
+    EXPECT_FALSE(has_vertices_within(std::vector<Vec3>{}, 0.1));
+    EXPECT_FALSE(has_vertices_within(std::vector<Vec3>{{0, 0, 0}}, 0.1));
+    EXPECT_FALSE(has_vertices_within(std::vector<Vec3>{{0, 0, 0}, {1, 0, 0}}, 0.0));
+    EXPECT_TRUE(has_vertices_within(std::vector<Vec3>{{0, 0, 0}, {1, 0, 0}, {1, 0, 0}}, 0.0));  // one position
+    EXPECT_TRUE(has_vertices_within(std::vector<Vec3>{{0, 0, 0}, {0.25, 0, 0}}, 0.25));        // the bound itself
+    EXPECT_FALSE(has_vertices_within(std::vector<Vec3>{{0, 0, 0}, {0.25, 0, 1e-3}}, 0.25));    // just beyond it
+    EXPECT_TRUE(has_vertices_within(std::vector<Vec3>{{0.099, 0, 0}, {0.101, 0, 0}}, 0.01));   // two cells in x
+    // Neighbours through a cell corner: 2e-4 apart in each axis, sqrt(3) 2e-4 = 3.5e-4 <= 1e-3.
+    EXPECT_TRUE(has_vertices_within(std::vector<Vec3>{{0.0999, 0.0999, 0.0999}, {0.1001, 0.1001, 0.1001}}, 1e-3));
+    EXPECT_FALSE(has_vertices_within(std::vector<Vec3>{{0, 0, 0}, {0, 2, 0}, {0, 0, 3}}, 1.5));
+    // At 1e17 neighbouring doubles are 16 apart and the cell numbers (near 1e23) are not exact:
+    // only the distance decides, 16 > 1e-6 is not near and 16 <= 16 is.
+    EXPECT_FALSE(has_vertices_within(std::vector<Vec3>{{1e17, 0, 0}, {1e17 + 16, 0, 0}}, 1e-6));
+    EXPECT_TRUE(has_vertices_within(std::vector<Vec3>{{1e17, 0, 0}, {1e17 + 16, 0, 0}}, 16.0));
 }
 
 TEST(Invariance, CoreIsInvariantUnderEveryTransformation) {

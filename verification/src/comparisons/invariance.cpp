@@ -18,6 +18,7 @@
 #include "crossdiv/mesh/mesh_checks.h"
 #include "crossdiv/mesh/tri_mesh.h"
 #include "crossdiv/subdiv/nonmanifold.h"
+#include "crossdiv/verification/harness/coincident_vertices.h"
 #include "crossdiv/verification/harness/json_text.h"
 #include "crossdiv/verification/harness/mesh_comparison.h"
 #include "crossdiv/verification/harness/mesh_topology.h"
@@ -28,41 +29,6 @@ namespace crossdiv::verification {
 using detail::sci;
 
 namespace {
-
-/// Whether two vertices of `mesh` lie within `distance` of each other (at one position when 0):
-/// positions cannot tell such vertices apart at that bar. The points are bucketed in cells of
-/// that size, so two within it share a cell or are neighbours; O(n log n).
-bool has_coincident_vertices(const PolyMesh& mesh, double distance) {
-    if (!(distance > 0)) {
-        std::vector<std::array<double, 3>> p;
-        p.reserve(mesh.positions.size());
-        for (const Vec3& x : mesh.positions) p.push_back({x.x(), x.y(), x.z()});
-        std::sort(p.begin(), p.end());
-        return std::adjacent_find(p.begin(), p.end()) != p.end();
-    }
-    // Cell numbers as doubles: far from the origin, where x / distance passes 2^53, the
-    // neighbour numbers collapse onto the cell's own, which still holds the points within reach.
-    using Cell = std::array<double, 3>;
-    std::vector<std::pair<Cell, int>> cells;
-    cells.reserve(mesh.positions.size());
-    for (size_t v = 0; v < mesh.positions.size(); ++v) {
-        const Vec3& x = mesh.positions[v];
-        cells.push_back({{std::floor(x.x() / distance), std::floor(x.y() / distance), std::floor(x.z() / distance)}, static_cast<int>(v)});
-    }
-    std::sort(cells.begin(), cells.end());
-    for (const auto& [cell, v] : cells)
-        for (double dx = -1; dx <= 1; ++dx)
-            for (double dy = -1; dy <= 1; ++dy)
-                for (double dz = -1; dz <= 1; ++dz) {
-                    const Cell near{cell[0] + dx, cell[1] + dy, cell[2] + dz};
-                    auto it = std::lower_bound(cells.begin(), cells.end(), std::pair<Cell, int>{near, -1});
-                    for (; it != cells.end() && it->first == near; ++it)
-                        if (it->second != v &&
-                            (mesh.positions[static_cast<size_t>(it->second)] - mesh.positions[static_cast<size_t>(v)]).norm() <= distance)
-                            return true;
-                }
-    return false;
-}
 
 /// Each vertex's face corners (a counting sort of the corners by vertex) and each corner's face.
 struct VertexCorners {
@@ -372,27 +338,30 @@ InvarianceCheck measure_invariance(const PolyMesh& refined, const PolyMesh& refi
                                 expected.face_start == refined_transformed.face_start &&
                                 expected.face_vertices == refined_transformed.face_vertices;
     Correspondence m;
+    std::optional<MeshComparison> c;
     if (same_numbering) {
         m.method = MatchMethod::Order;
         m.ref_to_ours.resize(static_cast<size_t>(expected.num_vertices()));
         std::iota(m.ref_to_ours.begin(), m.ref_to_ours.end(), 0);
-        const MeshComparison by_number = compare_meshes(expected, refined_transformed, m.ref_to_ours);
-        if (!by_number.topology_equal() || by_number.max_rel > bar) {
+        c = compare_meshes(expected, refined_transformed, m.ref_to_ours);
+        if (!c->topology_equal() || c->max_rel > bar) {
             Correspondence by_position = match_nearest_and_faces(expected, refined_transformed);
-            if (by_position.method != MatchMethod::None) m = std::move(by_position);
+            if (by_position.method != MatchMethod::None) {
+                m = std::move(by_position);
+                c = compare_meshes(expected, refined_transformed, m.ref_to_ours);
+            }
         }
     } else {
         m = match_nearest_and_faces(expected, refined_transformed);
+        if (m.method != MatchMethod::None) c = compare_meshes(expected, refined_transformed, m.ref_to_ours);
     }
-    std::optional<MeshComparison> c;
-    if (m.method != MatchMethod::None) c = compare_meshes(expected, refined_transformed, m.ref_to_ours);
     // Vertices at one position (a face naming a vertex twice, two faces on the same corners, or
     // within the bar of each other)
     // cannot be told apart by position, so neither can the faces that use them: such a pair is
     // compared as point sets, and its faces are not compared.
     // Float results put two vertices at one place a rounding apart (the face points of two
     // polygons back to back): within the bar is at one position.
-    if ((!c || !c->topology_equal()) && has_coincident_vertices(refined, bar * diagonal)) {
+    if ((!c || !c->topology_equal()) && has_vertices_within(refined.positions, bar * diagonal)) {
         out.max_rel = hausdorff_vertex_sets(expected.positions, refined_transformed.positions) / diagonal;
         const bool same_points = out.max_rel <= bar && expected.num_vertices() == refined_transformed.num_vertices();
         out.result = same_points ? InvarianceResult::NotCompared : InvarianceResult::NotInvariant;
