@@ -22,11 +22,17 @@ The modifier's options, as crossdiv's rules name them:
   (OBJ `t crease` tags become edge crease weights: sharpness s as s / 10, Blender's scale),
   use_custom_normals False, show_only_control_edges irrelevant here.
 
-Exit status: 0 with OUT written; 2 for a bad command line or input; 3 when run outside Blender
-(--check, run by plain python3, exits 1 when `blender` is not on PATH).
+Exit status: 0 with OUT written; 2 for a bad command line or an unreadable input; 3 when run
+outside Blender (--check, run by plain python3, exits 1 when `blender` is not on PATH); 4 when
+the modifier has no rule for the input (a tag with no counterpart on a Blender mesh, or an input
+Mesh.validate would change), the reason on stderr: a refusal (`rejects=4` in a manifest).
 """
 import struct
 import sys
+
+
+class NoCounterpart(Exception):
+    """The input has what Blender's mesh or modifier cannot hold: a refusal, exit status 4."""
 
 SCHEMES = {"catmull-clark": "CATMULL_CLARK", "bilinear": "SIMPLE"}
 BOUNDARIES = {"edge-only": "ALL", "edge-and-corner": "PRESERVE_CORNERS", "linear": "ALL"}
@@ -53,7 +59,7 @@ def read_obj(path):
             elif words[0] == "t" and len(words) > 1 and words[1] != "crease":
                 # Holes, corners, Chaikin's crease decay, smooth triangles: no counterpart on a
                 # Blender mesh or its modifier.
-                raise ValueError(f"{path}:{number}: tag '{words[1]}' has no counterpart in Blender's modifier")
+                raise NoCounterpart(f"{path}:{number}: tag '{words[1]}' has no counterpart in Blender's modifier")
             elif words[0] == "t" and len(words) > 1 and words[1] == "crease":
                 # t crease 2/1/0 a b sharpness
                 counts = [int(c) for c in words[2].split("/")]
@@ -141,6 +147,9 @@ def main(argv):
         return 2
     try:
         return subdivide(scheme, int(levels), boundary, uv, mesh_in, mesh_out)
+    except NoCounterpart as e:
+        print(e, file=sys.stderr)
+        return 4
     except (OSError, ValueError, IndexError) as e:
         print(f"cannot read {mesh_in}: {e}", file=sys.stderr)
         return 2

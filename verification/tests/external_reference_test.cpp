@@ -127,6 +127,48 @@ TEST(ExternalReference, AFamilyOfItsOwnIsTheRuleItApplies) {
     EXPECT_EQ(make_program_implementation(spec)->closest_rule(Scheme::Loop, asked).loop,
               (LoopOptions{LoopWeights::Warren, LoopBoundary::EdgeAndCorner}));
 }
+// Far from the origin a float's step (8 at 1e8) outgrows the mesh (a diagonal of 5): core's
+// level has no two vertices a float tells apart, so a float program's result cannot be matched
+// and nothing is compared, neither agreement nor a divergence (the run is no failure).
+TEST(ExternalReference, AFloatProgramFarFromTheOriginIsNotCompared) {
+    ProgramSpec spec = float_program("float-far");  // in its own numbering: matched by position only
+    spec.command = "python3 " + kSource + "/verification/tests/subjects/misbehaving_subject.py float-shuffle {in} {levels} {out.ply}";
+    register_reference(make_program_implementation(spec));
+    RefinementRequest req;
+    req.levels = 2;
+    req.references = {"float-far"};
+    const RefinementComparison c = compare_refinement(datasets::edge_case("far-from-origin").mesh, "far-from-origin", req);
+    ASSERT_EQ(c.runs.size(), 1u);
+    EXPECT_EQ(c.runs[0].verdict, Verdict::NotCompared) << c.runs[0].explanation;
+    EXPECT_NE(c.runs[0].explanation.find("share a position once rounded to float (coordinates up to 1e+08, where a float's step is 8"),
+              std::string::npos)
+        << c.runs[0].explanation;
+}
+
+// A reference that says it has no rule for an input, by an exit status it declares, is
+// ref-rejected with its words; the same status undeclared is a failed run.
+TEST(ExternalReference, ADeclaredRefusalStatusIsARejectionWithItsReason) {
+    ProgramSpec spec;
+    spec.name = "refuses-by-status";
+    spec.command = "python3 " + kSource + "/verification/tests/subjects/misbehaving_subject.py exit {in} {levels} {out}";
+    spec.schemes = {Scheme::Loop};
+    spec.refusal_exit_codes = {3};
+    register_reference(make_program_implementation(spec));
+    const RefinementComparison declared = compare_against("refuses-by-status", "tetrahedron", 1);
+    ASSERT_EQ(declared.runs.size(), 1u);
+    EXPECT_EQ(declared.runs[0].verdict, Verdict::RefRejected);
+    EXPECT_NE(declared.runs[0].outcome.message.find("refuses the input (exit status 3 (level 1)): cannot subdivide: half-edge table overflow"),
+              std::string::npos)
+        << declared.runs[0].outcome.message;
+    spec.name = "fails-by-status";
+    spec.refusal_exit_codes = {4};
+    register_reference(make_program_implementation(spec));
+    const RefinementComparison undeclared = compare_against("fails-by-status", "tetrahedron", 1);
+    ASSERT_EQ(undeclared.runs.size(), 1u);
+    EXPECT_EQ(undeclared.runs[0].outcome.status, RunStatus::ExitStatus);
+    EXPECT_EQ(undeclared.runs[0].verdict, Verdict::RefCrashed);
+}
+
 TEST(Manifest, ReferenceAndSubjectStatementsJoinTheCasesAfterThem) {
     const std::string script = "python3 " + kSource + "/verification/tests/subjects/misbehaving_subject.py ";
     const std::string cmd = script + "float {in} {levels} {out.ply}";
@@ -175,6 +217,9 @@ TEST(Manifest, BadReferenceAndSubjectStatementsNameTheLine) {
     EXPECT_NE(error("reference y command='a {out}' precision=half\n").find(":2: precision must be double or float"),
               std::string::npos);
     EXPECT_NE(error("reference z command='a {out}' colour=red\n").find(":2: unknown key 'colour'"), std::string::npos);
+    EXPECT_NE(error("reference r command='a {out}' rejects=4,0\n").find(":2: rejects takes exit statuses 1..255, got '0'"),
+              std::string::npos);
+    EXPECT_NE(error("subject t command='a {in} {out}' rejects=4\n").find(":2: rejects= is for references"), std::string::npos);
     EXPECT_NE(error("reference w command='a {out}\n").find(":2: unclosed '"), std::string::npos);
     EXPECT_NE(error("reference opensubdiv command='a {out}'\n").find(":2: a reference named 'opensubdiv' exists already"),
               std::string::npos);

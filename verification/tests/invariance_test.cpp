@@ -184,6 +184,9 @@ TEST(CoincidentVertices, WithinTheDistanceIncludedAcrossCellsAndFarFromTheOrigin
     // only the distance decides, 16 > 1e-6 is not near and 16 <= 16 is.
     EXPECT_FALSE(has_vertices_within(std::vector<Vec3>{{1e17, 0, 0}, {1e17 + 16, 0, 0}}, 1e-6));
     EXPECT_TRUE(has_vertices_within(std::vector<Vec3>{{1e17, 0, 0}, {1e17 + 16, 0, 0}}, 16.0));
+    // Rounded to float: at 1e8 a float's step is 8, so 1e8 and 1e8 + 1 are one float; at 1 they differ.
+    EXPECT_EQ(vertices_float_cannot_tell_apart(std::vector<Vec3>{{1e8, 0, 0}, {1e8 + 1, 0, 0}, {1e8 + 16, 0, 0}}), 2u);
+    EXPECT_EQ(vertices_float_cannot_tell_apart(std::vector<Vec3>{{1, 0, 0}, {1 + 1e-6, 0, 0}}), 0u);
 }
 
 TEST(Invariance, CoreIsInvariantUnderEveryTransformation) {

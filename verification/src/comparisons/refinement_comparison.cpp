@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <limits>
 #include <cstring>
 #include <deque>
 #include <functional>
@@ -13,6 +15,7 @@
 #include "crossdiv/error.h"
 #include "harness/sci.h"
 #include "crossdiv/verification/comparisons/classification.h"
+#include "crossdiv/verification/harness/coincident_vertices.h"
 #include "crossdiv/verification/harness/mesh_topology.h"
 #include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/verification/properties/rule_oracle.h"
@@ -368,6 +371,22 @@ std::string counts(const PolyMesh& m) {
     return std::to_string(m.num_faces()) + " faces and " + std::to_string(m.num_vertices()) + " vertices";
 }
 
+bool equal_counts(const PolyMesh& a, const PolyMesh& b) { return a.num_vertices() == b.num_vertices() && a.num_faces() == b.num_faces(); }
+
+/// What keeps a float result from being matched to `level` by position: how many of its
+/// vertices a float cannot tell apart, and how far from the origin they lie; nothing when a
+/// float tells them all apart.
+std::optional<std::string> float_cannot_tell_apart(const PolyMesh& level) {
+    const size_t merged = vertices_float_cannot_tell_apart(level.positions);
+    if (merged == 0) return std::nullopt;
+    double reach = 0;
+    for (const Vec3& p : level.positions) reach = std::max(reach, p.cwiseAbs().maxCoeff());
+    const double step = std::nextafter(static_cast<float>(reach), std::numeric_limits<float>::infinity()) - static_cast<float>(reach);
+    return std::to_string(merged) + " of core's " + std::to_string(level.num_vertices()) +
+           " vertices share a position once rounded to float (coordinates up to " + sci(reach) + ", where a float's step is " +
+           sci(step) + ", against a diagonal of " + sci(bounding_box_diagonal(level.positions)) + ")";
+}
+
 }  // namespace
 
 PolyMesh subdivide(Scheme scheme, const SchemeRule& rule, const PolyMesh& mesh, int levels) {
@@ -650,11 +669,25 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
                 out.runs.push_back(std::move(run));
                 continue;
             }
+            const PolyMesh& against = matched_to->last();
+            // A float reference where a float cannot tell core's own vertices apart (far from
+            // the origin, its step there larger than the mesh's details): no position can match
+            // its vertices one to one, so nothing is compared, neither agreement nor divergence.
+            if (ref.capabilities().precision == Precision::Float && equal_counts(against, theirs)) {
+                if (const std::optional<std::string> why = float_cannot_tell_apart(against)) {
+                    run.verdict = Verdict::NotCompared;
+                    run.explanation = "nothing compared: " + *why + ", so " + ref.name() +
+                                      "'s float result cannot be matched to it vertex for vertex (" + run.correspondence.note + ")";
+                    out.runs.push_back(std::move(run));
+                    made_by_run.resize(out.runs.size());
+                    made_by_run.back() = made_faces(theirs, {});
+                    continue;
+                }
+            }
             // Without a correspondence only the valence-table and topology tests of the ladder
             // can be run. With equal counts that is no measured topology difference: a rule
             // that moves vertices far (a wrong weight) breaks a match by position too.
             run.verdict = Verdict::Diverge;
-            const PolyMesh& against = matched_to->last();
             const std::string unmatched = "no vertex bijection with core's " + rule_name(req.scheme, matched_to->rule) +
                                           " refinement (" + run.correspondence.note + "); " + counts(theirs) +
                                           " against core's " + counts(against);

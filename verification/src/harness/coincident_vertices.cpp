@@ -40,4 +40,15 @@ bool has_vertices_within(std::span<const Vec3> positions, double distance) {
     return false;
 }
 
+size_t vertices_float_cannot_tell_apart(std::span<const Vec3> positions) {
+    std::vector<std::array<float, 3>> p;
+    p.reserve(positions.size());
+    for (const Vec3& x : positions) p.push_back({static_cast<float>(x.x()), static_cast<float>(x.y()), static_cast<float>(x.z())});
+    std::sort(p.begin(), p.end());
+    size_t shared = 0;
+    for (size_t i = 0; i < p.size(); ++i)
+        if ((i > 0 && p[i] == p[i - 1]) || (i + 1 < p.size() && p[i] == p[i + 1])) ++shared;
+    return shared;
+}
+
 }  // namespace crossdiv::verification

@@ -164,6 +164,10 @@ private:
         if (r.signal)
             throw ImplementationFailure(RunStatus::Crashed, "signal " + std::to_string(r.signal) + " (" + strsignal(r.signal) + ")" +
                                                                 level + with_err);
+        if (r.exit_code != 0 && std::find(spec_.refusal_exit_codes.begin(), spec_.refusal_exit_codes.end(), r.exit_code) !=
+                                    spec_.refusal_exit_codes.end())
+            throw adapters::Rejected(name() + " refuses the input (exit status " + std::to_string(r.exit_code) + level + ")" +
+                                     (err.empty() ? "" : ": " + err));
         if (r.exit_code != 0)
             throw ImplementationFailure(RunStatus::ExitStatus, "exit status " + std::to_string(r.exit_code) + level + with_err);
         try {
@@ -192,7 +196,7 @@ public:
     ResultFile(const std::string& name, std::string path, Scheme scheme)
         : Implementation(name, "result file: " + path, ImplementationKind::Program,
                          // The file was made from the input, tags and all, by whatever made it.
-                         program_capabilities({name, "", {scheme}, LevelMode::Final, Precision::Double, 0, {}, {}, "", "", ""},
+                         program_capabilities({name, "", {scheme}, LevelMode::Final, Precision::Double, 0, {}, {}, "", "", "", {}},
                                               true, true, true)),
           path_(std::move(path)) {}
 

@@ -338,6 +338,8 @@ std::vector<std::shared_ptr<const ManifestSubject>> roster_subjects(const std::v
             s->result_pattern = pattern_in_folder[0] == '/' ? pattern_in_folder : base_dir + "/" + pattern_in_folder;
         } else {
             ProgramSpec spec = program_spec(s->name, keys, base_dir, timeout);
+            if (!spec.refusal_exit_codes.empty())
+                throw InputError("rejects= is for references: a subject that refuses an input fails on it");
             spec.dir = folder;
             s->task = TaskCommand(spec.command, base_dir, folder);
             s->timeout_seconds = spec.timeout_seconds;
@@ -397,7 +399,18 @@ ProgramSpec program_spec(const std::string& name, const std::vector<std::string>
         } else if (key == "weights") spec.weights = split(value, ',');
         else if (key == "boundary") spec.boundaries = split(value, ',');
         else if (key == "levels") spec.levels = level_mode_from_string(value);
-        else if (key == "timeout") {
+        else if (key == "rejects") {
+            for (const std::string& code : split(value, ',')) {
+                size_t used = 0;
+                int c = 0;
+                try {
+                    c = std::stoi(code, &used);
+                } catch (const std::exception&) {
+                }
+                if (used != code.size() || c < 1 || c > 255) throw InputError("rejects takes exit statuses 1..255, got '" + code + "'");
+                spec.refusal_exit_codes.push_back(c);
+            }
+        } else if (key == "timeout") {
             size_t used = 0;
             double t = 0;
             try {
@@ -407,7 +420,7 @@ ProgramSpec program_spec(const std::string& name, const std::vector<std::string>
             if (used != value.size() || !(t > 0) || !std::isfinite(t)) throw InputError("timeout must be a positive number of seconds");
             spec.timeout_seconds = t;
         } else
-            throw InputError("unknown key '" + key + "' (known: command, schemes, precision, weights, boundary, levels, timeout, setup)");
+            throw InputError("unknown key '" + key + "' (known: command, schemes, precision, weights, boundary, levels, timeout, setup, rejects)");
     }
     if (spec.command.empty()) throw InputError("program '" + name + "' has no command='...'");
     return spec;
@@ -489,7 +502,12 @@ Manifest read_manifest(std::istream& in, const std::string& path, const std::str
                 subjects = {s};
                 continue;
             }
-            const ProgramSpec spec = at_line(path, line, [&] { return program_spec(all[1], keys, base_dir, m.timeout_seconds); });
+            const ProgramSpec spec = at_line(path, line, [&] {
+                ProgramSpec s = program_spec(all[1], keys, base_dir, m.timeout_seconds);
+                if (keyword != "reference" && !s.refusal_exit_codes.empty())
+                    throw InputError("rejects= is for references: a subject that refuses an input fails on it");
+                return s;
+            });
             if (programs == ProgramStatements::CheckOnly) {
                 at_line(path, line, [&] {
                     check_program_spec(spec);

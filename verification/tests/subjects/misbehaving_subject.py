@@ -11,7 +11,8 @@ file), nan, garbage (an unreadable line), wrong-count (one face dropped), quads 
 triangles written as one quad), shuffle (Loop's own weights, or the scheme's example, with
 vertices, faces and each face's corners in a random order: a correct result in another numbering), float (Loop's own
 weights, every coordinate rounded to float32 and written as binary PLY, as MeshLab writes: a
-correct result of a float implementation; OUT names the .ply), keep-boundary (Loop's own
+correct result of a float implementation; OUT names the .ply), float-shuffle (the two at once:
+a float implementation that numbers its vertices otherwise), keep-boundary (Loop's own
 weights, but every boundary vertex left where it is: a rule no one names), closed-only (exits
 with a traceback on any input with a boundary edge, as a program that assumes two faces per
 edge does), midpoint (Loop's connectivity, but old vertices kept and every edge point its
@@ -137,7 +138,7 @@ def main():
             for t in faces[2:]:
                 f.write("f %d %d %d\n" % (t[0] + 1, t[1] + 1, t[2] + 1))
         return
-    if mode == "shuffle":
+    if mode in ("shuffle", "float-shuffle"):
         rng = random.Random(17)
         order = list(range(len(verts)))
         rng.shuffle(order)  # order[new] = old
@@ -148,7 +149,7 @@ def main():
         faces = [[new_of[v] for v in t] for t in faces]
         rng.shuffle(faces)
         faces = [t[k:] + t[:k] for t, k in ((t, rng.randrange(len(t))) for t in faces)]
-    if mode == "float":
+    if mode in ("float", "float-shuffle"):
         with open(out, "wb") as f:
             f.write(("ply\nformat binary_little_endian 1.0\nelement vertex %d\nproperty float x\nproperty float y\n"
                      "property float z\nelement face %d\nproperty list uchar int vertex_indices\nend_header\n"

@@ -25,9 +25,10 @@ enum class Verdict {
     /// first run's divergence, if it diverged; not a failure of core's, as no verdict on core can
     /// be read off a result that changes.
     RefNondeterministic,
-    /// Nothing was compared (an invariance check, comparisons/invariance.h): the refinement has
-    /// vertices at one position, whose faces positions cannot match, and its point sets agree.
-    /// Neither agreement nor a divergence.
+    /// Nothing was compared: an invariance check whose refinement has vertices at one position,
+    /// whose faces positions cannot match, and whose point sets agree (comparisons/invariance.h);
+    /// or a float reference where a float cannot tell core's vertices apart (far from the
+    /// origin), so none of its vertices can be matched. Neither agreement nor a divergence.
     NotCompared,
 };
 

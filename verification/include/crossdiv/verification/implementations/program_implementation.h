@@ -61,6 +61,10 @@ struct ProgramSpec {
     std::string base_dir;
     /// The submission folder {dir} stands for (a roster's subject; absolute), empty otherwise.
     std::string dir;
+    /// Exit statuses by which a reference says it has no rule for the input (its reason on
+    /// stderr): such a run is rejected, the reason kept, not a failure of the program. Empty:
+    /// every nonzero status is a failure. References only: a subject's refusal is a failure.
+    std::vector<int> refusal_exit_codes;
 };
 
 /// Vertex and face counts of a refined mesh, and the named rule that makes them ("" when
