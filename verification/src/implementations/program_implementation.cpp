@@ -37,13 +37,22 @@ bool contains(const std::vector<std::string>& list, std::string_view name) {
     return std::find(list.begin(), list.end(), name) != list.end();
 }
 
+/// Every named rule of `scheme`, as core's own implementation declares them: never a stand-in
+/// for core (ScopedCoreImplementation), which may have fewer schemes or rules, so that a
+/// program's rules do not depend on what a test put in core's place.
+const std::vector<SchemeRule>& named_rules(Scheme scheme) {
+    const SchemeSupport* support = find_implementation("core").support(scheme);
+    if (!support) throw InputError(std::string("core has no ") + to_string(scheme));
+    return support->rules;
+}
+
 /// The rules a program declares for `scheme`: those of core's named rules whose weight family
 /// (Loop) and boundary rule are in the spec's lists; a list that is empty keeps every value
 /// when the template passes its placeholder, else the default rule's.
 std::vector<SchemeRule> program_rules(const ProgramSpec& spec, Scheme scheme, bool passes_weights, bool passes_boundary) {
     const SchemeRule fallback{};
     std::vector<SchemeRule> rules;
-    for (const SchemeRule& r : core_implementation().support(scheme)->rules) {
+    for (const SchemeRule& r : named_rules(scheme)) {
         const bool weights = scheme != Scheme::Loop ||
                              (spec.weights.empty() ? passes_weights || r.loop.weights == fallback.loop.weights
                                                    : contains(spec.weights, to_string(r.loop.weights)));
@@ -77,7 +86,7 @@ void check_rule_names(const ProgramSpec& spec) {
     for (const std::string& b : spec.boundaries) {
         bool known = false;
         for (Scheme s : schemes)
-            for (const SchemeRule& r : core_implementation().support(s)->rules) known |= boundary_name(s, r) == b;
+            for (const SchemeRule& r : named_rules(s)) known |= boundary_name(s, r) == b;
         if (!known) throw InputError("program '" + spec.name + "': boundary rule '" + b + "' belongs to none of its schemes");
     }
 }
