@@ -28,8 +28,8 @@
 namespace {
 
 /// What `crossdiv --version` prints: crossdiv's version and compiler, then every implementation
-/// built into this binary with the version of the library it calls (external programs, found at
-/// run time, are not listed: `crossdiv compare --help` names them).
+/// the registry holds at start-up with the version of what it calls (the libraries built in and
+/// the programs crossdiv registers itself; a manifest's `reference` programs join later).
 std::string version_text() {
     std::string text = fmt::format("crossdiv {} ({} build, {} {}, C++{})\n", CROSSDIV_VERSION, CROSSDIV_BUILD_TYPE,
 #if defined(__clang__)

@@ -461,8 +461,8 @@ struct SubdivideArgs {
         // Any implementation of the registry (the references built in and the programs found),
         // checked when the option is read, so that the list cannot fall behind the registry.
         app.add_option("--impl", impl,
-                       "Implementation: core, split-flip (our Loop by edge splits and flips), or a reference "
-                       "(opensubdiv, hbr, openmesh, cgal, vtk, ...: those built in)")
+                       "Implementation: core, split-flip (our Loop by edge splits and flips), or any reference "
+                       "built in (crossdiv --version lists them)")
             ->check(CLI::Validator(
                 [](std::string& name) {
                     if (name == "split-flip") return std::string();

@@ -173,8 +173,7 @@ private:
         if (r.signal)
             throw ImplementationFailure(RunStatus::Crashed, "signal " + std::to_string(r.signal) + " (" + strsignal(r.signal) + ")" +
                                                                 level + with_err);
-        if (r.exit_code != 0 && std::find(spec_.refusal_exit_codes.begin(), spec_.refusal_exit_codes.end(), r.exit_code) !=
-                                    spec_.refusal_exit_codes.end())
+        if (std::find(spec_.refusal_exit_codes.begin(), spec_.refusal_exit_codes.end(), r.exit_code) != spec_.refusal_exit_codes.end())
             throw adapters::Rejected(name() + " refuses the input (exit status " + std::to_string(r.exit_code) + level + ")" +
                                      (err.empty() ? "" : ": " + err));
         if (r.exit_code != 0)

@@ -308,6 +308,12 @@ std::string describe_entry(const ManifestEntry& e) {
     return s;
 }
 
+/// A subject's program spec: a refusal status is a reference's (`rejects=`); a subject that
+/// refuses an input fails on it. @throws InputError.
+void check_subject_spec(const ProgramSpec& spec) {
+    if (!spec.refusal_exit_codes.empty()) throw InputError("rejects= is for references: a subject that refuses an input fails on it");
+}
+
 /// The subjects of a `subjects NAME dir=PATTERN command='..{dir}..' | result='{dir}/..'
 /// [key=value ...]` statement: one per submission folder, named after it.
 std::vector<std::shared_ptr<const ManifestSubject>> roster_subjects(const std::vector<std::string>& words,
@@ -338,8 +344,7 @@ std::vector<std::shared_ptr<const ManifestSubject>> roster_subjects(const std::v
             s->result_pattern = pattern_in_folder[0] == '/' ? pattern_in_folder : base_dir + "/" + pattern_in_folder;
         } else {
             ProgramSpec spec = program_spec(s->name, keys, base_dir, timeout);
-            if (!spec.refusal_exit_codes.empty())
-                throw InputError("rejects= is for references: a subject that refuses an input fails on it");
+            check_subject_spec(spec);
             spec.dir = folder;
             s->task = TaskCommand(spec.command, base_dir, folder);
             s->timeout_seconds = spec.timeout_seconds;
@@ -504,8 +509,7 @@ Manifest read_manifest(std::istream& in, const std::string& path, const std::str
             }
             const ProgramSpec spec = at_line(path, line, [&] {
                 ProgramSpec s = program_spec(all[1], keys, base_dir, m.timeout_seconds);
-                if (keyword != "reference" && !s.refusal_exit_codes.empty())
-                    throw InputError("rejects= is for references: a subject that refuses an input fails on it");
+                if (keyword != "reference") check_subject_spec(s);
                 return s;
             });
             if (programs == ProgramStatements::CheckOnly) {
