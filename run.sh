@@ -33,13 +33,14 @@ trap 'if [ $? -eq 0 ]; then end_phase ok; else end_phase failed; fi' EXIT
 # the Open3D reference, adapters/open3d; blender: Blender's Subdivision Surface modifier, run headless,
 # adapters/blender; python3-skimage: scikit-image's marching cubes, the
 # isosurface reference; help2man and man-db: the man page, generated from the binary's help and
-# rendered by its test).
+# rendered by its test; opensubdiv-tools: the programs OpenSubdiv's regression shapes are
+# compiled into, datasets/install_opensubdiv_shapes.py).
 PACKAGES="g++ make cmake ccache libeigen3-dev libosd-dev libopenmesh-dev libcgal-dev libvtk9-dev libgtest-dev \
 libcli11-dev nlohmann-json3-dev libfmt-dev libnanoflann-dev libassimp-dev python3-matplotlib python3-numpy \
 meshlab xvfb xauth python3-open3d blender \
 python3-pytest python3-skimage \
 libjs-three chromium chromium-driver python3-selenium python3-pil \
-pybind11-dev python3-dev python3-scipy help2man man-db"
+pybind11-dev python3-dev python3-scipy help2man man-db opensubdiv-tools"
 
 install_missing() {
   local missing=""
@@ -62,6 +63,9 @@ install_missing() {
   fi
   # Real meshes from Debian's libcgal-demo, unpacked into datasets/cgal (optional data).
   [ -d datasets/cgal ] || datasets/install_cgal_meshes.sh || echo "CGAL demo meshes unavailable; continuing without them"
+  # OpenSubdiv's regression shapes with hierarchical edits, out of Debian's opensubdiv-tools
+  # (optional data: Hbr gives them their verdict).
+  [ -d datasets/opensubdiv ] || /usr/bin/python3 datasets/install_opensubdiv_shapes.py || echo "OpenSubdiv shapes unavailable; continuing without them"
 }
 
 # The sanitizer build: clang (and its sanitizer and libFuzzer runtimes).

@@ -162,7 +162,7 @@ TEST(MeshIo, ObjReadsHoleBoundaryAndTriangleTagsAndKeepsUnknownOnesForTheCaller)
     const std::string two_quads = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nv 2 1 0\nf 1 2 3 4\nf 2 5 6 3\n";
     const PolyMesh m = obj(two_quads + "t hole 2/0/0 1 1\nt hole 1/0/0 0\nt interpolateboundary 1/0/0 0\n" +
                            "t smoothtriangles 0/0/1 smooth\nt facevaryingpropagatecorners 1/0/0 1\n" +
-                           "t vertexedit 1/0/0 3\n");
+                           "t stitch 1/0/0 3\n");
     EXPECT_EQ(m.creases.holes, (std::vector<int>{0, 1}));  // sorted, each once
     EXPECT_FALSE(m.creases.empty());                       // holes need the tagged refinement
     EXPECT_EQ(m.creases.describe(), "0 crease, 0 corner and 2 hole tag(s)");
@@ -171,7 +171,7 @@ TEST(MeshIo, ObjReadsHoleBoundaryAndTriangleTagsAndKeepsUnknownOnesForTheCaller)
     ASSERT_EQ(m.source.notes.size(), 1u);  // the tag OpenSubdiv 3 dropped: read, said to be ignored
     EXPECT_NE(m.source.notes[0].find("'facevaryingpropagatecorners' at t.obj:13 is ignored: OpenSubdiv 3 has no such option"),
               std::string::npos);
-    EXPECT_EQ(m.source.unknown_tags, std::vector<std::string>{"'vertexedit' at t.obj:14"});
+    EXPECT_EQ(m.source.unknown_tags, std::vector<std::string>{"'stitch' at t.obj:14"});
 
     expect_tags_written_back(m);
 

@@ -75,6 +75,7 @@ PolyMesh bundled_mesh(const std::string& name) {
 }
 
 std::vector<std::string> cgal_mesh_files() { return files_in(datasets_dir() / "cgal", ".off"); }
+std::vector<std::string> opensubdiv_shape_files() { return files_in(datasets_dir() / "opensubdiv", ".obj"); }
 
 std::vector<std::string> course_mesh_files() {
     return files_in(shared_data_dir() / "c3100" / "objs", ".obj");

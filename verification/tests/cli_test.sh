@@ -110,9 +110,21 @@ expect mistyped-input 2 "'cgal:fandisk' is neither a file nor a known input name
 # Shape-file tags: an unknown one refuses (naming the line) unless told; holes are not emitted;
 # a --boundary flag wins over the file's interpolateboundary and says so.
 printf 'v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 0\nv 2 1 0\nf 1 2 5 4\nf 2 3 6 5\nt hole 1/0/0 1\nt interpolateboundary 1/0/0 1\n' > "$tmp/tagged.obj"
-cp "$tmp/tagged.obj" "$tmp/vertexedit.obj"; printf 't vertexedit 1/0/0 3\n' >> "$tmp/vertexedit.obj"
-expect unknown-tag 2 "unknown tag 'vertexedit' at .*vertexedit.obj:11" -- "$crossdiv" subdivide "$tmp/vertexedit.obj" --scheme catmull-clark -o "$tmp/x.obj"
-expect unknown-tag-ignored 0 '-> .*x.obj \(15 vertices, 4 faces' -- "$crossdiv" subdivide "$tmp/vertexedit.obj" --scheme catmull-clark --ignore-unknown-tags -o "$tmp/x.obj"
+cp "$tmp/tagged.obj" "$tmp/stitch.obj"; printf 't stitch 1/0/0 3\n' >> "$tmp/stitch.obj"
+expect unknown-tag 2 "unknown tag 'stitch' at .*stitch.obj:11" -- "$crossdiv" subdivide "$tmp/stitch.obj" --scheme catmull-clark -o "$tmp/x.obj"
+expect unknown-tag-ignored 0 '-> .*x.obj \(15 vertices, 4 faces' -- "$crossdiv" subdivide "$tmp/stitch.obj" --scheme catmull-clark --ignore-unknown-tags -o "$tmp/x.obj"
+# Hierarchical edits: core's Catmull-Clark applies them; a library without them is not run.
+cp "$tmp/tagged.obj" "$tmp/vertexedit.obj"; printf 't vertexedit 4/3/3 3 0 2 0 0 0 1 add P value\n' >> "$tmp/vertexedit.obj"
+expect hedit-loop-refused 2 'does not apply them \(core applies them under Catmull-Clark' -- "$crossdiv" subdivide "$tmp/vertexedit.obj" --scheme loop -o "$tmp/x.obj"
+expect hedit-far-refused 2 'opensubdiv refused .*has no hierarchical edits' -- "$crossdiv" subdivide "$tmp/vertexedit.obj" --scheme catmull-clark --impl opensubdiv -o "$tmp/x.obj"
+# OpenSubdiv's five shapes with hierarchical edits (datasets/install_opensubdiv_shapes.py, when
+# Debian's opensubdiv-tools is installed): each gets its verdict from Hbr.
+shapes="$(dirname "$0")/../../datasets/opensubdiv"
+if [ -d "$shapes" ]; then
+  for i in 0 1 2 3 4; do
+    expect "hedit$i-hbr" 1 'hbr +edge-only creases=hbr +agree' -- "$crossdiv" compare "$shapes/catmark_square_hedit$i.obj" --scheme catmull-clark --levels 4
+  done
+fi
 expect hole-not-emitted 0 '1 hole tag\(s\) -> .*x.obj \(15 vertices, 4 faces, 1 level\(s\), uniform decay, catmull-clark edge-and-corner opensubdiv\)' -- "$crossdiv" subdivide "$tmp/tagged.obj" --scheme catmull-clark --impl opensubdiv -o "$tmp/x.obj"
 expect boundary-flag-wins 0 "note: --boundary edge-only wins over .*tagged.obj's 't interpolateboundary' \(edge-and-corner\)" -- "$crossdiv" compare "$tmp/tagged.obj" --scheme catmull-clark --boundary edge-only
 expect tagged-compare 0 'opensubdiv +edge-and-corner +agree' -- "$crossdiv" compare "$tmp/tagged.obj" --scheme catmull-clark --levels 2

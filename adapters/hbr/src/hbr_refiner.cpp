@@ -12,6 +12,9 @@
 #include <opensubdiv/hbr/bilinear.h>
 #include <opensubdiv/hbr/loop.h>
 #include <opensubdiv/hbr/catmark.h>
+#include <opensubdiv/hbr/cornerEdit.h>
+#include <opensubdiv/hbr/creaseEdit.h>
+#include <opensubdiv/hbr/holeEdit.h>
 #include <opensubdiv/hbr/vertexEdit.h>
 #include <opensubdiv/version.h>
 // clang-format on
@@ -91,6 +94,22 @@ std::unique_ptr<Mesh> build(const HbrInput& in, Subdivision* scheme, std::string
         v->SetSharpness(in.corner_sharpness[c]);
     }
     for (int f : in.holes) out->GetFace(f)->SetHole();
+    using Edit = OpenSubdiv::HbrHierarchicalEdit<Point>;
+    for (const HbrEdit& e : in.edits) {
+        const typename Edit::Operation op = e.op == 0 ? Edit::Set : e.op == 1 ? Edit::Add : Edit::Subtract;
+        std::vector<int> path = e.children;
+        std::vector<unsigned char> bytes(path.begin(), path.end());
+        const int depth = static_cast<int>(path.size());
+        float value[3] = {e.value[0], e.value[1], e.value[2]};
+        if (e.target == 0)
+            out->AddHierarchicalEdit(new OpenSubdiv::HbrVertexEdit<Point>(e.face, depth, path.data(), e.element, 0, 3, true, op, value));
+        else if (e.target == 1)
+            out->AddHierarchicalEdit(new OpenSubdiv::HbrCornerEdit<Point>(e.face, depth, path.data(), e.element, op, value[0]));
+        else if (e.target == 2)
+            out->AddHierarchicalEdit(new OpenSubdiv::HbrCreaseEdit<Point>(e.face, depth, path.data(), e.element, op, value[0]));
+        else
+            out->AddHierarchicalEdit(new OpenSubdiv::HbrHoleEdit<Point>(e.face, depth, bytes.data()));
+    }
     out->SetInterpolateBoundaryMethod(in.edge_and_corner ? Mesh::k_InterpolateBoundaryEdgeAndCorner : Mesh::k_InterpolateBoundaryEdgeOnly);
     scheme->SetCreaseSubdivisionMethod(in.chaikin ? Subdivision::k_CreaseChaikin : Subdivision::k_CreaseNormal);
     out->Finish();
@@ -166,6 +185,12 @@ void refine_levels(Mesh& mesh, int num_vertices, int num_faces, int levels, HbrO
             out.error = "Hbr made vertex " + std::to_string(v->GetID()) + " of level " + std::to_string(level) + " without a parent";
             return false;
         };
+        // Hbr applies a vertex edit when a vertex's neighbourhood is first complete
+        // (HbrVertex::GuaranteeNeighbors, which the next level's refinement calls): so that
+        // each level is read as edited, as the next level sees it, that is done here.
+        if (mesh.HasVertexEdits())
+            for (Face* f : children)
+                for (int k = 0; k < f->GetNumVertices(); ++k) f->GetVertex(k)->GuaranteeNeighbors();
         for (Vertex* v : vertices)
             if (v->HasChild() && !number(v->Subdivide())) return;
         for (Face* f : children) {

@@ -10,6 +10,16 @@ namespace crossdiv::adapters::hbr::detail {
 
 enum class HbrScheme { CatmullClark, Loop, Bilinear };
 
+/// One hierarchical edit (crossdiv's HierarchicalEdit in plain numbers).
+struct HbrEdit {
+    int target = 0;  ///< 0 position (HbrVertexEdit), 1 vertex sharpness (HbrCornerEdit), 2 edge sharpness (HbrCreaseEdit), 3 hole (HbrHoleEdit)
+    int op = 0;      ///< 0 set, 1 add, 2 subtract
+    int face = 0;
+    std::vector<int> children;
+    int element = 0;
+    float value[3] = {0, 0, 0};  ///< Hbr keeps its edits' values in float
+};
+
 /// A mesh whose topology Hbr can hold (checked before: hbr_subdivision.cpp) and its tags.
 struct HbrInput {
     HbrScheme scheme = HbrScheme::CatmullClark;
@@ -23,6 +33,7 @@ struct HbrInput {
     std::vector<int> corner_vertices;
     std::vector<float> corner_sharpness;
     std::vector<int> holes;
+    std::vector<HbrEdit> edits;  ///< applied as Hbr applies them (paths checked before)
     int levels = 1;
 };
 

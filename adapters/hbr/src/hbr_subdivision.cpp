@@ -96,7 +96,30 @@ detail::HbrInput input_of(const PolyMesh& mesh, detail::HbrScheme scheme, int le
         in.corner_sharpness.push_back(v.sharpness);
     }
     in.holes = mesh.creases.holes;
+    for (const HierarchicalEdit& e : mesh.creases.edits) {
+        // Hbr takes a path as given and walks off the mesh (or its child array) on a bad one.
+        const bool in_range = e.face >= 0 && e.face < mesh.num_faces();
+        if (const std::string problem = hierarchical_edit_problem(e, mesh.num_faces(), in_range ? mesh.face_size(e.face) : 0);
+            !problem.empty())
+            throw Rejected("hierarchical edit " + describe(e) + ": " + problem);
+        detail::HbrEdit h;
+        h.target = static_cast<int>(e.target);
+        h.op = static_cast<int>(e.op);
+        h.face = e.face;
+        h.children = e.children;
+        h.element = e.element;
+        for (int i = 0; i < 3; ++i) h.value[i] = static_cast<float>(e.value[static_cast<size_t>(i)]);
+        in.edits.push_back(std::move(h));
+    }
     return in;
+}
+
+/// @throws Rejected for a mesh with hierarchical edits, under a scheme whose paths Hbr's
+///         regression reader does not define (its Loop and bilinear schemes).
+void reject_hierarchical_edits(const PolyMesh& mesh, const char* scheme) {
+    if (!mesh.creases.edits.empty())
+        throw Rejected(std::string(scheme) + " is not compared with hierarchical edits (" +
+                       std::to_string(mesh.creases.edits.size()) + " here): crossdiv applies them under Catmull-Clark only");
 }
 
 /// Hbr's levels as a LevelTrace (level 0 the input), each vertex's parent in `births`.
@@ -148,6 +171,7 @@ LevelTrace loop(const PolyMesh& mesh, const LoopOptions& options, int levels, Le
     for (int f = 0; f < mesh.num_faces(); ++f)
         if (mesh.face_size(f) != 3)
             throw Rejected("Hbr's Loop scheme takes triangles; face " + std::to_string(f) + " has " + std::to_string(mesh.face_size(f)) + " corners");
+    reject_hierarchical_edits(mesh, "Hbr's Loop scheme");
     detail::HbrInput in = input_of(mesh, detail::HbrScheme::Loop, levels);
     check_loop_back_to_back(mesh, levels);
     in.edge_and_corner = options.boundary == LoopBoundary::EdgeAndCorner;

@@ -223,3 +223,51 @@ TEST(HbrSubdivision, RefusesLoopsSecondLevelOfTwoTrianglesBackToBack) {
 
 }  // namespace
 }  // namespace crossdiv::adapters::hbr
+
+namespace crossdiv::adapters::hbr {
+namespace {
+
+/// A 2 x 2 grid of unit quads, face j*2 + i with lower-left corner (i, j), in z = 0.
+PolyMesh grid2() {
+    PolyMesh m;
+    for (int j = 0; j <= 2; ++j)
+        for (int i = 0; i <= 2; ++i) m.positions.emplace_back(i, j, 0);
+    for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 2; ++i) {
+            const int a = 3 * j + i;
+            m.add_face({a, a + 1, a + 4, a + 3});
+        }
+    return m;
+}
+
+TEST(HbrSubdivision, AppliesAHierarchicalVertexEditWhereItsPathLeads) {
+    // Face 3 = (4 5 8 7), lower-left corner (1, 1). Its child 2 sits at corner 8, (2, 2); that
+    // child's slot 3 (Hbr turns a quad's children to start at their corner) is the point of
+    // edge (7, 8): (1.5, 2) on the boundary, lifted by 1 at level 1 and kept 3/4 of at level 2.
+    PolyMesh m = grid2();
+    m.creases.edits = {HierarchicalEdit{EditTarget::Position, EditOperation::Add, 3, {2}, 3, {0, 0, 1}, 0}};
+    const LevelTrace t = catmull_clark(m, catmark(CatmullClarkBoundary::EdgeOnly), 2);
+    int lifted1 = -1;
+    for (int v = 0; v < t[1].num_vertices(); ++v)
+        if (t[1].positions[v].z() != 0) {
+            EXPECT_EQ(lifted1, -1) << "a second lifted vertex";
+            lifted1 = v;
+        }
+    ASSERT_GE(lifted1, 0);
+    EXPECT_EQ(t[1].positions[lifted1], Vec3(1.5, 2, 1));
+    double top = 0;
+    for (const Vec3& p : t[2].positions) top = std::max(top, p.z());
+    EXPECT_NEAR(top, 0.75, kFloatWeights);
+    // The same edit through Hbr's Loop: refused by name, never dropped.
+    PolyMesh tri;
+    tri.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    tri.add_face({0, 1, 2});
+    tri.creases.edits = {HierarchicalEdit{EditTarget::Position, EditOperation::Add, 0, {0}, 0, {0, 0, 1}, 0}};
+    EXPECT_THROW(loop(tri, loop_options(), 1), Rejected);
+    // A path off the mesh is refused before Hbr walks it.
+    m.creases.edits[0].children = {7};
+    EXPECT_THROW(catmull_clark(m, catmark(CatmullClarkBoundary::EdgeOnly), 1), Rejected);
+}
+
+}  // namespace
+}  // namespace crossdiv::adapters::hbr

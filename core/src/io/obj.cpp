@@ -21,6 +21,106 @@ struct HoleTag {
     int line;
 };
 
+/// The edits of one `t vertexedit`, `t edgeedit` or `t faceedit` line, as Hbr's regression
+/// reader takes them (hbr_utils.h applyTags): the integers are paths `length face child...
+/// element` (faceedit: `length face child...`); the strings are operations, `op P value` or
+/// `op P sharpness` (op set, add or subtract), or `hole` for faceedit; each path takes its
+/// values in turn, 3 per value and 1 per sharpness, and the edits are made operation by
+/// operation, path by path. Ranges are checked once the faces are read.
+void read_hierarchical_edits(io_detail::LineReader& r, std::string_view name, const std::vector<long>& ints,
+                             const std::vector<double>& reals, const std::vector<std::string_view>& strings,
+                             std::vector<HierarchicalEdit>& edits, std::vector<std::string>& notes) {
+    const std::string tag = "tag '" + std::string(name) + "': ";
+    const bool face_edit = name == "faceedit";
+    struct Path {
+        long face;
+        std::vector<int> children;
+        int element;
+    };
+    std::vector<Path> paths;
+    for (size_t k = 0; k < ints.size();) {
+        const long length = ints[k];
+        const long least = face_edit ? 1 : 2;  // a face, then (but for faces) an element
+        if (length < least || length > 64 || k + static_cast<size_t>(length) >= ints.size())
+            r.fail(tag + "path length " + std::to_string(length) + " at integer " + std::to_string(k + 1) +
+                   (length < least ? " is too short" : length > 64 ? " is longer than 64 levels" : " runs past the integers given"));
+        Path p{ints[k + 1], {}, -1};
+        const size_t children_end = k + 1 + static_cast<size_t>(face_edit ? length : length - 1);
+        for (size_t i = k + 2; i < children_end; ++i) {
+            if (ints[i] < 0 || ints[i] > 1'000'000) r.fail(tag + "path component " + std::to_string(ints[i]) + " out of range");
+            p.children.push_back(static_cast<int>(ints[i]));
+        }
+        if (!face_edit) {
+            if (ints[k + static_cast<size_t>(length)] < 0 || ints[k + static_cast<size_t>(length)] > 1'000'000)
+                r.fail(tag + "element " + std::to_string(ints[k + static_cast<size_t>(length)]) + " out of range");
+            p.element = static_cast<int>(ints[k + static_cast<size_t>(length)]);
+        }
+        paths.push_back(std::move(p));
+        k += static_cast<size_t>(length) + 1;
+    }
+    if (paths.empty()) r.fail(tag + "needs at least one path");
+    auto add = [&](const Path& p, EditTarget target, EditOperation op, std::array<double, 3> value) {
+        if (p.face < 0 || p.face > 1'000'000'000) r.fail(tag + "face " + std::to_string(p.face) + " out of range");
+        edits.push_back({target, op, static_cast<int>(p.face), p.children, p.element, value, r.line_number()});
+    };
+    if (face_edit) {
+        if (!reals.empty()) r.fail(tag + "takes no float arguments, got " + std::to_string(reals.size()));
+        if (strings.empty()) r.fail(tag + "needs an operation ('hole')");
+        for (std::string_view op : strings)
+            if (op != "hole")
+                r.fail(tag + "operation '" + std::string(op) + "' is not supported (only 'hole' is; Hbr has no other either)");
+        for (const Path& p : paths)
+            for (size_t i = 0; i < strings.size(); ++i) add(p, EditTarget::Hole, EditOperation::Set, {});
+        return;
+    }
+    if (strings.empty() || strings.size() % 3 != 0)
+        r.fail(tag + "operations come as 'op P value' or 'op P sharpness' triples, got " + std::to_string(strings.size()) + " string(s)");
+    struct Operation {
+        EditOperation op;
+        EditTarget target;
+        size_t width;
+    };
+    std::vector<Operation> ops;
+    size_t stride = 0;
+    for (size_t j = 0; j < strings.size(); j += 3) {
+        const std::string_view op = strings[j], variable = strings[j + 1], kind = strings[j + 2];
+        Operation o{};
+        if (op == "set") o.op = EditOperation::Set;
+        else if (op == "add") o.op = EditOperation::Add;
+        else if (op == "subtract") o.op = EditOperation::Subtract;
+        else r.fail(tag + "operation '" + std::string(op) + "' is not set, add or subtract");
+        if (variable != "P") r.fail(tag + "variable '" + std::string(variable) + "' is not supported (only P, the position, is)");
+        if (kind == "sharpness") o.target = name == "edgeedit" ? EditTarget::EdgeSharpness : EditTarget::VertexSharpness;
+        else if (kind == "value" && name == "vertexedit") o.target = EditTarget::Position;
+        else r.fail(tag + "'" + std::string(kind) + "' is not " + (name == "vertexedit" ? "value or sharpness" : "sharpness"));
+        o.width = o.target == EditTarget::Position ? 3 : 1;
+        stride += o.width;
+        ops.push_back(o);
+    }
+    // Hbr's reader takes `stride` floats per path and ignores any after them (OpenSubdiv's
+    // catmark_square_hedit shapes give 6 per path for one `add P value`); so does this one,
+    // and says so.
+    if (reals.size() < stride * paths.size())
+        r.fail(tag + std::to_string(reals.size()) + " float(s) for " + std::to_string(paths.size()) + " path(s) of " +
+               std::to_string(stride) + " value(s) each");
+    if (reals.size() > stride * paths.size())
+        notes.push_back(tag + "at " + r.name() + ":" + std::to_string(r.line_number()) + " gives " +
+                        std::to_string(reals.size()) + " floats for " + std::to_string(paths.size()) + " path(s) of " +
+                        std::to_string(stride) + " value(s); the first " + std::to_string(stride * paths.size()) +
+                        " are read, as Hbr's reader reads them");
+    size_t offset = 0;
+    for (const Operation& o : ops) {
+        for (size_t p = 0; p < paths.size(); ++p) {
+            std::array<double, 3> value{};
+            for (size_t i = 0; i < o.width; ++i) value[i] = reals[offset + p * stride + i];
+            if (o.target != EditTarget::Position && value[0] < 0)
+                r.fail(tag + "sharpness " + std::to_string(value[0]) + " is negative");
+            add(paths[p], o.target, o.op, value);
+        }
+        offset += o.width;
+    }
+}
+
 /// Reads the arguments of a tag line after its name, `t NAME nint/nfloat/nstring ints floats
 /// strings` (the shape-file tag format of OpenSubdiv's regression suite), and stores the
 /// crease, corner, hole, creasemethod, interpolateboundary, smoothtriangles and
@@ -109,6 +209,10 @@ bool read_tag(io_detail::LineReader& r, std::string_view name, CreaseTags& tags,
             r.fail("tag 'facevaryinginterpolateboundary': expects one integer, 0 (none), 1 (corners-only), 2 "
                    "(corners-plus1), 3 (corners-plus2), 4 (boundaries) or 5 (all)");
         tags.face_varying = *rule;
+        return true;
+    }
+    if (name == "vertexedit" || name == "edgeedit" || name == "faceedit") {
+        read_hierarchical_edits(r, name, ints, reals, strings, tags.edits, notes);
         return true;
     }
     if (name == "facevaryingpropagatecorners") {
@@ -262,6 +366,11 @@ PolyMesh read_obj(std::istream& in, const std::string& name) {
                                                         " out of range: the file has " + std::to_string(nv) +
                                                         " vertices");
     check_tag_indices(r, mesh);
+    for (const HierarchicalEdit& e : mesh.creases.edits) {
+        const std::string problem = hierarchical_edit_problem(
+            e, mesh.num_faces(), e.face >= 0 && e.face < mesh.num_faces() ? mesh.face_size(e.face) : 0);
+        if (!problem.empty()) r.fail_at(e.line, "hierarchical edit: " + problem);
+    }
     mesh.creases.holes = checked_holes(r, holes, mesh.num_faces());
     if (!any_color) mesh.colors.clear();
     if (texture_corners) {
@@ -370,6 +479,35 @@ void write_obj(std::ostream& out, const PolyMesh& mesh, std::span<const Vec3> no
         for (int f : mesh.creases.holes) {
             buf += ' ';
             append_int(buf, f);
+        }
+        buf += '\n';
+    }
+    // Hierarchical edits, one per line: `t vertexedit`/`t edgeedit`/`t faceedit` with one path.
+    for (const HierarchicalEdit& e : mesh.creases.edits) {
+        const bool hole = e.target == EditTarget::Hole, position = e.target == EditTarget::Position;
+        const long length = 1 + e.level() + (hole ? 0 : 1);
+        buf += e.target == EditTarget::EdgeSharpness ? "t edgeedit " : hole ? "t faceedit " : "t vertexedit ";
+        append_int(buf, length + 1);
+        buf += hole ? "/0/1 " : position ? "/3/3 " : "/1/3 ";
+        append_int(buf, length);
+        buf += ' ';
+        append_int(buf, e.face);
+        for (int c : e.children) {
+            buf += ' ';
+            append_int(buf, c);
+        }
+        if (!hole) {
+            buf += ' ';
+            append_int(buf, e.element);
+            for (int i = 0; i < (position ? 3 : 1); ++i) {
+                buf += ' ';
+                append_real(buf, e.value[static_cast<size_t>(i)]);
+            }
+            buf += ' ';
+            buf += to_string(e.op);
+            buf += position ? " P value" : " P sharpness";
+        } else {
+            buf += " hole";
         }
         buf += '\n';
     }

@@ -6,6 +6,7 @@
 
 #include "crossdiv/error.h"
 #include "crossdiv/subdiv/crease_level.h"
+#include "crossdiv/subdiv/hierarchical_edit_walk.h"
 #include "crossdiv/subdiv/hole_faces.h"
 #include "crossdiv/subdiv/nonmanifold.h"
 #include "level_loop.h"
@@ -25,6 +26,7 @@ void set_smooth_mask(VertexPointMask& m, int valence, CatmullClarkVertexRule rul
 }  // namespace
 
 RefinementStep catmull_clark_step(const PolyMesh& mesh, const PolyConnectivity& conn, const CatmullClarkOptions& options) {
+    detail::require_no_hierarchical_edits(mesh, "a single Catmull-Clark step");
     const int nv = mesh.num_vertices(), nf = mesh.num_faces(), ne = conn.num_edges(), nc = conn.num_corners();
     if (static_cast<long long>(nv) + nf + ne > INT_MAX || 4LL * nc > INT_MAX)
         throw InputError("the next Catmull-Clark level would have " + std::to_string(nc) +
@@ -129,7 +131,32 @@ RefinementStep catmull_clark_step(const PolyMesh& mesh, const PolyConnectivity& 
     return step;
 }
 
+std::vector<PolyMesh> catmull_clark_levels(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels) {
+    if (levels < 0) throw InputError("number of levels must be >= 0, got " + std::to_string(levels));
+    std::vector<PolyMesh> out;
+    out.reserve(static_cast<size_t>(levels) + 1);
+    HierarchicalEditWalk walk(mesh);
+    if (!walk.empty() && !mesh.corner_edges.empty())
+        throw InputError("hierarchical edits are applied on a manifold refinement only; this level's edges are stated per corner");
+    PolyMesh current = mesh;
+    current.creases.edits.clear();  // the walk applies them, level by level
+    walk.apply(current, 0);
+    out.push_back(current);
+    for (int l = 0; l < levels; ++l) {
+        PolyMesh next = walk.empty() ? catmull_clark_subdivide(current, options, 1)
+                                     : detail::refine_levels(current, 1, [&](const PolyMesh& m, const PolyConnectivity& conn, int) {
+                                           return catmull_clark_step(m, conn, options);
+                                       });
+        walk.descend(current, l);
+        walk.apply(next, l + 1);
+        out.push_back(next);
+        current = std::move(next);
+    }
+    return out;
+}
+
 PolyMesh catmull_clark_subdivide(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels) {
+    if (!mesh.creases.edits.empty()) return std::move(catmull_clark_levels(mesh, options, levels).back());
     return detail::with_nonmanifold_rules(
         mesh, options.nonmanifold,
         [&] {

@@ -60,6 +60,16 @@ inline void require_triangles(const PolyMesh& mesh, const char* scheme) {
                              " corners; " + scheme + " refines triangles only");
 }
 
+/// @throws InputError for a mesh with hierarchical edits, which only catmull_clark_levels
+///         applies (a step, or another scheme, would drop them: a silent wrong answer).
+inline void require_no_hierarchical_edits(const PolyMesh& mesh, const char* what) {
+    if (!mesh.creases.edits.empty())
+        throw InputError((mesh.source.file.empty() ? std::string("the mesh") : mesh.source.file) + " has " +
+                         std::to_string(mesh.creases.edits.size()) + " hierarchical edit(s) (the first: " +
+                         describe(mesh.creases.edits.front()) + "); " + what +
+                         " does not apply them (core applies them under Catmull-Clark, as Hbr does)");
+}
+
 /// @throws InputError for a mesh with crease, corner or hole tags, for the schemes without
 ///         those rules (sqrt3, Doo-Sabin, the Butterflies): dropping the tags would be a silent
 ///         wrong answer.

@@ -28,6 +28,7 @@ void set_smooth_mask(VertexPointMask& m, LoopWeights weights, int valence) {
 }  // namespace
 
 RefinementStep loop_step(const PolyMesh& mesh, const PolyConnectivity& conn, const LoopOptions& options) {
+    detail::require_no_hierarchical_edits(mesh, "Loop subdivision");
     detail::require_triangles(mesh, "Loop subdivision");
     // The sharp rules (crease_mask.h) blend with the symmetric edge mask of Loop and Warren;
     // no rule is defined for a crease next to the tuned families' asymmetric one.
@@ -119,6 +120,7 @@ void check_loop_input(const TriMesh& mesh, const LoopOptions& options) {
 }
 
 PolyMesh loop_subdivide(const PolyMesh& mesh, const LoopOptions& options, int levels) {
+    detail::require_no_hierarchical_edits(mesh, "Loop subdivision");
     return detail::with_nonmanifold_rules(
         mesh, options.nonmanifold,
         [&] {

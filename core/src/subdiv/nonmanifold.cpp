@@ -266,6 +266,7 @@ bool add_sharp_vertex_row(StencilTable& st, const GeneralTopology& t, int v) {
 }  // namespace
 
 RefinementStep loop_nonmanifold_step(const PolyMesh& mesh, const LoopOptions& options) {
+    detail::require_no_hierarchical_edits(mesh, "Loop subdivision");
     for (int f = 0; f < mesh.num_faces(); ++f)
         if (mesh.face_size(f) != 3)
             throw InputError(mesh.source.describe_face(f) + ": has " + std::to_string(mesh.face_size(f)) +
@@ -346,6 +347,7 @@ void add_quads(const GeneralTopology& t, int nv, int nf, RefinementStep& step) {
 }
 
 RefinementStep catmull_clark_nonmanifold_step(const PolyMesh& mesh, const CatmullClarkOptions& options) {
+    detail::require_no_hierarchical_edits(mesh, "the non-manifold Catmull-Clark refinement");
     require_untagged(mesh);
     const int nv = mesh.num_vertices(), nf = mesh.num_faces();
     const int nc = static_cast<int>(mesh.face_vertices.size());

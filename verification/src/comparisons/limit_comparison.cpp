@@ -27,6 +27,8 @@ using detail::sci;
 adapters::LevelTrace reference_limit(const PolyMesh& input, const RefineRequest& request) {
     const std::vector<const Implementation*> refs = select_references(&Capabilities::limit_positions, {}, "limit");
     if (refs.empty()) throw adapters::Rejected("OpenSubdiv is not built into this binary");
+    if (std::string refusal = hierarchical_edits_refusal(*refs.front(), request.scheme, input); !refusal.empty())
+        throw adapters::Rejected(refusal);
     const adapters::LimitPoints l = refs.front()->limit_points(input, request);
     PolyMesh positions, normals;
     positions.positions = l.position;

@@ -454,8 +454,11 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
     out.core_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     out.core_error = requested.error;
     if (fvar && requested.error.empty() && requested.last().face_varying.empty())
-        out.notes.push_back("core refined the positions only: its face-varying refinement takes a manifold mesh, and " +
-                            name + " is not one (texture coordinates not compared)");
+        out.notes.push_back(input.creases.edits.empty()
+                                ? "core refined the positions only: its face-varying refinement takes a manifold mesh, and " +
+                                      name + " is not one (texture coordinates not compared)"
+                                : "core refined the positions only: it applies hierarchical edits to positions and does not "
+                                  "refine the texture coordinates of an edited mesh (not compared)");
 
     // The implementation under test: core with the requested rule, or the subject in core's
     // numbering with the rule it is measured to follow (none when no named rule fits).

@@ -36,7 +36,7 @@ Capabilities core_capabilities() {
         for (DooSabinBoundary b : {DooSabinBoundary::ChaikinBoundary, DooSabinBoundary::DropBorderFaces})
             doo_sabin.push_back(doo_sabin_rule(b, w));
     c.schemes = {with_face_varying(supports(Scheme::Loop, loop, true)),
-                 with_face_varying(supports(Scheme::CatmullClark, catmull_clark, true)),
+                 with_hierarchical_edits(with_face_varying(supports(Scheme::CatmullClark, catmull_clark, true))),
                  supports(Scheme::DooSabin, doo_sabin),
                  supports(Scheme::Sqrt3, {sqrt3_rule(Sqrt3Parity::CountFromInput), sqrt3_rule(Sqrt3Parity::RestartEachLevel)}),
                  supports(Scheme::Butterfly, {butterfly_rule(ButterflyWings::Reflected), butterfly_rule(ButterflyWings::OppositeVertex)}),
@@ -85,6 +85,9 @@ FaceVaryingOptions face_varying_options(const RefineRequest& r) {
 std::optional<adapters::LevelTrace> face_varying_levels(const PolyMesh& mesh, const RefineRequest& r,
                                                         std::vector<FaceVaryingSemiSharp>* semi_tags = nullptr) {
     if (r.scheme == Scheme::Bilinear && !mesh.creases.empty()) return std::nullopt;  // refused as without channels
+    // Hierarchical edits are applied to the positions alone (catmull_clark_levels); the
+    // channels of an edited mesh are not refined.
+    if (!mesh.creases.edits.empty()) return std::nullopt;
     const FaceVaryingScheme scheme = face_varying_scheme(r.scheme);
     const FaceVaryingOptions options = face_varying_options(r);
     try {
@@ -136,6 +139,11 @@ Refinement refinement(const PolyMesh& mesh, const RefineRequest& r, bool births)
             }
             trace.push_back(std::move(fine));
         }
+        return out;
+    }
+    // Hierarchical edits follow their paths from the input's faces: all levels in one call.
+    if (r.scheme == Scheme::CatmullClark && !mesh.creases.edits.empty()) {
+        out.levels = catmull_clark_levels(mesh, r.rule.catmull_clark, r.levels);
         return out;
     }
     // sqrt3 counts its boundary generations from the input: each level is its own call

@@ -42,7 +42,7 @@ class Hbr final : public Implementation {
 public:
     Hbr()
         : Implementation("hbr", hb::version(), ImplementationKind::Library,
-                         {.schemes = {supports(Scheme::Loop, loop_rules(), true), supports(Scheme::CatmullClark, catmull_clark_rules(), true),
+                         {.schemes = {supports(Scheme::Loop, loop_rules(), true), with_hierarchical_edits(supports(Scheme::CatmullClark, catmull_clark_rules(), true)),
                                       supports(Scheme::Bilinear, {SchemeRule{}})},
                           .precision = Precision::Float}) {}
 

@@ -147,8 +147,18 @@ PrincipalCurvatures Implementation::curvatures(const TriMesh&) const { lacks("cu
 double Implementation::hausdorff_distance(const TriMesh&, const TriMesh&) const { lacks("Hausdorff distance"); }
 TriMesh Implementation::simplify(const TriMesh&, int) const { lacks("mesh simplification"); }
 
+std::string hierarchical_edits_refusal(const Implementation& impl, Scheme scheme, const PolyMesh& mesh) {
+    if (mesh.creases.edits.empty()) return "";
+    const SchemeSupport* s = impl.support(scheme);
+    if (s && s->hierarchical_edits) return "";
+    return impl.name() + " has no hierarchical edits (" + std::to_string(mesh.creases.edits.size()) +
+           " here, the first: " + describe(mesh.creases.edits.front()) + "); it would refine the mesh without them";
+}
+
 IsolatedTrace refine_isolated(const Implementation& impl, const PolyMesh& mesh, const RefineRequest& request,
                               double timeout_seconds, bool isolate, int heap_fill) {
+    if (std::string refusal = hierarchical_edits_refusal(impl, request.scheme, mesh); !refusal.empty())
+        return {RunOutcome{RunStatus::Rejected, std::move(refusal)}, std::nullopt};
     IsolatedTrace r = run_isolated([&] { return impl.refine(mesh, request); }, timeout_seconds,
                                    isolate && !impl.confines_itself(), heap_fill);
     if (r.outcome.status != RunStatus::Ok || !r.trace) return r;

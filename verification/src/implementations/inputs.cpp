@@ -87,8 +87,10 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& specs) {
             for (const auto& f : datasets::meshedit_mesh_files()) out.push_back(f);
         } else if (s == "cgal:all") {
             for (const auto& f : datasets::cgal_mesh_files()) out.push_back(f);
+        } else if (s == "opensubdiv:all") {
+            for (const auto& f : datasets::opensubdiv_shape_files()) out.push_back(f);
         } else if (s.ends_with(":all")) {
-            throw InputError("unknown collection '" + s + "' (known: bundled:all, polygons:all, creases:all, edgecases:all, polygon-edgecases:all, uv-edgecases:all, uv-edgecases-tri:all, course:all, meshedit:all, cgal:all)");
+            throw InputError("unknown collection '" + s + "' (known: bundled:all, polygons:all, creases:all, edgecases:all, polygon-edgecases:all, uv-edgecases:all, uv-edgecases-tri:all, course:all, meshedit:all, cgal:all, opensubdiv:all)");
         } else {
             out.push_back(s);
         }
@@ -119,7 +121,7 @@ PolyMesh read_input(const std::string& spec) {
         throw InputError("'" + spec + "' is neither a file nor a known input name (known: bundled:NAME, " +
                          "edgecase:NAME, uv:LAYOUT:INPUT, dir:FOLDER, and the collections bundled:all, polygons:all, creases:all, edgecases:all, " +
                          "polygon-edgecases:all, uv-edgecases:all, uv-edgecases-tri:all, " +
-                         "course:all, meshedit:all, cgal:all)");
+                         "course:all, meshedit:all, cgal:all, opensubdiv:all)");
     return read_mesh(spec);
 }
 

@@ -27,6 +27,12 @@ inline SchemeSupport supports(Scheme scheme, std::vector<SchemeRule> rules, bool
     return {scheme, std::move(rules), creases, max_valence, std::move(valence_table), false};
 }
 
+/// `s` with hierarchical edits (Catmull-Clark in core and Hbr).
+inline SchemeSupport with_hierarchical_edits(SchemeSupport s) {
+    s.hierarchical_edits = true;
+    return s;
+}
+
 /// `s` with face-varying channels refined too.
 inline SchemeSupport with_face_varying(SchemeSupport s) {
     s.face_varying = true;

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "crossdiv/mesh/face_varying_rule.h"
+#include "crossdiv/mesh/hierarchical_edit.h"
 #include "crossdiv/named_variant.h"
 
 namespace crossdiv {
@@ -113,16 +114,23 @@ struct CreaseTags {
     std::optional<bool> smooth_triangles;
     /// The face-varying rule a file asks for (`t facevaryinginterpolateboundary 1/0/0 k`).
     std::optional<FaceVaryingRule> face_varying;
+    /// Hierarchical edits (`t vertexedit`, `t edgeedit`, `t faceedit`), in file order: changes
+    /// to refined levels, which only a refinement that applies them may take (core's
+    /// Catmull-Clark, Hbr); every other refinement refuses a mesh that has them.
+    std::vector<HierarchicalEdit> edits;
 
-    /// No sharpness and no holes: nothing that needs the rules of a tagged mesh. (The
-    /// options above change a rule, which the commands resolve, not the mesh's refinement.)
-    bool empty() const { return edges.empty() && vertices.empty() && holes.empty(); }
-    /// "2 crease and 1 corner tag(s)", or with holes "2 crease, 1 corner and 3 hole tag(s)".
+    /// No sharpness, no holes and no hierarchical edits: nothing that needs the rules of a
+    /// tagged mesh. (The options above change a rule, which the commands resolve, not the
+    /// mesh's refinement.)
+    bool empty() const { return edges.empty() && vertices.empty() && holes.empty() && edits.empty(); }
+    /// "2 crease and 1 corner tag(s)", with holes "2 crease, 1 corner and 3 hole tag(s)", and
+    /// with edits "..., and 4 hierarchical edit(s)".
     std::string describe() const {
         const std::string sharp = std::to_string(edges.size()) + " crease";
         const std::string corner = std::to_string(vertices.size()) + " corner";
-        if (holes.empty()) return sharp + " and " + corner + " tag(s)";
-        return sharp + ", " + corner + " and " + std::to_string(holes.size()) + " hole tag(s)";
+        const std::string tags = holes.empty() ? sharp + " and " + corner + " tag(s)"
+                                               : sharp + ", " + corner + " and " + std::to_string(holes.size()) + " hole tag(s)";
+        return edits.empty() ? tags : tags + ", and " + std::to_string(edits.size()) + " hierarchical edit(s)";
     }
 };
 

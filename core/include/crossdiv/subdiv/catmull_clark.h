@@ -20,10 +20,17 @@ namespace crossdiv {
 /// One Catmull-Clark level of `mesh` (whose connectivity is `conn`) as data.
 RefinementStep catmull_clark_step(const PolyMesh& mesh, const PolyConnectivity& conn, const CatmullClarkOptions& options);
 
-/// `levels` levels of Catmull-Clark subdivision (colors refined alike).
+/// `levels` levels of Catmull-Clark subdivision (colors refined alike), with the mesh's
+/// hierarchical edits applied (catmull_clark_levels).
 /// @throws InputError naming the element for a mesh build_poly_connectivity refuses, or a
 ///         negative level count.
 PolyMesh catmull_clark_subdivide(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels);
+
+/// Levels 0..`levels` of catmull_clark_subdivide, the hierarchical edits of `mesh` applied
+/// to each (hierarchical_edit_walk.h; level 0 is `mesh` with its level-0 edits), the edits
+/// themselves not carried into the levels.
+/// @throws InputError as catmull_clark_subdivide; for an edit whose path leaves the mesh.
+std::vector<PolyMesh> catmull_clark_levels(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels);
 
 /// The one-level subdivision matrix S with V' = S V, rows in the refined vertex order.
 /// @throws InputError as catmull_clark_subdivide.

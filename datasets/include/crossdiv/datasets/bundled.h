@@ -53,6 +53,11 @@ PolyMesh bundled_mesh(const std::string& name);
 /// sorted), or empty when they are not installed.
 std::vector<std::string> cgal_mesh_files();
 
+/// OpenSubdiv's regression shapes with hierarchical edits (catmark_square_hedit0..4), written
+/// out of Debian's opensubdiv-tools by datasets/install_opensubdiv_shapes.py (paths to .obj
+/// files, sorted), or empty when they are not installed.
+std::vector<std::string> opensubdiv_shape_files();
+
 /// The course meshes in ../shared/data/c3100/objs when that folder exists, else empty.
 std::vector<std::string> course_mesh_files();
 

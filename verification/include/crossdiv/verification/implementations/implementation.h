@@ -53,6 +53,9 @@ struct SchemeSupport {
     std::string valence_table;
     /// Refines face-varying channels under OpenSubdiv's six rules (RefineRequest::face_varying).
     bool face_varying = false;
+    /// Applies hierarchical edits (mesh/hierarchical_edit.h); without, a mesh with them is
+    /// refused before it is run (every library would drop them silently).
+    bool hierarchical_edits = false;
 };
 
 /// What an implementation can do, declared.
@@ -207,6 +210,11 @@ private:
     ImplementationKind kind_;
     Capabilities capabilities_;
 };
+
+/// Why `impl` is not run on `mesh` under `scheme`: the mesh has hierarchical edits and the
+/// implementation does not declare them (SchemeSupport::hierarchical_edits), so it would drop
+/// them and refine another surface. "" when it may run.
+std::string hierarchical_edits_refusal(const Implementation& impl, Scheme scheme, const PolyMesh& mesh);
 
 /// `impl.refine(mesh, request)` in a child process with a time limit and its heap filled with
 /// `heap_fill` (run_isolated), so that a crash, a hang or an exception is recorded as the run's
