@@ -345,6 +345,29 @@ TEST(Butterfly, APoleOfLargeValenceTakesTheKPointStencilThroughItsFourierSums) {
     }
 }
 
+TEST(Butterfly, OtherFaceWingsTakeVtksBoundaryChoices) {
+    // The four-triangle pyramid: apex 0 = (0,0,1), interior, 4 faces; corners 1..4 = (1,0,0),
+    // (0,1,0), (-1,0,0), (0,-1,0) on the boundary, 2 faces each. The spoke 0 -> 1:
+    // OpenMesh's choice (reflected wings) reads the apex's K-point stencil alone (the corner
+    // is on the boundary): 3/4 apex + 3/8 c1 - 1/8 c3 = (1/2, 0, 3/4).
+    // VTK's (other-face wings): neither end has 6 faces, so half of each end's stencil; the
+    // corner's walk meets the boundary, so its half is the eight-point stencil, whose wings
+    // beyond the boundary edges (1,2) and (4,1) are the other triangle's apex (c4, c2):
+    // 1/2 (apex + c1) + 1/8 (c2 + c4) - 1/16 (c3 + c4 + c3 + c2) = (5/8, 0, 1/2).
+    // Half each: (9/16, 0, 5/8).
+    PolyMesh m;
+    m.positions = {Vec3(0, 0, 1), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(-1, 0, 0), Vec3(0, -1, 0)};
+    for (int k = 0; k < 4; ++k) m.add_face({0, 1 + k, 1 + (k + 1) % 4});
+    const PolyConnectivity c = build_poly_connectivity(m);
+    const int spoke = 5 + c.corner_edge[0];  // corner 0 of face 0 runs 0 -> 1
+    expect_near(butterfly_subdivide(m, ButterflyVariant::Modified, 1).positions[spoke], Vec3(0.5, 0, 0.75));
+    expect_near(butterfly_subdivide(m, ButterflyVariant::Modified, 1, ButterflyWings::OtherFaceVertex).positions[spoke],
+                Vec3(9.0 / 16, 0, 5.0 / 8));
+    // The classic scheme takes the eight-point stencil everywhere: with these wings, (5/8, 0, 1/2).
+    expect_near(butterfly_subdivide(m, ButterflyVariant::Classic, 1, ButterflyWings::OtherFaceVertex).positions[spoke],
+                Vec3(5.0 / 8, 0, 0.5));
+}
+
 TEST(Butterfly, BoundaryEdgeIsTheFourPointRule) {
     // Square split into two triangles: the boundary loop is 0, 1, 2, 3. Edge 0 -> 1 gets
     // 9/16 (v0 + v1) - 1/16 (v3 + v2) = (1/2, -1/8, 0).

@@ -70,13 +70,14 @@ struct SchemeArgs {
                        "midpoint-average (OpenMesh's); doo-sabin: chaikin-boundary (default) or drop-border-faces "
                        "(CGAL's); sqrt3, when the boundary is refined: count-from-input (default) or "
                        "restart-each-level (a library called once per level); the Butterflies, for a wing point "
-                       "beyond the boundary: reflected-wings (default) or opposite-vertex-wings (MeshLab's); bilinear: linear "
+                       "beyond the boundary: reflected-wings (default), opposite-vertex-wings (MeshLab's) or other-face-wings "
+                       "(VTK's, with its other boundary choices); bilinear: linear "
                        "(its one rule); loop and "
                        "catmull-clark also none (OpenSubdiv's VTX_BOUNDARY_NONE: edge-only, the faces at the boundary "
                        "not emitted). Default: the file's 't interpolateboundary' tag, else the scheme's default")
             ->check(CLI::IsMember({"edge-only", "edge-and-corner", "midpoint-average", "chaikin-boundary",
                                    "drop-border-faces", "count-from-input", "restart-each-level", "reflected-wings",
-                                   "opposite-vertex-wings", "linear", "none"}));
+                                   "opposite-vertex-wings", "other-face-wings", "linear", "none"}));
         app.add_option("--levels", levels, "Number of subdivision levels")->check(CLI::Range(0, 12))->capture_default_str();
         app.add_option("--crease-method", creasing,
                        "Decay of semi-sharp crease tags (loop, catmull-clark): uniform (OpenSubdiv's default) or "

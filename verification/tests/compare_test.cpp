@@ -79,6 +79,34 @@ TEST(Compare, VtkIsLoopInTheFloatTierWithoutTheCornerRule) {
     EXPECT_NE(rejected.outcome.message.find("Dataset is non-manifold"), std::string::npos) << rejected.outcome.message;
 }
 
+// VTK's vtkButterflySubdivisionFilter: the modified Butterfly with VTK's boundary choices
+// (core's other-face-wings), in the float tier. Asked for OpenMesh's choices it differs by the
+// wing rule; on a boundary loop of three edges it takes another outer point for the four-point
+// rule than the loop's third vertex, and only those edge points differ (short-boundary-loop).
+TEST(Compare, VtksButterflyIsTheModifiedButterflyWithItsOwnBoundaryChoices) {
+    CROSSDIV_REQUIRE_LIBRARIES("vtk");
+    auto run = [](const PolyMesh& mesh, ButterflyWings wings) {
+        RefinementRequest req;
+        req.scheme = Scheme::ModifiedButterfly;
+        req.rule.butterfly_wings = wings;
+        req.levels = 2;
+        req.references = {"vtk"};
+        const RefinementComparison c = compare_refinement(mesh, "mesh", req);
+        EXPECT_EQ(c.runs.size(), 1u);
+        return c.runs.at(0);
+    };
+    for (const char* name : {"icosahedron", "open-patch", "fan-5", "torus"}) {
+        const auto r = run(datasets::bundled_mesh(name), ButterflyWings::OtherFaceVertex);
+        EXPECT_EQ(r.verdict, Verdict::Agree) << name << ": " << r.explanation;
+    }
+    EXPECT_EQ(run(datasets::bundled_mesh("open-patch"), ButterflyWings::Reflected).divergence_class, DivergenceClass::WingRule);
+    for (const char* name : {"single-triangle", "holes"}) {
+        const auto r = run(datasets::edge_case(name).mesh, ButterflyWings::OtherFaceVertex);
+        EXPECT_EQ(r.divergence_class, DivergenceClass::ShortBoundaryLoop) << name << ": " << r.explanation;
+        EXPECT_NE(r.explanation.find("boundary edges on boundary loops of three edges differ"), std::string::npos) << r.explanation;
+    }
+}
+
 // OpenSubdiv's Hbr, the second implementation OpenSubdiv ships: float weights, so the float
 // tier. It agrees with core under each rule it has; it splits a bowtie's centre into one vertex
 // per fan (non-manifold-handling, measured against core on the split mesh); it refuses what its

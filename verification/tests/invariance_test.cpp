@@ -18,6 +18,7 @@
 #include "crossdiv/subdiv/bilinear.h"
 #include "crossdiv/verification/comparisons/input_transformation.h"
 #include "crossdiv/verification/comparisons/invariance.h"
+#include "crossdiv/verification/comparisons/shrink.h"
 #include "crossdiv/verification/harness/coincident_vertices.h"
 #include "crossdiv/verification/implementations/callback_implementation.h"
 #include "crossdiv/verification/implementations/registry.h"
@@ -515,6 +516,38 @@ TEST(InvarianceCause, AReferencesFindingIsClassedByWhatRemovesIt) {
         EXPECT_EQ(c.cls, e.cls) << e.impl << " on " << e.mesh << ": " << c.why;
         EXPECT_NE(c.why.find(e.why), std::string::npos) << c.why;
     }
+}
+
+// VTK's Butterfly: on a lone triangle and on the bowtie of two, a loop of three boundary edges
+// whose four-point rule it gives an outer point that does not move with the mesh.
+TEST(InvarianceCause, VtksButterflyOnABoundaryLoopOfThreeEdgesIsAShortBoundaryLoop) {
+    CROSSDIV_REQUIRE_LIBRARIES("vtk");
+    RefineRequest vtk{Scheme::ModifiedButterfly, {}, 2};
+    vtk.rule.butterfly_wings = ButterflyWings::OtherFaceVertex;
+    for (const char* mesh : {"single-triangle", "bowtie", "holes"}) {
+        const InvarianceCause c = cause_of(find_implementation("vtk"), datasets::edge_case(mesh).mesh, vtk, InputTransformation::Translate);
+        EXPECT_EQ(c.cls, DivergenceClass::ShortBoundaryLoop) << mesh << ": " << c.why;
+        EXPECT_NE(c.why.find("boundary loop(s) of three edges are capped"), std::string::npos) << c.why;
+    }
+}
+
+// Hierarchical edits name faces, corners and positions of the input as written: a
+// transformation would carry them elsewhere, so only the same input run again is compared; a
+// submesh (shrinking, the cause tests) keeps the edits of its faces, renumbered.
+TEST(Invariance, AMeshWithHierarchicalEditsIsComparedWithItselfOnly) {
+    PolyMesh m = datasets::bundled_mesh("quad-grid");
+    m.creases.edits = {HierarchicalEdit{EditTarget::Position, EditOperation::Add, 1, {2}, 0, {0, 0, 1}, 0},
+                       HierarchicalEdit{EditTarget::Hole, EditOperation::Set, 0, {1}, -1, {}, 0}};
+    const InvarianceReport r = check_invariance(core_implementation(), m, {Scheme::CatmullClark, {}, 2},
+                                                {InputTransformation::ShuffleFaces, InputTransformation::Repeat}, 1, 1e-12, 60, false);
+    ASSERT_EQ(r.checks.size(), 2u);
+    EXPECT_EQ(r.checks[0].result, InvarianceResult::NotCompared);
+    EXPECT_NE(r.checks[0].explanation.find("2 hierarchical edit(s)"), std::string::npos) << r.checks[0].explanation;
+    EXPECT_EQ(r.checks[1].result, InvarianceResult::Invariant) << r.checks[1].explanation;
+    const PolyMesh part = submesh(m, {1, 2});
+    ASSERT_EQ(part.creases.edits.size(), 1u);  // face 0's hole goes with face 0
+    EXPECT_EQ(part.creases.edits[0].face, 0);  // face 1 is the part's face 0
+    EXPECT_EQ(part.creases.edits[0].children, std::vector<int>{2});
 }
 
 TEST(InvarianceCause, NothingNamedExplainsAPlantedCornerBug) {

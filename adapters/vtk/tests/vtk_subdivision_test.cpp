@@ -59,6 +59,18 @@ TEST(VtkSubdivision, ButterflyKeepsTheOldPointsAndTakesTheFourPointRuleOnTheBoun
     EXPECT_TRUE(has_point(t[1], Vec3(-0.625, -0.625, 0)));
 }
 
+// Its boundary choices (core's other-face-wings): the spoke apex -> (1,0,0) joins two vertices
+// of other than 6 faces, so it is half the apex's K-point stencil, (1/2, 0, 3/4), and half the
+// eight-point stencil the corner stands for (its walk meets the boundary), with the wings
+// beyond the boundary the other triangle's apex: (5/8, 0, 1/2). Together (9/16, 0, 5/8),
+// where OpenMesh's choices give (1/2, 0, 3/4).
+TEST(VtkSubdivision, ButterflyAveragesTheApexStencilWithTheEightPointOneOfABoundaryEnd) {
+    const LevelTrace t = subdivide(pyramid(), Filter::Butterfly, 1);
+    EXPECT_TRUE(has_point(t[1], Vec3(0.5625, 0, 0.625)));
+    EXPECT_TRUE(has_point(t[1], Vec3(0, 0.5625, 0.625)));
+    EXPECT_FALSE(has_point(t[1], Vec3(0.5, 0, 0.75)));
+}
+
 // Every new point the midpoint of its edge.
 TEST(VtkSubdivision, LinearSplitsAtTheEdgeMidpoints) {
     const LevelTrace t = subdivide(pyramid(), Filter::Linear, 1);

@@ -2,6 +2,7 @@
 
 #include <climits>
 #include <string>
+#include <tuple>
 
 #include "crossdiv/error.h"
 #include "level_loop.h"
@@ -25,19 +26,21 @@ public:
         st_.add(conn_.boundary_neighbors(a1).after, kFourPointOuter);
     }
 
-    /// The eight-point stencil of the interior edge of corner c (a0 -> a1, twin t).
-    void eight_point(int c) {
+    /// The eight-point stencil of the interior edge of corner c (a0 -> a1, twin t), scaled.
+    void eight_point(int c, double scale = 1.0) {
         const int t = conn_.twin[c];
         const int a0 = conn_.corner_vertex[c], a1 = conn_.head(c);
-        st_.add(a0, kButterflyA);
-        st_.add(a1, kButterflyA);
-        st_.add(conn_.corner_vertex[conn_.prev[c]], kButterflyB);
-        st_.add(conn_.corner_vertex[conn_.prev[t]], kButterflyB);
-        // The wing edges of both triangles, each with the endpoint opposite it.
-        wing(conn_.next[c], a0);
-        wing(conn_.prev[c], a1);
-        wing(conn_.next[t], a1);
-        wing(conn_.prev[t], a0);
+        const int apex_c = conn_.corner_vertex[conn_.prev[c]], apex_t = conn_.corner_vertex[conn_.prev[t]];
+        st_.add(a0, scale * kButterflyA);
+        st_.add(a1, scale * kButterflyA);
+        st_.add(apex_c, scale * kButterflyB);
+        st_.add(apex_t, scale * kButterflyB);
+        // The wing edges of both triangles, each with the endpoint opposite it and the other
+        // triangle's apex.
+        wing(conn_.next[c], a0, apex_t, scale);
+        wing(conn_.prev[c], a1, apex_t, scale);
+        wing(conn_.next[t], a1, apex_c, scale);
+        wing(conn_.prev[t], a0, apex_c, scale);
     }
 
     /// Zorin's K-point stencil around endpoint v of the edge of corner c_out (v -> w), scaled.
@@ -116,22 +119,23 @@ private:
         return fourier_first_[v] = first;
     }
 
-    /// The wing point c across the edge of corner w (x -> b), -1/16; when that edge is on the
-    /// boundary, its stand-in under the wing rule: the reflection x + b - opposite, or
-    /// opposite itself, opposite being the edge's third vertex.
-    void wing(int w, int opposite) {
+    /// The wing point c across the edge of corner w (x -> b), -1/16 (scaled); when that edge
+    /// is on the boundary, its stand-in under the wing rule: the reflection x + b - opposite,
+    /// opposite itself (the edge's third vertex), or the other triangle's apex.
+    void wing(int w, int opposite, int other_apex, double scale) {
         const int t = conn_.twin[w];
         if (t >= 0) {
-            st_.add(conn_.corner_vertex[conn_.prev[t]], kButterflyC);
+            st_.add(conn_.corner_vertex[conn_.prev[t]], scale * kButterflyC);
             return;
         }
-        if (wings_ == ButterflyWings::OppositeVertex) {
-            st_.add(opposite, kButterflyC);
-            return;
+        switch (wings_) {
+            case ButterflyWings::OppositeVertex: st_.add(opposite, scale * kButterflyC); return;
+            case ButterflyWings::OtherFaceVertex: st_.add(other_apex, scale * kButterflyC); return;
+            case ButterflyWings::Reflected: break;
         }
-        st_.add(conn_.corner_vertex[w], kButterflyC);
-        st_.add(conn_.head(w), kButterflyC);
-        st_.add(opposite, -kButterflyC);
+        st_.add(conn_.corner_vertex[w], scale * kButterflyC);
+        st_.add(conn_.head(w), scale * kButterflyC);
+        st_.add(opposite, -scale * kButterflyC);
     }
 
     const PolyConnectivity& conn_;
@@ -156,14 +160,17 @@ RefinementStep butterfly_step(const PolyMesh& mesh, const PolyConnectivity& conn
     if (static_cast<long long>(nv) + ne > INT_MAX || 4LL * nf > INT_MAX)
         throw InputError("the next Butterfly level would have " + std::to_string(4LL * nf) +
                          " faces, more than 32-bit indices address; use fewer levels");
-    // Valence as OpenMesh counts it: edges at the vertex.
-    std::vector<int> valence(static_cast<size_t>(nv), 0);
+    // Valence as OpenMesh counts it: edges at the vertex (the K of the K-point stencil); VTK
+    // tells a regular vertex by its faces.
+    std::vector<int> valence(static_cast<size_t>(nv), 0), faces(static_cast<size_t>(nv), 0);
     std::vector<char> on_boundary(static_cast<size_t>(nv), 0);
     for (int v = 0; v < nv; ++v) {
         if (conn.vertex_corner[v] < 0) continue;
         on_boundary[v] = conn.is_boundary_vertex(v);
-        valence[v] = conn.fan(v).faces + on_boundary[v];
+        faces[v] = conn.fan(v).faces;
+        valence[v] = faces[v] + on_boundary[v];
     }
+    const bool vtk_choices = wings == ButterflyWings::OtherFaceVertex;
 
     RefinementStep step(nv);
     StencilTable& st = step.stencils;
@@ -180,6 +187,18 @@ RefinementStep butterfly_step(const PolyMesh& mesh, const PolyConnectivity& conn
             stencil.boundary(c);
         } else if (variant == ButterflyVariant::Classic) {
             stencil.eight_point(c);
+        } else if (vtk_choices) {
+            // vtkButterflySubdivisionFilter: both endpoints of 6 faces, the eight-point
+            // stencil; else the K-point stencil of each endpoint that has not 6 (halved when
+            // both have not), where an endpoint on the boundary gives the eight-point stencil.
+            const bool regular0 = faces[a0] == 6, regular1 = faces[a1] == 6;
+            const double scale = !regular0 && !regular1 ? 0.5 : 1.0;
+            if (regular0 && regular1) stencil.eight_point(c);
+            for (const auto& [corner, vertex, regular] : {std::tuple{t, a1, regular1}, std::tuple{c, a0, regular0}}) {
+                if (regular) continue;
+                if (on_boundary[vertex]) stencil.eight_point(c, scale);
+                else stencil.extraordinary(corner, scale);
+            }
         } else {
             const bool regular0 = valence[a0] == 6, regular1 = valence[a1] == 6;
             const bool b0 = on_boundary[a0], b1 = on_boundary[a1];

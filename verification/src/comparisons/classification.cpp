@@ -14,7 +14,7 @@ namespace crossdiv::verification {
 
 Classification classify_divergence(const DivergenceTests& tests) {
     for (const DivergenceTest* test : {&tests.isolated_vertices, &tests.rounding, &tests.reference_rule,
-                                       &tests.valence_table, &tests.nonmanifold, &tests.topology})
+                                       &tests.valence_table, &tests.short_boundary_loops, &tests.nonmanifold, &tests.topology})
         if (*test)
             if (std::optional<Classification> c = (*test)()) return *c;
     return {DivergenceClass::Unexplained, tests.unexplained ? tests.unexplained() : std::string()};

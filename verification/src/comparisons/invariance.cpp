@@ -16,6 +16,7 @@
 #include "crossdiv/verification/harness/tolerances.h"
 #include "crossdiv/mesh/disjoint_union.h"
 #include "crossdiv/mesh/mesh_checks.h"
+#include "crossdiv/mesh/poly_connectivity.h"
 #include "crossdiv/mesh/tri_mesh.h"
 #include "crossdiv/subdiv/nonmanifold.h"
 #include "crossdiv/verification/harness/coincident_vertices.h"
@@ -90,6 +91,45 @@ std::vector<int> fans_of(const PolyMesh& mesh, const VertexCorners& vc, int v, G
 /// a bowtie vertex comes apart into its fans, and the faces around a non-manifold edge get a
 /// copy of each end apiece, so that no vertex or edge of the split mesh is non-manifold where
 /// the input's were. The first fan keeps the vertex and its tags.
+/// `mesh` with each boundary loop of three edges closed by a cap of three triangles around a
+/// new vertex (beyond the loop, a mean edge length from its centroid against the loop's
+/// faces), and how many loops were; `mesh` itself when it is not a manifold the connectivity
+/// takes. A cap of one triangle would make two triangles back to back out of a lone triangle.
+PolyMesh with_short_boundary_loops_capped(const PolyMesh& mesh, int& capped) {
+    capped = 0;
+    PolyMesh out = mesh;
+    out.face_varying.clear();  // the Butterflies refine none; new faces would leave the channels short
+    PolyConnectivity conn;
+    try {
+        conn = build_poly_connectivity(mesh);
+    } catch (const InputError&) {
+        return out;
+    }
+    // The boundary half-edge leaving each boundary vertex: one per vertex on a manifold.
+    std::vector<int> next(static_cast<size_t>(mesh.num_vertices()), -1);
+    for (int c = 0; c < conn.num_corners(); ++c)
+        if (conn.twin[c] < 0) next[static_cast<size_t>(conn.corner_vertex[c])] = conn.head(c);
+    for (int a = 0; a < mesh.num_vertices(); ++a) {
+        const int b = next[static_cast<size_t>(a)];
+        if (b < 0) continue;
+        const int w = next[static_cast<size_t>(b)];
+        // Each loop a -> b -> w -> a once, from its smallest vertex.
+        if (w < 0 || next[static_cast<size_t>(w)] != a || b < a || w < a) continue;
+        const Vec3 &pa = mesh.positions[static_cast<size_t>(a)], &pb = mesh.positions[static_cast<size_t>(b)],
+                   &pw = mesh.positions[static_cast<size_t>(w)];
+        const Vec3 normal = (pb - pa).cross(pw - pa);
+        const double length = ((pb - pa).norm() + (pw - pb).norm() + (pa - pw).norm()) / 3;
+        const int apex = out.num_vertices();
+        out.positions.push_back((pa + pb + pw) / 3 - (normal.norm() > 0 ? normal.normalized() : Vec3::UnitZ()) * length);
+        if (!out.colors.empty()) out.colors.push_back(Vec3::Zero());
+        out.add_face({b, a, apex});
+        out.add_face({w, b, apex});
+        out.add_face({a, w, apex});
+        ++capped;
+    }
+    return out;
+}
+
 PolyMesh with_fans_split(const PolyMesh& mesh, const std::vector<int>& split) {
     PolyMesh out = mesh;
     const VertexCorners vc(mesh);
@@ -206,6 +246,14 @@ SecondRun run_second(const Implementation& impl, const PolyMesh& input, const Re
                      std::uint64_t seed, double timeout_seconds, bool isolate) {
     SecondRun out;
     out.transformed = transform_input(input, t, seed);
+    // Hierarchical edits name faces, corners and positions of the input as written; no
+    // transformation here carries them, so only the same input run again is compared.
+    if (!input.creases.edits.empty() && t != InputTransformation::Repeat) {
+        out.not_compared = "the input has " + std::to_string(input.creases.edits.size()) +
+                           " hierarchical edit(s), whose paths and values name the input as written: the transformed input "
+                           "would carry them to other faces";
+        return out;
+    }
     if (t == InputTransformation::SplitComponents) {
         const std::vector<PolyMesh> parts = connected_components(input);
         if (parts.size() < 2) {
@@ -516,6 +564,17 @@ InvarianceCause explain_not_invariant(const Implementation& impl, const PolyMesh
                 "invariant once its " + std::to_string(nonmanifold.size()) +
                     " non-manifold vertices are split into their fans (vertex " + std::to_string(nonmanifold[0]) +
                     (nonmanifold.size() > 1 ? ", ...)" : ")")};
+    // The Butterflies' four-point rule on a boundary loop of three edges, whose two outer
+    // points are one vertex (VTK reads another point there, which does not move with the mesh).
+    if (request.scheme == Scheme::Butterfly || request.scheme == Scheme::ModifiedButterfly) {
+        int capped = 0;
+        const PolyMesh closed = with_short_boundary_loops_capped(nonmanifold.empty() ? input : with_fans_split(input, nonmanifold), capped);
+        if (capped > 0 && invariant_on(closed))
+            return {DivergenceClass::ShortBoundaryLoop,
+                    "invariant once its " + std::to_string(capped) + " boundary loop(s) of three edges are capped" +
+                        (nonmanifold.empty() ? std::string() : " (its non-manifold vertices split into their fans)") +
+                        ": there the four-point rule's two outer points are one vertex"};
+    }
     if (!input.face_varying.empty()) {
         int split = 0;
         const PolyMesh apart = with_value_fans_split(input, split);

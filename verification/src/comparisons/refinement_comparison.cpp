@@ -1,5 +1,6 @@
 #include "crossdiv/verification/comparisons/refinement_comparison.h"
 
+#include "crossdiv/mesh/poly_connectivity.h"
 #include "crossdiv/verification/comparisons/input_transformation.h"
 #include "crossdiv/verification/comparisons/nondeterminism.h"
 #include "crossdiv/verification/comparisons/shared_topology.h"
@@ -240,8 +241,12 @@ std::string rule_effect(Scheme scheme, const std::string& ref, const std::string
                               : " counts generations from the input (one call of " + std::to_string(levels) + " levels)");
         case Scheme::Butterfly:
         case Scheme::ModifiedButterfly:
-            return ref + (rule == "opposite-vertex-wings"
-                              ? " takes a wing point beyond the boundary to be the triangle's own opposite vertex"
+            return ref + (rule == "opposite-vertex-wings" ? " takes a wing point beyond the boundary to be the triangle's own opposite vertex"
+                          : rule == "other-face-wings"
+                              ? " takes a wing point beyond the boundary to be the other triangle's apex" +
+                                    std::string(scheme == Scheme::ModifiedButterfly
+                                                    ? ", counts valence in faces, and reads a boundary endpoint by the eight-point stencil"
+                                                    : "")
                               : " reflects a wing point beyond the boundary across the wing edge");
         case Scheme::CatmullClark:
         case Scheme::Bilinear: break;
@@ -307,6 +312,47 @@ bool beyond_valence_table(const Implementation& ref, Scheme scheme, const PolyMe
                                            : "by up to " + sci(worst) + " of the diagonal" +
                                                  (non_finite ? " (" + std::to_string(non_finite) + " non-finite)" : "")) +
                   ", and every other vertex agrees";
+    return true;
+}
+
+/// For the Butterflies: whether at level 1 only points of boundary edges on boundary loops of
+/// three edges differ between `ours` (core's level 1, edge points after the old vertices in
+/// PolyConnectivity's edge order) and the reference's level 1 in our numbering (`theirs`,
+/// empty entries unmatched), at least one does, and every other vertex agrees within
+/// `tolerance`; there the four-point rule's two outer points are one vertex, the loop's third.
+/// Fills `explanation` with the figures. Later levels inherit the difference.
+bool only_short_boundary_loops_differ(const std::string& reference, const PolyMesh& input, const PolyMesh& ours,
+                                      const std::vector<Vec3>& theirs, double tolerance, std::string& explanation) {
+    if (theirs.size() != ours.positions.size() || !input.all_triangles()) return false;
+    const PolyConnectivity conn = build_poly_connectivity(input);
+    const int nv = input.num_vertices();
+    if (ours.num_vertices() != nv + conn.num_edges()) return false;
+    const double diagonal = bounding_box_diagonal(ours.positions);
+    int differing = 0, on_loops = 0;
+    double worst = 0;
+    for (int v = 0; v < ours.num_vertices(); ++v) {
+        const double d = (ours.positions[v] - theirs[static_cast<size_t>(v)]).norm();
+        if (d <= tolerance * diagonal) continue;
+        if (v < nv) return false;
+        const int c = conn.edge_corner[v - nv];
+        if (conn.twin[c] >= 0) return false;
+        const int a0 = conn.corner_vertex[c], a1 = conn.head(c);
+        const int before = conn.boundary_neighbors(a0).before, after = conn.boundary_neighbors(a1).after;
+        if (before != after || conn.boundary_neighbors(after).after != a0) return false;  // a loop of more than three
+        ++differing;
+        worst = std::max(worst, d / diagonal);
+    }
+    if (differing == 0) return false;
+    for (int e = 0; e < conn.num_edges(); ++e) {
+        const int c = conn.edge_corner[e];
+        if (conn.twin[c] >= 0) continue;
+        const int a0 = conn.corner_vertex[c], a1 = conn.head(c);
+        on_loops += conn.boundary_neighbors(a0).before == conn.boundary_neighbors(a1).after;
+    }
+    explanation = "at level 1 only the points of " + std::to_string(differing) + " of the " + std::to_string(on_loops) +
+                  " boundary edges on boundary loops of three edges differ, by up to " + sci(worst) +
+                  " of the diagonal, and every other vertex agrees: there the four-point rule's two outer points are one "
+                  "vertex, the loop's third, which core takes twice and " + reference + " does not";
     return true;
 }
 
@@ -665,6 +711,19 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
             return Classification{DivergenceClass::ValenceLimit, why};
         };
 
+        // A Butterfly reference that reads something else than the loop's third vertex for
+        // the four-point rule's outer points on a boundary loop of three edges (VTK).
+        const DivergenceTest short_boundary_loops = [&]() -> std::optional<Classification> {
+            if (req.scheme != Scheme::Butterfly && req.scheme != Scheme::ModifiedButterfly) return std::nullopt;
+            const CoreRun* s = core_with_reference_rule();
+            if (!s || s->levels().size() < 2 || trace.size() < 2) return std::nullopt;
+            const std::vector<std::vector<Vec3>> mapped = levels_in_our_numbering(s->levels(), trace, run.correspondence);
+            std::string why;
+            if (mapped.size() < 2 || !only_short_boundary_loops_differ(ref.name(), input, s->levels()[1], mapped[1], tolerance, why))
+                return std::nullopt;
+            return Classification{DivergenceClass::ShortBoundaryLoop, why};
+        };
+
         if (run.correspondence.method == MatchMethod::None) {
             if (tier == Tier::Geometric && run.hausdorff_rel <= tolerance) {
                 run.verdict = Verdict::Agree;
@@ -760,6 +819,7 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
         const bool same_faces = run.comparison.topology_equal();
         const std::string faces = counts(theirs) + " against core's " + counts(ours);
         DivergenceTests tests;
+        tests.short_boundary_loops = short_boundary_loops;
         tests.isolated_vertices = [&]() -> std::optional<Classification> {
             if (!same_faces || !only_isolated_vertices_differ(ours, theirs, map, tolerance)) return std::nullopt;
             return Classification{DivergenceClass::IsolatedVertexHandling,
@@ -912,10 +972,11 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
     for (size_t i = 0; i < out.runs.size(); ++i) {
         if (!changed[i]) continue;
         RefinementRun& run = out.runs[i];
-        // Past a weight table it reads what lies beyond its vector, which may be this process's
-        // data that no fill reaches: a second run may or may not change it, and the verdict would
-        // flip from suite to suite. The class already says that what it reads there is undefined.
-        if (run.divergence_class == DivergenceClass::ValenceLimit) {
+        // Past a weight table (or for the missing outer point of a short boundary loop) it reads
+        // what lies beyond its vector, which may be this process's data that no fill reaches: a
+        // second run may or may not change it, and the verdict would flip from suite to suite.
+        // The class already says that what it reads there is not the input's.
+        if (run.divergence_class == DivergenceClass::ValenceLimit || run.divergence_class == DivergenceClass::ShortBoundaryLoop) {
             run.explanation += "; run again with its heap filled otherwise, " + *changed[i];
             continue;
         }

@@ -242,6 +242,14 @@ PolyMesh submesh(const PolyMesh& mesh, const std::vector<int>& faces, const std:
     for (const SharpVertex& c : mesh.creases.vertices)
         if (remap[static_cast<size_t>(c.v)] >= 0) out.creases.vertices.push_back({remap[static_cast<size_t>(c.v)], c.sharpness});
     std::sort(out.creases.holes.begin(), out.creases.holes.end());
+    // Hierarchical edits of the kept faces, renumbered: a path depends on its base face's
+    // corner order only, which is kept; the edits of dropped faces go with them.
+    if (!mesh.creases.edits.empty()) {
+        std::vector<int> renumbered(static_cast<size_t>(mesh.num_faces()), -1);
+        for (size_t i = 0; i < faces.size(); ++i) renumbered[static_cast<size_t>(faces[i])] = static_cast<int>(i);
+        for (HierarchicalEdit e : mesh.creases.edits)
+            if ((e.face = renumbered[static_cast<size_t>(e.face)]) >= 0) out.creases.edits.push_back(std::move(e));
+    }
     // Face-varying channels: every value kept (the indices stay valid), the kept faces' corners.
     for (const FaceVaryingChannel& ch : mesh.face_varying) {
         FaceVaryingChannel& kept = out.face_varying.emplace_back(ch);

@@ -38,6 +38,7 @@ constexpr std::array kClasses = {
     std::pair{DivergenceClass::Rounding, "rounding"},
     std::pair{DivergenceClass::IsolatedVertexHandling, "isolated-vertex-handling"},
     std::pair{DivergenceClass::ValenceLimit, "valence-limit"},
+    std::pair{DivergenceClass::ShortBoundaryLoop, "short-boundary-loop"},
     std::pair{DivergenceClass::Topology, "topology"},
     std::pair{DivergenceClass::Triangulation, "triangulation"},
     std::pair{DivergenceClass::Unexplained, "unexplained"},

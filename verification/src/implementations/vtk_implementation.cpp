@@ -1,12 +1,10 @@
-// VTK as an implementation: "vtk", vtkLoopSubdivisionFilter called once per level. VTK's
-// filters store the points they make in single precision (vtkPoints of VTK_FLOAT, whatever the
-// input's type), so it is held to the float tier.
+// VTK as an implementation: "vtk", vtkLoopSubdivisionFilter and vtkButterflySubdivisionFilter
+// called once per level. VTK's filters store the points they make in single precision
+// (vtkPoints of VTK_FLOAT, whatever the input's type), so it is held to the float tier.
 //
-// Its Butterfly and linear filters are in the adapter (adapters/vtk) but not declared here:
-// vtkButterflySubdivisionFilter is the modified Butterfly with a boundary treatment of its own
-// (a missing wing point replaced by the other face's opposite vertex; an extraordinary vertex
-// whose walk meets the boundary read by the eight-point stencil; valence counted in faces), a
-// rule core does not have yet, and the linear filter's midpoint split is a scheme core lacks.
+// Its Butterfly filter is the modified Butterfly (Zorin et al.) with VTK's boundary choices,
+// core's rule other-face-wings (butterfly_mask.h). Its linear filter's midpoint split is in the
+// adapter but not declared: a scheme core does not have yet.
 #include "crossdiv/adapters/vtk.h"
 #include "library_implementations.h"
 
@@ -19,18 +17,22 @@ class Vtk final : public Implementation {
 public:
     Vtk()
         : Implementation("vtk", vt::version(), ImplementationKind::Library,
-                         {.schemes = {supports(Scheme::Loop, {loop_rule(LoopWeights::Loop, LoopBoundary::EdgeOnly)})},
+                         {.schemes = {supports(Scheme::Loop, {loop_rule(LoopWeights::Loop, LoopBoundary::EdgeOnly)}),
+                                      supports(Scheme::ModifiedButterfly, {butterfly_rule(ButterflyWings::OtherFaceVertex)})},
                           .precision = Precision::Float}) {}
 
     adapters::LevelTrace refine(const PolyMesh& mesh, const RefineRequest& r) const override {
         check_refinable(r.scheme);
-        return vt::subdivide(triangles_for(mesh, r.scheme), vt::Filter::Loop, r.levels);
+        return vt::subdivide(triangles_for(mesh, r.scheme), filter(r.scheme), r.levels);
     }
 
     size_t refine_native(const TriMesh& mesh, const RefineRequest& r) const override {
         check_refinable(r.scheme);
-        return vt::subdivide_native(mesh, vt::Filter::Loop, r.levels);
+        return vt::subdivide_native(mesh, filter(r.scheme), r.levels);
     }
+
+private:
+    static vt::Filter filter(Scheme scheme) { return scheme == Scheme::ModifiedButterfly ? vt::Filter::Butterfly : vt::Filter::Loop; }
 };
 
 }  // namespace

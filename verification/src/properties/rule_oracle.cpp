@@ -196,10 +196,16 @@ std::vector<Vec3> butterfly_vertices(const PolyMesh& m, ButterflyWings wings) {
     };
     const auto& p = m.positions;
     const auto at = [&](int v) -> const Vec3& { return p[static_cast<size_t>(v)]; };
-    // The wing beyond edge (x, y) of the triangle whose third vertex is t.
-    const auto wing = [&](int x, int y, int t) -> Vec3 {
+    // The wing beyond edge (x, y) of the triangle whose third vertex is t; `other` is the
+    // apex of the triangle across the central edge.
+    const auto wing = [&](int x, int y, int t, int other) -> Vec3 {
         if (const Half* across = find(y, x)) return at(across->third);
-        return wings == ButterflyWings::Reflected ? Vec3(at(x) + at(y) - at(t)) : at(t);
+        switch (wings) {
+            case ButterflyWings::Reflected: return at(x) + at(y) - at(t);
+            case ButterflyWings::OppositeVertex: return at(t);
+            case ButterflyWings::OtherFaceVertex: return at(other);
+        }
+        return at(t);
     };
     std::vector<Vec3> out(p.begin(), p.end());
     for (const Half& h : halves) {
@@ -218,7 +224,7 @@ std::vector<Vec3> butterfly_vertices(const PolyMesh& m, ButterflyWings wings) {
         }
         const int o1 = h.third, o2 = twin->third;
         out.push_back(0.5 * (at(a) + at(b)) + 0.125 * (at(o1) + at(o2)) -
-                      0.0625 * (wing(b, o1, a) + wing(o1, a, b) + wing(a, o2, b) + wing(o2, b, a)));
+                      0.0625 * (wing(b, o1, a, o2) + wing(o1, a, b, o2) + wing(a, o2, b, o1) + wing(o2, b, a, o1)));
     }
     return out;
 }

@@ -42,12 +42,21 @@ enum class ButterflyWings {
     /// o itself, the triangle's own third vertex: what VCG's MidPointButterfly (MeshLab's
     /// "Butterfly Subdivision") reads when its walk across the wing edge stays in the face.
     OppositeVertex,
+    /// The third vertex of the edge's other triangle: VTK's vtkButterflySubdivisionFilter
+    /// (GenerateButterflyStencil). Under the modified scheme this rule takes VTK's other
+    /// boundary choices too, which differ from OpenMesh's only next to a boundary: valence
+    /// counts faces (a boundary vertex of 6 faces is regular), and an endpoint on the
+    /// boundary stands for the eight-point stencil where OpenMesh would leave it out (its
+    /// K-point walk meets the boundary: GenerateLoopStencil), averaged with the other
+    /// endpoint's stencil when neither is regular.
+    OtherFaceVertex,
 };
-inline constexpr std::array<ButterflyWings, 2> kAllButterflyWings{ButterflyWings::Reflected, ButterflyWings::OppositeVertex};
+inline constexpr std::array<ButterflyWings, 3> kAllButterflyWings{ButterflyWings::Reflected, ButterflyWings::OppositeVertex,
+                                                                   ButterflyWings::OtherFaceVertex};
 
-/// "reflected-wings", "opposite-vertex-wings".
+/// "reflected-wings", "opposite-vertex-wings", "other-face-wings".
 constexpr std::string_view to_string(ButterflyWings w) {
-    return w == ButterflyWings::Reflected ? "reflected-wings" : "opposite-vertex-wings";
+    return w == ButterflyWings::Reflected ? "reflected-wings" : w == ButterflyWings::OppositeVertex ? "opposite-vertex-wings" : "other-face-wings";
 }
 
 /// The wing rule named `name`. @throws InputError listing the names.

@@ -12,6 +12,9 @@
 ///                                border-faces-dropped, parity: rule_difference_class)
 ///   4. valence-limit             at level 1 exactly the vertices beyond the reference's weight
 ///                                table differ
+///      short-boundary-loop       the Butterflies: at level 1 only the points of boundary edges
+///                                on boundary loops of three edges differ, where the four-point
+///                                rule's two outer points are one vertex
 ///   5. non-manifold-handling     core took OpenSubdiv's non-manifold rules, and every vertex
 ///                                that differs lies where the non-manifold vertices reach; or,
 ///                                where no vertex bijection exists, the reference agrees with
@@ -56,6 +59,7 @@ struct DivergenceTests {
     DivergenceTest rounding;
     DivergenceTest reference_rule;
     DivergenceTest valence_table;
+    DivergenceTest short_boundary_loops;
     DivergenceTest nonmanifold;  ///< core took OpenSubdiv's non-manifold rules; the reference differs only where they apply
     DivergenceTest topology;
     /// The sentence for an unexplained divergence (its class is always Unexplained).

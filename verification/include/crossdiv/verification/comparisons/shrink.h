@@ -70,7 +70,8 @@ ShrinkResult shrink_divergence(const PolyMesh& mesh, const std::string& name, co
 
 /// The polygons of `mesh` listed in `faces`, with unused vertices dropped (order kept) but for
 /// `also_vertices`, kept though no kept face uses them; the crease and corner tags of the kept
-/// vertices, the holes among the kept faces and the file's scheme options come along.
+/// vertices, the holes among the kept faces, the hierarchical edits of the kept faces
+/// (renumbered) and the file's scheme options come along.
 PolyMesh submesh(const PolyMesh& mesh, const std::vector<int>& faces, const std::vector<int>& also_vertices = {});
 
 }  // namespace crossdiv::verification

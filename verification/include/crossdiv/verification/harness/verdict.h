@@ -72,6 +72,9 @@ enum class DivergenceClass {
     Rounding,                  ///< same faces, within tolerances::kRoundingUlps of the coordinates
     IsolatedVertexHandling,    ///< only vertices without faces differ
     ValenceLimit,              ///< the reference's weight table ends below the input's valence
+    /// The Butterflies: only boundary edges on boundary loops of three edges differ, where the
+    /// four-point rule's two outer points are the loop's third vertex (VTK reads another point)
+    ShortBoundaryLoop,
     Topology,                  ///< the refined connectivity differs
     Triangulation,             ///< the same vertices and topology, other triangles over them (isosurface polygons)
     Unexplained,               ///< none of the above: a failure
@@ -88,7 +91,7 @@ enum class DivergenceClass {
 /// "weight-family+corner-rule", "boundary-rule", "border-faces-dropped", "parity", "wing-rule", "triangle-rule",
 /// "fvar-rule", "normal-rule",
 /// "convention", "face-order-dependence", "rounding",
-/// "isolated-vertex-handling", "valence-limit", "topology", "triangulation",
+/// "isolated-vertex-handling", "valence-limit", "short-boundary-loop", "topology", "triangulation",
 /// "unexplained", "non-manifold-handling", "orientation-handling", "degenerate-face-handling",
 /// "invalid-input-handling").
 const char* to_string(DivergenceClass cls);
