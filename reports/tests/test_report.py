@@ -156,19 +156,13 @@ def test_a_scheme_case_is_told_by_its_kind_and_counted_per_rule_and_reference(tm
         ("catmull-clark", "2", "edge-only", "opensubdiv", "edge-only", "agree", "1")]
 
 
-def test_the_coverage_table_is_the_same_in_readme_and_reports():
+def test_the_coverage_table_has_a_row_for_every_core_header_folder():
     root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
-
-    def table(path):
-        with open(os.path.join(root, path)) as f:
-            return [line for line in f.read().splitlines() if line.startswith("| ") and line.count("|") == 5]
-
-    readme, reports = table("README.md"), table("reports/coverage.md")
-    start = readme.index(reports[0])
-    assert readme[start:start + len(reports)] == reports
-    # every core header directory has a row
+    with open(os.path.join(root, "docs", "coverage.md")) as f:
+        rows = [line for line in f.read().splitlines() if line.startswith("| ") and line.count("|") == 5]
+    assert len(rows) > 10
     for part in ("subdiv/", "mesh/", "curves/", "surfaces/", "io/"):
-        assert any(part in row for row in reports), part
+        assert any(part in row for row in rows), part
 
 
 def test_interpolating_splines_get_their_figure_and_continuity_table(tmp_path):

@@ -1,0 +1,84 @@
+#!/usr/bin/env bash
+# The documentation, checked as a reader meets it:
+#   1. the site builds in strict mode (mkdocs.yml: a link to a missing page or a missing image
+#      fails the build);
+#   2. every relative link of README.md names a file of the tree;
+#   3. every example marked `<!-- example: exit N -->` in README.md or docs/*.md runs: the
+#      `$ crossdiv ...` command of the code block after it (with its `\` continuation lines)
+#      exits with N, and the first line the block shows after the command is in its output,
+#      its parts around "..." in order, spaces aside.
+# Usage: docs_site_test.sh path/to/crossdiv [ROOT]   (ROOT: the tree to check, default this one)
+set -u
+crossdiv="$1"
+root="${2:-$(cd "$(dirname "$0")/../.." && pwd)}"
+cd "$root" || exit 2
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+failed=0
+if ! out="$(mkdocs build --strict --quiet --config-file mkdocs.yml --site-dir "$tmp/site" 2>&1)"; then
+  echo "FAIL mkdocs build --strict:"; echo "$out"; failed=1
+elif [ ! -f "$tmp/site/index.html" ] || [ ! -f "$tmp/site/search/search_index.json" ]; then
+  echo "FAIL the site has no index.html or no search index"; failed=1
+else
+  echo "ok site: $(find "$tmp/site" -name '*.html' | wc -l) pages, with a search index"
+fi
+# README's relative links (not a URL, not an anchor).
+while IFS= read -r target; do
+  if [ ! -e "$root/${target%%#*}" ]; then echo "FAIL README.md links to $target, which does not exist"; failed=1; fi
+done < <(grep -oE '\]\([^)#][^)]*\)' README.md | sed -E 's/^\]\((.*)\)$/\1/' | grep -vE '^[a-z]+://')
+# The marked examples.
+python3 - "$crossdiv" README.md docs/*.md <<'PY' || failed=1
+import re, shlex, subprocess, sys
+crossdiv, files = sys.argv[1], sys.argv[2:]
+bad = ran = 0
+for path in files:
+    lines = open(path).read().split("\n")
+    for i, line in enumerate(lines):
+        m = re.match(r"<!-- example: exit (\d+) -->", line.strip())
+        if not m:
+            continue
+        want = int(m.group(1))
+        j = i + 1
+        while j < len(lines) and not lines[j].startswith("```"):
+            j += 1
+        block = []
+        j += 1
+        while j < len(lines) and not lines[j].startswith("```"):
+            block.append(lines[j])
+            j += 1
+        if not block or not block[0].startswith("$ crossdiv "):
+            print(f"FAIL {path}:{i + 1}: the marked block does not start with '$ crossdiv '")
+            bad += 1
+            continue
+        command, k = block[0][2:], 1
+        while command.endswith("\\") and k < len(block):
+            command = command[:-1] + " " + block[k].strip()
+            k += 1
+        shown = block[k] if k < len(block) else ""
+        argv = shlex.split(command)
+        argv[0] = crossdiv
+        r = subprocess.run(argv, capture_output=True, text=True, timeout=600)
+        ran += 1
+        output = " ".join((r.stdout + r.stderr).split())
+        at, ok = 0, bool(shown.strip())
+        for part in (" ".join(p.split()) for p in shown.split("...")):
+            if not part:
+                continue
+            found = output.find(part, at)
+            if found < 0:
+                ok = False
+                break
+            at = found + len(part)
+        if r.returncode != want or not ok:
+            print(f"FAIL {path}:{i + 1}: {command}\n  exit {r.returncode} (want {want}); "
+                  f"{'output has' if ok else 'output lacks'}: {shown.strip()}")
+            bad += 1
+        else:
+            print(f"ok example {path}:{i + 1}: {command[:80]}")
+if ran == 0:
+    print("FAIL no marked example found")
+    bad += 1
+sys.exit(1 if bad else 0)
+PY
+[ "$failed" -eq 0 ] && echo "docs: every check passed"
+exit "$failed"
