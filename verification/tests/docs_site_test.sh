@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The documentation, checked as a reader meets it:
 #   1. the site builds in strict mode (mkdocs.yml: a link to a missing page or a missing image
-#      fails the build);
+#      fails the build), its command-line and Python reference pages generated from this
+#      build's program and module, the C++ API reference by Doxygen from the headers;
 #   2. every relative link of README.md names a file of the tree;
 #   3. every example marked `<!-- example: exit N -->` in README.md or docs/*.md runs: the
 #      `$ crossdiv ...` command of the code block after it (with its `\` continuation lines)
@@ -15,12 +16,21 @@ cd "$root" || exit 2
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
 failed=0
+# The reference pages are generated from this build's program and module (mkdocs_hooks.py).
+export CROSSDIV="$crossdiv" CROSSDIV_PYTHONPATH="$(cd "$(dirname "$crossdiv")/../python" 2>/dev/null && pwd)"
 if ! out="$(mkdocs build --strict --quiet --config-file mkdocs.yml --site-dir "$tmp/site" 2>&1)"; then
   echo "FAIL mkdocs build --strict:"; echo "$out"; failed=1
 elif [ ! -f "$tmp/site/index.html" ] || [ ! -f "$tmp/site/search/search_index.json" ]; then
   echo "FAIL the site has no index.html or no search index"; failed=1
 else
   echo "ok site: $(find "$tmp/site" -name '*.html' | wc -l) pages, with a search index"
+  # The generated pages hold what the program and the module say now.
+  if ! grep -q -- '--max-faces' "$tmp/site/cli-reference.html" || ! grep -q 'subdivide' "$tmp/site/python-reference.html"; then
+    echo "FAIL the generated reference pages lack the program's options or the module's functions"; failed=1
+  fi
+  if ! grep -q 'catmull_clark_levels' "$tmp/site/api/catmull__clark_8h.html" 2>/dev/null; then
+    echo "FAIL the C++ API reference (Doxygen, site api/) lacks catmull_clark.h's functions"; failed=1
+  fi
 fi
 # README's relative links (not a URL, not an anchor).
 while IFS= read -r target; do
