@@ -98,6 +98,31 @@ def test_the_warren_case_names_every_reference_at_the_picked_vertex(report):
     assert any(line.startswith("picked v") and "1 reference(s)" in line for line in seen), seen
 
 
+def test_the_first_screen_reads_on_a_laptop(report):
+    # 1366 x 768: the overview table within the first screen, its counts coloured by the
+    # report's own stylesheet, nothing wider than the window; the screenshot kept.
+    from selenium.webdriver.common.by import By
+    driver = check_viewer.browser()
+    try:
+        driver.set_window_size(1366, 768)
+        open_report(driver, report)
+        driver.execute_script("window.scrollTo(0, 0)")
+        table = driver.find_element(By.CSS_SELECTOR, "h2 + p + table")
+        assert driver.execute_script("return arguments[0].getBoundingClientRect().bottom", table) < \
+            driver.execute_script("return window.innerHeight")
+        agree = table.find_element(By.CSS_SELECTOR, "span.agree")
+        assert agree.value_of_css_property("color") in ("rgba(26, 127, 55, 1)", "rgb(26, 127, 55)")
+        assert not table.find_elements(By.CSS_SELECTOR, "span.failure.nonzero")  # the suite has no failure
+        assert driver.execute_script("return document.documentElement.scrollWidth <= window.innerWidth + 1")
+        os.makedirs(os.path.join(report, "screenshots"), exist_ok=True)
+        shot = os.path.join(report, "screenshots", "first-screen.png")
+        driver.save_screenshot(shot)
+        assert os.path.getsize(shot) > 20000
+        assert not check_viewer.console_errors(driver)
+    finally:
+        driver.quit()
+
+
 def test_a_broken_view_file_is_a_console_error(report, tmp_path):
     # The check must fail when the page does: a view whose script throws.
     broken = tmp_path / "broken"

@@ -4,6 +4,7 @@ Every table, figure and paragraph is built once, as data; render_markdown and re
 turn the same list of sections into report.md and index.html, so the two cannot drift.
 """
 import html
+import os
 from dataclasses import dataclass, field
 
 
@@ -23,6 +24,18 @@ class Link:
 
     def __str__(self):
         return self.text
+
+
+@dataclass
+class Tally:
+    """A table cell of run counts, agree / classified / failure: plain in report.md, each count
+    coloured in index.html (report.css), a failure count that is not zero marked."""
+    agree: int
+    classified: int
+    failure: int
+
+    def __str__(self):
+        return f"{self.agree} / {self.classified} / {self.failure}"
 
 
 @dataclass
@@ -93,23 +106,32 @@ def _inline_html(text):
 
 
 def html_cell(value):
-    """A cell's HTML: escaped text, or a Link as an anchor."""
+    """A cell's HTML: escaped text, a Link as an anchor, a Tally's counts each in its class."""
     if isinstance(value, Link):
         return f"<a href='{html.escape(value.href)}'{value.attributes}>{html.escape(value.text)}</a>"
+    if isinstance(value, Tally):
+        failure = "failure" + (" nonzero" if value.failure else "")
+        return (f"<span class='agree'>{value.agree}</span> / <span class='classified'>{value.classified}</span>"
+                f" / <span class='{failure}'>{value.failure}</span>")
     return html.escape(str(value))
+
+
+def html_row(row):
+    """A table row; a row holding a Tally with failures is marked too."""
+    failing = any(isinstance(v, Tally) and v.failure for v in row)
+    return (f"<tr class='failing'>" if failing else "<tr>") + "".join(f"<td>{html_cell(v)}</td>" for v in row) + "</tr>"
 
 
 def html_table(table):
     out = ["<table><tr>" + "".join(f"<th>{html.escape(str(h))}</th>" for h in table.header) + "</tr>"]
-    out += ["<tr>" + "".join(f"<td>{html_cell(v)}</td>" for v in row) + "</tr>" for row in table.rows]
+    out += [html_row(row) for row in table.rows]
     return "\n".join(out + ["</table>"])
 
 
-STYLE = ("body{font-family:sans-serif;max-width:1400px;margin:auto}table{border-collapse:collapse;font-size:12px}"
-         "td,th{border:1px solid #ccc;padding:2px 6px;text-align:left}img{max-width:100%}"
-         "#crossdiv-viewer{display:flex;flex-wrap:wrap;gap:8px}#crossdiv-viewer canvas{width:860px;height:560px;"
-         "border:1px solid #ccc}.cv-side{flex:1;min-width:300px;font-size:13px}.cv-controls{width:100%}"
-         ".cv-controls select{max-width:560px}")
+# The page's own stylesheet (no network): report.css beside this file, inlined into index.html
+# so that the page opens from disk alone.
+with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "report.css")) as _css:
+    STYLE = _css.read()
 
 
 def render_html(title, intro, sections):

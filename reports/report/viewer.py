@@ -9,7 +9,7 @@ import shutil
 from array import array
 from collections import Counter, defaultdict
 
-from .model import Interactive, Link, Section, Table, Text
+from .model import Interactive, Link, Section, Table, Tally, Text
 from .records import category, outcome
 
 # three.js from Debian's libjs-three (release 111, its classic scripts: a page opened from disk
@@ -18,7 +18,9 @@ THREE_FILES = ("/usr/share/javascript/three/build/three.min.js",
                "/usr/share/javascript/three/examples/js/controls/OrbitControls.js")
 VIEWER_JS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "viewer", "viewer.js")
 
-FAILURE = ("ours-failed", "diverge (unexplained)")
+# The outcomes the suite counts as failures (Outcome::is_failure): ours failed, and a divergence
+# or a refusal of core's that no test explains.
+FAILURE = ("ours-failed", "diverge (unexplained)", "ours-rejected (unexplained)")
 
 # The pages the suite's pages study writes beside the results (pages_study.h), linked when there.
 INTERACTIVE_PAGES = (
@@ -68,7 +70,7 @@ def first_parting_level(view, reference, tolerance_rel):
 def _kind(case, run):
     """agree, classified (a measured, named difference, or a reference's own failure) or failure."""
     c = category(case, run)
-    return "agree" if c == "agree" else "failure" if c in FAILURE else "classified"
+    return "agree" if c == "agree" else "failure" if c in FAILURE or outcome(case, run) in FAILURE else "classified"
 
 
 def _row_name(case):
@@ -111,7 +113,7 @@ def matrix_table(cases, libraries):
     rows = []
     for name in sorted(counts, key=lambda n: (n != "loop", n)):
         k = counts[name]
-        rows.append([name] + [f"{k[(col, 'agree')]} / {k[(col, 'classified')]} / {k[(col, 'failure')]}"
+        rows.append([name] + [Tally(k[(col, 'agree')], k[(col, 'classified')], k[(col, 'failure')])
                               if any(k[(col, x)] for x in ("agree", "classified", "failure")) else "-" for col in columns])
     return Table(["scheme or study"] + columns, rows)
 
@@ -208,7 +210,8 @@ def first_screen(cases, mesh_cases, libraries, folder):
 
     s = Section("Overview").add(
         Text("Runs per scheme (or study) and reference: agree / classified (a measured difference with a named "
-             "cause, or a reference's own failure) / failure (ours failed, or a divergence no test explains)."),
+             "cause, or a reference's own failure) / failure (ours failed, or a divergence or a refusal of core's "
+             "that no test explains)."),
         matrix_table(cases, libraries))
     failures = [(case_link(c), _library_of(c, r), outcome(c, r), r.get("explanation", "")) for c in cases
                 for r in c.get("runs", []) if _kind(c, r) == "failure"]

@@ -12,7 +12,8 @@ import pytest
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 
 import make_report  # noqa: E402
-from report.model import Figure, Section, Table, Text, md_cell, render_html, render_markdown  # noqa: E402
+from report.model import Figure, Section, Table, Tally, Text, md_cell, render_html, render_markdown  # noqa: E402
+from report.viewer import matrix_table  # noqa: E402
 from report.records import category, split_cases  # noqa: E402
 
 
@@ -154,6 +155,28 @@ def test_a_scheme_case_is_told_by_its_kind_and_counted_per_rule_and_reference(tm
     assert sorted(tuple(c.strip() for c in row) for row in table[2:]) == [
         ("catmull-clark", "2", "edge-only", "openmesh", "midpoint-average", "diverge (boundary-rule)", "1"),
         ("catmull-clark", "2", "edge-only", "opensubdiv", "edge-only", "agree", "1")]
+
+
+def test_the_overview_counts_what_the_suite_counts_and_colours_it():
+    # A refusal of core's that no test explains is a failure of the suite (Outcome::is_failure),
+    # as an unexplained divergence is; a declared refusal and a named divergence are classified.
+    def case(job, outcome):
+        return {"job": job, "id": f"case {job}", "scheme": "loop", "operation": "loop",
+                "runs": [{"reference": "vtk", "outcome": outcome, "verdict": outcome.split(" ")[0]}]}
+    cases = [case(0, "agree"), case(1, "diverge (corner-rule)"), case(2, "ours-rejected (non-manifold-handling)"),
+             case(3, "ours-rejected (unexplained)"), case(4, "diverge (unexplained)")]
+    table = matrix_table(cases, ["vtk"])
+    tally = table.rows[0][1]
+    assert (tally.agree, tally.classified, tally.failure) == (1, 2, 2)
+    assert str(tally) == "1 / 2 / 2"  # report.md: as before
+    html = render_html("t", [], [Section("Overview").add(table)])
+    assert "<tr class='failing'>" in html and "<span class='failure nonzero'>2</span>" in html
+    assert "<span class='agree'>1</span>" in html
+    calm = render_html("t", [], [Section("Overview").add(Table(["x", "vtk"], [["loop", Tally(3, 1, 0)]]))])
+    body = calm.split("</style>")[1]
+    assert "nonzero" not in body and "failing" not in body
+    # Its own stylesheet, inlined: the page needs no network.
+    assert ".failure.nonzero" in html and "http" not in html.split("</style>")[0]
 
 
 def test_the_coverage_table_has_a_row_for_every_core_header_folder():
