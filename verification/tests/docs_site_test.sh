@@ -4,13 +4,14 @@
 #      fails the build), its command-line and Python reference pages generated from this
 #      build's program and module, the C++ API reference by Doxygen from the headers;
 #   2. every relative link of README.md names a file of the tree;
-#   3. every example marked `<!-- example: exit N -->` in README.md or docs/*.md runs: the
+#   3. every example marked `<!-- example: exit N -->` in README.md or docs/*.md runs (in a
+#      folder of its own): the
 #      `$ crossdiv ...` command of the code block after it (with its `\` continuation lines)
 #      exits with N, and the first line the block shows after the command is in its output,
 #      its parts around "..." in order, spaces aside.
 # Usage: docs_site_test.sh path/to/crossdiv [ROOT]   (ROOT: the tree to check, default this one)
 set -u
-crossdiv="$1"
+crossdiv="$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"  # absolute: the examples run elsewhere
 root="${2:-$(cd "$(dirname "$0")/../.." && pwd)}"
 cd "$root" || exit 2
 tmp="$(mktemp -d)"
@@ -36,10 +37,12 @@ fi
 while IFS= read -r target; do
   if [ ! -e "$root/${target%%#*}" ]; then echo "FAIL README.md links to $target, which does not exist"; failed=1; fi
 done < <(grep -oE '\]\([^)#][^)]*\)' README.md | sed -E 's/^\]\((.*)\)$/\1/' | grep -vE '^[a-z]+://')
-# The marked examples.
-python3 - "$crossdiv" README.md docs/*.md <<'PY' || failed=1
+# The marked examples, run in a folder of their own (what they write stays out of the tree) that
+# sees the tree's examples/ as a reader's checkout would.
+mkdir "$tmp/work" && ln -s "$root/examples" "$tmp/work/examples"
+python3 - "$crossdiv" "$tmp/work" README.md docs/*.md <<'PY' || failed=1
 import re, shlex, subprocess, sys
-crossdiv, files = sys.argv[1], sys.argv[2:]
+crossdiv, work, files = sys.argv[1], sys.argv[2], sys.argv[3:]
 bad = ran = 0
 for path in files:
     lines = open(path).read().split("\n")
@@ -67,7 +70,7 @@ for path in files:
         shown = block[k] if k < len(block) else ""
         argv = shlex.split(command)
         argv[0] = crossdiv
-        r = subprocess.run(argv, capture_output=True, text=True, timeout=600)
+        r = subprocess.run(argv, capture_output=True, text=True, timeout=600, cwd=work)
         ran += 1
         output = " ".join((r.stdout + r.stderr).split())
         at, ok = 0, bool(shown.strip())
