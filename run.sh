@@ -35,13 +35,14 @@ trap 'if [ $? -eq 0 ]; then end_phase ok; else end_phase failed; fi' EXIT
 # isosurface reference; help2man and man-db: the man page, generated from the binary's help and
 # rendered by its test; opensubdiv-tools: the programs OpenSubdiv's regression shapes are
 # compiled into, datasets/install_opensubdiv_shapes.py; mkdocs, mkdocs-material and doxygen:
-# the documentation site and its C++ API reference, built in strict mode by their test).
+# the documentation site and its C++ API reference, built in strict mode by their test;
+# python3-distributed: Dask, for crossdiv-cluster and its LocalCluster test).
 PACKAGES="g++ make cmake ccache libeigen3-dev libosd-dev libopenmesh-dev libcgal-dev libvtk9-dev libgtest-dev \
 libcli11-dev nlohmann-json3-dev libfmt-dev libnanoflann-dev libassimp-dev python3-matplotlib python3-numpy \
 meshlab xvfb xauth python3-open3d blender \
 python3-pytest python3-skimage \
 libjs-three chromium chromium-driver python3-selenium python3-pil \
-pybind11-dev python3-dev python3-scipy help2man man-db opensubdiv-tools mkdocs mkdocs-material doxygen"
+pybind11-dev python3-dev python3-scipy help2man man-db opensubdiv-tools mkdocs mkdocs-material doxygen python3-distributed"
 
 install_missing() {
   local missing=""

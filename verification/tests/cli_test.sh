@@ -178,6 +178,7 @@ expect suite-bad-shard 2 'expected I/N' -- "$crossdiv" suite "$tmp/cli.suite" --
 expect suite-shard-1 0 'shard 1/2 runs 1' -- "$crossdiv" suite "$tmp/cli.suite" --shard 1/2 --out "$tmp/sh1" --no-report
 expect suite-shard-2 0 'shard 2/2 runs 1' -- "$crossdiv" suite "$tmp/cli.suite" --shard 2/2 --out "$tmp/sh2" --no-report
 expect merge 0 'merged 2 folder' -- "$crossdiv" merge "$tmp/sh1" "$tmp/sh2" --out "$tmp/merged"
+expect merge-missing-shard 2 'shard\(s\) 1/2 missing: merge every shard of the run' -- "$crossdiv" merge "$tmp/sh2" --out "$tmp/merged-part"
 expect report-no-results 2 'no results.json \(not a suite output folder' -- "$crossdiv" report "$tmp/own"
 expect suite-shard-extra 2 '--shard 1/3/4: expected I/N' -- "$crossdiv" suite "$tmp/cli.suite" --shard 1/3/4 --out "$tmp/s"
 expect suite-shard-trailing 2 '--shard 1/3x: expected I/N' -- "$crossdiv" suite "$tmp/cli.suite" --shard 1/3x --out "$tmp/s"

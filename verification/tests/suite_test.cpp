@@ -507,9 +507,16 @@ TEST(Suite, ShardsMergeIntoTheSameResultsAsOneRun) {
     EXPECT_EQ(merged["summary"]["outcomes"], whole["summary"]["outcomes"]);
     ASSERT_EQ(merged["cases"].size(), whole["cases"].size());
     for (size_t i = 0; i < whole["cases"].size(); ++i) EXPECT_EQ(merged["cases"][i]["id"], whole["cases"][i]["id"]);
-    // The same shard twice is refused.
+    // The same shard twice is refused; so is a set with a shard missing, naming it (the merged
+    // results would be short of its jobs with nothing to say so).
     EXPECT_THROW(merge_suite_outputs({(d / "shard1").string(), (d / "shard1").string()}, (d / "again").string()),
                  InputError);
+    try {
+        merge_suite_outputs({(d / "shard2").string()}, (d / "partial").string());
+        ADD_FAILURE() << "a merge without shard 1/2 went through";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("shard(s) 1/2 missing"), std::string::npos) << e.what();
+    }
 
     // CSV: a header and one row per reference run (or per refused case without runs).
     int runs = 0;

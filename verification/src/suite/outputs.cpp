@@ -236,6 +236,24 @@ SuiteSummary merge_suite_outputs(const std::vector<std::string>& dirs, const std
             cases.emplace(c.job, std::move(c));
         }
     }
+    // Every shard of the run, each once: a set with one missing would be a results set and a
+    // report short of its jobs, with nothing to say so.
+    int count = 0;
+    std::vector<char> seen;
+    for (size_t i = 0; i < shards.size(); ++i) {
+        int index = 0, n = 0;
+        if (std::sscanf(shards[i].c_str(), "%d/%d", &index, &n) != 2 || n < 1 || index < 1 || index > n)
+            throw InputError(dirs[i] + ": shard '" + shards[i] + "' is not I/N");
+        if (count == 0) count = n, seen.assign(static_cast<size_t>(n) + 1, 0);
+        if (n != count)
+            throw InputError(dirs[i] + ": shard " + shards[i] + " is of a run in " + std::to_string(n) + " shards, the others of " +
+                             std::to_string(count));
+        if (seen[static_cast<size_t>(index)]++) throw InputError(dirs[i] + ": shard " + shards[i] + " is given twice");
+    }
+    std::string missing;
+    for (int i = 1; i <= count; ++i)
+        if (!seen[static_cast<size_t>(i)]) missing += (missing.empty() ? "" : ", ") + std::to_string(i) + "/" + std::to_string(count);
+    if (!missing.empty()) throw InputError("shard(s) " + missing + " missing: merge every shard of the run");
     std::string joined;
     for (const std::string& s : shards) joined += (joined.empty() ? "" : "+") + s;
     json header = std::move(first.header);
