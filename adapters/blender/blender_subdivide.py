@@ -65,6 +65,9 @@ def read_obj(path):
                 counts = [int(c) for c in words[2].split("/")]
                 ints, floats = words[3:3 + counts[0]], words[3 + counts[0]:3 + counts[0] + counts[1]]
                 creases.append((int(ints[0]), int(ints[1]), float(floats[0])))
+    if not vertices or not faces:
+        # Another format (an OFF file read as OBJ) would otherwise refine to nothing, exit 0.
+        raise ValueError(f"{len(vertices)} vertices and {len(faces)} faces: not an OBJ mesh")
     for f, face in enumerate(faces):
         for v in face:
             if not 0 <= v < len(vertices):
@@ -157,8 +160,17 @@ def main(argv):
 
 if __name__ == "__main__":
     status = main(sys.argv)
-    # Blender's own exit: sys.exit inside --python would be reported as a Python error.
+    # Blender's own exit: sys.exit inside --python would be reported as a Python error. os._exit
+    # skips Blender's clean-up too, which would remove its session folder (blender_XXXX in the
+    # temporary folder): removed here, or every run would leave one behind.
     import os
+    try:
+        import bpy
+        import shutil
+        if bpy.app.tempdir:
+            shutil.rmtree(bpy.app.tempdir, ignore_errors=True)
+    except ImportError:
+        pass
     sys.stdout.flush()
     sys.stderr.flush()
     os._exit(status)

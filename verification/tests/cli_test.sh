@@ -178,6 +178,19 @@ expect suite-bad-shard 2 'expected I/N' -- "$crossdiv" suite "$tmp/cli.suite" --
 expect suite-shard-1 0 'shard 1/2 runs 1' -- "$crossdiv" suite "$tmp/cli.suite" --shard 1/2 --out "$tmp/sh1" --no-report
 expect suite-shard-2 0 'shard 2/2 runs 1' -- "$crossdiv" suite "$tmp/cli.suite" --shard 2/2 --out "$tmp/sh2" --no-report
 expect merge 0 'merged 2 folder' -- "$crossdiv" merge "$tmp/sh1" "$tmp/sh2" --out "$tmp/merged"
+# Blender's adapter script (when Blender is installed): a run leaves no session folder of
+# Blender's behind in the temporary folder, and an input that is not an OBJ mesh is refused.
+if command -v blender > /dev/null; then
+  blender_script="$(dirname "$0")/../../adapters/blender/blender_subdivide.py"
+  mkdir -p "$tmp/blender-tmp"
+  "$crossdiv" subdivide bundled:quad-grid --scheme bilinear --levels 0 -o "$tmp/grid.obj" > /dev/null 2>&1
+  "$crossdiv" subdivide bundled:quad-grid --scheme bilinear --levels 0 -o "$tmp/grid.off" > /dev/null 2>&1
+  expect blender-run 0 '' -- env TMPDIR="$tmp/blender-tmp" blender --background --factory-startup --python "$blender_script" -- \
+    catmull-clark 1 edge-only none "$tmp/grid.obj" "$tmp/blender-out.ply"
+  expect blender-no-session-folder-left 0 '^0$' -- sh -c "ls -A '$tmp/blender-tmp' | wc -l"
+  expect blender-not-obj 2 'grid.off: 0 vertices and 0 faces: not an OBJ mesh' -- env TMPDIR="$tmp/blender-tmp" blender \
+    --background --factory-startup --python "$blender_script" -- catmull-clark 1 edge-only none "$tmp/grid.off" "$tmp/blender-out.ply"
+fi
 expect merge-missing-shard 2 'shard\(s\) 1/2 missing: merge every shard of the run' -- "$crossdiv" merge "$tmp/sh2" --out "$tmp/merged-part"
 expect report-no-results 2 'no results.json \(not a suite output folder' -- "$crossdiv" report "$tmp/own"
 expect suite-shard-extra 2 '--shard 1/3/4: expected I/N' -- "$crossdiv" suite "$tmp/cli.suite" --shard 1/3/4 --out "$tmp/s"
