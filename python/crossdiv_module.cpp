@@ -377,7 +377,7 @@ PYBIND11_MODULE(crossdiv, m) {
           py::arg("boundary") = py::none(), py::arg("impl") = "core", py::arg("max_faces") = kMaxRefinedFaces,
           py::arg("timeout") = 120.0, py::arg("UV") = py::none(), py::arg("FUV") = py::none(), py::arg("fvar") = "all",
           "Subdivides (V, F) by `levels` levels of `scheme` (loop, catmull-clark, doo-sabin, sqrt3, butterfly, "
-          "modified-butterfly) with core or a reference (impl: core, opensubdiv, openmesh, cgal, ...), which applies "
+          "modified-butterfly, bilinear, midpoint) with core or a reference (impl: core, opensubdiv, openmesh, cgal, ...), which applies "
           "the closest rule it has. Returns (V, F) in that implementation's numbering. A result of more than "
           "`max_faces` faces is refused before any work (crossdiv subdivide's --max-faces). A reference runs in a "
           "child process with `timeout` seconds: its crash, hang or refusal raises crossdiv.InputError naming it. "
@@ -433,7 +433,7 @@ PYBIND11_MODULE(crossdiv, m) {
           py::arg("references") = std::vector<std::string>{}, py::arg("tier") = "weak", py::arg("tolerance") = 1e-12,
           py::arg("subject") = py::none(), py::arg("subject_name") = "python", py::arg("timeout") = 120.0,
           py::arg("scheme") = "loop", py::arg("UV") = py::none(), py::arg("FUV") = py::none(), py::arg("fvar") = "all",
-          "Compares `scheme` (loop, catmull-clark, doo-sabin, sqrt3, butterfly, modified-butterfly, bilinear; "
+          "Compares `scheme` (loop, catmull-clark, doo-sabin, sqrt3, butterfly, modified-butterfly, bilinear, midpoint; "
           "weights for Loop, boundary as crossdiv compare names them, each the scheme's default when None) of "
           "(V, F) by core (or `subject`, a function of that scheme) with each reference that has it (all built when empty): "
           "the same record as `crossdiv compare --json` (runs, verdicts, divergence classes, worst vertex; with a "

@@ -8,8 +8,8 @@ Open3D 0.16 (Debian `python3-open3d`) subdivides through its Python module:
   loop   TriangleMesh.subdivide_loop(number_of_iterations=LEVELS): Loop's weights (beta of
          Loop's thesis), the 1-6-1 boundary vertex and the midpoint boundary edge (crossdiv's
          edge-only), no corner rule; positions in double precision.
-(Its other scheme, subdivide_midpoint, splits each triangle into four at the edge midpoints;
-crossdiv has no such scheme to compare it with.)
+  midpoint  TriangleMesh.subdivide_midpoint(number_of_iterations=LEVELS): each triangle into four
+         at its edge midpoints, the old vertices kept (crossdiv's midpoint scheme).
 
 The mesh goes in and out without Open3D's file readers, which may drop or merge vertices: the
 OFF file the harness writes is parsed here into numpy arrays (every vertex kept, in order), and
@@ -21,6 +21,10 @@ be imported (--check prints why and exits 1: the manifest's setup command, so th
 without it records ref-unavailable).
 """
 import sys
+
+
+# crossdiv's scheme name -> Open3D's TriangleMesh method.
+SUBDIVIDE = {"loop": "subdivide_loop", "midpoint": "subdivide_midpoint"}
 
 
 def read_off(path):
@@ -71,8 +75,8 @@ def main(argv):
         print(__doc__.strip().splitlines()[2], file=sys.stderr)
         return 2
     scheme, levels, mesh_in, mesh_out = argv[1:]
-    if scheme != "loop":
-        print(f"open3d has no {scheme} here (it has: loop)", file=sys.stderr)
+    if scheme not in SUBDIVIDE:
+        print(f"open3d has no {scheme} here (it has: {', '.join(SUBDIVIDE)})", file=sys.stderr)
         return 2
     if not levels.isdigit() or int(levels) < 1:
         print(f"levels must be a positive integer, got '{levels}'", file=sys.stderr)
@@ -83,7 +87,7 @@ def main(argv):
         print(f"cannot read {mesh_in}: {e}", file=sys.stderr)
         return 2
     mesh = o3d.geometry.TriangleMesh(o3d.utility.Vector3dVector(vertices), o3d.utility.Vector3iVector(triangles))
-    result = mesh.subdivide_loop(number_of_iterations=int(levels))
+    result = getattr(mesh, SUBDIVIDE[scheme])(number_of_iterations=int(levels))
     write_ply(mesh_out, np.asarray(result.vertices), np.asarray(result.triangles))
     return 0
 

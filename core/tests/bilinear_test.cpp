@@ -10,9 +10,8 @@
 namespace crossdiv {
 namespace {
 
-using test::expect_near;  // within 1e-15: sums of two to four halves or quarters of small integers
-
-std::vector<int> face(const PolyMesh& m, int f) { return {m.face(f), m.face(f) + m.face_size(f)}; }
+using test::expect_near;
+using test::face_corners;  // within 1e-15: sums of two to four halves or quarters of small integers
 
 TEST(Bilinear, AQuadBecomesFourQuadsAroundItsCentre) {
     PolyMesh m;
@@ -28,10 +27,10 @@ TEST(Bilinear, AQuadBecomesFourQuadsAroundItsCentre) {
     expect_near(r.positions[7], Vec3(1, 2, 1));    // edge 2-3
     expect_near(r.positions[8], Vec3(0, 1, 1));    // edge 3-0
     // Quad k = (v_k, E(v_k v_k+1), F, E(v_k-1 v_k)).
-    EXPECT_EQ(face(r, 0), (std::vector<int>{0, 5, 4, 8}));
-    EXPECT_EQ(face(r, 1), (std::vector<int>{1, 6, 4, 5}));
-    EXPECT_EQ(face(r, 2), (std::vector<int>{2, 7, 4, 6}));
-    EXPECT_EQ(face(r, 3), (std::vector<int>{3, 8, 4, 7}));
+    EXPECT_EQ(face_corners(r, 0), (std::vector<int>{0, 5, 4, 8}));
+    EXPECT_EQ(face_corners(r, 1), (std::vector<int>{1, 6, 4, 5}));
+    EXPECT_EQ(face_corners(r, 2), (std::vector<int>{2, 7, 4, 6}));
+    EXPECT_EQ(face_corners(r, 3), (std::vector<int>{3, 8, 4, 7}));
 }
 
 TEST(Bilinear, ATriangleBecomesThreeQuadsAndTwoLevelsStayOnItsPlane) {

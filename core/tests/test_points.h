@@ -20,6 +20,9 @@ inline constexpr double kEps = std::numeric_limits<double>::epsilon();
 /// A point written short: v(1, 2) is (1, 2, 0).
 inline Vec3 v(double x, double y, double z = 0) { return {x, y, z}; }
 
+/// The corners of face `f` of `m`, as a vector to compare whole.
+inline std::vector<int> face_corners(const PolyMesh& m, int f) { return {m.face(f), m.face(f) + m.face_size(f)}; }
+
 /// Expects `got` within `tol` (Euclidean distance) of `want`.
 inline void expect_near(const Vec3& got, const Vec3& want, double tol = 1e-15) {
     EXPECT_LE((got - want).norm(), tol) << got.transpose() << " vs " << want.transpose();

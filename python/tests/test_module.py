@@ -192,6 +192,7 @@ def test_a_python_subject_of_every_scheme_is_named():
     import butterfly
     import catmull_clark
     import doo_sabin
+    import midpoint
     import modified_butterfly
     import sqrt3
     V = np.array([[x, y, 0.1 * ((x * x + 2 * y) % 3)] for y in range(4) for x in range(4)], dtype=float)
@@ -199,7 +200,8 @@ def test_a_python_subject_of_every_scheme_is_named():
                   for t in ([4 * y + x, 4 * y + x + 1, 4 * y + x + 5], [4 * y + x, 4 * y + x + 5, 4 * y + x + 4])])
     expected = {"catmull-clark": (catmull_clark, "edge-only"), "doo-sabin": (doo_sabin, "drop-border-faces"),
                 "sqrt3": (sqrt3, "restart-each-level"), "butterfly": (butterfly, "reflected-wings"),
-                "modified-butterfly": (modified_butterfly, "reflected-wings"), "bilinear": (bilinear, "linear")}
+                "modified-butterfly": (modified_butterfly, "reflected-wings"), "bilinear": (bilinear, "linear"),
+                "midpoint": (midpoint, "linear")}
     def as_lists(subdivide):  # the programs take Python lists, as the course's tables are
         return lambda V, F: subdivide(np.asarray(V, dtype=float).tolist(), [[int(i) for i in f] for f in F])
     for scheme, (module, rule) in expected.items():

@@ -13,7 +13,7 @@ import numpy as np
 
 import crossdiv
 
-SCHEMES = ["loop", "catmull-clark", "doo-sabin", "sqrt3", "butterfly", "modified-butterfly", "bilinear"]
+SCHEMES = ["loop", "catmull-clark", "doo-sabin", "sqrt3", "butterfly", "modified-butterfly", "bilinear", "midpoint"]
 REFUSALS = (crossdiv.InputError, ValueError, TypeError)
 
 

@@ -57,7 +57,8 @@ struct SchemeArgs {
     void add_scheme_options(CLI::App& app, long long max_faces_default) {
         std::vector<std::string> schemes;
         for (Scheme s : all_schemes()) schemes.push_back(to_string(s));
-        app.add_option("--scheme", scheme, "Subdivision scheme (bilinear: OpenSubdiv's, the 'simple' subdivision of modellers)")
+        app.add_option("--scheme", scheme, "Subdivision scheme (bilinear: OpenSubdiv's, the 'simple' subdivision of modellers; midpoint: "
+                       "triangles into four at their edge midpoints, VTK's and Open3D's linear subdivision)")
             ->check(CLI::IsMember(schemes))
             ->capture_default_str();
         app.add_option("--weights", weights,
@@ -71,8 +72,8 @@ struct SchemeArgs {
                        "(CGAL's); sqrt3, when the boundary is refined: count-from-input (default) or "
                        "restart-each-level (a library called once per level); the Butterflies, for a wing point "
                        "beyond the boundary: reflected-wings (default), opposite-vertex-wings (MeshLab's) or other-face-wings "
-                       "(VTK's, with its other boundary choices); bilinear: linear "
-                       "(its one rule); loop and "
+                       "(VTK's, with its other boundary choices); bilinear and midpoint: linear "
+                       "(their one rule); loop and "
                        "catmull-clark also none (OpenSubdiv's VTX_BOUNDARY_NONE: edge-only, the faces at the boundary "
                        "not emitted). Default: the file's 't interpolateboundary' tag, else the scheme's default")
             ->check(CLI::IsMember({"edge-only", "edge-and-corner", "midpoint-average", "chaikin-boundary",

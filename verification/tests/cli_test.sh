@@ -187,7 +187,8 @@ if command -v blender > /dev/null; then
   "$crossdiv" subdivide bundled:quad-grid --scheme bilinear --levels 0 -o "$tmp/grid.off" > /dev/null 2>&1
   expect blender-run 0 '' -- env TMPDIR="$tmp/blender-tmp" blender --background --factory-startup --python "$blender_script" -- \
     catmull-clark 1 edge-only none "$tmp/grid.obj" "$tmp/blender-out.ply"
-  expect blender-no-session-folder-left 0 '^0$' -- sh -c "ls -A '$tmp/blender-tmp' | wc -l"
+  # The count, then what is there (named in a failure's output).
+  expect blender-no-session-folder-left 0 '^0$' -- sh -c "ls -A '$tmp/blender-tmp' | wc -l; ls -lAR '$tmp/blender-tmp'"
   expect blender-not-obj 2 'grid.off: 0 vertices and 0 faces: not an OBJ mesh' -- env TMPDIR="$tmp/blender-tmp" blender \
     --background --factory-startup --python "$blender_script" -- catmull-clark 1 edge-only none "$tmp/grid.off" "$tmp/blender-out.ply"
 fi

@@ -25,6 +25,20 @@ PolyMesh square_pair() {  // unit square as two triangles: 4 vertices, 5 edges, 
     return m;
 }
 
+/// The one run of `reference` on `mesh`: 2 levels of (scheme, rule).
+RefinementRun only_run(const char* reference, const PolyMesh& mesh, Scheme scheme, const SchemeRule& rule,
+                       double timeout_seconds = 120) {
+    RefinementRequest req;
+    req.scheme = scheme;
+    req.rule = rule;
+    req.levels = 2;
+    req.references = {reference};
+    req.timeout_seconds = timeout_seconds;
+    const RefinementComparison c = compare_refinement(mesh, "mesh", req);
+    EXPECT_EQ(c.runs.size(), 1u);
+    return c.runs.at(0);
+}
+
 // OpenMesh lacks Loop's corner rule and, at an isolated vertex, writes whatever is in memory
 // (LoopT::smooth returns before writing it). Both at once are named, never unexplained: the
 // corner rule, with the isolated vertex too when it moved; and run again with its heap filled
@@ -59,13 +73,9 @@ TEST(Compare, ACornerRuleBesideAnIsolatedVertexIsNamedBoth) {
 TEST(Compare, VtkIsLoopInTheFloatTierWithoutTheCornerRule) {
     CROSSDIV_REQUIRE_LIBRARIES("vtk");
     auto run = [](const PolyMesh& mesh, LoopBoundary boundary) {
-        RefinementRequest req;
-        req.rule.loop = {LoopWeights::Loop, boundary};
-        req.levels = 2;
-        req.references = {"vtk"};
-        const RefinementComparison c = compare_refinement(mesh, "mesh", req);
-        EXPECT_EQ(c.runs.size(), 1u);
-        return c.runs.at(0);
+        SchemeRule rule;
+        rule.loop = {LoopWeights::Loop, boundary};
+        return only_run("vtk", mesh, Scheme::Loop, rule);
     };
     for (const char* name : {"icosahedron", "open-patch", "cube-asymmetric", "fan-5"}) {
         const auto r = run(datasets::bundled_mesh(name), LoopBoundary::EdgeOnly);
@@ -86,14 +96,9 @@ TEST(Compare, VtkIsLoopInTheFloatTierWithoutTheCornerRule) {
 TEST(Compare, VtksButterflyIsTheModifiedButterflyWithItsOwnBoundaryChoices) {
     CROSSDIV_REQUIRE_LIBRARIES("vtk");
     auto run = [](const PolyMesh& mesh, ButterflyWings wings) {
-        RefinementRequest req;
-        req.scheme = Scheme::ModifiedButterfly;
-        req.rule.butterfly_wings = wings;
-        req.levels = 2;
-        req.references = {"vtk"};
-        const RefinementComparison c = compare_refinement(mesh, "mesh", req);
-        EXPECT_EQ(c.runs.size(), 1u);
-        return c.runs.at(0);
+        SchemeRule rule;
+        rule.butterfly_wings = wings;
+        return only_run("vtk", mesh, Scheme::ModifiedButterfly, rule);
     };
     for (const char* name : {"icosahedron", "open-patch", "fan-5", "torus"}) {
         const auto r = run(datasets::bundled_mesh(name), ButterflyWings::OtherFaceVertex);
@@ -107,6 +112,19 @@ TEST(Compare, VtksButterflyIsTheModifiedButterflyWithItsOwnBoundaryChoices) {
     }
 }
 
+// VTK's vtkLinearSubdivisionFilter is the midpoint scheme: each edge point the midpoint of its
+// edge, stored in float (the float tier), the old vertices where they were; it refuses a
+// non-manifold edge as its other filters do.
+TEST(Compare, VtksLinearFilterIsTheMidpointScheme) {
+    CROSSDIV_REQUIRE_LIBRARIES("vtk");
+    for (const char* name : {"icosahedron", "open-patch", "fan-5", "torus"}) {
+        const auto r = only_run("vtk", datasets::bundled_mesh(name), Scheme::Midpoint, {});
+        EXPECT_EQ(r.verdict, Verdict::Agree) << name << ": " << r.explanation;
+    }
+    const auto rejected = only_run("vtk", datasets::edge_case("nonmanifold-edge-3").mesh, Scheme::Midpoint, {});
+    EXPECT_EQ(rejected.outcome.status, RunStatus::Rejected) << rejected.outcome.message;
+}
+
 // OpenSubdiv's Hbr, the second implementation OpenSubdiv ships: float weights, so the float
 // tier. It agrees with core under each rule it has; it splits a bowtie's centre into one vertex
 // per fan (non-manifold-handling, measured against core on the split mesh); it refuses what its
@@ -114,16 +132,8 @@ TEST(Compare, VtksButterflyIsTheModifiedButterflyWithItsOwnBoundaryChoices) {
 // where its Loop loops forever in HbrVertex::AddIncidentEdge making level 2, are refused by name.
 TEST(Compare, HbrIsOpenSubdivsSecondImplementationInTheFloatTier) {
     CROSSDIV_REQUIRE_LIBRARIES("hbr");
-    auto run = [](const PolyMesh& mesh, Scheme scheme, SchemeRule rule, double timeout = 60) {
-        RefinementRequest req;
-        req.scheme = scheme;
-        req.rule = rule;
-        req.levels = 2;
-        req.references = {"hbr"};
-        req.timeout_seconds = timeout;
-        const RefinementComparison c = compare_refinement(mesh, "mesh", req);
-        EXPECT_EQ(c.runs.size(), 1u);
-        return c.runs.at(0);
+    auto run = [](const PolyMesh& mesh, Scheme scheme, const SchemeRule& rule, double timeout = 60) {
+        return only_run("hbr", mesh, scheme, rule, timeout);
     };
     SchemeRule loop, loop_corners, catmark, catmark_corners;
     loop.loop = {LoopWeights::Loop, LoopBoundary::EdgeOnly};

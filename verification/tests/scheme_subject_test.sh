@@ -26,6 +26,11 @@ case "$scheme" in
         want="modified-butterfly scheme, the reflected-wings rule; agrees with openmesh on 58 of 59 inputs, vtk on 17 of 57 inputs \(rounding, short-boundary-loop, wing-rule\)" ;;
   bilinear) script="python-schemes/bilinear.py" code=1
         want="bilinear scheme, the linear rule; agrees with opensubdiv, hbr on 59 of 63 inputs \(non-manifold-handling\); agrees with core linear to 0 on 71 of 71 meshes; failed on 1 of 72 inputs" ;;
+  # Its edge table has one edge per vertex pair, as Open3D's: on the inputs whose faces name a
+  # pair more than once (valence-2, duplicate-face, repeated-vertex-triangle) it makes fewer
+  # edge points than OpenSubdiv's edges, a wrong count.
+  midpoint) script="python-schemes/midpoint.py" code=1
+        want="midpoint scheme, the linear rule; agrees with vtk; agrees with core linear to 0 on 69 of 69 meshes; failed on 3 of 72 inputs" ;;
   *) echo "unknown scheme $scheme"; exit 2 ;;
 esac
 out="$("$crossdiv" compare bundled:all edgecases:all --scheme "$scheme" --levels 2 --subject-name student \

@@ -212,7 +212,7 @@ TEST_P(SchemeProgramFailure, GetsItsOutcomeInEveryScheme) {
                              : f.scheme == Scheme::CatmullClark        ? "edge-only"
                              : f.scheme == Scheme::DooSabin            ? "drop-border-faces"
                              : f.scheme == Scheme::Sqrt3               ? "restart-each-level"
-                             : f.scheme == Scheme::Bilinear            ? "linear"
+                             : f.scheme == Scheme::Bilinear || f.scheme == Scheme::Midpoint ? "linear"
                                                                        : "reflected-wings";
     EXPECT_EQ(rule, want) << to_string(f.scheme);
 }
@@ -477,15 +477,16 @@ const VertexClassRow* class_row(const RuleIdentification& id, VertexClass cls, i
 }
 
 TEST(SchemeSubject, WhenNoRuleOfItsSchemeFitsTheSchemesWithItsConnectivityAreTried) {
-    // A midpoint subdivision handed in as Loop: no Loop rule fits, and at level 1 it is
-    // bilinear's points on Loop's connectivity; no Butterfly fits it.
+    // A midpoint subdivision handed in as Loop: no Loop rule fits, and at level 1 it is the
+    // midpoint scheme, whose connectivity is Loop's; no Butterfly fits it.
     const auto midpoint = program(misbehaving("midpoint"));
     const RefinementComparison mid = compare_with(*midpoint, "open-patch", 2);
     ASSERT_TRUE(mid.rules) << mid.subject_outcome.summary();
     EXPECT_FALSE(mid.rules->rule);
     const OtherSchemeFit* it = mid.rules->other_scheme();
     ASSERT_TRUE(it);
-    EXPECT_EQ(it->label(), "bilinear (midpoint)");
+    EXPECT_EQ(it->scheme, Scheme::Midpoint);
+    EXPECT_EQ(it->label(), "midpoint");
     EXPECT_EQ(it->max_rel, 0);  // the same sums in the same order
     for (const OtherSchemeFit& f : mid.rules->other_schemes) {
         if (f.scheme == Scheme::Butterfly || f.scheme == Scheme::ModifiedButterfly) {

@@ -45,12 +45,14 @@ TEST(ValenceBench, EachRowMeasuresTheWorkItNames) {
         EXPECT_TRUE(std::isfinite(r.ratio()));
         size[{std::string(datasets::to_string(r.shape)), r.command}] = r.size;
     }
-    // Every scheme on the triangle shapes; Catmull-Clark, Doo-Sabin and bilinear on the polygon: 8 + 8 + 4.
-    EXPECT_EQ(size.size(), 20u);
+    // Every scheme on the triangle shapes; Catmull-Clark, Doo-Sabin and bilinear on the polygon: 9 + 9 + 4.
+    EXPECT_EQ(size.size(), 22u);
     // check: the input's corners.
     EXPECT_EQ((size[{"bicone", "check"}]), 6 * k);
     // Loop on the bicone (k + 2 vertices, 3k edges, 2k faces): (4k + 2) vertices + 8k faces.
     EXPECT_EQ((size[{"bicone", "loop"}]), 12 * k + 2);
+    // Midpoint has Loop's topology.
+    EXPECT_EQ((size[{"bicone", "midpoint"}]), 12 * k + 2);
     // sqrt3 on the closed bicone: a point per face, three faces per old face.
     EXPECT_EQ((size[{"bicone", "sqrt3"}]), (k + 2 + 2 * k) + 6 * k);
     // Catmull-Clark on the polygon: 1 face point, k edge points, k vertex points; k quads.

@@ -5,17 +5,38 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <numeric>
 
 #include "crossdiv/adapters/assimp.h"
 #include "crossdiv/error.h"
+#include "crossdiv/io/mesh_io.h"
 
 namespace crossdiv::adapters::assimp {
 
 const std::vector<std::string>& extensions() {
-    // PLY is read by core (io/ply.cpp), which keeps the file's vertex order and binary floats exactly.
-    static const std::vector<std::string> ext = {".dae", ".stl"};
+    // Every format this Assimp reads, from its own list ("*.3ds;*.ac;..."), but the ones core
+    // reads itself (OBJ with its tags, OFF, PLY: the file's vertex order and binary floats
+    // kept exactly).
+    static const std::vector<std::string> ext = [] {
+        std::string list;
+        Assimp::Importer().GetExtensionList(list);
+        std::vector<std::string> out;
+        for (size_t at = 0; at < list.size();) {
+            size_t end = list.find(';', at);
+            if (end == std::string::npos) end = list.size();
+            std::string e = list.substr(at, end - at);
+            at = end + 1;
+            if (e.starts_with("*")) e.erase(0, 1);
+            std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+            const bool core_reads = std::any_of(mesh_extensions().begin(), mesh_extensions().end(),
+                                                [&](std::string_view own) { return own == e; });
+            if (e.size() > 1 && e[0] == '.' && !core_reads && std::find(out.begin(), out.end(), e) == out.end()) out.push_back(e);
+        }
+        std::sort(out.begin(), out.end());
+        return out;
+    }();
     return ext;
 }
 

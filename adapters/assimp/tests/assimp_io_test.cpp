@@ -2,6 +2,7 @@
 // bad files named.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -102,6 +103,62 @@ end_header
     EXPECT_EQ(p.num_faces(), 2);
     EXPECT_EQ(p.num_vertices(), 4);
     EXPECT_EQ(p.positions[2], Vec3(1, 1, 0));
+}
+
+// Every format Assimp lists is read through it, but the three core reads itself.
+TEST(Assimp, ReadsEveryFormatItListsButCoresOwn) {
+    const std::vector<std::string>& ext = extensions();
+    for (const char* e : {".dae", ".stl", ".ac", ".lwo", ".fbx", ".gltf", ".glb", ".3ds", ".blend", ".x", ".ase", ".amf"})
+        EXPECT_NE(std::find(ext.begin(), ext.end(), e), ext.end()) << e;
+    for (const char* e : {".obj", ".off", ".ply"}) EXPECT_EQ(std::find(ext.begin(), ext.end(), e), ext.end()) << e;
+    EXPECT_TRUE(std::is_sorted(ext.begin(), ext.end()));
+}
+
+// An AC3D file of two objects, a quad and a triangle beside it, each with its own vertex list:
+// the scene's objects become one mesh, welded where their positions are bit-identical.
+const char* kTwoObjectsAc = R"(AC3Db
+MATERIAL "" rgb 1 1 1  amb 0.2 0.2 0.2  emis 0 0 0  spec 0.5 0.5 0.5  shi 10  trans 0
+OBJECT world
+kids 2
+OBJECT poly
+name "quad"
+numvert 4
+0 0 0
+1 0 0
+1 1 0
+0 1 0
+numsurf 1
+SURF 0x10
+mat 0
+refs 4
+0 0 0
+1 0 0
+2 0 0
+3 0 0
+kids 0
+OBJECT poly
+name "triangle"
+numvert 3
+1 0 0
+2 0.5 0
+1 1 0
+numsurf 1
+SURF 0x10
+mat 0
+refs 3
+0 0 0
+1 0 0
+2 0 0
+kids 0
+)";
+
+TEST(Assimp, TheObjectsOfAnAc3dFileAreWeldedByPosition) {
+    const PolyMesh m = read_mesh(write_temp("two.ac", kTwoObjectsAc));
+    ASSERT_EQ(m.num_faces(), 2);
+    EXPECT_EQ(m.face_size(0) + m.face_size(1), 7);  // a quad and a triangle, as written
+    ASSERT_EQ(m.num_vertices(), 5);                  // 7 vertices written, 2 of them twice
+    for (const Vec3& p : {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0), Vec3(2, 0.5, 0)})
+        EXPECT_NE(std::find(m.positions.begin(), m.positions.end(), p), m.positions.end()) << p.transpose();
 }
 
 TEST(Assimp, UnreadableFileNamesTheFile) {

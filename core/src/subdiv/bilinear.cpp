@@ -7,6 +7,7 @@
 #include "crossdiv/subdiv/bilinear_mask.h"
 #include "crossdiv/subdiv/nonmanifold.h"
 #include "level_loop.h"
+#include "linear_rows.h"
 
 namespace crossdiv {
 
@@ -26,20 +27,13 @@ RefinementStep bilinear_step(const PolyMesh& mesh) {
     const std::vector<std::array<int, 2>> edges = add_quad_split(mesh, step);
     StencilTable& st = step.stencils;
     st.reserve(static_cast<size_t>(nv) + nf + edges.size(), static_cast<size_t>(nv + nc) + 2 * edges.size());
-    for (int v = 0; v < nv; ++v) {
-        st.add(v, kBilinearVertexSelf);
-        st.end_row();
-    }
+    detail::add_kept_vertex_rows(st, nv);
     for (int f = 0; f < nf; ++f) {
         const double w = bilinear_face_corner(mesh.face_size(f));
         for (int c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) st.add(mesh.face_vertices[c], w);
         st.end_row();
     }
-    for (const auto& [a, b] : edges) {
-        st.add(a, kBilinearEdgeEnd);
-        st.add(b, kBilinearEdgeEnd);
-        st.end_row();
-    }
+    detail::add_edge_midpoint_rows(st, edges);
     return step;
 }
 

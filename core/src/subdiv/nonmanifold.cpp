@@ -263,6 +263,41 @@ bool add_sharp_vertex_row(StencilTable& st, const GeneralTopology& t, int v) {
     }
 }
 
+/// Four triangles per triangle (v_k, E(k), E(k-1)) for k = 0, 1, 2, then (E0, E1, E2) --
+/// loop_step's order -- with the refined edges stated per corner: two halves per edge, three
+/// inside the face (i_k opposite corner k's child), so that edges of different faces with the
+/// same ends stay apart.
+void add_triangles(const GeneralTopology& t, int nv, RefinementStep& step) {
+    const PolyMesh& mesh = *t.mesh;
+    const int nf = mesh.num_faces(), ne = t.num_edges();
+    step.face_vertices.reserve(12 * static_cast<size_t>(nf));
+    step.corner_edges.reserve(12 * static_cast<size_t>(nf));
+    for (int f = 0; f < nf; ++f) {
+        const int c = mesh.face_start[f];
+        const int* v = mesh.face(f);
+        const int m0 = nv + t.corner_edge[static_cast<size_t>(c)], m1 = nv + t.corner_edge[static_cast<size_t>(c) + 1],
+                  m2 = nv + t.corner_edge[static_cast<size_t>(c) + 2];
+        step.add_face({v[0], m0, m2});
+        step.add_face({v[1], m1, m0});
+        step.add_face({v[2], m2, m1});
+        step.add_face({m0, m1, m2});
+        const int i0 = 2 * ne + 3 * f, i1 = i0 + 1, i2 = i0 + 2;
+        step.corner_edges.insert(step.corner_edges.end(),
+                                 {t.child_half(c, true), i0, t.child_half(c + 2, false),      // v0 m0 m2
+                                  t.child_half(c + 1, true), i1, t.child_half(c, false),      // v1 m1 m0
+                                  t.child_half(c + 2, true), i2, t.child_half(c + 1, false),  // v2 m2 m1
+                                  i1, i2, i0});                                               // m0 m1 m2
+    }
+}
+
+/// The ends of each edge, in edge-point order.
+std::vector<std::array<int, 2>> edge_ends(const GeneralTopology& t) {
+    std::vector<std::array<int, 2>> ends;
+    ends.reserve(static_cast<size_t>(t.num_edges()));
+    for (int h : t.edge_first) ends.push_back({t.vertex(h), t.vertex(t.next(h))});
+    return ends;
+}
+
 }  // namespace
 
 RefinementStep loop_nonmanifold_step(const PolyMesh& mesh, const LoopOptions& options) {
@@ -306,26 +341,7 @@ RefinementStep loop_nonmanifold_step(const PolyMesh& mesh, const LoopOptions& op
         }
         st.end_row();
     }
-    step.face_vertices.reserve(12 * static_cast<size_t>(nf));
-    step.corner_edges.reserve(12 * static_cast<size_t>(nf));
-    for (int f = 0; f < nf; ++f) {
-        const int c = mesh.face_start[f];
-        const int* v = mesh.face(f);
-        const int m0 = nv + t.corner_edge[static_cast<size_t>(c)], m1 = nv + t.corner_edge[static_cast<size_t>(c) + 1],
-                  m2 = nv + t.corner_edge[static_cast<size_t>(c) + 2];
-        step.add_face({v[0], m0, m2});
-        step.add_face({v[1], m1, m0});
-        step.add_face({v[2], m2, m1});
-        step.add_face({m0, m1, m2});
-        // The child edges: two halves per edge, three inside the face (i_k opposite corner k's
-        // child), so that edges of different faces with the same ends stay apart.
-        const int i0 = 2 * ne + 3 * f, i1 = i0 + 1, i2 = i0 + 2;
-        step.corner_edges.insert(step.corner_edges.end(),
-                                 {t.child_half(c, true), i0, t.child_half(c + 2, false),      // v0 m0 m2
-                                  t.child_half(c + 1, true), i1, t.child_half(c, false),      // v1 m1 m0
-                                  t.child_half(c + 2, true), i2, t.child_half(c + 1, false),  // v2 m2 m1
-                                  i1, i2, i0});                                               // m0 m1 m2
-    }
+    add_triangles(t, nv, step);
     step.creases.holes = child_holes(mesh.creases.holes, [](int f) { return 4 * f; });
     return step;
 }
@@ -410,18 +426,18 @@ RefinementStep catmull_clark_nonmanifold_step(const PolyMesh& mesh, const Catmul
 std::vector<std::array<int, 2>> add_quad_split(const PolyMesh& mesh, RefinementStep& step) {
     const GeneralTopology t = complete_topology(mesh, false);
     add_quads(t, mesh.num_vertices(), mesh.num_faces(), step);
-    std::vector<std::array<int, 2>> ends;
-    ends.reserve(static_cast<size_t>(t.num_edges()));
-    for (int h : t.edge_first) ends.push_back({t.vertex(h), t.vertex(t.next(h))});
-    return ends;
+    return edge_ends(t);
+}
+
+std::vector<std::array<int, 2>> add_triangle_split(const PolyMesh& mesh, RefinementStep& step) {
+    const GeneralTopology t = complete_topology(mesh, false);
+    add_triangles(t, mesh.num_vertices(), step);
+    return edge_ends(t);
 }
 
 std::vector<std::array<int, 2>> nonmanifold_edges(const PolyMesh& mesh) {
     const GeneralTopology t = complete_topology(mesh, false);
-    std::vector<std::array<int, 2>> ends;
-    ends.reserve(static_cast<size_t>(t.num_edges()));
-    for (int h : t.edge_first) ends.push_back({t.vertex(h), t.vertex(t.next(h))});
-    return ends;
+    return edge_ends(t);
 }
 
 std::vector<int> nonmanifold_vertices(const PolyMesh& mesh) {

@@ -5,16 +5,11 @@ exercise, before the smoothing. Standard library only.
 
     python3 bilinear.py IN.obj LEVELS OUT.obj
 """
-from polymesh import Tables, add, centroid, main, scale
+from polymesh import Tables, centroid, main, with_edge_midpoints
 
 
 def subdivide(verts, faces):
-    t = Tables(verts, faces)
-    edge_index = {}
-    new_verts = [list(p) for p in verts]
-    for a, b in t.edges:
-        edge_index[(a, b)] = len(new_verts)
-        new_verts.append(scale(add(verts[a], verts[b]), 0.5))
+    new_verts, edge_index = with_edge_midpoints(verts, Tables(verts, faces))
     new_faces = []
     for f in faces:
         centre = len(new_verts)

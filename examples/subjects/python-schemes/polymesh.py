@@ -58,6 +58,17 @@ def combine(verts, terms):
     return p
 
 
+def with_edge_midpoints(verts, t):
+    """The old vertices, then one midpoint per edge of the Tables `t` (in its edge order), and
+    each edge's index among them: the first half of every linear subdivision."""
+    new_verts = [list(p) for p in verts]
+    edge_index = {}
+    for a, b in t.edges:
+        edge_index[(a, b)] = len(new_verts)
+        new_verts.append(scale(add(verts[a], verts[b]), 0.5))
+    return new_verts, edge_index
+
+
 def centroid(verts, face):
     return combine(verts, [(i, 1.0 / len(face)) for i in face])
 

@@ -52,7 +52,8 @@ DivergenceClass rule_difference_class(Scheme scheme, const SchemeRule& applied, 
         case Scheme::Sqrt3: return DivergenceClass::Parity;
         case Scheme::Butterfly:
         case Scheme::ModifiedButterfly: return DivergenceClass::WingRule;
-        case Scheme::Bilinear: break;  // one rule: no rule difference to name
+        case Scheme::Bilinear:
+        case Scheme::Midpoint: break;  // one rule: no rule difference to name
     }
     return DivergenceClass::BoundaryRule;
 }

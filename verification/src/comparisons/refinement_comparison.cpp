@@ -249,7 +249,8 @@ std::string rule_effect(Scheme scheme, const std::string& ref, const std::string
                                                     : "")
                               : " reflects a wing point beyond the boundary across the wing edge");
         case Scheme::CatmullClark:
-        case Scheme::Bilinear: break;
+        case Scheme::Bilinear:
+        case Scheme::Midpoint: break;
     }
     return ref + " applies the " + rule + " boundary rule";
 }

@@ -163,7 +163,7 @@ double level_one_distance(const PolyMesh& subject, const std::vector<VertexBirth
 
 /// The schemes whose refinement has the connectivity of `scheme`'s (itself excluded).
 std::vector<Scheme> same_connectivity(Scheme scheme) {
-    const std::vector<Scheme> triangle_split{Scheme::Loop, Scheme::Butterfly, Scheme::ModifiedButterfly};
+    const std::vector<Scheme> triangle_split{Scheme::Loop, Scheme::Butterfly, Scheme::ModifiedButterfly, Scheme::Midpoint};
     const std::vector<Scheme> quad_split{Scheme::CatmullClark, Scheme::Bilinear};
     for (const auto& family : {triangle_split, quad_split})
         if (std::find(family.begin(), family.end(), scheme) != family.end()) {
@@ -203,7 +203,8 @@ std::vector<OtherSchemeFit> fit_other_schemes(Scheme scheme, const PolyMesh& inp
     const std::vector<Scheme> others = same_connectivity(scheme);
     for (Scheme other : others)
         for (const SchemeRule& r : named_rules(other)) measure(input, other, r, rule_name(other, r));
-    if (std::find(others.begin(), others.end(), Scheme::Bilinear) == others.end() && scheme != Scheme::Bilinear) {
+    const auto linear = [](Scheme s) { return s == Scheme::Bilinear || s == Scheme::Midpoint; };
+    if (std::none_of(others.begin(), others.end(), linear) && !linear(scheme)) {
         // Midpoint averaging on this connectivity: each point the average of what it was born from.
         PolyMesh midpoint = subject;
         for (size_t v = 0; v < births.size(); ++v) {
@@ -229,7 +230,10 @@ std::vector<OtherSchemeFit> fit_other_schemes(Scheme scheme, const PolyMesh& inp
 }  // namespace
 
 std::string OtherSchemeFit::label() const {
-    return rule == "midpoint" ? std::string(to_string(scheme)) + " (midpoint)" : std::string(to_string(scheme)) + " " + rule;
+    if (rule == "midpoint") return std::string(to_string(scheme)) + " (midpoint)";
+    // A scheme of one rule is named alone ("midpoint", not "midpoint linear").
+    if (rule == "linear") return to_string(scheme);
+    return std::string(to_string(scheme)) + " " + rule;
 }
 
 bool OtherSchemeFit::tags_ignored() const { return rule.ends_with(", tags ignored"); }

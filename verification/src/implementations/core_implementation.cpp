@@ -1,4 +1,4 @@
-// Core as an implementation: every scheme (bilinear too) under every named rule, with crease tags for Loop
+// Core as an implementation: every scheme (bilinear and midpoint too) under every named rule, with crease tags for Loop
 // and Catmull-Clark, limit positions for both, discrete curvature.
 #include "crossdiv/mesh/discrete_curvature.h"
 #include "crossdiv/subdiv/bilinear.h"
@@ -11,6 +11,7 @@
 #include "crossdiv/subdiv/limit.h"
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/subdiv/loop_streaming.h"
+#include "crossdiv/subdiv/midpoint.h"
 #include "crossdiv/subdiv/nonmanifold.h"
 #include "crossdiv/subdiv/sqrt3.h"
 #include "library_implementations.h"
@@ -42,7 +43,8 @@ Capabilities core_capabilities() {
                  supports(Scheme::Butterfly, {butterfly_rule(ButterflyWings::Reflected), butterfly_rule(ButterflyWings::OppositeVertex)}),
                  supports(Scheme::ModifiedButterfly,
                           {butterfly_rule(ButterflyWings::Reflected), butterfly_rule(ButterflyWings::OppositeVertex)}),
-                 with_face_varying(supports(Scheme::Bilinear, {SchemeRule{}}))};
+                 with_face_varying(supports(Scheme::Bilinear, {SchemeRule{}})),
+                 supports(Scheme::Midpoint, {SchemeRule{}})};
     c.limit_positions = true;
     c.curvatures = true;
     return c;
@@ -59,6 +61,7 @@ PolyMesh subdivide(const PolyMesh& mesh, const RefineRequest& r, int levels) {
         case Scheme::ModifiedButterfly:
             return butterfly_subdivide(mesh, ButterflyVariant::Modified, levels, r.rule.butterfly_wings);
         case Scheme::Bilinear: return bilinear_subdivide(mesh, levels);
+        case Scheme::Midpoint: return midpoint_subdivide(mesh, levels);
     }
     throw InputError("unknown scheme");
 }
@@ -113,7 +116,8 @@ Refinement refinement(const PolyMesh& mesh, const RefineRequest& r, bool births)
     Refinement out{{mesh}, {}};
     adapters::LevelTrace& trace = out.levels;
     using Kind = VertexBirth::Kind;
-    if (r.scheme == Scheme::Loop && mesh.creases.empty()) {
+    const bool loop = r.scheme == Scheme::Loop && mesh.creases.empty();
+    if (loop) {
         try {
             LoopRefiner refiner(to_tri_mesh(mesh, "Loop subdivision"), r.rule.loop);
             refiner.refine(r.levels);
@@ -129,6 +133,10 @@ Refinement refinement(const PolyMesh& mesh, const RefineRequest& r, bool births)
             // Not a manifold: loop_subdivide takes OpenSubdiv's rules level by level below
             // (or refuses, under NonManifoldRule::Refuse).
         }
+    }
+    // Loop's non-manifold levels and the midpoint scheme's: edge points in the order Far
+    // numbers the edges (nonmanifold.h).
+    if (loop || r.scheme == Scheme::Midpoint) {
         for (int l = 1; l <= r.levels; ++l) {
             const PolyMesh& coarse = trace.back();
             PolyMesh fine = subdivide(coarse, r, 1);  // refuses first, under NonManifoldRule::Refuse

@@ -30,7 +30,8 @@ SchemeRule with_variant(Scheme scheme, SchemeRule requested, const SchemeRule& f
         case Scheme::Sqrt3: requested.sqrt3 = from.sqrt3; break;
         case Scheme::Butterfly:
         case Scheme::ModifiedButterfly: requested.butterfly_wings = from.butterfly_wings; break;
-        case Scheme::Bilinear: break;  // no variant
+        case Scheme::Bilinear:
+        case Scheme::Midpoint: break;  // no variant
     }
     return requested;
 }

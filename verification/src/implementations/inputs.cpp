@@ -53,6 +53,23 @@ std::vector<std::string> folder_inputs(const std::string& spec) {
     return files;
 }
 
+/// Where Debian's assimp-testmodels installs Assimp's own test models (some 40 formats, broken
+/// files among them on purpose).
+constexpr const char* kAssimpTestModels = "/usr/share/assimp/models";
+
+/// Every file under `root`, recursively, that a reader of crossdiv takes, sorted; empty when
+/// the folder is absent (optional data, as the CGAL demo meshes).
+std::vector<std::string> corpus_files(const std::string& root) {
+    namespace fs = std::filesystem;
+    std::vector<std::string> files;
+    std::error_code ec;
+    if (!fs::is_directory(root, ec)) return files;
+    for (fs::recursive_directory_iterator it(root, ec), end; !ec && it != end; it.increment(ec))
+        if (it->is_regular_file(ec) && readable_mesh_file(it->path().string())) files.push_back(it->path().string());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
 }  // namespace
 
 std::vector<std::string> expand_inputs(const std::vector<std::string>& specs) {
@@ -89,8 +106,10 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& specs) {
             for (const auto& f : datasets::cgal_mesh_files()) out.push_back(f);
         } else if (s == "opensubdiv:all") {
             for (const auto& f : datasets::opensubdiv_shape_files()) out.push_back(f);
+        } else if (s == "corpus:assimp") {
+            for (std::string& f : corpus_files(kAssimpTestModels)) out.push_back(std::move(f));
         } else if (s.ends_with(":all")) {
-            throw InputError("unknown collection '" + s + "' (known: bundled:all, polygons:all, creases:all, edgecases:all, polygon-edgecases:all, uv-edgecases:all, uv-edgecases-tri:all, course:all, meshedit:all, cgal:all, opensubdiv:all)");
+            throw InputError("unknown collection '" + s + "' (known: bundled:all, polygons:all, creases:all, edgecases:all, polygon-edgecases:all, uv-edgecases:all, uv-edgecases-tri:all, course:all, meshedit:all, cgal:all, opensubdiv:all, corpus:assimp)");
         } else {
             out.push_back(s);
         }
@@ -121,7 +140,7 @@ PolyMesh read_input(const std::string& spec) {
         throw InputError("'" + spec + "' is neither a file nor a known input name (known: bundled:NAME, " +
                          "edgecase:NAME, uv:LAYOUT:INPUT, dir:FOLDER, and the collections bundled:all, polygons:all, creases:all, edgecases:all, " +
                          "polygon-edgecases:all, uv-edgecases:all, uv-edgecases-tri:all, " +
-                         "course:all, meshedit:all, cgal:all, opensubdiv:all)");
+                         "course:all, meshedit:all, cgal:all, opensubdiv:all, corpus:assimp)");
     return read_mesh(spec);
 }
 

@@ -15,23 +15,25 @@ const char* to_string(Scheme scheme) {
         case Scheme::Butterfly: return "butterfly";
         case Scheme::ModifiedButterfly: return "modified-butterfly";
         case Scheme::Bilinear: return "bilinear";
+        case Scheme::Midpoint: return "midpoint";
     }
     return "?";
 }
 
 std::vector<Scheme> all_schemes() {
     return {Scheme::Loop,      Scheme::CatmullClark,      Scheme::DooSabin, Scheme::Sqrt3,
-            Scheme::Butterfly, Scheme::ModifiedButterfly, Scheme::Bilinear};
+            Scheme::Butterfly, Scheme::ModifiedButterfly, Scheme::Bilinear, Scheme::Midpoint};
 }
 
 std::vector<Scheme> polygon_schemes() {
-    return {Scheme::CatmullClark, Scheme::DooSabin, Scheme::Sqrt3, Scheme::Butterfly, Scheme::ModifiedButterfly, Scheme::Bilinear};
+    return {Scheme::CatmullClark, Scheme::DooSabin,          Scheme::Sqrt3,    Scheme::Butterfly,
+            Scheme::ModifiedButterfly, Scheme::Bilinear, Scheme::Midpoint};
 }
 
 const SchemeTraits& traits(Scheme scheme) {
     //                                           primal triangles sdc_tags
     static const SchemeTraits loop{true, true, true}, catmull_clark{true, false, true}, doo_sabin{false, false, false},
-        sqrt3{false, true, false}, butterfly{true, true, false}, bilinear{true, false, false};
+        sqrt3{false, true, false}, butterfly{true, true, false}, bilinear{true, false, false}, midpoint{true, true, false};
     switch (scheme) {
         case Scheme::Loop: return loop;
         case Scheme::CatmullClark: return catmull_clark;
@@ -40,6 +42,7 @@ const SchemeTraits& traits(Scheme scheme) {
         case Scheme::Butterfly:
         case Scheme::ModifiedButterfly: return butterfly;
         case Scheme::Bilinear: return bilinear;
+        case Scheme::Midpoint: return midpoint;
     }
     return loop;
 }
@@ -76,7 +79,8 @@ std::string rule_name(Scheme scheme, const SchemeRule& rule) {
         case Scheme::Sqrt3: return std::string(to_string(rule.sqrt3.parity));
         case Scheme::Butterfly:
         case Scheme::ModifiedButterfly: return std::string(to_string(rule.butterfly_wings));
-        case Scheme::Bilinear: return "linear";
+        case Scheme::Bilinear:
+        case Scheme::Midpoint: return "linear";
     }
     return "-";
 }
@@ -124,10 +128,12 @@ SchemeRule rule_from_boundary_name(Scheme scheme, std::string_view boundary) {
         case Scheme::Butterfly:
         case Scheme::ModifiedButterfly: return pick(kAllButterflyWings, rule.butterfly_wings);
         case Scheme::Bilinear:
+        case Scheme::Midpoint:
             // Every point is an average of the corners it lies between: there is nothing a
             // boundary rule could change.
             if (boundary == "linear") return rule;
-            throw InputError("bilinear has no boundary rule '" + std::string(boundary) + "' (its one rule is 'linear')");
+            throw InputError(std::string(to_string(scheme)) + " has no boundary rule '" + std::string(boundary) +
+                             "' (its one rule is 'linear')");
     }
     throw InputError("unknown scheme");
 }

@@ -1,10 +1,10 @@
-// VTK as an implementation: "vtk", vtkLoopSubdivisionFilter and vtkButterflySubdivisionFilter
-// called once per level. VTK's filters store the points they make in single precision
+// VTK as an implementation: "vtk", vtkLoopSubdivisionFilter, vtkButterflySubdivisionFilter and
+// vtkLinearSubdivisionFilter called once per level. VTK's filters store the points they make in single precision
 // (vtkPoints of VTK_FLOAT, whatever the input's type), so it is held to the float tier.
 //
 // Its Butterfly filter is the modified Butterfly (Zorin et al.) with VTK's boundary choices,
-// core's rule other-face-wings (butterfly_mask.h). Its linear filter's midpoint split is in the
-// adapter but not declared: a scheme core does not have yet.
+// core's rule other-face-wings (butterfly_mask.h). Its linear filter is the midpoint scheme
+// (midpoint.h).
 #include "crossdiv/adapters/vtk.h"
 #include "library_implementations.h"
 
@@ -18,7 +18,8 @@ public:
     Vtk()
         : Implementation("vtk", vt::version(), ImplementationKind::Library,
                          {.schemes = {supports(Scheme::Loop, {loop_rule(LoopWeights::Loop, LoopBoundary::EdgeOnly)}),
-                                      supports(Scheme::ModifiedButterfly, {butterfly_rule(ButterflyWings::OtherFaceVertex)})},
+                                      supports(Scheme::ModifiedButterfly, {butterfly_rule(ButterflyWings::OtherFaceVertex)}),
+                                      supports(Scheme::Midpoint, {SchemeRule{}})},
                           .precision = Precision::Float}) {}
 
     adapters::LevelTrace refine(const PolyMesh& mesh, const RefineRequest& r) const override {
@@ -32,7 +33,11 @@ public:
     }
 
 private:
-    static vt::Filter filter(Scheme scheme) { return scheme == Scheme::ModifiedButterfly ? vt::Filter::Butterfly : vt::Filter::Loop; }
+    static vt::Filter filter(Scheme scheme) {
+        return scheme == Scheme::ModifiedButterfly ? vt::Filter::Butterfly
+               : scheme == Scheme::Midpoint        ? vt::Filter::Linear
+                                                   : vt::Filter::Loop;
+    }
 };
 
 }  // namespace

@@ -48,8 +48,9 @@ CheckReport vertex_age_study() {
                                          "every face corner (Doo-Sabin) of the level before"));
         json row = {{"scheme", to_string(scheme)}, {"input", "icosahedron"}, {"levels", kLevels},
                     {"vertex_counts", counts}, {"born", measured}, {"expected", expected}};
-        if (scheme == Scheme::Butterfly || scheme == Scheme::ModifiedButterfly || scheme == Scheme::Bilinear) {
-            // Interpolating (bilinear too: a vertex point is the vertex): the oldest vertices
+        if (scheme == Scheme::Butterfly || scheme == Scheme::ModifiedButterfly || scheme == Scheme::Bilinear ||
+            scheme == Scheme::Midpoint) {
+            // Interpolating (bilinear and midpoint too: a vertex point is the vertex): the oldest vertices
             // are where the input put them, exactly.
             double moved = 0;
             for (size_t v = 0; v < counts[0]; ++v)

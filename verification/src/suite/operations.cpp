@@ -192,6 +192,8 @@ const std::vector<SuiteOperation>& suite_operations() {
          expand_inputs, run_refinement, Scheme::ModifiedButterfly},
         {"bilinear", OperationKind::Comparison, "core's bilinear subdivision against every reference that has it (OpenSubdiv)",
          expand_inputs, run_refinement, Scheme::Bilinear},
+        {"midpoint", OperationKind::Comparison, "core's midpoint triangle subdivision against every reference that has it (VTK, Open3D)",
+         expand_inputs, run_refinement, Scheme::Midpoint},
         {"curves", OperationKind::Checks, "curve files against Eigen and exact properties", expand_curve_inputs, run_curves},
         {"surfaces", OperationKind::Checks, "surface files built and checked as closed surfaces", expand_surface_inputs,
          run_surfaces},

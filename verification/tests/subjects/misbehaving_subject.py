@@ -43,7 +43,8 @@ import loop  # noqa: E402
 
 # The course-style example of each scheme other than Loop, by the name crossdiv gives it.
 SCHEME_MODULES = {"catmull-clark": "catmull_clark", "doo-sabin": "doo_sabin", "sqrt3": "sqrt3", "butterfly": "butterfly",
-                  "modified-butterfly": "modified_butterfly", "bilinear": "bilinear"}
+                  "modified-butterfly": "modified_butterfly", "bilinear": "bilinear",
+                  "midpoint": "midpoint"}
 
 
 def loop_beta(n):

@@ -71,6 +71,13 @@ RefinementStep catmull_clark_nonmanifold_step(const PolyMesh& mesh, const Catmul
 /// scheme's. Returns the ends of each edge, in edge-point order. @throws InputError as the steps.
 std::vector<std::array<int, 2>> add_quad_split(const PolyMesh& mesh, RefinementStep& step);
 
+/// The faces of one level that splits each triangle into four at its edge points, as Far
+/// derives them under the rules above (Loop's topology, and the midpoint scheme's, on any
+/// triangle mesh): vertex points first, then edge points; four triangles per triangle in
+/// loop_step's order added to `step`, their edges stated per corner. Every face must be a
+/// triangle (the caller checks). Returns the ends of each edge, in edge-point order.
+std::vector<std::array<int, 2>> add_triangle_split(const PolyMesh& mesh, RefinementStep& step);
+
 /// The ends of each edge of `mesh`, in the order the steps number their edge points (the
 /// provenance of a refined level's edge points). @throws InputError as the steps.
 std::vector<std::array<int, 2>> nonmanifold_edges(const PolyMesh& mesh);

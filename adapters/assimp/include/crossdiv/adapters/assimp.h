@@ -1,7 +1,8 @@
 #pragma once
 /// @file
 /// Assimp adapter: mesh input in the formats our own readers do not parse (COLLADA .dae, the
-/// meshedit course files; PLY; STL). Not a subdivision reference: it only reads.
+/// meshedit course files; STL, AC3D, LightWave, FBX, glTF, 3DS, Blender, X, ASE, AMF and the
+/// rest of Assimp's list). Not a subdivision reference: it only reads.
 
 #include <string>
 #include <vector>
@@ -10,7 +11,9 @@
 
 namespace crossdiv::adapters::assimp {
 
-/// The extensions read through Assimp: ".dae", ".stl" (PLY is read by core).
+/// The extensions read through Assimp, lower case with their dot, sorted: every one Assimp's
+/// Importer lists ("*.3ds;*.ac;..."), but those core reads itself (mesh_extensions(): OBJ,
+/// OFF, PLY).
 const std::vector<std::string>& extensions();
 
 /// Reads every mesh of the scene into one polygon mesh, in world coordinates (node transforms

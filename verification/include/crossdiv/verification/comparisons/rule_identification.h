@@ -108,7 +108,8 @@ struct OtherSchemeFit {
     std::string rule;
     double max_rel = 0;  ///< largest distance over the diagonal at level 1 (INFINITY: core refuses the input)
     bool fits = false;
-    /// "butterfly reflected-wings", "bilinear (midpoint)".
+    /// "butterfly reflected-wings", "bilinear (midpoint)"; a scheme of one rule by its name
+    /// alone ("midpoint").
     std::string label() const;
     /// Whether it is its own scheme's rule on the mesh without its tags.
     bool tags_ignored() const;

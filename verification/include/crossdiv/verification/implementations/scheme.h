@@ -18,9 +18,10 @@
 namespace crossdiv::verification {
 
 /// A refinement scheme.
-enum class Scheme { Loop, CatmullClark, DooSabin, Sqrt3, Butterfly, ModifiedButterfly, Bilinear };
+enum class Scheme { Loop, CatmullClark, DooSabin, Sqrt3, Butterfly, ModifiedButterfly, Bilinear, Midpoint };
 
-/// "loop", "catmull-clark", "doo-sabin", "sqrt3", "butterfly", "modified-butterfly", "bilinear".
+/// "loop", "catmull-clark", "doo-sabin", "sqrt3", "butterfly", "modified-butterfly", "bilinear",
+/// "midpoint" (triangles split into four at their edge midpoints, midpoint.h).
 const char* to_string(Scheme scheme);
 /// @throws InputError naming the unknown scheme and the known ones.
 Scheme scheme_from_string(std::string_view name);
@@ -46,7 +47,8 @@ struct SchemeTraits {
 const SchemeTraits& traits(Scheme scheme);
 
 /// The named variant of each scheme; only the member of the scheme at hand is read. The
-/// Butterflies have none (the variant is the scheme), bilinear none at all ("linear").
+/// Butterflies have none (the variant is the scheme), bilinear and midpoint none at all
+/// ("linear").
 struct SchemeRule {
     LoopOptions loop{LoopWeights::Loop, LoopBoundary::EdgeOnly};
     CatmullClarkOptions catmull_clark{CatmullClarkBoundary::EdgeOnly};
@@ -68,7 +70,7 @@ bool same_rule(Scheme scheme, const SchemeRule& a, const SchemeRule& b);
 /// The rule whose boundary option is named `boundary` for `scheme` (the default when empty):
 /// Loop edge-only | edge-and-corner, Catmull-Clark those and midpoint-average, Doo-Sabin
 /// chaikin-boundary | drop-border-faces, sqrt3 count-from-input | restart-each-level, the
-/// Butterflies reflected-wings | opposite-vertex-wings.
+/// Butterflies reflected-wings | opposite-vertex-wings, bilinear and midpoint linear.
 /// @throws InputError for a name the scheme does not have.
 SchemeRule rule_from_boundary_name(Scheme scheme, std::string_view boundary);
 
