@@ -7,6 +7,8 @@
 #   ./run.sh sanitize [SECONDS]   build with clang, AddressSanitizer and UndefinedBehaviorSanitizer
 #                   into build-sanitize, run every test there, then each libFuzzer target for
 #                   SECONDS (default 30)
+#   ./run.sh corpus   install the real-mesh corpora (Debian data packages), build, and run the
+#                   corpus suite over them into out/corpus, stating its time
 set -euo pipefail
 cd "$(dirname "$0")"
 # The project's Python is Debian's /usr/bin/python3, the one its packages (numpy, Open3D, Dask,
@@ -74,6 +76,9 @@ install_missing() {
   # (optional data: Hbr gives them their verdict).
   [ -d datasets/opensubdiv ] || /usr/bin/python3 datasets/install_opensubdiv_shapes.py || echo "OpenSubdiv shapes unavailable; continuing without them"
 }
+
+# The corpora of ./run.sh corpus (verification/suites/corpus.suite): Assimp's test models.
+CORPUS_PACKAGES="assimp-testmodels"
 
 # The sanitizer build: clang (and its sanitizer and libFuzzer runtimes).
 SANITIZE_PACKAGES="clang libclang-rt-14-dev"
@@ -159,8 +164,19 @@ case "${1:-}" in
     begin_phase fuzzers
     CROSSDIV_FUZZ_PARALLEL=2 fuzz/run_fuzzers.sh build-sanitize "${2:-30}"
     ;;
+  corpus)
+    # The corpora are optional data packages (never committed): installed here, read in place.
+    PACKAGES="$PACKAGES $CORPUS_PACKAGES"
+    begin_phase apt
+    install_missing
+    build
+    begin_phase corpus
+    corpus_start=$SECONDS
+    ./build/verification/crossdiv suite verification/suites/corpus.suite --out out/corpus
+    echo "corpus suite: $((SECONDS - corpus_start)) s (results and report in out/corpus)"
+    ;;
   *)
-    echo "usage: $0 main|test|sanitize [SECONDS]" >&2
+    echo "usage: $0 main|test|sanitize [SECONDS]|corpus" >&2
     exit 2
     ;;
 esac

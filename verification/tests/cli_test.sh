@@ -394,6 +394,13 @@ printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nt crease 2/1/0 0 1 -2\n' > "$tmp/neg
 expect crease-negative 2 'neg_crease.obj:5: tag .crease.: sharpness -2.000000 is negative' -- "$crossdiv" subdivide "$tmp/neg_crease.obj" -o "$tmp/x.obj"
 printf '<COLLADA><library_geometries><geometry>' > "$tmp/broken.dae"
 expect dae-broken 2 'broken.dae: Assimp could not read it' -- "$crossdiv" check "$tmp/broken.dae"
+# A file that crashes Assimp itself (an OpenGEX camera without a geometry: SIGSEGV in its
+# importer) is read in a child process: the crash is the input's refusal, named, exit 2.
+printf 'CameraObject {\n    Param (attrib = "fov") { float { 0.97 } }\n}\n' > "$tmp/camera.ogex"
+expect assimp-crash-refused 2 'camera.ogex: Assimp could not read it: crashed: signal' -- "$crossdiv" compare "$tmp/camera.ogex" --scheme catmull-clark --levels 1
+# An AC3D file (every format Assimp lists is read through it).
+printf 'AC3Db\nOBJECT world\nkids 1\nOBJECT poly\nnumvert 3\n0 0 0\n1 0 0\n0 1 0\nnumsurf 1\nSURF 0x10\nmat 0\nrefs 3\n0 0 0\n1 0 0\n2 0 0\nkids 0\n' > "$tmp/triangle.ac"
+expect ac3d-read 0 'triangle.ac: .*4 faces' -- "$crossdiv" subdivide "$tmp/triangle.ac" --scheme midpoint --levels 1 -o "$tmp/triangle-1.obj"
 dae="$(dirname "$0")/../../../shared/data/meshedit/dae"
 if [ -d "$dae" ]; then
   for m in teapot cube beetle cow; do

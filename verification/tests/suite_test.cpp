@@ -231,6 +231,22 @@ TEST(Manifest, TheDefaultSuiteReadsAndCoversEveryBundledMeshAndTheCatalog) {
     EXPECT_TRUE(inputs.count("edgecase:nonmanifold-edge-100"));
 }
 
+// The corpus suite reads; each of its cases declares the refusal of an unreadable file (a
+// corpus holds broken files), and its corpus expands to mesh files only, when it is installed.
+TEST(Manifest, TheCorpusSuiteReadsAndDeclaresTheRefusalOfABrokenFile) {
+    const fs::path corpus = fs::path(default_manifest_path()).parent_path() / "corpus.suite";
+    const Manifest m = read_manifest(corpus.string());
+    ASSERT_FALSE(m.entries.empty());
+    for (const ManifestEntry& e : m.entries) {
+        const std::vector<DivergenceClass>& r = e.request.expected_refusals;
+        EXPECT_NE(std::find(r.begin(), r.end(), DivergenceClass::InvalidInputHandling), r.end()) << "line " << e.line;
+    }
+    for (const std::string& f : expand_inputs({"corpus:assimp"})) {
+        EXPECT_TRUE(readable_mesh_file(f)) << f;
+        EXPECT_FALSE(f.ends_with(".png") || f.ends_with(".txt")) << f;
+    }
+}
+
 TEST(Shards, PartitionTheJobs) {
     const fs::path d = temp_dir("shards");
     const Manifest m = read_manifest(write(d / "s.suite", "suite s\ncase bundled:all loop\ncase bundled:all loop levels=2\n"));

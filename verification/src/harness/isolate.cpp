@@ -84,6 +84,8 @@ void write_trace(FILE* f, const adapters::LevelTrace& trace) {
             put_vector(f, ch.values);
             put_vector(f, ch.corner_values);
         }
+        put(f, m.source.notes.size());  // what a reader noted (an input read in a child)
+        for (const std::string& note : m.source.notes) put_string(f, note);
     }
 }
 bool read_trace(FILE* f, adapters::LevelTrace& trace) {
@@ -101,6 +103,10 @@ bool read_trace(FILE* f, adapters::LevelTrace& trace) {
             ch.name = get_string(f);
             if (!get(f, ch.dimension) || !get_vector(f, ch.values) || !get_vector(f, ch.corner_values)) return false;
         }
+        size_t notes = 0;
+        if (!get(f, notes) || notes > 4096) return false;
+        m.source.notes.resize(notes);
+        for (std::string& note : m.source.notes) note = get_string(f);
     }
     return true;
 }
