@@ -43,13 +43,15 @@ trap 'if [ $? -eq 0 ]; then end_phase ok; else end_phase failed; fi' EXIT
 # rendered by its test; opensubdiv-tools: the programs OpenSubdiv's regression shapes are
 # compiled into, datasets/install_opensubdiv_shapes.py; mkdocs, mkdocs-material and doxygen:
 # the documentation site and its C++ API reference, built in strict mode by their test;
-# python3-distributed: Dask, for crossdiv-cluster and its LocalCluster test).
+# python3-distributed: Dask, for crossdiv-cluster and its LocalCluster test; assimp-testmodels: the
+# corpus of real meshes, optional data read in place, never committed: a fixed sample in the main
+# job, all of it in ./run.sh corpus).
 PACKAGES="g++ make cmake ccache libeigen3-dev libosd-dev libopenmesh-dev libcgal-dev libvtk9-dev libgtest-dev \
 libcli11-dev nlohmann-json3-dev libfmt-dev libnanoflann-dev libassimp-dev python3-matplotlib python3-numpy \
 meshlab xvfb xauth python3-open3d blender \
 python3-pytest python3-skimage \
 libjs-three chromium chromium-driver python3-selenium python3-pil \
-pybind11-dev python3-dev python3-scipy help2man man-db opensubdiv-tools mkdocs mkdocs-material doxygen python3-distributed"
+pybind11-dev python3-dev python3-scipy help2man man-db opensubdiv-tools mkdocs mkdocs-material doxygen python3-distributed assimp-testmodels"
 
 install_missing() {
   local missing=""
@@ -76,9 +78,6 @@ install_missing() {
   # (optional data: Hbr gives them their verdict).
   [ -d datasets/opensubdiv ] || /usr/bin/python3 datasets/install_opensubdiv_shapes.py || echo "OpenSubdiv shapes unavailable; continuing without them"
 }
-
-# The corpora of ./run.sh corpus (verification/suites/corpus.suite): Assimp's test models.
-CORPUS_PACKAGES="assimp-testmodels"
 
 # The sanitizer build: clang (and its sanitizer and libFuzzer runtimes).
 SANITIZE_PACKAGES="clang libclang-rt-14-dev"
@@ -165,8 +164,6 @@ case "${1:-}" in
     CROSSDIV_FUZZ_PARALLEL=2 fuzz/run_fuzzers.sh build-sanitize "${2:-30}"
     ;;
   corpus)
-    # The corpora are optional data packages (never committed): installed here, read in place.
-    PACKAGES="$PACKAGES $CORPUS_PACKAGES"
     begin_phase apt
     install_missing
     build

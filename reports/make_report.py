@@ -16,6 +16,7 @@ from report import roster, sections, viewer  # noqa: E402
 from report.invariance import invariance_cases, invariance_section  # noqa: E402
 from report.model import render_html, render_markdown  # noqa: E402
 from report.records import halfedge_cases, split_cases  # noqa: E402
+from report.robustness import robustness_section  # noqa: E402
 from report.records import SCHEMA_VERSION, fmt  # noqa: E402
 
 
@@ -49,7 +50,7 @@ def build(results, bench, folder, figdir):
     invariance = invariance_cases(results)
     viewed = mesh + schemes + invariance  # the cases the 3D viewer may show
     body = [viewer.first_screen(results["cases"], viewed, [r["name"] for r in results.get("references", [])], folder),
-            sections.outcomes_section(s),
+            sections.outcomes_section(s), robustness_section(results),
             *([roster_table] if roster_table else []), *([subject] if subject else []), *before,
             sections.catalogue_section(sections.catalogue_rows(mesh + schemes, curves + surfaces + studies +
                                                               halfedge_cases(results["cases"]) +

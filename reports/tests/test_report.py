@@ -15,6 +15,7 @@ import make_report  # noqa: E402
 from report.model import Figure, Section, Table, Tally, Text, md_cell, render_html, render_markdown  # noqa: E402
 from report.viewer import matrix_table  # noqa: E402
 from report.records import category, split_cases  # noqa: E402
+from report.robustness import robustness_section  # noqa: E402
 
 
 def cells(line):
@@ -177,6 +178,35 @@ def test_the_overview_counts_what_the_suite_counts_and_colours_it():
     assert "nonzero" not in body and "failing" not in body
     # Its own stylesheet, inlined: the page needs no network.
     assert ".failure.nonzero" in html and "http" not in html.split("</style>")[0]
+
+
+def test_the_robustness_table_counts_each_implementations_runs_by_how_they_ended():
+    def run(ref, outcome, status="ok", cls=""):
+        return {"reference": ref, "outcome": outcome, "status": status, "divergence_class": cls,
+                "verdict": outcome.split(" ")[0]}
+    results = {"operations": [{"name": "catmull-clark", "kind": "comparison", "scheme": "catmull-clark"},
+                              {"name": "curvature", "kind": "study"}],
+               "cases": [
+                   {"operation": "catmull-clark", "runs": [run("opensubdiv", "agree"),
+                                                           run("openmesh", "diverge (boundary-rule)", cls="boundary-rule")]},
+                   {"operation": "catmull-clark", "runs": [run("opensubdiv", "agree"),
+                                                           run("openmesh", "ref-crashed", "crashed")]},
+                   {"operation": "catmull-clark", "runs": [run("opensubdiv", "diverge (unexplained)"),
+                                                           run("openmesh", "ref-crashed", "timeout")]},
+                   {"operation": "catmull-clark", "runs": [run("opensubdiv", "ref-invalid-output", "wrong-count"),
+                                                           run("openmesh", "ref-rejected", "rejected")]},
+                   {"operation": "catmull-clark", "core_error": "x.ac: Assimp could not read it", "runs": [],
+                    "refusal_class": "invalid-input-handling", "outcome": "ours-rejected (invalid-input-handling)"},
+                   {"operation": "curvature", "runs": [run("core", "agree")]}]}
+    section = robustness_section(results)
+    [table] = section.blocks[:1]
+    rows = {tuple(r[:2]): r[2:] for r in table.rows}
+    # core: 5 inputs, 4 refined, 1 refused by its reason; the study's case is not counted.
+    assert rows[("catmull-clark", "core")] == [5, 4, "-", "-", "1 invalid-input-handling", "-", "-", "-", "-"]
+    # runs, agree, named, unexplained, rejected, crashed, hung, invalid result, not compared
+    assert rows[("catmull-clark", "opensubdiv")] == [4, 2, "0", 1, 0, 0, 0, 1, 0]
+    assert rows[("catmull-clark", "openmesh")] == [4, 0, "1 boundary-rule", 0, 1, 1, 1, 0, 0]
+    assert robustness_section({"operations": results["operations"], "cases": results["cases"][-1:]}) is None
 
 
 def test_the_coverage_table_has_a_row_for_every_core_header_folder():

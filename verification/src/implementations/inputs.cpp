@@ -57,6 +57,9 @@ std::vector<std::string> folder_inputs(const std::string& spec) {
 /// files among them on purpose).
 constexpr const char* kAssimpTestModels = "/usr/share/assimp/models";
 
+/// One file in this many of a corpus makes its fixed sample (corpus:assimp-sample: 52 of 414).
+constexpr size_t kSampleStride = 8;
+
 /// Every file under `root`, recursively, that a reader of crossdiv takes, sorted; empty when
 /// the folder is absent (optional data, as the CGAL demo meshes).
 std::vector<std::string> corpus_files(const std::string& root) {
@@ -108,8 +111,12 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& specs) {
             for (const auto& f : datasets::opensubdiv_shape_files()) out.push_back(f);
         } else if (s == "corpus:assimp") {
             for (std::string& f : corpus_files(kAssimpTestModels)) out.push_back(std::move(f));
+        } else if (s == "corpus:assimp-sample") {
+            // A fixed sample for the main job: every kSampleStride-th file in name order.
+            const std::vector<std::string> all = corpus_files(kAssimpTestModels);
+            for (size_t i = 0; i < all.size(); i += kSampleStride) out.push_back(all[i]);
         } else if (s.ends_with(":all")) {
-            throw InputError("unknown collection '" + s + "' (known: bundled:all, polygons:all, creases:all, edgecases:all, polygon-edgecases:all, uv-edgecases:all, uv-edgecases-tri:all, course:all, meshedit:all, cgal:all, opensubdiv:all, corpus:assimp)");
+            throw InputError("unknown collection '" + s + "' (known: bundled:all, polygons:all, creases:all, edgecases:all, polygon-edgecases:all, uv-edgecases:all, uv-edgecases-tri:all, course:all, meshedit:all, cgal:all, opensubdiv:all, corpus:assimp, corpus:assimp-sample)");
         } else {
             out.push_back(s);
         }
@@ -140,7 +147,7 @@ PolyMesh read_input(const std::string& spec) {
         throw InputError("'" + spec + "' is neither a file nor a known input name (known: bundled:NAME, " +
                          "edgecase:NAME, uv:LAYOUT:INPUT, dir:FOLDER, and the collections bundled:all, polygons:all, creases:all, edgecases:all, " +
                          "polygon-edgecases:all, uv-edgecases:all, uv-edgecases-tri:all, " +
-                         "course:all, meshedit:all, cgal:all, opensubdiv:all, corpus:assimp)");
+                         "course:all, meshedit:all, cgal:all, opensubdiv:all, corpus:assimp, corpus:assimp-sample)");
     return read_mesh(spec);
 }
 

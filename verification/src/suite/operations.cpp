@@ -112,13 +112,14 @@ CaseRecord run_refinement(const SuiteJob& job, const std::string& out_dir) {
     PolyMesh input = load_input(job.input);
     require_refined_size(input, req.scheme, req.levels, entry.max_faces, job.input, "the manifest's max-faces");
     std::vector<std::string> notes;
-    if (req.scheme == Scheme::Loop) {
-        PolyMesh faces_only = input;  // a polygon is refused by name, tagged or not, as the CLI does
+    if (traits(req.scheme).triangles) {
+        // A polygon under a triangle scheme is the input's refusal, by name, tagged or not, as
+        // the CLI refuses it: never triangulated (a choice no reference shares).
+        PolyMesh faces_only = input;
         faces_only.creases = {};
-        (void)to_tri_mesh(faces_only, "Loop subdivision");
-    } else {
-        req.rule = rule_with_tags(req.scheme, entry.rule_flags, input, notes);
+        (void)to_tri_mesh(faces_only, (std::string(to_string(req.scheme)) + " subdivision").c_str());
     }
+    if (req.scheme != Scheme::Loop) req.rule = rule_with_tags(req.scheme, entry.rule_flags, input, notes);
     // Texture coordinates, where the input has them: the case's fvar=, the file's tag, or all.
     req.face_varying = face_varying_rule(req.scheme, entry.rule_flags.face_varying, input, notes);
     RefinementComparison c = compare_refinement(input, job.input, req);

@@ -1,0 +1,82 @@
+"""The robustness table: per scheme and implementation, how the suite's comparison cases
+ended, in the style of Thingi10K's statistics: for core, the inputs it refined and those it
+refused (its refusals by reason); for each reference, its runs agreeing, differing for a named
+reason, unexplained, rejected, crashed, hung, with an invalid result. Read from the outcomes
+crossdiv recorded; nothing is derived again."""
+from collections import Counter
+
+from .model import Section, Table, Text
+
+# A run's status (results-schema.md) -> the column it is counted in, for the runs that made no
+# usable result; every other run is counted by its outcome.
+FAILED_RUN = {"crashed": "crashed", "threw": "crashed", "exit-status": "crashed", "no-output": "crashed",
+              "timeout": "hung", "non-finite-output": "invalid", "wrong-count": "invalid",
+              "not-triangles": "invalid", "unreadable-output": "invalid", "rejected": "rejected",
+              "unavailable": "unavailable"}
+
+HEADER = ["scheme", "implementation", "inputs / runs", "refined / agree", "named differences", "unexplained",
+          "rejected", "crashed", "hung", "invalid result", "not compared"]
+
+
+def reference_column(run):
+    """The column a reference run is counted in."""
+    o = run["outcome"]
+    if o == "agree":
+        return "agree"
+    if o == "diverge (unexplained)":
+        return "unexplained"
+    if o.startswith("diverge") or o.startswith("ref-nondeterministic"):
+        return "named"
+    if o.startswith("ours-rejected"):
+        return "core refused"
+    if o == "not-compared":
+        return "not compared"
+    return FAILED_RUN.get(run.get("status", ""), "crashed" if o == "ref-crashed" else o)
+
+
+def named(counter):
+    """"57 boundary-rule, 7 non-manifold-handling": the classes of the named differences."""
+    return ", ".join(f"{n} {c}" for c, n in counter.most_common()) or "0"
+
+
+def robustness_section(results):
+    """The table over every case of a comparison operation (a scheme against its references,
+    refused by core or not); None when the suite has none."""
+    scheme_of = {o["name"]: o.get("scheme") for o in results["operations"] if o["kind"] == "comparison"}
+    comparisons = [c for c in results["cases"] if c.get("operation") in scheme_of and not c.get("subject")]
+    if not comparisons:
+        return None
+    core, refs = {}, {}
+    for c in comparisons:
+        s = scheme_of[c["operation"]]
+        k = core.setdefault(s, {"inputs": 0, "refined": 0, "refused": Counter()})
+        k["inputs"] += 1
+        if c.get("core_error"):
+            k["refused"][c.get("refusal_class") or "unexplained"] += 1
+        else:
+            k["refined"] += 1
+        for r in c.get("runs", []):
+            t = refs.setdefault((s, r["reference"]), {"runs": 0, "columns": Counter(), "classes": Counter()})
+            t["runs"] += 1
+            column = reference_column(r)
+            t["columns"][column] += 1
+            if column == "named":
+                t["classes"][r.get("divergence_class") or r["outcome"]] += 1
+    rows = []
+    for s in sorted(core):
+        k = core[s]
+        rows.append([s, "core", k["inputs"], k["refined"], "-", "-", named(k["refused"]), "-", "-", "-", "-"])
+        for (scheme, ref), t in sorted(refs.items()):
+            if scheme != s:
+                continue
+            col = t["columns"]
+            rows.append([s, ref, t["runs"], col["agree"], named(t["classes"]), col["unexplained"], col["rejected"],
+                         col["crashed"], col["hung"], col["invalid"], col["not compared"] + col["core refused"]])
+    return Section("Robustness per implementation").add(
+        Table(HEADER, rows),
+        Text("Core's row counts the inputs and those it refined; its refusals by reason (declared in the case, "
+             "or unexplained). A reference's row counts its runs (a second run for texture coordinates where the "
+             "input has them): agreeing with core, differing for a named reason (by class), unexplained, "
+             "refusing the input, crashing, hanging (killed at the time limit), making an invalid result "
+             "(non-finite, a wrong count, not triangles, unreadable), and not compared (core refused the input, "
+             "or nothing could be matched)."))
