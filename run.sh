@@ -79,6 +79,9 @@ install_missing() {
   [ -d datasets/opensubdiv ] || /usr/bin/python3 datasets/install_opensubdiv_shapes.py || echo "OpenSubdiv shapes unavailable; continuing without them"
 }
 
+# The corpora ./run.sh corpus adds (verification/suites/corpus.suite): Sweet Home 3D's furniture.
+CORPUS_PACKAGES="sweethome3d-furniture"
+
 # The sanitizer build: clang (and its sanitizer and libFuzzer runtimes).
 SANITIZE_PACKAGES="clang libclang-rt-14-dev"
 
@@ -164,8 +167,11 @@ case "${1:-}" in
     CROSSDIV_FUZZ_PARALLEL=2 fuzz/run_fuzzers.sh build-sanitize "${2:-30}"
     ;;
   corpus)
+    PACKAGES="$PACKAGES $CORPUS_PACKAGES"
     begin_phase apt
     install_missing
+    # Sweet Home 3D's furniture models, out of their zip catalogs into datasets/corpus (optional data).
+    [ -d datasets/corpus/sweethome3d ] || /usr/bin/python3 datasets/install_sweethome3d_corpus.py
     build
     begin_phase corpus
     corpus_start=$SECONDS

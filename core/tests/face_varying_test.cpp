@@ -65,13 +65,24 @@ TEST(FaceVarying, ObjTextureIndicesMayBeRelativeOrSharedAndTakeAW) {
     EXPECT_TRUE(obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1 2 3\n").face_varying.empty());
 }
 
+TEST(FaceVarying, ObjCornersThatMixTextureIndicesGiveTheGeometryAndANote) {
+    // As modelling tools write files whose objects have texture coordinates and others not:
+    // the faces are read, the texture coordinates are not, and a note says where they part.
+    const PolyMesh within = obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2 3\n");
+    EXPECT_EQ(within.num_faces(), 1);
+    EXPECT_TRUE(within.face_varying.empty());
+    ASSERT_EQ(within.source.notes.size(), 1u);
+    EXPECT_EQ(within.source.notes[0], "uv.obj: texture coordinates not read: the corners of line 5 have none, those of "
+                                      "line 5 have one (a channel needs one at every corner)");
+    const PolyMesh across = obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nf 1 2 3\nf 2/1 4/1 3/1\n");
+    EXPECT_EQ(across.num_faces(), 2);
+    EXPECT_TRUE(across.face_varying.empty());
+    ASSERT_EQ(across.source.notes.size(), 1u);
+    EXPECT_EQ(across.source.notes[0], "uv.obj: texture coordinates not read: the corners of line 7 have one, those of "
+                                      "line 6 none (a channel needs one at every corner)");
+}
+
 TEST(FaceVarying, ObjRefusesTextureIndicesThatDoNotFit) {
-    EXPECT_EQ(obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2 3\n"),
-              "uv.obj:5: a corner without a texture coordinate index, where the first corner (line 5) has one: "
-              "either every corner gives one or none does");
-    EXPECT_EQ(obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nf 1 2 3\nf 2/1 4/1 3/1\n"),
-              "uv.obj:7: a corner with a texture coordinate index, where the first corner (line 6) has none: "
-              "either every corner gives one or none does");
     EXPECT_EQ(obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/2\n"),
               "uv.obj:5: texture coordinate index 2 out of range: the file has 1 texture coordinates");
     EXPECT_EQ(obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/0 3/1\n"),

@@ -287,6 +287,7 @@ PolyMesh read_obj(std::istream& in, const std::string& name) {
     std::vector<int> corner_texcoords;   // per corner, when the faces give them
     int texture_corners_from = 0;        // the line of the first corner: whether corners give one decides for all
     bool texture_corners = false;
+    int mixed_texture_line = 0;          // the first corner that does otherwise than the first one
     while (r.next()) {
         const std::string_view kw = r.token();
         if (kw.empty()) continue;
@@ -323,11 +324,8 @@ PolyMesh read_obj(std::istream& in, const std::string& name) {
                 const std::string_view rest = slash == std::string_view::npos ? std::string_view{} : t.substr(slash + 1);
                 const std::string_view tex = rest.substr(0, rest.find('/'));
                 const bool has_tex = !tex.empty();
-                if (texture_corners_from > 0 && has_tex != texture_corners)
-                    r.fail(std::string("a corner ") + (has_tex ? "with" : "without") +
-                           " a texture coordinate index, where the first corner (line " +
-                           std::to_string(texture_corners_from) + ") has " + (texture_corners ? "one" : "none") +
-                           ": either every corner gives one or none does");
+                if (texture_corners_from > 0 && has_tex != texture_corners && mixed_texture_line == 0)
+                    mixed_texture_line = r.line_number();
                 if (texture_corners_from == 0) {
                     texture_corners_from = r.line_number();
                     texture_corners = has_tex;
@@ -373,6 +371,16 @@ PolyMesh read_obj(std::istream& in, const std::string& name) {
     }
     mesh.creases.holes = checked_holes(r, holes, mesh.num_faces());
     if (!any_color) mesh.colors.clear();
+    if (mixed_texture_line > 0) {
+        // Files made by modelling tools often give texture coordinates to some objects only: the
+        // geometry is read, the texture coordinates are not (a channel needs a value at every
+        // corner), and a note says why.
+        mesh.source.notes.push_back(r.name() + ": texture coordinates not read: the corners of line " +
+                                    std::to_string(mixed_texture_line) + " " + (texture_corners ? "have none" : "have one") +
+                                    ", those of line " + std::to_string(texture_corners_from) + " " +
+                                    (texture_corners ? "have one" : "none") + " (a channel needs one at every corner)");
+        texture_corners = false;
+    }
     if (texture_corners) {
         const long nt = static_cast<long>(texcoords.size());
         int corner = 0;

@@ -6,6 +6,7 @@
 #include <fnmatch.h>
 
 #include "crossdiv/datasets/bundled.h"
+#include "crossdiv/datasets/data_paths.h"
 #include "crossdiv/datasets/edge_cases.h"
 #include "crossdiv/datasets/uv_layouts.h"
 #include "crossdiv/error.h"
@@ -111,12 +112,17 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& specs) {
             for (const auto& f : datasets::opensubdiv_shape_files()) out.push_back(f);
         } else if (s == "corpus:assimp") {
             for (std::string& f : corpus_files(kAssimpTestModels)) out.push_back(std::move(f));
+        } else if (s == "corpus:sweethome3d") {
+            for (std::string& f : corpus_files((datasets::datasets_dir() / "corpus" / "sweethome3d").string()))
+                out.push_back(std::move(f));
+        } else if (s == "corpus:all") {
+            for (std::string& f : expand_inputs({"corpus:assimp", "corpus:sweethome3d"})) out.push_back(std::move(f));
         } else if (s == "corpus:assimp-sample") {
             // A fixed sample for the main job: every kSampleStride-th file in name order.
             const std::vector<std::string> all = corpus_files(kAssimpTestModels);
             for (size_t i = 0; i < all.size(); i += kSampleStride) out.push_back(all[i]);
         } else if (s.ends_with(":all")) {
-            throw InputError("unknown collection '" + s + "' (known: bundled:all, polygons:all, creases:all, edgecases:all, polygon-edgecases:all, uv-edgecases:all, uv-edgecases-tri:all, course:all, meshedit:all, cgal:all, opensubdiv:all, corpus:assimp, corpus:assimp-sample)");
+            throw InputError("unknown collection '" + s + "' (known: bundled:all, polygons:all, creases:all, edgecases:all, polygon-edgecases:all, uv-edgecases:all, uv-edgecases-tri:all, course:all, meshedit:all, cgal:all, opensubdiv:all, corpus:assimp, corpus:assimp-sample, corpus:sweethome3d, corpus:all)");
         } else {
             out.push_back(s);
         }
@@ -147,7 +153,7 @@ PolyMesh read_input(const std::string& spec) {
         throw InputError("'" + spec + "' is neither a file nor a known input name (known: bundled:NAME, " +
                          "edgecase:NAME, uv:LAYOUT:INPUT, dir:FOLDER, and the collections bundled:all, polygons:all, creases:all, edgecases:all, " +
                          "polygon-edgecases:all, uv-edgecases:all, uv-edgecases-tri:all, " +
-                         "course:all, meshedit:all, cgal:all, opensubdiv:all, corpus:assimp, corpus:assimp-sample)");
+                         "course:all, meshedit:all, cgal:all, opensubdiv:all, corpus:assimp, corpus:assimp-sample, corpus:sweethome3d, corpus:all)");
     return read_mesh(spec);
 }
 
