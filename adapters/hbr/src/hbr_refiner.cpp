@@ -97,18 +97,19 @@ std::unique_ptr<Mesh> build(const HbrInput& in, Subdivision* scheme, std::string
     using Edit = OpenSubdiv::HbrHierarchicalEdit<Point>;
     for (const HbrEdit& e : in.edits) {
         const typename Edit::Operation op = e.op == 0 ? Edit::Set : e.op == 1 ? Edit::Add : Edit::Subtract;
-        std::vector<int> path = e.children;
-        std::vector<unsigned char> bytes(path.begin(), path.end());
-        const int depth = static_cast<int>(path.size());
+        // Hbr's edits copy their path (HbrHierarchicalEdit's constructor) through a pointer that
+        // is not const.
+        int* path = const_cast<int*>(e.children.data());
+        const int depth = static_cast<int>(e.children.size());
         float value[3] = {e.value[0], e.value[1], e.value[2]};
         if (e.target == 0)
-            out->AddHierarchicalEdit(new OpenSubdiv::HbrVertexEdit<Point>(e.face, depth, path.data(), e.element, 0, 3, true, op, value));
+            out->AddHierarchicalEdit(new OpenSubdiv::HbrVertexEdit<Point>(e.face, depth, path, e.element, 0, 3, true, op, value));
         else if (e.target == 1)
-            out->AddHierarchicalEdit(new OpenSubdiv::HbrCornerEdit<Point>(e.face, depth, path.data(), e.element, op, value[0]));
+            out->AddHierarchicalEdit(new OpenSubdiv::HbrCornerEdit<Point>(e.face, depth, path, e.element, op, value[0]));
         else if (e.target == 2)
-            out->AddHierarchicalEdit(new OpenSubdiv::HbrCreaseEdit<Point>(e.face, depth, path.data(), e.element, op, value[0]));
+            out->AddHierarchicalEdit(new OpenSubdiv::HbrCreaseEdit<Point>(e.face, depth, path, e.element, op, value[0]));
         else
-            out->AddHierarchicalEdit(new OpenSubdiv::HbrHoleEdit<Point>(e.face, depth, bytes.data()));
+            out->AddHierarchicalEdit(new OpenSubdiv::HbrHoleEdit<Point>(e.face, depth, path));
     }
     out->SetInterpolateBoundaryMethod(in.edge_and_corner ? Mesh::k_InterpolateBoundaryEdgeAndCorner : Mesh::k_InterpolateBoundaryEdgeOnly);
     scheme->SetCreaseSubdivisionMethod(in.chaikin ? Subdivision::k_CreaseChaikin : Subdivision::k_CreaseNormal);
