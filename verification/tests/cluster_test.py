@@ -17,11 +17,14 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 LAUNCHER = os.path.join(HERE, "..", "cluster", "crossdiv_cluster.py")
 CROSSDIV = os.environ.get("CROSSDIV_BIN", os.path.join(HERE, "..", "..", "build", "verification", "crossdiv"))
 
-# Small but of every kind of record: Loop against two libraries, a polygon scheme with a
-# reference whose boundary rule differs, core refusals, and an invariance case.
+# Small but of every kind of record: Loop against two libraries (CGAL: a corner-rule divergence
+# and a crash), a polygon scheme with a reference whose boundary rule differs, core refusals, and
+# an invariance case. Not OpenMesh's Loop: at an isolated vertex it reads memory it never wrote,
+# and whether a second run finds other bytes (ref-nondeterministic) or the same (a divergence)
+# depends on the process, so no two runs need agree on it.
 MANIFEST = """suite cluster-test
 timeout 60
-case bundled:all,edgecases:all   loop weights=loop boundary=edge-and-corner levels=2 tier=weak tolerance=1e-12 against=opensubdiv,openmesh
+case bundled:all,edgecases:all   loop weights=loop boundary=edge-and-corner levels=2 tier=weak tolerance=1e-12 against=opensubdiv,cgal
 case bundled:all,edgecases:all   modified-butterfly levels=2 tier=weak tolerance=1e-12 against=openmesh refuses=non-manifold-handling,orientation-handling
 case bundled:icosahedron,bundled:open-patch   invariance scheme=loop levels=2 impls=core,opensubdiv
 """
@@ -65,6 +68,17 @@ def launch(manifest, out, *where):
                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env)
 
 
+def differences(a, b):
+    """The cases whose records differ, each with its differing fields, for a failure message."""
+    out = []
+    for key in sorted(set(a) | set(b)):
+        x, y = a.get(key, {}), b.get(key, {})
+        if x != y:
+            out.append(f"{key}: " + "; ".join(f"{k}: {json.dumps(x.get(k))[-600:]} != {json.dumps(y.get(k))[-600:]}"
+                                             for k in sorted(set(x) | set(y)) if x.get(k) != y.get(k)))
+    return "\n".join(out)
+
+
 def test_a_local_cluster_merges_to_the_single_machine_results(single, tmp_path):
     manifest, single_out, single_status = single
     p = launch(manifest, tmp_path / "cluster", "--local", "2")
@@ -74,7 +88,7 @@ def test_a_local_cluster_merges_to_the_single_machine_results(single, tmp_path):
     cluster_cases, cluster_summary = comparable(tmp_path / "cluster")
     single_cases, single_summary = comparable(single_out)
     assert len(cluster_cases) == len(single_cases) > 100
-    assert cluster_cases == single_cases
+    assert cluster_cases == single_cases, differences(cluster_cases, single_cases)
     assert cluster_summary == single_summary
     assert os.path.exists(tmp_path / "cluster" / "index.html")  # merge writes the report
 
@@ -106,4 +120,4 @@ def test_a_worker_killed_in_the_middle_of_a_shard_is_survived(single, tmp_path):
     assert "[4/4]" in output, output
     cluster_cases, _ = comparable(tmp_path / "cluster")
     single_cases, _ = comparable(single_out)
-    assert cluster_cases == single_cases
+    assert cluster_cases == single_cases, differences(cluster_cases, single_cases)
