@@ -40,7 +40,7 @@ def main(argv):
                     out = os.path.join(part, name, entry.filename.replace("/", "__"))
                     os.makedirs(os.path.dirname(out), exist_ok=True)
                     with z.open(entry) as src, open(out, "wb") as dst:
-                        dst.write(src.read())
+                        shutil.copyfileobj(src, dst)
                     written += 1
         except zipfile.BadZipFile as e:
             print(f"{catalogs}/{archive}: not a zip archive: {e}", file=sys.stderr)

@@ -207,6 +207,14 @@ def test_the_robustness_table_counts_each_implementations_runs_by_how_they_ended
     assert rows[("catmull-clark", "opensubdiv")] == [4, 2, "0", 1, 0, 0, 0, 1, 0]
     assert rows[("catmull-clark", "openmesh")] == [4, 0, "1 boundary-rule", 0, 1, 1, 1, 0, 0]
     assert robustness_section({"operations": results["operations"], "cases": results["cases"][-1:]}) is None
+    # Each run lands in a shown column: the counts of a row add up to its runs.
+    for (scheme, impl), counts in rows.items():
+        if impl != "core":
+            named_runs = sum(int(part.split()[0]) for part in counts[2].split(", ")) if counts[2] != "0" else 0
+            assert counts[0] == counts[1] + named_runs + sum(counts[3:]), (impl, counts)
+    results["cases"][0]["runs"][0]["outcome"] = "ours-failed (something new)"
+    with pytest.raises(ValueError):
+        robustness_section(results)
 
 
 def test_the_coverage_table_has_a_row_for_every_core_header_folder():
