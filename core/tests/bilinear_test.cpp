@@ -10,8 +10,8 @@
 namespace crossdiv {
 namespace {
 
-using test::expect_near;
-using test::face_corners;  // within 1e-15: sums of two to four halves or quarters of small integers
+using test::expect_near;  // within 1e-15: sums of two to four halves or quarters of small integers
+using test::face_corners;
 
 TEST(Bilinear, AQuadBecomesFourQuadsAroundItsCentre) {
     PolyMesh m;

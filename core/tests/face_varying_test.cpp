@@ -67,19 +67,26 @@ TEST(FaceVarying, ObjTextureIndicesMayBeRelativeOrSharedAndTakeAW) {
 
 TEST(FaceVarying, ObjCornersThatMixTextureIndicesGiveTheGeometryAndANote) {
     // As modelling tools write files whose objects have texture coordinates and others not:
-    // the faces are read, the texture coordinates are not, and a note says where they part.
-    const PolyMesh within = obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2 3\n");
-    EXPECT_EQ(within.num_faces(), 1);
-    EXPECT_TRUE(within.face_varying.empty());
-    ASSERT_EQ(within.source.notes.size(), 1u);
-    EXPECT_EQ(within.source.notes[0], "uv.obj: texture coordinates not read: the corners of line 5 have none, those of "
-                                      "line 5 have one (a channel needs one at every corner)");
-    const PolyMesh across = obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nf 1 2 3\nf 2/1 4/1 3/1\n");
-    EXPECT_EQ(across.num_faces(), 2);
-    EXPECT_TRUE(across.face_varying.empty());
-    ASSERT_EQ(across.source.notes.size(), 1u);
-    EXPECT_EQ(across.source.notes[0], "uv.obj: texture coordinates not read: the corners of line 7 have one, those of "
-                                      "line 6 none (a channel needs one at every corner)");
+    // the faces are read, the texture coordinates are not, and a note says where they part
+    // (within a face, and across two).
+    const struct {
+        const char* text;
+        int faces;
+        const char* note;
+    } cases[] = {
+        {"v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2 3\n", 1,
+         "uv.obj: texture coordinates not read: the corners of line 5 have none, those of line 5 have one "
+         "(a channel needs one at every corner)"},
+        {"v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nf 1 2 3\nf 2/1 4/1 3/1\n", 2,
+         "uv.obj: texture coordinates not read: the corners of line 7 have one, those of line 6 have none "
+         "(a channel needs one at every corner)"},
+    };
+    for (const auto& c : cases) {
+        const PolyMesh m = obj(c.text);
+        EXPECT_EQ(m.num_faces(), c.faces);
+        EXPECT_TRUE(m.face_varying.empty());
+        EXPECT_EQ(m.source.notes, std::vector<std::string>{c.note});
+    }
 }
 
 TEST(FaceVarying, ObjRefusesTextureIndicesThatDoNotFit) {

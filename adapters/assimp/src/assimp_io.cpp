@@ -32,9 +32,10 @@ const std::vector<std::string>& extensions() {
             std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
             const bool core_reads = std::any_of(mesh_extensions().begin(), mesh_extensions().end(),
                                                 [&](std::string_view own) { return own == e; });
-            if (e.size() > 1 && e[0] == '.' && !core_reads && std::find(out.begin(), out.end(), e) == out.end()) out.push_back(e);
+            if (e.size() > 1 && e[0] == '.' && !core_reads) out.push_back(e);
         }
         std::sort(out.begin(), out.end());
+        out.erase(std::unique(out.begin(), out.end()), out.end());  // a format two importers list is one entry
         return out;
     }();
     return ext;

@@ -378,7 +378,7 @@ PolyMesh read_obj(std::istream& in, const std::string& name) {
         mesh.source.notes.push_back(r.name() + ": texture coordinates not read: the corners of line " +
                                     std::to_string(mixed_texture_line) + " " + (texture_corners ? "have none" : "have one") +
                                     ", those of line " + std::to_string(texture_corners_from) + " " +
-                                    (texture_corners ? "have one" : "none") + " (a channel needs one at every corner)");
+                                    (texture_corners ? "have one" : "have none") + " (a channel needs one at every corner)");
         texture_corners = false;
     }
     if (texture_corners) {
