@@ -13,11 +13,13 @@ Needs Debian's chromium, chromium-driver and python3-selenium; a report without 
 suite made no divergence small enough) is reported and passes.
 """
 import argparse
+import contextlib
 import io
 import os
 import sys
 import time
 
+import numpy
 from PIL import Image
 from selenium import webdriver
 from selenium.webdriver.chrome.service import Service
@@ -37,6 +39,29 @@ def browser():
         options.add_argument(arg)
     options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
     return webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
+
+
+def reset(driver):
+    """Makes a browser from browser() as new for the next check: the window at its first size,
+    a blank page, the console's earlier messages read and dropped. Starting Chromium and loading
+    the viewer's scripts the first time take about 4 s; a check run in a reset browser skips both."""
+    driver.set_window_size(1400, 1000)
+    driver.get("about:blank")
+    driver.get_log("browser")
+
+
+@contextlib.contextmanager
+def session(driver=None):
+    """`driver` reset for a check, or a browser of the check's own, quit when it ends."""
+    if driver is not None:
+        reset(driver)
+        yield driver
+        return
+    own = browser()
+    try:
+        yield own
+    finally:
+        own.quit()
 
 
 def console_errors(driver):
@@ -84,10 +109,21 @@ return null;
 """
 
 
+def pixels(png):
+    """A PNG's pixels as a height x width x 3 array of signed integers (room for differences)."""
+    return numpy.asarray(Image.open(io.BytesIO(png)).convert("RGB"), dtype=numpy.int16)
+
+
+def count_differing(rgb, background=BACKGROUND):
+    """How many pixels of an array from pixels() differ from a page's background by more than
+    antialiasing (8 of 255 in some channel). Counted by numpy: a screenshot has a million pixels,
+    which a loop in Python takes a second to visit."""
+    return int(numpy.count_nonzero(numpy.abs(rgb - numpy.array(background, dtype=numpy.int16)).max(axis=2) > 8))
+
+
 def differing_pixels(png, background=BACKGROUND):
     """How many pixels of a PNG differ from a page's background by more than antialiasing."""
-    img = Image.open(io.BytesIO(png)).convert("RGB")
-    return sum(1 for p in img.getdata() if max(abs(p[k] - background[k]) for k in range(3)) > 8)
+    return count_differing(pixels(png), background)
 
 
 EDITOR_BACKGROUND = (0x1e, 0x22, 0x26)  # editor.js
@@ -101,18 +137,18 @@ def open_page(driver, path, ready, what):
     wait_for(driver, ready, what)
 
 
-def check_pages(folder, screenshots=False):
+def check_pages(folder, screenshots=False, driver=None):
     """The pages study's pages, when the report has them: the bundled curves in the editor (a
     curve with core's runs shown, its frames drawn) and the subdivision levels (every entry's
-    views drawn). Fails on a console error or a blank canvas. Returns lines of what was seen."""
+    views drawn). Fails on a console error or a blank canvas. Returns lines of what was seen.
+    Runs in `driver` (reset first) when given, else in a browser of its own."""
     seen, shots = [], os.path.join(folder, "screenshots")
     editor, levels = os.path.join(folder, "curves", "editor.html"), os.path.join(folder, "levels", "levels.html")
     if not os.path.exists(editor) and not os.path.exists(levels):
         return [f"{folder}: no interactive pages (the suite ran no pages study)"]
     if screenshots:
         os.makedirs(shots, exist_ok=True)
-    driver = browser()
-    try:
+    with session(driver) as driver:
         if os.path.exists(editor):
             open_page(driver, editor, "return !!window.crossdivEditor", "the curve editor page")
             curves = driver.execute_script("return window.crossdivEditor.state.curves.length")
@@ -144,14 +180,11 @@ def check_pages(folder, screenshots=False):
             canvas = driver.find_element(By.CSS_SELECTOR, "#view canvas")
             for i in range(entries):
                 driver.execute_script("window.crossdivLevels.select(arguments[0])", i)
-                img = Image.open(io.BytesIO(canvas.screenshot_as_png)).convert("RGB")
+                img = pixels(canvas.screenshot_as_png)
                 n = driver.execute_script("return window.crossdivLevels.state.scenes.length")
-                cell = img.width // n
+                cell = img.shape[1] // n
                 for level in range(n):
-                    part = img.crop((level * cell, 0, (level + 1) * cell, img.height))
-                    buf = io.BytesIO()
-                    part.save(buf, format="PNG")
-                    lit = differing_pixels(buf.getvalue(), LEVELS_BACKGROUND)
+                    lit = count_differing(img[:, level * cell:(level + 1) * cell], LEVELS_BACKGROUND)
                     assert lit > 500, f"levels page, entry {i}, level {level}: blank ({lit} pixels drawn)"
             seen.append(f"levels page: {entries} entries, every level drawn")
             if screenshots:
@@ -161,20 +194,18 @@ def check_pages(folder, screenshots=False):
             errors = console_errors(driver)
             assert not errors, f"console errors on the levels page: {errors}"
         seen.append("no console error on the pages")
-    finally:
-        driver.quit()
     return seen
 
 
-def check(folder, screenshots=False, case=None):
-    """The checks; returns a list of lines describing what was seen. Raises AssertionError."""
+def check(folder, screenshots=False, case=None, driver=None):
+    """The checks; returns a list of lines describing what was seen. Raises AssertionError.
+    Runs in `driver` (reset first) when given, else in a browser of its own."""
     page = os.path.abspath(os.path.join(folder, "index.html"))
     if not os.path.exists(page):
         raise AssertionError(f"{page}: no report")
     shots = os.path.join(folder, "screenshots")
     seen = []
-    driver = browser()
-    try:
+    with session(driver) as driver:
         driver.get("file://" + page)
         wait_for(driver, "return document.readyState === 'complete'", "the page to load")
         if not driver.execute_script("return !!document.getElementById('crossdiv-viewer')"):
@@ -226,8 +257,6 @@ def check(folder, screenshots=False, case=None):
         errors = console_errors(driver)
         assert not errors, f"console errors: {errors}"
         seen.append("no console error")
-    finally:
-        driver.quit()
     return seen
 
 

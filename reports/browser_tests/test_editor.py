@@ -11,7 +11,6 @@ import re
 import subprocess
 import sys
 
-import pytest
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
@@ -58,13 +57,6 @@ def read_swp_points(text):
         assert len(pts) == int(count)
         records.append((keyword, name, int(steps), pts))
     return records
-
-
-@pytest.fixture()
-def driver():
-    d = check_viewer.browser()
-    yield d
-    d.quit()
 
 
 def canvas_offset(driver, point):
