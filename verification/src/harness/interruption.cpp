@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
@@ -29,6 +30,9 @@ struct Registry {
     std::vector<std::string> folders;
     bool adopting = false;
 };
+
+/// Set by the watcher when it takes a signal (stop_requested).
+std::atomic<bool> stopping{false};
 
 /// The registry of this process. A forked worker starts it afresh (stop_cleanly_on_signals):
 /// the copy it inherits lists its parent's children, and its mutex may be in any state.
@@ -177,11 +181,26 @@ void stop_cleanly_on_signals() {
     const sigset_t set = stopping_signals();
     pthread_sigmask(SIG_BLOCK, &set, nullptr);
     adopt_orphans();
+    stopping = false;
     std::thread([set] {
         int sig = 0;
         while (sigwait(&set, &sig) != 0) {}
+        stopping = true;
         stop_everything(sig, registry());
     }).detach();
+}
+
+bool stop_requested() {
+    if (stopping) return true;
+    sigset_t pending;
+    if (sigpending(&pending) != 0) return false;
+    for (int sig : {SIGINT, SIGTERM, SIGHUP})
+        if (sigismember(&pending, sig) == 1) return true;
+    return false;
+}
+
+void await_stop() {
+    for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));
 }
 
 void adopt_orphans() {

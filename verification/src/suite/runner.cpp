@@ -142,6 +142,9 @@ std::vector<CaseRecord> run_jobs(const std::vector<SuiteJob>& jobs, int workers,
         }
     }
     close(pipe_fd[0]);
+    // Stopped from outside: the watcher ends this process by the signal once it has cleaned up;
+    // the jobs the workers did not reach are not failures to record.
+    if (stop_requested()) await_stop();
     std::vector<int> died(workers, 0);
     for (int w = 0; w < workers; ++w) {
         int status = 0;

@@ -24,6 +24,16 @@ namespace crossdiv::verification {
 /// a program's child that left its process group (setsid) is still found and killed.
 void stop_cleanly_on_signals();
 
+/// Whether this process is being stopped (after stop_cleanly_on_signals): its watcher has taken
+/// one of the signals, or one waits for it. A terminal's Ctrl-C reaches the workers together with
+/// this process, so a worker may have ended by it before the watcher wakes.
+bool stop_requested();
+
+/// Waits, without end, for the watcher to end this process. Called once stop_requested(), where
+/// the caller would otherwise go on with what the stop cut short (a suite recording every job
+/// its stopped workers left as a failure, a line each, before the process ends).
+[[noreturn]] void await_stop();
+
 /// Makes this process the subreaper of its descendants (PR_SET_CHILD_SUBREAPER): a process
 /// whose parent ends is re-parented here instead of to init, so reap_adopted_orphans finds it.
 void adopt_orphans();
