@@ -19,7 +19,9 @@
 #include <opensubdiv/version.h>
 // clang-format on
 
+#include <algorithm>
 #include <memory>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -66,10 +68,39 @@ using Face = OpenSubdiv::HbrFace<Point>;
 using Halfedge = OpenSubdiv::HbrHalfedge<Point>;
 using Subdivision = OpenSubdiv::HbrSubdivision<Point>;
 
+/// How Hbr lays out a face-varying channel of `width` numbers: `width` items of one float each
+/// (as OpenSubdiv's regression code gives it UVs). HbrMesh keeps pointers to both arrays.
+struct FVarLayout {
+    std::vector<int> indices, widths;
+    explicit FVarLayout(int width) : indices(static_cast<size_t>(width)), widths(static_cast<size_t>(width), 1) {
+        std::iota(indices.begin(), indices.end(), 0);
+    }
+};
+
+/// Hbr's face-varying data of `in`: each corner's value on its vertex's datum for that face, a
+/// second datum (NewFVarData) where a vertex's faces disagree, as OpenSubdiv's regression code
+/// sets them. Called after Finish(), when every face knows its vertices.
+void set_face_varying(Mesh& mesh, const HbrInput& in) {
+    const int w = in.fvar_width;
+    for (int f = 0, c = 0; f < static_cast<int>(in.face_sizes.size()); ++f) {
+        Face* face = mesh.GetFace(f);
+        for (int k = 0; k < in.face_sizes[static_cast<size_t>(f)]; ++k, ++c) {
+            const float* value = in.fvar_values.data() + static_cast<size_t>(in.fvar_corners[static_cast<size_t>(c)]) * w;
+            Vertex* v = face->GetVertex(k);
+            OpenSubdiv::HbrFVarData<Point>& data = v->GetFVarData(face);
+            if (!data.IsInitialized())
+                data.SetAllData(w, value);
+            else if (!data.CompareAll(w, value))
+                v->NewFVarData(face).SetAllData(w, value);
+        }
+    }
+}
+
 /// The Hbr mesh of `in` with its tags, finished; empty with `error` set when a tag names
 /// something the mesh does not have.
-std::unique_ptr<Mesh> build(const HbrInput& in, Subdivision* scheme, std::string& error) {
-    auto out = std::make_unique<Mesh>(scheme);
+std::unique_ptr<Mesh> build(const HbrInput& in, Subdivision* scheme, const FVarLayout& fvar, std::string& error) {
+    auto out = in.fvar_width > 0 ? std::make_unique<Mesh>(scheme, in.fvar_width, fvar.indices.data(), fvar.widths.data(), in.fvar_width)
+                                 : std::make_unique<Mesh>(scheme);
     const int nv = static_cast<int>(in.positions.size() / 3);
     for (int v = 0; v < nv; ++v) out->NewVertex(v, Point(in.positions[3 * v], in.positions[3 * v + 1], in.positions[3 * v + 2]));
     for (size_t f = 0, c = 0; f < in.face_sizes.size(); c += static_cast<size_t>(in.face_sizes[f]), ++f)
@@ -113,8 +144,46 @@ std::unique_ptr<Mesh> build(const HbrInput& in, Subdivision* scheme, std::string
     }
     out->SetInterpolateBoundaryMethod(in.edge_and_corner ? Mesh::k_InterpolateBoundaryEdgeAndCorner : Mesh::k_InterpolateBoundaryEdgeOnly);
     scheme->SetCreaseSubdivisionMethod(in.chaikin ? Subdivision::k_CreaseChaikin : Subdivision::k_CreaseNormal);
+    if (in.fvar_width > 0) {
+        static constexpr Mesh::InterpolateBoundaryMethod kMethods[] = {
+            Mesh::k_InterpolateBoundaryNone, Mesh::k_InterpolateBoundaryEdgeOnly, Mesh::k_InterpolateBoundaryEdgeAndCorner,
+            Mesh::k_InterpolateBoundaryAlwaysSharp};
+        out->SetFVarInterpolateBoundaryMethod(kMethods[static_cast<int>(in.fvar_boundary)]);
+        out->SetFVarPropagateCorners(in.fvar_propagate_corners);
+    }
     out->Finish();
+    if (in.fvar_width > 0) set_face_varying(*out, in);
     return out;
+}
+
+/// The face-varying channel of `faces` (one level's, in order) into `lv`: one value per Hbr
+/// datum, told apart by address and numbered in order of first use.
+void read_face_varying(const std::vector<Face*>& faces, int width, HbrLevel& lv) {
+    using Datum = OpenSubdiv::HbrFVarData<Point>;
+    std::vector<Datum*> data;
+    for (Face* f : faces)
+        for (int k = 0; k < f->GetNumVertices(); ++k) data.push_back(&f->GetFVarData(k));
+    // The corners sorted by datum, then by corner: each run is one datum, its first corner first.
+    std::vector<size_t> order(data.size());
+    std::iota(order.begin(), order.end(), size_t{0});
+    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+        return data[a] != data[b] ? std::less<Datum*>()(data[a], data[b]) : a < b;
+    });
+    std::vector<size_t> first(data.size());  // each corner's first corner with the same datum
+    for (size_t i = 0, run = 0; i < order.size(); ++i) {
+        if (data[order[i]] != data[order[run]]) run = i;
+        first[order[i]] = order[run];
+    }
+    std::vector<int> number(data.size(), -1);
+    lv.fvar_corners.resize(data.size());
+    for (size_t c = 0; c < data.size(); ++c) {
+        int& n = number[first[c]];
+        if (n < 0) {
+            n = static_cast<int>(lv.fvar_values.size()) / width;
+            lv.fvar_values.insert(lv.fvar_values.end(), data[c]->GetData(0), data[c]->GetData(0) + width);
+        }
+        lv.fvar_corners[c] = n;
+    }
 }
 
 /// The parent of `v` (a vertex of the level after `index`'s), in the numbering of its level:
@@ -144,7 +213,7 @@ bool record_parent(Vertex* v, const std::vector<int>& index, const std::vector<i
 /// Far and core number them where they can be: first the children of the level before's
 /// vertices, in its order, so that a vertex keeps its number; then the others (edge and face
 /// points) in order of first use by the child faces.
-void refine_levels(Mesh& mesh, int num_vertices, int num_faces, int levels, HbrOutput& out) {
+void refine_levels(Mesh& mesh, int num_vertices, int num_faces, int levels, int fvar_width, HbrOutput& out) {
     std::vector<Face*> faces;
     for (int f = 0; f < num_faces; ++f) faces.push_back(mesh.GetFace(f));
     // The vertices of the current level in its numbering; a split vertex (Hbr's copy of a
@@ -202,6 +271,7 @@ void refine_levels(Mesh& mesh, int num_vertices, int num_faces, int levels, HbrO
                 lv.corners.push_back(next[static_cast<size_t>(f->GetVertex(k)->GetID())]);
             }
         }
+        if (fvar_width > 0) read_face_varying(children, fvar_width, lv);
         out.levels.push_back(std::move(lv));
         index = std::move(next);
         vertices = std::move(next_vertices);
@@ -221,9 +291,11 @@ HbrOutput refine(const HbrInput& in) {
                           : in.scheme == HbrScheme::Loop       ? static_cast<Subdivision*>(&loop)
                                                                : static_cast<Subdivision*>(&bilinear);
     HbrOutput out;
-    std::unique_ptr<Mesh> mesh = build(in, scheme, out.error);
+    const FVarLayout fvar(in.fvar_width);  // outlives the mesh, which points into it
+    std::unique_ptr<Mesh> mesh = build(in, scheme, fvar, out.error);
     if (mesh)
-        refine_levels(*mesh, static_cast<int>(in.positions.size() / 3), static_cast<int>(in.face_sizes.size()), in.levels, out);
+        refine_levels(*mesh, static_cast<int>(in.positions.size() / 3), static_cast<int>(in.face_sizes.size()), in.levels,
+                      in.fvar_width, out);
     return out;
 }
 

@@ -20,6 +20,10 @@ struct HbrEdit {
     float value[3] = {0, 0, 0};  ///< Hbr keeps its edits' values in float
 };
 
+/// Hbr's face-varying boundary methods (HbrMesh::InterpolateBoundaryMethod, as
+/// SetFVarInterpolateBoundaryMethod takes them).
+enum class HbrFVarBoundary { None, EdgeOnly, EdgeAndCorner, AlwaysSharp };
+
 /// A mesh whose topology Hbr can hold (checked before: hbr_subdivision.cpp) and its tags.
 struct HbrInput {
     HbrScheme scheme = HbrScheme::CatmullClark;
@@ -34,6 +38,13 @@ struct HbrInput {
     std::vector<float> corner_sharpness;
     std::vector<int> holes;
     std::vector<HbrEdit> edits;  ///< applied as Hbr applies them (paths checked before)
+    /// One face-varying channel when fvar_width > 0: fvar_width numbers per value (Hbr keeps
+    /// them in float), the value of every corner in the order of `corners`.
+    int fvar_width = 0;
+    std::vector<float> fvar_values;
+    std::vector<int> fvar_corners;
+    HbrFVarBoundary fvar_boundary = HbrFVarBoundary::None;
+    bool fvar_propagate_corners = false;  ///< SetFVarPropagateCorners
     int levels = 1;
 };
 
@@ -43,6 +54,11 @@ struct HbrLevel {
     std::vector<double> positions;
     std::vector<int> face_sizes, corners, holes;
     std::vector<int> parent_kind, parent_a, parent_b;
+    /// The face-varying channel (with HbrInput::fvar_width): one value per face-varying datum
+    /// Hbr keeps (corners of a vertex share a value exactly when Hbr gives them the same
+    /// datum), numbered in order of first use by the corners.
+    std::vector<float> fvar_values;
+    std::vector<int> fvar_corners;
 };
 
 struct HbrOutput {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -78,8 +79,35 @@ void check_loop_back_to_back(const PolyMesh& mesh, int levels) {
                            "end on its second level there (HbrVertex::AddIncidentEdge), so it is not run");
 }
 
-/// Hbr's input for `mesh` under `scheme`.
-detail::HbrInput input_of(const PolyMesh& mesh, detail::HbrScheme scheme, int levels) {
+/// Hbr's face-varying settings for `rule` in `in`: OpenSubdiv's table of the Hbr method and
+/// propagate-corners flag each of its rules re-expresses (documentation/compatibility.rst,
+/// "Face-varying Interpolation Options"), with the mesh's first channel.
+/// @throws Rejected for corners-only, which OpenSubdiv 3.0 added and Hbr does not have, and for
+///         a mesh without a channel.
+void set_face_varying(const PolyMesh& mesh, FaceVaryingRule rule, detail::HbrInput& in) {
+    if (mesh.face_varying.empty()) throw Rejected("the mesh has no face-varying channel for Hbr to refine");
+    using B = detail::HbrFVarBoundary;
+    switch (rule) {
+        case FaceVaryingRule::None: in.fvar_boundary = B::EdgeOnly; break;
+        case FaceVaryingRule::CornersOnly:
+            throw Rejected("Hbr has no corners-only face-varying rule (OpenSubdiv 3.0 added it; Hbr's five rules are the others)");
+        case FaceVaryingRule::CornersPlus1: in.fvar_boundary = B::EdgeAndCorner; break;
+        case FaceVaryingRule::CornersPlus2:
+            in.fvar_boundary = B::EdgeAndCorner;
+            in.fvar_propagate_corners = true;
+            break;
+        case FaceVaryingRule::Boundaries: in.fvar_boundary = B::AlwaysSharp; break;
+        case FaceVaryingRule::All: in.fvar_boundary = B::None; break;
+    }
+    const FaceVaryingChannel& channel = mesh.face_varying.front();
+    in.fvar_width = channel.dimension;
+    in.fvar_values.assign(channel.values.begin(), channel.values.end());  // Hbr's data are floats
+    in.fvar_corners = channel.corner_values;
+}
+
+/// Hbr's input for `mesh` under `scheme`, with its first face-varying channel under `fvar`.
+detail::HbrInput input_of(const PolyMesh& mesh, detail::HbrScheme scheme, int levels,
+                          std::optional<FaceVaryingRule> fvar = std::nullopt) {
     check_topology(mesh);
     detail::HbrInput in;
     in.scheme = scheme;
@@ -111,6 +139,7 @@ detail::HbrInput input_of(const PolyMesh& mesh, detail::HbrScheme scheme, int le
         for (int i = 0; i < 3; ++i) h.value[i] = static_cast<float>(e.value[static_cast<size_t>(i)]);
         in.edits.push_back(std::move(h));
     }
+    if (fvar) set_face_varying(mesh, *fvar, in);
     return in;
 }
 
@@ -135,6 +164,14 @@ LevelTrace run(const PolyMesh& mesh, const detail::HbrInput& in, LevelBirths* bi
         for (size_t f = 0, c = 0; f < lv.face_sizes.size(); c += static_cast<size_t>(lv.face_sizes[f]), ++f)
             level.add_face(std::span<const int>(lv.corners.data() + c, static_cast<size_t>(lv.face_sizes[f])));
         level.creases.holes = lv.holes;
+        if (in.fvar_width > 0) {
+            FaceVaryingChannel channel;
+            channel.name = mesh.face_varying.front().name;
+            channel.dimension = in.fvar_width;
+            channel.values.assign(lv.fvar_values.begin(), lv.fvar_values.end());
+            channel.corner_values = lv.fvar_corners;
+            level.face_varying.push_back(std::move(channel));
+        }
         if (births) {
             std::vector<VertexBirth> born(lv.parent_kind.size());
             for (size_t v = 0; v < born.size(); ++v) {
@@ -150,21 +187,22 @@ LevelTrace run(const PolyMesh& mesh, const detail::HbrInput& in, LevelBirths* bi
     return trace;
 }
 
-}  // namespace
-
-LevelTrace catmull_clark(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels, LevelBirths* births) {
+/// The schemes with their first face-varying channel refined under `fvar`, or without.
+LevelTrace catmull_clark_with(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels, LevelBirths* births,
+                              std::optional<FaceVaryingRule> fvar) {
     if (options.boundary == CatmullClarkBoundary::MidpointAverage)
         throw Rejected("Hbr's Catmull-Clark has no midpoint-average boundary rule (OpenMesh's)");
     if (options.vertex != CatmullClarkVertexRule::Standard) throw Rejected("Hbr's Catmull-Clark has the standard vertex rule only");
     if (options.crease_rules != CreaseRules::Hbr) throw Rejected(kOwnCreaseRules);
-    detail::HbrInput in = input_of(mesh, detail::HbrScheme::CatmullClark, levels);
+    detail::HbrInput in = input_of(mesh, detail::HbrScheme::CatmullClark, levels, fvar);
     in.edge_and_corner = options.boundary == CatmullClarkBoundary::EdgeAndCorner;
     in.chaikin = options.creasing == CreaseMethod::Chaikin;
     in.smooth_triangles = options.smooth_triangles;
     return run(mesh, in, births);
 }
 
-LevelTrace loop(const PolyMesh& mesh, const LoopOptions& options, int levels, LevelBirths* births) {
+LevelTrace loop_with(const PolyMesh& mesh, const LoopOptions& options, int levels, LevelBirths* births,
+                     std::optional<FaceVaryingRule> fvar) {
     if (options.weights != LoopWeights::Loop)
         throw Rejected("Hbr's Loop scheme has Loop's 1987 weights only (not " + std::string(to_string(options.weights)) + ")");
     if (options.crease_rules != CreaseRules::Hbr) throw Rejected(kOwnCreaseRules);
@@ -172,17 +210,43 @@ LevelTrace loop(const PolyMesh& mesh, const LoopOptions& options, int levels, Le
         if (mesh.face_size(f) != 3)
             throw Rejected("Hbr's Loop scheme takes triangles; face " + std::to_string(f) + " has " + std::to_string(mesh.face_size(f)) + " corners");
     reject_hierarchical_edits(mesh, "Hbr's Loop scheme");
-    detail::HbrInput in = input_of(mesh, detail::HbrScheme::Loop, levels);
+    detail::HbrInput in = input_of(mesh, detail::HbrScheme::Loop, levels, fvar);
     check_loop_back_to_back(mesh, levels);
     in.edge_and_corner = options.boundary == LoopBoundary::EdgeAndCorner;
     in.chaikin = options.creasing == CreaseMethod::Chaikin;
     return run(mesh, in, births);
 }
 
-LevelTrace bilinear(const PolyMesh& mesh, int levels, LevelBirths* births) {
+LevelTrace bilinear_with(const PolyMesh& mesh, int levels, LevelBirths* births, std::optional<FaceVaryingRule> fvar) {
     // Bilinear has no crease rules; Hbr would refine the holes and drop the creases.
     reject_crease_tags(mesh, "Hbr's bilinear scheme");
-    return run(mesh, input_of(mesh, detail::HbrScheme::Bilinear, levels), births);
+    return run(mesh, input_of(mesh, detail::HbrScheme::Bilinear, levels, fvar), births);
+}
+
+}  // namespace
+
+LevelTrace catmull_clark(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels, LevelBirths* births) {
+    return catmull_clark_with(mesh, options, levels, births, std::nullopt);
+}
+
+LevelTrace loop(const PolyMesh& mesh, const LoopOptions& options, int levels, LevelBirths* births) {
+    return loop_with(mesh, options, levels, births, std::nullopt);
+}
+
+LevelTrace bilinear(const PolyMesh& mesh, int levels, LevelBirths* births) { return bilinear_with(mesh, levels, births, std::nullopt); }
+
+LevelTrace catmull_clark_face_varying(const PolyMesh& mesh, const CatmullClarkOptions& options, FaceVaryingRule rule,
+                                      int levels, LevelBirths* births) {
+    return catmull_clark_with(mesh, options, levels, births, rule);
+}
+
+LevelTrace loop_face_varying(const PolyMesh& mesh, const LoopOptions& options, FaceVaryingRule rule, int levels,
+                             LevelBirths* births) {
+    return loop_with(mesh, options, levels, births, rule);
+}
+
+LevelTrace bilinear_face_varying(const PolyMesh& mesh, FaceVaryingRule rule, int levels, LevelBirths* births) {
+    return bilinear_with(mesh, levels, births, rule);
 }
 
 std::string version() { return "OpenSubdiv Hbr " + detail::version(); }

@@ -6,6 +6,9 @@
 // float (2^-24) on each of the few weights summed.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
+
 #include "crossdiv/adapters/hbr.h"
 
 namespace crossdiv::adapters::hbr {
@@ -219,6 +222,83 @@ TEST(HbrSubdivision, RefusesLoopsSecondLevelOfTwoTrianglesBackToBack) {
             << e.what();
     }
     EXPECT_EQ(catmull_clark(mesh, catmark(CatmullClarkBoundary::EdgeOnly), 2).back().num_faces(), 12 * mesh.num_faces());
+}
+
+// Two unit quads side by side, each with UV values of its own (a seam along their shared edge):
+// face 0 maps to [0,1] x [0,1], face 1 to [2,3] x [0,1]. Under "all" (Hbr's "none" method:
+// linear everywhere) every child corner's value is the bilinear one of its parent face: a
+// vertex's own value there, an edge's midpoint, the face's centre, on both sides of the seam.
+// The values are dyadic, so Hbr's float sums are exact.
+TEST(HbrSubdivision, FaceVaryingValuesUnderAllAreLinearOnEachSideOfASeam) {
+    PolyMesh m;
+    m.positions = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}};
+    m.add_face({0, 1, 4, 3});
+    m.add_face({1, 2, 5, 4});
+    FaceVaryingChannel uv;
+    uv.values = {0, 0, 1, 0, 1, 1, 0, 1, 2, 0, 3, 0, 3, 1, 2, 1};
+    uv.corner_values = {0, 1, 2, 3, 4, 5, 6, 7};
+    m.face_varying.push_back(uv);
+    LevelBirths births;
+    const LevelTrace t = catmull_clark_face_varying(m, catmark(CatmullClarkBoundary::EdgeOnly), FaceVaryingRule::All, 1, &births);
+    ASSERT_EQ(t.size(), 2u);
+    const PolyMesh& fine = t[1];
+    ASSERT_EQ(fine.num_faces(), 8);
+    ASSERT_EQ(fine.face_varying.size(), 1u);
+    const FaceVaryingChannel& out = fine.face_varying[0];
+    ASSERT_EQ(out.corner_values.size(), fine.face_vertices.size());
+    // The value of parent face p at its corner on vertex v.
+    const auto parent_value = [&](int p, int v) {
+        for (int k = 0; k < 4; ++k)
+            if (m.face(p)[k] == v) return std::array<double, 2>{uv.values[2 * (4 * p + k)], uv.values[2 * (4 * p + k) + 1]};
+        ADD_FAILURE() << "vertex " << v << " is not a corner of face " << p;
+        return std::array<double, 2>{NAN, NAN};
+    };
+    for (int f = 0; f < fine.num_faces(); ++f) {
+        const int p = f / 4;  // Hbr's children of face p, in order
+        for (int k = 0; k < 4; ++k) {
+            const int corner = fine.face_start[static_cast<size_t>(f)] + k;
+            const VertexBirth& b = births[0][static_cast<size_t>(fine.face(f)[k])];
+            std::array<double, 2> want{0, 0};
+            if (b.kind == VertexBirth::Kind::Vertex) {
+                want = parent_value(p, b.a);
+            } else if (b.kind == VertexBirth::Kind::Edge) {
+                const std::array<double, 2> x = parent_value(p, b.a), y = parent_value(p, b.b);
+                want = {(x[0] + y[0]) / 2, (x[1] + y[1]) / 2};
+            } else {
+                for (int j = 0; j < 4; ++j) {
+                    const std::array<double, 2> x = parent_value(p, m.face(p)[j]);
+                    want = {want[0] + x[0] / 4, want[1] + x[1] / 4};
+                }
+            }
+            const double* got = out.value(out.corner_values[static_cast<size_t>(corner)]);
+            EXPECT_EQ(got[0], want[0]) << "face " << f << " corner " << k;
+            EXPECT_EQ(got[1], want[1]) << "face " << f << " corner " << k;
+        }
+    }
+}
+
+TEST(HbrSubdivision, FaceVaryingRefusesCornersOnlyAndAMeshWithoutAChannel) {
+    PolyMesh m = square();
+    EXPECT_THROW(catmull_clark_face_varying(m, catmark(CatmullClarkBoundary::EdgeOnly), FaceVaryingRule::None, 1), Rejected);
+    FaceVaryingChannel uv;
+    uv.values = {0, 0, 1, 0, 1, 1, 0, 1};
+    uv.corner_values = {0, 1, 2, 3};
+    m.face_varying.push_back(uv);
+    try {
+        catmull_clark_face_varying(m, catmark(CatmullClarkBoundary::EdgeOnly), FaceVaryingRule::CornersOnly, 1);
+        ADD_FAILURE() << "corners-only was not refused";
+    } catch (const Rejected& e) {
+        EXPECT_NE(std::string(e.what()).find("no corners-only face-varying rule"), std::string::npos) << e.what();
+    }
+    // One face alone: every rule but all keeps its four corners' values (UV corners are sharp
+    // under corners-plus1, corners-plus2 and boundaries; none smooths them as its positions).
+    const LevelTrace t = catmull_clark_face_varying(m, catmark(CatmullClarkBoundary::EdgeOnly), FaceVaryingRule::Boundaries, 1);
+    ASSERT_EQ(t.back().face_varying.size(), 1u);
+    const FaceVaryingChannel& out = t.back().face_varying[0];
+    int kept = 0;
+    for (int v = 0; v < out.num_values(); ++v)
+        for (int c = 0; c < 4; ++c) kept += out.value(v)[0] == uv.values[2 * c] && out.value(v)[1] == uv.values[2 * c + 1];
+    EXPECT_EQ(kept, 4);
 }
 
 }  // namespace

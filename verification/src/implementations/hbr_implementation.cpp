@@ -1,7 +1,8 @@
 // OpenSubdiv's Hbr as an implementation: "hbr", the hierarchical boundary representation
 // OpenSubdiv 3 ships beside Far and tests Far against. Catmull-Clark (both boundary rules,
 // Hbr's k_New triangle rule as smooth-triangles), Loop (Loop's weights, both boundary rules)
-// and bilinear, with crease, corner and hole tags and both creasing methods. Where semi-sharp
+// and bilinear, with crease, corner and hole tags and both creasing methods, and a
+// face-varying channel under five of OpenSubdiv's six rules (not corners-only). Where semi-sharp
 // features decay it changes rule its own way (CreaseRules::Hbr: a sharpness of exactly 1
 // stays sharp one step longer than in Far), declared on every rule, so a difference there is
 // measured as crease-rules. Its weights are floats (hbr.h): the float tier. It reports
@@ -42,8 +43,9 @@ class Hbr final : public Implementation {
 public:
     Hbr()
         : Implementation("hbr", hb::version(), ImplementationKind::Library,
-                         {.schemes = {supports(Scheme::Loop, loop_rules(), true), with_hierarchical_edits(supports(Scheme::CatmullClark, catmull_clark_rules(), true)),
-                                      supports(Scheme::Bilinear, {SchemeRule{}})},
+                         {.schemes = {with_face_varying(supports(Scheme::Loop, loop_rules(), true)),
+                                      with_face_varying(with_hierarchical_edits(supports(Scheme::CatmullClark, catmull_clark_rules(), true))),
+                                      with_face_varying(supports(Scheme::Bilinear, {SchemeRule{}}))},
                           .precision = Precision::Float}) {}
 
     adapters::LevelTrace refine(const PolyMesh& mesh, const RefineRequest& r) const override { return levels(mesh, r, nullptr); }
@@ -59,6 +61,12 @@ private:
     adapters::LevelTrace levels(const PolyMesh& mesh, const RefineRequest& r, adapters::LevelBirths* births) const {
         check_refinable(r.scheme);
         const SchemeRule rule = closest_rule(r.scheme, r.rule);
+        if (r.face_varying && !mesh.face_varying.empty()) {  // HbrFVarData, under Hbr's method for the rule
+            if (r.scheme == Scheme::CatmullClark)
+                return hb::catmull_clark_face_varying(mesh, rule.catmull_clark, *r.face_varying, r.levels, births);
+            if (r.scheme == Scheme::Bilinear) return hb::bilinear_face_varying(mesh, *r.face_varying, r.levels, births);
+            return hb::loop_face_varying(mesh, rule.loop, *r.face_varying, r.levels, births);
+        }
         if (r.scheme == Scheme::CatmullClark) return hb::catmull_clark(mesh, rule.catmull_clark, r.levels, births);
         if (r.scheme == Scheme::Bilinear) return hb::bilinear(mesh, r.levels, births);
         return hb::loop(mesh, rule.loop, r.levels, births);

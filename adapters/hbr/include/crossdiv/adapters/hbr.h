@@ -17,6 +17,7 @@
 #include <string>
 
 #include "crossdiv/adapters/reference.h"
+#include "crossdiv/mesh/face_varying_rule.h"
 #include "crossdiv/mesh/poly_mesh.h"
 #include "crossdiv/subdiv/catmull_clark_mask.h"
 #include "crossdiv/subdiv/loop_mask.h"
@@ -40,6 +41,22 @@ LevelTrace loop(const PolyMesh& mesh, const LoopOptions& options, int levels, Le
 /// `levels` uniform bilinear levels (HbrBilinearSubdivision). @throws Rejected as catmull_clark(),
 /// and for crease, corner or hole tags (bilinear has no crease rules, as in OpenSubdiv's Far).
 LevelTrace bilinear(const PolyMesh& mesh, int levels, LevelBirths* births = nullptr);
+
+/// The same levels with the mesh's first face-varying channel refined by Hbr (HbrFVarData, in
+/// float) under `rule`, each level's channel numbered by Hbr's data: corners share a value
+/// where Hbr gives them one datum. Hbr's settings for each rule are those OpenSubdiv's
+/// compatibility notes give (documentation/compatibility.rst): none is Hbr's edge-only method,
+/// corners-plus1 and corners-plus2 edge-and-corner without and with propagated corners,
+/// boundaries always-sharp, all Hbr's "none".
+/// @throws Rejected as catmull_clark(), for corners-only (new in OpenSubdiv 3.0, not in Hbr)
+///         and for a mesh without a channel.
+LevelTrace catmull_clark_face_varying(const PolyMesh& mesh, const CatmullClarkOptions& options, FaceVaryingRule rule,
+                                      int levels, LevelBirths* births = nullptr);
+/// Loop, as catmull_clark_face_varying; @throws as loop() too.
+LevelTrace loop_face_varying(const PolyMesh& mesh, const LoopOptions& options, FaceVaryingRule rule, int levels,
+                             LevelBirths* births = nullptr);
+/// Bilinear, as catmull_clark_face_varying; @throws as bilinear() too.
+LevelTrace bilinear_face_varying(const PolyMesh& mesh, FaceVaryingRule rule, int levels, LevelBirths* births = nullptr);
 
 /// "OpenSubdiv Hbr 3.5.0" (the version of the OpenSubdiv headers it comes with).
 std::string version();
