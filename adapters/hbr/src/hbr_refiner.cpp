@@ -68,11 +68,25 @@ using Face = OpenSubdiv::HbrFace<Point>;
 using Halfedge = OpenSubdiv::HbrHalfedge<Point>;
 using Subdivision = OpenSubdiv::HbrSubdivision<Point>;
 
-/// How Hbr lays out a face-varying channel of `width` numbers: `width` items of one float each
-/// (as OpenSubdiv's regression code gives it UVs). HbrMesh keeps pointers to both arrays.
+/// The number of floats Hbr is given for a channel of `width`: Hbr's allocator lays its vertices
+/// back to back, each followed by its face-varying datum (HbrMesh's m_vertexSize), so a datum
+/// whose size is not a multiple of a vertex's alignment leaves the next vertex misaligned
+/// (undefined behaviour; UBSan stops at the constructor call with two floats). The width is
+/// rounded up until the datum keeps the alignment; the extra floats are zeros, refined with
+/// the others and dropped.
+int padded_fvar_width(int width) {
+    int w = width;
+    while ((sizeof(OpenSubdiv::HbrFVarData<Point>) + static_cast<size_t>(w - 1) * sizeof(float)) % alignof(Vertex) != 0) ++w;
+    return w;
+}
+
+/// How Hbr lays out a face-varying channel of `width` numbers (padded_fvar_width of the
+/// channel's): `width` items of one float each, as OpenSubdiv's regression code gives it UVs.
+/// HbrMesh keeps pointers to both arrays.
 struct FVarLayout {
+    int width = 0;
     std::vector<int> indices, widths;
-    explicit FVarLayout(int width) : indices(static_cast<size_t>(width)), widths(static_cast<size_t>(width), 1) {
+    explicit FVarLayout(int w) : width(w), indices(static_cast<size_t>(w)), widths(static_cast<size_t>(w), 1) {
         std::iota(indices.begin(), indices.end(), 0);
     }
 };
@@ -80,18 +94,19 @@ struct FVarLayout {
 /// Hbr's face-varying data of `in`: each corner's value on its vertex's datum for that face, a
 /// second datum (NewFVarData) where a vertex's faces disagree, as OpenSubdiv's regression code
 /// sets them. Called after Finish(), when every face knows its vertices.
-void set_face_varying(Mesh& mesh, const HbrInput& in) {
-    const int w = in.fvar_width;
+void set_face_varying(Mesh& mesh, const HbrInput& in, int w) {
+    std::vector<float> value(static_cast<size_t>(w), 0.0f);  // the channel's numbers, then the padding's zeros
     for (int f = 0, c = 0; f < static_cast<int>(in.face_sizes.size()); ++f) {
         Face* face = mesh.GetFace(f);
         for (int k = 0; k < in.face_sizes[static_cast<size_t>(f)]; ++k, ++c) {
-            const float* value = in.fvar_values.data() + static_cast<size_t>(in.fvar_corners[static_cast<size_t>(c)]) * w;
+            const float* given = in.fvar_values.data() + static_cast<size_t>(in.fvar_corners[static_cast<size_t>(c)]) * in.fvar_width;
+            std::copy(given, given + in.fvar_width, value.begin());
             Vertex* v = face->GetVertex(k);
             OpenSubdiv::HbrFVarData<Point>& data = v->GetFVarData(face);
             if (!data.IsInitialized())
-                data.SetAllData(w, value);
-            else if (!data.CompareAll(w, value))
-                v->NewFVarData(face).SetAllData(w, value);
+                data.SetAllData(w, value.data());
+            else if (!data.CompareAll(w, value.data()))
+                v->NewFVarData(face).SetAllData(w, value.data());
         }
     }
 }
@@ -99,7 +114,7 @@ void set_face_varying(Mesh& mesh, const HbrInput& in) {
 /// The Hbr mesh of `in` with its tags, finished; empty with `error` set when a tag names
 /// something the mesh does not have.
 std::unique_ptr<Mesh> build(const HbrInput& in, Subdivision* scheme, const FVarLayout& fvar, std::string& error) {
-    auto out = in.fvar_width > 0 ? std::make_unique<Mesh>(scheme, in.fvar_width, fvar.indices.data(), fvar.widths.data(), in.fvar_width)
+    auto out = in.fvar_width > 0 ? std::make_unique<Mesh>(scheme, fvar.width, fvar.indices.data(), fvar.widths.data(), fvar.width)
                                  : std::make_unique<Mesh>(scheme);
     const int nv = static_cast<int>(in.positions.size() / 3);
     for (int v = 0; v < nv; ++v) out->NewVertex(v, Point(in.positions[3 * v], in.positions[3 * v + 1], in.positions[3 * v + 2]));
@@ -152,7 +167,7 @@ std::unique_ptr<Mesh> build(const HbrInput& in, Subdivision* scheme, const FVarL
         out->SetFVarPropagateCorners(in.fvar_propagate_corners);
     }
     out->Finish();
-    if (in.fvar_width > 0) set_face_varying(*out, in);
+    if (in.fvar_width > 0) set_face_varying(*out, in, fvar.width);
     return out;
 }
 
@@ -291,7 +306,7 @@ HbrOutput refine(const HbrInput& in) {
                           : in.scheme == HbrScheme::Loop       ? static_cast<Subdivision*>(&loop)
                                                                : static_cast<Subdivision*>(&bilinear);
     HbrOutput out;
-    const FVarLayout fvar(in.fvar_width);  // outlives the mesh, which points into it
+    const FVarLayout fvar(in.fvar_width > 0 ? padded_fvar_width(in.fvar_width) : 0);  // outlives the mesh, which points into it
     std::unique_ptr<Mesh> mesh = build(in, scheme, fvar, out.error);
     if (mesh)
         refine_levels(*mesh, static_cast<int>(in.positions.size() / 3), static_cast<int>(in.face_sizes.size()), in.levels,
