@@ -328,6 +328,14 @@ SecondRun run_second(const Implementation& impl, const PolyMesh& input, const Re
     return out;
 }
 
+/// What two float results may part by, relative to `size`: `float_ulps` ulps of the largest
+/// magnitude either holds, for each of the two (positions over the diagonal, texture
+/// coordinates over the UV box).
+double float_tier_bar(float largest, double float_ulps, double size) {
+    const double ulp = static_cast<double>(std::nextafter(largest, INFINITY)) - largest;
+    return 2 * float_ulps * ulp / size;
+}
+
 }  // namespace
 
 const char* to_string(InvarianceResult r) {
@@ -374,8 +382,7 @@ InvarianceCheck measure_invariance(const PolyMesh& refined, const PolyMesh& refi
         float largest = 0;
         for (const PolyMesh* m : {static_cast<const PolyMesh*>(&expected), &refined_transformed})
             for (const Vec3& p : m->positions) largest = std::max(largest, static_cast<float>(p.cwiseAbs().maxCoeff()));
-        const double ulp = static_cast<double>(std::nextafter(largest, INFINITY)) - largest;
-        bar = std::max(bar, 2 * float_ulps * ulp / diagonal);
+        bar = std::max(bar, float_tier_bar(largest, float_ulps, diagonal));
     }
     // The same faces on the same vertex numbers (a moved, scaled or rotated input keeps its
     // order, and so does a deterministic implementation): vertex i is first paired with vertex i,
@@ -472,8 +479,7 @@ InvarianceCheck measure_invariance(const PolyMesh& refined, const PolyMesh& refi
             float largest = 0;
             for (const PolyMesh* mesh : {&expected, &refined_transformed})
                 for (double x : mesh->face_varying.front().values) largest = std::max(largest, std::abs(static_cast<float>(x)));
-            const double ulp = static_cast<double>(std::nextafter(largest, INFINITY)) - largest;
-            uv_bar = std::max(uv_bar, 2 * float_ulps * ulp / uv.uv_box);
+            uv_bar = std::max(uv_bar, float_tier_bar(largest, float_ulps, uv.uv_box));
         }
         const bool uv_ok = uv.compared() && (out.exact ? uv.max_abs == 0.0 : uv.max_rel <= uv_bar);
         if (!uv_ok) {

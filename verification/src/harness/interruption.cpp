@@ -194,8 +194,9 @@ bool stop_requested() {
     if (stopping) return true;
     sigset_t pending;
     if (sigpending(&pending) != 0) return false;
+    const sigset_t watched = stopping_signals();
     for (int sig : {SIGINT, SIGTERM, SIGHUP})
-        if (sigismember(&pending, sig) == 1) return true;
+        if (sigismember(&watched, sig) == 1 && sigismember(&pending, sig) == 1) return true;
     return false;
 }
 
