@@ -304,5 +304,43 @@ TEST(FaceVarying, ASemiSharpCreaseInsideASpanBlendsAtItsLastLevelByHand) {
     EXPECT_EQ(uv_of(half, 2, 4), (UV{17.0 / 16, 15.0 / 16}));
 }
 
+/// `levels` Catmull-Clark levels of `m` (edge-only) with its channel under `rule` and whose rules.
+PolyMesh catmull_clark_uv_by(const PolyMesh& m, FaceVaryingRule rule, CreaseRules rules, int levels) {
+    CatmullClarkOptions o;
+    o.crease_rules = rules;
+    return subdivide_with_face_varying(m, FaceVaryingScheme::CatmullClark, {rule, false, CreaseMethod::Uniform, rules}, levels,
+                                       [&](const PolyMesh& p, const PolyConnectivity& c) { return catmull_clark_step(p, c, o); });
+}
+
+TEST(FaceVarying, HbrsRulesMakeASemiSharpEdgeAFaceVaryingBoundaryForGoodByHand) {
+    // The 2 x 2 grid with UVs (x, y) but (1, 2.4) at vertex 7 (not affine), no seam; the middle
+    // line 3-4-5 has sharpness 0.5. Under `none`, Far treats vertex 4 by its own mask: the
+    // crease rule and the smooth one blended half and half. Smooth: v = 1/2 1 + (0 + 1 + 1 +
+    // 2.4) / 16 + (0.5 + 0.5 + 1.6 + 1.6) / 16 = 1.0375, u = 1; crease: (1, 1); so (1, 1.01875).
+    // Hbr makes any sharp edge a face-varying boundary: vertex 4 has two, the boundary rule
+    // 3/4 (1, 1) + 1/8 (0, 1) + 1/8 (2, 1) = (1, 1) exactly.
+    PolyMesh m = obj("v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 0\nv 2 1 0\nv 0 2 0\nv 1 2 0\nv 2 2 0\n"
+                     "vt 0 0\nvt 1 0\nvt 2 0\nvt 0 1\nvt 1 1\nvt 2 1\nvt 0 2\nvt 1 2.4\nvt 2 2\n"
+                     "f 1/1 2/2 5/5 4/4\nf 2/2 3/3 6/6 5/5\nf 4/4 5/5 8/8 7/7\nf 5/5 6/6 9/9 8/8\n"
+                     "t crease 2/1/0 3 4 0.5\nt crease 2/1/0 4 5 0.5\n");
+    const PolyMesh far = catmull_clark_uv_by(m, FaceVaryingRule::None, CreaseRules::OpenSubdiv, 1);
+    const UV far_centre = uv_of(far, 2, 4);  // child quad 2: face 0's corner at vertex 4
+    EXPECT_DOUBLE_EQ(far_centre[0], 1.0);
+    EXPECT_DOUBLE_EQ(far_centre[1], 1.01875);
+    const PolyMesh hbr = catmull_clark_uv_by(m, FaceVaryingRule::None, CreaseRules::Hbr, 1);
+    EXPECT_EQ(uv_of(hbr, 2, 4), (UV{1, 1}));
+    // The point of edge 4-3 (child quad 2's corner 1): Hbr's midpoint (0.5, 1); Far blends the
+    // midpoint with the smooth edge rule, v = 1/2 1 + 1/2 (2/4 + 0.5/4 + 1.6/4) = 1.0125.
+    EXPECT_EQ(uv_at(hbr, 9), (UV{0.5, 1}));
+    EXPECT_DOUBLE_EQ(uv_at(far, 9)[1], 1.0125);
+    // The sharpness is gone at level 1, but in Hbr the halves of the edges stay face-varying
+    // boundaries: vertex 4 again 3/4 (1, 1) + 1/8 (0.5, 1) + 1/8 (1.5, 1) = (1, 1); Far's
+    // level 2 is smooth there and keeps the asymmetry.
+    EXPECT_EQ(uv_of(catmull_clark_uv_by(m, FaceVaryingRule::None, CreaseRules::Hbr, 2), 8, 4), (UV{1, 1}));
+    EXPECT_GT(uv_of(catmull_clark_uv_by(m, FaceVaryingRule::None, CreaseRules::OpenSubdiv, 2), 8, 4)[1], 1.001);
+    // Hbr has no corners-only rule.
+    EXPECT_THROW(catmull_clark_uv_by(m, FaceVaryingRule::CornersOnly, CreaseRules::Hbr, 1), InputError);
+}
+
 }  // namespace
 }  // namespace crossdiv

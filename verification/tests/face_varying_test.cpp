@@ -205,7 +205,7 @@ TEST(FaceVaryingCompare, CompareGivesAPerCornerVerdictBesideThePositions) {
 // triangulations, its texture coordinates agree with core's (and Far's) under corners-plus2,
 // boundaries and all, within the float tier (Hbr keeps face-varying data in float). It has no
 // corners-only rule, and says so. (Under none and corners-plus1 it parts on some edge cases:
-// measured and listed in docs/references.md, not yet classified.)
+// by its own face-varying rules, the test below.)
 TEST(FaceVaryingCompare, HbrAgreesUnderTheRulesItSharesWithFar) {
     CROSSDIV_REQUIRE_LIBRARIES("opensubdiv");
     int compared = 0;
@@ -236,6 +236,64 @@ TEST(FaceVaryingCompare, HbrAgreesUnderTheRulesItSharesWithFar) {
     ASSERT_EQ(c.runs.size(), 1u);
     EXPECT_EQ(c.runs[0].outcome.status, RunStatus::Rejected);
     EXPECT_NE(c.runs[0].outcome.message.find("no corners-only face-varying rule"), std::string::npos) << c.runs[0].outcome.message;
+}
+
+// Hbr's face-varying rules in core (FaceVaryingOptions::rules, face_varying_legacy_rules.cpp)
+// against Hbr itself, under the four rules Hbr has that are not linear: every face-varying edge
+// case (Catmull-Clark on the quads, Loop on the triangulations, 2 levels) and every crease mesh
+// with a seam across it and with three UV regions (Catmull-Clark, 3 levels: the halves of a
+// semi-sharp edge stay face-varying boundaries after it decays). Core under Hbr's rules agrees
+// with Hbr within the float tier on all; asked for Far's rules, the comparison names the
+// difference legacy-fvar-rules wherever it is one (and never leaves one unexplained). The
+// test counts the differences, so it cannot pass on rules that agree by accident everywhere.
+TEST(FaceVaryingCompare, CoreUnderHbrsFaceVaryingRulesAgreesWithHbr) {
+    CROSSDIV_REQUIRE_LIBRARIES("opensubdiv");
+    std::vector<std::pair<std::string, PolyMesh>> meshes;
+    for (const datasets::UvEdgeCase& e : datasets::uv_edge_cases()) meshes.emplace_back("edgecase:" + e.name, e.mesh);
+    for (const datasets::BundledMesh& b : datasets::crease_meshes())
+        for (datasets::UvLayout layout : {datasets::UvLayout::HalfSeam, datasets::UvLayout::ThreeRegions})
+            meshes.emplace_back(b.name + " " + std::string(to_string(layout)), datasets::with_uv_layout(b.mesh, layout));
+    // Under the sanitizers each mesh is checked under one of the four rules, a different one
+    // from mesh to mesh (as the sweeps above).
+#ifdef CROSSDIV_SANITIZED
+    constexpr int kRuleStride = 4;
+#else
+    constexpr int kRuleStride = 1;
+#endif
+    int compared = 0, legacy = 0, combination = 0;
+    for (const auto& [name, mesh] : meshes) {
+        const Scheme scheme = mesh.all_triangles() && name.starts_with("edgecase:") ? Scheme::Loop : Scheme::CatmullClark;
+        ++combination;
+        for (FaceVaryingRule rule : {FaceVaryingRule::None, FaceVaryingRule::CornersPlus1, FaceVaryingRule::CornersPlus2,
+                                     FaceVaryingRule::Boundaries}) {
+            if (combination++ % kRuleStride != 0) continue;
+            const std::string what = name + " " + std::string(to_string(rule));
+            RefinementRequest req;
+            req.scheme = scheme;
+            req.levels = name.starts_with("edgecase:") ? 2 : 3;
+            req.face_varying = rule;
+            req.references = {"hbr"};
+            const RefinementComparison far_rules = compare_refinement(mesh, name, req);
+            ASSERT_EQ(far_rules.runs.size(), 1u) << what;
+            ASSERT_TRUE(far_rules.runs[0].uv && far_rules.runs[0].uv->compared()) << what;
+            const Outcome& o = far_rules.runs[0].uv->outcome;
+            EXPECT_TRUE(o.verdict == Verdict::Agree || o.cls == DivergenceClass::LegacyFaceVaryingRules)
+                << what << ": " << far_rules.runs[0].uv->explanation;
+            legacy += o.cls == DivergenceClass::LegacyFaceVaryingRules;
+
+            if (scheme == Scheme::Loop) req.rule.loop.crease_rules = CreaseRules::Hbr;
+            else req.rule.catmull_clark.crease_rules = CreaseRules::Hbr;
+            const RefinementComparison hbr_rules = compare_refinement(mesh, name, req);
+            ASSERT_EQ(hbr_rules.runs.size(), 1u) << what;
+            const RefinementRun& hbr = hbr_rules.runs[0];
+            ASSERT_TRUE(hbr.uv && hbr.uv->compared()) << what << ": " << (hbr.uv ? hbr.uv->not_compared : "no uv");
+            EXPECT_EQ(hbr.uv->outcome.verdict, Verdict::Agree) << what << ": " << hbr.uv->explanation;
+            ++compared;
+        }
+    }
+    EXPECT_GE(compared, 4 * static_cast<int>(meshes.size()) / kRuleStride);
+    // Measured: 47 of the 4 x 18 + 4 x 2 x 13 runs.
+    EXPECT_GE(legacy, kRuleStride == 1 ? 40 : 5);
 }
 
 TEST(FaceVaryingCompare, AReferenceOnAnotherRuleIsNamed) {

@@ -60,6 +60,9 @@ FaceVaryingChannel face_varying_limit(const PolyMesh& mesh, const FaceVaryingCha
     const PolyConnectivity conn = build_poly_connectivity(mesh);
     FaceVaryingChannel out = channel;
     if (options.rule == FaceVaryingRule::All || scheme == FaceVaryingScheme::Bilinear) return out;  // linear: kept
+    if (options.rules == CreaseRules::Hbr)
+        throw InputError("the limit of texture coordinates is computed under OpenSubdiv 3's face-varying rules only (Hbr's "
+                         "rules have no limit masks here)");
 
     const Topology t = Analyzer(mesh, conn, channel, options, semi).run();
     const std::vector<int>& value = channel.corner_values;

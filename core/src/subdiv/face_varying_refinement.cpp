@@ -8,6 +8,8 @@
 #include "crossdiv/error.h"
 #include "crossdiv/subdiv/crease_level.h"
 #include "crossdiv/subdiv/crease_mask.h"
+#include "face_varying_children.h"
+#include "face_varying_legacy_rules.h"
 #include "face_varying_topology.h"
 #include "finite_level.h"
 
@@ -17,53 +19,8 @@ namespace {
 using face_varying_topology::Analyzer;
 using face_varying_topology::Topology;
 using face_varying_topology::ValueKind;
-
-/// Where each child vertex comes from, read off the step's faces (so that no scheme's vertex
-/// numbering is assumed beyond "old vertices keep their index").
-struct ChildOrigins {
-    std::vector<int> edge_of_child;  ///< the parent edge of an edge point, else -1
-    std::vector<int> face_of_child;  ///< the parent face of a face point, else -1
-    std::vector<int> parent_face;    ///< per child face
-    /// Per child face, the parent corner whose vertex it keeps (-1 for Loop's middle
-    /// triangle, which keeps none): an old vertex's corner in a child face is that one's.
-    std::vector<int> parent_corner;
-};
-
-ChildOrigins child_origins(const PolyMesh& parent, const PolyConnectivity& conn, const RefinementStep& step,
-                           FaceVaryingScheme scheme) {
-    ChildOrigins o;
-    const size_t child_nv = static_cast<size_t>(step.stencils.num_rows());
-    o.edge_of_child.assign(child_nv, -1);
-    o.face_of_child.assign(child_nv, -1);
-    const int nc = conn.num_corners();
-    const int child_faces = static_cast<int>(step.face_start.size()) - 1;
-    o.parent_face.resize(static_cast<size_t>(child_faces));
-    o.parent_corner.assign(static_cast<size_t>(child_faces), -1);
-    if (scheme == FaceVaryingScheme::Loop) {
-        if (child_faces != 4 * parent.num_faces())
-            throw std::logic_error("refine_face_varying: a Loop step with " + std::to_string(child_faces) + " faces");
-        for (int f = 0; f < parent.num_faces(); ++f) {
-            const int c = parent.face_start[f];
-            for (int k = 0; k < 3; ++k) {
-                o.parent_face[static_cast<size_t>(4 * f + k)] = f;
-                o.parent_corner[static_cast<size_t>(4 * f + k)] = c + k;
-                const int m = step.face_vertices[static_cast<size_t>(3 * (4 * f + k) + 1)];
-                o.edge_of_child[static_cast<size_t>(m)] = conn.corner_edge[c + k];
-            }
-            o.parent_face[static_cast<size_t>(4 * f + 3)] = f;
-        }
-    } else {
-        if (child_faces != nc)
-            throw std::logic_error("refine_face_varying: a quad step with " + std::to_string(child_faces) + " faces");
-        for (int c = 0; c < nc; ++c) {
-            o.parent_face[static_cast<size_t>(c)] = conn.corner_face[c];
-            o.parent_corner[static_cast<size_t>(c)] = c;
-            o.edge_of_child[static_cast<size_t>(step.face_vertices[static_cast<size_t>(4 * c + 1)])] = conn.corner_edge[c];
-            o.face_of_child[static_cast<size_t>(step.face_vertices[static_cast<size_t>(4 * c + 2)])] = conn.corner_face[c];
-        }
-    }
-    return o;
-}
+using face_varying_children::ChildOrigins;
+using face_varying_children::child_origins;
 
 /// Sums weighted values into a new value of `out`.
 class ValueWriter {
@@ -96,12 +53,18 @@ FaceVaryingChannel refine_face_varying(const PolyMesh& parent, const PolyConnect
                                        const FaceVaryingChannel& channel, FaceVaryingScheme scheme,
                                        const FaceVaryingOptions& options, const FaceVaryingSemiSharp* semi_in,
                                        FaceVaryingSemiSharp* semi_out) {
+    const bool linear = options.rule == FaceVaryingRule::All || scheme == FaceVaryingScheme::Bilinear;
+    if (options.rules == CreaseRules::Hbr && !linear) {
+        if (options.rule == FaceVaryingRule::CornersOnly)
+            throw InputError("face-varying rule corners-only has no counterpart among Hbr's face-varying rules (it is new in "
+                             "OpenSubdiv 3)");
+        return face_varying_legacy_rules::refine(parent, conn, step, channel, scheme, options, semi_in, semi_out);
+    }
     Analyzer analyzer(parent, conn, channel, options, semi_in);
     const Topology t = analyzer.run();
     const ChildOrigins origin = child_origins(parent, conn, step, scheme);
     const int nv = parent.num_vertices();
     const int child_nv = step.stencils.num_rows();
-    const bool linear = options.rule == FaceVaryingRule::All || scheme == FaceVaryingScheme::Bilinear;
 
     // The child values, numbered per child vertex in order: an old vertex has one per value
     // of its parent, a face point one, an edge point one, or one per face on a discontinuous

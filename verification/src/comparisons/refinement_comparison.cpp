@@ -104,13 +104,20 @@ std::optional<OrderChange> face_order_change(const PolyMesh& input, const PolyMe
     return std::nullopt;
 }
 
+/// Whether `rule` brings Hbr's face-varying rules (FaceVaryingOptions::rules).
+bool legacy_face_varying_rules(Scheme scheme, const SchemeRule& rule) {
+    return (scheme == Scheme::Loop ? rule.loop.crease_rules : rule.catmull_clark.crease_rules) == CreaseRules::Hbr;
+}
+
 /// The face-varying values of a run whose positions were matched (`map`: its vertices to
 /// ours): agreement within `tolerance` of the UV box, else the rule that explains the
-/// difference -- the reference's values are core's under another rule, or (a subject under
+/// difference -- the reference's values are core's under the reference's own face-varying
+/// rules (`applied`, the rule it ran with) or under another of the six, or (a subject under
 /// test) the subject's are -- else unexplained.
 FaceVaryingRun compare_face_varying(const PolyMesh& ours, const PolyMesh& theirs, const std::vector<int>& map,
                                     const Implementation& ref, Scheme scheme, FaceVaryingRule requested,
-                                    const SchemeRule& rule, const std::string& subject, double tolerance, CoreRuns& core,
+                                    const SchemeRule& rule, const SchemeRule& applied, const std::string& subject,
+                                    double tolerance, CoreRuns& core,
                                     const std::function<std::optional<PolyMesh>(const PolyMesh&)>& rerun_reference,
                                     const PolyMesh& input) {
     FaceVaryingRun u;
@@ -135,6 +142,23 @@ FaceVaryingRun compare_face_varying(const PolyMesh& ours, const PolyMesh& theirs
                                                          : u.worst_class == "interior"
                                                              ? std::string("an interior value")
                                                              : "a " + u.worst_class + " value");
+    // The reference's own face-varying rules first (Hbr's, which its crease rules bring): the
+    // most direct explanation, the same requested rule read as that library reads it.
+    if (legacy_face_varying_rules(scheme, applied) && !legacy_face_varying_rules(scheme, rule)) {
+        const CoreRun& run = core.with(applied, requested);
+        if (run.error.empty() && !run.last().face_varying.empty()) {
+            const CornerValueComparison fit = compare_corner_values(run.last(), theirs, map);
+            if (fit.compared() && fit.max_rel <= tolerance) {
+                u.outcome = {Verdict::Diverge, DivergenceClass::LegacyFaceVaryingRules};
+                u.who_follows = ref.name();
+                u.explanation = ref.name() + "'s texture coordinates follow Hbr's face-varying rules (OpenSubdiv 2's, which " +
+                                "Far corrected: a sharp edge a face-varying boundary for good, a dart's boundary rule, no " +
+                                "fractional sharpness): core under them (" + rule_name(scheme, applied) +
+                                ") agrees within " + sci(tolerance) + " (" + where + ")";
+                return u;
+            }
+        }
+    }
     std::vector<int> identity(static_cast<size_t>(ours.num_vertices()));
     for (size_t i = 0; i < identity.size(); ++i) identity[i] = static_cast<int>(i);
     for (FaceVaryingRule r : kFaceVaryingRules) {
@@ -788,7 +812,8 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
                 if (again.outcome.status != RunStatus::Ok || !again.trace) return std::nullopt;
                 return again.trace->back();
             };
-            run.uv = compare_face_varying(ours, theirs, map, ref, req.scheme, *fvar, req.rule, subject_name, tolerance, core,
+            run.uv = compare_face_varying(ours, theirs, map, ref, req.scheme, *fvar, req.rule, run.ran_with, subject_name,
+                                          tolerance, core,
                                           rerun, input);
             if (keep_view && run.uv->compared()) uvs_at_our_corners[ref.name()] = corner_values_in_our_order(ours, theirs, map);
         }

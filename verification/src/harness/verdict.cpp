@@ -32,6 +32,7 @@ constexpr std::array kClasses = {
     std::pair{DivergenceClass::TriangleRule, "triangle-rule"},
     std::pair{DivergenceClass::CreaseRules, "crease-rules"},
     std::pair{DivergenceClass::FaceVaryingRule, "fvar-rule"},
+    std::pair{DivergenceClass::LegacyFaceVaryingRules, "legacy-fvar-rules"},
     std::pair{DivergenceClass::NormalRule, "normal-rule"},
     std::pair{DivergenceClass::Convention, "convention"},
     std::pair{DivergenceClass::FaceOrderDependence, "face-order-dependence"},

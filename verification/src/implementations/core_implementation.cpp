@@ -77,12 +77,13 @@ FaceVaryingScheme face_varying_scheme(Scheme s) {
 }
 
 /// The face-varying options of a request: its rule, and what of the geometry's rule decides
-/// a value's sharpness.
+/// a value's sharpness (Hbr's crease rules bring Hbr's face-varying rules with them).
 FaceVaryingOptions face_varying_options(const RefineRequest& r) {
     const bool corners_sharp = r.scheme == Scheme::Loop ? r.rule.loop.boundary == LoopBoundary::EdgeAndCorner
                                                         : r.rule.catmull_clark.boundary == CatmullClarkBoundary::EdgeAndCorner;
     return {*r.face_varying, corners_sharp && r.scheme != Scheme::Bilinear,
-            r.scheme == Scheme::Loop ? r.rule.loop.creasing : r.rule.catmull_clark.creasing};
+            r.scheme == Scheme::Loop ? r.rule.loop.creasing : r.rule.catmull_clark.creasing,
+            r.scheme == Scheme::Loop ? r.rule.loop.crease_rules : r.rule.catmull_clark.crease_rules};
 }
 
 std::optional<adapters::LevelTrace> face_varying_levels(const PolyMesh& mesh, const RefineRequest& r,

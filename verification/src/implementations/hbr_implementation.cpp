@@ -5,7 +5,9 @@
 // face-varying channel under five of OpenSubdiv's six rules (not corners-only). Where semi-sharp
 // features decay it changes rule its own way (CreaseRules::Hbr: a sharpness of exactly 1
 // stays sharp one step longer than in Far), declared on every rule, so a difference there is
-// measured as crease-rules. Its weights are floats (hbr.h): the float tier. It reports
+// measured as crease-rules; the same declaration brings Hbr's face-varying rules to core's run
+// (FaceVaryingOptions::rules), so a difference in the texture coordinates is measured as
+// legacy-fvar-rules. Its weights are floats (hbr.h): the float tier. It reports
 // each vertex's parent.
 #include "crossdiv/adapters/hbr.h"
 #include "library_implementations.h"

@@ -55,6 +55,8 @@ enum class CreaseRules {
     /// infinitely sharp ones included, and takes 3/4 of a lone edge's sharpness before the
     /// drop by 1 (hbr_child_edge_sharpness); an edge point is the midpoint when the edge's
     /// sharpness is at least 1, else blended by it, whatever Chaikin's decay gives its halves.
+    /// Face-varying data is then refined by Hbr's face-varying rules too
+    /// (FaceVaryingOptions::rules).
     Hbr,
 };
 

@@ -57,6 +57,9 @@ public:
 
     /// Sharpness of edge e at this level (infinite on the boundary).
     float edge_sharpness(int e) const { return edge_[static_cast<size_t>(e)]; }
+    /// Sharpness of vertex v at this level as tagged (a corner sharpened by the edge-and-corner
+    /// rule not included).
+    float vertex_tag(int v) const { return vertex_tag_[static_cast<size_t>(v)]; }
     /// Sharpness of the next level's half of edge e that ends at vertex v (an end of e).
     float child_half_sharpness(int e, int v) const {
         return half_[2 * static_cast<size_t>(e) + (conn_.edge_vertices[e][0] == v ? 0 : 1)];

@@ -36,7 +36,8 @@ namespace crossdiv {
 ///         for a channel that does not fit the mesh; for Catmull-Clark, naming the vertex, a
 ///         smooth vertex with a face that is not a quad around it (refine once first: every face
 ///         is then a quad), and for Loop a face that is not a triangle; for values whose limits
-///         overflow double.
+///         overflow double; under Hbr's face-varying rules (FaceVaryingOptions::rules), which
+///         have no limit masks here, unless the values are linear.
 FaceVaryingChannel face_varying_limit(const PolyMesh& mesh, const FaceVaryingChannel& channel, FaceVaryingScheme scheme,
                                       const FaceVaryingOptions& options, const FaceVaryingSemiSharp* semi = nullptr);
 

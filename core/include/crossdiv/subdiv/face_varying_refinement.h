@@ -63,6 +63,13 @@ struct FaceVaryingOptions {
     /// How the geometry's semi-sharp creases decay: a semi-sharp value off a seam is blended
     /// toward a corner at the level where its sharpness runs out.
     CreaseMethod creasing = CreaseMethod::Uniform;
+    /// Whose face-varying rules: OpenSubdiv 3's (Far: this file's), or Hbr's (OpenSubdiv 2's
+    /// and RenderMan's, the rules OpenSubdiv's compatibility notes say Far corrected: an edge
+    /// that is sharp at all is a face-varying boundary, and its halves stay so at every later
+    /// level; a dart takes the boundary rule; every other value the smooth rule, without
+    /// creases; see face_varying_legacy_rules.cpp). Under Hbr's rules the rule `corners-only`,
+    /// new in OpenSubdiv 3, has no counterpart and is refused.
+    CreaseRules rules = CreaseRules::OpenSubdiv;
 };
 
 /// How semi-sharp a crease value is (OpenSubdiv's ValueTag _semiSharp and _depSharp).
@@ -72,13 +79,22 @@ enum class SemiSharpTag : unsigned char {
     Dependent,  ///< corners-plus1/2: sharpened because its vertex's other value is semi-sharp
 };
 
-/// The semi-sharp tags of a channel's values (one SemiSharpTag per value), carried from a
-/// level to the next as OpenSubdiv carries them (FVarRefinement::reclassifySemisharpValues):
-/// what a value beside a decaying crease does at a level depends on the levels before (a
-/// dependent value released by the other stays sharp while any edge at the vertex is
-/// semi-sharp), not on that level's sharpness alone.
+/// What a channel carries from a level to the next, besides its values.
+///
+/// Under OpenSubdiv's rules, the semi-sharp tags of its values (one SemiSharpTag per value),
+/// carried as OpenSubdiv carries them (FVarRefinement::reclassifySemisharpValues): what a
+/// value beside a decaying crease does at a level depends on the levels before (a dependent
+/// value released by the other stays sharp while any edge at the vertex is semi-sharp), not
+/// on that level's sharpness alone.
+///
+/// Under Hbr's rules, which vertices of the level are points of a face-varying boundary edge
+/// of the level before (HbrHalfedge::CopyFVarInfiniteSharpness: the halves of such an edge
+/// are face-varying boundaries too, whatever their own sharpness).
 struct FaceVaryingSemiSharp {
     std::vector<unsigned char> tag;
+    /// Hbr's rules, per vertex: 0 a vertex of the level before, 1 a new point, 2 the point of
+    /// a face-varying boundary edge (an edge from it to a vertex of kind 0 is such a half).
+    std::vector<unsigned char> vertex_origin;
 };
 
 /// One level of `channel` (on `parent`, whose connectivity is `conn`) through `step`, the

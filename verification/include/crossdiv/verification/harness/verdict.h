@@ -60,6 +60,10 @@ enum class DivergenceClass {
     /// Face-varying values (texture coordinates) refined under another of OpenSubdiv's six
     /// linear-interpolation rules than the one asked for
     FaceVaryingRule,
+    /// Face-varying values refined by Hbr's rules, OpenSubdiv 2's and RenderMan's, which Far
+    /// corrected (crossdiv::FaceVaryingOptions::rules: a sharp edge a face-varying boundary for
+    /// good, the dart's boundary rule, no fractional sharpness)
+    LegacyFaceVaryingRules,
     NormalRule,                ///< vertex normals by a rule that is none of our weightings (CGAL's most visible normal)
     /// A course task's subject follows another named convention than core's (a curve's
     /// basis, t read as 1 - t, a normal weighting, a cylinder's frames)
@@ -89,7 +93,7 @@ enum class DivergenceClass {
 
 /// "" for None, else the class's name in results.json ("weight-family", "corner-rule",
 /// "weight-family+corner-rule", "boundary-rule", "border-faces-dropped", "parity", "wing-rule", "triangle-rule",
-/// "fvar-rule", "normal-rule",
+/// "fvar-rule", "legacy-fvar-rules", "normal-rule",
 /// "convention", "face-order-dependence", "rounding",
 /// "isolated-vertex-handling", "valence-limit", "short-boundary-loop", "topology", "triangulation",
 /// "unexplained", "non-manifold-handling", "orientation-handling", "degenerate-face-handling",
