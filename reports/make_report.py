@@ -17,6 +17,7 @@ from report.invariance import invariance_cases, invariance_section  # noqa: E402
 from report.model import render_html, render_markdown  # noqa: E402
 from report.records import halfedge_cases, split_cases  # noqa: E402
 from report.robustness import robustness_section  # noqa: E402
+from report.suite_time import suite_time_section  # noqa: E402
 from report.records import SCHEMA_VERSION, fmt  # noqa: E402
 
 
@@ -58,7 +59,8 @@ def build(results, bench, folder, figdir):
             sections.curve_section(curves, bench, figdir), sections.surface_section(surfaces, bench, figdir),
             sections.schemes_section(schemes), invariance_section(invariance, viewer.view_index(viewed)),
             sections.halfedge_section(halfedge_cases(results["cases"])),
-            sections.studies_section(studies, figdir), sections.timing_section(bench, figdir)]
+            sections.studies_section(studies, figdir), sections.timing_section(bench, figdir),
+            suite_time_section(results)]
     return f"crossdiv conformance report: suite {results.get('suite')}", intro, [b for b in body if b is not None]
 
 

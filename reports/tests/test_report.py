@@ -16,6 +16,7 @@ from report.model import Figure, Section, Table, Tally, Text, md_cell, render_ht
 from report.viewer import matrix_table  # noqa: E402
 from report.records import category, split_cases  # noqa: E402
 from report.robustness import robustness_section  # noqa: E402
+from report.suite_time import suite_time_section  # noqa: E402
 
 
 def cells(line):
@@ -215,6 +216,24 @@ def test_the_robustness_table_counts_each_implementations_runs_by_how_they_ended
     results["cases"][0]["runs"][0]["outcome"] = "ours-failed (something new)"
     with pytest.raises(ValueError):
         robustness_section(results)
+
+
+def test_the_suite_time_splits_each_operations_seconds_into_core_references_and_the_rest():
+    results = {"seconds": 3.0, "workers": 2, "cases": [
+        {"operation": "loop", "job_seconds": 2.0, "core_seconds": 0.5,
+         "runs": [{"reference": "opensubdiv", "seconds": 0.25}, {"reference": "meshlab", "seconds": 1.0}]},
+        {"operation": "loop", "job_seconds": 1.0, "core_seconds": 0.25, "runs": [{"reference": "opensubdiv", "seconds": 0.25}]},
+        {"operation": "curves", "job_seconds": 1.0, "runs": []}]}
+    section = suite_time_section(results)
+    ops, refs = section.blocks[1], section.blocks[2]
+    rows = {r[0]: list(r[1:]) for r in ops.rows}
+    # loop: 2 jobs, 3 runs, 3.0 s (75% of 4.0), core 0.75, references 1.5, the rest 0.75 over 5 runs.
+    assert rows["loop"] == [2, 3, "3.0", "75%", "0.8", "1.5", "0.8", "0.150"]
+    assert rows["curves"] == [1, 0, "1.0", "25%", "0.0", "0.0", "1.0", "1.000"]
+    assert [r[0] for r in ops.rows] == ["loop", "curves"]  # the largest first
+    assert {r[0]: list(r[1:]) for r in refs.rows} == {"meshlab": [1, "1.0", "1.000"], "opensubdiv": [2, "0.5", "0.250"]}
+    assert "1.8 s (44%)" in section.blocks[0].text  # the rest in all: 0.75 + 1.0
+    assert suite_time_section({"cases": [{"operation": "loop", "runs": []}]}) is None
 
 
 def test_the_coverage_table_has_a_row_for_every_core_header_folder():

@@ -29,7 +29,7 @@ case bundled:all,edgecases:all   modified-butterfly levels=2 tier=weak tolerance
 case bundled:icosahedron,bundled:open-patch   invariance scheme=loop levels=2 impls=core,opensubdiv
 """
 # What may differ between two runs of the same cases: times, and the shard bookkeeping.
-VOLATILE = {"seconds", "core_seconds", "reference_seconds", "shard", "workers", "jobs_run"}
+VOLATILE = {"seconds", "core_seconds", "job_seconds", "reference_seconds", "shard", "workers", "jobs_run"}
 
 
 def comparable(folder):

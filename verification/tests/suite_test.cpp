@@ -2,6 +2,7 @@
 // shrinking of a divergence, and the benchmark's records (never its times).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -281,6 +282,13 @@ TEST(Suite, RunsInWorkersAndRecordsEachOutcome) {
     EXPECT_EQ(calls, 4);
     ASSERT_EQ(recs.size(), 4u);
     for (size_t i = 0; i < recs.size(); ++i) EXPECT_EQ(recs[i].job, static_cast<int>(i));  // ordered by job
+    // Each job's wall time, which holds core's own and its references' runs.
+    for (const CaseRecord& c : recs) {
+        ASSERT_TRUE(std::isfinite(c.job_seconds)) << c.id;
+        double parts = std::isfinite(c.core_seconds) ? c.core_seconds : 0.0;
+        for (const RunRecord& r : c.runs) parts += std::isfinite(r.seconds) ? r.seconds : 0.0;
+        EXPECT_GE(c.job_seconds, parts) << c.id;
+    }
     // tetrahedron: closed, every reference agrees.
     for (const RunRecord& r : recs[0].runs) EXPECT_EQ(outcome_label(recs[0], r), "agree");
     // open-patch with the corner rule: OpenSubdiv and its Hbr agree, the others, without it,

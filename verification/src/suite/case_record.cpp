@@ -191,6 +191,7 @@ json to_json(const CaseRecord& c) {
         j["tolerance_rel"] = finite_or_null(c.tolerance);
     }
     if (std::isfinite(c.core_seconds)) j["core_seconds"] = c.core_seconds;
+    if (std::isfinite(c.job_seconds)) j["job_seconds"] = c.job_seconds;
     if (!c.core_error.empty() || j.contains("core_error")) j["core_error"] = c.core_error;
     if (c.ours_failed) j["ours_failed"] = true;
     if (c.runs.empty() && !c.ours_failed) j["refusal_class"] = to_string(c.refusal);
@@ -254,6 +255,7 @@ CaseRecord case_record_from_json(const json& j) {
             c.tolerance = number(j, "tolerance_rel");
         }
         c.core_seconds = number(j, "core_seconds");
+        c.job_seconds = number(j, "job_seconds");
         c.core_error = text(j, "core_error");
         c.ours_failed = j.value("ours_failed", false);
         if (j.contains("refusal_class")) c.refusal = divergence_class_from_string(text(j, "refusal_class"));

@@ -1,10 +1,13 @@
 #include "crossdiv/verification/suite/runner.h"
 
+#include <sys/mman.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
+#include <chrono>
 #include <csignal>
 #include <cstring>
 #include <filesystem>
@@ -43,15 +46,47 @@ CaseRecord failed_job(const SuiteJob& job, const std::string& why, bool ours_fai
     return c;
 }
 
+/// The jobs of a run, handed out one at a time to whichever worker is free (a worker with a
+/// long job does not hold up the jobs behind it): a counter and, per job, the worker that took
+/// it, in memory the forked workers share with the parent.
+class JobQueue {
+public:
+    explicit JobQueue(size_t jobs) : jobs_(static_cast<int>(jobs)) {
+        bytes_ = sizeof(std::atomic<int>) * (jobs + 1);
+        void* p = mmap(nullptr, bytes_, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
+        if (p == MAP_FAILED) throw std::runtime_error("mmap of the job queue failed");
+        slots_ = static_cast<std::atomic<int>*>(p);
+        new (&slots_[0]) std::atomic<int>(0);
+        for (size_t i = 1; i <= jobs; ++i) new (&slots_[i]) std::atomic<int>(-1);
+    }
+    JobQueue(const JobQueue&) = delete;
+    JobQueue& operator=(const JobQueue&) = delete;
+    ~JobQueue() { munmap(slots_, bytes_); }
+
+    /// The next job for worker w, -1 when none is left.
+    int take(int w) {
+        const int i = slots_[0].fetch_add(1);
+        if (i >= jobs_) return -1;
+        slots_[i + 1].store(w);
+        return i;
+    }
+    /// The worker that took job i, -1 if none did.
+    int taker(int i) const { return slots_[i + 1].load(); }
+
+private:
+    static_assert(std::atomic<int>::is_always_lock_free, "a lock-free atomic works across processes");
+    int jobs_;
+    size_t bytes_ = 0;
+    std::atomic<int>* slots_ = nullptr;
+};
+
 void identify(const SuiteJob& job, CaseRecord& c) {
     c.job = job.index;
     c.id = job.id;
     c.manifest_line = job.entry->line;
 }
 
-}  // namespace
-
-CaseRecord run_job(const SuiteJob& job, const std::string& out_dir) {
+CaseRecord run_job_untimed(const SuiteJob& job, const std::string& out_dir) {
     CaseRecord c;
     try {
         c = job.entry->operation->run(job, out_dir);
@@ -75,6 +110,15 @@ CaseRecord run_job(const SuiteJob& job, const std::string& out_dir) {
     return c;
 }
 
+}  // namespace
+
+CaseRecord run_job(const SuiteJob& job, const std::string& out_dir) {
+    const auto start = std::chrono::steady_clock::now();
+    CaseRecord c = run_job_untimed(job, out_dir);
+    c.job_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return c;
+}
+
 std::vector<CaseRecord> run_jobs(const std::vector<SuiteJob>& jobs, int workers, const std::string& out_dir,
                                  const std::function<void(int, int, const CaseRecord&)>& progress) {
     workers = std::max(1, std::min<int>(workers, static_cast<int>(jobs.size())));
@@ -84,19 +128,21 @@ std::vector<CaseRecord> run_jobs(const std::vector<SuiteJob>& jobs, int workers,
     std::vector<pid_t> pids;
     std::vector<std::unique_ptr<RegisteredChild>> registrations;
     std::vector<fs::path> parts;
+    JobQueue queue(jobs.size());
     std::fflush(nullptr);
     for (int w = 0; w < workers; ++w) {
         parts.push_back(fs::path(out_dir) / ("worker" + std::to_string(w) + ".jsonl"));
         const pid_t pid = fork();
         if (pid < 0) throw std::runtime_error("fork failed");
         if (pid == 0) {
-            // Worker w: every workers-th job; one JSON line per record, then a line on the
-            // pipe with the job index (short writes to a pipe are atomic).
+            // Worker w: the next job nobody has taken, until none is left; one JSON line per
+            // record, then a line on the pipe with the job index (short writes to a pipe are
+            // atomic).
             stop_cleanly_on_signals();
             close(pipe_fd[0]);
             std::ofstream part(parts.back());
-            for (size_t i = w; i < jobs.size(); i += workers) {
-                part << json_text(to_json(run_job(jobs[i], out_dir))) + "\n" << std::flush;
+            for (int i; (i = queue.take(w)) >= 0;) {
+                part << json_text(to_json(run_job(jobs[static_cast<size_t>(i)], out_dir))) + "\n" << std::flush;
                 if (!part) {  // a full disk: the parent records the job as ended without a record
                     std::fprintf(stderr, "crossdiv: %s: cannot write\n", parts.back().c_str());
                     _exit(1);
@@ -136,7 +182,7 @@ std::vector<CaseRecord> run_jobs(const std::vector<SuiteJob>& jobs, int workers,
         for (size_t nl; (nl = buffer.find('\n')) != std::string::npos;) {
             const size_t i = std::stoul(buffer.substr(0, nl));
             buffer.erase(0, nl + 1);
-            collect(static_cast<int>(i % workers));
+            collect(queue.taker(static_cast<int>(i)));
             const auto it = done.find(jobs[i].index);
             if (it != done.end()) progress(static_cast<int>(done.size()), static_cast<int>(jobs.size()), it->second);
         }
@@ -161,15 +207,18 @@ std::vector<CaseRecord> run_jobs(const std::vector<SuiteJob>& jobs, int workers,
             out.push_back(std::move(it->second));
             continue;
         }
-        // The worker died in core (a crash of ours, not of a reference: those are isolated).
-        const int w = static_cast<int>(i % workers);
+        // The worker that took it died in core (a crash of ours, not of a reference: those are
+        // isolated); or every worker ended before it was taken.
+        const int w = queue.taker(static_cast<int>(i));
+        const int sig = w >= 0 ? died[static_cast<size_t>(w)] : 0;
         // SIGINT, SIGTERM, SIGHUP: the run was stopped from outside (the worker then ends
         // by that signal after cleaning up, stop_cleanly_on_signals), not a crash.
-        const bool stopped = died[w] == SIGINT || died[w] == SIGTERM || died[w] == SIGHUP;
+        const bool stopped = sig == SIGINT || sig == SIGTERM || sig == SIGHUP;
         const std::string how = stopped ? "worker stopped by signal " : "worker crashed in core: signal ";
         CaseRecord c = failed_job(jobs[i],
-                                  died[w] ? how + std::to_string(died[w]) + " (" + strsignal(died[w]) + ")"
-                                          : "worker ended without a record",
+                                  w < 0  ? std::string("not run: every worker had ended")
+                                  : sig  ? how + std::to_string(sig) + " (" + strsignal(sig) + ")"
+                                         : "worker ended without a record",
                                   true);
         identify(jobs[i], c);
         progress(static_cast<int>(out.size() + 1), static_cast<int>(jobs.size()), c);

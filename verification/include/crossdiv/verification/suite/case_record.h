@@ -55,6 +55,10 @@ struct CaseRecord {
     int levels = 0;
     double tolerance = NAN;
     double core_seconds = NAN;
+    /// Wall time of the whole job in its worker (reading the input, every run, isolation,
+    /// correspondence, classification, writing its files): what the suite spends beyond the
+    /// implementations' own seconds (core_seconds, each run's) is read off it.
+    double job_seconds = NAN;
     std::string core_error;    ///< core refused the input (the message)
     bool ours_failed = false;  ///< core crashed or threw internally: a failure of ours
     /// For a case without runs whose input core refused: the input handling the case declares
