@@ -11,11 +11,14 @@
 
 #include "crossdiv/curves/bezier.h"
 #include "crossdiv/curves/cubic_spline.h"
+#include "crossdiv/curves/curve_record.h"
 #include "crossdiv/curves/frames.h"
+#include "crossdiv/curves/primitive_tessellation.h"
 #include "crossdiv/curves/primitives.h"
 #include "crossdiv/curves/tessellation.h"
 #include "crossdiv/error.h"
 #include "crossdiv/io/curve_io.h"
+#include "crossdiv/mesh/tri_mesh.h"
 #include "parse_errors.h"
 #include "test_points.h"
 
@@ -253,6 +256,45 @@ TEST(Tessellation, FlatteningEstimateOfAParabolaByHand) {
     EXPECT_LE(chordal_deviation(c, d).max, tol);
     EXPECT_LE(d.size() - 1, std::ceil(1.15 * flattening_estimate(c, tol)));
     EXPECT_THROW(flattening_estimate(c, 0.0), InputError);
+}
+
+TEST(Tessellation, APrimitiveByDistanceIsWithinTolWithNearlyTheFewestEdges) {
+    // A circle of radius 2 at tol 1e-4: N* = sqrt(1 / r) 2 pi r / sqrt(8 tol) = 2 pi sqrt(2 / 8e-4)
+    // = 100 pi. The fewest edges of any inscribed polygon within tol: a chord of angle t sags
+    // r (1 - cos(t / 2)), so t <= 2 acos(1 - tol / r) and 2 pi / t = 314.16...: 315 edges. The
+    // bound (h^2 / 8 r, widened by h / 32 of it between samples) gives edges of 0.019994
+    // radians: 315 too.
+    Primitive circle;
+    circle.radius = 2;
+    EXPECT_NEAR(primitive_flattening_estimate(circle, 1e-4), 100 * M_PI, 1e-9 * 100 * M_PI);
+    const Polyline c = tessellate_primitive_distance(circle, 1e-4);
+    EXPECT_EQ(std::ceil(2 * M_PI / (2 * std::acos(1 - 1e-4 / 2))), 315);
+    EXPECT_EQ(c.size() - 1, 315);
+    EXPECT_LE(primitive_deviation(circle, c).max, 1e-4);
+    EXPECT_EQ(c.positions.back(), c.positions.front());  // closed, bitwise
+    // The helix and the trefoil at 1e-3 and 1e-4 of their size: within tol, and within 1.15 N*
+    // (doubling uniform steps took the trefoil 1.92 N* at 1e-4).
+    Primitive helix;
+    helix.kind = PrimitiveKind::Helix;
+    helix.radius = 1.5;
+    helix.pitch = 2;
+    helix.turns = 3;
+    Primitive trefoil;
+    trefoil.kind = PrimitiveKind::Trefoil;
+    for (const Primitive& p : {helix, trefoil})
+        for (double rel : {1e-3, 1e-4}) {
+            const double tol = rel * bounding_box_diagonal(sample_primitive(p, 256).positions);
+            const Polyline d = tessellate_primitive_distance(p, tol);
+            const std::string what = std::string(to_string(p.kind)) + " at " + std::to_string(rel);
+            EXPECT_LE(primitive_deviation(p, d).max, tol) << what;
+            EXPECT_LE(d.size() - 1, 1.15 * primitive_flattening_estimate(p, tol)) << what;
+            EXPECT_GE(d.size() - 1, primitive_flattening_estimate(p, tol) * 0.95) << what;
+        }
+    EXPECT_NE(tessellate_primitive_distance(helix, 1e-3).positions.back(),
+              tessellate_primitive_distance(helix, 1e-3).positions.front());  // open
+    EXPECT_THROW(tessellate_primitive_distance(circle, 0.0), InputError);
+    EXPECT_THROW(tessellate_primitive_distance(circle, 1e-300), InputError);
+    EXPECT_THROW(primitive_flattening_estimate(circle, -1.0), InputError);
 }
 
 TEST(Tessellation, ChordalDeviationOfAParabolaByHand) {

@@ -139,7 +139,8 @@ def curve_section(curve_cases, bench, figdir):
                     [(r["curve"], fmt(r["tol"]), f"{r['uniform_edges']} ({fmt(r['uniform_dev'])})",
                       f"{r['angle_edges']} ({fmt(r['angle_dev'])}, {fmt(r['angle_tol_deg'])})" if r["angle_reached"]
                       else f"{r['angle_edges']} (cap: {fmt(r['angle_dev'])})",
-                      f"{r['distance_edges']} ({fmt(r['distance_dev'])})", f"{r['wang_edges']} ({fmt(r['wang_dev'])})",
+                      f"{r['distance_edges']} ({fmt(r['distance_dev'])})",
+                      f"{r['wang_edges']} ({fmt(r['wang_dev'])})" if r.get("wang_edges") is not None else "-",
                       fmt(r.get("optimal_edges"), ".1f"),
                       fmt(r["distance_edges"] / r["optimal_edges"], ".2f") if r.get("optimal_edges") else "-")
                      for r in tess]))

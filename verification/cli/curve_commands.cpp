@@ -305,9 +305,8 @@ json run_curve_bench(int repeats) {
     for (const auto& [input, file] : files) {
         for (size_t i = 0; i < file.curves.size(); ++i) {
             const CurveRecord& r = file.curves[i];
-            if (r.type == CurveType::Primitive) continue;
             const std::string label = std::filesystem::path(input).stem().string() + "/" + r.label(static_cast<int>(i));
-            const double size = bounding_box_diagonal(r.chain().points);
+            const double size = r.type == CurveType::Primitive ? primitive_size(r.primitive) : bounding_box_diagonal(r.chain().points);
             const double tols[] = {1e-2 * size, 1e-3 * size, 1e-4 * size};
             for (const TessellationRow& row : tessellation_study(r, label, tols)) {
                 const double relative = row.tol / size;
@@ -320,15 +319,13 @@ json run_curve_bench(int repeats) {
                 fmt::print("{:<28} {:>9.2e}  {:>18} {:>18} {:>18} {:>18} {:>8.1f} {:>10.2f}\n", label, row.tol,
                            cell(row.uniform_edges, row.uniform_dev),
                            row.angle_reached ? cell(row.angle_edges, row.angle_dev) : "cap " + cell(row.angle_edges, row.angle_dev),
-                           cell(row.distance_edges, row.distance_dev), cell(row.wang_edges, row.wang_dev), row.optimal_edges,
+                           cell(row.distance_edges, row.distance_dev),
+                           row.has_wang ? cell(row.wang_edges, row.wang_dev) : std::string("-"), row.optimal_edges,
                            row.distance_edges / row.optimal_edges);
-                rows.push_back({{"curve", row.curve}, {"input", input}, {"tol", row.tol}, {"uniform_edges", row.uniform_edges},
-                                {"uniform_steps", row.uniform_steps}, {"uniform_dev", row.uniform_dev},
-                                {"angle_edges", row.angle_edges}, {"angle_dev", row.angle_dev},
-                                {"angle_tol_deg", row.angle_tol_deg}, {"angle_reached", row.angle_reached},
-                                {"distance_edges", row.distance_edges}, {"distance_dev", row.distance_dev},
-                                {"wang_edges", row.wang_edges}, {"wang_dev", row.wang_dev},
-                                {"optimal_edges", row.optimal_edges}, {"tol_relative", relative}});
+                json j = to_json(row);
+                j["input"] = input;
+                j["tol_relative"] = relative;
+                rows.push_back(std::move(j));
             }
             // Evaluation time: position, d1 and d2 at 1000 parameters per segment, ours vs Eigen.
             if (const std::optional<CurveTiming> t = time_curve_evaluation(r, label, repeats)) timing.push_back(to_json(*t));
@@ -390,7 +387,8 @@ void print_curve_tables(const std::vector<CaseRecord>& records) {
             for (const json& row : t["tessellation"])
                 fmt::print("    {:<12} tol {:<9.3g} edges: uniform {:>5}  angle {:>5}  distance {:>5}  Wang {:>5}\n",
                            row["curve"].get<std::string>(), row["tol"].get<double>(), row["uniform_edges"].get<int>(),
-                           row["angle_edges"].get<int>(), row["distance_edges"].get<int>(), row["wang_edges"].get<int>());
+                           row["angle_edges"].get<int>(), row["distance_edges"].get<int>(),
+                           row["wang_edges"].is_number() ? std::to_string(row["wang_edges"].get<int>()) : "-");
     }
 }
 

@@ -4,6 +4,7 @@
 
 #include "crossdiv/curves/bessel_overhauser.h"
 #include "crossdiv/curves/bezier.h"
+#include "crossdiv/curves/primitive_tessellation.h"
 #include "crossdiv/error.h"
 
 namespace crossdiv {
@@ -70,18 +71,16 @@ double max_turn(const Polyline& p) {
     return worst;
 }
 
-Polyline sample_primitive_until(const CurveRecord& r, const TessellationOptions& o) {
-    // Doubling from the record's steps; 2^20 steps of any primitive here is far below any
-    // tolerance the readers accept, so the cap only guards against a bug.
+/// A primitive by angle: uniform steps, doubled from the record's until no edge turns the
+/// tangent by more than the tolerance (the turn of a uniform step is the same all along a
+/// circle or helix). 2^20 steps of any primitive here is far below any tolerance the readers
+/// accept, so the cap only guards against a bug.
+Polyline sample_primitive_by_angle(const CurveRecord& r, double angle_tol) {
     constexpr int kMaxSteps = 1 << 20;
-    const bool by_angle = o.mode == TessellationMode::Angle;
-    const double tol = by_angle ? o.angle_tol : o.tol;
-    if (!std::isfinite(tol) || tol <= 0.0)
-        throw InputError(r.keyword + ": the " + (by_angle ? "angle" : "distance") + " tolerance must be positive");
+    if (!std::isfinite(angle_tol) || angle_tol <= 0.0) throw InputError(r.keyword + ": the angle tolerance must be positive");
     for (int steps = std::max(1, r.steps);; steps *= 2) {
         Polyline p = sample_primitive(r.primitive, steps);
-        const double measured = by_angle ? max_turn(p) : primitive_deviation(r.primitive, p).max;
-        if (measured <= tol || steps >= kMaxSteps) return p;
+        if (max_turn(p) <= angle_tol || steps >= kMaxSteps) return p;
     }
 }
 
@@ -90,7 +89,8 @@ Polyline sample_primitive_until(const CurveRecord& r, const TessellationOptions&
 Polyline tessellate_record(const CurveRecord& r, const TessellationOptions& o) {
     if (r.type == CurveType::Primitive) {
         if (o.mode == TessellationMode::Uniform) return sample_primitive(r.primitive, o.intervals.value_or(r.steps));
-        return sample_primitive_until(r, o);
+        if (o.mode == TessellationMode::Angle) return sample_primitive_by_angle(r, o.angle_tol);
+        return tessellate_primitive_distance(r.primitive, o.tol);
     }
     const BezierChain c = r.chain();
     switch (o.mode) {

@@ -308,9 +308,6 @@ void split_equal(std::span<const Vec3> c, int k, std::vector<Vec3>& dest, SplitS
 
 /// Samples per segment of the flattening integral.
 constexpr int kFlatteningSamples = 128;
-/// Bisection steps that place an edge's far end: the end found lies within 2^-24 of the
-/// bracket's width below the farthest feasible one, far below what would save an edge.
-constexpr int kReachBisections = 24;
 
 /// Samples of the flattening integral of one segment: cumulative[j] is the integral of
 /// sqrt(kappa) ds over [0, j / kFlatteningSamples] (trapezoids). sqrt(kappa) |c'| is
@@ -542,24 +539,10 @@ Polyline tessellate_distance(const BezierChain& chain, const DistanceBudget& bud
     };
     std::vector<std::vector<Vec3>> rows;
     for (double u = 0.0; u < end;) {
-        // The farthest end within tol: bracketed from where the flattening integral says an
-        // edge within tol ends (growing by half while it fits; each test reads the segments the
-        // edge spans, so a long chain costs about its length), then bisected.
-        double lo = u, hi = end;
-        for (double g = std::clamp(profile.reaching(profile.at(u) + step), u + (end - u) * 1e-9, end);;) {
-            if (!fits(u, g)) {
-                hi = g;
-                break;
-            }
-            lo = g;
-            if (g == end) break;
-            g = std::min(end, u + 1.5 * (g - u));
-        }
-        for (int i = 0; i < kReachBisections && lo < end; ++i) {
-            const double mid = 0.5 * (lo + hi);
-            (fits(u, mid) ? lo : hi) = mid;
-        }
-        const double reach = lo;
+        // The farthest end within tol, bracketed from where the flattening integral says an
+        // edge within tol ends (each test reads the segments the edge spans, so a long chain
+        // costs about its length).
+        const double reach = farthest_reach(u, end, profile.reaching(profile.at(u) + step), fits);
         if (reach > u) {
             emit_at(u);
             u = reach;

@@ -9,6 +9,7 @@
 #include "crossdiv/curves/bessel_overhauser.h"
 #include "crossdiv/curves/bezier.h"
 #include "crossdiv/curves/kochanek_bartels.h"
+#include "crossdiv/curves/primitive_tessellation.h"
 #include "crossdiv/curves/quaternion_bezier.h"
 #include "crossdiv/datasets/bundled_curves.h"
 #include "crossdiv/error.h"
@@ -439,14 +440,44 @@ void check_frames(const CurveRecord& r, const Polyline& p, const std::string& la
     }
 }
 
-/// Uniform steps per segment: the fewest whose measured deviation meets tol.
-int fewest_uniform_steps(const BezierChain& c, double tol) {
+/// A curve record's tessellations and their measured deviation: a spline's chain, or a
+/// primitive's closed form (tessellate_record tells them apart; the deviation is measured
+/// against the exact curve either way).
+struct Tessellator {
+    const CurveRecord& record;
+    std::optional<BezierChain> chain;  ///< a spline's
+
+    explicit Tessellator(const CurveRecord& r) : record(r) {
+        if (r.type != CurveType::Primitive) chain = r.chain();
+    }
+    Polyline uniform(int steps) const {
+        return chain ? tessellate_uniform(*chain, steps) : sample_primitive(record.primitive, steps);
+    }
+    Polyline by_angle(double angle) const {
+        TessellationOptions o;
+        o.mode = TessellationMode::Angle;
+        o.angle_tol = angle;
+        return tessellate_record(record, o);
+    }
+    Polyline by_distance(double tol) const {
+        return chain ? tessellate_distance(*chain, tol) : tessellate_primitive_distance(record.primitive, tol);
+    }
+    double deviation(const Polyline& p) const {
+        return chain ? chordal_deviation(*chain, p).max : primitive_deviation(record.primitive, p).max;
+    }
+    double optimal_edges(double tol) const {
+        return chain ? flattening_estimate(*chain, tol) : primitive_flattening_estimate(record.primitive, tol);
+    }
+};
+
+/// Uniform steps (per segment of a spline): the fewest whose measured deviation meets tol.
+int fewest_uniform_steps(const Tessellator& t, double tol) {
     int hi = 1;
-    while (chordal_deviation(c, tessellate_uniform(c, hi)).max > tol) hi *= 2;
+    while (t.deviation(t.uniform(hi)) > tol) hi *= 2;
     int lo = hi / 2;  // fails (or 0)
     while (hi - lo > 1) {
         const int mid = (lo + hi) / 2;
-        (chordal_deviation(c, tessellate_uniform(c, mid)).max <= tol ? hi : lo) = mid;
+        (t.deviation(t.uniform(mid)) <= tol ? hi : lo) = mid;
     }
     return hi;
 }
@@ -455,28 +486,30 @@ int fewest_uniform_steps(const BezierChain& c, double tol) {
 
 std::vector<TessellationRow> tessellation_study(const CurveRecord& r, const std::string& label, std::span<const double> tols) {
     std::vector<TessellationRow> rows;
-    if (r.type == CurveType::Primitive) return rows;
-    const BezierChain c = r.chain();
+    const Tessellator t(r);
     for (double tol : tols) {
         TessellationRow row;
         row.curve = label;
         row.tol = tol;
-        row.optimal_edges = flattening_estimate(c, tol);
-        row.uniform_steps = fewest_uniform_steps(c, tol);
-        const Polyline u = tessellate_uniform(c, row.uniform_steps);
+        row.optimal_edges = t.optimal_edges(tol);
+        row.uniform_steps = fewest_uniform_steps(t, tol);
+        const Polyline u = t.uniform(row.uniform_steps);
         row.uniform_edges = u.size() - 1;
-        row.uniform_dev = chordal_deviation(c, u).max;
-        const Polyline d = tessellate_distance(c, tol);
+        row.uniform_dev = t.deviation(u);
+        const Polyline d = t.by_distance(tol);
         row.distance_edges = d.size() - 1;
-        row.distance_dev = chordal_deviation(c, d).max;
-        const Polyline w = tessellate_uniform(c, wang_intervals(c, tol));
-        row.wang_edges = w.size() - 1;
-        row.wang_dev = chordal_deviation(c, w).max;
+        row.distance_dev = t.deviation(d);
+        row.has_wang = t.chain.has_value();
+        if (t.chain) {  // Wang's bound is on a Bezier segment's control points
+            const Polyline w = tessellate_uniform(*t.chain, wang_intervals(*t.chain, tol));
+            row.wang_edges = w.size() - 1;
+            row.wang_dev = t.deviation(w);
+        }
         // The largest angle tolerance that meets tol: halve from 90 degrees until it does,
         // then bisect between the last failing and the first passing value.
         double fail = M_PI, pass = 0;
         for (double a = M_PI / 2; a > 1e-6; a /= 2) {
-            if (chordal_deviation(c, tessellate_angle(c, a)).max <= tol) {
+            if (t.deviation(t.by_angle(a)) <= tol) {
                 pass = a;
                 break;
             }
@@ -485,22 +518,35 @@ std::vector<TessellationRow> tessellation_study(const CurveRecord& r, const std:
         if (pass > 0) {
             for (int it = 0; it < 12; ++it) {
                 const double mid = 0.5 * (pass + fail);
-                (chordal_deviation(c, tessellate_angle(c, mid)).max <= tol ? pass : fail) = mid;
+                (t.deviation(t.by_angle(mid)) <= tol ? pass : fail) = mid;
             }
-            const Polyline a = tessellate_angle(c, pass);
+            const Polyline a = t.by_angle(pass);
             row.angle_edges = a.size() - 1;
-            row.angle_dev = chordal_deviation(c, a).max;
+            row.angle_dev = t.deviation(a);
             row.angle_tol_deg = pass * 180 / M_PI;
             row.angle_reached = true;
         } else {
-            const Polyline a = tessellate_angle(c, 1e-6);  // the 10-level cap: the finest it goes
+            const Polyline a = t.by_angle(1e-6);  // the 10-level cap: the finest it goes
             row.angle_edges = a.size() - 1;
-            row.angle_dev = chordal_deviation(c, a).max;
+            row.angle_dev = t.deviation(a);
         }
         rows.push_back(row);
     }
     return rows;
 }
+
+json to_json(const TessellationRow& row) {
+    const json null;
+    return {{"curve", row.curve}, {"tol", row.tol}, {"uniform_edges", row.uniform_edges},
+            {"uniform_steps", row.uniform_steps}, {"uniform_dev", row.uniform_dev},
+            {"angle_edges", row.angle_edges}, {"angle_dev", row.angle_dev},
+            {"angle_tol_deg", row.angle_tol_deg}, {"angle_reached", row.angle_reached},
+            {"distance_edges", row.distance_edges}, {"distance_dev", row.distance_dev},
+            {"wang_edges", row.has_wang ? json(row.wang_edges) : null}, {"wang_dev", row.has_wang ? json(row.wang_dev) : null},
+            {"optimal_edges", row.optimal_edges}};
+}
+
+double primitive_size(const Primitive& p) { return bounding_box_diagonal(sample_primitive(p, 256).positions); }
 
 HelixFrameStudy helix_frame_study() {
     const double b = 1.0 / (2 * M_PI), c = std::sqrt(1 + b * b), tau = b / (c * c);
@@ -539,6 +585,30 @@ HelixFrameStudy helix_frame_study() {
     return study;
 }
 
+namespace {
+
+/// Tessellation guarantees at one tolerance per curve (1e-3 of its size): the distance mode
+/// (and a spline's Wang counts) must meet it as measured, the distance mode within
+/// kDistanceModeEdgesOverOptimal of N*.
+void check_tessellation(const CurveRecord& r, const std::string& label, double size, Checker& out, json& tess) {
+    const double tol = 1e-3 * size;
+    for (const TessellationRow& row : tessellation_study(r, label, std::span<const double>(&tol, 1))) {
+        out.add(label, "distance-mode", "analytic", row.distance_dev, row.tol, "abs",
+                "measured deviation of the distance-adaptive polyline (" + std::to_string(row.distance_edges) + " edges)");
+        if (row.optimal_edges > 0)
+            out.add(label, "distance-mode-edges", "flattening estimate", row.distance_edges / row.optimal_edges,
+                    tolerances::kDistanceModeEdgesOverOptimal, "ratio",
+                    std::to_string(row.distance_edges) + " edges over N* = " + std::to_string(row.optimal_edges) +
+                        ", the fewest any polyline within the tolerance needs");
+        if (row.has_wang)
+            out.add(label, "wang-bound", "analytic", row.wang_dev, row.tol, "abs",
+                    "measured deviation with Wang's per-segment counts (" + std::to_string(row.wang_edges) + " edges)");
+        tess.push_back(to_json(row));
+    }
+}
+
+}  // namespace
+
 CheckReport check_curve_file(const CurveFile& file, const std::string& input) {
     CheckReport report;
     report.input = input;
@@ -566,6 +636,7 @@ CheckReport check_curve_file(const CurveFile& file, const std::string& input) {
                     "uniform samples vs the closed form (the last sample of a closed curve is the first)");
             out.add(label, "tangent", "exact", tangent, 8 * kEps, "abs", "unit tangent vs the closed-form derivative");
             check_frames(r, uniform, label, out, closure);
+            check_tessellation(r, label, primitive_size(r.primitive), out, tess);
             continue;
         }
         const BezierChain c = r.chain();
@@ -582,28 +653,7 @@ CheckReport check_curve_file(const CurveFile& file, const std::string& input) {
         if (r.type == CurveType::CameraPath) check_orientations(r, label, uniform, out, orientations);
         if (r.type == CurveType::KappaClosed) kappa.push_back(check_kappa_record(r, label, uniform, report));
         check_frames(r, uniform, label, out, closure);
-        // Tessellation guarantees at one tolerance per curve (1e-3 of its size): the distance
-        // mode and Wang's counts must meet it as measured.
-        const double tol = 1e-3 * scale_of(c);
-        const std::vector<TessellationRow> rows = tessellation_study(r, label, std::span<const double>(&tol, 1));
-        for (const TessellationRow& row : rows) {
-            out.add(label, "distance-mode", "analytic", row.distance_dev, row.tol, "abs",
-                    "measured deviation of the distance-adaptive polyline (" + std::to_string(row.distance_edges) + " edges)");
-            if (row.optimal_edges > 0)
-                out.add(label, "distance-mode-edges", "flattening estimate", row.distance_edges / row.optimal_edges,
-                        tolerances::kDistanceModeEdgesOverOptimal, "ratio",
-                        std::to_string(row.distance_edges) + " edges over N* = " + std::to_string(row.optimal_edges) +
-                            ", the fewest any polyline within the tolerance needs");
-            out.add(label, "wang-bound", "analytic", row.wang_dev, row.tol, "abs",
-                    "measured deviation with Wang's per-segment counts (" + std::to_string(row.wang_edges) + " edges)");
-            tess.push_back({{"curve", row.curve}, {"tol", row.tol}, {"uniform_edges", row.uniform_edges},
-                            {"uniform_steps", row.uniform_steps}, {"uniform_dev", row.uniform_dev},
-                            {"angle_edges", row.angle_edges}, {"angle_dev", row.angle_dev},
-                            {"angle_tol_deg", row.angle_tol_deg}, {"angle_reached", row.angle_reached},
-                            {"distance_edges", row.distance_edges}, {"distance_dev", row.distance_dev},
-                            {"wang_edges", row.wang_edges}, {"wang_dev", row.wang_dev},
-                            {"optimal_edges", row.optimal_edges}});
-        }
+        check_tessellation(r, label, scale_of(c), out, tess);
     }
     report.tables["tessellation"] = tess;
     report.tables["continuity"] = continuity;

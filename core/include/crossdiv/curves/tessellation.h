@@ -9,6 +9,7 @@
 /// there, and always emits the ends of every segment, so no polyline edge straddles two
 /// segments.
 
+#include <algorithm>
 #include <functional>
 #include <span>
 #include <string_view>
@@ -63,6 +64,35 @@ Polyline tessellate_angle(const BezierChain& chain, double angle_tol, int max_le
 /// control points: below about 1e4 ulps the flatness test itself is rounding noise, and the
 /// recursion would split to the bottom of the parameter's precision.
 inline constexpr double kMinDistanceTolRelative = 1e-12;
+
+/// Bisection steps that place an edge's far end in the distance mode (splines and primitives):
+/// the end found lies within 2^-24 of the bracket's width below the farthest feasible one, far
+/// below what would save an edge.
+inline constexpr int kDistanceReachBisections = 24;
+
+/// The distance mode's greedy step (splines and primitives): the farthest parameter in
+/// (from, end] at which an edge from `from` still fits (`fits(from, to)`), bracketed from
+/// `guess` (clamped into (from, end]; grown by half while it fits) and then bisected
+/// kDistanceReachBisections times. Returns `from` when not even the first bracket's lower end
+/// fits.
+template <class Fits>
+double farthest_reach(double from, double end, double guess, const Fits& fits) {
+    double lo = from, hi = end;
+    for (double g = std::clamp(guess, from + (end - from) * 1e-9, end);;) {
+        if (!fits(from, g)) {
+            hi = g;
+            break;
+        }
+        lo = g;
+        if (g == end) break;
+        g = std::min(end, from + 1.5 * (g - from));
+    }
+    for (int i = 0; i < kDistanceReachBisections && lo < end; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (fits(from, mid) ? lo : hi) = mid;
+    }
+    return lo;
+}
 
 /// Adaptive by distance, with a guarantee, and near the fewest edges: greedy farthest reach.
 /// From each vertex the next is put as far along the chain as an upper bound of the arc's

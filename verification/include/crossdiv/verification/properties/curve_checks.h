@@ -29,11 +29,19 @@ struct TessellationRow {
     double angle_tol_deg = 0;    ///< the angle tolerance found; 0 when the 10-level cap stops it first
     bool angle_reached = false;
     double optimal_edges = 0;    ///< N*, flattening_estimate: about the fewest edges any polyline on the curve needs
+    bool has_wang = false;       ///< Wang's counts were measured (splines: a bound on Bezier control points)
 };
 
-/// The study for one spline at each tolerance (absolute). Primitives are not studied.
+/// The study for one curve at each tolerance (absolute): a spline's, or a primitive's against
+/// its closed form (primitive_tessellation.h; no Wang counts).
 std::vector<TessellationRow> tessellation_study(const CurveRecord& record, const std::string& label,
                                                 std::span<const double> tols);
+
+/// A row as results.json and bench.json hold it (wang_edges and wang_dev null without them).
+nlohmann::json to_json(const TessellationRow& row);
+
+/// A primitive's size: the bounding-box diagonal of 256 samples.
+double primitive_size(const Primitive& p);
 
 /// Frame error against the exact rotation-minimizing frame of a helix.
 struct HelixFrameRow {
