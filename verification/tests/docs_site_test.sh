@@ -8,7 +8,11 @@
 #      folder of its own): the
 #      `$ crossdiv ...` command of the code block after it (with its `\` continuation lines)
 #      exits with N, and the first line the block shows after the command is in its output,
-#      its parts around "..." in order, spaces aside.
+#      its parts around "..." in order, spaces aside;
+#   4. every other code block that shows a command (crossdiv, crossdiv-cluster, ./run.sh,
+#      python3) is marked `<!-- synopsis: WHY -->` (why it is not run: placeholders, a long job,
+#      code of a language), and each of its crossdiv lines names a subcommand the program has
+#      and only options that subcommand's --help lists; each ./run.sh line a job run.sh has.
 # Usage: docs_site_test.sh path/to/crossdiv [ROOT]   (ROOT: the tree to check, default this one)
 set -u
 crossdiv="$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"  # absolute: the examples run elsewhere
@@ -91,6 +95,53 @@ for path in files:
 if ran == 0:
     print("FAIL no marked example found")
     bad += 1
+
+# Every other block that shows a command: marked as a synopsis, and its crossdiv lines spelled as
+# the program spells its subcommands and options now.
+command_line = re.compile(r"^\s*(\$ )?(crossdiv|crossdiv-cluster|\./run\.sh|python3)\b")
+helps = {}
+def options_of(sub):
+    if sub not in helps:
+        r = subprocess.run([crossdiv, sub, "--help"], capture_output=True, text=True, timeout=60)
+        helps[sub] = None if r.returncode != 0 else set(re.findall(r"(--[a-z][a-z0-9-]*)", r.stdout))
+    return helps[sub]
+jobs = set(re.findall(r"^  ([a-z]+)\)", open("run.sh").read(), re.M))
+synopses = 0
+for path in files:
+    lines = open(path).read().split("\n")
+    i = 0
+    while i < len(lines):
+        if not lines[i].startswith("```"):
+            i += 1
+            continue
+        j = i + 1
+        while j < len(lines) and not lines[j].startswith("```"):
+            j += 1
+        body = lines[i + 1:j]
+        prev = next((lines[k].strip() for k in range(i - 1, -1, -1) if lines[k].strip()), "")
+        shown = [l for l in body if command_line.match(l)]
+        if shown and not prev.startswith("<!-- example:"):
+            if not re.match(r"<!-- synopsis: \S.* -->$", prev):
+                print(f"FAIL {path}:{i + 1}: a block of commands ({shown[0].strip()[:60]}) neither run as an example "
+                      f"nor marked '<!-- synopsis: why -->'")
+                bad += 1
+            synopses += 1
+            for l in shown:
+                text = l.strip().removeprefix("$ ").split("#")[0]
+                words = text.split()
+                if words[0] == "./run.sh" and (len(words) < 2 or words[1] not in jobs):
+                    print(f"FAIL {path}:{i + 1}: '{l.strip()}': run.sh has no such job (it has {sorted(jobs)})")
+                    bad += 1
+                if words[0] != "crossdiv" or len(words) < 2 or words[1].startswith("-"):
+                    continue
+                known = options_of(words[1])
+                unknown = [] if known is None else [o for o in re.findall(r"--[a-z][a-z0-9-]*", text) if o not in known]
+                if known is None or unknown:
+                    print(f"FAIL {path}:{i + 1}: '{l.strip()[:80]}': " +
+                          (f"crossdiv has no subcommand {words[1]}" if known is None else f"{words[1]} has no {unknown}"))
+                    bad += 1
+        i = j + 1
+print(f"ok {synopses} synopsis block(s) checked against the program's subcommands and options")
 sys.exit(1 if bad else 0)
 PY
 [ "$failed" -eq 0 ] && echo "docs: every check passed"
