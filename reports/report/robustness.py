@@ -78,7 +78,7 @@ def robustness_section(results):
             col = t["columns"]
             rows.append([s, ref, t["runs"], col["agree"], named(t["classes"]), col["unexplained"], col["rejected"],
                          col["crashed"], col["hung"], col["invalid"], col["not compared"] + col["core refused"]])
-    return Section("Robustness per implementation").add(
+    section = Section("Robustness per implementation").add(
         Table(HEADER, rows),
         Text("Core's row counts the inputs and those it refined; its refusals by reason (declared in the case, "
              "or unexplained). A reference's row counts its runs (a second run for texture coordinates where the "
@@ -86,3 +86,61 @@ def robustness_section(results):
              "refusing the input, crashing, hanging (killed at the time limit), making an invalid result "
              "(non-finite, a wrong count, not triangles, unreadable), and not compared (core refused the input, "
              "nothing could be matched, or the reference is not on this machine)."))
+    statistics = corpus_statistics(comparisons)
+    if statistics:
+        section.add(Text("The inputs themselves (each counted once, from core's reading: mesh_statistics.h), by "
+                         "source: how many have each feature that breaks a rule somewhere, their face sizes, and the "
+                         "genus where every edge and vertex is manifold and oriented (else 'none')."),
+                    Table(STATISTICS_HEADER, statistics))
+    return section
+
+
+STATISTICS_HEADER = ["source", "inputs", "faces (median)", "non-manifold edges", "non-manifold vertices",
+                     "inconsistent orientation", "isolated vertices", "degenerate faces", "with boundary",
+                     "several components", "triangles only", "quads only", "mixed", "genus 0 / 1 / more / none"]
+
+
+# The corpora crossdiv installs or reads, by a folder their files' paths hold.
+CORPUS_FOLDERS = [("/assimp/models/", "assimp"), ("/corpus/sweethome3d/", "sweethome3d"), ("/datasets/cgal/", "cgal"),
+                  ("/shared/data/", "course")]
+
+
+def source_of(name):
+    """'bundled', 'edgecase', ... for 'bundled:torus'; a corpus's name for one of its files; else
+    the file's folder."""
+    if ":" in name and not name.startswith("/"):
+        return name.split(":")[0]
+    for folder, corpus in CORPUS_FOLDERS:
+        if folder in name:
+            return corpus
+    parts = name.rstrip("/").split("/")
+    return "/".join(parts[-2:-1]) or "files"
+
+
+def corpus_statistics(cases):
+    """One row per source and one for all, over the distinct inputs with statistics."""
+    inputs = {}
+    for c in cases:
+        if c.get("input_statistics") and c["input"] not in inputs:
+            inputs[c["input"]] = c["input_statistics"]
+    if not inputs:
+        return []
+    groups = {}
+    for name, s in inputs.items():
+        groups.setdefault(source_of(name), []).append(s)
+    if len(groups) > 1:
+        groups["all"] = list(inputs.values())
+
+    def row(source, stats):
+        def having(key):
+            return sum(1 for s in stats if s.get(key, 0) > 0)
+        faces = sorted(s["faces"] for s in stats)
+        genus = Counter("none" if s.get("genus") is None else min(int(s["genus"]), 2) for s in stats)
+        mixed = sum(1 for s in stats if s["faces"] and s["triangles"] != s["faces"] and s["quads"] != s["faces"])
+        return [source, len(stats), faces[len(faces) // 2], having("non_manifold_edges"), having("non_manifold_vertices"),
+                having("inconsistent_edges"), having("isolated_vertices"), having("degenerate_faces"),
+                having("boundary_edges"), sum(1 for s in stats if s["components"] > 1),
+                sum(1 for s in stats if s["faces"] and s["triangles"] == s["faces"]),
+                sum(1 for s in stats if s["faces"] and s["quads"] == s["faces"]), mixed,
+                f"{genus[0]} / {genus[1]} / {genus[2]} / {genus['none']}"]
+    return [row(src, stats) for src, stats in sorted(groups.items(), key=lambda kv: (kv[0] == "all", kv[0]))]

@@ -15,7 +15,7 @@ import make_report  # noqa: E402
 from report.model import Figure, Section, Table, Tally, Text, md_cell, render_html, render_markdown  # noqa: E402
 from report.viewer import matrix_table  # noqa: E402
 from report.records import category, split_cases  # noqa: E402
-from report.robustness import robustness_section  # noqa: E402
+from report.robustness import corpus_statistics, robustness_section  # noqa: E402
 from report.suite_time import suite_time_section  # noqa: E402
 
 
@@ -216,6 +216,27 @@ def test_the_robustness_table_counts_each_implementations_runs_by_how_they_ended
     results["cases"][0]["runs"][0]["outcome"] = "ours-failed (something new)"
     with pytest.raises(ValueError):
         robustness_section(results)
+
+
+def test_the_corpus_statistics_count_each_input_once_by_source():
+    def stats(faces, triangles, quads, genus, **extra):
+        s = {"faces": faces, "triangles": triangles, "quads": quads, "genus": genus, "components": 1}
+        s.update(extra)
+        return s
+    cases = [
+        {"input": "bundled:tetrahedron", "input_statistics": stats(4, 4, 0, 0)},
+        {"input": "bundled:tetrahedron", "input_statistics": stats(4, 4, 0, 0)},  # the same input again
+        {"input": "bundled:torus", "input_statistics": stats(16, 0, 16, 1)},
+        {"input": "/usr/share/assimp/models/OBJ/box.obj", "input_statistics": stats(12, 12, 0, 0)},
+        {"input": "/data/furniture/chair.obj", "input_statistics":
+            stats(10, 6, 4, None, non_manifold_vertices=2, boundary_edges=5, components=3)},
+        {"input": "/data/furniture/broken.obj", "core_error": "unreadable"}]
+    rows = {r[0]: r[1:] for r in corpus_statistics(cases)}
+    assert rows["bundled"] == [2, 16, 0, 0, 0, 0, 0, 0, 0, 1, 1, 0, "1 / 1 / 0 / 0"]
+    assert rows["furniture"] == [1, 10, 0, 1, 0, 0, 0, 1, 1, 0, 0, 1, "0 / 0 / 0 / 1"]
+    assert rows["assimp"][:2] == [1, 12]
+    assert rows["all"][0] == 4 and list(rows)[-1] == "all"
+    assert corpus_statistics([{"input": "x", "runs": []}]) == []
 
 
 def test_the_suite_time_splits_each_operations_seconds_into_core_references_and_the_rest():

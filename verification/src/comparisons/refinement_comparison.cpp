@@ -104,6 +104,16 @@ std::optional<OrderChange> face_order_change(const PolyMesh& input, const PolyMe
     return std::nullopt;
 }
 
+nlohmann::json statistics_json(const MeshStatistics& s) {
+    return {{"vertices", s.vertices}, {"faces", s.faces}, {"edges", s.edges}, {"triangles", s.triangles},
+            {"quads", s.quads}, {"larger_faces", s.larger_faces}, {"degenerate_faces", s.degenerate_faces},
+            {"isolated_vertices", s.isolated_vertices}, {"boundary_edges", s.boundary_edges},
+            {"boundary_loops", s.boundary_loops}, {"non_manifold_edges", s.non_manifold_edges},
+            {"inconsistent_edges", s.inconsistent_edges}, {"non_manifold_vertices", s.non_manifold_vertices},
+            {"components", s.components}, {"euler_characteristic", s.euler_characteristic},
+            {"genus", s.genus >= 0 ? nlohmann::json(s.genus) : nlohmann::json()}};
+}
+
 /// Whether `rule` brings Hbr's face-varying rules (FaceVaryingOptions::rules).
 bool legacy_face_varying_rules(Scheme scheme, const SchemeRule& rule) {
     return (scheme == Scheme::Loop ? rule.loop.crease_rules : rule.catmull_clark.crease_rules) == CreaseRules::Hbr;
@@ -514,6 +524,7 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
     out.tolerance = req.tolerance;
     out.input_vertices = input.num_vertices();
     out.input_faces = input.num_faces();
+    out.input_statistics = mesh_statistics(input);
     const std::vector<const Implementation*> refs = chosen_references(input, name, req, out.notes);
     const bool primal = traits(req.scheme).primal;
 
@@ -1181,6 +1192,7 @@ nlohmann::json to_json(const RefinementComparison& c) {
     json out = {{"input", c.input},
                 {"input_vertices", c.input_vertices},
                 {"input_faces", c.input_faces},
+                {"input_statistics", statistics_json(c.input_statistics)},
                 {"scheme", to_string(c.scheme)},
                 {"rule", c.rule_name},
                 {"levels", c.levels},

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "crossdiv/mesh/mesh_statistics.h"
 #include "crossdiv/mesh/poly_mesh.h"
 #include "crossdiv/verification/comparisons/divergence_view.h"
 #include "crossdiv/verification/comparisons/rule_identification.h"
@@ -132,6 +133,9 @@ struct RefinementComparison {
     Tier tier = Tier::Weak;
     double tolerance = NAN;
     int input_vertices = 0, input_faces = 0;
+    /// What the input is made of (mesh_statistics.h): the corpus statistics beside the
+    /// robustness table.
+    MeshStatistics input_statistics;
     double core_seconds = 0;
     std::string core_error;          ///< non-empty: core refused the input (the message)
     std::vector<std::string> notes;  ///< how the references were chosen, when not as asked
