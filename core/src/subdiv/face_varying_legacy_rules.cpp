@@ -113,6 +113,7 @@ public:
             });
             mask_[static_cast<size_t>(v)] = static_cast<unsigned char>(mask);
         }
+        find_boundary_ends();
     }
 
     bool boundary_edge(int e) const { return boundary_[static_cast<size_t>(e)]; }
@@ -126,7 +127,7 @@ public:
         bool corner = false;
         if (method_.edge_and_corner)
             corner = m >= kCornerMask || (method_.propagate_corners
-                                              ? is_face_varying_corner(v)
+                                              ? fvar_corner_[static_cast<size_t>(v)] != 0
                                               : boundary_edge(conn_.corner_edge[c]) && boundary_edge(conn_.corner_edge[conn_.prev[c]]));
         if ((method_.always_sharp && m >= 1) || is_sharp(sharpness_[static_cast<size_t>(v)]) || corner) {
             set(out, value(c), 1.0);
@@ -198,74 +199,81 @@ private:
         }
     }
 
-    /// HbrVertex::IsFVarCorner: a dart, or two face-varying boundary edges side by side around
-    /// v -- edges of one face at v, so on a boundary the two boundary edges are not (unless v
-    /// has one face).
-    bool is_face_varying_corner(int v) {
-        if (mask(v) == 1) return true;
-        // The edges around v in turn: on a boundary the incoming boundary edge first, then the
-        // outgoing edge of each corner of the one-ring walk (the last one the other boundary
-        // edge); inside, the walk's edges, the last beside the first.
-        around_.clear();
-        const int start = conn_.vertex_corner[v];
-        const bool boundary = conn_.is_boundary_vertex(v);
-        if (boundary) around_.push_back(boundary_edge(conn_.corner_edge[conn_.prev[start]]));
-        for_each_corner_around(v, [&](int c) { around_.push_back(boundary_edge(conn_.corner_edge[c])); });
-        for (size_t i = 1; i < around_.size(); ++i)
-            if (around_[i] && around_[i - 1]) return true;
-        return !boundary && around_.size() > 1 && around_.front() && around_.back();
+    /// For every vertex with face-varying boundary edges, in one walk around it (so that no
+    /// vertex costs more than its valence): whether it is a face-varying corner
+    /// (HbrVertex::IsFVarCorner: a dart, or two boundary edges side by side -- edges of one
+    /// face at it, so on a boundary the two boundary edges are not, unless it has one face); a
+    /// dart's boundary edge; and for each corner the far ends of the first boundary edges met
+    /// turning from its face each way (HbrVertex::GetNextEdge and GetPreviousEdge), as the
+    /// corners whose values they are.
+    void find_boundary_ends() {
+        const int nv = parent_.num_vertices();
+        fvar_corner_.assign(static_cast<size_t>(nv), 0);
+        dart_.assign(static_cast<size_t>(nv), -1);
+        end_before_.assign(static_cast<size_t>(conn_.num_corners()), -1);
+        end_after_.assign(static_cast<size_t>(conn_.num_corners()), -1);
+        std::vector<int> walk, before, after;
+        std::vector<char> in, out;
+        for (int v = 0; v < nv; ++v) {
+            if (mask(v) == 0) continue;
+            walk.clear();
+            for_each_corner_around(v, [&](int c) { walk.push_back(c); });
+            const int n = static_cast<int>(walk.size());
+            const bool on_boundary = conn_.is_boundary_vertex(v);
+            in.resize(static_cast<size_t>(n));
+            out.resize(static_cast<size_t>(n));
+            for (int i = 0; i < n; ++i) {
+                const int c = walk[static_cast<size_t>(i)];
+                in[static_cast<size_t>(i)] = boundary_edge(conn_.corner_edge[conn_.prev[c]]);
+                out[static_cast<size_t>(i)] = boundary_edge(conn_.corner_edge[c]);
+                if (out[static_cast<size_t>(i)] && dart_[static_cast<size_t>(v)] < 0) dart_[static_cast<size_t>(v)] = c;
+            }
+            // Side by side: the edges in turn are in[0], out[0], out[1], ... (out[i] is in[i + 1]
+            // inside the walk); around an inner vertex the last is beside the first.
+            bool side_by_side = mask(v) == 1;
+            for (int i = 0; i < n && !side_by_side; ++i)
+                side_by_side = out[static_cast<size_t>(i)] && (i > 0 ? out[static_cast<size_t>(i - 1)] != 0
+                                                                     : on_boundary ? in[0] != 0 : out[static_cast<size_t>(n - 1)] != 0);
+            fvar_corner_[static_cast<size_t>(v)] = side_by_side;
+            // Backward: the last boundary edge coming in at or before each corner; forward: the
+            // first going out at or after it. Twice around an inner vertex (its walk is a cycle);
+            // on a boundary the walk's first edge in and last edge out are the mesh's boundary.
+            before.assign(static_cast<size_t>(n), -1);
+            after.assign(static_cast<size_t>(n), -1);
+            for (int t = 0, last = -1; t < 2 * n; ++t) {
+                const int i = t % n;
+                if (in[static_cast<size_t>(i)]) last = i;
+                if (t >= n || on_boundary) before[static_cast<size_t>(i)] = before[static_cast<size_t>(i)] < 0 ? last : before[static_cast<size_t>(i)];
+            }
+            for (int t = 2 * n - 1, next = -1; t >= 0; --t) {
+                const int i = t % n;
+                if (out[static_cast<size_t>(i)]) next = i;
+                if (t < n || on_boundary) after[static_cast<size_t>(i)] = after[static_cast<size_t>(i)] < 0 ? next : after[static_cast<size_t>(i)];
+            }
+            for (int i = 0; i < n; ++i) {
+                const int c = walk[static_cast<size_t>(i)];
+                const int b = before[static_cast<size_t>(i)], a = after[static_cast<size_t>(i)];
+                end_before_[static_cast<size_t>(c)] = b >= 0 ? conn_.prev[walk[static_cast<size_t>(b)]] : c;
+                end_after_[static_cast<size_t>(c)] = a >= 0 ? conn_.next[walk[static_cast<size_t>(a)]] : conn_.next[c];
+            }
+        }
     }
 
     /// The dart rule: the two values of the far end of v's one face-varying boundary edge.
     void dart(int c, double* out) const {
-        const int v = conn_.corner_vertex[c];
-        set(out, value(c), kCreaseVertexWeight);
-        int found = -1;
-        for_each_corner_around(v, [&](int k) {
-            if (found < 0 && boundary_edge(conn_.corner_edge[k])) found = k;
-        });
+        const int found = dart_[static_cast<size_t>(conn_.corner_vertex[c])];
         if (found < 0 || conn_.twin[found] < 0) throw std::logic_error("face_varying_legacy_rules: a dart without its edge");
+        set(out, value(c), kCreaseVertexWeight);
         add(out, value(conn_.next[found]), kCreaseEdgeWeight);
         add(out, value(conn_.twin[found]), kCreaseEdgeWeight);
     }
 
-    /// The boundary rule: turning from c's face each way around its vertex to the first
-    /// face-varying boundary edge, the value of its far end in the last face before it.
+    /// The boundary rule: 3/4 itself, 1/8 each of the far ends of the first face-varying
+    /// boundary edges met turning from c's face each way, in the last face before them.
     void crease(int c, double* out) const {
         set(out, value(c), kCreaseVertexWeight);
-        // One way: across the face's incoming edge, and on (HbrVertex::GetNextEdge).
-        const int start = conn_.twin[conn_.prev[c]];
-        int end = conn_.prev[c];
-        if (start >= 0) {
-            for (int k = start;;) {
-                if (boundary_edge(conn_.corner_edge[k])) {
-                    end = conn_.twin[k];
-                    break;
-                }
-                const int across = conn_.twin[conn_.prev[k]];
-                if (across < 0) {
-                    end = conn_.prev[k];
-                    break;
-                }
-                k = across;
-                if (k == start) {
-                    end = c;
-                    break;
-                }
-            }
-        }
-        add(out, value(end), kCreaseEdgeWeight);
-        // The other way: the face's outgoing edge, and on (HbrVertex::GetPreviousEdge).
-        int other = conn_.next[c];
-        for (int k = c;;) {
-            if (boundary_edge(conn_.corner_edge[k]) || conn_.twin[k] < 0) {
-                other = conn_.next[k];
-                break;
-            }
-            k = conn_.next[conn_.twin[k]];
-            if (k == c) break;
-        }
-        add(out, value(other), kCreaseEdgeWeight);
+        add(out, value(end_before_[static_cast<size_t>(c)]), kCreaseEdgeWeight);
+        add(out, value(end_after_[static_cast<size_t>(c)]), kCreaseEdgeWeight);
     }
 
     void add_face_average(double* out, int f, double weight) const {
@@ -289,7 +297,9 @@ private:
     std::vector<char> boundary_;        ///< per edge: a face-varying boundary edge
     std::vector<float> sharpness_;      ///< per vertex
     std::vector<unsigned char> mask_;   ///< per vertex: the face-varying mask
-    std::vector<char> around_;          ///< scratch
+    std::vector<char> fvar_corner_;     ///< per vertex: HbrVertex::IsFVarCorner
+    std::vector<int> dart_;             ///< per vertex: the corner whose edge is a dart's boundary edge
+    std::vector<int> end_before_, end_after_;  ///< per corner: the boundary rule's two other values
 };
 
 }  // namespace
