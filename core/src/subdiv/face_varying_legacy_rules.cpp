@@ -121,7 +121,7 @@ public:
     const double* value(int corner) const { return channel_.value(channel_.corner_values[static_cast<size_t>(corner)]); }
 
     /// The value of corner c's vertex in corner c's child face, into `out`.
-    void vertex_value(int c, double* out) {
+    void vertex_value(int c, double* out) const {
         const int v = conn_.corner_vertex[c];
         const int m = mask(v);
         bool corner = false;

@@ -198,12 +198,6 @@ PolyMesh mapped_as_the_input(const PolyMesh& refined, const TransformedInput& tr
     return expected;
 }
 
-/// The largest number of distinct edge neighbours of a vertex.
-int max_valence(const PolyMesh& mesh) {
-    const std::vector<int> valence = mesh_topology(mesh).valence;
-    return valence.empty() ? 0 : *std::max_element(valence.begin(), valence.end());
-}
-
 
 /// The first face with fewer than 3 distinct corners, in the words of the mesh checker.
 std::optional<std::string> first_degenerate_face(const PolyMesh& mesh) {

@@ -7,6 +7,7 @@
 
 #include "crossdiv/mesh/tri_mesh.h"
 #include "crossdiv/subdiv/hole_faces.h"
+#include "crossdiv/verification/harness/corner_values.h"
 #include "crossdiv/verification/harness/mesh_topology.h"
 #include "harness/point_cloud.h"
 #include "crossdiv/verification/harness/tolerances.h"
@@ -175,14 +176,35 @@ double ulp_of_largest_coordinate(const PolyMesh& m) {
     return std::nextafter(largest, INFINITY) - largest;
 }
 
+namespace {
+
+/// kFloatAgreementUlps and the sums' rounding, in float ulps of `largest`, over `size`.
+double float_tier(float largest, int max_valence, int levels, double size) {
+    const double ulps = tolerances::kFloatAgreementUlps + 0.5 * (max_valence + 2) * levels;
+    const double ulp = static_cast<double>(std::nextafter(largest, INFINITY)) - largest;
+    return ulps * ulp / (size > 0 ? size : 1.0);
+}
+
+}  // namespace
+
 double agreement_tolerance(const PolyMesh& mesh, bool in_float, double tolerance, int max_valence, int levels) {
     if (!in_float) return tolerance;
-    const double ulps = tolerances::kFloatAgreementUlps + 0.5 * (max_valence + 2) * levels;
     float largest = 0;
     for (const Vec3& p : mesh.positions) largest = std::max(largest, static_cast<float>(p.cwiseAbs().maxCoeff()));
-    const double ulp = static_cast<double>(std::nextafter(largest, INFINITY)) - largest;
-    const double diagonal = bounding_box_diagonal(mesh.positions);
-    return std::max(tolerance, ulps * ulp / (diagonal > 0 ? diagonal : 1.0));
+    return std::max(tolerance, float_tier(largest, max_valence, levels, bounding_box_diagonal(mesh.positions)));
+}
+
+double value_agreement_tolerance(const PolyMesh& mesh, bool in_float, double tolerance, int max_valence, int levels) {
+    if (!in_float || mesh.face_varying.empty()) return tolerance;
+    const FaceVaryingChannel& ch = mesh.face_varying.front();
+    float largest = 0;
+    for (double x : ch.values) largest = std::max(largest, std::abs(static_cast<float>(x)));
+    return std::max(tolerance, float_tier(largest, max_valence, levels, uv_box_diagonal(ch)));
+}
+
+int max_valence(const PolyMesh& mesh) {
+    const std::vector<int> valence = mesh_topology(mesh).valence;
+    return valence.empty() ? 0 : *std::max_element(valence.begin(), valence.end());
 }
 
 TopologyCounts topology_counts(const MeshTopology& t) {

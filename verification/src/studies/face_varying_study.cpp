@@ -11,6 +11,7 @@
 #include "crossdiv/error.h"
 #include "crossdiv/verification/comparisons/refinement_comparison.h"
 #include "crossdiv/verification/harness/corner_values.h"
+#include "crossdiv/verification/harness/mesh_comparison.h"
 #include "crossdiv/verification/harness/tolerances.h"
 #include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/verification/studies/studies.h"
@@ -45,23 +46,6 @@ double xy_identity_error(const PolyMesh& m) {
     return box > 0 ? worst / box : worst;
 }
 
-/// The float tier of the values of `m` (tolerances::kFloatAgreementUlps and the sums' rounding,
-/// as the refinement comparison's float tier of positions), relative to their box.
-double float_tier_of_values(const PolyMesh& m, int max_valence, int levels) {
-    const FaceVaryingChannel& ch = m.face_varying.front();
-    float largest = 0;
-    for (double x : ch.values) largest = std::max(largest, std::abs(static_cast<float>(x)));
-    const double ulp = static_cast<double>(std::nextafter(largest, INFINITY)) - largest;
-    const double box = uv_box_diagonal(ch);
-    return (tolerances::kFloatAgreementUlps + 0.5 * (max_valence + 2) * levels) * ulp / (box > 0 ? box : 1.0);
-}
-
-int largest_valence(const PolyMesh& m) {
-    std::vector<int> count(static_cast<size_t>(m.num_vertices()), 0);
-    for (int v : m.face_vertices) ++count[static_cast<size_t>(v)];
-    return count.empty() ? 0 : *std::max_element(count.begin(), count.end());
-}
-
 }  // namespace
 
 CheckReport face_varying_study() {
@@ -93,8 +77,9 @@ CheckReport face_varying_study() {
                         note = std::isnan(measured) ? impl->name() + " gave no face-varying values"
                                                     : "texture coordinates (x, y) per vertex, rule none, 2 levels: the largest "
                                                       "difference from the refined vertex's (x, y), of the UV box";
-                        if (!std::isnan(measured) && impl->capabilities().precision == Precision::Float)
-                            tolerance = std::max(tolerance, float_tier_of_values(t.trace->back(), largest_valence(mesh), 2));
+                        if (!std::isnan(measured))
+                            tolerance = value_agreement_tolerance(t.trace->back(), impl->capabilities().precision == Precision::Float,
+                                                                  tolerance, max_valence(mesh), 2);
                         if (impl->kind() != ImplementationKind::Core && !(measured <= tolerance)) {
                             // Missed: is it a rule of its own? Its values against core's.
                             RefinementRequest req;

@@ -72,6 +72,14 @@ double ulp_of_largest_coordinate(const PolyMesh& mesh);
 /// coordinate); `tolerance` itself for double.
 double agreement_tolerance(const PolyMesh& mesh, bool in_float, double tolerance, int max_valence, int levels);
 
+/// The same bound for `mesh`'s first face-varying channel, relative to its values' box: the
+/// float tier of the values' largest magnitude (texture coordinates refined in float by the same
+/// sums as positions).
+double value_agreement_tolerance(const PolyMesh& mesh, bool in_float, double tolerance, int max_valence, int levels);
+
+/// The largest number of distinct edge neighbours of a vertex (mesh_topology's valence).
+int max_valence(const PolyMesh& mesh);
+
 /// Symmetric Hausdorff distance between two vertex sets (no correspondence needed): the
 /// geometric tier's measure of how far two refinements of the same surface lie apart.
 double hausdorff_vertex_sets(const std::vector<Vec3>& a, const std::vector<Vec3>& b);
