@@ -20,6 +20,8 @@
 #include "crossdiv/io/curve_io.h"
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/subdiv/loop.h"
+#include "crossdiv/subdiv/catmull_clark_streaming.h"
+#include "crossdiv/subdiv/loop_streaming.h"
 #include "crossdiv/verification/comparisons/invariance.h"
 #include "crossdiv/verification/comparisons/refinement_comparison.h"
 #include "crossdiv/verification/harness/isolate.h"
@@ -356,16 +358,34 @@ PYBIND11_MODULE(crossdiv, m) {
           [](const py::object& V, const py::object& F,
              const std::string& scheme, int levels, std::optional<std::string> weights, std::optional<std::string> boundary,
              const std::string& impl, long long max_faces, double timeout, const py::object& UV, const py::object& FUV,
-             const std::string& fvar) -> py::tuple {
+             const std::string& fvar, int threads) -> py::tuple {
               RefineRequest req = request_for(scheme, levels, weights, boundary);
               const Implementation& implementation = find_implementation(impl);
+              if (threads < 1) throw InputError("threads must be >= 1, got " + std::to_string(threads));
               PolyMesh mesh = mesh_from(V, F);
               req.face_varying = with_channel(mesh, req.scheme, UV, FUV, fvar);
               require_refined_size(mesh, req.scheme, levels, max_faces, "subdivide", "max_faces");
               PolyMesh out;
               {
                   py::gil_scoped_release unlocked;  // core and the references are C++ and do not touch Python
-                  out = refine_last_or_throw(implementation, mesh, req, "the mesh", timeout);
+                  // Core's Loop on a manifold triangle mesh without tags or texture coordinates:
+                  // the streaming driver, on `threads` (as crossdiv subdivide); otherwise the
+                  // implementation's refinement, on one.
+                  bool streamed = false;
+                  if (impl == "core" && req.scheme == Scheme::Loop && !req.face_varying && mesh.creases.empty() &&
+                      mesh.all_triangles()) {
+                      try {
+                          out = to_poly_mesh(loop_subdivide_streaming(to_tri_mesh(mesh, "Loop subdivision"), req.rule.loop,
+                                                                      levels, threads));
+                          streamed = true;
+                      } catch (const NonManifoldInput&) {
+                      }
+                  } else if (impl == "core" && req.scheme == Scheme::CatmullClark && !req.face_varying) {
+                      // A mesh it cannot stream it refines by the stencil driver (on one thread).
+                      out = catmull_clark_subdivide_streaming(mesh, req.rule.catmull_clark, levels, threads);
+                      streamed = true;
+                  }
+                  if (!streamed) out = refine_last_or_throw(implementation, mesh, req, "the mesh", timeout);
               }
               if (UV.is_none()) return mesh_tuple(std::move(out));
               if (out.face_varying.empty()) throw InputError(impl + " does not refine texture coordinates");
@@ -376,6 +396,7 @@ PYBIND11_MODULE(crossdiv, m) {
           py::arg("V"), py::arg("F"), py::arg("scheme") = "loop", py::arg("levels") = 1, py::arg("weights") = py::none(),
           py::arg("boundary") = py::none(), py::arg("impl") = "core", py::arg("max_faces") = kMaxRefinedFaces,
           py::arg("timeout") = 120.0, py::arg("UV") = py::none(), py::arg("FUV") = py::none(), py::arg("fvar") = "all",
+          py::arg("threads") = 1,
           "Subdivides (V, F) by `levels` levels of `scheme` (loop, catmull-clark, doo-sabin, sqrt3, butterfly, "
           "modified-butterfly, bilinear, midpoint) with core or a reference (impl: core, opensubdiv, openmesh, cgal, ...), which applies "
           "the closest rule it has. Returns (V, F) in that implementation's numbering. A result of more than "
@@ -383,7 +404,9 @@ PYBIND11_MODULE(crossdiv, m) {
           "child process with `timeout` seconds: its crash, hang or refusal raises crossdiv.InputError naming it. "
           "With UV (n x d values) and FUV (one index into UV per corner of F, shaped as F): a face-varying channel "
           "(texture coordinates), refined under `fvar` (none, corners-only, corners-plus1, corners-plus2, boundaries, "
-          "all) by loop, catmull-clark or bilinear; returns (V, F, UV, FUV).");
+          "all) by loop, catmull-clark or bilinear; returns (V, F, UV, FUV). `threads`: core's Loop and "
+          "Catmull-Clark on a manifold mesh without tags or texture coordinates run on that many (the same result, bit for bit, on any "
+          "number); everything else runs on one.");
     m.def("subdivision_matrix",
           [](const py::object& V, const py::object& F,
              const std::string& weights, const std::string& boundary) {

@@ -96,6 +96,45 @@ TEST(CatmullClarkStreaming, IdenticalToTheStencilDriverOnEveryRuleAndLevel) {
     expect_identical(mixed_patch(), smooth, 2);
 }
 
+/// A bumpy n x n grid of quads, every third one cut into two triangles: an input of polygons
+/// with over 8,192 corners at n = 50, so that its own level's passes are split among threads.
+PolyMesh bumpy_mixed_grid(int n) {
+    PolyMesh m;
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) m.positions.emplace_back(i, j, std::sin(0.7 * i) * std::cos(1.3 * j));
+    const auto at = [&](int i, int j) { return j * (n + 1) + i; };
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            if ((i + 2 * j) % 3) {
+                m.add_face({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+            } else {
+                m.add_face({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+                m.add_face({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+            }
+        }
+    return m;
+}
+
+TEST(CatmullClarkStreaming, AnyNumberOfThreadsGivesTheBitsOfOne) {
+    // Passes are split from 8,192 elements on: the mixed patch's 24 corners are 24,576 quads of
+    // 6,144 x 4 corners at level 6 (its last pass over 24,576 vertices at 7 levels), the grid's
+    // over 10,000 corners at level 0.
+    const struct { PolyMesh mesh; int levels; } cases[] = {{mixed_patch(), 7}, {bumpy_mixed_grid(50), 2}};
+    for (const auto& c : cases)
+        for (const CatmullClarkOptions& o : {kEdgeOnly, kEdgeAndCorner}) {
+            const PolyMesh one = catmull_clark_subdivide_streaming(c.mesh, o, c.levels);
+            ASSERT_GT(one.num_faces(), 40000);
+            for (int threads : {2, 3, 8}) {
+                const PolyMesh many = catmull_clark_subdivide_streaming(c.mesh, o, c.levels, threads);
+                EXPECT_EQ(many.face_vertices, one.face_vertices) << threads;
+                EXPECT_EQ(many.positions, one.positions) << threads;  // bit for bit
+                EXPECT_EQ(many.colors, one.colors) << threads;
+            }
+        }
+    expect_identical(bumpy_mixed_grid(50), kEdgeOnly, 2);  // and one thread is the stencil driver's bits
+    EXPECT_THROW(catmull_clark_subdivide_streaming(mixed_patch(), kEdgeOnly, 1, 0), InputError);
+}
+
 TEST(CatmullClarkStreaming, WhatItDoesNotTakeIsRefinedByTheStencilDriver) {
     // Crease tags, a bowtie (OpenSubdiv's non-manifold rules), zero levels: the same result.
     PolyMesh creased = test::cube();

@@ -306,7 +306,7 @@ TEST(FaceVarying, ASemiSharpCreaseInsideASpanBlendsAtItsLastLevelByHand) {
 
 /// `levels` Catmull-Clark levels of `m` (edge-only) with its channel under `rule` and whose rules.
 PolyMesh catmull_clark_uv_by(const PolyMesh& m, FaceVaryingRule rule, CreaseRules rules, int levels) {
-    CatmullClarkOptions o;
+    CatmullClarkOptions o{CatmullClarkBoundary::EdgeOnly};  // the boundary has no default: left out it was read indeterminate
     o.crease_rules = rules;
     return subdivide_with_face_varying(m, FaceVaryingScheme::CatmullClark, {rule, false, CreaseMethod::Uniform, rules}, levels,
                                        [&](const PolyMesh& p, const PolyConnectivity& c) { return catmull_clark_step(p, c, o); });

@@ -81,6 +81,55 @@ TEST(LoopStreaming, LevelsNumberedAsLoopSubdivideWithColors) {
     }
 }
 
+/// A bumpy grid of n x n squares cut into triangles along alternating diagonals (valences 4 to 8
+/// inside, a boundary with corners), with a square hole in the middle: big enough that every
+/// pass of the second level is split among threads.
+TriMesh bumpy_grid_with_hole(int n) {
+    TriMesh m;
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) {
+            m.positions.emplace_back(i, j, std::sin(0.7 * i) * std::cos(1.3 * j));
+            m.colors.emplace_back(i / double(n), j / double(n), 0.5);
+        }
+    const auto at = [&](int i, int j) { return j * (n + 1) + i; };
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            if (std::abs(2 * i - n) < n / 4 && std::abs(2 * j - n) < n / 4) continue;  // the hole
+            if ((i + j) % 2) {
+                m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+                m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+            } else {
+                m.triangles.push_back({at(i, j), at(i + 1, j), at(i, j + 1)});
+                m.triangles.push_back({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+            }
+        }
+    return m;
+}
+
+TEST(LoopStreaming, AnyNumberOfThreadsGivesTheBitsOfOne) {
+    // The passes are split only from 8192 elements on: 2 x 40 x 40 triangles are 12,000 (less
+    // the hole) after one level, 48,000 after two.
+    const TriMesh grid = bumpy_grid_with_hole(40);
+    for (const LoopOptions& o : {kLoopEdge, kLoopCorner, kWarrenEdge}) {
+        const TriMesh one = loop_subdivide_streaming(grid, o, 3);
+        ASSERT_GT(one.num_faces(), 100000);
+        for (int threads : {2, 3, 8}) {
+            const TriMesh many = loop_subdivide_streaming(grid, o, 3, threads);
+            EXPECT_EQ(many.triangles, one.triangles) << threads;
+            // Bit for bit, not within a tolerance: each point is the same sum in the same order.
+            EXPECT_EQ(many.positions, one.positions) << threads;
+            EXPECT_EQ(many.colors, one.colors) << threads;
+        }
+    }
+    // And the order is loop_subdivide's but for the ring sums: a few ulps of the coordinates.
+    const TriMesh a = loop_subdivide(grid, kLoopEdge, 2), b = loop_subdivide_streaming(grid, kLoopEdge, 2, 2);
+    EXPECT_EQ(a.triangles, b.triangles);
+    ASSERT_EQ(a.positions.size(), b.positions.size());
+    for (size_t v = 0; v < a.positions.size(); ++v)
+        ASSERT_LE((a.positions[v] - b.positions[v]).cwiseAbs().maxCoeff(), 64 * 0x1p-52) << v;
+    EXPECT_THROW(loop_subdivide_streaming(grid, kLoopEdge, 1, 0), InputError);
+}
+
 TEST(LoopStreaming, RefusesWhatLoopSubdivideRefuses) {
     TriMesh bowtie;
     bowtie.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(-1, 0, 0), Vec3(0, -1, 0)};

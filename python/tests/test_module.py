@@ -43,6 +43,24 @@ def test_one_loop_level_of_a_tetrahedron_by_hand():
             assert tuple((TETRA_V[a] + TETRA_V[b]) / 4) in edge_points
 
 
+def test_threads_give_the_bits_of_one_thread():
+    # The tetrahedron at 7 levels: the last level's input has 24,576 edges, past the 8,192 below
+    # which a pass stays on one thread.
+    V1, F1 = crossdiv.subdivide(TETRA_V, TETRA_F, levels=7)
+    V2, F2 = crossdiv.subdivide(TETRA_V, TETRA_F, levels=7, threads=2)
+    assert F1.shape == (4 * 4**7, 3)
+    np.testing.assert_array_equal(F1, F2)
+    np.testing.assert_array_equal(V1, V2)  # bit for bit, not within a tolerance
+    with pytest.raises(crossdiv.InputError, match="threads must be >= 1"):
+        crossdiv.subdivide(TETRA_V, TETRA_F, threads=0)
+    # Catmull-Clark likewise: the tetrahedron's 12 corners are 12 x 4**5 quads at 6 levels.
+    C1, Q1 = crossdiv.subdivide(TETRA_V, TETRA_F, scheme="catmull-clark", levels=6)
+    C2, Q2 = crossdiv.subdivide(TETRA_V, TETRA_F, scheme="catmull-clark", levels=6, threads=2)
+    assert len(Q1) == 12 * 4**5
+    np.testing.assert_array_equal(Q1, Q2)
+    np.testing.assert_array_equal(C1, C2)
+
+
 def test_arrays_out_are_the_meshs_own_memory():
     V, F = crossdiv.subdivide(TETRA_V, TETRA_F, levels=2)
     # Not copied: each array is a view on a buffer the module handed over.

@@ -5,13 +5,16 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <thread>
 
 #include "command.h"
 #include "crossdiv/io/output_file.h"
 #include "crossdiv/verification/harness/json_text.h"
 #include "crossdiv/verification/bench/bench.h"
+#include "crossdiv/verification/bench/thread_bench.h"
 #include "crossdiv/verification/bench/valence_bench.h"
 #ifdef CROSSDIV_HAS_OPENSUBDIV
 #include "crossdiv/verification/bench/stencil_bench.h"
@@ -53,11 +56,15 @@ nlohmann::json print_valence_bench(const std::vector<int>& valences, int repeats
 }
 
 /// The sections `crossdiv bench` runs, each by name.
-inline constexpr const char* kBenchSections[] = {"loop", "catmull-clark", "valence", "stencils", "curves", "sweep"};
+inline constexpr const char* kBenchSections[] = {"loop", "catmull-clark", "threads", "valence", "stencils", "curves", "sweep"};
+
+/// The machine's cores, at least 2: the thread rows compare one thread with several.
+int default_threads() { return std::max(2, static_cast<int>(std::thread::hardware_concurrency())); }
 
 struct BenchArgs {
     std::string json, out;
     int repeats = 5;
+    int threads = default_threads();
     bool quick = false, cold = false, warm = false;
     std::vector<std::string> only;  ///< sections to run; every one when empty
     std::vector<int> valences;      ///< the valence rows' k; kBenchValences when empty
@@ -70,7 +77,10 @@ struct BenchArgs {
             "--cold", cold, "Loop and Catmull-Clark rows cold only: freed memory returned to the kernel between repeats (page faults counted)");
         app.add_flag("--warm", warm, "Loop and Catmull-Clark rows warm only: freed memory kept between repeats (by default both, in turn)")
             ->excludes(c);
-        app.add_option("--only", only, "Run only these sections (loop, catmull-clark, valence, stencils, curves, sweep)")
+        app.add_option("--threads", threads, "The thread rows' thread count (default: the cores, at least 2)")
+            ->check(CLI::Range(2, 256))
+            ->capture_default_str();
+        app.add_option("--only", only, "Run only these sections (loop, catmull-clark, threads, valence, stencils, curves, sweep)")
             ->check(CLI::IsMember(std::vector<std::string>(std::begin(kBenchSections), std::end(kBenchSections))));
         app.add_option("--valences", valences, "The valence rows' valences (default 1000 10000 100000)")
             ->check(CLI::Range(3, 10000000));
@@ -116,6 +126,50 @@ nlohmann::json print_stencil_bench(bool quick, int repeats) {
     fmt::print("\nFixed topology: this build has no OpenSubdiv adapter to time against\n");
     return nullptr;
 #endif
+}
+
+/// The thread rows: core's streaming Loop and OpenSubdiv's OmpEvaluator on one thread and on
+/// N, with the two goals at every input of at least kThreadGoalMinFaces output faces.
+nlohmann::json print_thread_bench(const BenchArgs& a) {
+    // The schemes asked for beside the section (--only threads loop), both when neither is.
+    const bool loop = a.runs("loop") || !a.runs("catmull-clark"), catmull_clark = a.runs("catmull-clark") || !a.runs("loop");
+    std::vector<BenchInput> inputs;
+    if (loop)
+        for (BenchInput& in : default_bench_inputs(a.quick))
+            if (static_cast<long long>(in.mesh.num_faces()) << (2 * in.levels) >= kBenchGoalMinFaces) inputs.push_back(std::move(in));
+    if (catmull_clark)
+        for (BenchInput& in : catmull_clark_thread_inputs(a.quick)) inputs.push_back(std::move(in));
+    fmt::print("\nThreads: Loop (weights=loop boundary=edge-only) and Catmull-Clark (boundary=edge-only) on 1 and {} "
+               "threads, median of {} runs; core refines (topology included), OpenSubdiv's Osd::OmpEvaluator evaluates "
+               "Far's float stencil table built before (evaluation only)\n",
+               a.threads, a.repeats);
+    fmt::print("{:<13} {:<12} {:>6} {:>12} {:>11} {:>11} {:>8} {:>11} {:>11} {:>8} {:>9}\n", "scheme", "input", "levels",
+               "output faces", "core 1 ms", "core N ms", "speedup", "omp 1 ms", "omp N ms", "speedup", "omp/core");
+    const std::vector<ThreadRow> rows = run_thread_bench(inputs, a.threads, a.repeats);
+    nlohmann::json out = nlohmann::json::array(), goals = nlohmann::json::array();
+    const double speedup_goal = kThreadSpeedupGoalPerThread * a.threads;
+    for (const ThreadRow& r : rows) {
+        if (r.status != "ok") fmt::print("{:<13} {:<12} {:>6} {}\n", r.scheme, r.input, r.levels, r.status);
+        fmt::print("{:<13} {:<12} {:>6} {:>12} {:>11.2f} {:>11.2f} {:>8.2f} {:>11.2f} {:>11.2f} {:>8.2f} {:>9.2f}\n",
+                   r.scheme, r.input, r.levels, r.output_faces, r.core_one_ms, r.core_many_ms, r.speedup(), r.omp_one_ms,
+                   r.omp_many_ms, r.omp_one_ms / r.omp_many_ms, r.over_omp());
+        out.push_back(to_json(r));
+        if (r.output_faces < kThreadGoalMinFaces) continue;
+        const bool fast = r.speedup() >= speedup_goal, ahead = r.over_omp() >= kThreadOmpGoal;
+        fmt::print("goal ({} threads): core {:.2f}x its one-thread speed on {} threads, {} at {} levels ({} output faces): "
+                   "{} (target {:.2f}x)\n",
+                   r.scheme, r.speedup(), r.threads, r.input, r.levels, r.output_faces, fast ? "met" : "NOT met", speedup_goal);
+        fmt::print("goal ({} threads): core on {} threads {:.2f}x OmpEvaluator's speed on as many: {} (target {}x)\n", r.scheme,
+                   r.threads, r.over_omp(), ahead ? "met" : "NOT met", kThreadOmpGoal);
+        goals.push_back({{"goal", "speedup"}, {"scheme", r.scheme}, {"input", r.input}, {"levels", r.levels}, {"threads", r.threads},
+                         {"ratio", r.speedup()}, {"target_ratio", speedup_goal}, {"met", fast}});
+        goals.push_back({{"goal", "ahead of OmpEvaluator"}, {"scheme", r.scheme}, {"input", r.input}, {"levels", r.levels}, {"threads", r.threads},
+                         {"ratio", std::isfinite(r.over_omp()) ? nlohmann::json(r.over_omp()) : nlohmann::json(nullptr)},
+                         {"target_ratio", kThreadOmpGoal}, {"met", ahead}});
+    }
+    if (goals.empty()) fmt::print("goal (threads): no input of at least {} output faces in this run\n", kThreadGoalMinFaces);
+    std::fflush(stdout);
+    return {{"threads", a.threads}, {"rows", out}, {"goals", goals}};
 }
 
 /// One scheme's rows: core against each reference on meshes of growing size, warm and cold.
@@ -200,12 +254,13 @@ int bench_command(const BenchArgs& a) {
         a.runs("loop") || a.runs("catmull-clark") ? print_refinement_bench(a, goals, bandwidth) : null;
     std::vector<int> valences = a.valences;
     if (valences.empty()) valences.assign(std::begin(kBenchValences), a.quick ? std::begin(kBenchValences) + 1 : std::end(kBenchValences));
+    const nlohmann::json threads = a.runs("threads") ? print_thread_bench(a) : null;
     const nlohmann::json valence = a.runs("valence") ? print_valence_bench(valences, a.repeats) : null;
     const nlohmann::json stencils = a.runs("stencils") ? print_stencil_bench(a.quick, a.repeats) : null;
     const nlohmann::json curves = a.runs("curves") ? run_curve_bench(a.repeats) : null;
     const nlohmann::json surfaces = a.runs("sweep") ? run_surface_bench() : null;
     const nlohmann::json doc = {{"tool", "crossdiv bench"}, {"repeats", a.repeats}, {"goals", goals}, {"bandwidth", bandwidth},
-                                {"records", loop}, {"valence", valence}, {"stencils", stencils},
+                                {"records", loop}, {"threads", threads}, {"valence", valence}, {"stencils", stencils},
                                 {"curves", curves.is_null() ? null : curves["tessellation"]},
                                 {"curve_timing", curves.is_null() ? null : curves["timing"]},
                                 {"flattening_goal", curves.is_null() ? null : curves["goal"]}, {"adaptive_sweep", surfaces},

@@ -209,27 +209,44 @@ SchemeArgs with_tag_rules(const SchemeArgs& flags, PolyMesh& input) {
     return s;
 }
 
+/// The note a run with more than one thread prints when it takes a driver that runs on one.
+void note_one_thread(int threads, const std::string& why) {
+    if (threads > 1)
+        fmt::print("note: --threads {} is for core's Loop and Catmull-Clark on a manifold mesh; {}: this run used one thread\n",
+                   threads, why);
+}
+
 int run_subdivide(const std::string& in, const SchemeArgs& flags, const std::string& impl, const std::string& out,
-                  const std::string& color, double timeout) {
+                  const std::string& color, double timeout, int threads) {
     if (flags.scheme != "loop") {
         if (impl == "split-flip") throw InputError("split-flip is Loop's method; " + flags.scheme + " has none");
-        return run_scheme_subdivide(in, flags.poly(), impl, out, color, timeout);
+        if (flags.scheme != "catmull-clark") note_one_thread(threads, "this is " + flags.scheme);
+        return run_scheme_subdivide(in, flags.poly(), impl, out, color, timeout, threads);
     }
+    if (impl != "core") note_one_thread(threads, "this is " + impl);
     PolyMesh input = load_input(in, flags.tag_policy());
     const SchemeArgs s = with_tag_rules(flags, input);
-    if (const std::optional<FaceVaryingRule> fvar = face_varying_rule_noted(Scheme::Loop, s.face_varying, input))
+    if (const std::optional<FaceVaryingRule> fvar = face_varying_rule_noted(Scheme::Loop, s.face_varying, input)) {
+        if (impl == "core") note_one_thread(threads, "texture coordinates are refined on one");
         return run_loop_subdivide_face_varying(in, input, s, *fvar, impl, out, timeout);
-    if (!input.creases.empty()) return run_loop_subdivide_creased(in, input, s, impl, out, color, timeout);
+    }
+    if (!input.creases.empty()) {
+        if (impl == "core") note_one_thread(threads, "crease and hole tags are refined on one");
+        return run_loop_subdivide_creased(in, input, s, impl, out, color, timeout);
+    }
     s.require_size(input, in);
     const TriMesh mesh = to_tri_mesh(input, "Loop subdivision");
     PolyMesh result;
+    bool threaded = false;  // by the streaming driver, on `threads`
     if (impl == "core") {
         // The streaming driver on a manifold (loop_streaming.h); a mesh that is not one takes
         // the polygon-mesh driver and OpenSubdiv's non-manifold rules (or the refusal that
         // --nonmanifold refuse asks for).
         try {
-            result = to_poly_mesh(loop_subdivide_streaming(mesh, s.options(), s.levels));
+            result = to_poly_mesh(loop_subdivide_streaming(mesh, s.options(), s.levels, threads));
+            threaded = threads > 1;
         } catch (const NonManifoldInput&) {
+            note_one_thread(threads, "this mesh is not one");
             result = loop_subdivide(input, s.options(), s.levels);
         }
     } else if (impl == "split-flip") {
@@ -253,8 +270,9 @@ int run_subdivide(const std::string& in, const SchemeArgs& flags, const std::str
         color_by_age(result, s.scheme, counts);
     }
     write_mesh(out, result);
-    fmt::print("{}: {} vertices, {} faces -> {} ({} vertices, {} faces, {} level(s), {})\n", in, mesh.num_vertices(),
-               mesh.num_faces(), out, result.num_vertices(), result.num_faces(), s.levels, impl);
+    fmt::print("{}: {} vertices, {} faces -> {} ({} vertices, {} faces, {} level(s), {}{})\n", in, mesh.num_vertices(),
+               mesh.num_faces(), out, result.num_vertices(), result.num_faces(), s.levels, impl,
+               threaded ? fmt::format(" on {} threads", threads) : "");
     return 0;
 }
 
@@ -456,6 +474,7 @@ int run_diff(const std::string& in, const SchemeArgs& flags, const std::string& 
 struct SubdivideArgs {
     std::string input, impl = "core", out, color = "none";
     double timeout = 120;
+    int threads = 1;
     SchemeArgs scheme;
     void add_to(CLI::App& app) {
         app.add_option("input", input, "Mesh file (.obj, .off) or bundled:NAME")->required();
@@ -488,6 +507,11 @@ struct SubdivideArgs {
                        "an error naming it) before it counts as hung")
             ->check(CLI::PositiveNumber)
             ->capture_default_str();
+        app.add_option("--threads", threads,
+                       "Threads for core's Loop and Catmull-Clark on a manifold mesh without tags or texture "
+                       "coordinates (the same result, bit for bit, on any number); other runs use one")
+            ->check(CLI::Range(1, 256))
+            ->capture_default_str();
     }
 };
 int subdivide_command(const SubdivideArgs& a) {
@@ -496,7 +520,7 @@ int subdivide_command(const SubdivideArgs& a) {
                          a.impl + " numbers its vertices its own way");
     if (a.color == "age" && !a.out.ends_with(".obj"))
         throw InputError("--color age writes vertex colours as OBJ 'v x y z r g b'; " + a.out + " is not an .obj file");
-    return run_subdivide(a.input, a.scheme, a.impl, a.out, a.color, a.timeout);
+    return run_subdivide(a.input, a.scheme, a.impl, a.out, a.color, a.timeout, a.threads);
 }
 
 /// The programs of a run: a subject in core's place and references added to the registry.

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "crossdiv/subdiv/catmull_clark_streaming.h"
 #include "crossdiv/io/output_file.h"
 #include "crossdiv/verification/harness/json_text.h"
 #include "crossdiv/error.h"
@@ -97,7 +98,7 @@ std::vector<size_t> vertex_counts(const std::vector<PolyMesh>& levels) {
 }
 
 int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const std::string& impl, const std::string& out,
-                         const std::string& color, double timeout) {
+                         const std::string& color, double timeout, int threads) {
     const Scheme scheme = scheme_from_string(s.scheme);
     PolyMesh mesh = load_input(in, s.unknown_tags);
     const SchemeRule rule_asked = rule_with_tags(scheme, s, mesh);
@@ -105,11 +106,21 @@ int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const s
     require_refined_size(mesh, scheme, s.levels, s.max_faces, in, "--max-faces");
     const std::optional<FaceVaryingRule> fvar = face_varying_rule_noted(scheme, s.face_varying, mesh);
     PolyMesh result;
-    if (impl == "core") {
+    bool threaded = false;  // by the streaming driver, on `threads`
+    if (impl == "core" && scheme == Scheme::CatmullClark && threads > 1 && !fvar && color != "age") {
+        // Core's streaming driver (catmull_clark_streaming.h), the same bits on any number of
+        // threads; a mesh it hands to the stencil driver (tags, not a manifold) runs on one.
+        result = catmull_clark_subdivide_streaming(mesh, rule_asked.catmull_clark, s.levels, threads, &threaded);
+        if (!threaded) fmt::print("note: --threads {}: {} takes catmull-clark's stencil driver (tags, or not a manifold), on one thread\n", threads, in);
+    } else if (impl == "core") {
+        if (threads > 1)
+            fmt::print("note: --threads {} is for core's Loop and Catmull-Clark without texture coordinates or --color; this run used one thread\n",
+                       threads);
         const adapters::LevelTrace levels = core_implementation().refine(mesh, {scheme, rule_asked, s.levels, fvar});
         result = levels.back();
         if (color == "age") color_by_age(result, s.scheme, vertex_counts(levels));
     } else {
+        if (threads > 1) fmt::print("note: --threads {} is for core; {} runs on its own threads\n", threads, impl);
         const Implementation& ref = *select_references(scheme, {impl}).front();
         const std::string rule = rule_name(scheme, ref.closest_rule(scheme, rule_asked));
         result = refine_last_or_throw(ref, mesh, {scheme, rule_asked, s.levels, fvar}, in, timeout);
@@ -120,9 +131,9 @@ int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const s
     const std::string decay =
         mesh.creases.empty() ? "" : fmt::format(", {} decay", to_string(rule_asked.catmull_clark.creasing));
     const std::string uv = fvar && !emitted.face_varying.empty() ? fmt::format(", uv {}", to_string(*fvar)) : "";
-    fmt::print("{}: {} vertices, {} faces{} -> {} ({} vertices, {} faces, {} level(s){}, {} {}{} {})\n", in,
+    fmt::print("{}: {} vertices, {} faces{} -> {} ({} vertices, {} faces, {} level(s){}, {} {}{} {}{})\n", in,
                mesh.num_vertices(), mesh.num_faces(), tags, out, emitted.num_vertices(), emitted.num_faces(), s.levels,
-               decay, s.scheme, asked, uv, impl);
+               decay, s.scheme, asked, uv, impl, threaded ? fmt::format(" on {} threads", threads) : "");
     return 0;
 }
 

@@ -50,9 +50,10 @@ PolyMesh write_emitted(const std::string& out, const PolyMesh& result, const std
 
 /// `crossdiv subdivide IN --scheme catmull-clark --impl core|opensubdiv|openmesh|cgal -o OUT`;
 /// `color` "age" colours the vertices by the level they were born at (color_by_age). A reference
-/// runs isolated with `timeout` seconds (refine_or_throw).
+/// runs isolated with `timeout` seconds (refine_or_throw). Core's Catmull-Clark runs on `threads`
+/// (catmull_clark_streaming.h), every other run on one (a note says so).
 int run_scheme_subdivide(const std::string& in, const PolySchemeArgs& s, const std::string& impl, const std::string& out,
-                         const std::string& color, double timeout);
+                         const std::string& color, double timeout, int threads);
 
 /// `subdivide --color age`: colours `result`, the last of core's levels of `scheme`, by the
 /// level each vertex was born at (crossdiv/subdiv/vertex_age.h), from the vertex count of

@@ -45,6 +45,15 @@ expect subdivide-non-manifold-refused 2 'edge \(0, 1\) is shared by 3 triangles'
 expect check-lists-issues 2 'error \[non-manifold-edge\]' -- "$crossdiv" check "$tmp/nonmanifold.obj"
 # Vertex age: Loop on the icosahedron keeps its 12 vertices (dark blue) and adds one per edge: 480 at level 3 (yellow).
 expect subdivide-age 0 '^ *480 v 0\.99299999999999999 0\.90600000000000003 0\.14399999999999999$' -- bash -c "\"$crossdiv\" subdivide bundled:icosahedron --levels 3 --color age -o \"$tmp/age.obj\" >/dev/null && awk '\$1==\"v\" {print \"v\", \$5, \$6, \$7}' \"$tmp/age.obj\" | sort | uniq -c"
+# Threads: icosahedron 6 levels (the last pass has 30,720 edges, past the 8,192 below which a
+# pass stays on one thread): the same file on 1 and 3 threads, byte for byte.
+expect subdivide-threads 0 '\(40962 vertices, 81920 faces, 6 level\(s\), core on 3 threads\)' -- "$crossdiv" subdivide bundled:icosahedron --levels 6 --threads 3 -o "$tmp/t3.off"
+expect subdivide-threads-same-bits 0 '' -- bash -c "\"$crossdiv\" subdivide bundled:icosahedron --levels 6 -o \"$tmp/t1.off\" > /dev/null && cmp \"$tmp/t1.off\" \"$tmp/t3.off\""
+expect subdivide-threads-one-elsewhere 0 'note: --threads 2 is for core.s Loop and Catmull-Clark on a manifold mesh; this is sqrt3: this run used one thread' -- "$crossdiv" subdivide bundled:icosahedron --scheme sqrt3 --threads 2 -o "$tmp/x.obj"
+# Catmull-Clark: the cube at 7 levels (the last pass over 98,304 corners): the same file on 1 and 2 threads.
+expect subdivide-threads-catmull-clark 0 '\(98306 vertices, 98304 faces, 7 level\(s\), catmull-clark edge-only core on 2 threads\)' -- "$crossdiv" subdivide bundled:quad-cube --scheme catmull-clark --levels 7 --threads 2 -o "$tmp/c2.off"
+expect subdivide-threads-catmull-clark-same-bits 0 '' -- bash -c "\"$crossdiv\" subdivide bundled:quad-cube --scheme catmull-clark --levels 7 -o \"$tmp/c1.off\" > /dev/null && cmp \"$tmp/c1.off\" \"$tmp/c2.off\""
+expect subdivide-threads-zero 2 'threads: Value 0 not in range' -- "$crossdiv" subdivide bundled:icosahedron --threads 0 -o "$tmp/x.obj"
 # A library refining alone runs in a child process: its crash on a hostile mesh is an error naming it, exit 2.
 # (CGAL's Loop dies by SIGSEGV on the isolated vertex; in the sanitizer build it may read on without end instead.)
 expect subdivide-library-crash 2 'cgal failed on edgecase:isolated-vertex: (crashed|timeout)' -- "$crossdiv" subdivide edgecase:isolated-vertex --impl cgal --timeout 5 -o "$tmp/x.obj"
@@ -252,6 +261,9 @@ expect bench-warm-and-cold 2 'excludes' -- "$crossdiv" bench --warm --cold
 expect bench-in-report 0 'figures/timing.png' -- grep 'figures/timing.png' "$tmp/suite/report.md"
 expect bench-curves 0 'wineglass/profile|curve:s-curve/s' -- cat "$tmp/bench.txt"
 expect bench-json 0 '"goals"' -- cat "$tmp/b.json"
+expect bench-threads 0 '^loop +torus-20000 +2 +320000 +[0-9.]+ +[0-9.]+ +[0-9.]+ +[0-9.]+ +[0-9.]+ ' -- cat "$tmp/bench.txt"
+expect bench-threads-catmull-clark 0 '^catmull-clark +quads-19494 +2 +311904 +[0-9.]+ +[0-9.]+ +[0-9.]+ +[0-9.]+ +[0-9.]+ ' -- cat "$tmp/bench.txt"
+expect bench-threads-goal 0 'goal \(threads\): no input of at least 1000000 output faces' -- cat "$tmp/bench.txt"
 fi
 
 # Curves: tessellate and casteljau on good input, and bad input named by file and line.

@@ -14,6 +14,7 @@
 #include "crossdiv/error.h"
 #include "crossdiv/mesh/poly_connectivity.h"
 #include "crossdiv/subdiv/catmull_clark.h"
+#include "parallel_blocks.h"
 #include "stream_twins.h"
 
 namespace crossdiv {
@@ -193,42 +194,61 @@ inline void add(Vec3& s, double w, const Vec3& p) {
 /// at nv + nf + e), each summed from zero in catmull_clark_step's order of terms
 /// (StencilTable::apply): face points in corner order; an edge point's ends, then the face
 /// points of its first corner's face and its twin's; a vertex point's face points around its
-/// one-ring walk, then its ring vertices, then itself.
+/// one-ring walk, then its ring vertices, then itself. Each function writes block b of
+/// `blocks` of its points; the edge and vertex points read the face points, all of them
+/// written before (a region of their own).
 template <class Faces>
-void level_points(const Level& l, const Faces& F, const CatmullClarkOptions& o,
-                  const std::vector<CatmullClarkVertexMask>& masks, const Vec3* p, Vec3* out) {
-    const int nv = l.nv, nf = l.nf, ne = l.num_edges();
+void face_points(const Level& l, const Faces& F, const Vec3* p, Vec3* out, size_t b, size_t blocks) {
     const int* cv = l.corner_vertex.data();
-    const int* twin = l.twin.data();
-    Vec3* fp = out + nv;
-    Vec3* ep = out + nv + nf;
-    for (int f = 0; f < nf; ++f) {
-        const int b = F.begin(f), e = F.end(f);
-        const double w = 1.0 / (e - b);
+    Vec3* fp = out + l.nv;
+    const auto [begin, end] = detail::ParallelBlocks::block_range(static_cast<size_t>(l.nf), b, blocks);
+    for (int f = static_cast<int>(begin); f < static_cast<int>(end); ++f) {
+        const int c0 = F.begin(f), c1 = F.end(f);
+        const double w = 1.0 / (c1 - c0);
         Vec3 s = Vec3::Zero();
-        for (int c = b; c < e; ++c) add(s, w, p[cv[c]]);
+        for (int c = c0; c < c1; ++c) add(s, w, p[cv[c]]);
         fp[f] = s;
     }
-    for (int e = 0; e < ne; ++e) {
+}
+
+template <class Faces>
+void edge_points(const Level& l, const Faces& F, const CatmullClarkOptions& o, const Vec3* p, Vec3* out, size_t b,
+                 size_t blocks) {
+    const int* cv = l.corner_vertex.data();
+    const int* twin = l.twin.data();
+    const Vec3* fp = out + l.nv;
+    Vec3* ep = out + l.nv + l.nf;
+    const auto [begin, end] = detail::ParallelBlocks::block_range(static_cast<size_t>(l.num_edges()), b, blocks);
+    for (int e = static_cast<int>(begin); e < static_cast<int>(end); ++e) {
         const int c = l.edge_corner[e], t = twin[c];
-        const Vec3 &a = p[cv[c]], &b = p[cv[F.next(c)]];
+        const Vec3 &a = p[cv[c]], &q = p[cv[F.next(c)]];
         Vec3 s = Vec3::Zero();
         if (t < 0) {  // the crease mask: the midpoint
             add(s, 0.5, a);
-            add(s, 0.5, b);
+            add(s, 0.5, q);
         } else {
             const int fc = F.face(c), ft = F.face(t);
             const CatmullClarkEdgeWeights w = catmull_clark_edge_weights(
                 o.smooth_triangles, F.end(fc) - F.begin(fc) == 3, F.end(ft) - F.begin(ft) == 3);
             add(s, w.end, a);
-            add(s, w.end, b);
+            add(s, w.end, q);
             add(s, w.face, fp[fc]);
             add(s, w.face, fp[ft]);
         }
         ep[e] = s;
     }
-    std::vector<int> ring(8);  // the ring vertices of the vertex at hand
-    for (int v = 0; v < nv; ++v) {
+}
+
+/// `ring`: scratch for the ring vertices of the vertex at hand, one per block.
+template <class Faces>
+void vertex_points(const Level& l, const Faces& F, const CatmullClarkOptions& o,
+                   const std::vector<CatmullClarkVertexMask>& masks, const Vec3* p, Vec3* out, std::vector<int>& ring,
+                   size_t b, size_t blocks) {
+    const int* cv = l.corner_vertex.data();
+    const int* twin = l.twin.data();
+    const Vec3* fp = out + l.nv;
+    const auto [begin, end] = detail::ParallelBlocks::block_range(static_cast<size_t>(l.nv), b, blocks);
+    for (int v = static_cast<int>(begin); v < static_cast<int>(end); ++v) {
         const int start = l.start[v];
         Vec3 s = Vec3::Zero();
         if (start < 0) {  // isolated: nothing to average with, it stays
@@ -278,30 +298,27 @@ void level_points(const Level& l, const Faces& F, const CatmullClarkOptions& o,
     }
 }
 
-/// The next level's quads (catmull_clark.h's numbering: quad c = (v_c, E(c), F(f), E(prev c)))
-/// into `child.corner_vertex`, and, unless `last`, the rest of its connectivity, from the
-/// parent's alone.
+/// The next level (catmull_clark.h's numbering: quad c = (v_c, E(c), F(f), E(prev c))), built
+/// from the parent's connectivity alone, in the blocks of one level: its quads, and, unless
+/// `last`, its twins (quads_block); its edges, numbered at their first corner in scan order,
+/// block by block from the counts of the blocks before (count_edges, then number_edges, which
+/// also writes the walks' starts and face counts, then second_corners).
 template <class Faces>
-void refine_topology(const Level& l, const Faces& F, bool last, Level& child) {
-    const int nv = l.nv, nf = l.nf, ne = l.num_edges(), nc = l.num_corners();
+void quads_block(const Level& l, const Faces& F, bool last, Level& child, size_t b, size_t blocks) {
+    const int nv = l.nv, nf = l.nf;
     const int face_point = nv, edge_point = nv + nf;
-    child.nv = nv + nf + ne;
-    child.nf = nc;
-    child.corner_vertex.resize(4 * static_cast<size_t>(nc));
-    int* quad = child.corner_vertex.data();
-    for (int c = 0; c < nc; ++c, quad += 4) {
+    const auto [begin, end] = detail::ParallelBlocks::block_range(static_cast<size_t>(l.num_corners()), b, blocks);
+    for (int c = static_cast<int>(begin); c < static_cast<int>(end); ++c) {
+        int* quad = &child.corner_vertex[4 * static_cast<size_t>(c)];
         quad[0] = l.corner_vertex[c];
         quad[1] = edge_point + l.corner_edge[c];
         quad[2] = face_point + F.face(c);
         quad[3] = edge_point + l.corner_edge[F.prev(c)];
-    }
-    if (last) return;
-    // Twins. Corner c's quad has the half-edges v_c -> E(c) (its twin E(c) -> v_c is the last
-    // of the quad of next(twin c), across edge c), E(c) -> F (twin: in the quad of next c),
-    // F -> E(prev c) (twin: in the quad of prev c) and E(prev c) -> v_c (twin: the first of
-    // the quad of twin(prev c), across edge prev c).
-    child.twin.resize(4 * static_cast<size_t>(nc));
-    for (int c = 0; c < nc; ++c) {
+        if (last) continue;
+        // Twins. Corner c's quad has the half-edges v_c -> E(c) (its twin E(c) -> v_c is the
+        // last of the quad of next(twin c), across edge c), E(c) -> F (twin: in the quad of
+        // next c), F -> E(prev c) (twin: in the quad of prev c) and E(prev c) -> v_c (twin: the
+        // first of the quad of twin(prev c), across edge prev c).
         const int t = l.twin[c], tp = l.twin[F.prev(c)];
         int* tw = &child.twin[4 * static_cast<size_t>(c)];
         tw[0] = t < 0 ? -1 : 4 * F.next(t) + 3;
@@ -309,45 +326,70 @@ void refine_topology(const Level& l, const Faces& F, bool last, Level& child) {
         tw[2] = 4 * F.prev(c) + 1;
         tw[3] = tp < 0 ? -1 : 4 * tp;
     }
-    // Edges at their first corner in scan order; a one-ring walk from the corner whose
-    // incoming half-edge is on the boundary, else from the vertex's first corner.
-    const int child_corners = 4 * nc;
-    child.corner_edge.resize(static_cast<size_t>(child_corners));
-    // Two halves of every edge and one edge per corner inside each face.
-    child.edge_corner.resize(2 * static_cast<size_t>(ne) + static_cast<size_t>(nc));
-    int edges = 0;
-    for (int c = 0; c < child_corners; ++c) {
-        const int t = child.twin[c];
-        if (t < 0 || t > c) {
-            child.corner_edge[c] = edges;
-            child.edge_corner[edges++] = c;
-        } else {
-            child.corner_edge[c] = child.corner_edge[t];
-        }
+}
+
+/// Whether child corner c is its edge's first (the edge is numbered there).
+inline bool first_corner(const Level& child, int c) { return child.twin[c] < 0 || child.twin[c] > c; }
+
+/// The first corners in block b of the child's corners, into edges[b + 1].
+inline void count_edges(const Level& child, std::vector<int>& edges, size_t b, size_t blocks) {
+    const auto [begin, end] = detail::ParallelBlocks::block_range(child.twin.size(), b, blocks);
+    int n = 0;
+    for (int c = static_cast<int>(begin); c < static_cast<int>(end); ++c) n += first_corner(child, c);
+    edges[b + 1] = n;
+}
+
+/// Block b's edges numbered from edges[b] (the first corners before it); the walks' starts and
+/// face counts of block b of the old vertices, face points and edge points.
+template <class Faces>
+void number_edges(const Level& l, const Faces& F, Level& child, const std::vector<int>& edges, size_t b, size_t blocks) {
+    using detail::ParallelBlocks;
+    {
+        const auto [begin, end] = ParallelBlocks::block_range(child.twin.size(), b, blocks);
+        int e = edges[b];
+        for (int c = static_cast<int>(begin); c < static_cast<int>(end); ++c)
+            if (first_corner(child, c)) {
+                child.corner_edge[c] = e;
+                child.edge_corner[e++] = c;
+            }
     }
     // The walks' starts in closed form. An old vertex's corners are 4c for its corners c, and
     // the incoming half-edge of 4c is on the boundary exactly when that of c is: 4 start(v).
     // A face point's corners are 4c + 2 inside: the first, 4 begin(f) + 2. An edge point's are
     // 4c + 1 and 4 next(c) + 3 for each corner c of the edge: on a boundary the walk starts at
     // 4c + 1 (its incoming half-edge is half of the edge), inside at the least of the four.
-    child.start.resize(static_cast<size_t>(child.nv));
-    for (int v = 0; v < nv; ++v) child.start[v] = l.start[v] < 0 ? -1 : 4 * l.start[v];
-    for (int f = 0; f < nf; ++f) child.start[face_point + f] = 4 * F.begin(f) + 2;
-    for (int e = 0; e < ne; ++e) {
+    // Old vertices keep their face count; a face point has its face's size; an edge point
+    // 4 faces inside, 2 on a boundary.
+    const int nv = l.nv, nf = l.nf, face_point = nv, edge_point = nv + nf;
+    {
+        const auto [begin, end] = ParallelBlocks::block_range(static_cast<size_t>(nv), b, blocks);
+        for (int v = static_cast<int>(begin); v < static_cast<int>(end); ++v) {
+            child.start[v] = l.start[v] < 0 ? -1 : 4 * l.start[v];
+            child.faces[v] = l.faces[v];
+        }
+    }
+    {
+        const auto [begin, end] = ParallelBlocks::block_range(static_cast<size_t>(nf), b, blocks);
+        for (int f = static_cast<int>(begin); f < static_cast<int>(end); ++f) {
+            child.start[face_point + f] = 4 * F.begin(f) + 2;
+            child.faces[face_point + f] = F.end(f) - F.begin(f);
+        }
+    }
+    const auto [begin, end] = ParallelBlocks::block_range(static_cast<size_t>(l.num_edges()), b, blocks);
+    for (int e = static_cast<int>(begin); e < static_cast<int>(end); ++e) {
         const int c = l.edge_corner[e], t = l.twin[c];
         int s = 4 * c + 1;
         if (t >= 0) s = std::min({s, 4 * F.next(c) + 3, 4 * t + 1, 4 * F.next(t) + 3});
         child.start[edge_point + e] = s;
+        child.faces[edge_point + e] = t < 0 ? 2 : 4;
     }
-    if (edges != static_cast<int>(child.edge_corner.size()))
-        throw std::logic_error("a refined Catmull-Clark level has " + std::to_string(edges) + " edges, not " +
-                               std::to_string(child.edge_corner.size()));
-    // Old vertices keep their face count; a face point has its face's size; an edge point
-    // 4 faces inside, 2 on a boundary.
-    child.faces.resize(static_cast<size_t>(child.nv));
-    std::copy(l.faces.begin(), l.faces.begin() + nv, child.faces.begin());
-    for (int f = 0; f < nf; ++f) child.faces[face_point + f] = F.end(f) - F.begin(f);
-    for (int e = 0; e < ne; ++e) child.faces[edge_point + e] = l.twin[l.edge_corner[e]] < 0 ? 2 : 4;
+}
+
+/// A second corner takes its twin's edge number (the twin is below it, so it is the first).
+inline void second_corners(Level& child, size_t b, size_t blocks) {
+    const auto [begin, end] = detail::ParallelBlocks::block_range(child.twin.size(), b, blocks);
+    for (int c = static_cast<int>(begin); c < static_cast<int>(end); ++c)
+        if (!first_corner(child, c)) child.corner_edge[c] = child.corner_edge[child.twin[c]];
 }
 
 /// catmull_clark_step's refusal of a level past 32-bit indices.
@@ -373,27 +415,64 @@ bool streamable(const PolyMesh& mesh, int levels) {
     return small(mesh.positions) && small(mesh.colors);
 }
 
-/// One level: the points of positions and colors, then the child's connectivity.
+/// One level: the points of positions and colors and the child's connectivity, in four
+/// parallel regions (three for the last level), each pass split into one block per thread:
+/// face points and quads; edge and vertex points (which read the face points) and the count of
+/// edges per block (which reads the twins); the edges numbered, starts and face counts; the
+/// second corners' edges.
 template <class Faces>
 void refine_level(const Level& l, const Faces& F, const CatmullClarkOptions& o, bool last, std::vector<Vec3>& positions,
-                  std::vector<Vec3>& colors, Level& child) {
+                  std::vector<Vec3>& colors, Level& child, detail::ParallelBlocks& parallel) {
     require_addressable(l);
     const std::vector<CatmullClarkVertexMask> masks = interior_masks(l);
+    const int nc = l.num_corners();
     const size_t n = static_cast<size_t>(l.nv) + l.nf + l.num_edges();
-    std::vector<Vec3> next(n);
-    level_points(l, F, o, masks, positions.data(), next.data());
-    positions = std::move(next);
-    if (!colors.empty()) {
-        std::vector<Vec3> next_colors(n);
-        level_points(l, F, o, masks, colors.data(), next_colors.data());
-        colors = std::move(next_colors);
+    std::vector<Vec3> next(n), next_colors(colors.empty() ? 0 : n);
+    child.nv = l.nv + l.nf + l.num_edges();
+    child.nf = nc;
+    child.corner_vertex.resize(4 * static_cast<size_t>(nc));
+    if (!last) {
+        child.twin.resize(4 * static_cast<size_t>(nc));
+        child.corner_edge.resize(4 * static_cast<size_t>(nc));
+        // Two halves of every edge and one edge per corner inside each face.
+        child.edge_corner.resize(2 * static_cast<size_t>(l.num_edges()) + static_cast<size_t>(nc));
+        child.start.resize(static_cast<size_t>(child.nv));
+        child.faces.resize(static_cast<size_t>(child.nv));
     }
-    refine_topology(l, F, last, child);
+    const size_t blocks = parallel.blocks(static_cast<size_t>(nc));
+    std::vector<int> edges(blocks + 1, 0);  // first corners before each block
+    std::vector<std::vector<int>> rings(blocks, std::vector<int>(8));
+    parallel.run(blocks, [&](size_t b) {
+        face_points(l, F, positions.data(), next.data(), b, blocks);
+        if (!colors.empty()) face_points(l, F, colors.data(), next_colors.data(), b, blocks);
+        quads_block(l, F, last, child, b, blocks);
+    });
+    parallel.run(blocks, [&](size_t b) {
+        edge_points(l, F, o, positions.data(), next.data(), b, blocks);
+        vertex_points(l, F, o, masks, positions.data(), next.data(), rings[b], b, blocks);
+        if (!colors.empty()) {
+            edge_points(l, F, o, colors.data(), next_colors.data(), b, blocks);
+            vertex_points(l, F, o, masks, colors.data(), next_colors.data(), rings[b], b, blocks);
+        }
+        if (!last) count_edges(child, edges, b, blocks);
+    });
+    positions = std::move(next);
+    colors = std::move(next_colors);
+    if (last) return;
+    for (size_t b = 1; b <= blocks; ++b) edges[b] += edges[b - 1];
+    if (edges.back() != static_cast<int>(child.edge_corner.size()))
+        throw std::logic_error("a refined Catmull-Clark level has " + std::to_string(edges.back()) + " edges, not " +
+                               std::to_string(child.edge_corner.size()));
+    parallel.run(blocks, [&](size_t b) { number_edges(l, F, child, edges, b, blocks); });
+    parallel.run(blocks, [&](size_t b) { second_corners(child, b, blocks); });
 }
 
 }  // namespace
 
-PolyMesh catmull_clark_subdivide_streaming(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels) {
+PolyMesh catmull_clark_subdivide_streaming(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels,
+                                           int threads, bool* streamed) {
+    detail::ParallelBlocks parallel(threads);
+    if (streamed) *streamed = false;
     // The literature's other vertex rules are for naming a subject's, not for speed: the
     // closed forms below are the standard rule's.
     if (!streamable(mesh, levels) || options.vertex != CatmullClarkVertexRule::Standard)
@@ -408,14 +487,15 @@ PolyMesh catmull_clark_subdivide_streaming(const PolyMesh& mesh, const CatmullCl
         // OpenSubdiv's non-manifold rules, or the refusal under NonManifoldRule::Refuse.
         return catmull_clark_subdivide(mesh, options, levels);
     }
+    if (streamed) *streamed = true;
     std::vector<Vec3> positions = mesh.positions, colors = mesh.colors;
     Level child;
-    if (quads) refine_level(level, Quads{}, options, levels == 1, positions, colors, child);
-    else refine_level(level, Polygons{level}, options, levels == 1, positions, colors, child);
+    if (quads) refine_level(level, Quads{}, options, levels == 1, positions, colors, child, parallel);
+    else refine_level(level, Polygons{level}, options, levels == 1, positions, colors, child, parallel);
     for (int l = 1; l < levels; ++l) {
         std::swap(level, child);
         if (l == 1) child = Level{};  // the input level's arrays, no longer read
-        refine_level(level, Quads{}, options, l + 1 == levels, positions, colors, child);
+        refine_level(level, Quads{}, options, l + 1 == levels, positions, colors, child, parallel);
     }
     PolyMesh out;
     out.positions = std::move(positions);

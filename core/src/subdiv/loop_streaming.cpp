@@ -13,6 +13,7 @@
 #include "crossdiv/error.h"
 #include "crossdiv/subdiv/loop.h"
 #include "finite_level.h"
+#include "parallel_blocks.h"
 #include "stream_twins.h"
 
 namespace crossdiv {
@@ -42,6 +43,17 @@ struct StreamTopology {
     Buffer<std::array<int, 2>> opposite;  ///< per edge: in the first triangle, in the second (-1: boundary)
     Buffer<int> faces;                    ///< per vertex: triangles around it (0: isolated)
     Buffer<std::uint8_t> boundary;        ///< per vertex: on a boundary
+    /// Per edge: its corner (3 triangle + corner, the edge running from that corner) in its
+    /// first triangle and in its second (-1: boundary). The next level's edge-indexed arrays are
+    /// written edge by edge from these, so that no two threads write one edge's entries.
+    Buffer<std::array<int, 2>> edge_corners;
+    /// Each vertex's edges in increasing edge order, as (edge << 1) | which end the vertex is:
+    /// the vertex's entries start at incident_start[v] and number faces + boundary (a fan of
+    /// f triangles has f edges inside, f + 1 on a boundary). A vertex point sums its neighbours
+    /// in this order, which is the order in which a pass over the edges would meet them.
+    Buffer<int> incident_start;
+    Buffer<int> incident;
+    int most_faces = 0;  ///< the largest face count of a vertex
 
     int num_vertices() const { return static_cast<int>(faces.size); }
     int num_edges() const { return static_cast<int>(ends.size); }
@@ -93,9 +105,10 @@ std::optional<StreamTopology> stream_input(const TriMesh& mesh) {
     StreamTopology t;
     t.triangles = T;
     t.tri_edges = Buffer<std::array<int, 3>>(static_cast<size_t>(nf));
-    std::vector<std::array<int, 2>> ends, opposite;
+    std::vector<std::array<int, 2>> ends, opposite, corners;
     ends.reserve(static_cast<size_t>(nh) / 2 + 16);
     opposite.reserve(ends.capacity());
+    corners.reserve(ends.capacity());
     t.faces = Buffer<int>(static_cast<size_t>(nv));
     t.boundary = Buffer<std::uint8_t>(static_cast<size_t>(nv));
     std::fill(t.faces.data.get(), t.faces.data.get() + nv, 0);
@@ -112,11 +125,30 @@ std::optional<StreamTopology> stream_input(const TriMesh& mesh) {
             t.tri_edges[i][j] = static_cast<int>(ends.size()) << 1;
             ends.push_back({a, b});
             opposite.push_back({T[i][j == 0 ? 2 : j - 1], g < 0 ? -1 : T[g / 3][(g % 3 + 2) % 3]});
+            corners.push_back({c, g});
         }
     t.ends = Buffer<std::array<int, 2>>(ends.size());
     t.opposite = Buffer<std::array<int, 2>>(ends.size());
     std::copy(ends.begin(), ends.end(), t.ends.data.get());
     std::copy(opposite.begin(), opposite.end(), t.opposite.data.get());
+    t.edge_corners = Buffer<std::array<int, 2>>(ends.size());
+    std::copy(corners.begin(), corners.end(), t.edge_corners.data.get());
+    // Each vertex's edges by a counting sort in edge order (one fan per vertex was checked
+    // above, so the counts are its faces, plus one on a boundary).
+    t.incident_start = Buffer<int>(static_cast<size_t>(nv));
+    std::vector<int> next(static_cast<size_t>(nv));
+    int total = 0;
+    for (int v = 0; v < nv; ++v) {
+        t.incident_start[v] = next[v] = total;
+        total += t.faces[v] + t.boundary[v];
+        t.most_faces = std::max(t.most_faces, t.faces[v]);
+    }
+    if (total != 2 * static_cast<int>(ends.size())) throw std::logic_error("streaming Loop: edge ends miscounted");
+    t.incident = Buffer<int>(static_cast<size_t>(total));
+    for (int e = 0; e < static_cast<int>(ends.size()); ++e) {
+        t.incident[next[ends[e][0]]++] = e << 1;
+        t.incident[next[ends[e][1]]++] = (e << 1) | 1;
+    }
     return t;
 }
 
@@ -132,16 +164,13 @@ StreamTopology input_topology(const TriMesh& mesh) {
     throw std::logic_error("the streaming Loop driver refused a mesh build_tri_connectivity accepts");
 }
 
-/// The vertex masks by face count, computed once per level for the counts that occur (at most
-/// the largest valence, so linear in the mesh).
+/// The vertex masks by face count, for every count up to the level's largest.
 struct VertexMasks {
     std::vector<VertexMask> interior, boundary;
     VertexMasks(const StreamTopology& t, const LoopOptions& o) {
-        int most = 0;
-        for (size_t v = 0; v < t.faces.size; ++v) most = std::max(most, t.faces[v]);
-        interior.resize(static_cast<size_t>(most) + 1);
-        boundary.resize(static_cast<size_t>(most) + 1);
-        for (int n = 1; n <= most; ++n) {
+        interior.resize(static_cast<size_t>(t.most_faces) + 1);
+        boundary.resize(static_cast<size_t>(t.most_faces) + 1);
+        for (int n = 1; n <= t.most_faces; ++n) {
             interior[n] = interior_vertex_mask(o.weights, n);
             boundary[n] = boundary_vertex_mask(o.boundary, n);
         }
@@ -149,57 +178,65 @@ struct VertexMasks {
 };
 
 /// One level's points: the vertex points at 0..nv-1, the edge points at nv + e, in `out` (which
-/// holds nv + ne points). One pass over the edges writes the edge points and accumulates every
-/// vertex's sum of neighbours in `out`'s first nv entries (and, on a boundary edge, the
-/// boundary vertices' sums of their boundary neighbours in `boundary_sums`); one pass over the
-/// vertices turns the sums into vertex points. `Tuned`: the tuned families' edge masks, which
-/// read the ends' valences.
+/// holds nv + ne points). The edge points read the edge's ends and opposite vertices; a vertex
+/// point sums its neighbours (on a boundary, its two boundary neighbours) along its incidence
+/// list, in edge order. This call writes block b of `blocks` of the edges and of the vertices;
+/// every point is written by one block, so the blocks run on any number of threads with the
+/// same result. `Tuned`: the tuned families' edge masks, which read the ends' valences.
 template <bool Tuned>
 void level_points(const StreamTopology& t, const LoopOptions& o, const VertexMasks& masks, const Vec3* p, Vec3* out,
-                  std::vector<Vec3>& boundary_sums) {
-    const int nv = t.num_vertices(), ne = t.num_edges();
-    // The arrays as local pointers: the loop calls a function (the first boundary edge's
-    // allocation), after which members read through `t` would be loaded again every edge.
+                  size_t b, size_t blocks) {
+    const int nv = t.num_vertices();
     const std::uint8_t* bnd = t.boundary.data.get();
     const std::array<int, 2>* ends = t.ends.data.get();
     const std::array<int, 2>* opposite = t.opposite.data.get();
     const int* faces = t.faces.data.get();
-    for (int v = 0; v < nv; ++v) out[v].setZero();
     const TunedEdgeMask plain = tuned_edge_mask(o.weights, 0, 0);
     const double half = boundary_edge_mask().end;
     Vec3* edge_points = out + nv;
-    for (int e = 0; e < ne; ++e) {
-        const int a = ends[e][0], b = ends[e][1], c = opposite[e][0], d = opposite[e][1];
-        const Vec3 &pa = p[a], &pb = p[b];
-        out[a] += pb;
-        out[b] += pa;
-        if (d < 0) {  // a boundary edge: its ends sum their boundary neighbours apart
-            if (boundary_sums.empty()) boundary_sums.assign(static_cast<size_t>(nv), Vec3::Zero());
-            boundary_sums[a] += pb;
-            boundary_sums[b] += pa;
-            edge_points[e] = half * (pa + pb);
-            continue;
-        }
-        // Edge points: (a + b) and (c + d) summed first, then scaled (loop.cpp's stencil_sum).
-        if constexpr (Tuned) {
-            const TunedEdgeMask m = tuned_edge_mask(o.weights, tuned_edge_valence(faces[a], bnd[a]),
-                                                    tuned_edge_valence(faces[b], bnd[b]));
-            if (m.end_a == m.end_b) edge_points[e] = m.end_a * (pa + pb) + m.opposite * (p[c] + p[d]);
-            else edge_points[e] = m.end_a * pa + m.opposite * (p[c] + p[d]) + m.end_b * pb;
-        } else {
-            edge_points[e] = plain.end_a * (pa + pb) + plain.opposite * (p[c] + p[d]);
+    {
+        const auto [begin, end] = detail::ParallelBlocks::block_range(t.ends.size, b, blocks);
+        for (size_t e = begin; e < end; ++e) {
+            const int a = ends[e][0], b = ends[e][1], c = opposite[e][0], d = opposite[e][1];
+            const Vec3 &pa = p[a], &pb = p[b];
+            if (d < 0) {
+                edge_points[e] = half * (pa + pb);
+                continue;
+            }
+            // (a + b) and (c + d) summed first, then scaled (loop.cpp's stencil_sum).
+            if constexpr (Tuned) {
+                const TunedEdgeMask m = tuned_edge_mask(o.weights, tuned_edge_valence(faces[a], bnd[a]),
+                                                        tuned_edge_valence(faces[b], bnd[b]));
+                if (m.end_a == m.end_b) edge_points[e] = m.end_a * (pa + pb) + m.opposite * (p[c] + p[d]);
+                else edge_points[e] = m.end_a * pa + m.opposite * (p[c] + p[d]) + m.end_b * pb;
+            } else {
+                edge_points[e] = plain.end_a * (pa + pb) + plain.opposite * (p[c] + p[d]);
+            }
         }
     }
-    for (int v = 0; v < nv; ++v) {
-        const int f = faces[v];
-        if (f == 0) {  // isolated: nothing to average with, it stays
-            out[v] = p[v];
-            continue;
+    const int* start = t.incident_start.data.get();
+    const int* incident = t.incident.data.get();
+    {
+        const auto [begin, end] = detail::ParallelBlocks::block_range(static_cast<size_t>(nv), b, blocks);
+        for (size_t v = begin; v < end; ++v) {
+            const int f = faces[v];
+            if (f == 0) {  // isolated: nothing to average with, it stays
+                out[v] = p[v];
+                continue;
+            }
+            // An interior vertex sums every neighbour, a boundary vertex its two boundary
+            // neighbours (the ends of its boundary edges).
+            const int* it = incident + start[v];
+            Vec3 sum = Vec3::Zero();
+            if (!bnd[v]) {
+                for (int k = 0; k < f; ++k) sum += p[ends[it[k] >> 1][1 - (it[k] & 1)]];
+            } else {
+                for (int k = 0; k <= f; ++k)
+                    if (opposite[it[k] >> 1][1] < 0) sum += p[ends[it[k] >> 1][1 - (it[k] & 1)]];
+            }
+            const VertexMask m = bnd[v] ? masks.boundary[f] : masks.interior[f];
+            out[v] = m.neighbor != 0.0 ? Vec3(m.self * p[v] + m.neighbor * sum) : Vec3(m.self * p[v]);
         }
-        // An interior vertex sums every neighbour, a boundary vertex its two boundary neighbours.
-        const VertexMask m = bnd[v] ? masks.boundary[f] : masks.interior[f];
-        const Vec3& sum = bnd[v] ? boundary_sums[v] : out[v];
-        out[v] = m.neighbor != 0.0 ? Vec3(m.self * p[v] + m.neighbor * sum) : Vec3(m.self * p[v]);
     }
 }
 
@@ -214,83 +251,156 @@ bool may_overflow(const std::vector<Vec3>& p, const VertexMasks& masks) {
     return !(largest * terms < std::numeric_limits<double>::max() / 4);  // NaN: a NaN input (refused before)
 }
 
-/// The next level's triangles (loop.h's numbering), and, unless `last`, the rest of its topology.
-void refine_topology(const StreamTopology& t, bool last, StreamTopology& child) {
-    const int nv = t.num_vertices(), ne = t.num_edges(), nf = static_cast<int>(t.triangles.size());
-    // Appended to a reserved vector: a resized one is zeroed first, a second pass over the
-    // level's largest array (measured: 5.5 ms against 3.5 ms for 1.28M triangles).
+/// The next level's arrays, sized: its triangles (appended on one block: a resized vector is
+/// zeroed first, a second pass over the level's largest array, measured 5.5 ms against 3.5 ms
+/// for 1.28M triangles; sized on several, whose blocks write at their own places) and, unless
+/// `last`, the rest of its topology.
+void allocate_child(const StreamTopology& t, bool last, size_t blocks, StreamTopology& child) {
+    const size_t nv = static_cast<size_t>(t.num_vertices()), ne = static_cast<size_t>(t.num_edges()), nf = t.triangles.size();
     child.triangles.clear();
-    child.triangles.reserve(4 * static_cast<size_t>(nf));
-    for (int i = 0; i < nf; ++i) {
+    if (blocks == 1) child.triangles.reserve(4 * nf);
+    else child.triangles.resize(4 * nf);
+    if (last) return;
+    child.tri_edges = Buffer<std::array<int, 3>>(4 * nf);
+    child.ends = Buffer<std::array<int, 2>>(2 * ne + 3 * nf);
+    child.opposite = Buffer<std::array<int, 2>>(child.ends.size);
+    child.edge_corners = Buffer<std::array<int, 2>>(child.ends.size);
+    child.faces = Buffer<int>(nv + ne);
+    child.boundary = Buffer<std::uint8_t>(child.faces.size);
+    child.incident_start = Buffer<int>(child.faces.size);
+    // An edge vertex has 6 slots (4 used on a boundary), after the old vertices' entries.
+    child.incident = Buffer<int>(t.incident.size + 6 * ne);
+    child.most_faces = std::max(t.most_faces, 6);
+}
+
+/// Block b of `blocks` of the next level (allocate_child): its triangles (loop.h's numbering)
+/// and, unless `last`, the rest of its topology. Each element is written by one block: a
+/// triangle writes its children and its interior edges, an edge its halves and its new vertex
+/// (reading its one or two triangles), an old vertex its own entries.
+void refine_topology(const StreamTopology& t, bool last, StreamTopology& child, size_t b, size_t blocks) {
+    using detail::ParallelBlocks;
+    const int nv = t.num_vertices(), ne = t.num_edges();
+    const auto [f0, f1] = ParallelBlocks::block_range(t.triangles.size(), b, blocks);
+    const auto children = [&](size_t i, Triangle* out) {
         const Triangle& v = t.triangles[i];
         const std::array<int, 3>& te = t.tri_edges[i];
         const int m0 = nv + (te[0] >> 1), m1 = nv + (te[1] >> 1), m2 = nv + (te[2] >> 1);
-        child.triangles.push_back({v[0], m0, m2});
-        child.triangles.push_back({v[1], m1, m0});
-        child.triangles.push_back({v[2], m2, m1});
-        child.triangles.push_back({m0, m1, m2});
+        out[0] = {v[0], m0, m2};
+        out[1] = {v[1], m1, m0};
+        out[2] = {v[2], m2, m1};
+        out[3] = {m0, m1, m2};
+    };
+    if (blocks == 1) {
+        Triangle four[4];
+        for (size_t i = f0; i < f1; ++i) {
+            children(i, four);
+            child.triangles.insert(child.triangles.end(), four, four + 4);
+        }
+    } else {
+        for (size_t i = f0; i < f1; ++i) children(i, &child.triangles[4 * i]);
     }
     if (last) return;
-    child.tri_edges = Buffer<std::array<int, 3>>(4 * static_cast<size_t>(nf));
-    child.ends = Buffer<std::array<int, 2>>(2 * static_cast<size_t>(ne) + 3 * static_cast<size_t>(nf));
-    child.opposite = Buffer<std::array<int, 2>>(child.ends.size);
-    for (int i = 0; i < nf; ++i) {
+    const size_t old_entries = t.incident.size;
+    // What each triangle's children own: their edges, and the three interior edges.
+    for (size_t i = f0; i < f1; ++i) {
         const Triangle& v = t.triangles[i];
         const std::array<int, 3>& te = t.tri_edges[i];
         const int E[3] = {te[0] >> 1, te[1] >> 1, te[2] >> 1}, s[3] = {te[0] & 1, te[1] & 1, te[2] & 1};
         const int m[3] = {nv + E[0], nv + E[1], nv + E[2]};
-        std::array<int, 3>* cte = &child.tri_edges[4 * static_cast<size_t>(i)];
-        const int interior = 2 * ne + 3 * i;
+        std::array<int, 3>* cte = &child.tri_edges[4 * i];
+        const int interior = 2 * ne + 3 * static_cast<int>(i), first_child = 4 * static_cast<int>(i);
         for (int k = 0; k < 3; ++k) {
             const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
             // Edge k runs v_k -> v_k1 here; its half at v_k is 2E + s (the halves keep the
             // first triangle's direction), at v_k1 2E + 1 - s. Corner child k = (v_k, m_k,
-            // m_k2): the half of edge k at v_k, the interior edge k2 backwards, the half of edge
-            // k2 at v_k. The centre child's edge k is interior edge k, which it sees first.
-            cte[k] = {((2 * E[k] + s[k]) << 1) | s[k], ((interior + k2) << 1) | 1, ((2 * E[k2] + 1 - s[k2]) << 1) | s[k2]};
+            // m_k2): the half of edge k at v_k, the interior edge k2 backwards, the half of
+            // edge k2 at v_k. The centre child's edge k is interior edge k, which it sees
+            // first.
+            cte[k] = {((2 * E[k] + s[k]) << 1) | s[k], ((interior + k2) << 1) | 1,
+                      ((2 * E[k2] + 1 - s[k2]) << 1) | s[k2]};
             cte[3][k] = (interior + k) << 1;
-            // Each half's opposite vertex in this triangle's child, in this triangle's slot.
-            child.opposite[2 * E[k] + s[k]][s[k]] = m[k2];
-            child.opposite[2 * E[k] + 1 - s[k]][s[k]] = m[k1];
-            if (s[k] == 0) {
-                // The first triangle writes the halves' ends (and, on a boundary, their
-                // missing second opposite).
-                const int a = t.ends[E[k]][0], b = t.ends[E[k]][1];
-                child.ends[2 * E[k]] = {a, m[k]};
-                child.ends[2 * E[k] + 1] = {m[k], b};
-                if (t.opposite[E[k]][1] < 0) child.opposite[2 * E[k]][1] = child.opposite[2 * E[k] + 1][1] = -1;
-            }
-            // Interior edge k = (m_k, m_k1): first in the centre child (opposite m_k2), second
-            // in corner child k1 (opposite v_k1).
+            // Interior edge k = (m_k, m_k1): first in the centre child (opposite m_k2, its
+            // corner k), second in corner child k1 (opposite v_k1, its corner 1).
             child.ends[interior + k] = {m[k], m[k1]};
             child.opposite[interior + k] = {m[k2], v[k1]};
+            child.edge_corners[interior + k] = {3 * (first_child + 3) + k, 3 * (first_child + k1) + 1};
         }
     }
-    // Old vertices keep their face count and boundary flag; a new edge vertex has 6 triangles
-    // round it inside, 3 on a boundary edge.
-    child.faces = Buffer<int>(static_cast<size_t>(nv) + ne);
-    child.boundary = Buffer<std::uint8_t>(child.faces.size);
-    std::copy(t.faces.data.get(), t.faces.data.get() + nv, child.faces.data.get());
-    std::copy(t.boundary.data.get(), t.boundary.data.get() + nv, child.boundary.data.get());
-    for (int e = 0; e < ne; ++e) {
-        const bool on_boundary = t.opposite[e][1] < 0;
-        child.faces[nv + e] = on_boundary ? 3 : 6;
-        child.boundary[nv + e] = on_boundary;
+    // What each edge owns: its two halves and its new vertex, read from its one or two
+    // triangles. Old vertices keep their face count, boundary flag and incidence list, whose
+    // edges are now the halves at them (edge E at its end s: half 2E + s, at the same end).
+    {
+        const auto [begin, end] = ParallelBlocks::block_range(static_cast<size_t>(nv), b, blocks);
+        std::copy(t.faces.data.get() + begin, t.faces.data.get() + end, child.faces.data.get() + begin);
+        std::copy(t.boundary.data.get() + begin, t.boundary.data.get() + end, child.boundary.data.get() + begin);
+        std::copy(t.incident_start.data.get() + begin, t.incident_start.data.get() + end,
+                  child.incident_start.data.get() + begin);
+    }
+    {
+        const auto [begin, end] = ParallelBlocks::block_range(old_entries, b, blocks);
+        for (size_t j = begin; j < end; ++j) {
+            const int e = t.incident[j], side = e & 1;
+            child.incident[j] = ((2 * (e >> 1) + side) << 1) | side;
+        }
+    }
+    const auto [begin, end] = ParallelBlocks::block_range(static_cast<size_t>(ne), b, blocks);
+    for (size_t e = begin; e < end; ++e) {
+        const int E = static_cast<int>(e), m = nv + E;
+        const std::array<int, 2> corners = t.edge_corners[e];
+        const bool on_boundary = corners[1] < 0;
+        child.ends[2 * e] = {t.ends[e][0], m};
+        child.ends[2 * e + 1] = {m, t.ends[e][1]};
+        // A new edge vertex has 6 triangles round it inside, 3 on a boundary edge. Its
+        // incidence list in edge order: the halves (it ends the first, starts the second),
+        // then the two interior edges of each triangle, the lower-numbered triangle's first.
+        child.faces[m] = on_boundary ? 3 : 6;
+        child.boundary[m] = on_boundary;
+        const size_t first = old_entries + 6 * e;
+        child.incident_start[m] = static_cast<int>(first);
+        child.incident[first] = ((2 * E) << 1) | 1;
+        child.incident[first + 1] = (2 * E + 1) << 1;
+        if (on_boundary) {
+            child.opposite[2 * e][1] = child.opposite[2 * e + 1][1] = -1;
+            child.edge_corners[2 * e][1] = child.edge_corners[2 * e + 1][1] = -1;
+            child.incident[first + 4] = child.incident[first + 5] = 0;  // unused, defined
+        }
+        for (int s = 0; s < (on_boundary ? 1 : 2); ++s) {
+            const int i = corners[s] / 3, k = corners[s] % 3, k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+            const std::array<int, 3>& te = t.tri_edges[i];
+            // In triangle i the edge is its edge k, the half 2E + s at v_k (in corner child
+            // k, its corner 0) and 2E + 1 - s at v_k1 (in corner child k1, its corner 2),
+            // opposite the midpoints of the triangle's other two edges.
+            child.opposite[2 * e + s][s] = nv + (te[k2] >> 1);
+            child.opposite[2 * e + 1 - s][s] = nv + (te[k1] >> 1);
+            child.edge_corners[2 * e + s][s] = 3 * (4 * i + k);
+            child.edge_corners[2 * e + 1 - s][s] = 3 * (4 * i + k1) + 2;
+            // m_k's interior edges in triangle i: k (its first end), k2 (its second).
+            const int interior = 2 * ne + 3 * i;
+            const bool lower = on_boundary || i < corners[1 - s] / 3;
+            int* slot = &child.incident[first + (lower ? 2 : 4)];
+            const int ek = (interior + k) << 1, ek2 = ((interior + k2) << 1) | 1;
+            slot[0] = k < k2 ? ek : ek2;
+            slot[1] = k < k2 ? ek2 : ek;
+        }
     }
 }
 
 void require_addressable(const StreamTopology& t) {
     const long long nf = static_cast<long long>(t.triangles.size()), nv = t.num_vertices(), ne = t.num_edges();
     // Indices are int, as loop_refine_once refuses; an edge id also takes a side bit.
-    if (4 * nf > INT_MAX || 3 * (4 * nf) > INT_MAX || nv + ne > INT_MAX || 2 * (2 * ne + 3 * nf) > INT_MAX)
+    // The next level's incidence lists: this level's entries and 6 per edge.
+    const long long entries = static_cast<long long>(t.incident.size) + 6 * ne;
+    if (4 * nf > INT_MAX || 3 * (4 * nf) > INT_MAX || nv + ne > INT_MAX || 2 * (2 * ne + 3 * nf) > INT_MAX ||
+        entries > INT_MAX)
         throw InputError("the next Loop level would have " + std::to_string(4 * nf) +
                          " faces, more than 32-bit indices address; use fewer levels");
 }
 
 }  // namespace
 
-TriMesh loop_subdivide_streaming(const TriMesh& mesh, const LoopOptions& options, int levels) {
+TriMesh loop_subdivide_streaming(const TriMesh& mesh, const LoopOptions& options, int levels, int threads) {
     if (levels < 0) throw InputError("number of levels must be >= 0, got " + std::to_string(levels));
+    detail::ParallelBlocks parallel(threads);
     TriMesh out;
     if (levels == 0) {
         out.positions = mesh.positions;
@@ -300,25 +410,27 @@ TriMesh loop_subdivide_streaming(const TriMesh& mesh, const LoopOptions& options
     }
     StreamTopology topology = input_topology(mesh);
     std::vector<Vec3> positions = mesh.positions, colors = mesh.colors;
+    const auto points = has_tuned_edges(options.weights) ? level_points<true> : level_points<false>;
     for (int l = 0; l < levels; ++l) {
         require_addressable(topology);
+        const bool last = l + 1 == levels;  // the last level: its triangles only
         const VertexMasks masks(topology, options);
         const size_t n = static_cast<size_t>(topology.num_vertices()) + topology.num_edges();
-        std::vector<Vec3> next(n);
-        const auto points = has_tuned_edges(options.weights) ? level_points<true> : level_points<false>;
-        std::vector<Vec3> boundary_sums;  // allocated at the first boundary edge
-        points(topology, options, masks, positions.data(), next.data(), boundary_sums);
-        if (may_overflow(positions, masks)) detail::require_finite_level(next, positions, l + 1);
-        if (!colors.empty()) {
-            std::vector<Vec3> next_colors(n);
-            boundary_sums.clear();
-            points(topology, options, masks, colors.data(), next_colors.data(), boundary_sums);
-            if (may_overflow(colors, masks)) detail::require_finite_level(next_colors, colors, l + 1);
-            colors = std::move(next_colors);
-        }
-        positions = std::move(next);
+        std::vector<Vec3> next(n), next_colors(colors.empty() ? 0 : n);
         StreamTopology child;
-        refine_topology(topology, l + 1 == levels, child);  // the last level: its triangles only
+        // Every pass of the level in one parallel region, each block taking its share of each
+        // (the passes read this level only and write disjoint parts of the next).
+        const size_t blocks = parallel.blocks(static_cast<size_t>(topology.num_edges()));
+        allocate_child(topology, last, blocks, child);
+        parallel.run(blocks, [&](size_t b) {
+            points(topology, options, masks, positions.data(), next.data(), b, blocks);
+            if (!colors.empty()) points(topology, options, masks, colors.data(), next_colors.data(), b, blocks);
+            refine_topology(topology, last, child, b, blocks);
+        });
+        if (may_overflow(positions, masks)) detail::require_finite_level(next, positions, l + 1);
+        if (!colors.empty() && may_overflow(colors, masks)) detail::require_finite_level(next_colors, colors, l + 1);
+        positions = std::move(next);
+        colors = std::move(next_colors);
         topology = std::move(child);
     }
     out.positions = std::move(positions);

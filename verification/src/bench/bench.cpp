@@ -96,6 +96,38 @@ BenchRecord time_in_child(const Refine& refine, int repeats, bool cold) {
 
 }  // namespace
 
+std::vector<BenchRecord> time_in_rounds(const std::vector<std::function<size_t()>>& refines, int repeats, bool cold) {
+    // The repeats in rounds, every refinement in turn within a round (each in a child of its
+    // own, warmed up once): the speed of a shared virtual machine drifts over seconds, and a
+    // drift should weigh on every refinement alike, not on whichever ran during it.
+    const int rounds = std::min(repeats, kBenchRounds);
+    std::vector<BenchRecord> recs(refines.size());
+    for (int round = 0; round < rounds; ++round)
+        for (size_t i = 0; i < refines.size(); ++i) {
+            const int runs = repeats / rounds + (round < repeats % rounds ? 1 : 0);
+            BenchRecord& r = recs[i];
+            if (r.status != "ok") continue;  // it failed: recorded once, not run again
+            const BenchRecord part = time_in_child(refines[i], runs, cold);
+            if (part.status != "ok") {
+                r = part;
+                continue;
+            }
+            r.output_faces = part.output_faces;
+            r.runs_ms.insert(r.runs_ms.end(), part.runs_ms.begin(), part.runs_ms.end());
+            r.peak_rss_mb = std::max(r.peak_rss_mb, part.peak_rss_mb);
+        }
+    for (BenchRecord& r : recs) {
+        r.memory = cold ? "cold" : "warm";
+        if (r.status == "ok" && !r.runs_ms.empty()) {
+            r.repeats = static_cast<int>(r.runs_ms.size());
+            r.min_ms = *std::min_element(r.runs_ms.begin(), r.runs_ms.end());
+            r.max_ms = *std::max_element(r.runs_ms.begin(), r.runs_ms.end());
+            r.median_ms = median(r.runs_ms);
+        }
+    }
+    return recs;
+}
+
 std::vector<BenchRecord> run_bench(const std::vector<BenchInput>& inputs, const SchemeRule& rule, int repeats, bool cold) {
     std::vector<BenchRecord> out;
     for (const BenchInput& in : inputs) {
@@ -120,31 +152,12 @@ std::vector<BenchRecord> run_bench(const std::vector<BenchInput>& inputs, const 
         std::vector<const Implementation*> impls;
         for (const Implementation* impl : implementations())
             if (impl->has(in.scheme) && (closed || applies(impl))) impls.push_back(impl);
-        // The repeats in rounds, every implementation in turn within a round (each in a child
-        // of its own, warmed up once): the speed of a shared virtual machine drifts over
-        // seconds, and a drift should weigh on every implementation alike, not on whichever
-        // ran during it.
-        const int rounds = std::min(repeats, kBenchRounds);
-        std::vector<BenchRecord> recs(impls.size());
-        for (int round = 0; round < rounds; ++round)
-            for (size_t i = 0; i < impls.size(); ++i) {
-                const int runs = repeats / rounds + (round < repeats % rounds ? 1 : 0);
-                BenchRecord& r = recs[i];
-                if (r.status != "ok") continue;  // it failed: recorded once, not run again
-                const BenchRecord part = time_in_child(
-                    [&] {
-                        return triangles ? impls[i]->refine_native(in.mesh, request)
-                                         : impls[i]->refine_polygons_native(in.polygons, request);
-                    },
-                    runs, cold);
-                if (part.status != "ok") {
-                    r = part;
-                    continue;
-                }
-                r.output_faces = part.output_faces;
-                r.runs_ms.insert(r.runs_ms.end(), part.runs_ms.begin(), part.runs_ms.end());
-                r.peak_rss_mb = std::max(r.peak_rss_mb, part.peak_rss_mb);
-            }
+        std::vector<Refine> refines;
+        for (const Implementation* impl : impls)
+            refines.push_back([&, impl] {
+                return triangles ? impl->refine_native(in.mesh, request) : impl->refine_polygons_native(in.polygons, request);
+            });
+        std::vector<BenchRecord> recs = time_in_rounds(refines, repeats, cold);
         for (size_t i = 0; i < impls.size(); ++i) {
             BenchRecord& r = recs[i];
             r.impl = impls[i]->name();
@@ -152,13 +165,6 @@ std::vector<BenchRecord> run_bench(const std::vector<BenchInput>& inputs, const 
             r.input = in.name;
             r.levels = in.levels;
             r.input_faces = triangles ? in.mesh.num_faces() : in.polygons.num_faces();
-            r.memory = cold ? "cold" : "warm";
-            if (r.status == "ok" && !r.runs_ms.empty()) {
-                r.repeats = static_cast<int>(r.runs_ms.size());
-                r.min_ms = *std::min_element(r.runs_ms.begin(), r.runs_ms.end());
-                r.max_ms = *std::max_element(r.runs_ms.begin(), r.runs_ms.end());
-                r.median_ms = median(r.runs_ms);
-            }
             out.push_back(r);
         }
     }

@@ -20,6 +20,10 @@
 ///   boundary) instead of counted;
 /// - for the last level only the quads are written.
 ///
+/// Every pass writes each element from one place (the edges of a level are numbered block by
+/// block from the counts of the blocks before), so the passes are split among `threads`
+/// threads (std::thread) with the same result on any number of them.
+///
 /// Meshes outside its reach are refined by catmull_clark_subdivide itself: crease, corner or
 /// hole tags, per-corner edges (a level of the non-manifold rules), a mesh that is not a
 /// manifold (under NonManifoldRule::OpenSubdiv), a non-finite coordinate, 0 levels. Used by the
@@ -31,8 +35,11 @@
 namespace crossdiv {
 
 /// `levels` levels of Catmull-Clark subdivision (positions and, when present, colors),
-/// bit-identical to catmull_clark_subdivide(mesh, options, levels).
-/// @throws InputError as catmull_clark_subdivide.
-PolyMesh catmull_clark_subdivide_streaming(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels);
+/// bit-identical to catmull_clark_subdivide(mesh, options, levels), on `threads` threads (a
+/// mesh it hands to catmull_clark_subdivide is refined on one). `streamed`, when given, is set
+/// to whether this driver refined the mesh itself.
+/// @throws InputError as catmull_clark_subdivide, and when `threads` < 1.
+PolyMesh catmull_clark_subdivide_streaming(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels,
+                                           int threads = 1, bool* streamed = nullptr);
 
 }  // namespace crossdiv

@@ -68,6 +68,30 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
+/// Loop or Catmull-Clark at fixed topology on every core, OpenSubdiv's way: the topology
+/// refined once into Far's float stencil table (the last level, factorized to the base
+/// vertices), then each frame's positions through Osd::OmpEvaluator::EvalStencils, OpenMP over
+/// the stencils. Float positions, three per vertex, as Osd's evaluators take them. Output in
+/// Far's order.
+class OmpStencils {
+public:
+    /// @throws Rejected as loop().
+    OmpStencils(const TriMesh& mesh, const LoopOptions& options, int levels);
+    /// @throws Rejected as catmull_clark().
+    OmpStencils(const PolyMesh& mesh, const CatmullClarkOptions& options, int levels);
+    ~OmpStencils();
+    OmpStencils(const OmpStencils&) = delete;
+    OmpStencils& operator=(const OmpStencils&) = delete;
+
+    int num_stencils() const;
+    /// The last level from `base` (x, y, z per base vertex) on `threads` OpenMP threads.
+    void evaluate(const std::vector<float>& base, std::vector<float>& out, int threads) const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
 /// The Catmull-Clark limit surface of one face of a polygon mesh, evaluated by Bfr
 /// (Bfr::RefinerSurfaceFactory, Surface<double>::Evaluate) at each (u, v). For a quad, u runs
 /// from its corner 0 to corner 1 and v from corner 0 to corner 3. Boundary rule EDGE_ONLY.

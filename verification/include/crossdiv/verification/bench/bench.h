@@ -43,6 +43,13 @@ struct BenchInput {
     PolyMesh polygons;  ///< Catmull-Clark's input
 };
 
+/// Times each refinement (a call returning its output's face count): `repeats` runs each,
+/// spread over kBenchRounds rounds with every refinement in turn (a child process per
+/// refinement and round, warmed up by one call), median reported; one that fails is recorded
+/// with its status. Unless `cold`, the child keeps freed memory (WarmAllocator). Only the
+/// records' timings, sizes, memory and status are filled in.
+std::vector<BenchRecord> time_in_rounds(const std::vector<std::function<size_t()>>& refines, int repeats, bool cold);
+
 /// Times every implementation on every input: `repeats` runs each, spread over kBenchRounds
 /// rounds with every implementation in turn (a child per implementation and round, warmed up
 /// by one run), median reported. A reference that fails is recorded with its status. Unless `cold`, the
