@@ -14,6 +14,7 @@
 #include "crossdiv/error.h"
 #include "crossdiv/mesh/poly_connectivity.h"
 #include "crossdiv/subdiv/catmull_clark.h"
+#include "huge_pages.h"
 #include "parallel_blocks.h"
 #include "stream_twins.h"
 
@@ -339,10 +340,12 @@ inline void count_edges(const Level& child, std::vector<int>& edges, size_t b, s
     edges[b + 1] = n;
 }
 
-/// Block b's edges numbered from edges[b] (the first corners before it); the walks' starts and
-/// face counts of block b of the old vertices, face points and edge points.
+/// Block b's edges numbered from edges[b] (the first corners before it), into edges[b + 1]
+/// when there is one block (which then numbers the second corners too: their twins are before
+/// them); the walks' starts and face counts of block b of the old vertices, face points and
+/// edge points.
 template <class Faces>
-void number_edges(const Level& l, const Faces& F, Level& child, const std::vector<int>& edges, size_t b, size_t blocks) {
+void number_edges(const Level& l, const Faces& F, Level& child, std::vector<int>& edges, size_t b, size_t blocks) {
     using detail::ParallelBlocks;
     {
         const auto [begin, end] = ParallelBlocks::block_range(child.twin.size(), b, blocks);
@@ -351,7 +354,10 @@ void number_edges(const Level& l, const Faces& F, Level& child, const std::vecto
             if (first_corner(child, c)) {
                 child.corner_edge[c] = e;
                 child.edge_corner[e++] = c;
+            } else if (blocks == 1) {
+                child.corner_edge[c] = child.corner_edge[child.twin[c]];
             }
+        if (blocks == 1) edges[1] = e;
     }
     // The walks' starts in closed form. An old vertex's corners are 4c for its corners c, and
     // the incoming half-edge of 4c is on the boundary exactly when that of c is: 4 start(v).
@@ -427,17 +433,20 @@ void refine_level(const Level& l, const Faces& F, const CatmullClarkOptions& o, 
     const std::vector<CatmullClarkVertexMask> masks = interior_masks(l);
     const int nc = l.num_corners();
     const size_t n = static_cast<size_t>(l.nv) + l.nf + l.num_edges();
-    std::vector<Vec3> next(n), next_colors(colors.empty() ? 0 : n);
+    std::vector<Vec3> next, next_colors;
+    detail::resize_on_huge_pages(next, n);
+    if (!colors.empty()) detail::resize_on_huge_pages(next_colors, n);
     child.nv = l.nv + l.nf + l.num_edges();
     child.nf = nc;
-    child.corner_vertex.resize(4 * static_cast<size_t>(nc));
+    using detail::resize_on_huge_pages;
+    resize_on_huge_pages(child.corner_vertex, 4 * static_cast<size_t>(nc));
     if (!last) {
-        child.twin.resize(4 * static_cast<size_t>(nc));
-        child.corner_edge.resize(4 * static_cast<size_t>(nc));
+        resize_on_huge_pages(child.twin, 4 * static_cast<size_t>(nc));
+        resize_on_huge_pages(child.corner_edge, 4 * static_cast<size_t>(nc));
         // Two halves of every edge and one edge per corner inside each face.
-        child.edge_corner.resize(2 * static_cast<size_t>(l.num_edges()) + static_cast<size_t>(nc));
-        child.start.resize(static_cast<size_t>(child.nv));
-        child.faces.resize(static_cast<size_t>(child.nv));
+        resize_on_huge_pages(child.edge_corner, 2 * static_cast<size_t>(l.num_edges()) + static_cast<size_t>(nc));
+        resize_on_huge_pages(child.start, static_cast<size_t>(child.nv));
+        resize_on_huge_pages(child.faces, static_cast<size_t>(child.nv));
     }
     const size_t blocks = parallel.blocks(static_cast<size_t>(nc));
     std::vector<int> edges(blocks + 1, 0);  // first corners before each block
@@ -454,17 +463,18 @@ void refine_level(const Level& l, const Faces& F, const CatmullClarkOptions& o, 
             edge_points(l, F, o, colors.data(), next_colors.data(), b, blocks);
             vertex_points(l, F, o, masks, colors.data(), next_colors.data(), rings[b], b, blocks);
         }
-        if (!last) count_edges(child, edges, b, blocks);
+        if (!last && blocks > 1) count_edges(child, edges, b, blocks);
     });
     positions = std::move(next);
     colors = std::move(next_colors);
     if (last) return;
-    for (size_t b = 1; b <= blocks; ++b) edges[b] += edges[b - 1];
+    // One block numbers every corner in one pass; several count their first corners first.
+    for (size_t b = 1; b <= blocks && blocks > 1; ++b) edges[b] += edges[b - 1];
+    parallel.run(blocks, [&](size_t b) { number_edges(l, F, child, edges, b, blocks); });
     if (edges.back() != static_cast<int>(child.edge_corner.size()))
         throw std::logic_error("a refined Catmull-Clark level has " + std::to_string(edges.back()) + " edges, not " +
                                std::to_string(child.edge_corner.size()));
-    parallel.run(blocks, [&](size_t b) { number_edges(l, F, child, edges, b, blocks); });
-    parallel.run(blocks, [&](size_t b) { second_corners(child, b, blocks); });
+    if (blocks > 1) parallel.run(blocks, [&](size_t b) { second_corners(child, b, blocks); });
 }
 
 }  // namespace
