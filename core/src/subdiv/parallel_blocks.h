@@ -35,8 +35,6 @@ public:
     ParallelBlocks(const ParallelBlocks&) = delete;
     ParallelBlocks& operator=(const ParallelBlocks&) = delete;
 
-    int threads() const { return threads_; }
-
     /// How many blocks a pass over n elements is cut into: one per thread, and one when n is
     /// below kMinParallel (waking the workers would cost more than the pass).
     size_t blocks(size_t n) const { return workers_.empty() || n < kMinParallel ? 1 : static_cast<size_t>(threads_); }
@@ -59,27 +57,6 @@ public:
         job_ = nullptr;
         for (std::exception_ptr& e : errors_)
             if (e) std::rethrow_exception(std::exchange(e, nullptr));
-    }
-
-    /// f(begin, end) over blocks covering [0, n): one pass.
-    template <class F>
-    void operator()(size_t n, F&& f) {
-        const size_t b = blocks(n);
-        run(b, [&](size_t k) {
-            const auto [begin, end] = block_range(n, k, b);
-            f(begin, end);
-        });
-    }
-
-    /// f(block, begin, end) for each of blocks(n) blocks of [0, n): for a pass whose blocks
-    /// each need the counts of the blocks before them (a prefix sum in two passes).
-    template <class F>
-    void for_blocks(size_t n, F&& f) {
-        const size_t b = blocks(n);
-        run(b, [&](size_t k) {
-            const auto [begin, end] = block_range(n, k, b);
-            f(k, begin, end);
-        });
     }
 
     /// Block b of `blocks` equal blocks of [0, n).

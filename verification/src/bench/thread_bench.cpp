@@ -6,6 +6,7 @@
 
 #include "crossdiv/subdiv/catmull_clark_streaming.h"
 #include "crossdiv/subdiv/loop_streaming.h"
+#include "crossdiv/verification/harness/json_text.h"
 #ifdef CROSSDIV_HAS_OPENSUBDIV
 #include "crossdiv/adapters/opensubdiv.h"
 #endif
@@ -77,18 +78,17 @@ std::vector<BenchInput> catmull_clark_thread_inputs(bool quick) {
 }
 
 nlohmann::json to_json(const ThreadRow& r) {
-    const auto number = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
     return {{"scheme", r.scheme},
             {"input", r.input},
             {"levels", r.levels},
             {"output_faces", r.output_faces},
             {"threads", r.threads},
-            {"core_one_thread_ms", number(r.core_one_ms)},
-            {"core_threads_ms", number(r.core_many_ms)},
-            {"omp_one_thread_ms", number(r.omp_one_ms)},
-            {"omp_threads_ms", number(r.omp_many_ms)},
-            {"speedup", number(r.speedup())},
-            {"omp_over_core", number(r.over_omp())},
+            {"core_one_thread_ms", finite_or_null(r.core_one_ms)},
+            {"core_threads_ms", finite_or_null(r.core_many_ms)},
+            {"omp_one_thread_ms", finite_or_null(r.omp_one_ms)},
+            {"omp_threads_ms", finite_or_null(r.omp_many_ms)},
+            {"speedup", finite_or_null(r.speedup())},
+            {"omp_over_core", finite_or_null(r.over_omp())},
             {"status", r.status}};
 }
 
