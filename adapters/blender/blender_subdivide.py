@@ -3,6 +3,8 @@
     blender --background --factory-startup --python blender_subdivide.py -- \\
         SCHEME LEVELS BOUNDARY UV IN.obj OUT.ply
     blender --background --factory-startup --python blender_subdivide.py -- --check
+    blender --background --factory-startup --python blender_subdivide.py -- --serve
+        (each run's SCHEME LEVELS BOUNDARY UV IN.obj OUT.ply as a request, adapters/common/serve.py)
 
 Blender 3.4 (Debian `blender`) refines through its own build of OpenSubdiv; this script, run by
 Blender's Python, builds the mesh from IN.obj (every vertex kept, in order: `from_pydata`, not
@@ -21,6 +23,9 @@ The modifier's options, as crossdiv's rules name them:
   use_limit_surface False (the refined level's own points, not their limit), use_creases True
   (OBJ `t crease` tags become edge crease weights: sharpness s as s / 10, Blender's scale),
   use_custom_normals False, show_only_control_edges irrelevant here.
+
+With --serve, Blender starts once (about 1.5 s) and every run of a suite worker is a request to
+it; each run starts from an empty file (every object and mesh of the run before removed).
 
 Exit status: 0 with OUT written; 2 for a bad command line or an unreadable input; 3 when run
 outside Blender (--check, run by plain python3, exits 1 when `blender` is not on PATH); 4 when
@@ -89,8 +94,11 @@ def write_ply(path, vertices, faces):
 def subdivide(scheme, levels, boundary, uv, mesh_in, mesh_out):
     import bpy
     vertices, faces, creases = read_obj(mesh_in)
+    # Nothing of another run stays (a served Blender refines one mesh after another).
     for obj in list(bpy.data.objects):
         bpy.data.objects.remove(obj, do_unlink=True)
+    for old in list(bpy.data.meshes):
+        bpy.data.meshes.remove(old)
     mesh = bpy.data.meshes.new("input")
     mesh.from_pydata(vertices, [], faces)
     if mesh.validate(verbose=False):
@@ -141,6 +149,16 @@ def main(argv):
         print("run this script with: blender --background --factory-startup --python blender_subdivide.py -- ...",
               file=sys.stderr)
         return 3
+    if args == ["--serve"]:
+        import os
+        sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+        from serve import serve
+        return serve(run)
+    return run(args)
+
+
+def run(args):
+    """One run: SCHEME LEVELS BOUNDARY UV IN.obj OUT.ply; its exit status."""
     if len(args) != 6:
         print(__doc__.strip().splitlines()[2].strip(), file=sys.stderr)
         return 2

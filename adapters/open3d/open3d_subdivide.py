@@ -3,6 +3,7 @@
 
     open3d_subdivide.py SCHEME LEVELS IN.off OUT.ply
     open3d_subdivide.py --check
+    open3d_subdivide.py --serve     (each run's SCHEME LEVELS IN.off OUT.ply as a request, adapters/common/serve.py)
 
 Open3D 0.16 (Debian `python3-open3d`) subdivides through its Python module:
   loop   TriangleMesh.subdivide_loop(number_of_iterations=LEVELS): Loop's weights (beta of
@@ -15,6 +16,9 @@ The mesh goes in and out without Open3D's file readers, which may drop or merge 
 OFF file the harness writes is parsed here into numpy arrays (every vertex kept, in order), and
 the result is written as binary little-endian PLY with double coordinates, so every bit
 Open3D computes reads back.
+
+With --serve, Open3D is imported once (about a second) and every run of a suite worker is a
+request to this one process (the harness's `serve=` key).
 
 Exit status: 0 with OUT written; 2 for a bad command line or input file; 3 when Open3D cannot
 be imported (--check prints why and exits 1: the manifest's setup command, so that a machine
@@ -93,4 +97,9 @@ def main(argv):
 
 
 if __name__ == "__main__":
+    if sys.argv[1:] == ["--serve"]:
+        import os
+        sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+        from serve import serve
+        sys.exit(serve(lambda args: main([sys.argv[0]] + args)))
     sys.exit(main(sys.argv))

@@ -47,7 +47,8 @@ def suite_time_section(results):
     s = Section("Where the suite's time goes")
     s.add(Text(f"Seconds summed over the jobs ({len(cases)} jobs, {fmt(total, '.1f')} s in all; wall time "
                f"{fmt(wall, '.1f')} s with {workers} worker(s)): core's own work, the references' runs (each run's "
-               f"own time: a program's includes its start) and the rest of each job -- reading the input, forking "
+               f"own time: a program's includes its start, or for a program that serves, the start of its server in its "
+               f"first run of each worker) and the rest of each job -- reading the input, forking "
                f"and isolating each run, correspondence, classification, views -- {fmt(other, '.1f')} s "
                f"({share(other)}). Per run: the rest divided by the job's runs, core's included."),
           Table(["operation", "jobs", "reference runs", "job s", "share", "core s", "references s", "rest s",

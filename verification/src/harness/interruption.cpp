@@ -35,9 +35,11 @@ struct Registry {
 std::atomic<bool> stopping{false};
 
 /// The registry of this process. A forked worker starts it afresh (stop_cleanly_on_signals):
-/// the copy it inherits lists its parent's children, and its mutex may be in any state.
+/// the copy it inherits lists its parent's children, and its mutex may be in any state. Never
+/// destroyed: objects that outlive main (a registered reference's program server, stopped by
+/// the registry of implementations as the process exits) still register and unregister here.
 Registry& registry() {
-    static Registry r;
+    static Registry& r = *new Registry;
     return r;
 }
 

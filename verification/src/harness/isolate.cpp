@@ -226,17 +226,10 @@ RunOutcome run_in_child(const std::function<void(FILE*)>& work, const std::funct
     const RegisteredChild registration(pid, ChildRole::Isolated);
     int status = 0;
     bool timed_out = false;
-    for (auto pause = std::chrono::microseconds(200);;) {
-        const pid_t done = waitpid(pid, &status, WNOHANG);
-        if (done == pid) break;
-        if (std::chrono::duration<double>(Clock::now() - t0).count() > timeout_seconds) {
-            kill(pid, SIGKILL);
-            waitpid(pid, &status, 0);
-            timed_out = true;
-            break;
-        }
-        std::this_thread::sleep_for(pause);
-        pause = std::min(pause * 2, std::chrono::microseconds(20000));
+    if (!wait_for_child(pid, status, timeout_seconds - std::chrono::duration<double>(Clock::now() - t0).count())) {
+        kill(pid, SIGKILL);
+        while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
+        timed_out = true;
     }
     RunOutcome o;
     o.seconds = std::chrono::duration<double>(Clock::now() - t0).count();

@@ -1,8 +1,10 @@
 #include "crossdiv/verification/harness/process.h"
 
 #include <fcntl.h>
+#include <poll.h>
 #include <signal.h>
 #include <spawn.h>
+#include <sys/syscall.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -20,6 +22,7 @@
 #include "crossdiv/error.h"
 #include "crossdiv/verification/harness/interruption.h"
 #include "sanitizer.h"
+#include "spawn_setup.h"
 
 extern char** environ;
 
@@ -33,32 +36,37 @@ std::vector<char*> c_argv(const std::vector<std::string>& argv) {
     return args;
 }
 
-/// posix_spawn's file actions and attributes, released on every path. A program starts with
-/// no signal blocked and SIGINT, SIGTERM, SIGHUP at their defaults, whatever this process does
-/// with them (stop_cleanly_on_signals blocks them here).
-struct SpawnSetup {
-    posix_spawn_file_actions_t actions;
-    posix_spawnattr_t attributes;
-    SpawnSetup() {
-        posix_spawn_file_actions_init(&actions);
-        posix_spawnattr_init(&attributes);
-        sigset_t none, defaults;
-        sigemptyset(&none);
-        sigemptyset(&defaults);
-        for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGPIPE}) sigaddset(&defaults, sig);
-        posix_spawnattr_setsigmask(&attributes, &none);
-        posix_spawnattr_setsigdefault(&attributes, &defaults);
-        posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
-    }
-    ~SpawnSetup() {
-        posix_spawn_file_actions_destroy(&actions);
-        posix_spawnattr_destroy(&attributes);
-    }
-    SpawnSetup(const SpawnSetup&) = delete;
-    SpawnSetup& operator=(const SpawnSetup&) = delete;
-};
 
 }  // namespace
+
+bool wait_for_child(pid_t pid, int& status, double seconds) {
+    using Clock = std::chrono::steady_clock;
+    const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+    // The system call itself: glibc 2.36's <sys/pidfd.h> declares pidfd_open without C linkage.
+    const int fd = static_cast<int>(syscall(SYS_pidfd_open, pid, 0));
+    for (auto pause = std::chrono::microseconds(200);;) {
+        const pid_t done = waitpid(pid, &status, WNOHANG);
+        if (done == pid) break;
+        if (done < 0 && errno != EINTR) break;  // not our child (any more): nothing to wait for
+        const auto now = Clock::now();
+        if (now >= deadline) {
+            if (fd >= 0) close(fd);
+            return false;
+        }
+        if (fd >= 0) {
+            // Readable when the child ends; a signal or the deadline ends the poll too.
+            const long long ms = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now).count() + 1;
+            pollfd p{fd, POLLIN, 0};
+            poll(&p, 1, static_cast<int>(std::min<long long>(ms, 1 << 30)));
+        } else {
+            // No pidfd (a kernel before 5.3): short sleeps, growing.
+            std::this_thread::sleep_for(std::min<Clock::duration>(pause, deadline - Clock::now()));
+            pause = std::min(pause * 2, std::chrono::microseconds(20000));
+        }
+    }
+    if (fd >= 0) close(fd);
+    return true;
+}
 
 int run_process(const std::vector<std::string>& argv) {
     if (argv.empty()) throw InputError("run_process: no program given");
@@ -89,10 +97,7 @@ ProcessResult run_confined(const std::vector<std::string>& argv, const ProcessLi
     posix_spawn_file_actions_addopen(&setup.actions, STDERR_FILENO, err, O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (!limits.working_dir.empty()) posix_spawn_file_actions_addchdir_np(&setup.actions, limits.working_dir.c_str());
     // Its own process group: a time-out kills the interpreter and whatever it started.
-    short flags = 0;
-    posix_spawnattr_getflags(&setup.attributes, &flags);
-    posix_spawnattr_setflags(&setup.attributes, flags | POSIX_SPAWN_SETPGROUP);
-    posix_spawnattr_setpgroup(&setup.attributes, 0);
+    setup.own_process_group();
 
     std::vector<char*> args = c_argv(argv);
     std::fflush(nullptr);
@@ -113,18 +118,10 @@ ProcessResult run_confined(const std::vector<std::string>& argv, const ProcessLi
     prlimit(pid, RLIMIT_DATA, &memory, nullptr);
 #endif
     int status = 0;
-    for (auto pause = std::chrono::microseconds(200);;) {
-        const pid_t done = waitpid(pid, &status, WNOHANG);
-        if (done == pid) break;
-        if (done < 0 && errno != EINTR) break;
-        if (elapsed() > limits.timeout_seconds) {
-            kill(-pid, SIGKILL);
-            while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
-            r.timed_out = true;
-            break;
-        }
-        std::this_thread::sleep_for(pause);
-        pause = std::min(pause * 2, std::chrono::microseconds(20000));
+    if (!wait_for_child(pid, status, limits.timeout_seconds - elapsed())) {
+        kill(-pid, SIGKILL);
+        while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
+        r.timed_out = true;
     }
     // Whatever it left running in its group goes with it, and whatever left the group
     // (setsid) and was re-parented here when its parent ended.

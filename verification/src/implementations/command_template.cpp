@@ -161,4 +161,17 @@ std::vector<std::string> CommandTemplate::expand(const TemplateValues& v) const 
     return argv;
 }
 
+size_t CommandTemplate::shared_words(const CommandTemplate& other) const {
+    size_t n = 0;
+    while (n < words_.size() && n < other.words_.size() && words_[n] == other.words_[n]) ++n;
+    return n;
+}
+
+bool CommandTemplate::names_run_values() const {
+    for (const auto& w : words_)
+        for (const Piece& p : w)
+            if (p.placeholder && p.text != "adapters" && p.text != "dir") return true;
+    return false;
+}
+
 }  // namespace crossdiv::verification

@@ -7,11 +7,13 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 
 #include "crossdiv/error.h"
 #include "crossdiv/io/mesh_io.h"
 #include "crossdiv/verification/harness/mesh_topology.h"
 #include "crossdiv/verification/harness/process.h"
+#include "crossdiv/verification/harness/program_server.h"
 #include "crossdiv/verification/harness/temporary_folder.h"
 #include "crossdiv/verification/implementations/registry.h"
 
@@ -112,12 +114,20 @@ std::string run_setup(const ProgramSpec& spec) {
 class Program final : public Implementation {
 public:
     Program(const ProgramSpec& spec, CommandTemplate command)
-        : Implementation(spec.name, "command: " + spec.command, ImplementationKind::Program,
+        : Implementation(spec.name, "command: " + spec.command + (spec.serve.empty() ? "" : "; served by: " + spec.serve),
+                         ImplementationKind::Program,
                          program_capabilities(spec, command.text().find("{weights}") != std::string::npos,
                                               command.text().find("{boundary}") != std::string::npos, command.reads_tags())),
           spec_(spec),
           command_(std::move(command)),
-          unavailable_(run_setup(spec)) {}
+          unavailable_(run_setup(spec)) {
+        if (!spec.serve.empty()) {
+            CommandTemplate serve(spec.serve, false);
+            serve.anchor_relative_paths(spec.base_dir);
+            request_from_ = serve.shared_words(command_);
+            server_ = std::make_unique<ProgramServer>(serve.expand({"", "", "", "", {}, "", spec.dir, ""}), file_label(spec.name));
+        }
+    }
 
     bool confines_itself() const override { return true; }
 
@@ -160,10 +170,7 @@ private:
         if (command_.reads_untagged_obj()) write_mesh(values.in_untagged, untagged);
         if (command_.reads(MeshFormat::Off)) write_mesh(values.in_off, untagged);
         if (command_.reads(MeshFormat::Ply)) write_mesh(values.in_ply, untagged);
-        const std::string stderr_path = (folder.path() / "stderr.txt").string();
-        const ProcessResult r = run_confined(command_.expand(values), {folder.path().string(), spec_.timeout_seconds,
-                                                                       (folder.path() / "stdout.txt").string(), stderr_path});
-        const std::string err = tail_of_file(stderr_path);
+        const auto [r, err] = run_program(command_.expand(values), folder);
         const std::string with_err = err.empty() ? "" : "; stderr: " + err;
         const std::string level = " (level " + std::to_string(request.levels) + ")";
         const std::string out_name = fs::path(values.out).filename().string();
@@ -187,6 +194,23 @@ private:
         }
     }
 
+    /// One run of `argv`: started in `folder`, or handed to the server. How it ended, and what
+    /// it said on stderr.
+    std::pair<ProcessResult, std::string> run_program(const std::vector<std::string>& argv, const TemporaryFolder& folder) const {
+        if (server_) {
+            const std::lock_guard<std::mutex> one_run_at_a_time(server_mutex_);
+            const std::vector<std::string> args(argv.begin() + static_cast<std::ptrdiff_t>(request_from_), argv.end());
+            ServedRun served = server_->run(args, spec_.timeout_seconds);
+            if (served.out_of_turn)
+                throw ImplementationFailure(RunStatus::Crashed, "the serving program broke its protocol: " + served.stderr_text);
+            return {served.process, served.stderr_text};
+        }
+        const std::string stderr_path = (folder.path() / "stderr.txt").string();
+        const ProcessResult r = run_confined(argv, {folder.path().string(), spec_.timeout_seconds,
+                                                    (folder.path() / "stdout.txt").string(), stderr_path});
+        return {r, tail_of_file(stderr_path)};
+    }
+
     static std::string fmt_seconds(double s) {
         std::string t = std::to_string(s);
         t.erase(t.find_last_not_of('0') + 1);
@@ -197,6 +221,10 @@ private:
     ProgramSpec spec_;
     CommandTemplate command_;
     std::string unavailable_;  ///< why the setup says the program is not here ("" when it is)
+    /// The running server (ProgramSpec::serve), or null when the program starts for each run;
+    std::unique_ptr<ProgramServer> server_;
+    mutable std::mutex server_mutex_;  ///< a server takes one run at a time
+    size_t request_from_ = 0;  ///< the command's words before this one start the server, not a run
 };
 
 class ResultFile final : public Implementation {
@@ -204,7 +232,7 @@ public:
     ResultFile(const std::string& name, std::string path, Scheme scheme)
         : Implementation(name, "result file: " + path, ImplementationKind::Program,
                          // The file was made from the input, tags and all, by whatever made it.
-                         program_capabilities({name, "", {scheme}, LevelMode::Final, Precision::Double, 0, {}, {}, "", "", "", {}},
+                         program_capabilities({name, "", {scheme}, LevelMode::Final, Precision::Double, 0, {}, {}, "", "", "", "", {}},
                                               true, true, true)),
           path_(std::move(path)) {}
 
@@ -347,6 +375,15 @@ void check_program_spec(const ProgramSpec& spec) {
     check_rule_names(spec);
     CommandTemplate command(spec.command);
     if (!spec.setup.empty()) CommandTemplate setup(spec.setup, false);
+    if (!spec.serve.empty()) {
+        const CommandTemplate serve(spec.serve, false);
+        if (serve.names_run_values())
+            throw InputError("program '" + spec.name + "': its serve command '" + spec.serve +
+                             "' names a value of one run; it starts the program once for every run, with {adapters} and {dir} at most");
+        if (serve.shared_words(command) == 0)
+            throw InputError("program '" + spec.name + "': its serve command '" + spec.serve + "' and its command '" + spec.command +
+                             "' start different programs; the serve command begins with the command's first words");
+    }
     if (spec.dir.empty() && (spec.command.find("{dir}") != std::string::npos || spec.setup.find("{dir}") != std::string::npos))
         throw InputError("program '" + spec.name + "': {dir} is a roster's submission folder; it has a meaning in a "
                          "manifest's `subjects NAME dir=...` statement only");

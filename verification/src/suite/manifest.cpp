@@ -396,6 +396,7 @@ ProgramSpec program_spec(const std::string& name, const std::vector<std::string>
         const std::string key = kv.substr(0, eq), value = kv.substr(eq + 1);
         if (key == "command") spec.command = value;
         else if (key == "setup") spec.setup = value;
+        else if (key == "serve") spec.serve = value;
         else if (key == "schemes")
             for (const std::string& s : split(value, ',')) spec.schemes.push_back(scheme_from_string(s));
         else if (key == "precision") {
@@ -425,7 +426,7 @@ ProgramSpec program_spec(const std::string& name, const std::vector<std::string>
             if (used != value.size() || !(t > 0) || !std::isfinite(t)) throw InputError("timeout must be a positive number of seconds");
             spec.timeout_seconds = t;
         } else
-            throw InputError("unknown key '" + key + "' (known: command, schemes, precision, weights, boundary, levels, timeout, setup, rejects)");
+            throw InputError("unknown key '" + key + "' (known: command, serve, schemes, precision, weights, boundary, levels, timeout, setup, rejects)");
     }
     if (spec.command.empty()) throw InputError("program '" + name + "' has no command='...'");
     return spec;

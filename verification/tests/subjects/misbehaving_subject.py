@@ -2,6 +2,7 @@
 """A subject that fails in one named way, for the tests of the harness's program runs:
 
     misbehaving_subject.py MODE IN.obj LEVELS OUT.obj [SCHEME]
+    misbehaving_subject.py --serve      (each run's MODE IN.obj LEVELS OUT.obj [SCHEME] as a request)
 
 SCHEME (loop when not given) is any scheme of examples/subjects/python-schemes; the modes that
 write a mesh start from that scheme's course-style example.
@@ -69,17 +70,17 @@ def escape(pidfile):
         time.sleep(0.01)
 
 
-def main():
-    mode, src, levels, out = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4]
+def main(argv):
+    mode, src, levels, out = argv[1], argv[2], int(argv[3]), argv[4]
     if mode == "crash":
         os.kill(os.getpid(), signal.SIGSEGV)
     if mode == "hang":
         time.sleep(3600)
     if mode == "hang-pid":
-        write_pid(sys.argv[6], os.getpid())
+        write_pid(argv[6], os.getpid())
         time.sleep(3600)
     if mode == "escape":
-        escape(sys.argv[6])
+        escape(argv[6])
     if mode == "hog":
         hog = bytearray(8 << 30)  # noqa: F841 (held until the result is written)
     if mode == "exit":
@@ -87,7 +88,7 @@ def main():
         sys.exit(3)
     if mode == "nothing":
         return
-    scheme = sys.argv[5] if len(sys.argv) > 5 else "loop"
+    scheme = argv[5] if len(argv) > 5 else "loop"
     if mode == "midpoint":
         butterfly = importlib.import_module("butterfly")
         butterfly.four_point = midpoint = lambda t, vs, a, b: loop.scale(loop.add(vs[a], vs[b]), 0.5)  # boundary edges too
@@ -168,4 +169,10 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    if sys.argv[1:] == ["--serve"]:
+        # The same modes, each run a request to this one process (adapters/common/serve.py): a
+        # crash or a hang ends the server with the run.
+        sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "adapters", "common"))
+        from serve import serve
+        sys.exit(serve(lambda args: main([sys.argv[0]] + args)))
+    main(sys.argv)

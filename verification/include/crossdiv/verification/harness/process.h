@@ -3,6 +3,8 @@
 /// Running an external program from an argument vector, never through a shell: no quoting,
 /// no word splitting, no injection through a file name.
 
+#include <sys/types.h>
+
 #include <string>
 #include <vector>
 
@@ -36,6 +38,12 @@ struct ProcessResult {
 /// it started too), in `limits.working_dir`, with its output in files, and kills the group at
 /// the time limit. Never throws for what the program does.
 ProcessResult run_confined(const std::vector<std::string>& argv, const ProcessLimits& limits);
+
+/// Waits for the child `pid` to end, at most `seconds`: true with its wait status in `status`
+/// when it ended (reaped), false when the time ran out (still running, not reaped). It wakes
+/// when the child ends (a pidfd polled), not at the next tick of a sleep: a run of 10 ms is
+/// not charged 13 or 20.
+bool wait_for_child(pid_t pid, int& status, double seconds);
 
 /// Memory a program under test may take (RLIMIT_DATA: its heap and private writable mappings,
 /// not the address space an interpreter or a JIT reserves without using): a program that

@@ -74,12 +74,20 @@ public:
     void anchor_relative_paths(const std::string& base = "");
     /// The argument vector for one run.
     std::vector<std::string> expand(const TemplateValues& values) const;
+    /// How many leading words this template and `other` have in common, placeholders and all:
+    /// the words that start a serving program (ProgramSpec::serve) and its one-run command
+    /// alike, after which the command's words are one run's arguments.
+    size_t shared_words(const CommandTemplate& other) const;
+    /// Whether a word names a value of one run ({in}, {out}, {levels}, {scheme}, ...): anything
+    /// but {adapters} and {dir}, which are the same for every run.
+    bool names_run_values() const;
 
 private:
     /// A word is a sequence of literal text and placeholders.
     struct Piece {
         bool placeholder = false;
         std::string text;  ///< literal text, or the placeholder's name
+        friend bool operator==(const Piece&, const Piece&) = default;
     };
     std::string text_;
     std::vector<std::vector<Piece>> words_;

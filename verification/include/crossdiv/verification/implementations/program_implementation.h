@@ -6,7 +6,8 @@
 /// the libraries, so every comparison, classification and report works on them unchanged.
 ///
 /// A program runs in its own temporary folder, in its own process group, with a time limit and
-/// its stderr kept; the folder is removed afterwards. Every way it can fail is a RunStatus
+/// its stderr kept; the folder is removed afterwards. A program that can serve (ProgramSpec::serve)
+/// is started once per process of the harness and handed each run, under the same limits. Every way it can fail is a RunStatus
 /// (thrown as ImplementationFailure and recorded by refine_isolated): nonzero exit, signal,
 /// time-out, no output file, unreadable output (file:line of the first bad line), NaN or
 /// infinity, a vertex or face count other than the scheme makes, faces that are not triangles
@@ -61,6 +62,12 @@ struct ProgramSpec {
     std::string base_dir;
     /// The submission folder {dir} stands for (a roster's subject; absolute), empty otherwise.
     std::string dir;
+    /// A command that starts the program as a server (program_server.h), kept running for every
+    /// run of this process instead of one start per run. It begins with the same words as
+    /// `command` (the program, say `python3 x.py`); the command's words after those are sent
+    /// as each run's arguments, and the server answers as `command` would have ended. Only
+    /// {adapters} and {dir} may appear in it. Empty: the program is started for every run.
+    std::string serve;
     /// Exit statuses by which a reference says it has no rule for the input (its reason on
     /// stderr): such a run is rejected, the reason kept, not a failure of the program. Empty:
     /// every nonzero status is a failure. References only: a subject's refusal is a failure.
