@@ -156,14 +156,14 @@ std::string stderr_summary(std::string s, size_t max_chars) {
     return s;
 }
 
-std::string head_and_tail(int fd, size_t bytes) {
+std::string head_and_tail(int fd, size_t bytes, off_t from) {
     struct stat st {};
-    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) return "";
-    const size_t size = static_cast<size_t>(st.st_size);
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || st.st_size <= from) return "";
+    const size_t size = static_cast<size_t>(st.st_size - from);
     auto read_at = [&](size_t offset, size_t n) {
         std::string s(n, '\0');
         size_t got = 0;
-        for (ssize_t k; got < n && (k = pread(fd, s.data() + got, n - got, static_cast<off_t>(offset + got))) > 0;)
+        for (ssize_t k; got < n && (k = pread(fd, s.data() + got, n - got, from + static_cast<off_t>(offset + got))) > 0;)
             got += static_cast<size_t>(k);
         s.resize(got);
         return s;

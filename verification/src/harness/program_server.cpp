@@ -75,23 +75,7 @@ off_t file_size(int fd) {
 }
 
 /// What the server wrote on stderr from `offset` on, as stderr_summary puts it.
-std::string stderr_since(int fd, off_t offset) {
-    const off_t end = file_size(fd);
-    if (end <= offset) return "";
-    constexpr size_t kHead = 64 * 1024;  // as head_and_tail: the first and the last 64 KB
-    auto read_at = [&](off_t at, size_t n) {
-        std::string s(n, '\0');
-        size_t got = 0;
-        for (ssize_t k; got < n && (k = pread(fd, s.data() + got, n - got, at + static_cast<off_t>(got))) > 0;)
-            got += static_cast<size_t>(k);
-        s.resize(got);
-        return s;
-    };
-    const size_t size = static_cast<size_t>(end - offset);
-    std::string text = size <= 2 * kHead ? read_at(offset, size)
-                                         : read_at(offset, kHead) + "\n...\n" + read_at(end - static_cast<off_t>(kHead), kHead);
-    return stderr_summary(std::move(text));
-}
+std::string stderr_since(int fd, off_t offset) { return stderr_summary(head_and_tail(fd, 64 * 1024, offset)); }
 
 }  // namespace
 

@@ -54,7 +54,8 @@ inline constexpr long long kProgramMemoryBytes = 6LL << 30;
 /// The first and the last `bytes` of a regular file (all of it when it is shorter than twice
 /// that), joined by "\n...\n": what a program wrote on stderr, read without holding gigabytes of
 /// it. "" for a file that is not regular.
-std::string head_and_tail(int fd, size_t bytes = 64 * 1024);
+/// `from`: where in the file to start (what a long-running program wrote since a mark).
+std::string head_and_tail(int fd, size_t bytes = 64 * 1024, off_t from = 0);
 
 /// What a process said on stderr, on one line: the last `max_chars` characters, preceded by
 /// the first line of a sanitizer report when there is one before them (ASan's legend fills
