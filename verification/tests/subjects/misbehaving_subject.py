@@ -54,9 +54,12 @@ def loop_beta(n):
 
 
 def write_pid(path, pid):
-    with open(path + ".part", "w") as f:
+    # A part file of this process's own: two runs of a suite's jobs may write one PIDFILE at once,
+    # and a shared part file would be replaced by one of them under the other.
+    part = "%s.%d.part" % (path, os.getpid())
+    with open(part, "w") as f:
         f.write("%d\n" % pid)
-    os.replace(path + ".part", path)  # whole or absent for whoever polls it
+    os.replace(part, path)  # whole or absent for whoever polls it
 
 
 def escape(pidfile):
