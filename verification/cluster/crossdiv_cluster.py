@@ -29,10 +29,21 @@ import tempfile
 import time
 
 
+def worker_directory():
+    """The Dask worker's own scratch folder, where there is one: a worker killed in a shard
+    never reaches its `finally`, and Dask purges a dead worker's folder when the next one
+    starts (a folder of /tmp would stay). None (the system's) outside a worker."""
+    try:
+        from distributed import get_worker
+        return get_worker().local_directory
+    except (ImportError, ValueError):
+        return None
+
+
 def run_shard(crossdiv, manifest_path, manifest_text, index, count):
     """On a worker: `crossdiv suite --shard index/count --no-report` into a temporary folder;
     returns its exit status, its stderr's tail and every file it wrote ({relative path: bytes})."""
-    work = tempfile.mkdtemp(prefix=f"crossdiv-shard{index}-")
+    work = tempfile.mkdtemp(prefix=f"crossdiv-shard{index}-", dir=worker_directory())
     try:
         manifest = manifest_path
         if not os.path.exists(manifest):
@@ -41,7 +52,10 @@ def run_shard(crossdiv, manifest_path, manifest_text, index, count):
                 f.write(manifest_text)
         out = os.path.join(work, "out")
         t0 = time.monotonic()
-        r = subprocess.run([crossdiv, "suite", manifest, "--shard", f"{index}/{count}", "--no-report", "--jobs", "1",
+        # setpriv (util-linux): the shard's crossdiv is stopped (SIGTERM: its children killed,
+        # its folders removed) when the worker that started it dies, rather than running on
+        # beside the shard's second run.
+        r = subprocess.run(["setpriv", "--pdeathsig", "TERM", crossdiv, "suite", manifest, "--shard", f"{index}/{count}", "--no-report", "--jobs", "1",
                             "--out", out], capture_output=True, text=True)
         files = {}
         for folder, _, names in os.walk(out):

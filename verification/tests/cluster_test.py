@@ -96,7 +96,9 @@ def test_a_local_cluster_merges_to_the_single_machine_results(single, tmp_path):
 def test_a_worker_killed_in_the_middle_of_a_shard_is_survived(single, tmp_path):
     from distributed import Client, LocalCluster
     manifest, single_out, single_status = single
-    cluster = LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None)
+    scratch = tmp_path / "scratch"
+    cluster = LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None,
+                           local_directory=str(scratch))
     client = Client(cluster)
     try:
         p = launch(manifest, tmp_path / "cluster", "--scheduler", cluster.scheduler_address, "--shards", "4")
@@ -121,3 +123,8 @@ def test_a_worker_killed_in_the_middle_of_a_shard_is_survived(single, tmp_path):
     cluster_cases, _ = comparable(tmp_path / "cluster")
     single_cases, _ = comparable(single_out)
     assert cluster_cases == single_cases, differences(cluster_cases, single_cases)
+    # The killed worker's shard left nothing behind: its crossdiv stopped with it, its folder
+    # purged by Dask with the dead worker's.
+    left = [os.path.join(d, n) for d, names, _ in os.walk(scratch) for n in names if n.startswith("crossdiv-shard")]
+    assert not left, left
+    assert subprocess.run(["pgrep", "-f", str(manifest)], capture_output=True).returncode == 1, "a shard's crossdiv runs on"

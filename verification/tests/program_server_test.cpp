@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -131,6 +132,7 @@ TEST(ProgramServer, AForkedProcessRunsAServerOfItsOwnAndLeavesItsParentsAlone) {
         const ServedRun r = server.run({"pid"}, kRunLimit);
         const long pid = r.process.exit_code == 0 ? std::stol(r.stderr_text) : -1;
         (void)!write(pipe_fds[1], &pid, sizeof pid);
+        stop_program_servers();
         _exit(0);
     }
     close(pipe_fds[1]);
@@ -144,6 +146,25 @@ TEST(ProgramServer, AForkedProcessRunsAServerOfItsOwnAndLeavesItsParentsAlone) {
     // The parent's server still answers, the same process.
     EXPECT_EQ(served_pid(server), parents);
     EXPECT_EQ(server.starts(), 1);
+}
+
+TEST(ProgramServer, StoppedWithTheOthersOfItsProcessLeavesNoFolderAndStartsAgainOnItsNextRun) {
+    ProgramServer server({"python3", kServingProgram, "--serve"}, "serving-test");
+    const ServedRun where = server.run({"cwd"}, kRunLimit);
+    ASSERT_EQ(where.process.exit_code, 0) << where.stderr_text;
+    const std::filesystem::path folder = where.stderr_text;
+    EXPECT_NE(folder.filename().string().find("crossdiv-serving-test-server-"), std::string::npos) << folder;
+    const pid_t first = served_pid(server);
+    ASSERT_TRUE(std::filesystem::is_directory(folder));
+    ASSERT_TRUE(server.running());
+
+    stop_program_servers();
+    EXPECT_FALSE(server.running());
+    EXPECT_FALSE(std::filesystem::exists(folder)) << folder;
+    EXPECT_EQ(kill(first, 0), -1) << "the server process is still there";
+
+    EXPECT_NE(served_pid(server), first);
+    EXPECT_EQ(server.starts(), 2);
 }
 
 ProgramSpec served_subject(double timeout) {

@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <cstring>
 #include <nlohmann/json.hpp>
+#include <mutex>
 #include <optional>
 #include <thread>
 
@@ -74,6 +75,18 @@ off_t file_size(int fd) {
     return fstat(fd, &st) == 0 ? st.st_size : 0;
 }
 
+/// Every ProgramServer of this process (and the copies a fork made of its parent's), for
+/// stop_program_servers; never destroyed, as the children's registry is not: a server may
+/// be destroyed as the process exits, after other statics.
+struct Servers {
+    std::mutex mutex;
+    std::vector<ProgramServer*> all;
+};
+Servers& servers() {
+    static Servers* s = new Servers;
+    return *s;
+}
+
 /// What the server wrote on stderr from `offset` on, as stderr_summary puts it.
 std::string stderr_since(int fd, off_t offset) { return stderr_summary(head_and_tail(fd, 64 * 1024, offset)); }
 
@@ -98,9 +111,16 @@ struct ProgramServer::Process {
 };
 
 ProgramServer::ProgramServer(std::vector<std::string> argv, std::string label)
-    : argv_(std::move(argv)), label_(std::move(label)), owner_(getpid()) {}
+    : argv_(std::move(argv)), label_(std::move(label)), owner_(getpid()) {
+    const std::lock_guard lock(servers().mutex);
+    servers().all.push_back(this);
+}
 
 ProgramServer::~ProgramServer() {
+    {
+        const std::lock_guard lock(servers().mutex);
+        std::erase(servers().all, this);
+    }
     if (owner_ != getpid()) {
         // A forked copy: the server and its folder are the parent's; leave both to it.
         if (process_) process_->close_pipes();
@@ -300,6 +320,15 @@ ServedRun ProgramServer::run(const std::vector<std::string>& args, double timeou
                           " without ending with a failure" + (out.stderr_text.empty() ? "" : "; stderr: " + out.stderr_text);
     }
     return out;
+}
+
+void stop_program_servers() {
+    const std::lock_guard lock(servers().mutex);
+    for (ProgramServer* s : servers().all)
+        if (s->owner_ == getpid()) {
+            s->stop(false);
+            s->folder_.reset();
+        }
 }
 
 }  // namespace crossdiv::verification

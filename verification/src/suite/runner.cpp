@@ -17,6 +17,7 @@
 
 #include "crossdiv/io/output_file.h"
 #include "crossdiv/error.h"
+#include "crossdiv/verification/harness/program_server.h"
 #include "crossdiv/verification/harness/interruption.h"
 #include "crossdiv/verification/suite/operations.h"
 #include "crossdiv/verification/harness/appended_lines.h"
@@ -151,6 +152,7 @@ std::vector<CaseRecord> run_jobs(const std::vector<SuiteJob>& jobs, int workers,
                 if (write(pipe_fd[1], msg.data(), msg.size()) < 0) _exit(1);
             }
             part.close();
+            stop_program_servers();  // their folders go with them: destructors do not run at _exit
             _exit(0);
         }
         pids.push_back(pid);

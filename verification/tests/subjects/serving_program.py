@@ -5,7 +5,7 @@
 
 Each request's first argument is what the run does: ok (exit status 0), status N (says
 "refused this one" on stderr, status N), pid (says its process id on stderr, status 0), crash
-(SIGSEGV), hang, lie (answers another request's id first), quiet-exit (exits 0 without
+(SIGSEGV), cwd (says its working folder on stderr, status 0), hang, lie (answers another request's id first), quiet-exit (exits 0 without
 answering), chatter N (writes N bytes on stderr, status 0).
 """
 import os
@@ -26,6 +26,9 @@ def run(args):
         return int(args[1])
     if what == "pid":
         print(os.getpid(), file=sys.stderr)
+        return 0
+    if what == "cwd":
+        print(os.getcwd(), file=sys.stderr)
         return 0
     if what == "crash":
         os.kill(os.getpid(), signal.SIGSEGV)

@@ -22,6 +22,7 @@
 /// time-out or when it answers out of turn), under kProgramMemoryBytes of data.
 
 #include <sys/types.h>
+#include <unistd.h>
 
 #include <memory>
 #include <string>
@@ -62,6 +63,10 @@ public:
 
     /// How many times the program has been started.
     int starts() const { return starts_; }
+    /// Whether this process has it running now.
+    bool running() const { return process_ && owner_ == getpid(); }
+
+    friend void stop_program_servers();
 
 private:
     struct Process;  ///< the running program: pid, pipes, registration
@@ -80,5 +85,13 @@ private:
     long long next_id_ = 1;
     int starts_ = 0;
 };
+
+/// Stops every server this process started (its input closed, a moment to exit, then its group
+/// killed) and removes their folders. A forked process that ends by _exit, as a suite worker
+/// does, calls it first: its servers' destructors never run, and each would leave its folder
+/// behind (and a display's lock file, for a server that starts one and stops it on the end of
+/// its input). A server stopped so starts again on its next run. Not while a run is in
+/// progress in another thread.
+void stop_program_servers();
 
 }  // namespace crossdiv::verification
