@@ -154,6 +154,28 @@ TEST(Correspondence, CopiesOfAVertexAtOnePlaceAreToldApartByTheirFaces) {
     EXPECT_EQ(isolated.ref_to_ours[8] + isolated.ref_to_ours[9], 17);
 }
 
+TEST(Correspondence, ATriangleAndItsReversedCopyAtOnePlaceAreToldApartByTheirCornersOrder) {
+    // A double-sided triangle as real models have them: vertices 0 1 2 and their copies 3 4 5,
+    // the copy's face reversed. Every corner has two of ours at its place and no edge is matched
+    // to start from: only the corners' cyclic order tells the face from its reversed copy.
+    PolyMesh ours;
+    ours.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+    ours.add_face({0, 1, 2});
+    ours.add_face({3, 5, 4});
+    // The reference numbers the copies otherwise (its vertex i is our vertex perm[i]) and lists
+    // its faces from another corner.
+    const std::vector<int> perm = {4, 3, 0, 2, 5, 1};
+    PolyMesh ref;
+    ref.positions.resize(6);
+    for (int i = 0; i < 6; ++i) ref.positions[i] = ours.positions[perm[i]];
+    const auto ref_of = [&](int ours_vertex) { return static_cast<int>(std::find(perm.begin(), perm.end(), ours_vertex) - perm.begin()); };
+    ref.add_face({ref_of(5), ref_of(4), ref_of(3)});
+    ref.add_face({ref_of(1), ref_of(2), ref_of(0)});
+    const Correspondence c = match_nearest_and_faces(ours, ref);
+    ASSERT_EQ(c.method, MatchMethod::NearestAndFaces) << c.note;
+    EXPECT_EQ(c.ref_to_ours, perm);
+}
+
 /// A birth in terms that do not depend on how the level numbers its edges and its copies of
 /// a face: a vertex, an edge's two ends in order, a face's corner cycle from its least rotation.
 std::vector<int> normal_form(const VertexBirth& b, const PolyMesh& coarse) {

@@ -3,6 +3,7 @@
 #include "harness/point_cloud.h"
 
 #include <algorithm>
+#include <cmath>
 #include <bit>
 #include <cstdint>
 #include <limits>
@@ -11,6 +12,7 @@
 #include <string>
 #include <unordered_map>
 
+#include "crossdiv/mesh/tri_mesh.h"
 #include "crossdiv/verification/harness/mesh_topology.h"
 
 namespace crossdiv::verification {
@@ -334,6 +336,85 @@ std::string match_next_level(const std::vector<int>& prev, const PolyMesh& our_c
     return "";
 }
 
+/// How far apart, relative to the mesh's bounding-box diagonal, two vertices at one place may
+/// lie: a tenth of the weak tier's agreement tolerance (1e-12), so that two vertices it could
+/// not tell apart by position anyway are told apart by their faces. Two sums of the same
+/// neighbours in another order differ by a few units in the last place: about 1e-15 of the
+/// diagonal on the corpus's models.
+constexpr double kCopyDistance = 1e-13;
+
+/// Copies of a vertex at one place: two points whose distances from a third, the nearer
+/// `d2_near` and the other `d2`, squared, differ by at most `tie` (kCopyDistance of the mesh's
+/// size). Two implementations that sum a vertex's neighbours in another order put it an ulp or
+/// two apart: such copies must not be told apart by position.
+bool same_place(double d2, double d2_near, double tie) { return std::sqrt(d2) <= std::sqrt(d2_near) + tie; }
+
+/// Our vertices at one place with the nearest to `at` (at squared distance `d2`), at most 8.
+std::span<const unsigned> copies_at(const PointTree& tree, const Vec3& at, double d2, double tie, size_t n, unsigned (&found)[8]) {
+    double found_d2[8];
+    const size_t k = tree.knnSearch(at.data(), std::min<size_t>(8, n), found, found_d2);
+    size_t same = 0;
+    while (same < k && same_place(found_d2[same], d2, tie)) ++same;
+    return {found, same};
+}
+
+/// For match_nearest_and_faces: a reference face none of whose edges is matched yet (the two
+/// copies of a double-sided face, a duplicated component: every corner has copies of ours at
+/// its place) is placed on one of our faces whose corners, in the same cyclic order, are each
+/// among the copies nearest its corner, free or already its own. The cyclic order tells a face
+/// from its reversed copy. Returns whether it placed a vertex.
+bool place_faces_of_copies(const PolyMesh& ours, const PolyMesh& ref, const PointTree& tree, const std::vector<double>& d2,
+                           double tie, std::vector<int>& map, std::vector<int>& taken_by) {
+    if (std::find(map.begin(), map.end(), -1) == map.end()) return false;
+    // Our faces around each vertex (flat lists), built once per call.
+    std::vector<int> first(static_cast<size_t>(ours.num_vertices()) + 1, 0), faces(ours.face_vertices.size());
+    for (int v : ours.face_vertices) ++first[static_cast<size_t>(v) + 1];
+    std::partial_sum(first.begin(), first.end(), first.begin());
+    std::vector<int> fill(first.begin(), first.end() - 1);
+    for (int f = 0; f < ours.num_faces(); ++f)
+        for (int k = 0; k < ours.face_size(f); ++k) faces[static_cast<size_t>(fill[static_cast<size_t>(ours.face(f)[k])]++)] = f;
+    const size_t n = ref.positions.size();
+    const auto fits = [&](int r, int u) {
+        return map[static_cast<size_t>(r)] >= 0 ? map[static_cast<size_t>(r)] == u
+                                                : taken_by[static_cast<size_t>(u)] < 0 &&
+                                                      same_place((ours.positions[static_cast<size_t>(u)] - ref.positions[static_cast<size_t>(r)]).squaredNorm(),
+                                                                 d2[static_cast<size_t>(r)], tie);
+    };
+    bool placed = false;
+    for (int f = 0; f < ref.num_faces(); ++f) {
+        const int m = ref.face_size(f);
+        const int* rf = ref.face(f);
+        if (std::all_of(rf, rf + m, [&](int r) { return map[static_cast<size_t>(r)] >= 0; })) continue;
+        unsigned found[8];
+        const int r0 = rf[0];
+        const std::span<const unsigned> starts =
+            map[static_cast<size_t>(r0)] >= 0
+                ? std::span<const unsigned>(found, (found[0] = static_cast<unsigned>(map[static_cast<size_t>(r0)]), 1))
+                : copies_at(tree, ref.positions[static_cast<size_t>(r0)], d2[static_cast<size_t>(r0)], tie, n, found);
+        bool done = false;
+        for (const unsigned v : starts) {
+            for (int i = first[v]; i < first[v + 1] && !done; ++i) {
+                const int g = faces[static_cast<size_t>(i)];
+                if (ours.face_size(g) != m) continue;
+                const int* og = ours.face(g);
+                const int at = static_cast<int>(std::find(og, og + m, static_cast<int>(v)) - og);
+                bool ok = true;
+                for (int k = 0; k < m && ok; ++k) ok = fits(rf[k], og[(at + k) % m]);
+                if (!ok) continue;
+                for (int k = 0; k < m; ++k) {
+                    const int u = og[(at + k) % m];
+                    if (map[static_cast<size_t>(rf[k])] >= 0) continue;
+                    map[static_cast<size_t>(rf[k])] = u;
+                    taken_by[static_cast<size_t>(u)] = rf[k];
+                }
+                placed = done = true;
+            }
+            if (done) break;
+        }
+    }
+    return placed;
+}
+
 }  // namespace
 
 const char* to_string(MatchMethod method) {
@@ -387,9 +468,10 @@ Correspondence match_nearest_and_faces(const PolyMesh& ours, const PolyMesh& ref
     tree.buildIndex();
     std::vector<unsigned> nearest(n);
     std::vector<double> d2(n);
-    // A reference vertex with two of ours exactly as near (copies of a vertex at one place: a
-    // seam cut open, a duplicate face's corners) is placed by the faces alone: by position it
-    // would take either copy, and the wrong one blocks the faces around both.
+    // A reference vertex with two of ours as near (copies of a vertex at one place: a seam cut
+    // open, a duplicate face's corners; as near up to `tie`) is placed by the faces alone: by
+    // position it would take either copy, and the wrong one blocks the faces around both.
+    const double tie = kCopyDistance * bounding_box_diagonal(ours.positions);
     std::vector<char> tied(n, 0);
     for (size_t i = 0; i < n; ++i) {
         unsigned two[2] = {0, 0};
@@ -397,7 +479,7 @@ Correspondence match_nearest_and_faces(const PolyMesh& ours, const PolyMesh& ref
         const size_t found = tree.knnSearch(ref.positions[i].data(), std::min<size_t>(2, n), two, two_d2);
         nearest[i] = two[0];
         d2[i] = two_d2[0];
-        tied[i] = found == 2 && two_d2[1] == two_d2[0];
+        tied[i] = found == 2 && same_place(two_d2[1], two_d2[0], tie);
     }
     std::vector<int> order(n);
     std::iota(order.begin(), order.end(), 0);
@@ -452,6 +534,7 @@ Correspondence match_nearest_and_faces(const PolyMesh& ours, const PolyMesh& ref
                 placed = true;
             }
         }
+        if (!placed) placed = place_faces_of_copies(ours, ref, tree, d2, tie, map, taken_by);
     }
     // Tied vertices no face placed (copies no face uses): any free copy of ours at that place.
     for (size_t i = 0; i < n; ++i) {
@@ -460,7 +543,7 @@ Correspondence match_nearest_and_faces(const PolyMesh& ours, const PolyMesh& ref
         unsigned near[kCopies];
         double near_d2[kCopies];
         const size_t found = tree.knnSearch(ref.positions[i].data(), std::min(kCopies, n), near, near_d2);
-        for (size_t k = 0; k < found && near_d2[k] == d2[i]; ++k)
+        for (size_t k = 0; k < found && same_place(near_d2[k], d2[i], tie); ++k)
             if (taken_by[near[k]] < 0) {
                 map[i] = static_cast<int>(near[k]);
                 taken_by[near[k]] = static_cast<int>(i);
