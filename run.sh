@@ -175,8 +175,11 @@ case "${1:-}" in
     build
     begin_phase corpus
     corpus_start=$SECONDS
-    ./build/verification/crossdiv suite verification/suites/corpus.suite --out out/corpus
+    # Its time is stated whether or not a case failed; the exit status is the suite's.
+    corpus_status=0
+    ./build/verification/crossdiv suite verification/suites/corpus.suite --out out/corpus || corpus_status=$?
     echo "corpus suite: $((SECONDS - corpus_start)) s (results and report in out/corpus)"
+    exit "$corpus_status"
     ;;
   *)
     echo "usage: $0 main|test|sanitize [SECONDS]|corpus" >&2

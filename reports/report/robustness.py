@@ -5,7 +5,7 @@ reason, unexplained, rejected, crashed, hung, with an invalid result. Read from 
 crossdiv recorded; nothing is derived again."""
 from collections import Counter
 
-from .model import Section, Table, Text
+from .model import Link, Section, Table, Text
 
 # A run's status (results-schema.md) -> the column it is counted in, for the runs that made no
 # usable result; every other run is counted by its outcome.
@@ -86,6 +86,14 @@ def robustness_section(results):
              "refusing the input, crashing, hanging (killed at the time limit), making an invalid result "
              "(non-finite, a wrong count, not triangles, unreadable), and not compared (core refused the input, "
              "nothing could be matched, or the reference is not on this machine)."))
+    shrunk = shrunk_failures(comparisons, scheme_of)
+    if shrunk:
+        section.add(Text("Each failure of a library reference (a crash, an exception, an invalid result, a divergence "
+                         "no class explains), shrunk after the cases with that reference alone until removing any "
+                         "face makes the failure go away (delta debugging; at most a minute each: 'cut short' when "
+                         "the minute ended first). The last column runs it again on the minimal mesh, which is in "
+                         "the results folder; 'comes and goes' marks a failure that did not show on its last run."),
+                    Table(SHRUNK_HEADER, shrunk))
     statistics = corpus_statistics(comparisons)
     if statistics:
         section.add(Text("The inputs themselves (each counted once, from core's reading: mesh_statistics.h), by "
@@ -93,6 +101,31 @@ def robustness_section(results):
                          "genus where every edge and vertex is manifold and oriented (else 'none')."),
                     Table(STATISTICS_HEADER, statistics))
     return section
+
+
+SHRUNK_HEADER = ["scheme", "reference", "input", "failure", "minimal mesh", "reproduce"]
+
+
+def shrunk_failures(cases, scheme_of):
+    """One row per reference failure the suite shrank or said why it did not, in case order."""
+    rows = []
+    for c in cases:
+        for r in c.get("runs", []):
+            m = r.get("minimal")
+            if not isinstance(m, dict):
+                continue
+            if m.get("mesh"):
+                size = f"{m['faces']} faces, {m['vertices']} vertices"
+                if m.get("cut_short"):
+                    size += " (cut short)"
+                if not m.get("reproduces", True):
+                    size += " (comes and goes)"
+                rows.append([scheme_of[c["operation"]], r["reference"], c["input"], m.get("symptom", ""),
+                             Link(size, m["mesh"]), m.get("reproduce", "")])
+            else:
+                rows.append([scheme_of[c["operation"]], r["reference"], c["input"],
+                             r.get("explanation") or r["outcome"], m.get("note", ""), "-"])
+    return rows
 
 
 STATISTICS_HEADER = ["source", "inputs", "faces (median)", "non-manifold edges", "non-manifold vertices",

@@ -15,7 +15,7 @@ import make_report  # noqa: E402
 from report.model import Figure, Section, Table, Tally, Text, md_cell, render_html, render_markdown  # noqa: E402
 from report.viewer import matrix_table  # noqa: E402
 from report.records import category, split_cases  # noqa: E402
-from report.robustness import corpus_statistics, robustness_section  # noqa: E402
+from report.robustness import SHRUNK_HEADER, corpus_statistics, robustness_section  # noqa: E402
 from report.suite_time import suite_time_section  # noqa: E402
 
 
@@ -216,6 +216,37 @@ def test_the_robustness_table_counts_each_implementations_runs_by_how_they_ended
     results["cases"][0]["runs"][0]["outcome"] = "ours-failed (something new)"
     with pytest.raises(ValueError):
         robustness_section(results)
+
+
+def test_the_robustness_section_lists_each_shrunk_reference_failure_with_its_reproduce_line():
+    crashed = {"reference": "openmesh", "outcome": "ref-crashed", "status": "crashed", "verdict": "ref-crashed",
+               "minimal": {"mesh": "minimal/job3-openmesh.obj", "faces": 2, "vertices": 5,
+                           "symptom": "openmesh fails (crashed)", "cut_short": False, "reproduces": True,
+                           "reference": "openmesh",
+                           "reproduce": "crossdiv compare minimal/job3-openmesh.obj --scheme catmull-clark "
+                                        "--boundary edge-only --levels 2 --against openmesh"}}
+    flaky = {"reference": "vtk", "outcome": "ref-crashed", "status": "crashed", "verdict": "ref-crashed",
+             "minimal": {"mesh": "minimal/job4-vtk.obj", "faces": 900, "vertices": 500, "symptom": "vtk fails (crashed)",
+                         "cut_short": True, "reproduces": False, "reproduce": "crossdiv compare ..."}}
+    hung = {"reference": "cgal", "outcome": "ref-crashed", "status": "timeout", "verdict": "ref-crashed",
+            "explanation": "timed out after 120 s",
+            "minimal": {"note": "not shrunk: it timed out, and each smaller try would cost its time limit"}}
+    results = {"operations": [{"name": "catmull-clark", "kind": "comparison", "scheme": "catmull-clark"}],
+               "cases": [{"operation": "catmull-clark", "input": "chair.obj",
+                          "runs": [{"reference": "opensubdiv", "outcome": "agree", "status": "ok"}, crashed]},
+                         {"operation": "catmull-clark", "input": "spider.stl", "runs": [flaky, hung]}]}
+    section = robustness_section(results)
+    [table] = [b for b in section.blocks if getattr(b, "header", None) == SHRUNK_HEADER]
+    assert [[str(getattr(v, "text", v)) for v in row] for row in table.rows] == [
+        ["catmull-clark", "openmesh", "chair.obj", "openmesh fails (crashed)", "2 faces, 5 vertices",
+         crashed["minimal"]["reproduce"]],
+        ["catmull-clark", "vtk", "spider.stl", "vtk fails (crashed)", "900 faces, 500 vertices (cut short) (comes and goes)",
+         "crossdiv compare ..."],
+        ["catmull-clark", "cgal", "spider.stl", "timed out after 120 s", hung["minimal"]["note"], "-"]]
+    assert table.rows[0][4].href == "minimal/job3-openmesh.obj"
+    # Without a shrunk failure, no such table.
+    del crashed["minimal"], flaky["minimal"], hung["minimal"]
+    assert not [b for b in robustness_section(results).blocks if getattr(b, "header", None) == SHRUNK_HEADER]
 
 
 def test_the_corpus_statistics_count_each_input_once_by_source():

@@ -17,7 +17,7 @@
 #include "crossdiv/verification/suite/outputs.h"
 #include "crossdiv/verification/suite/report.h"
 #include "crossdiv/verification/suite/runner.h"
-#include "crossdiv/verification/suite/subject_shrink.h"
+#include "crossdiv/verification/suite/failure_shrink.h"
 #include "curve_commands.h"
 #include "surface_commands.h"
 
@@ -95,8 +95,8 @@ int run_suite(const std::string& manifest_path, const std::string& out, int jobs
         }
         std::fflush(stdout);
     });
-    // Each subject's first failure, shrunk to a minimal input the class table links.
-    shrink_subject_failures(mine, records, out, jobs);
+    // Each subject's first failure and each failure of a library reference, shrunk to a minimal mesh.
+    shrink_failures(mine, records, out, jobs);
     nlohmann::json refs = nlohmann::json::array();
     for (const Implementation* r : references_for(Scheme::Loop)) refs.push_back({{"name", r->name()}, {"version", r->version()}});
     nlohmann::json curve_refs = nlohmann::json::array();

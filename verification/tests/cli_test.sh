@@ -215,6 +215,10 @@ python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); r["cases"][0]["view
   "$tmp/sh2/results.json" "$tmp/bad-shard/results.json"
 expect merge-outside 2 "names the file '../../x.js', not one of its views/ or minimal/ folders" -- \
   "$crossdiv" merge "$tmp/sh1" "$tmp/bad-shard" --out "$tmp/m3"
+python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); c=[c for c in r["cases"] if c["runs"]][0]; c["runs"][0]["minimal"]={"mesh": "minimal/../../y.obj"}; json.dump(r, open(sys.argv[2],"w"))' \
+  "$tmp/sh2/results.json" "$tmp/bad-shard/results.json"
+expect merge-outside-run 2 "names the file 'minimal/../../y.obj', not one of its views/ or minimal/ folders" -- \
+  "$crossdiv" merge "$tmp/sh1" "$tmp/bad-shard" --out "$tmp/m3r"
 python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); r["jobs_fingerprint"]="0"; json.dump(r, open(sys.argv[2],"w"))' \
   "$tmp/sh2/results.json" "$tmp/bad-shard/results.json"
 expect merge-other-manifest 2 'its jobs are not the other shards' -- "$crossdiv" merge "$tmp/sh1" "$tmp/bad-shard" --out "$tmp/m4"

@@ -14,6 +14,7 @@
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/datasets/edge_cases.h"
 #include "crossdiv/error.h"
+#include "crossdiv/io/mesh_io.h"
 #include "crossdiv/subdiv/loop.h"
 #include "crossdiv/verification/bench/bench.h"
 #include "crossdiv/verification/implementations/registry.h"
@@ -23,6 +24,7 @@
 #include "crossdiv/verification/implementations/output_size.h"
 #include "crossdiv/verification/suite/manifest.h"
 #include "crossdiv/verification/suite/outputs.h"
+#include "crossdiv/verification/suite/failure_shrink.h"
 #include "crossdiv/verification/suite/runner.h"
 #include "crossdiv/verification/suite/shard_results.h"
 #include "library_guard.h"
@@ -307,6 +309,40 @@ TEST(Suite, RunsInWorkersAndRecordsEachOutcome) {
     EXPECT_TRUE(fs::exists(d / recs[1].detail["view"].get<std::string>()));
     EXPECT_FALSE(recs[0].detail.contains("view"));
     EXPECT_EQ(recs[1].detail["worst_vertex"]["valence"], 2);
+}
+
+TEST(Suite, ALibrarysCrashIsShrunkAfterTheCasesAndListedWithItsReproduceLine) {
+    CROSSDIV_REQUIRE_LIBRARIES("cgal");
+    const fs::path d = temp_dir("shrink-failures");
+    const Manifest m = small_suite(d);
+    const std::vector<SuiteJob> jobs = expand_jobs(m);
+    std::vector<CaseRecord> recs = run_jobs(jobs, 2, d.string(), [](int, int, const CaseRecord&) {});
+    ASSERT_EQ(recs.size(), 4u);
+    ASSERT_EQ(outcome_label(recs[2], recs[2].runs.at(0)), "ref-crashed");
+    shrink_failures(jobs, recs, d.string(), 2);
+    // CGAL's Loop at the isolated vertex (signal 11): shrunk with CGAL alone, the vertex kept
+    // in every candidate (removing faces never makes one).
+    const nlohmann::json& m2 = recs[2].runs[0].detail["minimal"];
+    ASSERT_TRUE(m2.is_object()) << recs[2].runs[0].detail.dump();
+    EXPECT_EQ(m2["mesh"], "minimal/job2-cgal.obj");
+    EXPECT_EQ(m2["symptom"], "cgal fails (crashed)");
+    EXPECT_EQ(m2["reference"], "cgal");
+    EXPECT_EQ(m2["reproduce"], "crossdiv compare minimal/job2-cgal.obj --weights loop --boundary edge-only --levels 1 --against cgal");
+    EXPECT_EQ(m2["cut_short"], false);
+    EXPECT_EQ(m2["reproduces"], true);
+    const PolyMesh minimal = read_mesh((d / "minimal" / "job2-cgal.obj").string());
+    EXPECT_EQ(minimal.num_faces(), m2["faces"].get<int>());
+    EXPECT_EQ(minimal.num_vertices(), m2["vertices"].get<int>());
+    EXPECT_LT(minimal.num_faces(), datasets::edge_case("isolated-vertex").mesh.num_faces());
+    std::vector<char> used(static_cast<size_t>(minimal.num_vertices()), 0);
+    for (int v : minimal.face_vertices) used[static_cast<size_t>(v)] = 1;
+    EXPECT_EQ(std::count(used.begin(), used.end(), 0), 1) << "the isolated vertex";
+    RefinementRequest again = m.entries[1].request;
+    const RefinementComparison c = compare_refinement(minimal, "minimal", again);
+    EXPECT_EQ(c.runs.at(0).verdict, Verdict::RefCrashed) << c.runs[0].explanation;
+    // Named divergences, agreement and refusals are no failures to shrink.
+    for (size_t i : {0, 1, 3})
+        for (const RunRecord& r : recs[i].runs) EXPECT_FALSE(r.detail.contains("minimal")) << recs[i].id << " " << r.reference;
 }
 
 TEST(Suite, ACoreRefusalFailsUnlessTheCaseDeclaresIt) {
@@ -672,6 +708,19 @@ TEST(Shrink, AReferenceThatReturnsABrokenMeshShrinksToTheQuadsThatBreakIt) {
             << "face " << f << ": " << alone.runs[0].explanation;
     }
     EXPECT_EQ(naming_twice, 1);
+}
+
+TEST(Shrink, PastItsTimeLimitItTriesNothingMoreAndSaysSo) {
+    CROSSDIV_REQUIRE_LIBRARIES("openmesh");
+    const PolyMesh patch = datasets::bundled_mesh("open-patch");
+    const ShrinkResult r = shrink_divergence(patch, "open-patch", catmull_clark_against("openmesh", 2), {0.0});
+    EXPECT_TRUE(r.cut_short);
+    EXPECT_EQ(r.tests, 0);
+    EXPECT_EQ(r.minimal.num_faces(), patch.num_faces());  // the input: no smaller mesh was tried
+    EXPECT_EQ(symptom_of(r.minimal_comparison), r.symptom);
+    const ShrinkResult unlimited = shrink_divergence(patch, "open-patch", catmull_clark_against("openmesh", 2));
+    EXPECT_FALSE(unlimited.cut_short);
+    EXPECT_EQ(unlimited.minimal.num_faces(), 1);
 }
 
 TEST(Shrink, APolygonSchemeThatAgreesHasNothingToShrink) {

@@ -1,6 +1,7 @@
 #include "crossdiv/verification/comparisons/shrink.h"
 
 #include <algorithm>
+#include <chrono>
 #include <numeric>
 #include <span>
 
@@ -108,14 +109,26 @@ std::vector<int> ring_faces(const PolyMesh& m, const std::vector<int>& seeds, in
     return faces;
 }
 
+/// The vertices no face uses. Shrinking keeps them in every candidate: an isolated vertex is
+/// what some references fail on (CGAL's Loop), and removing faces never makes one.
+std::vector<int> unused_vertices(const PolyMesh& m) {
+    std::vector<char> used(static_cast<size_t>(m.num_vertices()), 0);
+    for (int v : m.face_vertices) used[static_cast<size_t>(v)] = 1;
+    std::vector<int> unused;
+    for (int v = 0; v < m.num_vertices(); ++v)
+        if (!used[static_cast<size_t>(v)]) unused.push_back(v);
+    return unused;
+}
+
 /// Step 1 of shrinking: the smallest k-ring around `seeds` (up to 4 rings) that still shows
 /// the symptom, into `neighbourhood`; returns k, or 0 when the whole mesh was needed.
 template <class StillShows>
 int shrink_to_neighbourhood(const PolyMesh& mesh, const std::vector<int>& seeds, StillShows&& shows, PolyMesh& neighbourhood) {
     neighbourhood = mesh;
     if (seeds.empty()) return 0;
+    const std::vector<int> isolated = unused_vertices(mesh);
     for (int k = 1; k <= 4; ++k) {
-        PolyMesh candidate = submesh(mesh, ring_faces(mesh, seeds, k));
+        PolyMesh candidate = submesh(mesh, ring_faces(mesh, seeds, k), isolated);
         if (candidate.num_faces() >= mesh.num_faces()) break;
         if (shows(candidate)) {
             neighbourhood = std::move(candidate);
@@ -127,13 +140,15 @@ int shrink_to_neighbourhood(const PolyMesh& mesh, const std::vector<int>& seeds,
 
 /// Step 2: ddmin over the neighbourhood's faces: try keeping only the complement of one of n
 /// chunks; on success shrink n, else refine the split, until chunks are single faces.
-template <class StillShows>
-PolyMesh shrink_faces(const PolyMesh& neighbourhood, StillShows&& shows) {
+template <class StillShows, class OutOfTime>
+PolyMesh shrink_faces(const PolyMesh& neighbourhood, StillShows&& shows, OutOfTime&& out_of_time) {
     std::vector<int> all(static_cast<size_t>(neighbourhood.num_faces()));
     std::iota(all.begin(), all.end(), 0);
-    const std::vector<int> faces =
-        ddmin(std::move(all), [&](const std::vector<int>& keep) { return shows(submesh(neighbourhood, keep)); });
-    return submesh(neighbourhood, faces);
+    const std::vector<int> isolated = unused_vertices(neighbourhood);
+    const std::vector<int> faces = ddmin(std::move(all), [&](const std::vector<int>& keep) {
+        return !out_of_time() && shows(submesh(neighbourhood, keep, isolated));
+    });
+    return submesh(neighbourhood, faces, isolated);
 }
 
 /// Whether a reference's failure is one to shrink: a crash, an exception, a lie about its
@@ -265,7 +280,9 @@ PolyMesh submesh(const PolyMesh& mesh, const std::vector<int>& faces, const std:
     return out;
 }
 
-ShrinkResult shrink_divergence(const PolyMesh& mesh, const std::string& name, const RefinementRequest& req) {
+ShrinkResult shrink_divergence(const PolyMesh& mesh, const std::string& name, const RefinementRequest& req,
+                               const ShrinkLimits& limits) {
+    const auto t0 = std::chrono::steady_clock::now();
     const bool no_reference = req.without_references;
     if (no_reference ? !req.subject : req.references.size() != 1)
         throw InputError("shrinking compares against exactly one reference, or a subject with none");
@@ -286,7 +303,15 @@ ShrinkResult shrink_divergence(const PolyMesh& mesh, const std::string& name, co
 
     // 1. The neighbourhood of the symptom's coarse ancestors (through core's provenance, where
     // it has it, else the coarse vertex nearest the site); 2. ddmin over its faces.
-    const auto shows = [&](const PolyMesh& candidate) { return still_shows(candidate, req, r.symptom, r.tests); };
+    // Past the time limit every further candidate counts as not showing it: ddmin then only
+    // splits what it has until its chunks are single faces, running nothing.
+    const auto out_of_time = [&] {
+        if (std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > limits.seconds) r.cut_short = true;
+        return r.cut_short;
+    };
+    const auto shows = [&](const PolyMesh& candidate) {
+        return !out_of_time() && still_shows(candidate, req, r.symptom, r.tests);
+    };
     std::vector<int> seeds;
     if (const auto site = symptom_site(r.original, r.symptom)) {
         const Refinement core = core_implementation().refine_with_provenance(mesh, {req.scheme, req.rule, site->first, req.face_varying});
@@ -296,7 +321,7 @@ ShrinkResult shrink_divergence(const PolyMesh& mesh, const std::string& name, co
             seeds = nearest_coarse_vertex(mesh, core.levels.back().positions[static_cast<size_t>(site->second)]);
     }
     r.k = shrink_to_neighbourhood(mesh, seeds, shows, r.neighbourhood);
-    r.minimal = shrink_faces(r.neighbourhood, shows);
+    r.minimal = shrink_faces(r.neighbourhood, shows, out_of_time);
     r.minimal_comparison = compare_refinement(r.minimal, "minimal", req);
     return r;
 }

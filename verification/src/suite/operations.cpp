@@ -51,12 +51,6 @@ std::optional<MinimalDivergence> shrink_for_view(const PolyMesh& mesh, const std
                                                  const RefinementRequest& req, const RefinementComparison& c,
                                                  const std::string& obj_name) {
     if (req.subject || mesh.num_faces() > kShrinkMaxFaces) return std::nullopt;
-    const std::string rule = req.scheme == Scheme::Loop
-                                 ? " --weights " + std::string(to_string(req.rule.loop.weights)) + " --boundary " +
-                                       std::string(to_string(req.rule.loop.boundary))
-                                 : " --scheme " + std::string(to_string(req.scheme)) + " --boundary " +
-                                       boundary_name(req.scheme, req.rule);
-    const std::string fvar = req.face_varying ? " --fvar " + std::string(to_string(*req.face_varying)) : "";
     for (const RefinementRun& run : c.runs) {
         const bool uv_diverges = run.uv && run.uv->compared() && run.uv->outcome.verdict == Verdict::Diverge;
         if ((run.verdict != Verdict::Diverge && !uv_diverges) || find_implementation(run.reference).confines_itself())
@@ -67,8 +61,7 @@ std::optional<MinimalDivergence> shrink_for_view(const PolyMesh& mesh, const std
             one.view_max_faces = 0;
             const ShrinkResult r = shrink_divergence(mesh, input, one);
             return MinimalDivergence{run.reference, describe(r.symptom, "core", run.reference), r.minimal, r.tests,
-                                     "crossdiv compare " + obj_name + rule + fvar + " --levels " +
-                                         std::to_string(req.levels) + " --against " + run.reference};
+                                     compare_command(req, obj_name, run.reference)};
         } catch (const InputError&) {
             // Nothing to shrink here: the view stands alone.
         }
@@ -119,9 +112,7 @@ CaseRecord run_refinement(const SuiteJob& job, const std::string& out_dir) {
         faces_only.creases = {};
         (void)to_tri_mesh(faces_only, (std::string(to_string(req.scheme)) + " subdivision").c_str());
     }
-    if (req.scheme != Scheme::Loop) req.rule = rule_with_tags(req.scheme, entry.rule_flags, input, notes);
-    // Texture coordinates, where the input has them: the case's fvar=, the file's tag, or all.
-    req.face_varying = face_varying_rule(req.scheme, entry.rule_flags.face_varying, input, notes);
+    resolve_input_rules(req, entry, input, notes);
     RefinementComparison c = compare_refinement(input, job.input, req);
     if (c.view) c.view->minimal = shrink_for_view(input, job.input, req, c, minimal_obj_name(job));
     CaseRecord rec = case_record(c);
@@ -176,6 +167,23 @@ CaseRecord run_pages(const SuiteJob& job, const std::string& out_dir) {
 }
 
 }  // namespace
+
+void resolve_input_rules(RefinementRequest& req, const ManifestEntry& entry, PolyMesh& input, std::vector<std::string>& notes) {
+    if (req.scheme != Scheme::Loop) req.rule = rule_with_tags(req.scheme, entry.rule_flags, input, notes);
+    // Texture coordinates, where the input has them: the case's fvar=, the file's tag, or all.
+    req.face_varying = face_varying_rule(req.scheme, entry.rule_flags.face_varying, input, notes);
+}
+
+std::string compare_command(const RefinementRequest& req, const std::string& mesh_file, const std::string& reference) {
+    const std::string rule = req.scheme == Scheme::Loop
+                                 ? " --weights " + std::string(to_string(req.rule.loop.weights)) + " --boundary " +
+                                       std::string(to_string(req.rule.loop.boundary))
+                                 : " --scheme " + std::string(to_string(req.scheme)) + " --boundary " +
+                                       boundary_name(req.scheme, req.rule);
+    const std::string fvar = req.face_varying ? " --fvar " + std::string(to_string(*req.face_varying)) : "";
+    return "crossdiv compare " + mesh_file + rule + fvar + " --levels " + std::to_string(req.levels) + " --against " + reference;
+}
+
 
 const std::vector<SuiteOperation>& suite_operations() {
     static const std::vector<SuiteOperation> ops = {

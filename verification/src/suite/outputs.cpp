@@ -103,7 +103,7 @@ std::string subject_of(const CaseRecord& c) {
 }
 
 /// "; minimal failing input: minimal/x.obj (2 faces; no named rule fits ...)" for the case the
-/// suite shrank a subject's failure from (subject_shrink.h), or why it did not; "" otherwise.
+/// suite shrank a subject's failure from (failure_shrink.h), or why it did not; "" otherwise.
 std::string minimal_text(const CaseRecord& c) {
     if (!c.detail.contains("minimal") || !c.detail["minimal"].is_object()) return "";
     const json& m = c.detail["minimal"];

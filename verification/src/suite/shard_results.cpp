@@ -34,13 +34,20 @@ T header_field(const json& header, const char* key, T fallback) {
     return header.value(key, fallback);
 }
 
-/// The files case `c` names, each checked to be inside the shard's views/ or minimal/ folder.
+/// The minimal mesh a record's "minimal" names (failure_shrink.h), if it names one.
+void add_minimal_mesh(const nlohmann::json& detail, std::vector<std::string>& files) {
+    if (detail.contains("minimal") && detail["minimal"].is_object() && detail["minimal"].contains("mesh") &&
+        detail["minimal"]["mesh"] != "")
+        files.push_back(detail["minimal"]["mesh"].is_string() ? detail["minimal"]["mesh"].get<std::string>() : "");
+}
+
+/// The files case `c` names (its view, its minimal mesh, its runs' minimal meshes), each
+/// checked to be inside the shard's views/ or minimal/ folder.
 std::vector<std::string> named_files(const CaseRecord& c, const std::string& name, size_t k) {
     std::vector<std::string> files;
     if (c.detail.contains("view")) files.push_back(c.detail["view"].is_string() ? c.detail["view"].get<std::string>() : "");
-    if (c.detail.contains("minimal") && c.detail["minimal"].is_object() && c.detail["minimal"].contains("mesh") &&
-        c.detail["minimal"]["mesh"] != "")
-        files.push_back(c.detail["minimal"]["mesh"].is_string() ? c.detail["minimal"]["mesh"].get<std::string>() : "");
+    add_minimal_mesh(c.detail, files);
+    for (const RunRecord& r : c.runs) add_minimal_mesh(r.detail, files);
     for (const std::string& file : files) {
         const std::filesystem::path rel(file);
         const bool inside = !file.empty() && rel.is_relative() &&

@@ -12,6 +12,7 @@
 /// invalid mesh, ...; a subject's timeout too); a subject compared with no reference keeps
 /// following no named rule.
 
+#include <limits>
 #include <string>
 
 #include "crossdiv/mesh/poly_mesh.h"
@@ -58,6 +59,16 @@ struct ShrinkResult {
     PolyMesh minimal;               ///< after delta debugging
     RefinementComparison minimal_comparison;
     int tests = 0;  ///< comparisons run while shrinking
+    /// The time limit ended the shrinking before every face was tried: `minimal` still shows
+    /// the symptom, but removing one more face might not make it go away.
+    bool cut_short = false;
+};
+
+/// How long shrinking may take: past it no further candidate is tried (a candidate running
+/// then finishes, under the request's own time limit) and the smallest mesh found so far that
+/// shows the symptom is the result.
+struct ShrinkLimits {
+    double seconds = std::numeric_limits<double>::infinity();
 };
 
 /// Shrinks the symptom of the comparison of `mesh` under any scheme. The neighbourhood's
@@ -66,7 +77,8 @@ struct ShrinkResult {
 /// @param request at most one reference; none only with a subject (whose failure or lack of a
 ///        named rule is then shrunk). @throws InputError if the comparison of the input shows
 ///        no symptom (nothing to shrink), core refuses it, or for bad input.
-ShrinkResult shrink_divergence(const PolyMesh& mesh, const std::string& name, const RefinementRequest& request);
+ShrinkResult shrink_divergence(const PolyMesh& mesh, const std::string& name, const RefinementRequest& request,
+                               const ShrinkLimits& limits = {});
 
 /// The polygons of `mesh` listed in `faces`, with unused vertices dropped (order kept) but for
 /// `also_vertices`, kept though no kept face uses them; the crease and corner tags of the kept

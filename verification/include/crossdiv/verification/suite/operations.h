@@ -69,4 +69,15 @@ nlohmann::json operations_json();
 /// @throws InputError naming the unknown operation and the known ones.
 const SuiteOperation& find_operation(std::string_view name);
 
+/// The rule a comparison case refines `input` by: for a scheme other than Loop, the one its
+/// tags ask for under the case's keys (a `none` boundary tags `input`'s boundary faces as
+/// holes); the texture coordinates' rule (the case's fvar=, the file's tag, or all of them)
+/// where the input has some. What the tags resolved to goes into `notes`.
+void resolve_input_rules(RefinementRequest& req, const ManifestEntry& entry, PolyMesh& input,
+                         std::vector<std::string>& notes);
+
+/// The `crossdiv compare` line that runs `req`'s comparison of `mesh_file` against one
+/// reference: what a minimal mesh is listed with, to reproduce it.
+std::string compare_command(const RefinementRequest& req, const std::string& mesh_file, const std::string& reference);
+
 }  // namespace crossdiv::verification

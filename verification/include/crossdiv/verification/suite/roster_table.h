@@ -42,7 +42,7 @@ struct RosterRow {
     int unexplained = 0;                    ///< reference runs that diverge from it unexplained
     std::string failing_case;               ///< the id of the first case it fails
     std::string failing_input;              ///< that case's input
-    /// That case shrunk with the subject alone (suite/subject_shrink.h): the minimal mesh's
+    /// That case shrunk with the subject alone (suite/failure_shrink.h): the minimal mesh's
     /// path in the output folder, its faces and the symptom it keeps; or why it was not shrunk.
     std::string minimal_input, minimal_symptom, minimal_note;
     int minimal_faces = 0;
