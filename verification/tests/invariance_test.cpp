@@ -518,6 +518,20 @@ TEST(InvarianceCause, AReferencesFindingIsClassedByWhatRemovesIt) {
     }
 }
 
+// A file of points and no face (Assimp's testpoints.obj): whatever an implementation makes of its
+// vertices differs only at vertices no face uses, and nothing is left once they are removed.
+TEST(InvarianceCause, AMeshWithoutFacesIsIsolatedVertexHandlingWithoutARun) {
+    PolyMesh points;
+    points.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+    InvarianceCheck finding;
+    finding.transformation = InputTransformation::Translate;
+    finding.result = InvarianceResult::NotInvariant;
+    const InvarianceCause c = explain_not_invariant(find_implementation("core"), points, {Scheme::CatmullClark, {}, 2},
+                                                    finding, 1, 1e-12, 60, true);
+    EXPECT_EQ(c.cls, DivergenceClass::IsolatedVertexHandling) << c.why;
+    EXPECT_EQ(c.why, "the input has no faces: all 3 of its vertices are ones no face uses");
+}
+
 // VTK's Butterfly: on a lone triangle and on the bowtie of two, a loop of three boundary edges
 // whose four-point rule it gives an outer point that does not move with the mesh.
 TEST(InvarianceCause, VtksButterflyOnABoundaryLoopOfThreeEdgesIsAShortBoundaryLoop) {

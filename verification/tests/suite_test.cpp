@@ -723,6 +723,23 @@ TEST(Shrink, PastItsTimeLimitItTriesNothingMoreAndSaysSo) {
     EXPECT_EQ(unlimited.minimal.num_faces(), 1);
 }
 
+TEST(Shrink, AFailureAtIsolatedVerticesKeepsOneOfThemAndOneFace) {
+    CROSSDIV_REQUIRE_LIBRARIES("cgal");
+    // CGAL's Loop crashes (signal 11) on a mesh with a vertex no face uses. Three such vertices
+    // beside the edge case's faces: shrinking removes faces while keeping them all, then the
+    // two the crash does not need.
+    PolyMesh m = datasets::edge_case("isolated-vertex").mesh;
+    m.positions.push_back(Vec3(7, 7, 7));
+    m.positions.push_back(Vec3(-7, 7, 7));
+    RefinementRequest req = against("cgal", {LoopWeights::Loop, LoopBoundary::EdgeOnly}, 1);
+    const ShrinkResult r = shrink_divergence(m, "isolated-vertices", req);
+    EXPECT_EQ(r.symptom.kind, ShrinkSymptom::Kind::ReferenceFails);
+    EXPECT_EQ(r.symptom.status, RunStatus::Crashed);
+    EXPECT_EQ(r.minimal.num_faces(), 1);
+    EXPECT_EQ(r.minimal.num_vertices(), 4);  // the triangle's three and one no face uses
+    EXPECT_EQ(symptom_of(r.minimal_comparison), r.symptom);
+}
+
 TEST(Shrink, APolygonSchemeThatAgreesHasNothingToShrink) {
     CROSSDIV_REQUIRE_LIBRARIES("opensubdiv");
     EXPECT_THROW(shrink_divergence(datasets::bundled_mesh("open-patch"), "open-patch",
@@ -749,6 +766,17 @@ TEST(Shrink, APolygonSubmeshKeepsTheTagsOfWhatItKeeps) {
     EXPECT_EQ(s.creases.edges, (std::vector<SharpEdge>{{0, 3, 2.5f}, {1, 2, 10.0f}}));
     EXPECT_EQ(s.creases.vertices, (std::vector<SharpVertex>{{2, 1.0f}}));
     EXPECT_EQ(s.creases.method, CreaseMethod::Chaikin);
+    // Texture coordinates: value k at (k, 0); the faces use values 0 1 2 3, then 4 4 6 7 (value
+    // 5 unused), then 6 7 9 8. Faces 1 and 2 keep values 4 6 7 8 9, renumbered 0..4 in order.
+    FaceVaryingChannel uv;
+    for (int k = 0; k < 10; ++k) uv.values.insert(uv.values.end(), {double(k), 0.0});
+    uv.corner_values = {0, 1, 2, 3, 4, 4, 6, 7, 6, 7, 9, 8};
+    m.face_varying = {uv};
+    const PolyMesh t = submesh(m, {1, 2});
+    ASSERT_EQ(t.face_varying.size(), 1u);
+    EXPECT_EQ(t.face_varying[0].values, (std::vector<double>{4, 0, 6, 0, 7, 0, 8, 0, 9, 0}));
+    EXPECT_EQ(t.face_varying[0].corner_values, (std::vector<int>{0, 0, 1, 2, 1, 2, 4, 3}));
+    EXPECT_NO_THROW(check_face_varying(t));
 }
 
 TEST(Bench, EveryImplementationMakesTheSameOutputSize) {

@@ -561,7 +561,12 @@ InvarianceCause explain_not_invariant(const Implementation& impl, const PolyMesh
     for (size_t f = 0; f < all_faces.size(); ++f) all_faces[f] = static_cast<int>(f);
     const PolyMesh used = submesh(input, all_faces);  // drops the vertices no face uses
     const int isolated = input.num_vertices() - used.num_vertices();
-    if (isolated > 0 && used.num_faces() > 0 && invariant_on(used))
+    // Points and no face (a point cloud among real models): every vertex is one no face uses,
+    // so that is all that can differ, and removing them leaves nothing to run.
+    if (isolated > 0 && used.num_faces() == 0)
+        return {DivergenceClass::IsolatedVertexHandling,
+                "the input has no faces: all " + std::to_string(isolated) + " of its vertices are ones no face uses"};
+    if (isolated > 0 && invariant_on(used))
         return {DivergenceClass::IsolatedVertexHandling,
                 "invariant once its " + std::to_string(isolated) + " vertices no face uses are removed"};
     std::vector<int> nonmanifold;

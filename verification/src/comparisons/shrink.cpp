@@ -109,8 +109,9 @@ std::vector<int> ring_faces(const PolyMesh& m, const std::vector<int>& seeds, in
     return faces;
 }
 
-/// The vertices no face uses. Shrinking keeps them in every candidate: an isolated vertex is
-/// what some references fail on (CGAL's Loop), and removing faces never makes one.
+/// The vertices no face uses. Shrinking keeps them while it removes faces (an isolated vertex
+/// is what some references fail on: CGAL's Loop, and removing faces never makes one), then
+/// removes those the symptom does not need.
 std::vector<int> unused_vertices(const PolyMesh& m) {
     std::vector<char> used(static_cast<size_t>(m.num_vertices()), 0);
     for (int v : m.face_vertices) used[static_cast<size_t>(v)] = 1;
@@ -144,10 +145,16 @@ template <class StillShows, class OutOfTime>
 PolyMesh shrink_faces(const PolyMesh& neighbourhood, StillShows&& shows, OutOfTime&& out_of_time) {
     std::vector<int> all(static_cast<size_t>(neighbourhood.num_faces()));
     std::iota(all.begin(), all.end(), 0);
-    const std::vector<int> isolated = unused_vertices(neighbourhood);
+    std::vector<int> isolated = unused_vertices(neighbourhood);
     const std::vector<int> faces = ddmin(std::move(all), [&](const std::vector<int>& keep) {
         return !out_of_time() && shows(submesh(neighbourhood, keep, isolated));
     });
+    // Then the isolated vertices the symptom does not need (a model may have hundreds): ddmin
+    // over them with the faces found, keeping at least one, as ddmin keeps at least one face.
+    if (isolated.size() > 1)
+        isolated = ddmin(std::move(isolated), [&](const std::vector<int>& keep) {
+            return !out_of_time() && shows(submesh(neighbourhood, faces, keep));
+        });
     return submesh(neighbourhood, faces, isolated);
 }
 
@@ -265,13 +272,24 @@ PolyMesh submesh(const PolyMesh& mesh, const std::vector<int>& faces, const std:
         for (HierarchicalEdit e : mesh.creases.edits)
             if ((e.face = renumbered[static_cast<size_t>(e.face)]) >= 0) out.creases.edits.push_back(std::move(e));
     }
-    // Face-varying channels: every value kept (the indices stay valid), the kept faces' corners.
+    // Face-varying channels: the values the kept faces' corners use, in their order, renumbered
+    // (a minimal mesh of a textured model would otherwise carry all of its thousands of values).
     for (const FaceVaryingChannel& ch : mesh.face_varying) {
-        FaceVaryingChannel& kept = out.face_varying.emplace_back(ch);
-        kept.corner_values.clear();
+        FaceVaryingChannel& kept = out.face_varying.emplace_back();
+        kept.name = ch.name;
+        kept.dimension = ch.dimension;
+        std::vector<int> value_remap(static_cast<size_t>(ch.num_values()), -1);
         for (int f : faces)
-            kept.corner_values.insert(kept.corner_values.end(), ch.corner_values.begin() + mesh.face_start[f],
-                                      ch.corner_values.begin() + mesh.face_start[f + 1]);
+            for (int c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) value_remap[static_cast<size_t>(ch.corner_values[c])] = 0;
+        int next = 0;
+        for (int i = 0; i < ch.num_values(); ++i)
+            if (value_remap[static_cast<size_t>(i)] == 0) {
+                value_remap[static_cast<size_t>(i)] = next++;
+                kept.values.insert(kept.values.end(), ch.value(i), ch.value(i) + ch.dimension);
+            }
+        for (int f : faces)
+            for (int c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c)
+                kept.corner_values.push_back(value_remap[static_cast<size_t>(ch.corner_values[c])]);
     }
     out.creases.face_varying = mesh.creases.face_varying;
     out.creases.method = mesh.creases.method;

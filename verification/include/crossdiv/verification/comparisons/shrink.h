@@ -3,8 +3,8 @@
 /// Shrinking a disagreement to a small mesh that still shows it, for every scheme: the
 /// neighbourhood of the worst vertex (the smallest k-ring of its coarse ancestors that still shows the symptom),
 /// then delta debugging over faces (Zeller and Hildebrandt, "Simplifying and Isolating
-/// Failure-Inducing Input", IEEE TSE 2002: ddmin, removing complements) while the symptom
-/// persists unchanged.
+/// Failure-Inducing Input", IEEE TSE 2002: ddmin, removing complements), then over the
+/// vertices no face uses, while the symptom persists unchanged.
 ///
 /// The symptom is read off the comparison of the whole input: a reference that diverges from
 /// the implementation under test (core, or a subject in core's place) keeps its divergence
@@ -83,7 +83,8 @@ ShrinkResult shrink_divergence(const PolyMesh& mesh, const std::string& name, co
 /// The polygons of `mesh` listed in `faces`, with unused vertices dropped (order kept) but for
 /// `also_vertices`, kept though no kept face uses them; the crease and corner tags of the kept
 /// vertices, the holes among the kept faces, the hierarchical edits of the kept faces
-/// (renumbered) and the file's scheme options come along.
+/// (renumbered), the face-varying values their corners use (renumbered, order kept) and the
+/// file's scheme options come along.
 PolyMesh submesh(const PolyMesh& mesh, const std::vector<int>& faces, const std::vector<int>& also_vertices = {});
 
 }  // namespace crossdiv::verification
