@@ -70,8 +70,10 @@ def read_obj(path):
                 counts = [int(c) for c in words[2].split("/")]
                 ints, floats = words[3:3 + counts[0]], words[3 + counts[0]:3 + counts[0] + counts[1]]
                 creases.append((int(ints[0]), int(ints[1]), float(floats[0])))
-    if not vertices or not faces:
+    if not vertices:
         # Another format (an OFF file read as OBJ) would otherwise refine to nothing, exit 0.
+        # Vertices without a face are a mesh (a point cloud among real models): Blender holds
+        # them as loose vertices, and what its modifier makes of them is compared.
         raise ValueError(f"{len(vertices)} vertices and {len(faces)} faces: not an OBJ mesh")
     for f, face in enumerate(faces):
         for v in face:

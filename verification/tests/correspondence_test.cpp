@@ -174,6 +174,16 @@ TEST(Correspondence, ATriangleAndItsReversedCopyAtOnePlaceAreToldApartByTheirCor
     const Correspondence c = match_nearest_and_faces(ours, ref);
     ASSERT_EQ(c.method, MatchMethod::NearestAndFaces) << c.note;
     EXPECT_EQ(c.ref_to_ours, perm);
+    // A float reference, and our copies 1e-7 apart (a model's two overlapping surfaces), which
+    // a float cannot tell apart: its rounding (here 0.8e-7 towards the other copy) puts each of
+    // its vertices nearer our other copy. At the default copy distance that one-to-one match by
+    // position is taken, every copy swapped; at the float tolerance the faces decide.
+    for (int i = 3; i < 6; ++i) ours.positions[i] += Vec3(1e-7, 0, 0);
+    for (int i = 0; i < 6; ++i) ref.positions[i] = ours.positions[perm[i]] + Vec3(perm[i] < 3 ? 0.8e-7 : -0.8e-7, 0, 0);
+    const Correspondence in_float = match_nearest_and_faces(ours, ref, 1e-6);
+    ASSERT_EQ(in_float.method, MatchMethod::NearestAndFaces) << in_float.note;
+    EXPECT_EQ(in_float.ref_to_ours, perm);
+    EXPECT_NE(match_nearest_and_faces(ours, ref).ref_to_ours, perm);
 }
 
 /// A birth in terms that do not depend on how the level numbers its edges and its copies of

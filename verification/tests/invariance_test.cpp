@@ -132,13 +132,16 @@ TEST(InputTransformation, ComponentsByHand) {
     ASSERT_EQ(parts[0].creases.vertices.size(), 1u);
     EXPECT_EQ(parts[0].creases.vertices[0].v, 3);
     EXPECT_TRUE(parts[0].creases.edges.empty());
-    EXPECT_EQ(parts[0].face_varying[0].corner_values, (std::vector<int>{0, 1, 2, 6, 7, 8}));
+    // The texture coordinates its corners use, renumbered in order.
+    EXPECT_EQ(parts[0].face_varying[0].corner_values, (std::vector<int>{0, 1, 2, 3, 4, 5}));
+    EXPECT_EQ(parts[0].face_varying[0].values, (std::vector<double>{10, 11, 12, 16, 17, 18}));
     // The second: face 1 alone, its crease renumbered.
     EXPECT_EQ(parts[1].face_vertices, (std::vector<int>{0, 1, 2}));
     ASSERT_EQ(parts[1].creases.edges.size(), 1u);
     EXPECT_EQ(parts[1].creases.edges[0].a, 1);
     EXPECT_EQ(parts[1].creases.edges[0].b, 2);
-    EXPECT_EQ(parts[1].face_varying[0].corner_values, (std::vector<int>{3, 4, 5}));
+    EXPECT_EQ(parts[1].face_varying[0].corner_values, (std::vector<int>{0, 1, 2}));
+    EXPECT_EQ(parts[1].face_varying[0].values, (std::vector<double>{13, 14, 15}));
     // A connected mesh is its own only part; components and level-by-level leave the input as it is.
     EXPECT_EQ(connected_components(datasets::bundled_mesh("icosahedron")).size(), 1u);
     for (InputTransformation t : {InputTransformation::SplitComponents, InputTransformation::LevelByLevel}) {

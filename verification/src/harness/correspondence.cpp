@@ -336,17 +336,10 @@ std::string match_next_level(const std::vector<int>& prev, const PolyMesh& our_c
     return "";
 }
 
-/// How far apart, relative to the mesh's bounding-box diagonal, two vertices at one place may
-/// lie: a tenth of the weak tier's agreement tolerance (1e-12), so that two vertices it could
-/// not tell apart by position anyway are told apart by their faces. Two sums of the same
-/// neighbours in another order differ by a few units in the last place: about 1e-15 of the
-/// diagonal on the corpus's models.
-constexpr double kCopyDistance = 1e-13;
-
 /// Copies of a vertex at one place: two points whose distances from a third, the nearer
-/// `d2_near` and the other `d2`, squared, differ by at most `tie` (kCopyDistance of the mesh's
-/// size). Two implementations that sum a vertex's neighbours in another order put it an ulp or
-/// two apart: such copies must not be told apart by position.
+/// `d2_near` and the other `d2`, squared, differ by at most `tie` (the copy distance times the
+/// mesh's size). Two implementations that sum a vertex's neighbours in another order put it an
+/// ulp or two apart: such copies must not be told apart by position.
 bool same_place(double d2, double d2_near, double tie) { return std::sqrt(d2) <= std::sqrt(d2_near) + tie; }
 
 /// Our vertices at one place with the nearest to `at` (at squared distance `d2`), at most 8.
@@ -456,9 +449,9 @@ Correspondence match_nearest(const std::vector<Vec3>& ours, const std::vector<Ve
     return c;
 }
 
-Correspondence match_nearest_and_faces(const PolyMesh& ours, const PolyMesh& ref) {
+Correspondence match_nearest_and_faces(const PolyMesh& ours, const PolyMesh& ref, double copy_distance) {
     Correspondence c = match_nearest(ours.positions, ref.positions);
-    if (c.method != MatchMethod::None || ours.num_vertices() != ref.num_vertices()) return c;
+    if (ours.num_vertices() != ref.num_vertices()) return c;
     const std::string nearest_failed = c.note;
     const size_t n = ref.positions.size();
 
@@ -471,7 +464,7 @@ Correspondence match_nearest_and_faces(const PolyMesh& ours, const PolyMesh& ref
     // A reference vertex with two of ours as near (copies of a vertex at one place: a seam cut
     // open, a duplicate face's corners; as near up to `tie`) is placed by the faces alone: by
     // position it would take either copy, and the wrong one blocks the faces around both.
-    const double tie = kCopyDistance * bounding_box_diagonal(ours.positions);
+    const double tie = copy_distance * bounding_box_diagonal(ours.positions);
     std::vector<char> tied(n, 0);
     for (size_t i = 0; i < n; ++i) {
         unsigned two[2] = {0, 0};
@@ -481,6 +474,10 @@ Correspondence match_nearest_and_faces(const PolyMesh& ours, const PolyMesh& ref
         d2[i] = two_d2[0];
         tied[i] = found == 2 && same_place(two_d2[1], two_d2[0], tie);
     }
+    // One to one by position, with no copies to confuse it: done. With copies, a one-to-one
+    // match by position may still have taken the wrong copy of each (their distances differ
+    // by rounding only): the faces decide.
+    if (c.method != MatchMethod::None && std::find(tied.begin(), tied.end(), 1) == tied.end()) return c;
     std::vector<int> order(n);
     std::iota(order.begin(), order.end(), 0);
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return d2[a] < d2[b]; });
@@ -557,7 +554,10 @@ Correspondence match_nearest_and_faces(const PolyMesh& ours, const PolyMesh& ref
     }
     if (left_ref.size() == 1 && left_ours.size() == 1) map[left_ref[0]] = left_ours[0];
     else if (!left_ref.empty()) {
-        c.note = nearest_failed + "; " + std::to_string(left_ref.size()) + " vertices left unplaced by the faces";
+        // The faces could not place every copy: a one-to-one match by position stands, with
+        // the note; none is none.
+        c.note = (c.method != MatchMethod::None ? "copies at one place matched by position" : nearest_failed) + "; " +
+                 std::to_string(left_ref.size()) + " vertices left unplaced by the faces";
         return c;
     }
     c.method = MatchMethod::NearestAndFaces;

@@ -34,6 +34,10 @@ struct Correspondence {
     std::string note;              ///< why a stronger method failed, when it did
 };
 
+/// How far apart, relative to the bounding-box diagonal, match_nearest_and_faces takes two of
+/// our vertices to be copies at one place, by default.
+constexpr double kCopyDistance = 1e-13;
+
 /// Nearest-neighbour matching of `ref` onto `ours` (k-d tree); method None unless bijective.
 Correspondence match_nearest(const std::vector<Vec3>& ours, const std::vector<Vec3>& ref);
 
@@ -43,7 +47,13 @@ Correspondence match_nearest(const std::vector<Vec3>& ours, const std::vector<Ve
 /// face with that edge has it at the same place (repeated while that places more), then a single leftover pair is
 /// paired. So a divergence confined to a few vertices is measured, not lost to matching.
 /// Method None unless this gives a bijection.
-Correspondence match_nearest_and_faces(const PolyMesh& ours, const PolyMesh& ref);
+///
+/// Two of our vertices within `copy_distance` of the diagonal of each other are copies at one
+/// place, told apart by their faces alone (a face all of whose corners are copies, by its
+/// corners' cyclic order). The default is a tenth of the weak tier's agreement tolerance:
+/// two sums of the same neighbours in another order differ by a few units in the last place.
+/// A float reference passes its tolerance: it cannot tell apart vertices closer than that.
+Correspondence match_nearest_and_faces(const PolyMesh& ours, const PolyMesh& ref, double copy_distance = kCopyDistance);
 
 /// Matches a reference's levels to ours level by level from provenance alone, for the
 /// primal schemes (a triangle split into four: Loop, the Butterflies; an n-gon into n quads:
