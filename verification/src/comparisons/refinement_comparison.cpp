@@ -391,6 +391,10 @@ bool only_short_boundary_loops_differ(const std::string& reference, const PolyMe
     return true;
 }
 
+/// The reference whose non-manifold rules core takes (NonManifoldRule::OpenSubdiv): its
+/// difference from core at a non-manifold vertex is never non-manifold-handling.
+constexpr std::string_view kNonManifoldRulesOwner = "opensubdiv";
+
 /// Whether core refines a non-manifold input of `scheme` by OpenSubdiv's rules under `rule`.
 bool takes_nonmanifold_rules(Scheme scheme, const SchemeRule& rule) {
     if (scheme == Scheme::Loop) return rule.loop.nonmanifold == NonManifoldRule::OpenSubdiv;
@@ -967,6 +971,9 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
             // differs by more than the tolerance from core under the reference's own rule (the
             // boundary or corner rule it may lack) lies where the non-manifold vertices reach.
             if (!same_faces || !takes_nonmanifold_rules(req.scheme, req.rule) || !primal) return std::nullopt;
+            // Those rules are OpenSubdiv's: where OpenSubdiv itself differs, core does not follow
+            // them, and no named handling of the reference's excuses that.
+            if (ref.name() == kNonManifoldRulesOwner) return std::nullopt;
             const bool own_rule = !applied_rule || same_rule(req.scheme, run.ran_with, *applied_rule);
             // (Measured against the requested rule when core has the reference's only for manifolds.)
             const CoreRun* with = own_rule ? nullptr : core_with_reference_rule();
