@@ -336,9 +336,9 @@ std::string match_next_level(const std::vector<int>& prev, const PolyMesh& our_c
     return "";
 }
 
-/// Copies of a vertex at one place: two points whose distances from a third, the nearer
-/// `d2_near` and the other `d2`, squared, differ by at most `tie` (the copy distance times the
-/// mesh's size). Two implementations that sum a vertex's neighbours in another order put it an
+/// Copies of a vertex at one place: two points whose distances from a third (given squared:
+/// the nearer `d2_near`, the other `d2`) differ by at most `tie` (the copy distance times the
+/// mesh's diagonal). Two implementations that sum a vertex's neighbours in another order put it an
 /// ulp or two apart: such copies must not be told apart by position.
 bool same_place(double d2, double d2_near, double tie) { return std::sqrt(d2) <= std::sqrt(d2_near) + tie; }
 

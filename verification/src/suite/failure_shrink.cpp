@@ -160,11 +160,11 @@ void shrink_failures(const std::vector<SuiteJob>& jobs, std::vector<CaseRecord>&
     subject_tasks(jobs, records, tasks);
     reference_tasks(jobs, records, tasks);
     if (tasks.empty()) return;
-    std::printf("shrinking %zu failure(s) to minimal meshes (%d at a time; a reference's at most %.0f s each)\n", tasks.size(),
-                std::max(1, std::min<int>(workers, static_cast<int>(tasks.size()))), kReferenceShrinkSeconds);
     // Children, each every workers-th task, each task's result a JSON file the parent reads back:
     // a subject that takes a child down takes only its own record with it.
     workers = std::max(1, std::min<int>(workers, static_cast<int>(tasks.size())));
+    std::printf("shrinking %zu failure(s) to minimal meshes (%d at a time; a reference's at most %.0f s each)\n", tasks.size(),
+                workers, kReferenceShrinkSeconds);
     const fs::path scratch = fs::path(out_dir) / "minimal";
     create_output_folder(scratch.string());
     const auto result_file = [&](size_t t) { return scratch / ("task" + std::to_string(t) + ".json"); };
