@@ -205,6 +205,52 @@ TEST(NonManifold, AFaceNamingAVertexTwiceHasADegenerateEdgeAndTwoInstancesOfAPai
                  NonManifoldInput);
 }
 
+TEST(NonManifold, TheChildOfASharpenedVertexStaysSharpWhereItsFacesLookManifold) {
+    // A triangle naming vertex 1 twice: vertex 2 ends the two instances of the pair {1, 2}
+    // (non-manifold edges) and is sharpened, a corner. Its child at level 1 lies in one quad
+    // with two boundary edges, a plain corner, which the edge-only rule would move by the
+    // boundary mask (3/4 of it, 1/8 of each neighbour); it inherits the infinite sharpness
+    // instead (Far's vertex sharpness), so it stays at every level. Shrunk from a Sweet Home
+    // 3D model, where the vertex ends beside an unused one.
+    PolyMesh m;
+    m.positions = {Vec3(9, 9, 9), Vec3(0, 0, 0), Vec3(4, 0, 1)};
+    m.add_face({1, 2, 1});
+    const CatmullClarkOptions cc{CatmullClarkBoundary::EdgeOnly};
+    for (int levels = 1; levels <= 3; ++levels) {
+        const PolyMesh r = catmull_clark_subdivide(m, cc, levels);
+        EXPECT_EQ(r.positions[2], m.positions[2]) << levels;
+        EXPECT_EQ(r.positions[0], m.positions[0]) << levels;  // the unused vertex stays too
+    }
+    // Level 1 alone shows nothing: there the vertex is still the parent's corner.
+    const PolyMesh l1 = catmull_clark_subdivide(m, cc, 1);
+    // Read again as a base level (its faces only), the child is a plain corner and moves:
+    // what a refinement that recomputes the tags per level did.
+    PolyMesh faces_only = l1;
+    faces_only.derived = {};
+    const PolyMesh from_l1 = catmull_clark_subdivide(faces_only, cc, 1);
+    EXPECT_EQ(from_l1.positions[2], 0.75 * l1.positions[2] + 0.125 * (l1.positions[4] + l1.positions[5]));
+}
+
+TEST(NonManifold, TheHalvesOfANonManifoldEdgeStaySharpWhereTwoFacesShareThemTheManifoldWay) {
+    // Triangle 0 names the pair {0, 1} twice; triangle 1 joins the first instance the other
+    // way. That instance is non-manifold (forced: its face names it twice) though two faces
+    // traverse it oppositely, and so are its halves at level 1, where they look manifold:
+    // they stay sharp: their level-2 points are their midpoints (the pair's ends are corners,
+    // its point the crease's midpoint), as in Far.
+    PolyMesh m;
+    m.positions = {Vec3(0, 0, 0), Vec3(4, 0, 0.8), Vec3(2, 4, 0), Vec3(1.2, -4, 1.6)};
+    m.add_face({0, 1, 0});
+    m.add_face({1, 0, 3});
+    const PolyMesh r = loop_subdivide(m, kLoopEdge, 2);
+    // At 3/4 of the pair from vertex 0: the point of the half at vertex 1 of each instance
+    // (the second instance's halves are boundary edges); nothing else lands there. A smooth
+    // half would take 1/8 of each opposite vertex, one of them off the pair's line.
+    const Vec3 three_quarters = 0.25 * m.positions[0] + 0.75 * m.positions[1];
+    EXPECT_EQ(std::count_if(r.positions.begin(), r.positions.end(),
+                            [&](const Vec3& p) { return (p - three_quarters).norm() < 1e-15; }),
+              2);
+}
+
 TEST(NonManifold, SharpnessTagsOnANonManifoldMeshAreRefused) {
     PolyMesh tagged = book3();
     tagged.creases.edges.push_back({0, 2, 2.0f});

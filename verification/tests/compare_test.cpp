@@ -6,6 +6,7 @@
 
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/datasets/edge_cases.h"
+#include "crossdiv/subdiv/nonmanifold.h"
 #include "crossdiv/verification/comparisons/classification.h"
 #include "crossdiv/verification/comparisons/refinement_comparison.h"
 #include "crossdiv/verification/harness/correspondence.h"
@@ -245,6 +246,100 @@ TEST(Compare, NonManifoldRulesMoveOnlyVerticesTheirReachMarks) {
     EXPECT_GT(outside, 0);
     EXPECT_GT(moved_inside, 0);
     EXPECT_TRUE(nonmanifold_reach(level_view(core_implementation().refine(fixed, {Scheme::Loop, SchemeRule{}, 2}))).empty());
+}
+
+/// Vertex 0 (X) in three faces: a = (1 2 0 3) and c = (2 7 4 0) on either side of (3 0 4 5 0 6),
+/// which names X twice, not in a row. Across X's edges 0-2, 0-3 and 0-4 the three faces close a
+/// fan; the corner (5 0 6) of the middle face is a second fan with two boundary edges. Shrunk
+/// from a Sweet Home 3D model (pedestrianRailing1.obj); `far_quad` adds a quad far away.
+PolyMesh fan_walk_mesh(bool far_quad) {
+    PolyMesh m;
+    m.positions = {Vec3(0, 0, 0),  Vec3(-2, 2, 0), Vec3(0, 2, 0),  Vec3(2, 0, 0),
+                   Vec3(0, -2, 1), Vec3(1, -1, -1), Vec3(-1, -1, -1), Vec3(-2, 0, 0.5)};
+    m.add_face({1, 2, 0, 3});
+    m.add_face({3, 0, 4, 5, 0, 6});
+    m.add_face({2, 7, 4, 0});
+    if (far_quad) {
+        for (const Vec3& p : {Vec3(20, 0, 0), Vec3(22, 0, 0), Vec3(22, 2, 1), Vec3(20, 2, 0)}) m.positions.push_back(p);
+        m.add_face({8, 9, 10, 11});
+    }
+    return m;
+}
+
+SchemeRule edge_only() {
+    SchemeRule r;
+    r.catmull_clark.boundary = CatmullClarkBoundary::EdgeOnly;
+    return r;
+}
+
+TEST(FanWalk, FarsWalkTakesTheTwoFansOfAVertexAFaceNamesTwiceForOne) {
+    // Far's walk (orderVertexFacesAndEdges) starts at X's last boundary edge, 0-6, in the
+    // middle face, but enters that face at X's first corner; it counts five edges by taking
+    // 0-3 twice and never 5-0, so X is manifold to Far. Core finds two fans: a corner.
+    EXPECT_EQ(opensubdiv_walk_accepted_vertices(fan_walk_mesh(false)), (std::vector<int>{0}));
+    EXPECT_EQ(nonmanifold_vertices(fan_walk_mesh(false)), (std::vector<int>{0}));
+    // A bowtie: Far's walk fails (4 edges, 2 faces), as core's fans say; and a vertex ending a
+    // non-manifold edge is Far's by the edge, never by the walk.
+    PolyMesh bowtie;
+    bowtie.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(-1, 0, 0), Vec3(-1, -1, 0)};
+    bowtie.add_face({0, 1, 2});
+    bowtie.add_face({0, 3, 4});
+    EXPECT_EQ(nonmanifold_vertices(bowtie), (std::vector<int>{0}));
+    EXPECT_TRUE(opensubdiv_walk_accepted_vertices(bowtie).empty());
+    PolyMesh repeated;
+    repeated.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+    repeated.add_face({1, 2, 1});
+    EXPECT_TRUE(opensubdiv_walk_accepted_vertices(repeated).empty());
+    EXPECT_TRUE(opensubdiv_walk_accepted_vertices(datasets::bundled_mesh("quad-cube")).empty());
+}
+
+TEST(FanWalk, OpenSubdivRefinesTheVertexByTheRingItsWalkMade) {
+    CROSSDIV_REQUIRE_LIBRARIES("opensubdiv");
+    // Far's ring at X: edges 0-6, 0-3, 0-2, 0-4, 0-3 and faces middle, a, c, middle. Its one
+    // sharp edge (0-6; 5-0 is not in the ring) makes X a dart, the smooth mask of valence 4
+    // (its faces): 1/2 X, 1/16 of each of the first four edges' other ends and of each face
+    // point, the middle face's twice.
+    const PolyMesh m = fan_walk_mesh(false);
+    const PolyMesh far = find_implementation("opensubdiv").refine_last(m, {Scheme::CatmullClark, edge_only(), 1});
+    auto face_point = [&](int f) {
+        Vec3 sum = Vec3::Zero();
+        for (int k = 0; k < m.face_size(f); ++k) sum += m.positions[static_cast<size_t>(m.face(f)[k])];
+        return Vec3(sum / m.face_size(f));
+    };
+    const std::vector<Vec3>& p = m.positions;
+    const Vec3 ring = 0.5 * p[0] + (p[6] + p[3] + p[2] + p[4]) / 16 + (2 * face_point(1) + face_point(0) + face_point(2)) / 16;
+    EXPECT_LT((far.positions[0] - ring).norm(), 1e-15);
+    // Core keeps it (a corner); the comparison names Far's walk.
+    RefinementRequest req;
+    req.scheme = Scheme::CatmullClark;
+    req.rule.catmull_clark.boundary = CatmullClarkBoundary::EdgeOnly;
+    req.levels = 2;
+    req.references = {"opensubdiv"};
+    const RefinementComparison c = compare_refinement(fan_walk_mesh(true), "fan-walk", req);
+    ASSERT_EQ(c.runs.size(), 1u);
+    EXPECT_EQ(c.runs[0].verdict, Verdict::Diverge);
+    EXPECT_EQ(c.runs[0].divergence_class, DivergenceClass::FanWalk) << c.runs[0].explanation;
+    EXPECT_NE(c.runs[0].explanation.find("input vertex 0 "), std::string::npos) << c.runs[0].explanation;
+}
+
+TEST(FanWalk, ADifferenceOutsideTheWalksReachIsNotNamedByIt) {
+    // The quad far away is outside what X reaches in two levels; a vertex moved there leaves
+    // the difference unexplained even though X's reach differs too.
+    const PolyMesh m = fan_walk_mesh(true);
+    const adapters::LevelTrace levels = core_implementation().refine(m, {Scheme::CatmullClark, edge_only(), 2});
+    const std::vector<int> accepted = opensubdiv_walk_accepted_vertices(m);
+    const std::vector<char> reach = reach_of(level_view(levels), accepted);
+    ASSERT_EQ(reach.size(), levels.back().positions.size());
+    EXPECT_FALSE(reach[8]);  // the far quad's first corner
+    EXPECT_TRUE(reach[0]);
+    PolyMesh moved = levels.back();
+    std::vector<int> identity(static_cast<size_t>(moved.num_vertices()));
+    for (int v = 0; v < moved.num_vertices(); ++v) identity[static_cast<size_t>(v)] = v;
+    moved.positions[0] += Vec3(0.1, 0, 0);
+    EXPECT_TRUE(fan_walk_handling(reach, accepted, levels.back(), moved, identity, 1e-12, "opensubdiv", 0.1));
+    moved.positions[8] += Vec3(0.1, 0, 0);
+    EXPECT_FALSE(fan_walk_handling(reach, accepted, levels.back(), moved, identity, 1e-12, "opensubdiv", 0.1));
+    EXPECT_FALSE(fan_walk_handling(reach, {}, levels.back(), levels.back(), identity, 1e-12, "opensubdiv", 0));
 }
 
 }  // namespace

@@ -75,7 +75,7 @@ PolyMesh split_vertex_fans(const PolyMesh& mesh, std::vector<int>* original) {
         }
         out.face_vertices[static_cast<size_t>(c)] = copy;
     }
-    out.corner_edges.clear();
+    out.derived = {};
     return out;
 }
 

@@ -136,7 +136,7 @@ std::vector<PolyMesh> catmull_clark_levels(const PolyMesh& mesh, const CatmullCl
     std::vector<PolyMesh> out;
     out.reserve(static_cast<size_t>(levels) + 1);
     HierarchicalEditWalk walk(mesh);
-    if (!walk.empty() && !mesh.corner_edges.empty())
+    if (!walk.empty() && !mesh.derived.empty())
         throw InputError("hierarchical edits are applied on a manifold refinement only; this level's edges are stated per corner");
     PolyMesh current = mesh;
     current.creases.edits.clear();  // the walk applies them, level by level

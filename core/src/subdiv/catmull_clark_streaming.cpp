@@ -411,7 +411,7 @@ void require_addressable(const Level& l) {
 /// summing to 1), so no partial sum of any level exceeds the input's largest coordinate and
 /// nothing can overflow; catmull_clark_subdivide checks every level of the others.
 bool streamable(const PolyMesh& mesh, int levels) {
-    if (levels <= 0 || !mesh.creases.empty() || !mesh.corner_edges.empty()) return false;
+    if (levels <= 0 || !mesh.creases.empty() || !mesh.derived.empty()) return false;
     constexpr double kLimit = std::numeric_limits<double>::max() / 4;
     const auto small = [](const std::vector<Vec3>& values) {
         for (const Vec3& q : values)

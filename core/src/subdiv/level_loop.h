@@ -42,7 +42,7 @@ PolyMesh refine_levels(const PolyMesh& mesh, int levels, const Step& step) {
 template <class Manifold, class NonManifold>
 PolyMesh with_nonmanifold_rules(const PolyMesh& mesh, NonManifoldRule rule, const Manifold& manifold,
                                 const NonManifold& nonmanifold) {
-    if (!mesh.corner_edges.empty()) return nonmanifold();
+    if (!mesh.derived.empty()) return nonmanifold();
     try {
         return manifold();
     } catch (const NonManifoldInput&) {

@@ -24,12 +24,14 @@ struct GeneralTopology {
     std::vector<int> corner_face, corner_edge;
     std::vector<int> edge_first;                  ///< the corner that numbered each edge
     std::vector<char> edge_sharp;                 ///< boundary or non-manifold: infinitely sharp
+    std::vector<char> edge_nonmanifold;           ///< passed on to the edge's two halves
     std::vector<int> edge_corner_start, edge_corners;      ///< CSR: the half-edges on each edge
     std::vector<int> vertex_corner_start, vertex_corners;  ///< CSR: the corners at each vertex
     std::vector<int> vertex_edge_start, vertex_edges;      ///< CSR: the edges at each vertex
     std::vector<VertexRule> rule;
     std::vector<std::array<int, 2>> crease_ends;  ///< Crease: the other ends of its two sharp edges
     std::vector<char> nonmanifold_vertex;
+    std::vector<char> sharp_vertex;  ///< infinitely sharp: passed on to the vertex's child
     /// Each corner's fan: the corners at its vertex joined across manifold edges, named by
     /// one of them (a root corner). fan_size and fan_open are indexed by the root.
     std::vector<int> corner_fan, fan_size;
@@ -81,6 +83,21 @@ void group(int n, const std::vector<std::pair<int, int>>& items, std::vector<int
     for (const auto& [k, v] : items) values[static_cast<size_t>(fill[static_cast<size_t>(k)]++)] = v;
 }
 
+/// @throws InputError unless `derived` states an edge for each of `nc` corners, a tag for
+///         each of its labels and one for each of `nv` vertices.
+void require_consistent(const DerivedTopology& derived, int nc, int nv) {
+    if (derived.corner_edges.size() != static_cast<size_t>(nc))
+        throw InputError("the mesh states " + std::to_string(derived.corner_edges.size()) + " corner edges for " +
+                         std::to_string(nc) + " corners");
+    for (int label : derived.corner_edges)
+        if (label < 0 || static_cast<size_t>(label) >= derived.nonmanifold_edges.size())
+            throw InputError("the mesh states edge " + std::to_string(label) + " but tags " +
+                             std::to_string(derived.nonmanifold_edges.size()) + " edges");
+    if (derived.sharp_vertices.size() != static_cast<size_t>(nv))
+        throw InputError("the mesh states the sharpness of " + std::to_string(derived.sharp_vertices.size()) +
+                         " vertices for " + std::to_string(nv));
+}
+
 GeneralTopology complete_topology(const PolyMesh& mesh, bool sharpen_corners) {
     GeneralTopology t;
     t.mesh = &mesh;
@@ -104,12 +121,11 @@ GeneralTopology complete_topology(const PolyMesh& mesh, bool sharpen_corners) {
     // face order: a vertex pair is one edge, except that a degenerate pair (a, a) is a new
     // edge at every corner, and so is a pair the edge's last face already uses (a face that
     // names it twice); those are non-manifold.
-    const bool labelled = !mesh.corner_edges.empty();
-    if (labelled && mesh.corner_edges.size() != static_cast<size_t>(nc))
-        throw InputError("the mesh states " + std::to_string(mesh.corner_edges.size()) + " corner edges for " +
-                         std::to_string(nc) + " corners");
+    const DerivedTopology& derived = mesh.derived;
+    const bool labelled = !derived.empty();
+    if (labelled) require_consistent(derived, nc, nv);
     auto key = [&](int c) {
-        if (labelled) return std::pair{mesh.corner_edges[static_cast<size_t>(c)], 0};
+        if (labelled) return std::pair{derived.corner_edges[static_cast<size_t>(c)], 0};
         const int a = t.vertex(c), b = t.vertex(t.next(c));
         return std::pair{std::min(a, b), std::max(a, b)};
     };
@@ -160,8 +176,11 @@ GeneralTopology complete_topology(const PolyMesh& mesh, bool sharpen_corners) {
     }
     group(ne, items, t.edge_corner_start, t.edge_corners);
 
-    // Edge tags: boundary (one face), non-manifold (more than two, or two the same way).
-    std::vector<char> boundary(static_cast<size_t>(ne)), nonmanifold(static_cast<size_t>(ne));
+    // Edge tags: boundary (one face), non-manifold (more than two, or two the same way; on a
+    // refined level, inherited from the parent edge, as Far's child edges take their tags).
+    std::vector<char> boundary(static_cast<size_t>(ne));
+    std::vector<char>& nonmanifold = t.edge_nonmanifold;
+    nonmanifold.resize(static_cast<size_t>(ne));
     t.edge_sharp.resize(static_cast<size_t>(ne));
     std::vector<int> parent(static_cast<size_t>(nc));  // fans: corners at a vertex joined across manifold edges
     std::iota(parent.begin(), parent.end(), 0);
@@ -170,7 +189,9 @@ GeneralTopology complete_topology(const PolyMesh& mesh, bool sharpen_corners) {
         const int h1 = t.edge_corners[static_cast<size_t>(b)];
         const int h2 = n == 2 ? t.edge_corners[static_cast<size_t>(b) + 1] : -1;
         boundary[static_cast<size_t>(e)] = n == 1;
-        nonmanifold[static_cast<size_t>(e)] = forced[static_cast<size_t>(e)] || n > 2 || (n == 2 && t.vertex(h1) == t.vertex(h2));
+        nonmanifold[static_cast<size_t>(e)] =
+            labelled ? derived.nonmanifold_edges[static_cast<size_t>(key(h1).first)] != 0
+                     : forced[static_cast<size_t>(e)] || n > 2 || (n == 2 && t.vertex(h1) == t.vertex(h2));
         t.edge_sharp[static_cast<size_t>(e)] = boundary[static_cast<size_t>(e)] || nonmanifold[static_cast<size_t>(e)];
         if (n == 2 && !nonmanifold[static_cast<size_t>(e)]) {
             parent[static_cast<size_t>(find(parent, h1))] = find(parent, t.next(h2));  // both at h1's vertex
@@ -202,9 +223,12 @@ GeneralTopology complete_topology(const PolyMesh& mesh, bool sharpen_corners) {
     group(nv, items, t.vertex_edge_start, t.vertex_edges);
 
     // Vertex tags and rules (prepareComponentTagsAndSharpness, DetermineVertexVertexRule).
+    // The base level sharpens its non-manifold vertices and corners; a refined level's
+    // vertices keep their parents' sharpness (an edge's or a face's point has none).
     t.rule.assign(static_cast<size_t>(nv), VertexRule::Smooth);
     t.crease_ends.assign(static_cast<size_t>(nv), {-1, -1});
     t.nonmanifold_vertex.assign(static_cast<size_t>(nv), 0);
+    t.sharp_vertex.assign(static_cast<size_t>(nv), 0);
     std::vector<int> root_seen(static_cast<size_t>(nc), -1);
     for (int v = 0; v < nv; ++v) {
         const int faces = t.vertex_corner_start[v + 1] - t.vertex_corner_start[v];
@@ -236,7 +260,9 @@ GeneralTopology complete_topology(const PolyMesh& mesh, bool sharpen_corners) {
         const bool nonmanifold_vertex = nonmanifold_edges > 0 || fans > 1;
         t.nonmanifold_vertex[static_cast<size_t>(v)] = nonmanifold_vertex;
         const bool interior_crease = nonmanifold_edges == 2 && boundary_edges == 0 && faces > edges;
-        const bool sharp = (nonmanifold_vertex && !interior_crease) || (sharpen_corners && faces == 1 && edges == 2);
+        const bool sharp = labelled ? derived.sharp_vertices[static_cast<size_t>(v)] != 0
+                                    : (nonmanifold_vertex && !interior_crease) || (sharpen_corners && faces == 1 && edges == 2);
+        t.sharp_vertex[static_cast<size_t>(v)] = sharp;
         t.rule[static_cast<size_t>(v)] = vertex_rule(sharp ? kSharpnessInfinite : 0.0f, sharp_edges);
         t.crease_ends[static_cast<size_t>(v)] = ends;
     }
@@ -263,6 +289,20 @@ bool add_sharp_vertex_row(StencilTable& st, const GeneralTopology& t, int v) {
     }
 }
 
+/// The refined level's tags, as Far's Refinement passes them on: each edge's two halves
+/// (labels 2e, 2e + 1) non-manifold when it is, the edges inside the faces (the labels
+/// after them, `num_labels` in all) manifold; each vertex's child (the first of the
+/// `num_child_vertices`) sharp when it is, the edge and face points smooth.
+void pass_on_tags(const GeneralTopology& t, int num_child_vertices, int num_labels, DerivedTopology& child) {
+    child.nonmanifold_edges.assign(static_cast<size_t>(num_labels), 0);
+    for (int e = 0; e < t.num_edges(); ++e) {
+        child.nonmanifold_edges[2 * static_cast<size_t>(e)] = t.edge_nonmanifold[static_cast<size_t>(e)];
+        child.nonmanifold_edges[2 * static_cast<size_t>(e) + 1] = t.edge_nonmanifold[static_cast<size_t>(e)];
+    }
+    child.sharp_vertices.assign(static_cast<size_t>(num_child_vertices), 0);
+    std::copy(t.sharp_vertex.begin(), t.sharp_vertex.end(), child.sharp_vertices.begin());
+}
+
 /// Four triangles per triangle (v_k, E(k), E(k-1)) for k = 0, 1, 2, then (E0, E1, E2) --
 /// loop_step's order -- with the refined edges stated per corner: two halves per edge, three
 /// inside the face (i_k opposite corner k's child), so that edges of different faces with the
@@ -270,8 +310,9 @@ bool add_sharp_vertex_row(StencilTable& st, const GeneralTopology& t, int v) {
 void add_triangles(const GeneralTopology& t, int nv, RefinementStep& step) {
     const PolyMesh& mesh = *t.mesh;
     const int nf = mesh.num_faces(), ne = t.num_edges();
+    pass_on_tags(t, nv + ne, 2 * ne + 3 * nf, step.derived);
     step.face_vertices.reserve(12 * static_cast<size_t>(nf));
-    step.corner_edges.reserve(12 * static_cast<size_t>(nf));
+    step.derived.corner_edges.reserve(12 * static_cast<size_t>(nf));
     for (int f = 0; f < nf; ++f) {
         const int c = mesh.face_start[f];
         const int* v = mesh.face(f);
@@ -282,7 +323,7 @@ void add_triangles(const GeneralTopology& t, int nv, RefinementStep& step) {
         step.add_face({v[2], m2, m1});
         step.add_face({m0, m1, m2});
         const int i0 = 2 * ne + 3 * f, i1 = i0 + 1, i2 = i0 + 2;
-        step.corner_edges.insert(step.corner_edges.end(),
+        step.derived.corner_edges.insert(step.derived.corner_edges.end(),
                                  {t.child_half(c, true), i0, t.child_half(c + 2, false),      // v0 m0 m2
                                   t.child_half(c + 1, true), i1, t.child_half(c, false),      // v1 m1 m0
                                   t.child_half(c + 2, true), i2, t.child_half(c + 1, false),  // v2 m2 m1
@@ -351,13 +392,14 @@ RefinementStep loop_nonmanifold_step(const PolyMesh& mesh, const LoopOptions& op
 /// (shared with the next corner's quad).
 void add_quads(const GeneralTopology& t, int nv, int nf, RefinementStep& step) {
     const int nc = static_cast<int>(t.corner_face.size()), ne = t.num_edges(), face_point = nv, edge_point = nv + nf;
+    pass_on_tags(t, nv + nf + ne, 2 * ne + nc, step.derived);
     step.face_vertices.reserve(4 * static_cast<size_t>(nc));
-    step.corner_edges.reserve(4 * static_cast<size_t>(nc));
+    step.derived.corner_edges.reserve(4 * static_cast<size_t>(nc));
     for (int c = 0; c < nc; ++c) {
         const int p = t.prev(c);
         step.add_face({t.vertex(c), edge_point + t.corner_edge[static_cast<size_t>(c)],
                        face_point + t.corner_face[static_cast<size_t>(c)], edge_point + t.corner_edge[static_cast<size_t>(p)]});
-        step.corner_edges.insert(step.corner_edges.end(),
+        step.derived.corner_edges.insert(step.derived.corner_edges.end(),
                                  {t.child_half(c, true), 2 * ne + c, 2 * ne + p, t.child_half(p, false)});
     }
 }
@@ -438,6 +480,78 @@ std::vector<std::array<int, 2>> add_triangle_split(const PolyMesh& mesh, Refinem
 std::vector<std::array<int, 2>> nonmanifold_edges(const PolyMesh& mesh) {
     const GeneralTopology t = complete_topology(mesh, false);
     return edge_ends(t);
+}
+
+namespace {
+
+/// Far's walk around vertex v (Vtr::internal::Level::orderVertexFacesAndEdges) on a base level:
+/// whether it succeeds. Far enters a face at the vertex's (or the edge's) first corner in it,
+/// whichever it came in by (findInArray).
+bool far_walk_succeeds(const GeneralTopology& t, int v) {
+    const PolyMesh& mesh = *t.mesh;
+    const int faces = t.vertex_corner_start[v + 1] - t.vertex_corner_start[v];
+    const int edges = t.vertex_edge_start[v + 1] - t.vertex_edge_start[v];
+    if (faces == 0 || edges < 2 || edges - faces > 1) return false;
+    auto first_corner = [&](int f, auto&& is_it) {
+        for (int c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c)
+            if (is_it(c)) return c;
+        return -1;
+    };
+    auto at_vertex = [&](int f) { return first_corner(f, [&](int c) { return t.vertex(c) == v; }); };
+    auto edge_faces = [&](int e) { return t.edge_corner_start[e + 1] - t.edge_corner_start[e]; };
+    auto edge_face = [&](int e, int k) {
+        return t.corner_face[static_cast<size_t>(t.edge_corners[static_cast<size_t>(t.edge_corner_start[e] + k)])];
+    };
+    int face = -1, edge = -1, corner = -1;
+    if (edges == faces) {  // interior: from the first face
+        face = t.corner_face[static_cast<size_t>(t.vertex_corners[static_cast<size_t>(t.vertex_corner_start[v])])];
+        corner = at_vertex(face);
+        edge = t.corner_edge[static_cast<size_t>(corner)];
+    } else {  // boundary: from the last edge with one face, unless one leaves v along its face
+        for (int k = t.vertex_edge_start[v]; k < t.vertex_edge_start[v + 1]; ++k) {
+            const int e = t.vertex_edges[static_cast<size_t>(k)];
+            if (edge_faces(e) != 1) continue;
+            edge = e;
+            face = edge_face(e, 0);
+            corner = at_vertex(face);
+            if (t.corner_edge[static_cast<size_t>(corner)] == edge) break;
+        }
+        if (face < 0) return false;  // Far reads past its arrays here; take it as a failure
+    }
+    const int first_edge = edge;
+    for (int edges_ordered = 1, faces_ordered = 1; edges_ordered < edges; ++edges_ordered) {
+        const int next = t.corner_edge[static_cast<size_t>(t.prev(corner))];
+        if (next == edge || next == first_edge) return false;
+        if (faces_ordered < faces) {
+            const int n = edge_faces(next);
+            if (n == 0 || (n == 1 && edge_face(next, 0) == face)) return false;
+            face = edge_face(next, edge_face(next, 0) == face ? 1 : 0);
+            corner = first_corner(face, [&](int c) { return t.corner_edge[static_cast<size_t>(c)] == next; });
+            ++faces_ordered;
+        }
+        edge = next;
+    }
+    return true;
+}
+
+}  // namespace
+
+std::vector<int> opensubdiv_walk_accepted_vertices(const PolyMesh& mesh) {
+    if (!mesh.derived.empty()) return {};  // Far walks its base level only
+    const GeneralTopology t = complete_topology(mesh, false);
+    std::vector<char> on_nonmanifold_edge(static_cast<size_t>(mesh.num_vertices()), 0);
+    for (int e = 0; e < t.num_edges(); ++e)
+        if (t.edge_nonmanifold[static_cast<size_t>(e)]) {
+            const int c = t.edge_first[static_cast<size_t>(e)];
+            on_nonmanifold_edge[static_cast<size_t>(t.vertex(c))] = 1;
+            on_nonmanifold_edge[static_cast<size_t>(t.vertex(t.next(c)))] = 1;
+        }
+    std::vector<int> out;
+    for (int v = 0; v < mesh.num_vertices(); ++v)
+        if (t.nonmanifold_vertex[static_cast<size_t>(v)] && !on_nonmanifold_edge[static_cast<size_t>(v)] &&
+            far_walk_succeeds(t, v))
+            out.push_back(v);
+    return out;
 }
 
 std::vector<int> nonmanifold_vertices(const PolyMesh& mesh) {

@@ -62,7 +62,7 @@ PolyMesh apply_step(const RefinementStep& step, const PolyMesh& coarse) {
     out.face_start = step.face_start;
     out.face_vertices = step.face_vertices;
     out.creases = step.creases;
-    out.corner_edges = step.corner_edges;
+    out.derived = step.derived;
     return out;
 }
 

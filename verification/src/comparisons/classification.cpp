@@ -62,8 +62,12 @@ std::vector<char> nonmanifold_reach(const std::vector<const PolyMesh*>& levels) 
     if (levels.empty()) return {};
     PolyMesh base = *levels[0];
     base.creases = {};  // the topology alone
-    const std::vector<int> seeds = nonmanifold_vertices(base);
-    if (seeds.empty()) return {};
+    return reach_of(levels, nonmanifold_vertices(base));
+}
+
+std::vector<char> reach_of(const std::vector<const PolyMesh*>& levels, const std::vector<int>& seeds) {
+    if (levels.empty() || seeds.empty()) return {};
+    const PolyMesh& base = *levels[0];
     std::vector<char> reached(static_cast<size_t>(base.num_vertices()), 0);
     for (int v : seeds) reached[static_cast<size_t>(v)] = 1;
     for (size_t l = 0; l + 1 < levels.size(); ++l) {
@@ -91,39 +95,78 @@ std::vector<char> nonmanifold_reach(const std::vector<const PolyMesh*>& levels) 
     return reached;
 }
 
-std::optional<Classification> nonmanifold_handling(const std::vector<char>& reach, const PolyMesh& ours,
-                                                   const PolyMesh& ref, const std::vector<int>& ref_to_ours,
-                                                   double tolerance, const std::string& reference, double max_rel,
-                                                   const std::string& against) {
+namespace {
+
+/// The vertices of `ours` farther than `tolerance` x its diagonal from their match in `ref`,
+/// when every such vertex that some face uses lies where `reach` marks: how many, and how many
+/// no face uses (isolated-vertex-handling, the other named cause a reference may show beside,
+/// counted apart and never in the reach). Nothing when one lies outside, or the sizes differ.
+struct DifferingInReach {
+    int differing = 0, isolated = 0;
+    long long reached = 0;
+};
+std::optional<DifferingInReach> differing_in_reach(const std::vector<char>& reach, const PolyMesh& ours, const PolyMesh& ref,
+                                                   const std::vector<int>& ref_to_ours, double tolerance) {
     if (reach.size() != static_cast<size_t>(ours.num_vertices()) ||
         ref_to_ours.size() != static_cast<size_t>(ref.num_vertices()))
         return std::nullopt;
     const double diagonal = bounding_box_diagonal(ours.positions);
-    // A vertex no face uses is the other named cause a reference may show beside these
-    // (isolated-vertex-handling): counted apart, never in the reach.
     std::vector<char> used(static_cast<size_t>(ours.num_vertices()), 0);
     for (int v : ours.face_vertices) used[static_cast<size_t>(v)] = 1;
-    int differing = 0, isolated = 0;
+    DifferingInReach out;
     for (size_t i = 0; i < ref_to_ours.size(); ++i) {
         const int v = ref_to_ours[i];
         if (v < 0 || v >= ours.num_vertices()) return std::nullopt;
         if ((ours.positions[static_cast<size_t>(v)] - ref.positions[i]).norm() / diagonal <= tolerance) continue;
         if (!used[static_cast<size_t>(v)]) {
-            ++isolated;
+            ++out.isolated;
             continue;
         }
         if (!reach[static_cast<size_t>(v)]) return std::nullopt;
-        ++differing;
+        ++out.differing;
     }
-    const auto reached = std::count(reach.begin(), reach.end(), 1);
+    out.reached = std::count(reach.begin(), reach.end(), 1);
+    return out;
+}
+
+std::string isolated_too(int isolated) {
+    return isolated ? "; " + std::to_string(isolated) + " vertices no face uses differ too (isolated-vertex-handling)" : "";
+}
+
+}  // namespace
+
+std::optional<Classification> nonmanifold_handling(const std::vector<char>& reach, const PolyMesh& ours,
+                                                   const PolyMesh& ref, const std::vector<int>& ref_to_ours,
+                                                   double tolerance, const std::string& reference, double max_rel,
+                                                   const std::string& against) {
+    const std::optional<DifferingInReach> d = differing_in_reach(reach, ours, ref, ref_to_ours, tolerance);
+    if (!d) return std::nullopt;
     return Classification{DivergenceClass::NonManifoldHandling,
                           reference + " refines the non-manifold vertices by another rule than OpenSubdiv's, which core "
-                          "follows: all " + std::to_string(differing) + " vertices that differ" + against + " (by up to " +
-                          detail::sci(max_rel) + ") lie where they reach (" + std::to_string(reached) + " of " +
-                          std::to_string(ours.num_vertices()) + " vertices)" +
-                          (isolated ? "; " + std::to_string(isolated) + " vertices no face uses differ too "
-                                                                        "(isolated-vertex-handling)"
-                                    : "")};
+                          "follows: all " + std::to_string(d->differing) + " vertices that differ" + against + " (by up to " +
+                          detail::sci(max_rel) + ") lie where they reach (" + std::to_string(d->reached) + " of " +
+                          std::to_string(ours.num_vertices()) + " vertices)" + isolated_too(d->isolated)};
+}
+
+std::optional<Classification> fan_walk_handling(const std::vector<char>& reach, const std::vector<int>& accepted,
+                                                const PolyMesh& ours, const PolyMesh& ref,
+                                                const std::vector<int>& ref_to_ours, double tolerance,
+                                                const std::string& reference, double max_rel) {
+    if (accepted.empty()) return std::nullopt;
+    const std::optional<DifferingInReach> d = differing_in_reach(reach, ours, ref, ref_to_ours, tolerance);
+    if (!d) return std::nullopt;
+    std::string named;
+    for (size_t k = 0; k < accepted.size() && k < 5; ++k) named += (k ? ", " : "") + std::to_string(accepted[k]);
+    if (accepted.size() > 5) named += ", ...";
+    const bool one = accepted.size() == 1;
+    return Classification{DivergenceClass::FanWalk,
+                          reference + "'s walk around input vert" + (one ? "ex " : "ices ") + named +
+                          " (a face names " + (one ? "it" : "each") + " twice, not in a row) takes " + (one ? "its" : "their") +
+                          " fans of faces for one, a manifold vertex refined by a ring with an edge taken twice, where "
+                          "core keeps " + (one ? "it as a non-manifold corner" : "them as non-manifold corners") + ": all " +
+                          std::to_string(d->differing) + " vertices that differ (by up to " + detail::sci(max_rel) +
+                          ") lie where they reach (" + std::to_string(d->reached) + " of " +
+                          std::to_string(ours.num_vertices()) + " vertices)" + isolated_too(d->isolated)};
 }
 
 std::optional<Classification> split_fans_handling(const PolyMesh& input, const PolyMesh& ref,

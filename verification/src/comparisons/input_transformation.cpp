@@ -34,7 +34,7 @@ constexpr std::pair<InputTransformation, const char*> kNames[] = {
 /// stay, face-varying corners follow.
 PolyMesh with_corners_rotated(const PolyMesh& mesh, const std::function<int(int)>& shift) {
     PolyMesh out = mesh;
-    out.corner_edges.clear();
+    out.derived = {};
     for (int f = 0; f < mesh.num_faces(); ++f) {
         const int n = mesh.face_size(f), s = ((shift(f) % n) + n) % n, start = mesh.face_start[f];
         for (int k = 0; k < n; ++k) {
@@ -50,7 +50,7 @@ PolyMesh with_corners_rotated(const PolyMesh& mesh, const std::function<int(int)
 /// Every face's corners in the other order (the first corner stays first).
 PolyMesh with_orientation_reversed(const PolyMesh& mesh) {
     PolyMesh out = mesh;
-    out.corner_edges.clear();
+    out.derived = {};
     for (int f = 0; f < mesh.num_faces(); ++f) {
         const int n = mesh.face_size(f), start = mesh.face_start[f];
         for (int k = 1; k < n; ++k) {
@@ -66,7 +66,7 @@ PolyMesh with_orientation_reversed(const PolyMesh& mesh) {
 /// The vertices renumbered: old vertex v becomes new_index[v]; crease and corner tags follow.
 PolyMesh with_vertices_relabelled(const PolyMesh& mesh, const std::vector<int>& new_index) {
     PolyMesh out = mesh;
-    out.corner_edges.clear();
+    out.derived = {};
     for (size_t v = 0; v < new_index.size(); ++v) {
         out.positions[static_cast<size_t>(new_index[v])] = mesh.positions[v];
         if (!mesh.colors.empty()) out.colors[static_cast<size_t>(new_index[v])] = mesh.colors[v];
@@ -142,7 +142,7 @@ PolyMesh with_face_order(const PolyMesh& mesh, const std::vector<int>& order) {
     PolyMesh out = mesh;
     out.face_start = {0};
     out.face_vertices.clear();
-    out.corner_edges.clear();
+    out.derived = {};
     out.source.face_line.clear();
     for (FaceVaryingChannel& ch : out.face_varying) ch.corner_values.clear();
     std::vector<int> new_index(order.size());

@@ -210,10 +210,10 @@ std::optional<std::string> first_degenerate_face(const PolyMesh& mesh) {
 /// that more than two faces share, and faces naming a vertex twice. The refinement may hold
 /// several edges there (the children of back-to-back faces, each face's own interior edges);
 /// written out and read back, they are one. None when the mesh states its edges
-/// (PolyMesh::corner_edges).
+/// (PolyMesh::derived).
 std::vector<std::string> unstated_edges(const PolyMesh& mesh) {
     std::vector<std::string> out;
-    if (!mesh.corner_edges.empty()) return out;
+    if (!mesh.derived.empty()) return out;
     for (const MeshIssue& issue : check_mesh(mesh))
         if (issue.kind == MeshIssueKind::NonManifoldEdge || issue.kind == MeshIssueKind::RepeatedVertex ||
             issue.kind == MeshIssueKind::TooFewCorners)

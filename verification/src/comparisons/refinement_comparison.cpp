@@ -1,6 +1,7 @@
 #include "crossdiv/verification/comparisons/refinement_comparison.h"
 
 #include "crossdiv/mesh/poly_connectivity.h"
+#include "crossdiv/subdiv/nonmanifold.h"
 #include "crossdiv/verification/comparisons/input_transformation.h"
 #include "crossdiv/verification/comparisons/nondeterminism.h"
 #include "crossdiv/verification/comparisons/shared_topology.h"
@@ -390,10 +391,6 @@ bool only_short_boundary_loops_differ(const std::string& reference, const PolyMe
                   "vertex, the loop's third, which core takes twice and " + reference + " does not";
     return true;
 }
-
-/// The reference whose non-manifold rules core takes (NonManifoldRule::OpenSubdiv): its
-/// difference from core at a non-manifold vertex is never non-manifold-handling.
-constexpr std::string_view kNonManifoldRulesOwner = "opensubdiv";
 
 /// Whether core refines a non-manifold input of `scheme` by OpenSubdiv's rules under `rule`.
 bool takes_nonmanifold_rules(Scheme scheme, const SchemeRule& rule) {
@@ -972,8 +969,22 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
             // boundary or corner rule it may lack) lies where the non-manifold vertices reach.
             if (!same_faces || !takes_nonmanifold_rules(req.scheme, req.rule) || !primal) return std::nullopt;
             // Those rules are OpenSubdiv's: where OpenSubdiv itself differs, core does not follow
-            // them, and no named handling of the reference's excuses that.
-            if (ref.name() == kNonManifoldRulesOwner) return std::nullopt;
+            // them, and no named handling of the reference's excuses that -- save where Far's
+            // walk around a vertex mistakes its two fans for one (nonmanifold.h), measured there.
+            if (ref.capabilities().defines_nonmanifold_rules) {
+                const std::vector<const PolyMesh*> levels = level_view(requested.levels());
+                std::vector<int> accepted;
+                try {
+                    accepted = opensubdiv_walk_accepted_vertices(*levels.at(0));
+                } catch (const InputError&) {
+                    return std::nullopt;  // a level core did not take: nothing of Far's walk to measure
+                }
+                std::optional<Classification> c =
+                    fan_walk_handling(reach_of(levels, accepted), accepted, ours, theirs,
+                                      run.correspondence.ref_to_ours, tolerance, ref.name(), run.comparison.max_rel);
+                if (c) c->explanation += worst;
+                return c;
+            }
             const bool own_rule = !applied_rule || same_rule(req.scheme, run.ran_with, *applied_rule);
             // (Measured against the requested rule when core has the reference's only for manifolds.)
             const CoreRun* with = own_rule ? nullptr : core_with_reference_rule();

@@ -40,6 +40,7 @@ constexpr std::array kClasses = {
     std::pair{DivergenceClass::IsolatedVertexHandling, "isolated-vertex-handling"},
     std::pair{DivergenceClass::ValenceLimit, "valence-limit"},
     std::pair{DivergenceClass::ShortBoundaryLoop, "short-boundary-loop"},
+    std::pair{DivergenceClass::FanWalk, "fan-walk"},
     std::pair{DivergenceClass::Topology, "topology"},
     std::pair{DivergenceClass::Triangulation, "triangulation"},
     std::pair{DivergenceClass::Unexplained, "unexplained"},

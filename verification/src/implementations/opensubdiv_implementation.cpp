@@ -24,7 +24,8 @@ public:
                                                                  true)),
                                       with_face_varying(supports(Scheme::Bilinear, {SchemeRule{}}))},
                           .limit_positions = true,
-                          .limit_surface = true}) {}
+                          .limit_surface = true,
+                          .defines_nonmanifold_rules = true}) {}
 
     adapters::LevelTrace refine(const PolyMesh& mesh, const RefineRequest& r) const override {
         return levels(mesh, r, nullptr);

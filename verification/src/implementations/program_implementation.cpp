@@ -11,6 +11,7 @@
 
 #include "crossdiv/error.h"
 #include "crossdiv/io/mesh_io.h"
+#include "crossdiv/subdiv/nonmanifold.h"
 #include "crossdiv/verification/harness/mesh_topology.h"
 #include "crossdiv/verification/harness/process.h"
 #include "crossdiv/verification/harness/program_server.h"
@@ -298,6 +299,14 @@ std::vector<RefinedCounts> expected_counts(Scheme scheme, const PolyMesh& input,
     }
     const MeshTopology t = mesh_topology(input);
     long v = t.vertices, e = t.edges, f = t.faces, corners = static_cast<long>(input.face_vertices.size());
+    // Edges as OpenSubdiv counts them (nonmanifold.h), the vertex pairs on a manifold: a face
+    // naming a vertex twice has more edges than pairs. Every later level derives its edges per
+    // face, so the recurrence below holds from there.
+    try {
+        e = static_cast<long>(nonmanifold_edges(input).size());
+    } catch (const InputError&) {
+        // A face of fewer than three corners: no rule refines it, and core says so.
+    }
     const bool triangles = all_triangles(input);
     for (int l = 0; l < levels; ++l) {
         if (traits(scheme).triangles) {

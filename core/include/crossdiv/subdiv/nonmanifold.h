@@ -13,10 +13,15 @@
 ///   is one of those, when more than two faces use it, or two faces traverse it in the same
 ///   direction (a duplicate face's edges); a vertex is non-manifold when it ends a
 ///   non-manifold edge, or its faces form more than one fan (a bowtie).
-/// - Vtr::internal::Refinement (child topology): a refined level's edges are derived per
-///   face, never from vertex pairs: two halves per edge, and the edges inside each face.
-///   The steps state them in PolyMesh::corner_edges, so that the edges inside two copies of
-///   a face stay two edges, as in Far.
+/// - Vtr::internal::Refinement (child topology and tags): a refined level's edges are
+///   derived per face, never from vertex pairs: two halves per edge, and the edges inside each
+///   face. The steps state them in PolyMesh::derived, so that the edges inside two copies of a
+///   face stay two edges, as in Far; and with them the tags a child inherits rather than
+///   takes from its own faces: an edge's halves are non-manifold (so infinitely sharp) when
+///   it is, a vertex's child is infinitely sharp when it is. A child can look manifold where
+///   its parent was not -- the vertex a face names twice has a child in one quad, a plain
+///   corner; the edge a face names twice has halves that a neighbour shares the manifold
+///   way -- and keeps its parent's rule there, as in Far.
 /// - Far::TopologyRefinerFactoryBase::prepareComponentTagsAndSharpness: boundary and
 ///   non-manifold edges are infinitely sharp; a non-manifold vertex is infinitely sharp,
 ///   except on an interior non-manifold crease (exactly two non-manifold edges, no boundary
@@ -35,11 +40,9 @@
 ///   VCG's boundary reading when it ends at a sharp edge. On a manifold mesh a vertex has one
 ///   fan and the reading is the manifold one; at a bowtie each fan is refined as if alone,
 ///   which is also what VCG's walk around a vertex sees.
-/// The tags are recomputed at every level from that level's topology (its edges as stated
-/// per corner) rather than inherited as Far does: the children of a non-manifold edge or
-/// vertex are non-manifold in the same way, or (the second edge of a pair a face names twice)
-/// boundary with the same sharp rule, so the rules match; OpenSubdiv agrees to 1e-16 on every
-/// non-manifold case of the edge-case catalog. Semi-sharp crease tags on a non-manifold mesh
+/// The base level's tags come from its topology as above; every refined level's from its
+/// parent (PolyMesh::derived). OpenSubdiv agrees to 1e-16 on every non-manifold case of the
+/// edge-case catalog and on the Sweet Home 3D corpus. Semi-sharp crease tags on a non-manifold mesh
 /// are refused (InputError).
 
 #include <array>
@@ -86,6 +89,20 @@ std::vector<std::array<int, 2>> nonmanifold_edges(const PolyMesh& mesh);
 /// form several fans), ascending: where the rules above differ from a manifold refinement.
 /// @throws InputError as the steps.
 std::vector<int> nonmanifold_vertices(const PolyMesh& mesh);
+
+/// Where OpenSubdiv's implementation departs from the rules above: the vertices of a base
+/// level whose faces form more than one fan (and that end no non-manifold edge) but that Far's
+/// walk around a vertex (Vtr::internal::Level::orderVertexFacesAndEdges, which tags the vertex
+/// non-manifold when it fails) takes for manifold, ascending. The walk steps from a boundary
+/// edge (the vertex's last with one face, unless one leaves the vertex along its face) or from
+/// the first face to the previous edge of the face at the vertex and across it, and fails only
+/// when it comes back to its first or last edge early; it enters a face at the vertex's first
+/// corner in it, whichever corner it came in by. Around a vertex that a face names twice, not
+/// in a row, it can so count the right number of edges by taking one twice and missing
+/// another: Far keeps that vertex manifold with that ring (a dart when the missed edge was
+/// sharp), where the rules above make it a corner. Empty for a refined level.
+/// @throws InputError as the steps.
+std::vector<int> opensubdiv_walk_accepted_vertices(const PolyMesh& mesh);
 
 /// `levels` levels of either; each refined level states its edges per corner.
 PolyMesh loop_subdivide_nonmanifold(const PolyMesh& mesh, const LoopOptions& options, int levels);

@@ -106,7 +106,7 @@ struct RefinementStep {
     std::vector<int> face_start{0};
     std::vector<int> face_vertices;
     CreaseTags creases;  ///< the refined mesh's sharpness tags (schemes with crease rules)
-    std::vector<int> corner_edges;  ///< the refined mesh's explicit edges (PolyMesh::corner_edges), or empty
+    DerivedTopology derived;  ///< what the refined mesh inherits beyond its faces (PolyMesh::derived), or empty
 
     explicit RefinementStep(int num_coarse) : stencils(num_coarse) {}
     void add_face(std::initializer_list<int> corners) {

@@ -20,6 +20,9 @@
 ///                                where no vertex bijection exists, the reference agrees with
 ///                                core on the input with every vertex split into one per fan
 ///                                of faces (split_fans_handling)
+///      fan-walk                  against OpenSubdiv itself, whose rules core takes: every
+///                                vertex that differs lies where the vertices Far's walk takes
+///                                for manifold ones reach (opensubdiv_walk_accepted_vertices)
 ///   6. topology                  a measured difference of the refined connectivity: the
 ///                                counts differ, or the face sets differ under a correspondence
 ///                                derived from provenance (measured_topology_difference). Face
@@ -85,6 +88,9 @@ DivergenceClass rule_difference_class(Scheme scheme, const SchemeRule& applied, 
 /// stencils' support. Empty when level 0 is a manifold.
 std::vector<char> nonmanifold_reach(const std::vector<const PolyMesh*>& levels);
 
+/// The same reach from the level-0 vertices `seeds`; empty when there are none.
+std::vector<char> reach_of(const std::vector<const PolyMesh*>& levels, const std::vector<int>& seeds);
+
 /// Test 5 of the ladder: non-manifold-handling when every vertex of `ours` farther than
 /// `tolerance` x its diagonal from its match in `ref` lies where `reach` marks (the sentence
 /// says how many, by up to `max_rel`; `against` names core's rule when it is not the
@@ -93,6 +99,14 @@ std::optional<Classification> nonmanifold_handling(const std::vector<char>& reac
                                                    const PolyMesh& ref, const std::vector<int>& ref_to_ours,
                                                    double tolerance, const std::string& reference, double max_rel,
                                                    const std::string& against = "");
+
+/// Test 5 against OpenSubdiv: fan-walk when every vertex of `ours` that differs from its match
+/// in `ref` (as nonmanifold_handling counts them) lies where `reach` marks, the reach of the
+/// `accepted` vertices (opensubdiv_walk_accepted_vertices of the input); nothing otherwise.
+std::optional<Classification> fan_walk_handling(const std::vector<char>& reach, const std::vector<int>& accepted,
+                                                const PolyMesh& ours, const PolyMesh& ref,
+                                                const std::vector<int>& ref_to_ours, double tolerance,
+                                                const std::string& reference, double max_rel);
 
 /// Test 5 where no vertex bijection exists: non-manifold-handling when the input has a vertex
 /// whose faces form more than one fan, and the reference's last level `ref` agrees in faces

@@ -79,6 +79,11 @@ enum class DivergenceClass {
     /// The Butterflies: only boundary edges on boundary loops of three edges differ, where the
     /// four-point rule's two outer points are the loop's third vertex (VTK reads another point)
     ShortBoundaryLoop,
+    /// OpenSubdiv: only vertices where the non-manifold vertices that Far's walk takes for
+    /// manifold ones reach differ (opensubdiv_walk_accepted_vertices, subdiv/nonmanifold.h):
+    /// a face names the vertex twice, not in a row, and Far refines it by a ring with an edge
+    /// taken twice, where core keeps it
+    FanWalk,
     Topology,                  ///< the refined connectivity differs
     Triangulation,             ///< the same vertices and topology, other triangles over them (isosurface polygons)
     Unexplained,               ///< none of the above: a failure
@@ -95,7 +100,7 @@ enum class DivergenceClass {
 /// "weight-family+corner-rule", "boundary-rule", "border-faces-dropped", "parity", "wing-rule", "triangle-rule",
 /// "fvar-rule", "legacy-fvar-rules", "normal-rule",
 /// "convention", "face-order-dependence", "rounding",
-/// "isolated-vertex-handling", "valence-limit", "short-boundary-loop", "topology", "triangulation",
+/// "isolated-vertex-handling", "valence-limit", "short-boundary-loop", "fan-walk", "topology", "triangulation",
 /// "unexplained", "non-manifold-handling", "orientation-handling", "degenerate-face-handling",
 /// "invalid-input-handling").
 const char* to_string(DivergenceClass cls);

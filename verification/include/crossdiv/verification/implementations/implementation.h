@@ -72,6 +72,10 @@ struct Capabilities {
     bool simplification = false;      ///< edge-collapse simplification to an edge budget
     bool isosurface = false;          ///< marching cubes of a sampled scalar field
     Precision precision = Precision::Double;
+    /// Core's non-manifold refinement (NonManifoldRule::OpenSubdiv, subdiv/nonmanifold.h)
+    /// takes this implementation's rules: where it differs from core at a non-manifold vertex,
+    /// core is wrong, and no named handling of its own excuses the difference.
+    bool defines_nonmanifold_rules = false;
 };
 
 /// One named set of vertex normals an implementation computes, with the call that made them.
