@@ -127,6 +127,16 @@ TEST(MeshIo, ObjSkipsUnknownStatementsWithANote) {
     EXPECT_EQ(m.source.notes[0], "skipped 2 line(s) with an unknown statement, the first at t.obj:1 ('<html><pre>')");
 }
 
+TEST(MeshIo, ObjInUtf16IsRefusedNotReadAsAnEmptyMesh) {
+    // "v 0 0 0" in UTF-16 little-endian, with its byte order mark: read as ASCII, every line
+    // would be an unknown statement and the file an empty mesh.
+    const std::string utf16("\xff\xfev\0 \0" "0\0 \0" "0\0 \0" "0\0\n\0", 18);
+    EXPECT_EQ(obj_error(utf16),
+              "t.obj:1: a NUL byte: not a text file in ASCII or UTF-8 (UTF-16 or UTF-32 text, or binary data)");
+    // An empty file is an empty mesh (a program's empty result); an input refuses it.
+    EXPECT_EQ(obj("").num_vertices(), 0);
+}
+
 TEST(MeshIo, ObjReadsOpenSubdivCreaseTags) {
     const std::string quad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
     const PolyMesh m = obj(quad + "t crease 2/1/0 0 1 2.5\nt crease 4/2/0 1 2 2 3 1 10\nt corner 2/1/0 0 3 4\n" +

@@ -35,6 +35,13 @@ printf 'v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\nv 5 5 5\nf 1 3 2\nf 1 2 4\nf 2
 expect bad-index 2 'bad_index.obj:4: vertex index 4 out of range' -- "$crossdiv" compare "$tmp/bad_index.obj" --levels 1
 expect missing-coordinate 2 'missing.obj:2: missing z coordinate' -- "$crossdiv" compare "$tmp/missing.obj" --levels 1
 expect nan 2 'nan.obj:3: y coordinate is nan' -- "$crossdiv" subdivide "$tmp/nan.obj" --levels 1 -o "$tmp/o.obj"
+# No vertex: an empty file, or text that is no OBJ (an HTML page); UTF-16 text.
+: > "$tmp/empty.obj"
+printf '<html>\n<body>\n' > "$tmp/page.obj"
+printf '\377\376v\000 \0000\000 \0000\000 \0000\000\n\000' > "$tmp/utf16.obj"
+expect empty-input 2 'empty.obj: no vertex, nothing to refine' -- "$crossdiv" subdivide "$tmp/empty.obj" --levels 1 -o "$tmp/o.obj"
+expect page-input 2 "page.obj: no vertex, nothing to refine \\(skipped 2 line\\(s\\) with an unknown statement, the first at .*page.obj:1 \\('<html>'\\)\\)" -- "$crossdiv" compare "$tmp/page.obj"
+expect utf16-input 2 'utf16.obj:1: a NUL byte: not a text file in ASCII or UTF-8' -- "$crossdiv" subdivide "$tmp/utf16.obj" --levels 1 -o "$tmp/o.obj"
 expect quad 2 'face 0 \(.*quad.obj:5\): has 4 corners; Loop subdivision needs triangles' -- "$crossdiv" compare "$tmp/quad.obj" --levels 1
 expect non-manifold-opensubdiv 0 'opensubdiv +ok +agree' -- "$crossdiv" compare "$tmp/nonmanifold.obj" --levels 2 --against opensubdiv
 expect non-manifold-refused 1 'core refuses the input: .*edge \(0, 1\) is shared by 3 triangles' -- "$crossdiv" compare "$tmp/nonmanifold.obj" --levels 1 --against opensubdiv --nonmanifold refuse

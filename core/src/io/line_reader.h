@@ -21,6 +21,10 @@ public:
     bool next() {
         if (!std::getline(in_, line_)) return false;
         ++number_;
+        // UTF-16 or UTF-32 text, and binary data, have NUL bytes; read as ASCII they would be
+        // lines of unknown statements, and the file an empty mesh.
+        if (line_.find('\0') != std::string::npos)
+            fail("a NUL byte: not a text file in ASCII or UTF-8 (UTF-16 or UTF-32 text, or binary data)");
         if (!line_.empty() && line_.back() == '\r') line_.pop_back();
         if (auto hash = line_.find('#'); hash != std::string::npos) line_.erase(hash);
         rest_ = line_;

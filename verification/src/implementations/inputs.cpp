@@ -161,6 +161,12 @@ PolyMesh read_input(const std::string& spec) {
 
 PolyMesh load_input(const std::string& spec, UnknownTags unknown_tags) {
     PolyMesh mesh = read_input(spec);
+    // A file without a vertex reads as an empty mesh (a program's empty result is one); as an
+    // input it is nothing to refine, and most often no mesh at all (the reader's note says what
+    // it skipped).
+    if (mesh.num_vertices() == 0)
+        throw InputError(spec + ": no vertex, nothing to refine" +
+                         (mesh.source.notes.empty() ? std::string() : " (" + mesh.source.notes.front() + ")"));
     std::vector<std::string>& unknown = mesh.source.unknown_tags;
     if (!unknown.empty() && unknown_tags == UnknownTags::Refuse)
         throw InputError("unknown tag " + unknown.front() + (unknown.size() > 1 ? " (and " + std::to_string(unknown.size() - 1) + " more)" : std::string()) +
