@@ -323,11 +323,11 @@ void add_triangles(const GeneralTopology& t, int nv, RefinementStep& step) {
         step.add_face({v[2], m2, m1});
         step.add_face({m0, m1, m2});
         const int i0 = 2 * ne + 3 * f, i1 = i0 + 1, i2 = i0 + 2;
-        step.derived.corner_edges.insert(step.derived.corner_edges.end(),
-                                 {t.child_half(c, true), i0, t.child_half(c + 2, false),      // v0 m0 m2
-                                  t.child_half(c + 1, true), i1, t.child_half(c, false),      // v1 m1 m0
-                                  t.child_half(c + 2, true), i2, t.child_half(c + 1, false),  // v2 m2 m1
-                                  i1, i2, i0});                                               // m0 m1 m2
+        std::vector<int>& edges = step.derived.corner_edges;
+        edges.insert(edges.end(), {t.child_half(c, true), i0, t.child_half(c + 2, false),      // v0 m0 m2
+                                   t.child_half(c + 1, true), i1, t.child_half(c, false),      // v1 m1 m0
+                                   t.child_half(c + 2, true), i2, t.child_half(c + 1, false),  // v2 m2 m1
+                                   i1, i2, i0});                                               // m0 m1 m2
     }
 }
 
@@ -399,8 +399,8 @@ void add_quads(const GeneralTopology& t, int nv, int nf, RefinementStep& step) {
         const int p = t.prev(c);
         step.add_face({t.vertex(c), edge_point + t.corner_edge[static_cast<size_t>(c)],
                        face_point + t.corner_face[static_cast<size_t>(c)], edge_point + t.corner_edge[static_cast<size_t>(p)]});
-        step.derived.corner_edges.insert(step.derived.corner_edges.end(),
-                                 {t.child_half(c, true), 2 * ne + c, 2 * ne + p, t.child_half(p, false)});
+        std::vector<int>& edges = step.derived.corner_edges;
+        edges.insert(edges.end(), {t.child_half(c, true), 2 * ne + c, 2 * ne + p, t.child_half(p, false)});
     }
 }
 

@@ -42,8 +42,9 @@
 ///   which is also what VCG's walk around a vertex sees.
 /// The base level's tags come from its topology as above; every refined level's from its
 /// parent (PolyMesh::derived). OpenSubdiv agrees to 1e-16 on every non-manifold case of the
-/// edge-case catalog and on the Sweet Home 3D corpus. Semi-sharp crease tags on a non-manifold mesh
-/// are refused (InputError).
+/// edge-case catalog, and on the Sweet Home 3D corpus but where its walk around a vertex
+/// departs from these rules (opensubdiv_walk_accepted_vertices). Semi-sharp crease tags on a
+/// non-manifold mesh are refused (InputError).
 
 #include <array>
 #include <vector>
