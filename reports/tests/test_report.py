@@ -17,6 +17,7 @@ from report.viewer import matrix_table  # noqa: E402
 from report.records import category, split_cases  # noqa: E402
 from report.robustness import SHRUNK_HEADER, corpus_statistics, robustness_section  # noqa: E402
 from report.suite_time import suite_time_section  # noqa: E402
+from report.sections import timing_section  # noqa: E402
 
 
 def cells(line):
@@ -599,3 +600,18 @@ def test_invariance_gets_its_table_and_a_representative_per_finding(tmp_path):
     assert "<a href='#crossdiv-viewer' data-view='0'>edgecase:bowtie</a>" in html
     assert '"reference": "cgal under reverse-faces"' in html
     assert '"runs": [{"reference": "cgal under reverse-faces", "check": "", "outcome": "diverge (non-manifold-handling)"' in html
+
+
+def test_the_timing_section_shows_core_loops_own_goals(tmp_path):
+    record = {"impl": "core", "scheme": "loop", "input": "torus-20000", "levels": 2, "memory": "warm",
+              "input_faces": 20000, "output_faces": 320000, "median_ms": 6.0, "peak_rss_mb": 26}
+    goals = [{"goal": "floor", "scheme": "loop", "input": "torus-20000", "levels": 2, "output_faces": 320000,
+              "core_ms": 6.0, "base_ms": 0.96, "ratio": 6.25, "target_ratio": 1.5, "met": False},
+             {"goal": "cold over warm", "scheme": "loop", "input": "torus-20000", "levels": 2, "output_faces": 320000,
+              "core_ms": 11.0, "base_ms": 6.0, "ratio": 11.0 / 6.0, "target_ratio": 2.0, "met": True}]
+    section = timing_section({"repeats": 5, "records": [record], "core_goals": goals}, str(tmp_path))
+    table = section.blocks[-1]
+    assert [list(r) for r in table.rows] == [
+        ["floor", "loop", "torus-20000", 2, 320000, "6.00", "0.96", "6.25", "1.5", "NOT met"],
+        ["cold over warm", "loop", "torus-20000", 2, 320000, "11.00", "6.00", "1.83", "2.0", "met"]]
+    assert "at most 1.5x the floor" in section.blocks[-2].text

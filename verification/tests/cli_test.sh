@@ -262,7 +262,11 @@ if [ "$sanitized" != sanitized ]; then
 # One quick benchmark run (about 25 s) serves every check of its output below.
 "$crossdiv" bench --quick --repeats 1 --out "$tmp/suite" --json "$tmp/b.json" > "$tmp/bench.txt" 2>&1
 expect bench 0 'goal \(loop warm\): core .* faster than the fastest reference .* bandwidth floor' -- cat "$tmp/bench.txt"
-expect bench-cold 0 'goal \(loop cold\): core .*\(target 1x\)' -- "$crossdiv" bench --quick --repeats 1 --only loop --cold
+expect bench-cold 0 'goal \(loop cold\): core .*\(target 4x\)' -- "$crossdiv" bench --quick --repeats 1 --only loop --cold
+# Core Loop's own goals: the floor (warm) and its cold time over its warm time (both regimes ran).
+expect bench-floor-goal 0 'goal \(loop floor\): core [0-9.]+x the bandwidth floor on torus-20000 at 2 levels .*\(target at most 1.5x\)' -- cat "$tmp/bench.txt"
+expect bench-cold-over-warm-goal 0 'goal \(loop cold over warm\): core cold [0-9.]+x its warm time on torus-20000 .*\(target at most 2x\)' -- cat "$tmp/bench.txt"
+expect bench-core-goals-json 0 '"core_goals"' -- cat "$tmp/b.json"
 # Catmull-Clark against every reference that has it (OpenMesh's boundary rule is moot on the
 # closed quad meshes), at 300k output faces and more, with its goal line.
 "$crossdiv" bench --quick --repeats 1 --only catmull-clark --warm --json "$tmp/cc-bench.json" > "$tmp/cc-bench.txt" 2>&1

@@ -258,7 +258,10 @@ std::vector<BenchGoal> bench_goals(const std::vector<BenchRecord>& records) {
         if (!fastest) continue;
         goals.push_back({core.scheme, core.input, core.levels, core.memory, core.output_faces, core.median_ms, fastest->impl,
                          fastest->median_ms, fastest->median_ms / core.median_ms,
-                         core.memory == "cold" ? kBenchColdGoalRatio : kBenchGoalRatio, core.peak_rss_mb});
+                         core.memory == "warm"    ? kBenchGoalRatio
+                         : core.scheme == "loop" ? kBenchLoopColdGoalRatio
+                                                 : kBenchColdGoalRatio,
+                         core.peak_rss_mb});
     }
     return goals;
 }
@@ -267,6 +270,41 @@ nlohmann::json to_json(const BenchGoal& g) {
     return {{"scheme", g.scheme}, {"input", g.input}, {"levels", g.levels}, {"memory", g.memory}, {"output_faces", g.output_faces},
             {"core_ms", g.core_ms}, {"fastest_reference", g.fastest_reference}, {"fastest_reference_ms", g.fastest_reference_ms},
             {"ratio", g.ratio}, {"target_ratio", g.target}, {"met", g.met()}, {"core_peak_rss_mb", g.core_peak_rss_mb}};
+}
+
+std::vector<CoreGoal> core_goals(const std::vector<BenchRecord>& records, double write_gbs) {
+    std::vector<CoreGoal> goals;
+    for (const BenchRecord& warm : records) {
+        if (warm.impl != "core" || warm.scheme != "loop" || warm.memory != "warm" || warm.status != "ok" ||
+            warm.output_faces < kBenchGoalMinFaces)
+            continue;
+        goals.push_back({CoreGoal::Kind::Floor, warm.scheme, warm.input, warm.levels, warm.output_faces, warm.median_ms,
+                         floor_ms(warm.scheme, warm.output_faces, write_gbs), kLoopFloorGoal});
+        for (const BenchRecord& cold : records)
+            if (cold.impl == "core" && cold.scheme == warm.scheme && cold.input == warm.input && cold.levels == warm.levels &&
+                cold.memory == "cold" && cold.status == "ok")
+                goals.push_back({CoreGoal::Kind::ColdOverWarm, warm.scheme, warm.input, warm.levels, warm.output_faces,
+                                 cold.median_ms, warm.median_ms, kLoopColdOverWarmGoal});
+    }
+    return goals;
+}
+
+nlohmann::json to_json(const CoreGoal& g) {
+    return {{"goal", g.kind == CoreGoal::Kind::Floor ? "floor" : "cold over warm"},
+            {"scheme", g.scheme},
+            {"input", g.input},
+            {"levels", g.levels},
+            {"output_faces", g.output_faces},
+            {"core_ms", g.core_ms},
+            {"base_ms", g.base_ms},
+            {"ratio", g.ratio()},
+            {"target_ratio", g.target},
+            {"met", g.met()}};
+}
+
+double floor_ms(const std::string& scheme, long long output_faces, double write_gbs) {
+    const double bytes = scheme == "loop" ? loop_output_bytes(output_faces) : catmull_clark_output_bytes(output_faces);
+    return bytes / (write_gbs * 1e9) * 1e3;
 }
 
 double loop_output_bytes(long long output_faces) {

@@ -92,11 +92,19 @@ double median_ms(int repeats, const std::function<void()>& f);
 /// weighs on every one alike: for timings whose ratio is the result.
 std::vector<double> interleaved_median_ms(int repeats, const std::vector<std::function<void()>>& fs);
 
-/// The performance goals, at every input whose output has at least kBenchGoalMinFaces faces:
-/// warm, core (Loop, Catmull-Clark) at least kBenchGoalRatio times faster than the fastest reference; cold
-/// (freed memory returned to the kernel, page faults paid), no slower than it.
+/// The performance goals against the references, at every input whose output has at least
+/// kBenchGoalMinFaces faces, core (Loop, Catmull-Clark) against the fastest reference on the same
+/// input in the same memory regime: warm, at least kBenchGoalRatio times faster; cold (freed
+/// memory returned to the kernel, page faults paid), Loop at least kBenchLoopColdGoalRatio times
+/// faster, Catmull-Clark no slower (kBenchColdGoalRatio).
 inline constexpr double kBenchGoalRatio = 4.0;
+inline constexpr double kBenchLoopColdGoalRatio = 4.0;
 inline constexpr double kBenchColdGoalRatio = 1.0;
+/// Core Loop's goals on its own figures at the same inputs: warm, at most kLoopFloorGoal times
+/// the floor (its output's bytes written once at the write bandwidth measured in the run); cold,
+/// at most kLoopColdOverWarmGoal times its warm time on the same input.
+inline constexpr double kLoopFloorGoal = 1.5;
+inline constexpr double kLoopColdOverWarmGoal = 2.0;
 inline constexpr long long kBenchGoalMinFaces = 300000;
 
 /// How one measured input stands against its goal.
@@ -119,6 +127,30 @@ struct BenchGoal {
 /// faces and memory regime on which core and some reference ran.
 std::vector<BenchGoal> bench_goals(const std::vector<BenchRecord>& records);
 
+/// A goal on core's own figures rather than against a reference: core's time over a base
+/// time (the floor, or its own warm time), to be at most `target`.
+struct CoreGoal {
+    enum class Kind { Floor, ColdOverWarm };
+    Kind kind = Kind::Floor;
+    std::string scheme;
+    std::string input;
+    int levels = 0;
+    long long output_faces = 0;
+    double core_ms = 0;  ///< warm (Floor) or cold (ColdOverWarm)
+    double base_ms = 0;  ///< the floor (Floor) or core's warm time (ColdOverWarm)
+    double target = 0;
+    double ratio() const { return core_ms / base_ms; }
+    bool met() const { return ratio() <= target; }
+};
+
+/// Core Loop's own goals from the records: the floor goal at every warm Loop record of at least
+/// kBenchGoalMinFaces output faces (the floor from `write_gbs`), the cold-over-warm goal at every
+/// such input timed in both regimes.
+std::vector<CoreGoal> core_goals(const std::vector<BenchRecord>& records, double write_gbs);
+
+/// The floor of a refinement's time: its output's bytes written once at `write_gbs` GB/s, in ms.
+double floor_ms(const std::string& scheme, long long output_faces, double write_gbs);
+
 /// The bytes of a Loop level of `output_faces` triangles on a closed mesh (V = F/2 + 2 - 2g;
 /// F/2 for the tori): 24 per vertex, 12 per triangle, the least any implementation writes.
 double loop_output_bytes(long long output_faces);
@@ -136,5 +168,6 @@ struct Bandwidth {
 Bandwidth measure_bandwidth(int repeats);
 
 nlohmann::json to_json(const BenchGoal& g);
+nlohmann::json to_json(const CoreGoal& g);
 
 }  // namespace crossdiv::verification
