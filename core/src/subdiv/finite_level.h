@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -16,7 +17,7 @@ namespace crossdiv::detail {
 
 /// @throws InputError naming the first vertex of `level` whose position is not finite, with
 ///         the largest coordinate magnitude of the level before it (`coarse`).
-inline void require_finite_level(const std::vector<Vec3>& fine, const std::vector<Vec3>& coarse, int level) {
+inline void require_finite_level(std::span<const Vec3> fine, std::span<const Vec3> coarse, int level) {
     for (size_t v = 0; v < fine.size(); ++v) {
         if (fine[v].allFinite()) continue;
         double largest = 0;

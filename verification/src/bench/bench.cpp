@@ -46,11 +46,14 @@ BenchRecord time_in_child(const Refine& refine, int repeats, bool cold) {
         // to the kernel between repeats would time the hypervisor instead of the algorithm.
         // The warm-up run pays the faults once; `crossdiv bench --cold` keeps them in.
         std::optional<WarmAllocator> warm;
-        if (!cold) warm.emplace();
+        std::optional<ColdAllocator> cold_memory;
+        if (cold) cold_memory.emplace();
+        else warm.emplace();
         ChildReport rep;
         try {
             rep.output_faces = static_cast<long long>(refine());  // warm-up: page faults, caches
             for (int i = 0; i < repeats; ++i) {
+                if (cold_memory) cold_memory->between_runs();
                 const auto t0 = std::chrono::steady_clock::now();
                 const size_t faces = refine();
                 rep.ms[i] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -211,6 +214,14 @@ double median(std::vector<double> v) {
     const size_t n = v.size();
     return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
 }
+
+ColdAllocator::ColdAllocator() {
+    // Set explicitly, the thresholds stay where they are (mallopt(3): no dynamic adjustment).
+    mallopt(M_MMAP_THRESHOLD, 128 * 1024);
+    mallopt(M_TRIM_THRESHOLD, 128 * 1024);
+}
+
+void ColdAllocator::between_runs() const { malloc_trim(0); }
 
 WarmAllocator::WarmAllocator() {
     mallopt(M_MMAP_THRESHOLD, 1 << 30);

@@ -46,7 +46,8 @@ struct BenchInput {
 /// Times each refinement (a call returning its output's face count): `repeats` runs each,
 /// spread over kBenchRounds rounds with every refinement in turn (a child process per
 /// refinement and round, warmed up by one call), median reported; one that fails is recorded
-/// with its status. Unless `cold`, the child keeps freed memory (WarmAllocator). Only the
+/// with its status. The child keeps freed memory (WarmAllocator), or when `cold` returns it to
+/// the kernel after every run (ColdAllocator). Only the
 /// records' timings, sizes, memory and status are filled in.
 std::vector<BenchRecord> time_in_rounds(const std::vector<std::function<size_t()>>& refines, int repeats, bool cold);
 
@@ -71,6 +72,20 @@ nlohmann::json to_json(const BenchRecord& r);
 /// The median of timings: the middle one, or the mean of the two middle ones (every timing of
 /// the bench, Loop and curves alike, is summarised by this one definition).
 double median(std::vector<double> samples);
+
+/// While it lives, glibc hands every block of 128 KB or more back to the kernel when it is freed
+/// and trims the heap's free top, and `between_runs()` gives back what is left free: the bench's
+/// cold setting. glibc's default raises that threshold to the largest block freed so far, so a
+/// program that frees one large block keeps the ones after it: repeats in one process were warm
+/// for an implementation with a few large blocks and cold for one with many smaller ones.
+class ColdAllocator {
+public:
+    ColdAllocator();
+    ColdAllocator(const ColdAllocator&) = delete;
+    ColdAllocator& operator=(const ColdAllocator&) = delete;
+    /// Returns every free page of the heap to the kernel (call it outside the timed span).
+    void between_runs() const;
+};
 
 /// While it lives, glibc keeps freed memory for reuse (no mmap for large blocks, no trim), so
 /// that repeated runs do not pay first-touch page faults again: the bench's warm setting.
