@@ -1,7 +1,9 @@
 #include "crossdiv/subdiv/loop_streaming.h"
 
 #include <algorithm>
+#include <atomic>
 #include <climits>
+#include <exception>
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -108,41 +110,18 @@ struct StreamTopology {
     int num_edges() const { return static_cast<int>(ends.size); }
 };
 
-/// The input level's topology built directly, in time linear in the corners whatever the
-/// valences: the half-edges bucketed by their lesser end (a counting sort), twins matched in
-/// each bucket by the greater end (an array stamped with the bucket, never cleared), edges
-/// numbered as build_tri_connectivity numbers them (at their first corner in scan order), and
-/// each vertex's corners walked once to see that they form one fan. nullopt when the mesh is
-/// not a manifold, consistently oriented triangle mesh with valid indices: build_tri_connectivity
-/// then names the element.
-std::optional<StreamTopology> stream_input(const TriMesh& mesh) {
-    const auto& T = mesh.triangles;
-    const int nv = mesh.num_vertices(), nf = mesh.num_faces(), nh = 3 * nf;
-    // Half-edge h = 3i + j runs from corner j of triangle i to corner j + 1. Its ends once:
-    // lesser[h], and key[h] = 2 * greater end + (1 when it runs from the lesser end).
-    std::vector<int> lesser(static_cast<size_t>(nh)), key(static_cast<size_t>(nh));
-    for (int i = 0; i < nf; ++i) {
-        const Triangle& t = T[i];
-        if (t[0] < 0 || t[0] >= nv || t[1] < 0 || t[1] >= nv || t[2] < 0 || t[2] >= nv) return std::nullopt;
-        if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) return std::nullopt;
-        for (int j = 0; j < 3; ++j) {
-            const int a = t[j], b = t[j == 2 ? 0 : j + 1];
-            lesser[3 * i + j] = std::min(a, b);
-            key[3 * i + j] = 2 * std::max(a, b) + (a < b);
-        }
-    }
-    std::vector<int> twin(static_cast<size_t>(nh), -1);
-    if (!detail::stream_twins(nv, lesser, key, twin)) return std::nullopt;
-    // Every vertex's corners in one fan: walk forward (across each outgoing edge) from the
-    // first unvisited corner and, on a boundary, backward too; a second walk at a vertex is a
-    // second fan (a bowtie). Corner c's outgoing half-edge is c itself; its incoming one is the
-    // half-edge before it in its triangle.
+/// Whether every vertex's corners form one fan: walk forward (across each outgoing edge) from
+/// the first unvisited corner and, on a boundary, backward too; a second walk at a vertex is a
+/// second fan (a bowtie). Corner c's outgoing half-edge is c itself; its incoming one is the
+/// half-edge before it in its triangle.
+bool one_fan_per_vertex(const std::vector<Triangle>& T, int nv, const std::vector<int>& twin) {
+    const int nh = static_cast<int>(twin.size());
     const auto after = [](int h) { return h % 3 == 2 ? h - 2 : h + 1; };
     const auto before = [](int h) { return h % 3 == 0 ? h + 2 : h - 1; };
     std::vector<std::uint8_t> visited(static_cast<size_t>(nh), 0), walked(static_cast<size_t>(nv), 0);
     for (int c0 = 0; c0 < nh; ++c0) {
         if (visited[c0]) continue;
-        if (walked[T[c0 / 3][c0 % 3]]++) return std::nullopt;
+        if (walked[T[c0 / 3][c0 % 3]]++) return false;
         int c = c0;
         do {
             visited[c] = 1;
@@ -151,6 +130,15 @@ std::optional<StreamTopology> stream_input(const TriMesh& mesh) {
         if (c < 0)
             for (c = twin[before(c0)]; c >= 0; c = twin[before(c)]) visited[c] = 1;
     }
+    return true;
+}
+
+/// The input level's topology from its twins: edges numbered as build_tri_connectivity numbers
+/// them (at their first corner in scan order), each vertex's face count, boundary flag and
+/// incidence list. On a mesh whose vertices are not each one fan, it throws std::logic_error
+/// (the ends miscounted) before it writes an incidence list, or gives a topology to discard.
+StreamTopology stream_topology(const std::vector<Triangle>& T, int nv, const std::vector<int>& twin) {
+    const int nf = static_cast<int>(T.size()), nh = 3 * nf;
     StreamTopology t;
     t.triangles = T;  // a view: the input outlives the refinement
     t.tri_edges = Buffer<std::array<int, 3>>(static_cast<size_t>(nf));
@@ -182,8 +170,9 @@ std::optional<StreamTopology> stream_input(const TriMesh& mesh) {
     std::copy(opposite.begin(), opposite.end(), t.opposite.data);
     t.edge_corners = Buffer<std::array<int, 2>>(ends.size());
     std::copy(corners.begin(), corners.end(), t.edge_corners.data);
-    // Each vertex's edges by a counting sort in edge order (one fan per vertex was checked
-    // above, so the counts are its faces, plus one on a boundary).
+    // Each vertex's edges by a counting sort in edge order. A vertex of one fan has as many as
+    // its faces, plus one on a boundary; one of two boundary fans is counted short, and the
+    // total tells before any list is written.
     t.incident_start = Buffer<int>(static_cast<size_t>(nv));
     std::vector<int> next(static_cast<size_t>(nv));
     int total = 0;
@@ -201,14 +190,64 @@ std::optional<StreamTopology> stream_input(const TriMesh& mesh) {
     return t;
 }
 
+/// The input level's topology built directly, in time linear in the corners whatever the
+/// valences: the half-edges bucketed by their lesser end (a counting sort), twins matched in
+/// each bucket by the greater end (an array stamped with the bucket, never cleared), then the
+/// topology (stream_topology) and, beside it on a second thread when there is one, the check
+/// that each vertex's corners form one fan (a walk of dependent reads: a third of this
+/// function's time, measured). nullopt when the mesh is not a manifold, consistently oriented
+/// triangle mesh with valid indices: build_tri_connectivity then names the element.
+std::optional<StreamTopology> stream_input(const TriMesh& mesh, detail::ParallelBlocks& parallel) {
+    const auto& T = mesh.triangles;
+    const int nv = mesh.num_vertices(), nf = mesh.num_faces(), nh = 3 * nf;
+    // Half-edge h = 3i + j runs from corner j of triangle i to corner j + 1. Its ends once:
+    // lesser[h], and key[h] = 2 * greater end + (1 when it runs from the lesser end).
+    std::vector<int> lesser(static_cast<size_t>(nh)), key(static_cast<size_t>(nh));
+    for (int i = 0; i < nf; ++i) {
+        const Triangle& t = T[i];
+        if (t[0] < 0 || t[0] >= nv || t[1] < 0 || t[1] >= nv || t[2] < 0 || t[2] >= nv) return std::nullopt;
+        if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) return std::nullopt;
+        for (int j = 0; j < 3; ++j) {
+            const int a = t[j], b = t[j == 2 ? 0 : j + 1];
+            lesser[3 * i + j] = std::min(a, b);
+            key[3 * i + j] = 2 * std::max(a, b) + (a < b);
+        }
+    }
+    std::vector<int> twin(static_cast<size_t>(nh), -1);
+    if (!detail::stream_twins(nv, lesser, key, twin)) return std::nullopt;
+    bool fans = true;
+    StreamTopology t;
+    std::exception_ptr miscounted;
+    const auto task = [&](size_t b) {
+        if (b == 1) {
+            fans = one_fan_per_vertex(T, nv, twin);
+            return;
+        }
+        try {
+            t = stream_topology(T, nv, twin);
+        } catch (const std::logic_error&) {
+            miscounted = std::current_exception();  // a vertex of two fans, or a bug
+        }
+    };
+    if (parallel.blocks(static_cast<size_t>(nh)) > 1) {
+        parallel.run(2, task);
+    } else {
+        task(1);
+        if (fans) task(0);
+    }
+    if (!fans) return std::nullopt;
+    if (miscounted) std::rethrow_exception(miscounted);
+    return t;
+}
+
 /// The input level's topology. A mesh stream_input refuses is one build_tri_connectivity
 /// refuses too, naming the element; were it to accept one, the two would disagree on what a
 /// manifold is, which is a bug (the fuzzers compare the two drivers' refusals).
-StreamTopology input_topology(const TriMesh& mesh) {
+StreamTopology input_topology(const TriMesh& mesh, detail::ParallelBlocks& parallel) {
     for (int v = 0; v < mesh.num_vertices(); ++v)
         if (!mesh.positions[v].allFinite())
             throw InputError(mesh.source.describe_vertex(v) + ": coordinate is NaN or infinite");
-    if (std::optional<StreamTopology> t = stream_input(mesh)) return std::move(*t);
+    if (std::optional<StreamTopology> t = stream_input(mesh, parallel)) return std::move(*t);
     (void)build_tri_connectivity(mesh);  // throws, naming the element
     throw std::logic_error("the streaming Loop driver refused a mesh build_tri_connectivity accepts");
 }
@@ -305,25 +344,12 @@ bool may_overflow(double largest, const VertexMasks& masks) {
     return !(largest * terms < std::numeric_limits<double>::max() / 4);  // NaN: a NaN input (refused before)
 }
 
-/// The next level's arrays, sized: its triangles and, unless `last`, its points (and colours
-/// when `colored`) and the rest of its topology, in one ArrayBlock.
-/// The last level's triangles are the result's vector `out` (appended on one block: a resized
-/// vector is zeroed first, a second pass over the level's largest array, measured 5.5 ms against
-/// 3.5 ms for 1.28M triangles; sized on several, whose blocks write at their own places); an
-/// earlier level's are a Buffer, written in place on any number of blocks.
-void allocate_child(const StreamTopology& t, bool last, bool colored, size_t blocks, StreamTopology& child,
-                    std::vector<Triangle>& out) {
+/// The next level's arrays: unless `last`, its points (and colours when `colored`), triangles
+/// and the rest of its topology, in one ArrayBlock. The last level's triangles are the result's
+/// vector, made by the driver.
+void allocate_child(const StreamTopology& t, bool last, bool colored, StreamTopology& child) {
     const size_t nv = static_cast<size_t>(t.num_vertices()), ne = static_cast<size_t>(t.num_edges()), nf = t.triangles.size();
-    if (last) {
-        out.clear();
-        if (blocks == 1) {
-            out.reserve(4 * nf);
-            detail::prefer_huge_pages(out.data(), 4 * nf * sizeof(Triangle));
-        } else {
-            detail::resize_on_huge_pages(out, 4 * nf);
-        }
-        return;
-    }
+    if (last) return;
     const size_t edges = 2 * ne + 3 * nf, vertices = nv + ne;
     using Block = ArrayBlock;
     // An edge vertex has 6 incidence slots (4 used on a boundary), after the old vertices' entries.
@@ -453,6 +479,38 @@ void refine_topology(const StreamTopology& t, bool last, StreamTopology& child, 
     }
 }
 
+/// The last level on `blocks` threads. The result's triangles are a vector, which is zeroed
+/// when sized (a pass over the level's largest array: 1.2 ms of 8 at 1.28M triangles, measured)
+/// and must be sized before any block writes them: one thread sizes it while the others start on
+/// the points, and the points and then the triangles are handed out in chunks, in turn, so that
+/// the thread that sized the vector takes fewer. Each point and triangle is written by the same
+/// operations whichever chunk it falls in.
+template <class Points>
+void last_level_in_chunks(detail::ParallelBlocks& parallel, size_t blocks, const Points& points_of,
+                          const StreamTopology& topology, StreamTopology& child, std::vector<Triangle>& out) {
+    constexpr size_t kChunksPerBlock = 8;
+    const size_t chunks = kChunksPerBlock * blocks;
+    std::atomic<size_t> next_points{0}, next_triangles{0};
+    std::atomic<int> sized{0};  // 1: sized, -1: sizing threw (run() rethrows it)
+    parallel.run(blocks, [&](size_t b) {
+        if (b == 0) {
+            try {
+                detail::resize_on_huge_pages(out, 4 * topology.triangles.size());
+            } catch (...) {
+                sized = -1;
+                sized.notify_all();
+                throw;
+            }
+            sized = 1;
+            sized.notify_all();
+        }
+        for (size_t c; (c = next_points.fetch_add(1)) < chunks;) points_of(c, chunks);
+        sized.wait(0);
+        if (sized < 0) return;
+        for (size_t c; (c = next_triangles.fetch_add(1)) < chunks;) refine_topology(topology, true, child, out, c, chunks);
+    });
+}
+
 void require_addressable(const StreamTopology& t) {
     const long long nf = static_cast<long long>(t.triangles.size()), nv = t.num_vertices(), ne = t.num_edges();
     // Indices are int, as loop_refine_once refuses; an edge id also takes a side bit.
@@ -476,7 +534,7 @@ TriMesh loop_subdivide_streaming(const TriMesh& mesh, const LoopOptions& options
         out.triangles = mesh.triangles;
         return out;
     }
-    StreamTopology topology = input_topology(mesh);
+    StreamTopology topology = input_topology(mesh, parallel);
     const bool colored = !mesh.colors.empty();
     const double largest = largest_coordinate(mesh.positions), largest_color = largest_coordinate(mesh.colors);
     // Each level's points: the input's, then a refined level's (made with its topology), and
@@ -490,20 +548,31 @@ TriMesh loop_subdivide_streaming(const TriMesh& mesh, const LoopOptions& options
         const size_t n = static_cast<size_t>(topology.num_vertices()) + topology.num_edges();
         StreamTopology child;
         const size_t blocks = parallel.blocks(static_cast<size_t>(topology.num_edges()));
-        allocate_child(topology, last, colored, blocks, child, out.triangles);
+        allocate_child(topology, last, colored, child);
         if (last) {
             detail::resize_on_huge_pages(out.positions, n);
             if (colored) detail::resize_on_huge_pages(out.colors, n);
         }
         Vec3* next = last ? out.positions.data() : child.points.data;
         Vec3* next_color = last ? out.colors.data() : child.point_colors.data;
-        // Every pass of the level in one parallel region, each block taking its share of each
-        // (the passes read this level only and write disjoint parts of the next).
-        parallel.run(blocks, [&](size_t b) {
-            points(topology, options, masks, positions.data(), next, b, blocks);
-            if (colored) points(topology, options, masks, colors.data(), next_color, b, blocks);
-            refine_topology(topology, last, child, out.triangles, b, blocks);
-        });
+        const auto points_of = [&](size_t b, size_t of) {
+            points(topology, options, masks, positions.data(), next, b, of);
+            if (colored) points(topology, options, masks, colors.data(), next_color, b, of);
+        };
+        if (last && blocks > 1) {
+            last_level_in_chunks(parallel, blocks, points_of, topology, child, out.triangles);
+        } else {
+            if (last) {  // one block appends the triangles: a resized vector is zeroed first
+                out.triangles.reserve(4 * topology.triangles.size());
+                detail::prefer_huge_pages(out.triangles.data(), out.triangles.capacity() * sizeof(Triangle));
+            }
+            // Every pass of the level in one parallel region, each block taking its share of
+            // each (the passes read this level only and write disjoint parts of the next).
+            parallel.run(blocks, [&](size_t b) {
+                points_of(b, blocks);
+                refine_topology(topology, last, child, out.triangles, b, blocks);
+            });
+        }
         if (may_overflow(largest, masks)) detail::require_finite_level({next, n}, positions, l + 1);
         if (colored && may_overflow(largest_color, masks)) detail::require_finite_level({next_color, n}, colors, l + 1);
         if (last) break;
