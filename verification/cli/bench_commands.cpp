@@ -175,35 +175,35 @@ nlohmann::json print_thread_bench(const BenchArgs& a) {
     return {{"threads", a.threads}, {"rows", out}, {"goals", goals}};
 }
 
-/// One scheme's rows: core against each reference on meshes of growing size, warm and cold.
+/// One scheme's rows: core against each reference on meshes of growing size, warm and cold, an
+/// input's two regimes timed in the same rounds (so that core's cold-over-warm ratio pairs runs
+/// taken side by side).
 std::vector<BenchRecord> print_scheme_rows(const BenchArgs& a, Scheme scheme) {
     const bool loop = scheme == Scheme::Loop;
     const std::vector<BenchInput> inputs = loop ? default_bench_inputs(a.quick) : default_catmull_clark_bench_inputs(a.quick);
     std::vector<bool> regimes;  // cold?
     if (!a.cold) regimes.push_back(false);
     if (!a.warm) regimes.push_back(true);
+    fmt::print("{}, single thread, median of {} runs after one warm-up; warm: freed memory kept between runs, cold: "
+               "returned to the kernel after each\n",
+               loop ? "Loop (weights=loop boundary=edge-only)" : "Catmull-Clark (boundary=edge-only)", a.repeats);
+    fmt::print("{:<12} {:>6} {:<11} {:>11} {:>12} {:>10} {:>9} {:>8} {:<6}\n", "input", "levels", "impl", "input faces",
+               "output faces", "median ms", "x core", "RSS MB", "memory");
     std::vector<BenchRecord> records;
-    for (bool cold : regimes) {
-        fmt::print("{}, single thread, median of {} runs after one warm-up{}\n",
-                   loop ? "Loop (weights=loop boundary=edge-only)" : "Catmull-Clark (boundary=edge-only)", a.repeats,
-                   cold ? ", freed memory returned to the kernel (cold)" : ", freed memory kept (warm)");
-        fmt::print("{:<12} {:>6} {:<11} {:>11} {:>12} {:>10} {:>9} {:>8}\n", "input", "levels", "impl", "input faces",
-                   "output faces", "median ms", "x core", "RSS MB");
-        for (const BenchInput& in : inputs) {
-            std::vector<BenchRecord> r = run_bench({in}, SchemeRule{}, a.repeats, cold);
-            const double core_ms = r.front().median_ms;
-            for (const BenchRecord& b : r) {
-                if (b.status != "ok")
-                    fmt::print("{:<12} {:>6} {:<11} {}\n", b.input, b.levels, b.impl, b.status);
-                else
-                    fmt::print("{:<12} {:>6} {:<11} {:>11} {:>12} {:>10.2f} {:>9.2f} {:>8.0f}\n", b.input, b.levels, b.impl,
-                               b.input_faces, b.output_faces, b.median_ms, b.median_ms / core_ms, b.peak_rss_mb);
-            }
-            std::fflush(stdout);
-            records.insert(records.end(), r.begin(), r.end());
+    for (const BenchInput& in : inputs) {
+        const std::vector<BenchRecord> r = run_bench({in}, SchemeRule{}, a.repeats, regimes);
+        for (const BenchRecord& b : r) {
+            const auto core = std::find_if(r.begin(), r.end(), [&](const BenchRecord& c) { return c.impl == "core" && c.memory == b.memory; });
+            if (b.status != "ok")
+                fmt::print("{:<12} {:>6} {:<11} {} ({})\n", b.input, b.levels, b.impl, b.status, b.memory);
+            else
+                fmt::print("{:<12} {:>6} {:<11} {:>11} {:>12} {:>10.2f} {:>9.2f} {:>8.0f} {:<6}\n", b.input, b.levels, b.impl,
+                           b.input_faces, b.output_faces, b.median_ms, b.median_ms / core->median_ms, b.peak_rss_mb, b.memory);
         }
-        fmt::print("\n");
+        std::fflush(stdout);
+        records.insert(records.end(), r.begin(), r.end());
     }
+    fmt::print("\n");
     return records;
 }
 
@@ -240,12 +240,12 @@ nlohmann::json print_refinement_bench(const BenchArgs& a, nlohmann::json& goals_
         if (g.kind == CoreGoal::Kind::Floor)
             fmt::print("goal ({} floor): core {:.2f}x the bandwidth floor on {} at {} levels ({} output faces, core {:.2f} ms "
                        "warm, floor {:.2f} ms): {} (target at most {}x)\n",
-                       g.scheme, g.ratio(), g.input, g.levels, g.output_faces, g.core_ms, g.base_ms,
+                       g.scheme, g.ratio, g.input, g.levels, g.output_faces, g.core_ms, g.base_ms,
                        g.met() ? "met" : "NOT met", g.target);
         else
             fmt::print("goal ({} cold over warm): core cold {:.2f}x its warm time on {} at {} levels ({} output faces, {:.2f} "
                        "against {:.2f} ms): {} (target at most {}x)\n",
-                       g.scheme, g.ratio(), g.input, g.levels, g.output_faces, g.core_ms, g.base_ms,
+                       g.scheme, g.ratio, g.input, g.levels, g.output_faces, g.core_ms, g.base_ms,
                        g.met() ? "met" : "NOT met", g.target);
         core_goals_json.push_back(to_json(g));
     }

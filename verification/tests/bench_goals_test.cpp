@@ -2,6 +2,8 @@
 // figure and its target. Times are made up here; the bench itself never asserts a time.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "crossdiv/verification/bench/bench.h"
 
 namespace crossdiv::verification {
@@ -37,10 +39,10 @@ TEST(BenchGoals, LoopIsHeldToItsFloorAndToItsWarmTimeWhenCold) {
     const std::vector<CoreGoal> goals = core_goals(records, 8.0);
     ASSERT_EQ(goals.size(), 2u);
     EXPECT_EQ(goals[0].kind, CoreGoal::Kind::Floor);
-    EXPECT_NEAR(goals[0].ratio(), 1.40 / 0.96, 1e-12);  // 1.46: met
+    EXPECT_NEAR(goals[0].ratio, 1.40 / 0.96, 1e-12);  // 1.46: met
     EXPECT_TRUE(goals[0].met());
     EXPECT_EQ(goals[1].kind, CoreGoal::Kind::ColdOverWarm);
-    EXPECT_NEAR(goals[1].ratio(), 2.90 / 1.40, 1e-12);  // 2.07: not met
+    EXPECT_NEAR(goals[1].ratio, 2.90 / 1.40, 1e-12);  // 2.07: not met
     EXPECT_FALSE(goals[1].met());
     EXPECT_EQ(to_json(goals[1])["goal"], "cold over warm");
     EXPECT_EQ(to_json(goals[1])["met"], false);
@@ -62,6 +64,22 @@ TEST(BenchGoals, ColdLoopMustBeFourTimesTheFastestReferenceAndCatmullClarkNoSlow
     EXPECT_TRUE(goals[1].met());  // 1.1x
     EXPECT_EQ(goals[2].target, kBenchGoalRatio);
     EXPECT_TRUE(goals[2].met());  // 4.2x
+}
+
+TEST(BenchGoals, RatiosPairTheRunsTakenSideBySide) {
+    // Round by round the machine ran at full speed, at half, at two thirds: the ratio of the
+    // medians (20 / 5 = 4) mixes rounds, the runs side by side give 2, 4 and 3.
+    EXPECT_DOUBLE_EQ(paired_ratio({10, 20, 30}, {5, 5, 10}), 3.0);
+    EXPECT_TRUE(std::isnan(paired_ratio({}, {1.0})));
+    BenchRecord a = record("core", "loop", "cold", 320000, 20), b = record("core", "loop", "warm", 320000, 5);
+    EXPECT_DOUBLE_EQ(ratio_of(a, b), 4.0);  // no runs kept: the medians
+    a.runs_ms = {10, 20, 30};
+    b.runs_ms = {5, 5, 10};
+    EXPECT_DOUBLE_EQ(ratio_of(a, b), 3.0);
+    // The cold-over-warm goal takes the paired ratio.
+    const std::vector<CoreGoal> goals = core_goals({b, a}, 8.0);
+    ASSERT_EQ(goals.size(), 2u);
+    EXPECT_DOUBLE_EQ(goals[1].ratio, 3.0);
 }
 
 }  // namespace

@@ -100,6 +100,11 @@ BenchRecord time_in_child(const Refine& refine, int repeats, bool cold) {
 }  // namespace
 
 std::vector<BenchRecord> time_in_rounds(const std::vector<std::function<size_t()>>& refines, int repeats, bool cold) {
+    return time_in_rounds(refines, repeats, std::vector<bool>(refines.size(), cold));
+}
+
+std::vector<BenchRecord> time_in_rounds(const std::vector<std::function<size_t()>>& refines, int repeats,
+                                        const std::vector<bool>& cold) {
     // The repeats in rounds, every refinement in turn within a round (each in a child of its
     // own, warmed up once): the speed of a shared virtual machine drifts over seconds, and a
     // drift should weigh on every refinement alike, not on whichever ran during it.
@@ -110,7 +115,7 @@ std::vector<BenchRecord> time_in_rounds(const std::vector<std::function<size_t()
             const int runs = repeats / rounds + (round < repeats % rounds ? 1 : 0);
             BenchRecord& r = recs[i];
             if (r.status != "ok") continue;  // it failed: recorded once, not run again
-            const BenchRecord part = time_in_child(refines[i], runs, cold);
+            const BenchRecord part = time_in_child(refines[i], runs, cold[i]);
             if (part.status != "ok") {
                 r = part;
                 continue;
@@ -119,8 +124,9 @@ std::vector<BenchRecord> time_in_rounds(const std::vector<std::function<size_t()
             r.runs_ms.insert(r.runs_ms.end(), part.runs_ms.begin(), part.runs_ms.end());
             r.peak_rss_mb = std::max(r.peak_rss_mb, part.peak_rss_mb);
         }
-    for (BenchRecord& r : recs) {
-        r.memory = cold ? "cold" : "warm";
+    for (size_t i = 0; i < recs.size(); ++i) {
+        BenchRecord& r = recs[i];
+        r.memory = cold[i] ? "cold" : "warm";
         if (r.status == "ok" && !r.runs_ms.empty()) {
             r.repeats = static_cast<int>(r.runs_ms.size());
             r.min_ms = *std::min_element(r.runs_ms.begin(), r.runs_ms.end());
@@ -132,6 +138,11 @@ std::vector<BenchRecord> time_in_rounds(const std::vector<std::function<size_t()
 }
 
 std::vector<BenchRecord> run_bench(const std::vector<BenchInput>& inputs, const SchemeRule& rule, int repeats, bool cold) {
+    return run_bench(inputs, rule, repeats, std::vector<bool>{cold});
+}
+
+std::vector<BenchRecord> run_bench(const std::vector<BenchInput>& inputs, const SchemeRule& rule, int repeats,
+                                   const std::vector<bool>& regimes) {
     std::vector<BenchRecord> out;
     for (const BenchInput& in : inputs) {
         const RefineRequest request{in.scheme, rule, in.levels};
@@ -155,15 +166,20 @@ std::vector<BenchRecord> run_bench(const std::vector<BenchInput>& inputs, const 
         std::vector<const Implementation*> impls;
         for (const Implementation* impl : implementations())
             if (impl->has(in.scheme) && (closed || applies(impl))) impls.push_back(impl);
+        // Every implementation in every regime asked for, all in the same rounds.
         std::vector<Refine> refines;
-        for (const Implementation* impl : impls)
-            refines.push_back([&, impl] {
-                return triangles ? impl->refine_native(in.mesh, request) : impl->refine_polygons_native(in.polygons, request);
-            });
+        std::vector<bool> cold;
+        for (const bool regime : regimes)
+            for (const Implementation* impl : impls) {
+                refines.push_back([&, impl] {
+                    return triangles ? impl->refine_native(in.mesh, request) : impl->refine_polygons_native(in.polygons, request);
+                });
+                cold.push_back(regime);
+            }
         std::vector<BenchRecord> recs = time_in_rounds(refines, repeats, cold);
-        for (size_t i = 0; i < impls.size(); ++i) {
+        for (size_t i = 0; i < recs.size(); ++i) {
             BenchRecord& r = recs[i];
-            r.impl = impls[i]->name();
+            r.impl = impls[i % impls.size()]->name();
             r.scheme = to_string(in.scheme);
             r.input = in.name;
             r.levels = in.levels;
@@ -206,6 +222,12 @@ nlohmann::json to_json(const BenchRecord& r) {
             {"levels", r.levels},     {"input_faces", r.input_faces}, {"output_faces", r.output_faces},
             {"median_ms", r.median_ms}, {"min_ms", r.min_ms},       {"max_ms", r.max_ms},
             {"repeats", r.repeats},   {"peak_rss_mb", r.peak_rss_mb}, {"status", r.status}, {"memory", r.memory}};
+}
+
+double paired_ratio(const std::vector<double>& a, const std::vector<double>& b) {
+    std::vector<double> ratios;
+    for (size_t i = 0; i < std::min(a.size(), b.size()); ++i) ratios.push_back(a[i] / b[i]);
+    return median(std::move(ratios));
 }
 
 double median(std::vector<double> v) {
@@ -257,6 +279,10 @@ std::vector<double> interleaved_median_ms(int repeats, const std::vector<std::fu
     return out;
 }
 
+double ratio_of(const BenchRecord& a, const BenchRecord& b) {
+    return a.runs_ms.empty() || b.runs_ms.empty() ? a.median_ms / b.median_ms : paired_ratio(a.runs_ms, b.runs_ms);
+}
+
 std::vector<BenchGoal> bench_goals(const std::vector<BenchRecord>& records) {
     std::vector<BenchGoal> goals;
     for (const BenchRecord& core : records) {
@@ -268,7 +294,7 @@ std::vector<BenchGoal> bench_goals(const std::vector<BenchRecord>& records) {
                 fastest = &r;
         if (!fastest) continue;
         goals.push_back({core.scheme, core.input, core.levels, core.memory, core.output_faces, core.median_ms, fastest->impl,
-                         fastest->median_ms, fastest->median_ms / core.median_ms,
+                         fastest->median_ms, ratio_of(*fastest, core),
                          core.memory == "warm"    ? kBenchGoalRatio
                          : core.scheme == "loop" ? kBenchLoopColdGoalRatio
                                                  : kBenchColdGoalRatio,
@@ -289,13 +315,14 @@ std::vector<CoreGoal> core_goals(const std::vector<BenchRecord>& records, double
         if (warm.impl != "core" || warm.scheme != "loop" || warm.memory != "warm" || warm.status != "ok" ||
             warm.output_faces < kBenchGoalMinFaces)
             continue;
-        goals.push_back({CoreGoal::Kind::Floor, warm.scheme, warm.input, warm.levels, warm.output_faces, warm.median_ms,
-                         floor_ms(warm.scheme, warm.output_faces, write_gbs), kLoopFloorGoal});
+        const double floor = floor_ms(warm.scheme, warm.output_faces, write_gbs);
+        goals.push_back({CoreGoal::Kind::Floor, warm.scheme, warm.input, warm.levels, warm.output_faces, warm.median_ms, floor,
+                         warm.median_ms / floor, kLoopFloorGoal});
         for (const BenchRecord& cold : records)
             if (cold.impl == "core" && cold.scheme == warm.scheme && cold.input == warm.input && cold.levels == warm.levels &&
                 cold.memory == "cold" && cold.status == "ok")
                 goals.push_back({CoreGoal::Kind::ColdOverWarm, warm.scheme, warm.input, warm.levels, warm.output_faces,
-                                 cold.median_ms, warm.median_ms, kLoopColdOverWarmGoal});
+                                 cold.median_ms, warm.median_ms, ratio_of(cold, warm), kLoopColdOverWarmGoal});
     }
     return goals;
 }
@@ -308,7 +335,7 @@ nlohmann::json to_json(const CoreGoal& g) {
             {"output_faces", g.output_faces},
             {"core_ms", g.core_ms},
             {"base_ms", g.base_ms},
-            {"ratio", g.ratio()},
+            {"ratio", g.ratio},
             {"target_ratio", g.target},
             {"met", g.met()}};
 }

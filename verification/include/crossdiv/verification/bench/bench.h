@@ -50,6 +50,9 @@ struct BenchInput {
 /// the kernel after every run (ColdAllocator). Only the
 /// records' timings, sizes, memory and status are filled in.
 std::vector<BenchRecord> time_in_rounds(const std::vector<std::function<size_t()>>& refines, int repeats, bool cold);
+/// The same with a memory regime per refinement (cold[i] for refines[i]).
+std::vector<BenchRecord> time_in_rounds(const std::vector<std::function<size_t()>>& refines, int repeats,
+                                        const std::vector<bool>& cold);
 
 /// Times every implementation on every input: `repeats` runs each, spread over kBenchRounds
 /// rounds with every implementation in turn (a child per implementation and round, warmed up
@@ -58,6 +61,10 @@ std::vector<BenchRecord> time_in_rounds(const std::vector<std::function<size_t()
 /// again; the same setting applies to every implementation.
 /// Each input is refined by its scheme under `rule` (the member of that scheme).
 std::vector<BenchRecord> run_bench(const std::vector<BenchInput>& inputs, const SchemeRule& rule, int repeats, bool cold);
+/// The same in each of `regimes` (cold or not), every implementation in every regime timed in
+/// the same rounds: the records of an input, regime after regime.
+std::vector<BenchRecord> run_bench(const std::vector<BenchInput>& inputs, const SchemeRule& rule, int repeats,
+                                   const std::vector<bool>& regimes);
 
 /// The default series: benchmark_mesh() tori of about 320, 1280, 5120 and 20000 faces at 1
 /// and 2 levels, and 20000 faces at 3 levels (1.28M output faces).
@@ -68,6 +75,14 @@ std::vector<BenchInput> default_bench_inputs(bool quick);
 std::vector<BenchInput> default_catmull_clark_bench_inputs(bool quick);
 
 nlohmann::json to_json(const BenchRecord& r);
+
+/// a's time over b's: paired_ratio of their runs, or of their medians when either has none.
+double ratio_of(const BenchRecord& a, const BenchRecord& b);
+
+/// The median of a[i] / b[i] over the runs both have (NaN when none): runs of the same round
+/// (time_in_rounds) are taken close together, so a drift of a shared machine's speed, which
+/// moves the two medians apart, cancels in each ratio.
+double paired_ratio(const std::vector<double>& a, const std::vector<double>& b);
 
 /// The median of timings: the middle one, or the mean of the two middle ones (every timing of
 /// the bench, Loop and curves alike, is summarised by this one definition).
@@ -132,7 +147,7 @@ struct BenchGoal {
     double core_ms = 0;
     std::string fastest_reference;
     double fastest_reference_ms = 0;
-    double ratio = 0;  ///< fastest reference time / core time
+    double ratio = 0;  ///< fastest reference time / core time (ratio_of)
     double target = 0;
     double core_peak_rss_mb = 0;
     bool met() const { return ratio >= target; }
@@ -153,9 +168,9 @@ struct CoreGoal {
     long long output_faces = 0;
     double core_ms = 0;  ///< warm (Floor) or cold (ColdOverWarm)
     double base_ms = 0;  ///< the floor (Floor) or core's warm time (ColdOverWarm)
+    double ratio = 0;    ///< core over base: of the medians (Floor), of the runs side by side (ColdOverWarm)
     double target = 0;
-    double ratio() const { return core_ms / base_ms; }
-    bool met() const { return ratio() <= target; }
+    bool met() const { return ratio <= target; }
 };
 
 /// Core Loop's own goals from the records: the floor goal at every warm Loop record of at least

@@ -8,6 +8,7 @@
 /// built in the warm-up call, so its time is the evaluation alone: the comparison favours
 /// OpenSubdiv.
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -26,11 +27,13 @@ struct ThreadRow {
     /// Medians: core on one thread and on `threads`; OmpEvaluator likewise (NaN without the
     /// OpenSubdiv adapter, or when it failed).
     double core_one_ms = 0, core_many_ms = 0, omp_one_ms = 0, omp_many_ms = 0;
+    /// The ratios, each the median of the ratios of runs taken side by side (paired_ratio):
+    /// core's one-thread time over its N-thread time, and OmpEvaluator's N-thread time over
+    /// core's (above 1, core is ahead).
+    double core_speedup = NAN, core_over_omp = NAN;
     std::string status = "ok";  ///< or the first failure, "core: crashed: signal 11"
-    /// Core's one-thread time over its N-thread time.
-    double speedup() const { return core_one_ms / core_many_ms; }
-    /// OmpEvaluator's N-thread time over core's: above 1, core is ahead.
-    double over_omp() const { return omp_many_ms / core_many_ms; }
+    double speedup() const { return core_speedup; }
+    double over_omp() const { return core_over_omp; }
 };
 
 /// Goal: on N threads, at least 0.85 N times core's one-thread speed (1.7x on 2 cores).
