@@ -127,6 +127,7 @@ TEST(CatmullClarkStreaming, AnyNumberOfThreadsGivesTheBitsOfOne) {
             for (int threads : {2, 3, 8}) {
                 const PolyMesh many = catmull_clark_subdivide_streaming(c.mesh, o, c.levels, threads);
                 EXPECT_EQ(many.face_vertices, one.face_vertices) << threads;
+                EXPECT_EQ(many.face_start, one.face_start) << threads;
                 EXPECT_EQ(many.positions, one.positions) << threads;  // bit for bit
                 EXPECT_EQ(many.colors, one.colors) << threads;
             }

@@ -2,6 +2,8 @@
 // same numbering, the same triangles, edge points bit for bit.
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include <cmath>
 
 #include "crossdiv/error.h"
@@ -142,6 +144,30 @@ TEST(LoopStreaming, RefusesWhatLoopSubdivideRefuses) {
     for (Vec3& p : big.positions) p = 1e307 * p + Vec3(1.6e308, 0, 0);  // finite; any sum of two x overflows
     EXPECT_THROW(loop_subdivide_streaming(big, kLoopEdge, 1), InputError);
     EXPECT_THROW(loop_subdivide_streaming(tri_octahedron(), kLoopEdge, -1), InputError);
+}
+
+TEST(LoopStreaming, OnTwoThreadsABowtieInALargeMeshIsRefusedAndNamedAsOnOne) {
+    // 9,600 half-edges and more: the fan check runs beside the building of the topology, which
+    // on a vertex of two fans counts its ends short; the refusal is the same either way.
+    TriMesh grid = bumpy_grid_with_hole(40);
+    const int corner = grid.triangles.front()[0], n = grid.num_vertices();
+    grid.positions.push_back(grid.positions[corner] + Vec3(-1, -1, 0));
+    grid.positions.push_back(grid.positions[corner] + Vec3(-1, -2, 0));
+    grid.triangles.push_back({corner, n + 1, n});  // touches the grid at one vertex only
+    ASSERT_GE(3 * grid.num_faces(), 8192);
+    std::string one, two;
+    try {
+        loop_subdivide_streaming(grid, kLoopEdge, 1);
+    } catch (const InputError& e) {
+        one = e.what();
+    }
+    try {
+        loop_subdivide_streaming(grid, kLoopEdge, 1, 2);
+    } catch (const InputError& e) {
+        two = e.what();
+    }
+    EXPECT_NE(one, "");
+    EXPECT_EQ(two, one);
 }
 
 }  // namespace

@@ -421,14 +421,21 @@ bool streamable(const PolyMesh& mesh, int levels) {
     return small(mesh.positions) && small(mesh.colors);
 }
 
+/// The result's face starts: quad f starts at corner 4f.
+void quad_starts(std::vector<int>& face_start, size_t b, size_t blocks) {
+    const auto [begin, end] = detail::ParallelBlocks::block_range(face_start.size(), b, blocks);
+    for (size_t f = begin; f < end; ++f) face_start[f] = static_cast<int>(4 * f);
+}
+
 /// One level: the points of positions and colors and the child's connectivity, in four
-/// parallel regions (three for the last level), each pass split into one block per thread:
-/// face points and quads; edge and vertex points (which read the face points) and the count of
-/// edges per block (which reads the twins); the edges numbered, starts and face counts; the
-/// second corners' edges.
+/// parallel regions (three for the last level, or two handed out in chunks), each pass split
+/// into one block per thread: face points and quads; edge and vertex points (which read the face
+/// points) and the count of edges per block (which reads the twins); the edges numbered, starts
+/// and face counts; the second corners' edges. The last level writes the result's face starts
+/// into `face_start`.
 template <class Faces>
 void refine_level(const Level& l, const Faces& F, const CatmullClarkOptions& o, bool last, std::vector<Vec3>& positions,
-                  std::vector<Vec3>& colors, Level& child, detail::ParallelBlocks& parallel) {
+                  std::vector<Vec3>& colors, Level& child, std::vector<int>& face_start, detail::ParallelBlocks& parallel) {
     require_addressable(l);
     const std::vector<CatmullClarkVertexMask> masks = interior_masks(l);
     const int nc = l.num_corners();
@@ -439,8 +446,44 @@ void refine_level(const Level& l, const Faces& F, const CatmullClarkOptions& o, 
     child.nv = l.nv + l.nf + l.num_edges();
     child.nf = nc;
     using detail::resize_on_huge_pages;
+    const size_t blocks = parallel.blocks(static_cast<size_t>(nc));
+    std::vector<std::vector<int>> rings(blocks, std::vector<int>(8));
+    const auto edge_and_vertex_points = [&](size_t b, size_t of, std::vector<int>& ring) {
+        edge_points(l, F, o, positions.data(), next.data(), b, of);
+        vertex_points(l, F, o, masks, positions.data(), next.data(), ring, b, of);
+        if (!colors.empty()) {
+            edge_points(l, F, o, colors.data(), next_colors.data(), b, of);
+            vertex_points(l, F, o, masks, colors.data(), next_colors.data(), ring, b, of);
+        }
+    };
+    if (last && blocks > 1) {
+        parallel.run(blocks, [&](size_t b) {
+            face_points(l, F, positions.data(), next.data(), b, blocks);
+            if (!colors.empty()) face_points(l, F, colors.data(), next_colors.data(), b, blocks);
+        });
+        // The result's quads and face starts are vectors, zeroed when sized (25 MB at 1.25M
+        // quads) and sized before any block writes them: one thread sizes them while the
+        // others start on the edge and vertex points.
+        parallel.run_in_chunks_after(
+            blocks,
+            [&] {
+                resize_on_huge_pages(child.corner_vertex, 4 * static_cast<size_t>(nc));
+                resize_on_huge_pages(face_start, static_cast<size_t>(nc) + 1);
+            },
+            [&](size_t b, size_t c, size_t chunks) { edge_and_vertex_points(c, chunks, rings[b]); },
+            [&](size_t c, size_t chunks) {
+                quads_block(l, F, true, child, c, chunks);
+                quad_starts(face_start, c, chunks);
+            });
+        positions = std::move(next);
+        colors = std::move(next_colors);
+        return;
+    }
     resize_on_huge_pages(child.corner_vertex, 4 * static_cast<size_t>(nc));
-    if (!last) {
+    if (last) {
+        resize_on_huge_pages(face_start, static_cast<size_t>(nc) + 1);
+        quad_starts(face_start, 0, 1);
+    } else {
         resize_on_huge_pages(child.twin, 4 * static_cast<size_t>(nc));
         resize_on_huge_pages(child.corner_edge, 4 * static_cast<size_t>(nc));
         // Two halves of every edge and one edge per corner inside each face.
@@ -448,21 +491,14 @@ void refine_level(const Level& l, const Faces& F, const CatmullClarkOptions& o, 
         resize_on_huge_pages(child.start, static_cast<size_t>(child.nv));
         resize_on_huge_pages(child.faces, static_cast<size_t>(child.nv));
     }
-    const size_t blocks = parallel.blocks(static_cast<size_t>(nc));
     std::vector<int> edges(blocks + 1, 0);  // first corners before each block
-    std::vector<std::vector<int>> rings(blocks, std::vector<int>(8));
     parallel.run(blocks, [&](size_t b) {
         face_points(l, F, positions.data(), next.data(), b, blocks);
         if (!colors.empty()) face_points(l, F, colors.data(), next_colors.data(), b, blocks);
         quads_block(l, F, last, child, b, blocks);
     });
     parallel.run(blocks, [&](size_t b) {
-        edge_points(l, F, o, positions.data(), next.data(), b, blocks);
-        vertex_points(l, F, o, masks, positions.data(), next.data(), rings[b], b, blocks);
-        if (!colors.empty()) {
-            edge_points(l, F, o, colors.data(), next_colors.data(), b, blocks);
-            vertex_points(l, F, o, masks, colors.data(), next_colors.data(), rings[b], b, blocks);
-        }
+        edge_and_vertex_points(b, blocks, rings[b]);
         if (!last && blocks > 1) count_edges(child, edges, b, blocks);
     });
     positions = std::move(next);
@@ -500,19 +536,17 @@ PolyMesh catmull_clark_subdivide_streaming(const PolyMesh& mesh, const CatmullCl
     if (streamed) *streamed = true;
     std::vector<Vec3> positions = mesh.positions, colors = mesh.colors;
     Level child;
-    if (quads) refine_level(level, Quads{}, options, levels == 1, positions, colors, child, parallel);
-    else refine_level(level, Polygons{level}, options, levels == 1, positions, colors, child, parallel);
+    PolyMesh out;
+    if (quads) refine_level(level, Quads{}, options, levels == 1, positions, colors, child, out.face_start, parallel);
+    else refine_level(level, Polygons{level}, options, levels == 1, positions, colors, child, out.face_start, parallel);
     for (int l = 1; l < levels; ++l) {
         std::swap(level, child);
         if (l == 1) child = Level{};  // the input level's arrays, no longer read
-        refine_level(level, Quads{}, options, l + 1 == levels, positions, colors, child, parallel);
+        refine_level(level, Quads{}, options, l + 1 == levels, positions, colors, child, out.face_start, parallel);
     }
-    PolyMesh out;
     out.positions = std::move(positions);
     out.colors = std::move(colors);
     out.face_vertices = std::move(child.corner_vertex);
-    out.face_start.resize(static_cast<size_t>(child.nf) + 1);
-    for (int f = 0; f <= child.nf; ++f) out.face_start[f] = 4 * f;
     return out;
 }
 

@@ -1,7 +1,6 @@
 #include "crossdiv/subdiv/loop_streaming.h"
 
 #include <algorithm>
-#include <atomic>
 #include <climits>
 #include <exception>
 #include <cstdint>
@@ -479,38 +478,6 @@ void refine_topology(const StreamTopology& t, bool last, StreamTopology& child, 
     }
 }
 
-/// The last level on `blocks` threads. The result's triangles are a vector, which is zeroed
-/// when sized (a pass over the level's largest array: 1.2 ms of 8 at 1.28M triangles, measured)
-/// and must be sized before any block writes them: one thread sizes it while the others start on
-/// the points, and the points and then the triangles are handed out in chunks, in turn, so that
-/// the thread that sized the vector takes fewer. Each point and triangle is written by the same
-/// operations whichever chunk it falls in.
-template <class Points>
-void last_level_in_chunks(detail::ParallelBlocks& parallel, size_t blocks, const Points& points_of,
-                          const StreamTopology& topology, StreamTopology& child, std::vector<Triangle>& out) {
-    constexpr size_t kChunksPerBlock = 8;
-    const size_t chunks = kChunksPerBlock * blocks;
-    std::atomic<size_t> next_points{0}, next_triangles{0};
-    std::atomic<int> sized{0};  // 1: sized, -1: sizing threw (run() rethrows it)
-    parallel.run(blocks, [&](size_t b) {
-        if (b == 0) {
-            try {
-                detail::resize_on_huge_pages(out, 4 * topology.triangles.size());
-            } catch (...) {
-                sized = -1;
-                sized.notify_all();
-                throw;
-            }
-            sized = 1;
-            sized.notify_all();
-        }
-        for (size_t c; (c = next_points.fetch_add(1)) < chunks;) points_of(c, chunks);
-        sized.wait(0);
-        if (sized < 0) return;
-        for (size_t c; (c = next_triangles.fetch_add(1)) < chunks;) refine_topology(topology, true, child, out, c, chunks);
-    });
-}
-
 void require_addressable(const StreamTopology& t) {
     const long long nf = static_cast<long long>(t.triangles.size()), nv = t.num_vertices(), ne = t.num_edges();
     // Indices are int, as loop_refine_once refuses; an edge id also takes a side bit.
@@ -560,7 +527,13 @@ TriMesh loop_subdivide_streaming(const TriMesh& mesh, const LoopOptions& options
             if (colored) points(topology, options, masks, colors.data(), next_color, b, of);
         };
         if (last && blocks > 1) {
-            last_level_in_chunks(parallel, blocks, points_of, topology, child, out.triangles);
+            // The result's triangles are a vector, zeroed when sized (a pass over the level's
+            // largest array: 1.2 of 8 ms at 1.28M triangles, measured) and sized before any
+            // block writes them: one thread sizes it while the others start on the points.
+            parallel.run_in_chunks_after(
+                blocks, [&] { detail::resize_on_huge_pages(out.triangles, 4 * topology.triangles.size()); },
+                [&](size_t, size_t c, size_t chunks) { points_of(c, chunks); },
+                [&](size_t c, size_t chunks) { refine_topology(topology, true, child, out.triangles, c, chunks); });
         } else {
             if (last) {  // one block appends the triangles: a resized vector is zeroed first
                 out.triangles.reserve(4 * topology.triangles.size());

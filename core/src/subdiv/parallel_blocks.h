@@ -5,6 +5,7 @@
 // order whatever the split, so a refinement gives the same bits on one thread as on many; only
 // where the blocks start changes.
 
+#include <atomic>
 #include <barrier>
 #include <cstddef>
 #include <exception>
@@ -59,6 +60,36 @@ public:
             if (e) std::rethrow_exception(std::exchange(e, nullptr));
     }
 
+    /// Two passes on `blocks` threads, each cut into kChunksPerBlock chunks per block and handed
+    /// out in turn: first(b, c, chunks) for every chunk c (b: the thread's block, for its
+    /// scratch), then second(c, chunks), which may begin only once prepare() has returned. Block
+    /// 0 runs prepare() first (sizing a result that zero-fills, say) while the others start on
+    /// the first pass, and, taking chunks as it comes free, it takes fewer of them. An exception
+    /// of prepare() is rethrown here, the others' second pass skipped.
+    template <class Prepare, class First, class Second>
+    void run_in_chunks_after(size_t blocks, Prepare&& prepare, First&& first, Second&& second) {
+        const size_t chunks = kChunksPerBlock * blocks;
+        std::atomic<size_t> next_first{0}, next_second{0};
+        std::atomic<int> prepared{0};  // 1: prepared, -1: prepare() threw
+        run(blocks, [&](size_t b) {
+            if (b == 0) {
+                try {
+                    prepare();
+                } catch (...) {
+                    prepared = -1;
+                    prepared.notify_all();
+                    throw;
+                }
+                prepared = 1;
+                prepared.notify_all();
+            }
+            for (size_t c; (c = next_first.fetch_add(1)) < chunks;) first(b, c, chunks);
+            prepared.wait(0);
+            if (prepared < 0) return;
+            for (size_t c; (c = next_second.fetch_add(1)) < chunks;) second(c, chunks);
+        });
+    }
+
     /// Block b of `blocks` equal blocks of [0, n).
     static std::pair<size_t, size_t> block_range(size_t n, size_t b, size_t blocks) {
         return {n * b / blocks, n * (b + 1) / blocks};
@@ -66,6 +97,7 @@ public:
 
 private:
     static constexpr size_t kMinParallel = 8192;
+    static constexpr size_t kChunksPerBlock = 8;
 
     static int check(int threads) {
         if (threads < 1) throw InputError("threads must be >= 1, got " + std::to_string(threads));
