@@ -82,6 +82,7 @@ int run_suite(const std::string& manifest_path, const std::string& out, int jobs
     const std::vector<SuiteJob> mine = shard_jobs(all, shard_i, shard_n);
     fmt::print("suite {} ({}): {} jobs, shard {}/{} runs {} with {} worker(s)\n", manifest.name, manifest.file, all.size(),
                shard_i, shard_n, mine.size(), jobs);
+    clear_previous_run_files(out);
     const bool tty = isatty(STDOUT_FILENO);
     const auto t0 = std::chrono::steady_clock::now();
     std::vector<CaseRecord> records = run_jobs(mine, jobs, out, [&](int done, int total, const CaseRecord& rec) {

@@ -191,7 +191,12 @@ expect suite-bad-manifest 2 'bad.suite:2: levels=many is not a finite number' --
 printf 'suite none\n' > "$tmp/none.suite"
 expect suite-no-jobs 2 "none.suite: the suite expands to no jobs" -- "$crossdiv" suite "$tmp/none.suite" --shard 1/1 --out "$tmp/none" --no-report
 expect suite-bad-shard 2 'expected I/N' -- "$crossdiv" suite "$tmp/cli.suite" --shard 2 --out "$tmp/s"
+# A run into a folder of an earlier run leaves none of that run's views or minimal meshes.
+mkdir -p "$tmp/sh1/minimal" "$tmp/sh1/views"
+printf 'v 0 0 0\n' > "$tmp/sh1/minimal/job9-earlier.obj"
+printf 'v 0 0 0\n' > "$tmp/sh1/views/earlier.json"
 expect suite-shard-1 0 'shard 1/2 runs 1' -- "$crossdiv" suite "$tmp/cli.suite" --shard 1/2 --out "$tmp/sh1" --no-report
+expect suite-clears-earlier-files 1 '' -- test -e "$tmp/sh1/minimal/job9-earlier.obj" -o -e "$tmp/sh1/views/earlier.json"
 expect suite-shard-2 0 'shard 2/2 runs 1' -- "$crossdiv" suite "$tmp/cli.suite" --shard 2/2 --out "$tmp/sh2" --no-report
 expect merge 0 'merged 2 folder' -- "$crossdiv" merge "$tmp/sh1" "$tmp/sh2" --out "$tmp/merged"
 # Blender's adapter script (when Blender is installed): a run leaves no session folder of

@@ -297,15 +297,16 @@ std::vector<RefinedCounts> expected_counts(Scheme scheme, const PolyMesh& input,
         if (out.size() == 1) out[0].rule.clear();
         return out;
     }
-    const MeshTopology t = mesh_topology(input);
-    long v = t.vertices, e = t.edges, f = t.faces, corners = static_cast<long>(input.face_vertices.size());
+    long v = input.num_vertices(), f = input.num_faces(), corners = static_cast<long>(input.face_vertices.size()), e = 0;
     // Edges as OpenSubdiv counts them (nonmanifold.h), the vertex pairs on a manifold: a face
     // naming a vertex twice has more edges than pairs. Every later level derives its edges per
     // face, so the recurrence below holds from there.
     try {
         e = static_cast<long>(nonmanifold_edges(input).size());
     } catch (const InputError&) {
-        // A face of fewer than three corners: no rule refines it, and core says so.
+        // A face of fewer than three corners: no rule refines it, and core says so; the vertex
+        // pairs then (mesh_topology names a vertex the mesh lacks).
+        e = mesh_topology(input).edges;
     }
     const bool triangles = all_triangles(input);
     for (int l = 0; l < levels; ++l) {

@@ -203,6 +203,16 @@ SuiteSummary write_suite_outputs(const std::string& dir, const json& header, con
     return summary;
 }
 
+void clear_previous_run_files(const std::string& dir) {
+    create_output_folder(dir);  // names a path that is a file, before anything is run
+    for (const char* folder : {"views", "minimal"}) {
+        const fs::path p = fs::path(dir) / folder;
+        std::error_code ec;
+        fs::remove_all(p, ec);  // a link is removed, not followed
+        if (ec) throw InputError(p.string() + ": cannot remove the previous run's files (" + ec.message() + ")");
+    }
+}
+
 SuiteSummary merge_suite_outputs(const std::vector<std::string>& dirs, const std::string& out_dir) {
     ShardResults first;  // the first shard's header, which every other shard's must match
     std::map<int, CaseRecord> cases;

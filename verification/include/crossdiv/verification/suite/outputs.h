@@ -30,4 +30,10 @@ SuiteSummary write_suite_outputs(const std::string& dir, const nlohmann::json& h
 /// results.json, the suites differ, or two shards hold the same job.
 SuiteSummary merge_suite_outputs(const std::vector<std::string>& dirs, const std::string& out_dir);
 
+/// Removes the folders of files a suite run writes beside its results (views/, minimal/) from
+/// `dir` before a run into it, so that the folder holds this run's files only (the report lists
+/// this run's, and a merge copies a shard's whole folders).
+/// @throws InputError naming the folder when it cannot be removed.
+void clear_previous_run_files(const std::string& dir);
+
 }  // namespace crossdiv::verification
