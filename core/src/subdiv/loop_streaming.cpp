@@ -141,14 +141,17 @@ StreamTopology stream_topology(const std::vector<Triangle>& T, int nv, const std
     StreamTopology t;
     t.triangles = T;  // a view: the input outlives the refinement
     t.tri_edges = Buffer<std::array<int, 3>>(static_cast<size_t>(nf));
-    std::vector<std::array<int, 2>> ends, opposite, corners;
-    ends.reserve(static_cast<size_t>(nh) / 2 + 16);
-    opposite.reserve(ends.capacity());
-    corners.reserve(ends.capacity());
+    // An edge is numbered at its first half-edge: one with no twin, or the lower of the two.
+    size_t ne = 0;
+    for (int c = 0; c < nh; ++c) ne += twin[c] < 0 || twin[c] > c;
+    t.ends = Buffer<std::array<int, 2>>(ne);
+    t.opposite = Buffer<std::array<int, 2>>(ne);
+    t.edge_corners = Buffer<std::array<int, 2>>(ne);
     t.faces = Buffer<int>(static_cast<size_t>(nv));
     t.boundary = Buffer<std::uint8_t>(static_cast<size_t>(nv));
     std::fill(t.faces.data, t.faces.data + nv, 0);
     std::fill(t.boundary.data, t.boundary.data + nv, std::uint8_t{0});
+    int e = 0;
     for (int i = 0; i < nf; ++i)
         for (int j = 0; j < 3; ++j) {
             const int c = 3 * i + j, g = twin[c], a = T[i][j], b = T[i][j == 2 ? 0 : j + 1];
@@ -158,17 +161,11 @@ StreamTopology stream_topology(const std::vector<Triangle>& T, int nv, const std
                 continue;
             }
             if (g < 0) t.boundary[a] = t.boundary[b] = 1;
-            t.tri_edges[i][j] = static_cast<int>(ends.size()) << 1;
-            ends.push_back({a, b});
-            opposite.push_back({T[i][j == 0 ? 2 : j - 1], g < 0 ? -1 : T[g / 3][(g % 3 + 2) % 3]});
-            corners.push_back({c, g});
+            t.tri_edges[i][j] = e << 1;
+            t.ends[e] = {a, b};
+            t.opposite[e] = {T[i][j == 0 ? 2 : j - 1], g < 0 ? -1 : T[g / 3][(g % 3 + 2) % 3]};
+            t.edge_corners[e++] = {c, g};
         }
-    t.ends = Buffer<std::array<int, 2>>(ends.size());
-    t.opposite = Buffer<std::array<int, 2>>(ends.size());
-    std::copy(ends.begin(), ends.end(), t.ends.data);
-    std::copy(opposite.begin(), opposite.end(), t.opposite.data);
-    t.edge_corners = Buffer<std::array<int, 2>>(ends.size());
-    std::copy(corners.begin(), corners.end(), t.edge_corners.data);
     // Each vertex's edges by a counting sort in edge order. A vertex of one fan has as many as
     // its faces, plus one on a boundary; one of two boundary fans is counted short, and the
     // total tells before any list is written.
@@ -180,11 +177,11 @@ StreamTopology stream_topology(const std::vector<Triangle>& T, int nv, const std
         total += t.faces[v] + t.boundary[v];
         t.most_faces = std::max(t.most_faces, t.faces[v]);
     }
-    if (total != 2 * static_cast<int>(ends.size())) throw std::logic_error("streaming Loop: edge ends miscounted");
+    if (total != 2 * e) throw std::logic_error("streaming Loop: edge ends miscounted");
     t.incident = Buffer<int>(static_cast<size_t>(total));
-    for (int e = 0; e < static_cast<int>(ends.size()); ++e) {
-        t.incident[next[ends[e][0]]++] = e << 1;
-        t.incident[next[ends[e][1]]++] = (e << 1) | 1;
+    for (int k = 0; k < e; ++k) {
+        t.incident[next[t.ends[k][0]]++] = k << 1;
+        t.incident[next[t.ends[k][1]]++] = (k << 1) | 1;
     }
     return t;
 }
