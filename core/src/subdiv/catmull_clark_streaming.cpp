@@ -1,6 +1,7 @@
 #include "crossdiv/subdiv/catmull_clark_streaming.h"
 
 #include <algorithm>
+#include <array>
 #include <climits>
 #include <cstdint>
 #include <limits>
@@ -299,23 +300,23 @@ void vertex_points(const Level& l, const Faces& F, const CatmullClarkOptions& o,
     }
 }
 
-/// The next level (catmull_clark.h's numbering: quad c = (v_c, E(c), F(f), E(prev c))), built
-/// from the parent's connectivity alone, in the blocks of one level: its quads, and, unless
-/// `last`, its twins (quads_block); its edges, numbered at their first corner in scan order,
-/// block by block from the counts of the blocks before (count_edges, then number_edges, which
-/// also writes the walks' starts and face counts, then second_corners).
+/// Corner c's child quad (catmull_clark.h's numbering: quad c = (v_c, E(c), F(f), E(prev c))).
 template <class Faces>
-void quads_block(const Level& l, const Faces& F, bool last, Level& child, size_t b, size_t blocks) {
-    const int nv = l.nv, nf = l.nf;
-    const int face_point = nv, edge_point = nv + nf;
+std::array<int, 4> child_quad(const Level& l, const Faces& F, int c) {
+    const int face_point = l.nv, edge_point = l.nv + l.nf;
+    return {l.corner_vertex[c], edge_point + l.corner_edge[c], face_point + F.face(c), edge_point + l.corner_edge[F.prev(c)]};
+}
+
+/// The next level but the last, built from the parent's connectivity alone, in the blocks of one
+/// level: its quads and twins (quads_block); its edges, numbered at their first corner in scan
+/// order, block by block from the counts of the blocks before (count_edges, then number_edges,
+/// which also writes the walks' starts and face counts, then second_corners).
+template <class Faces>
+void quads_block(const Level& l, const Faces& F, Level& child, size_t b, size_t blocks) {
     const auto [begin, end] = detail::ParallelBlocks::block_range(static_cast<size_t>(l.num_corners()), b, blocks);
     for (int c = static_cast<int>(begin); c < static_cast<int>(end); ++c) {
-        int* quad = &child.corner_vertex[4 * static_cast<size_t>(c)];
-        quad[0] = l.corner_vertex[c];
-        quad[1] = edge_point + l.corner_edge[c];
-        quad[2] = face_point + F.face(c);
-        quad[3] = edge_point + l.corner_edge[F.prev(c)];
-        if (last) continue;
+        const std::array<int, 4> quad = child_quad(l, F, c);
+        std::copy(quad.begin(), quad.end(), &child.corner_vertex[4 * static_cast<size_t>(c)]);
         // Twins. Corner c's quad has the half-edges v_c -> E(c) (its twin E(c) -> v_c is the
         // last of the quad of next(twin c), across edge c), E(c) -> F (twin: in the quad of
         // next c), F -> E(prev c) (twin: in the quad of prev c) and E(prev c) -> v_c (twin: the
@@ -421,18 +422,33 @@ bool streamable(const PolyMesh& mesh, int levels) {
     return small(mesh.positions) && small(mesh.colors);
 }
 
-/// The result's face starts: quad f starts at corner 4f.
-void quad_starts(std::vector<int>& face_start, size_t b, size_t blocks) {
-    const auto [begin, end] = detail::ParallelBlocks::block_range(face_start.size(), b, blocks);
-    for (size_t f = begin; f < end; ++f) face_start[f] = static_cast<int>(4 * f);
+/// The last level's quads and face starts (quad f starts at corner 4f), appended to the result's
+/// vectors on one thread: vectors sized first are zeroed first (25 MB at 1.25M quads), and on
+/// several threads it costs more to size them on one and write their parts on all than to
+/// append them on one while the others make the points.
+template <class Faces>
+void append_last_quads(const Level& l, const Faces& F, std::vector<int>& quads, std::vector<int>& face_start) {
+    const size_t nc = static_cast<size_t>(l.num_corners());
+    quads.clear();
+    quads.reserve(4 * nc);
+    detail::prefer_huge_pages(quads.data(), quads.capacity() * sizeof(int));
+    face_start.clear();
+    face_start.reserve(nc + 1);
+    detail::prefer_huge_pages(face_start.data(), face_start.capacity() * sizeof(int));
+    for (int c = 0; c < static_cast<int>(nc); ++c) {
+        const std::array<int, 4> quad = child_quad(l, F, c);
+        quads.insert(quads.end(), quad.begin(), quad.end());
+        face_start.push_back(4 * c);
+    }
+    face_start.push_back(static_cast<int>(4 * nc));
 }
 
 /// One level: the points of positions and colors and the child's connectivity, in four
-/// parallel regions (three for the last level, or two handed out in chunks), each pass split
-/// into one block per thread: face points and quads; edge and vertex points (which read the face
-/// points) and the count of edges per block (which reads the twins); the edges numbered, starts
-/// and face counts; the second corners' edges. The last level writes the result's face starts
-/// into `face_start`.
+/// parallel regions, each pass split into one block per thread: face points and quads; edge
+/// and vertex points (which read the face points) and the count of edges per block (which reads
+/// the twins); the edges numbered, starts and face counts; the second corners' edges. The last
+/// level: the face points, then the edge and vertex points in chunks beside the result's quads
+/// and face starts (into `face_start`).
 template <class Faces>
 void refine_level(const Level& l, const Faces& F, const CatmullClarkOptions& o, bool last, std::vector<Vec3>& positions,
                   std::vector<Vec3>& colors, Level& child, std::vector<int>& face_start, detail::ParallelBlocks& parallel) {
@@ -456,54 +472,44 @@ void refine_level(const Level& l, const Faces& F, const CatmullClarkOptions& o, 
             vertex_points(l, F, o, masks, colors.data(), next_colors.data(), ring, b, of);
         }
     };
-    if (last && blocks > 1) {
+    if (last) {
         parallel.run(blocks, [&](size_t b) {
             face_points(l, F, positions.data(), next.data(), b, blocks);
             if (!colors.empty()) face_points(l, F, colors.data(), next_colors.data(), b, blocks);
         });
-        // The result's quads and face starts are vectors, zeroed when sized (25 MB at 1.25M
-        // quads) and sized before any block writes them: one thread sizes them while the
-        // others start on the edge and vertex points.
-        parallel.run_in_chunks_after(
-            blocks,
-            [&] {
-                resize_on_huge_pages(child.corner_vertex, 4 * static_cast<size_t>(nc));
-                resize_on_huge_pages(face_start, static_cast<size_t>(nc) + 1);
-            },
-            [&](size_t b, size_t c, size_t chunks) { edge_and_vertex_points(c, chunks, rings[b]); },
-            [&](size_t c, size_t chunks) {
-                quads_block(l, F, true, child, c, chunks);
-                quad_starts(face_start, c, chunks);
-            });
+        // One thread appends the result's quads and face starts (append_last_quads) while the
+        // others start on the edge and vertex points; it then takes the points left.
+        if (blocks > 1) {
+            parallel.run_chunks_beside(
+                blocks, [&] { append_last_quads(l, F, child.corner_vertex, face_start); },
+                [&](size_t b, size_t c, size_t chunks) { edge_and_vertex_points(c, chunks, rings[b]); });
+        } else {
+            edge_and_vertex_points(0, 1, rings[0]);
+            append_last_quads(l, F, child.corner_vertex, face_start);
+        }
         positions = std::move(next);
         colors = std::move(next_colors);
         return;
     }
     resize_on_huge_pages(child.corner_vertex, 4 * static_cast<size_t>(nc));
-    if (last) {
-        resize_on_huge_pages(face_start, static_cast<size_t>(nc) + 1);
-        quad_starts(face_start, 0, 1);
-    } else {
-        resize_on_huge_pages(child.twin, 4 * static_cast<size_t>(nc));
-        resize_on_huge_pages(child.corner_edge, 4 * static_cast<size_t>(nc));
-        // Two halves of every edge and one edge per corner inside each face.
-        resize_on_huge_pages(child.edge_corner, 2 * static_cast<size_t>(l.num_edges()) + static_cast<size_t>(nc));
-        resize_on_huge_pages(child.start, static_cast<size_t>(child.nv));
-        resize_on_huge_pages(child.faces, static_cast<size_t>(child.nv));
-    }
+    resize_on_huge_pages(child.twin, 4 * static_cast<size_t>(nc));
+    resize_on_huge_pages(child.corner_edge, 4 * static_cast<size_t>(nc));
+    // Two halves of every edge and one edge per corner inside each face.
+    resize_on_huge_pages(child.edge_corner, 2 * static_cast<size_t>(l.num_edges()) + static_cast<size_t>(nc));
+    resize_on_huge_pages(child.start, static_cast<size_t>(child.nv));
+    resize_on_huge_pages(child.faces, static_cast<size_t>(child.nv));
     std::vector<int> edges(blocks + 1, 0);  // first corners before each block
     parallel.run(blocks, [&](size_t b) {
         face_points(l, F, positions.data(), next.data(), b, blocks);
         if (!colors.empty()) face_points(l, F, colors.data(), next_colors.data(), b, blocks);
-        quads_block(l, F, last, child, b, blocks);
+        quads_block(l, F, child, b, blocks);
     });
     parallel.run(blocks, [&](size_t b) {
         edge_and_vertex_points(b, blocks, rings[b]);
-        if (!last && blocks > 1) count_edges(child, edges, b, blocks);
+        if (blocks > 1) count_edges(child, edges, b, blocks);
     });
     positions = std::move(next);
     colors = std::move(next_colors);
-    if (last) return;
     // One block numbers every corner in one pass; several count their first corners first.
     for (size_t b = 1; b <= blocks && blocks > 1; ++b) edges[b] += edges[b - 1];
     parallel.run(blocks, [&](size_t b) { number_edges(l, F, child, edges, b, blocks); });

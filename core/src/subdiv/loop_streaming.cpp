@@ -532,9 +532,8 @@ TriMesh loop_subdivide_streaming(const TriMesh& mesh, const LoopOptions& options
             // One thread appends the result's triangles (append_last_triangles) while the
             // others start on the points; it then takes the points left.
             if (blocks > 1) {
-                parallel.run_in_chunks_after(
-                    blocks, [&] { append_last_triangles(topology, out.triangles); },
-                    [&](size_t, size_t c, size_t chunks) { points_of(c, chunks); }, [](size_t, size_t) {});
+                parallel.run_chunks_beside(blocks, [&] { append_last_triangles(topology, out.triangles); },
+                                             [&](size_t, size_t c, size_t chunks) { points_of(c, chunks); });
             } else {
                 points_of(0, 1);
                 append_last_triangles(topology, out.triangles);

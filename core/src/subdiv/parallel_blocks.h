@@ -60,33 +60,17 @@ public:
             if (e) std::rethrow_exception(std::exchange(e, nullptr));
     }
 
-    /// Two passes on `blocks` threads, each cut into kChunksPerBlock chunks per block and handed
-    /// out in turn: first(b, c, chunks) for every chunk c (b: the thread's block, for its
-    /// scratch), then second(c, chunks), which may begin only once prepare() has returned. Block
-    /// 0 runs prepare() first (sizing a result that zero-fills, say) while the others start on
-    /// the first pass, and, taking chunks as it comes free, it takes fewer of them. An exception
-    /// of prepare() is rethrown here, the others' second pass skipped.
-    template <class Prepare, class First, class Second>
-    void run_in_chunks_after(size_t blocks, Prepare&& prepare, First&& first, Second&& second) {
+    /// A pass on `blocks` threads cut into kChunksPerBlock chunks per block, handed out in turn
+    /// (chunk(b, c, chunks) for every chunk c; b: the thread's block, for its scratch), beside a
+    /// task that block 0 runs first (appending a result that one thread writes, say): taking
+    /// chunks as it comes free, it takes fewer of them.
+    template <class Task, class Chunk>
+    void run_chunks_beside(size_t blocks, Task&& task, Chunk&& chunk) {
         const size_t chunks = kChunksPerBlock * blocks;
-        std::atomic<size_t> next_first{0}, next_second{0};
-        std::atomic<int> prepared{0};  // 1: prepared, -1: prepare() threw
+        std::atomic<size_t> next{0};
         run(blocks, [&](size_t b) {
-            if (b == 0) {
-                try {
-                    prepare();
-                } catch (...) {
-                    prepared = -1;
-                    prepared.notify_all();
-                    throw;
-                }
-                prepared = 1;
-                prepared.notify_all();
-            }
-            for (size_t c; (c = next_first.fetch_add(1)) < chunks;) first(b, c, chunks);
-            prepared.wait(0);
-            if (prepared < 0) return;
-            for (size_t c; (c = next_second.fetch_add(1)) < chunks;) second(c, chunks);
+            if (b == 0) task();
+            for (size_t c; (c = next.fetch_add(1)) < chunks;) chunk(b, c, chunks);
         });
     }
 
