@@ -39,13 +39,13 @@ inline void prefer_huge_pages(const void* p, size_t bytes) {
 /// An allocation for `bytes` of uninitialized memory, released with release_huge_pages. From
 /// 2 MB on, the array lies in whole 2 MB pages marked for huge pages: a block from malloc starts
 /// anywhere, and its parts before its first 2 MB boundary and after its last are faulted in by
-/// 4 KB pages, up to 4 MB of them per array. The block is a plain malloc of 4 MB more than the array, never written
-/// outside the pages the array uses: the margin costs address space only, and malloc reuses the
-/// block whole when memory is kept between refinements (an aligned_alloc leaves pieces that it
-/// does not reuse: measured 2,000 new faults a warm run, 1.4x its time). The array starts a few
-/// cache lines past the boundary, a different number for each array: arrays that all start at
-/// the same offset within a page are read at the same index by one loop and contend for the
-/// same cache sets.
+/// 4 KB pages, up to 4 MB of them per array. The block is a plain malloc of 4 MB more than the
+/// array, never written outside the pages the array uses: the margin costs address space only,
+/// and malloc reuses the block whole when memory is kept between refinements (an aligned_alloc
+/// leaves pieces that it does not reuse: measured 2,000 new faults a warm run, 1.4x its time).
+/// The array starts a few cache lines past the boundary, a different number for each array:
+/// arrays that all start at the same offset within a page are read at the same index by one
+/// loop and contend for the same cache sets.
 inline void* allocate_on_huge_pages(size_t bytes) {
     constexpr size_t kHuge = size_t{1} << 21;
     if (bytes < kHuge) {
