@@ -27,21 +27,12 @@ namespace {
 /// is read, and a value-initialized std::vector would first fill the whole array with zeros
 /// (measured: a tenth of a level's time). A large one is on huge pages (huge_pages.h).
 template <class T>
-class Buffer {
+struct Buffer {
     static_assert(std::is_trivially_destructible_v<T>);
-    std::unique_ptr<char, detail::HugePagesDeleter> owned_;  // null when a part of an ArrayBlock
-
-  public:
     T* data = nullptr;
     size_t size = 0;
 
-    Buffer() = default;
-    /// An array of `n` in an allocation of its own.
-    explicit Buffer(size_t n)
-        : owned_(static_cast<char*>(detail::allocate_on_huge_pages(n * sizeof(T))), {n * sizeof(T)}) {
-        place(owned_.get(), n);
-    }
-    /// This array as `n` elements at `at`, memory someone else owns.
+    /// This array as `n` elements at `at`, in an ArrayBlock's memory.
     void place(char* at, size_t n) {
         data = std::uninitialized_default_construct_n(reinterpret_cast<T*>(at), n) - n;  // no code: nothing to initialize
         size = n;
@@ -140,15 +131,16 @@ StreamTopology stream_topology(const std::vector<Triangle>& T, int nv, const std
     const int nf = static_cast<int>(T.size()), nh = 3 * nf;
     StreamTopology t;
     t.triangles = T;  // a view: the input outlives the refinement
-    t.tri_edges = Buffer<std::array<int, 3>>(static_cast<size_t>(nf));
     // An edge is numbered at its first half-edge: one with no twin, or the lower of the two.
     size_t ne = 0;
     for (int c = 0; c < nh; ++c) ne += twin[c] < 0 || twin[c] > c;
-    t.ends = Buffer<std::array<int, 2>>(ne);
-    t.opposite = Buffer<std::array<int, 2>>(ne);
-    t.edge_corners = Buffer<std::array<int, 2>>(ne);
-    t.faces = Buffer<int>(static_cast<size_t>(nv));
-    t.boundary = Buffer<std::uint8_t>(static_cast<size_t>(nv));
+    const size_t vertices = static_cast<size_t>(nv);
+    using Block = ArrayBlock;
+    // Every array in one allocation, as a refined level's; each edge has two incidence entries.
+    t.memory = ArrayBlock(Block::Part{t.tri_edges, static_cast<size_t>(nf)}, Block::Part{t.ends, ne},
+                          Block::Part{t.opposite, ne}, Block::Part{t.edge_corners, ne}, Block::Part{t.faces, vertices},
+                          Block::Part{t.boundary, vertices}, Block::Part{t.incident_start, vertices},
+                          Block::Part{t.incident, 2 * ne});
     std::fill(t.faces.data, t.faces.data + nv, 0);
     std::fill(t.boundary.data, t.boundary.data + nv, std::uint8_t{0});
     int e = 0;
@@ -169,7 +161,6 @@ StreamTopology stream_topology(const std::vector<Triangle>& T, int nv, const std
     // Each vertex's edges by a counting sort in edge order. A vertex of one fan has as many as
     // its faces, plus one on a boundary; one of two boundary fans is counted short, and the
     // total tells before any list is written.
-    t.incident_start = Buffer<int>(static_cast<size_t>(nv));
     std::vector<int> next(static_cast<size_t>(nv));
     int total = 0;
     for (int v = 0; v < nv; ++v) {
@@ -178,7 +169,6 @@ StreamTopology stream_topology(const std::vector<Triangle>& T, int nv, const std
         t.most_faces = std::max(t.most_faces, t.faces[v]);
     }
     if (total != 2 * e) throw std::logic_error("streaming Loop: edge ends miscounted");
-    t.incident = Buffer<int>(static_cast<size_t>(total));
     for (int k = 0; k < e; ++k) {
         t.incident[next[t.ends[k][0]]++] = k << 1;
         t.incident[next[t.ends[k][1]]++] = (k << 1) | 1;
