@@ -57,6 +57,11 @@ class ArrayBlock {
         Buffer<T>& array;
         size_t n;
     };
+    /// `array` as `n` elements of the block.
+    template <class T>
+    static Part<T> part(Buffer<T>& array, size_t n) {
+        return {array, n};
+    }
     ArrayBlock() = default;
     template <class... T>
     explicit ArrayBlock(Part<T>... parts) {
@@ -137,10 +142,10 @@ StreamTopology stream_topology(const std::vector<Triangle>& T, int nv, const std
     const size_t vertices = static_cast<size_t>(nv);
     using Block = ArrayBlock;
     // Every array in one allocation, as a refined level's; each edge has two incidence entries.
-    t.memory = ArrayBlock(Block::Part{t.tri_edges, static_cast<size_t>(nf)}, Block::Part{t.ends, ne},
-                          Block::Part{t.opposite, ne}, Block::Part{t.edge_corners, ne}, Block::Part{t.faces, vertices},
-                          Block::Part{t.boundary, vertices}, Block::Part{t.incident_start, vertices},
-                          Block::Part{t.incident, 2 * ne});
+    t.memory = ArrayBlock(Block::part(t.tri_edges, static_cast<size_t>(nf)), Block::part(t.ends, ne),
+                          Block::part(t.opposite, ne), Block::part(t.edge_corners, ne), Block::part(t.faces, vertices),
+                          Block::part(t.boundary, vertices), Block::part(t.incident_start, vertices),
+                          Block::part(t.incident, 2 * ne));
     std::fill(t.faces.data, t.faces.data + nv, 0);
     std::fill(t.boundary.data, t.boundary.data + nv, std::uint8_t{0});
     int e = 0;
@@ -337,12 +342,12 @@ void allocate_child(const StreamTopology& t, bool colored, StreamTopology& child
     const size_t edges = 2 * ne + 3 * nf, vertices = nv + ne;
     using Block = ArrayBlock;
     // An edge vertex has 6 incidence slots (4 used on a boundary), after the old vertices' entries.
-    child.memory = ArrayBlock(Block::Part{child.points, vertices}, Block::Part{child.point_colors, colored ? vertices : 0},
-                              Block::Part{child.own_triangles, 4 * nf}, Block::Part{child.tri_edges, 4 * nf},
-                              Block::Part{child.ends, edges}, Block::Part{child.opposite, edges},
-                              Block::Part{child.edge_corners, edges}, Block::Part{child.faces, vertices},
-                              Block::Part{child.boundary, vertices}, Block::Part{child.incident_start, vertices},
-                              Block::Part{child.incident, t.incident.size + 6 * ne});
+    child.memory = ArrayBlock(Block::part(child.points, vertices), Block::part(child.point_colors, colored ? vertices : 0),
+                              Block::part(child.own_triangles, 4 * nf), Block::part(child.tri_edges, 4 * nf),
+                              Block::part(child.ends, edges), Block::part(child.opposite, edges),
+                              Block::part(child.edge_corners, edges), Block::part(child.faces, vertices),
+                              Block::part(child.boundary, vertices), Block::part(child.incident_start, vertices),
+                              Block::part(child.incident, t.incident.size + 6 * ne));
     child.triangles = std::span<const Triangle>(child.own_triangles.data, 4 * nf);
     child.most_faces = std::max(t.most_faces, 6);
 }
