@@ -151,23 +151,23 @@ nlohmann::json print_thread_bench(const BenchArgs& a) {
     for (const ThreadRow& r : rows) {
         if (r.status != "ok") fmt::print("{:<13} {:<12} {:>6} {}\n", r.scheme, r.input, r.levels, r.status);
         fmt::print("{:<13} {:<12} {:>6} {:>12} {:>11.2f} {:>11.2f} {:>8.2f} {:>11.2f} {:>11.2f} {:>8.2f} {:>9.2f}\n",
-                   r.scheme, r.input, r.levels, r.output_faces, r.core_one_ms, r.core_many_ms, r.speedup(), r.omp_one_ms,
-                   r.omp_many_ms, r.omp_one_ms / r.omp_many_ms, r.over_omp());
+                   r.scheme, r.input, r.levels, r.output_faces, r.core_one_ms, r.core_many_ms, r.speedup, r.omp_one_ms,
+                   r.omp_many_ms, r.omp_one_ms / r.omp_many_ms, r.over_omp);
         out.push_back(to_json(r));
         if (r.output_faces < kThreadGoalMinFaces) continue;
-        const bool fast = r.speedup() >= speedup_goal, ahead = r.over_omp() >= kThreadOmpGoal;
+        const bool fast = r.speedup >= speedup_goal, ahead = r.over_omp >= kThreadOmpGoal;
         // Without OmpEvaluator's times (no OpenSubdiv adapter, or it failed) the second goal
         // has nothing to be measured against: said so, not counted as met.
-        const std::string against = std::isfinite(r.over_omp()) ? (ahead ? "met" : "NOT met") : "not measured";
+        const std::string against = std::isfinite(r.over_omp) ? (ahead ? "met" : "NOT met") : "not measured";
         fmt::print("goal ({} threads): core {:.2f}x its one-thread speed on {} threads, {} at {} levels ({} output faces): "
                    "{} (target {:.2f}x)\n",
-                   r.scheme, r.speedup(), r.threads, r.input, r.levels, r.output_faces, fast ? "met" : "NOT met", speedup_goal);
+                   r.scheme, r.speedup, r.threads, r.input, r.levels, r.output_faces, fast ? "met" : "NOT met", speedup_goal);
         fmt::print("goal ({} threads): core on {} threads {:.2f}x OmpEvaluator's speed on as many: {} (target {}x)\n", r.scheme,
-                   r.threads, r.over_omp(), against, kThreadOmpGoal);
+                   r.threads, r.over_omp, against, kThreadOmpGoal);
         goals.push_back({{"goal", "speedup"}, {"scheme", r.scheme}, {"input", r.input}, {"levels", r.levels}, {"threads", r.threads},
-                         {"ratio", r.speedup()}, {"target_ratio", speedup_goal}, {"met", fast}});
+                         {"ratio", r.speedup}, {"target_ratio", speedup_goal}, {"met", fast}});
         goals.push_back({{"goal", "ahead of OmpEvaluator"}, {"scheme", r.scheme}, {"input", r.input}, {"levels", r.levels}, {"threads", r.threads},
-                         {"ratio", finite_or_null(r.over_omp())},
+                         {"ratio", finite_or_null(r.over_omp)},
                          {"target_ratio", kThreadOmpGoal}, {"met", ahead}});
     }
     if (goals.empty()) fmt::print("goal (threads): no input of at least {} output faces in this run\n", kThreadGoalMinFaces);

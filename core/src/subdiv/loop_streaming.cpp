@@ -41,8 +41,9 @@ struct Buffer {
     const T& operator[](size_t i) const { return data[i]; }
 };
 
-/// One allocation for several arrays, each Buffer placed on cache lines of its own: a refined
-/// level's arrays are made at once at their final sizes, and together they fill 2 MB pages
+/// One allocation for several arrays, each Buffer placed on cache lines of its own: a level's
+/// arrays (the input's topology, a refined level's points and topology) are made at once at
+/// their final sizes, and together they fill 2 MB pages
 /// where each alone would be faulted in by 4 KB ones. Measured with the 2 MB-aligned blocks
 /// (huge_pages.h), each refinement in a child process, memory returned to the kernel after each:
 /// Loop to 320k and 1.28M faces, cold, 4,000 and 7,300 faults a run before, 1,600 and 1,600-2,100
@@ -81,7 +82,7 @@ struct StreamTopology {
     Buffer<Triangle> own_triangles;
     /// A refined level's points (and colours), made with its topology (the input's are the mesh's).
     Buffer<Vec3> points, point_colors;
-    ArrayBlock memory;  ///< a refined level's arrays, all in one allocation
+    ArrayBlock memory;  ///< every Buffer of the level, in one allocation
     /// Per triangle corner j: (edge << 1) | side of edge j (corner j to j + 1); side 0 when this
     /// triangle is the edge's first.
     Buffer<std::array<int, 3>> tri_edges;

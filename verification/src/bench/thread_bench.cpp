@@ -49,18 +49,18 @@ std::vector<ThreadRow> run_thread_bench(const std::vector<BenchInput>& inputs, i
 #endif
         const std::vector<BenchRecord> r = time_in_rounds(refines, repeats, false);
         ThreadRow row{to_string(in.scheme), in.name, in.levels, output_faces, threads, r[0].median_ms, r[1].median_ms, NAN, NAN};
-        row.core_speedup = paired_ratio(r[0].runs_ms, r[1].runs_ms);
+        row.speedup = paired_ratio(r[0].runs_ms, r[1].runs_ms);
         if (r.size() == 4) {
             row.omp_one_ms = r[2].median_ms;
             row.omp_many_ms = r[3].median_ms;
-            row.core_over_omp = paired_ratio(r[3].runs_ms, r[1].runs_ms);
+            row.over_omp = paired_ratio(r[3].runs_ms, r[1].runs_ms);
         }
         const char* names[] = {"core", "core", "OmpEvaluator", "OmpEvaluator"};
         for (size_t i = 0; i < r.size(); ++i)
             if (r[i].status != "ok") {
                 if (i >= 2) row.omp_one_ms = row.omp_many_ms = NAN;
-                else row.core_one_ms = row.core_many_ms = row.core_speedup = NAN;
-                row.core_over_omp = NAN;
+                else row.core_one_ms = row.core_many_ms = row.speedup = NAN;
+                row.over_omp = NAN;
                 if (row.status == "ok") row.status = std::string(names[i]) + ": " + r[i].status;
             }
         rows.push_back(row);
@@ -90,8 +90,8 @@ nlohmann::json to_json(const ThreadRow& r) {
             {"core_threads_ms", finite_or_null(r.core_many_ms)},
             {"omp_one_thread_ms", finite_or_null(r.omp_one_ms)},
             {"omp_threads_ms", finite_or_null(r.omp_many_ms)},
-            {"speedup", finite_or_null(r.speedup())},
-            {"omp_over_core", finite_or_null(r.over_omp())},
+            {"speedup", finite_or_null(r.speedup)},
+            {"omp_over_core", finite_or_null(r.over_omp)},
             {"status", r.status}};
 }
 

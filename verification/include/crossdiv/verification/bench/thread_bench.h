@@ -30,10 +30,8 @@ struct ThreadRow {
     /// The ratios, each the median of the ratios of runs taken side by side (paired_ratio):
     /// core's one-thread time over its N-thread time, and OmpEvaluator's N-thread time over
     /// core's (above 1, core is ahead).
-    double core_speedup = NAN, core_over_omp = NAN;
+    double speedup = NAN, over_omp = NAN;
     std::string status = "ok";  ///< or the first failure, "core: crashed: signal 11"
-    double speedup() const { return core_speedup; }
-    double over_omp() const { return core_over_omp; }
 };
 
 /// Goal: on N threads, at least 0.85 N times core's one-thread speed (1.7x on 2 cores).
