@@ -74,7 +74,6 @@ std::vector<int> nearest_within(const TriMesh& from, const TriMesh& to, double t
     if (to.num_vertices() == 0) return match;
     const PointCloud cloud{to.positions};
     PointTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
-    tree.buildIndex();
     for (int v = 0; v < from.num_vertices(); ++v) {
         unsigned index = 0;  // nanoflann 1.4's index type
         double d2 = 0;

@@ -233,7 +233,6 @@ SurfacePositionFit position_fit(const SurfaceSamples& core, const std::vector<Ve
     SurfacePositionFit fit{core.convention};
     const PointCloud cloud{core.positions};
     PointTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
-    tree.buildIndex();
     for (const auto& [i, dist] : nearest(theirs, tree)) fit.subject_to_core = std::max(fit.subject_to_core, dist / d);
     for (const auto& [i, dist] : nearest(core.positions, their_tree)) fit.core_to_subject = std::max(fit.core_to_subject, dist / d);
     fit.fits = fit.subject_to_core <= kSurfacePositionTolerance && fit.core_to_subject <= kSurfacePositionTolerance;
@@ -246,7 +245,6 @@ std::vector<SurfaceNormalFit> normal_fits(const SurfaceSamples& core, const std:
                                           const std::vector<Vec3>& normals, double d) {
     const PointCloud cloud{core.positions};
     PointTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
-    tree.buildIndex();
     const auto to_core = nearest(positions, tree);
     // The core samples at each subject vertex (a seam's point once per piece).
     const double radius = kSurfacePositionTolerance * d;
@@ -314,7 +312,6 @@ SurfaceSubjectComparison compare_surface_subject(const std::string& input_file, 
     const double diagonal = bounding_box_diagonal(conventions.front().positions), d = diagonal > 0 ? diagonal : 1;
     const PointCloud their_cloud{mine.positions};
     PointTree their_tree(3, their_cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
-    their_tree.buildIndex();
     for (const SurfaceSamples& c : conventions) out.conventions.push_back(position_fit(c, mine.positions, their_tree, d));
     out.subject_to_core = out.conventions.front().subject_to_core;
     out.core_to_subject = out.conventions.front().core_to_subject;

@@ -1,6 +1,5 @@
 #include "crossdiv/verification/harness/correspondence.h"
 
-#include "harness/point_cloud.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,10 +9,10 @@
 #include <numeric>
 #include <span>
 #include <string>
-#include <unordered_map>
 
 #include "crossdiv/mesh/tri_mesh.h"
 #include "crossdiv/verification/harness/mesh_topology.h"
+#include "crossdiv/verification/harness/nearest_points.h"
 
 namespace crossdiv::verification {
 namespace {
@@ -336,19 +335,10 @@ std::string match_next_level(const std::vector<int>& prev, const PolyMesh& our_c
     return "";
 }
 
-/// Copies of a vertex at one place: two points whose distances from a third (given squared:
-/// the nearer `d2_near`, the other `d2`) differ by at most `tie` (the copy distance times the
-/// mesh's diagonal). Two implementations that sum a vertex's neighbours in another order put it an
-/// ulp or two apart: such copies must not be told apart by position.
-bool same_place(double d2, double d2_near, double tie) { return std::sqrt(d2) <= std::sqrt(d2_near) + tie; }
-
-/// Our vertices at one place with the nearest to `at` (at squared distance `d2`), at most 8.
-std::span<const unsigned> copies_at(const PointTree& tree, const Vec3& at, double d2, double tie, size_t n, unsigned (&found)[8]) {
+/// Our vertices at one place with the nearest to `at`: as near as it up to `tie`, at most 8.
+std::span<const unsigned> copies_at(const NearestPoints& index, const Vec3& at, double tie, unsigned (&found)[8]) {
     double found_d2[8];
-    const size_t k = tree.knnSearch(at.data(), std::min<size_t>(8, n), found, found_d2);
-    size_t same = 0;
-    while (same < k && same_place(found_d2[same], d2, tie)) ++same;
-    return {found, same};
+    return {found, index.nearest_within(at, 8, tie, found, found_d2)};
 }
 
 /// For match_nearest_and_faces: a reference face none of whose edges is matched yet (the two
@@ -356,7 +346,7 @@ std::span<const unsigned> copies_at(const PointTree& tree, const Vec3& at, doubl
 /// its place) is placed on one of our faces whose corners, in the same cyclic order, are each
 /// among the copies nearest its corner, free or already its own. The cyclic order tells a face
 /// from its reversed copy. Returns whether it placed a vertex.
-bool place_faces_of_copies(const PolyMesh& ours, const PolyMesh& ref, const PointTree& tree, const std::vector<double>& d2,
+bool place_faces_of_copies(const PolyMesh& ours, const PolyMesh& ref, const NearestPoints& index, const std::vector<double>& d2,
                            double tie, std::vector<int>& map, std::vector<int>& taken_by) {
     if (std::find(map.begin(), map.end(), -1) == map.end()) return false;
     // Our faces around each vertex (flat lists), built once per call.
@@ -366,11 +356,10 @@ bool place_faces_of_copies(const PolyMesh& ours, const PolyMesh& ref, const Poin
     std::vector<int> fill(first.begin(), first.end() - 1);
     for (int f = 0; f < ours.num_faces(); ++f)
         for (int k = 0; k < ours.face_size(f); ++k) faces[static_cast<size_t>(fill[static_cast<size_t>(ours.face(f)[k])]++)] = f;
-    const size_t n = ref.positions.size();
     const auto fits = [&](int r, int u) {
         return map[static_cast<size_t>(r)] >= 0 ? map[static_cast<size_t>(r)] == u
                                                 : taken_by[static_cast<size_t>(u)] < 0 &&
-                                                      same_place((ours.positions[static_cast<size_t>(u)] - ref.positions[static_cast<size_t>(r)]).squaredNorm(),
+                                                      as_near_as((ours.positions[static_cast<size_t>(u)] - ref.positions[static_cast<size_t>(r)]).squaredNorm(),
                                                                  d2[static_cast<size_t>(r)], tie);
     };
     bool placed = false;
@@ -383,7 +372,7 @@ bool place_faces_of_copies(const PolyMesh& ours, const PolyMesh& ref, const Poin
         const std::span<const unsigned> starts =
             map[static_cast<size_t>(r0)] >= 0
                 ? std::span<const unsigned>(found, (found[0] = static_cast<unsigned>(map[static_cast<size_t>(r0)]), 1))
-                : copies_at(tree, ref.positions[static_cast<size_t>(r0)], d2[static_cast<size_t>(r0)], tie, n, found);
+                : copies_at(index, ref.positions[static_cast<size_t>(r0)], tie, found);
         bool done = false;
         for (const unsigned v : starts) {
             for (int i = first[v]; i < first[v + 1] && !done; ++i) {
@@ -421,22 +410,17 @@ const char* to_string(MatchMethod method) {
     return "unknown";
 }
 
-Correspondence match_nearest(const std::vector<Vec3>& ours, const std::vector<Vec3>& ref) {
+namespace {
+
+/// The one-to-one match by nearest positions, from each reference vertex's nearest of ours;
+/// method None, with the note, when two share one.
+Correspondence nearest_bijection(const std::vector<unsigned>& nearest, size_t ours) {
     Correspondence c;
     c.method = MatchMethod::None;
-    if (ours.size() != ref.size()) {
-        c.note = "vertex counts differ (" + std::to_string(ref.size()) + " vs " + std::to_string(ours.size()) + ")";
-        return c;
-    }
-    PointCloud cloud{ours};
-    PointTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-    tree.buildIndex();
-    c.ref_to_ours.resize(ref.size());
-    std::vector<char> used(ours.size(), 0);
-    for (size_t i = 0; i < ref.size(); ++i) {
-        unsigned idx = 0;  // the tree's default index type
-        double d2 = 0;
-        tree.knnSearch(ref[i].data(), 1, &idx, &d2);
+    c.ref_to_ours.resize(nearest.size());
+    std::vector<char> used(ours, 0);
+    for (size_t i = 0; i < nearest.size(); ++i) {
+        const unsigned idx = nearest[i];
         if (used[idx]) {
             c.note = "nearest-neighbour matching is not one-to-one (our vertex " + std::to_string(idx) + " is nearest to two)";
             c.ref_to_ours.clear();
@@ -449,16 +433,37 @@ Correspondence match_nearest(const std::vector<Vec3>& ours, const std::vector<Ve
     return c;
 }
 
+std::string counts_differ(size_t ref, size_t ours) {
+    return "vertex counts differ (" + std::to_string(ref) + " vs " + std::to_string(ours) + ")";
+}
+
+}  // namespace
+
+Correspondence match_nearest(const std::vector<Vec3>& ours, const std::vector<Vec3>& ref) {
+    if (ours.size() != ref.size()) {
+        Correspondence c;
+        c.note = counts_differ(ref.size(), ours.size());
+        return c;
+    }
+    const NearestPoints index(ours);
+    std::vector<unsigned> nearest(ref.size());
+    for (size_t i = 0; i < ref.size(); ++i) {
+        double d2 = 0;
+        index.nearest(ref[i], 1, &nearest[i], &d2);
+    }
+    return nearest_bijection(nearest, ours.size());
+}
+
 Correspondence match_nearest_and_faces(const PolyMesh& ours, const PolyMesh& ref, double copy_distance) {
-    Correspondence c = match_nearest(ours.positions, ref.positions);
-    if (ours.num_vertices() != ref.num_vertices()) return c;
-    const std::string nearest_failed = c.note;
+    if (ours.num_vertices() != ref.num_vertices()) {
+        Correspondence c;
+        c.note = counts_differ(ref.positions.size(), ours.positions.size());
+        return c;
+    }
     const size_t n = ref.positions.size();
 
     // Closest pairs first.
-    PointCloud cloud{ours.positions};
-    PointTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-    tree.buildIndex();
+    const NearestPoints index(ours.positions);
     std::vector<unsigned> nearest(n);
     std::vector<double> d2(n);
     // A reference vertex with two of ours as near (copies of a vertex at one place: a seam cut
@@ -469,11 +474,12 @@ Correspondence match_nearest_and_faces(const PolyMesh& ours, const PolyMesh& ref
     for (size_t i = 0; i < n; ++i) {
         unsigned two[2] = {0, 0};
         double two_d2[2] = {0, 0};
-        const size_t found = tree.knnSearch(ref.positions[i].data(), std::min<size_t>(2, n), two, two_d2);
+        tied[i] = index.nearest_within(ref.positions[i], 2, tie, two, two_d2) == 2;
         nearest[i] = two[0];
         d2[i] = two_d2[0];
-        tied[i] = found == 2 && same_place(two_d2[1], two_d2[0], tie);
     }
+    Correspondence c = nearest_bijection(nearest, n);
+    const std::string nearest_failed = c.note;
     // One to one by position, with no copies to confuse it: done. With copies, a one-to-one
     // match by position may still have taken the wrong copy of each (their distances differ
     // by rounding only): the faces decide.
@@ -483,13 +489,11 @@ Correspondence match_nearest_and_faces(const PolyMesh& ours, const PolyMesh& ref
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return d2[a] < d2[b]; });
     // Only mutual nearest neighbours: a reference vertex that moved far may sit nearest to
     // one of ours whose own twin moved too, and must not take it.
-    PointCloud ref_cloud{ref.positions};
-    PointTree ref_tree(3, ref_cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-    ref_tree.buildIndex();
+    const NearestPoints ref_index(ref.positions);
     const auto mutual = [&](int i) {
         unsigned back = 0;
         double back_d2 = 0;
-        ref_tree.knnSearch(ours.positions[nearest[i]].data(), 1, &back, &back_d2);
+        ref_index.nearest(ours.positions[nearest[i]], 1, &back, &back_d2);
         return back_d2 >= d2[i];  // i is (one of) the nearest to its nearest
     };
     std::vector<int> map(n, -1), taken_by(n, -1);
@@ -499,14 +503,58 @@ Correspondence match_nearest_and_faces(const PolyMesh& ours, const PolyMesh& ref
             taken_by[nearest[i]] = i;
         }
 
-    // Our faces by their directed edges, to find the face a reference face maps to.
-    std::unordered_map<std::uint64_t, int> face_of_edge;
-    const auto key = [](int a, int b) { return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b); };
-    for (int f = 0; f < ours.num_faces(); ++f)
-        for (int k = 0, m = ours.face_size(f); k < m; ++k) face_of_edge[key(ours.face(f)[k], ours.face(f)[(k + 1) % m])] = f;
-    for (bool placed = true; placed;) {
-        placed = false;
-        for (int f = 0; f < ref.num_faces(); ++f) {
+    // Our faces by their directed edges, to find the face a reference face maps to: each
+    // vertex's outgoing edges (their ends and faces) in flat lists, in face order.
+    const size_t our_n = ours.positions.size();
+    std::vector<int> out_first(our_n + 1, 0), out_to(ours.face_vertices.size()), out_face(ours.face_vertices.size());
+    for (int v : ours.face_vertices) ++out_first[static_cast<size_t>(v) + 1];
+    std::partial_sum(out_first.begin(), out_first.end(), out_first.begin());
+    {
+        std::vector<int> fill(out_first.begin(), out_first.end() - 1);
+        for (int f = 0; f < ours.num_faces(); ++f)
+            for (int k = 0, m = ours.face_size(f); k < m; ++k) {
+                const int at = fill[static_cast<size_t>(ours.face(f)[k])]++;
+                out_to[static_cast<size_t>(at)] = ours.face(f)[(k + 1) % m];
+                out_face[static_cast<size_t>(at)] = f;
+            }
+    }
+    // The face of our directed edge a->b (of two, the last), -1 when none.
+    const auto face_of_edge = [&](int a, int b) {
+        for (int i = out_first[static_cast<size_t>(a) + 1]; i-- > out_first[static_cast<size_t>(a)];)
+            if (out_to[static_cast<size_t>(i)] == b) return out_face[static_cast<size_t>(i)];
+        return -1;
+    };
+    // The reference's faces around each vertex: a face is tried again when a vertex of it is placed.
+    std::vector<int> ref_first(n + 1, 0), ref_faces(ref.face_vertices.size());
+    for (int v : ref.face_vertices) ++ref_first[static_cast<size_t>(v) + 1];
+    std::partial_sum(ref_first.begin(), ref_first.end(), ref_first.begin());
+    {
+        std::vector<int> fill(ref_first.begin(), ref_first.end() - 1);
+        for (int f = 0; f < ref.num_faces(); ++f)
+            for (int k = 0; k < ref.face_size(f); ++k) ref_faces[static_cast<size_t>(fill[static_cast<size_t>(ref.face(f)[k])]++)] = f;
+    }
+    // A face whose matched edge names one of ours places its unmatched corners there, if free.
+    // Its answer changes only when one of its corners is placed (our faces and a taken vertex
+    // stay as they are), so the faces are tried from a queue: every face once, in order, then
+    // the faces around each vertex placed; no pass over every face again.
+    std::vector<int> queue(static_cast<size_t>(ref.num_faces()));
+    std::vector<char> queued(queue.size(), 1);
+    std::iota(queue.begin(), queue.end(), 0);
+    const auto place = [&](int r, int u) {
+        map[static_cast<size_t>(r)] = u;
+        taken_by[static_cast<size_t>(u)] = r;
+        for (int i = ref_first[static_cast<size_t>(r)]; i < ref_first[static_cast<size_t>(r) + 1]; ++i) {
+            const int g = ref_faces[static_cast<size_t>(i)];
+            if (!queued[static_cast<size_t>(g)]) {
+                queued[static_cast<size_t>(g)] = 1;
+                queue.push_back(g);
+            }
+        }
+    };
+    for (size_t head = 0;;) {
+        for (; head < queue.size(); ++head) {
+            const int f = queue[head];
+            queued[static_cast<size_t>(f)] = 0;
             const int m = ref.face_size(f);
             const int* rf = ref.face(f);
             int unmatched = 0, edge = -1;  // edge: a corner k with k and k+1 matched
@@ -517,33 +565,35 @@ Correspondence match_nearest_and_faces(const PolyMesh& ours, const PolyMesh& ref
             if (unmatched == 0 || edge < 0) continue;
             // The matched edge names our face; its corners at the unmatched places must be free.
             const int a = map[rf[edge]], b = map[rf[(edge + 1) % m]];
-            const auto it = face_of_edge.find(key(a, b));
-            if (it == face_of_edge.end() || ours.face_size(it->second) != m) continue;
-            const int* of = ours.face(it->second);
+            const int g = face_of_edge(a, b);
+            if (g < 0 || ours.face_size(g) != m) continue;
+            const int* of = ours.face(g);
             int at = 0;
             while (of[at] != a) ++at;
             for (int k = 0; k < m; ++k) {
                 if (map[rf[k]] >= 0) continue;
                 const int candidate = of[(at + k - edge + m) % m];
-                if (taken_by[candidate] >= 0) continue;
-                map[rf[k]] = candidate;
-                taken_by[candidate] = rf[k];
-                placed = true;
+                if (taken_by[candidate] < 0) place(rf[k], candidate);
             }
         }
-        if (!placed) placed = place_faces_of_copies(ours, ref, tree, d2, tie, map, taken_by);
+        // No face places more: faces of copies by their corners' copies, and from them again.
+        std::vector<int> before = map;
+        if (!place_faces_of_copies(ours, ref, index, d2, tie, map, taken_by)) break;
+        for (size_t r = 0; r < n; ++r)
+            if (before[r] < 0 && map[r] >= 0) {
+                const int u = map[r];
+                map[r] = -1;
+                place(static_cast<int>(r), u);
+            }
     }
     // Tied vertices no face placed (copies no face uses): any free copy of ours at that place.
     for (size_t i = 0; i < n; ++i) {
         if (!tied[i] || map[i] >= 0) continue;
-        constexpr size_t kCopies = 8;
-        unsigned near[kCopies];
-        double near_d2[kCopies];
-        const size_t found = tree.knnSearch(ref.positions[i].data(), std::min(kCopies, n), near, near_d2);
-        for (size_t k = 0; k < found && same_place(near_d2[k], d2[i], tie); ++k)
-            if (taken_by[near[k]] < 0) {
-                map[i] = static_cast<int>(near[k]);
-                taken_by[near[k]] = static_cast<int>(i);
+        unsigned near[8];
+        for (const unsigned u : copies_at(index, ref.positions[i], tie, near))
+            if (taken_by[u] < 0) {
+                map[i] = static_cast<int>(u);
+                taken_by[u] = static_cast<int>(i);
                 break;
             }
     }

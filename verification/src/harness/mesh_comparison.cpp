@@ -9,7 +9,7 @@
 #include "crossdiv/subdiv/hole_faces.h"
 #include "crossdiv/verification/harness/corner_values.h"
 #include "crossdiv/verification/harness/mesh_topology.h"
-#include "harness/point_cloud.h"
+#include "crossdiv/verification/harness/nearest_points.h"
 #include "crossdiv/verification/harness/tolerances.h"
 
 namespace crossdiv::verification {
@@ -152,14 +152,12 @@ namespace {
 /// Largest distance from a point of `from` to its nearest point of `to`.
 double directed_hausdorff(const std::vector<Vec3>& from, const std::vector<Vec3>& to) {
     if (to.empty()) return from.empty() ? 0.0 : INFINITY;
-    PointCloud cloud{to};
-    PointTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-    tree.buildIndex();
+    const NearestPoints index(to);
     double worst = 0;
     for (const Vec3& p : from) {
         unsigned idx = 0;
         double d2 = 0;
-        tree.knnSearch(p.data(), 1, &idx, &d2);
+        index.nearest(p, 1, &idx, &d2);
         worst = std::max(worst, std::sqrt(d2));
     }
     return worst;

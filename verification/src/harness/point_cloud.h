@@ -16,6 +16,7 @@ struct PointCloud {
     bool kdtree_get_bbox(BBox&) const { return false; }
 };
 
+/// A k-d tree over a PointCloud. Its constructor builds it (nanoflann 1.4): no buildIndex() after.
 using PointTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PointCloud>, PointCloud, 3>;
 
 }  // namespace crossdiv::verification
