@@ -25,6 +25,7 @@
 #include "crossdiv/verification/implementations/output_size.h"
 #include "crossdiv/verification/implementations/program_implementation.h"
 #include "crossdiv/verification/suite/manifest.h"
+#include "crossdiv/verification/suite/operations.h"
 #include "crossdiv/verification/suite/outputs.h"
 #include "crossdiv/verification/suite/failure_shrink.h"
 #include "crossdiv/verification/suite/runner.h"
@@ -236,16 +237,22 @@ TEST(Manifest, TheDefaultSuiteReadsAndCoversEveryBundledMeshAndTheCatalog) {
     EXPECT_TRUE(inputs.count("edgecase:nonmanifold-edge-100"));
 }
 
-// The corpus suite reads; each of its cases declares the refusal of an unreadable file (a
-// corpus holds broken files), and its corpus expands to mesh files only, when it is installed.
+// The corpus suite reads; each of its cases, the comparisons and the invariance checks alike,
+// runs over both corpora and declares the refusal of an unreadable file (a corpus holds broken
+// files), and its corpus expands to mesh files only, when it is installed.
 TEST(Manifest, TheCorpusSuiteReadsAndDeclaresTheRefusalOfABrokenFile) {
     const fs::path corpus = fs::path(default_manifest_path()).parent_path() / "corpus.suite";
     const Manifest m = read_manifest(corpus.string());
     ASSERT_FALSE(m.entries.empty());
+    int invariance = 0;
     for (const ManifestEntry& e : m.entries) {
         const std::vector<DivergenceClass>& r = e.request.expected_refusals;
         EXPECT_NE(std::find(r.begin(), r.end(), DivergenceClass::InvalidInputHandling), r.end()) << "line " << e.line;
+        for (const char* source : {"corpus:assimp", "corpus:sweethome3d"})
+            EXPECT_NE(std::find(e.inputs.begin(), e.inputs.end(), source), e.inputs.end()) << "line " << e.line << ": " << source;
+        invariance += e.operation->name == "invariance";
     }
+    EXPECT_EQ(invariance, 2) << "Loop's and Catmull-Clark's invariance";
     for (const std::string& f : expand_inputs({"corpus:assimp"})) {
         EXPECT_TRUE(readable_mesh_file(f)) << f;
         EXPECT_FALSE(f.ends_with(".png") || f.ends_with(".txt")) << f;
