@@ -7,8 +7,10 @@
 #   ./run.sh sanitize [SECONDS]   build with clang, AddressSanitizer and UndefinedBehaviorSanitizer
 #                   into build-sanitize, run every test there, then each libFuzzer target for
 #                   SECONDS (default 30)
-#   ./run.sh corpus   install the real-mesh corpora (Debian data packages), build, and run the
-#                   corpus suite over them into out/corpus, stating its time
+#   ./run.sh corpus [I/N]   install the real-mesh corpora (Debian data packages), build, and run
+#                   the corpus suite over them into out/corpus, stating its time; with I/N, its
+#                   shard I of N only, into out/corpus-shards/I (on N machines, or one after
+#                   another), joined by `crossdiv merge out/corpus-shards/* --out out/corpus`
 set -euo pipefail
 cd "$(dirname "$0")"
 # The project's Python is Debian's /usr/bin/python3, the one its packages (numpy, Open3D, Dask,
@@ -177,12 +179,19 @@ case "${1:-}" in
     corpus_start=$SECONDS
     # Its time is stated whether or not a case failed; the exit status is the suite's.
     corpus_status=0
-    ./build/verification/crossdiv suite verification/suites/corpus.suite --out out/corpus || corpus_status=$?
-    echo "corpus suite: $((SECONDS - corpus_start)) s (results and report in out/corpus)"
+    if [ -n "${2:-}" ]; then
+      shard_out="out/corpus-shards/${2%%/*}"
+      ./build/verification/crossdiv suite verification/suites/corpus.suite --shard "$2" --out "$shard_out" || corpus_status=$?
+      echo "corpus suite, shard $2: $((SECONDS - corpus_start)) s (results and report in $shard_out;" \
+           "with every shard in: ./build/verification/crossdiv merge out/corpus-shards/* --out out/corpus)"
+    else
+      ./build/verification/crossdiv suite verification/suites/corpus.suite --out out/corpus || corpus_status=$?
+      echo "corpus suite: $((SECONDS - corpus_start)) s (results and report in out/corpus)"
+    fi
     exit "$corpus_status"
     ;;
   *)
-    echo "usage: $0 main|test|sanitize [SECONDS]|corpus" >&2
+    echo "usage: $0 main|test|sanitize [SECONDS]|corpus [I/N]" >&2
     exit 2
     ;;
 esac
