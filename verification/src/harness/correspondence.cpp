@@ -1,6 +1,5 @@
 #include "crossdiv/verification/harness/correspondence.h"
 
-
 #include <algorithm>
 #include <cmath>
 #include <bit>

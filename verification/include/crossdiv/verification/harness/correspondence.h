@@ -15,7 +15,7 @@ namespace crossdiv::verification {
 enum class MatchMethod {
     Order,     ///< the library numbered every vertex as we do
     Topology,  ///< recovered level by level from provenance (parent vertex, edge, face) alone
-    Nearest,   ///< nearest neighbour of positions (k-d tree), a bijection
+    Nearest,   ///< nearest neighbour of positions (nearest_points.h), a bijection
     /// Nearest neighbours, closest pairs first, and the vertices left over (a reference vertex
     /// far from where it should be) placed by the faces around them.
     NearestAndFaces,
