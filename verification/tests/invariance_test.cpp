@@ -16,6 +16,7 @@
 #include "crossdiv/mesh/poly_connectivity.h"
 #include "crossdiv/mesh/tri_mesh.h"
 #include "crossdiv/subdiv/bilinear.h"
+#include "crossdiv/subdiv/nonmanifold.h"
 #include "crossdiv/verification/comparisons/input_transformation.h"
 #include "crossdiv/verification/comparisons/invariance.h"
 #include "crossdiv/verification/comparisons/shrink.h"
@@ -244,6 +245,57 @@ TEST(Invariance, LevelByLevelIsComparedWhereTheRuleComposes) {
     EXPECT_NE(repeated.explanation.find("repeated vertex 0"), std::string::npos) << repeated.explanation;
     // A bowtie's children are bowties again: compared, and core composes.
     EXPECT_EQ(level_by_level(datasets::edge_case("bowtie").mesh, {Scheme::Loop, {}, 2}).result, InvarianceResult::Invariant);
+    // Shrunk from a Sweet Home 3D cupboard: an edge of four faces, two faces traversing an edge
+    // the same way, a bowtie. OpenSubdiv's rules pass the non-manifold tags of level 0 to level
+    // 1's children, which its faces, read afresh, tag otherwise (PolyMesh::derived keeps them).
+    // Core's level 1, returned from an isolated run, keeps them too, and level 2 run on it is
+    // level 2 of one run; as faces alone it would be another surface (measured below), which is
+    // what the isolated run returned before the tags crossed the process boundary.
+    PolyMesh cupboard;
+    {
+        PolyMesh& m = cupboard;
+        m.positions = {Vec3(38.611637, -41.148674, -18.515646),
+        Vec3(54.601063, -41.148674, -18.515648),
+        Vec3(56.983940, -41.148674, -18.515646),
+        Vec3(54.601063, -38.771088, -18.515648),
+        Vec3(54.601063, -12.346336, -18.515650),
+        Vec3(38.611637, -41.148674, -29.831118),
+        Vec3(54.601063, -41.148674, -29.831120),
+        Vec3(56.983940, -41.148674, -29.831118),
+        Vec3(38.611641, 16.138680, -29.831121),
+        Vec3(54.599277, 16.138680, -29.831121),
+        Vec3(38.611641, 14.553028, -29.831121),
+        Vec3(54.601196, 14.553028, -29.831121),
+        Vec3(56.983940, -12.346336, -29.831116),
+        Vec3(54.601063, -10.286072, -29.831121),
+        Vec3(38.611637, -12.346336, -29.831116),
+        Vec3(38.611641, -10.286072, -29.831121),
+        Vec3(54.601063, -12.346336, -29.831121),
+        Vec3(38.611637, -38.771088, -29.831118),
+        Vec3(54.601063, -38.771088, -29.831121)};
+    m.add_face({4, 16, 6, 1});
+    m.add_face({0, 5, 6, 1});
+    m.add_face({12, 7, 6, 16});
+    m.add_face({1, 6, 7, 2});
+    m.add_face({1, 3, 18, 6});
+    m.add_face({9, 11, 13, 16, 18, 6, 5, 17, 14, 15, 10, 8});
+    }
+    for (const bool isolate : {false, true}) {
+        const InvarianceCheck inherited = check_invariance(core_implementation(), cupboard, {Scheme::CatmullClark, {}, 2},
+                                                           {InputTransformation::LevelByLevel}, 1, 1e-12, 60, isolate)
+                                              .checks.at(0);
+        EXPECT_EQ(inherited.result, InvarianceResult::Invariant) << isolate << ": " << inherited.explanation;
+    }
+    {
+        // The reason measured: level 2 from level 1 with its tags, and from its faces alone.
+        const CatmullClarkOptions cc{CatmullClarkBoundary::EdgeOnly};
+        const PolyMesh two = catmull_clark_subdivide_nonmanifold(cupboard, cc, 2);
+        PolyMesh faces_only = catmull_clark_subdivide_nonmanifold(cupboard, cc, 1);
+        faces_only.derived = {};
+        const PolyMesh afresh = catmull_clark_subdivide_nonmanifold(faces_only, cc, 1);
+        ASSERT_EQ(two.num_vertices(), afresh.num_vertices());
+        EXPECT_GT((two.positions[39] - afresh.positions[39]).norm(), 1e-3 * bounding_box_diagonal(two.positions));
+    }
     // sqrt3 counted from the input trisects its boundary every second level: compared on a
     // closed mesh, not on one with a boundary; restarted each level, compared on both.
     RefineRequest sqrt3{Scheme::Sqrt3, {}, 2};

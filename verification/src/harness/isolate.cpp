@@ -86,6 +86,12 @@ void write_trace(FILE* f, const adapters::LevelTrace& trace) {
         }
         put(f, m.source.notes.size());  // what a reader noted (an input read in a child)
         for (const std::string& note : m.source.notes) put_string(f, note);
+        // A non-manifold level's tags inherited from its parent, which its faces do not state
+        // (core's levels by OpenSubdiv's rules): without them a level run on again in this
+        // process would be another mesh.
+        put_vector(f, m.derived.corner_edges);
+        put_vector(f, m.derived.nonmanifold_edges);
+        put_vector(f, m.derived.sharp_vertices);
     }
 }
 bool read_trace(FILE* f, adapters::LevelTrace& trace) {
@@ -107,6 +113,9 @@ bool read_trace(FILE* f, adapters::LevelTrace& trace) {
         if (!get(f, notes) || notes > 4096) return false;
         m.source.notes.resize(notes);
         for (std::string& note : m.source.notes) note = get_string(f);
+        if (!get_vector(f, m.derived.corner_edges) || !get_vector(f, m.derived.nonmanifold_edges) ||
+            !get_vector(f, m.derived.sharp_vertices))
+            return false;
     }
     return true;
 }
