@@ -334,6 +334,32 @@ std::string match_next_level(const std::vector<int>& prev, const PolyMesh& our_c
     return "";
 }
 
+/// Each vertex's corners in face order, in flat lists: the face of each and the corner after it
+/// in its face (the end of the vertex's outgoing edge there). Built once per match.
+struct CornersAround {
+    std::vector<int> first, face, next;
+
+    explicit CornersAround(const PolyMesh& m)
+        : first(static_cast<size_t>(m.num_vertices()) + 1, 0), face(m.face_vertices.size()), next(m.face_vertices.size()) {
+        for (int v : m.face_vertices) ++first[static_cast<size_t>(v) + 1];
+        std::partial_sum(first.begin(), first.end(), first.begin());
+        std::vector<int> fill(first.begin(), first.end() - 1);
+        for (int f = 0; f < m.num_faces(); ++f)
+            for (int k = 0, size = m.face_size(f); k < size; ++k) {
+                const size_t at = static_cast<size_t>(fill[static_cast<size_t>(m.face(f)[k])]++);
+                face[at] = f;
+                next[at] = m.face(f)[(k + 1) % size];
+            }
+    }
+
+    /// The face of directed edge a->b (of two, the last), -1 when none.
+    int face_of_edge(int a, int b) const {
+        for (int i = first[static_cast<size_t>(a) + 1]; i-- > first[static_cast<size_t>(a)];)
+            if (next[static_cast<size_t>(i)] == b) return face[static_cast<size_t>(i)];
+        return -1;
+    }
+};
+
 /// Our vertices at one place with the nearest to `at`: as near as it up to `tie`, at most 8.
 std::span<const unsigned> copies_at(const NearestPoints& index, const Vec3& at, double tie, unsigned (&found)[8]) {
     double found_d2[8];
@@ -345,16 +371,9 @@ std::span<const unsigned> copies_at(const NearestPoints& index, const Vec3& at, 
 /// its place) is placed on one of our faces whose corners, in the same cyclic order, are each
 /// among the copies nearest its corner, free or already its own. The cyclic order tells a face
 /// from its reversed copy. Returns whether it placed a vertex.
-bool place_faces_of_copies(const PolyMesh& ours, const PolyMesh& ref, const NearestPoints& index, const std::vector<double>& d2,
-                           double tie, std::vector<int>& map, std::vector<int>& taken_by) {
+bool place_faces_of_copies(const PolyMesh& ours, const CornersAround& around, const PolyMesh& ref, const NearestPoints& index,
+                           const std::vector<double>& d2, double tie, std::vector<int>& map, std::vector<int>& taken_by) {
     if (std::find(map.begin(), map.end(), -1) == map.end()) return false;
-    // Our faces around each vertex (flat lists), built once per call.
-    std::vector<int> first(static_cast<size_t>(ours.num_vertices()) + 1, 0), faces(ours.face_vertices.size());
-    for (int v : ours.face_vertices) ++first[static_cast<size_t>(v) + 1];
-    std::partial_sum(first.begin(), first.end(), first.begin());
-    std::vector<int> fill(first.begin(), first.end() - 1);
-    for (int f = 0; f < ours.num_faces(); ++f)
-        for (int k = 0; k < ours.face_size(f); ++k) faces[static_cast<size_t>(fill[static_cast<size_t>(ours.face(f)[k])]++)] = f;
     const auto fits = [&](int r, int u) {
         return map[static_cast<size_t>(r)] >= 0 ? map[static_cast<size_t>(r)] == u
                                                 : taken_by[static_cast<size_t>(u)] < 0 &&
@@ -374,8 +393,8 @@ bool place_faces_of_copies(const PolyMesh& ours, const PolyMesh& ref, const Near
                 : copies_at(index, ref.positions[static_cast<size_t>(r0)], tie, found);
         bool done = false;
         for (const unsigned v : starts) {
-            for (int i = first[v]; i < first[v + 1] && !done; ++i) {
-                const int g = faces[static_cast<size_t>(i)];
+            for (int i = around.first[v]; i < around.first[v + 1] && !done; ++i) {
+                const int g = around.face[static_cast<size_t>(i)];
                 if (ours.face_size(g) != m) continue;
                 const int* og = ours.face(g);
                 const int at = static_cast<int>(std::find(og, og + m, static_cast<int>(v)) - og);
@@ -502,36 +521,9 @@ Correspondence match_nearest_and_faces(const PolyMesh& ours, const PolyMesh& ref
             taken_by[nearest[i]] = i;
         }
 
-    // Our faces by their directed edges, to find the face a reference face maps to: each
-    // vertex's outgoing edges (their ends and faces) in flat lists, in face order.
-    const size_t our_n = ours.positions.size();
-    std::vector<int> out_first(our_n + 1, 0), out_to(ours.face_vertices.size()), out_face(ours.face_vertices.size());
-    for (int v : ours.face_vertices) ++out_first[static_cast<size_t>(v) + 1];
-    std::partial_sum(out_first.begin(), out_first.end(), out_first.begin());
-    {
-        std::vector<int> fill(out_first.begin(), out_first.end() - 1);
-        for (int f = 0; f < ours.num_faces(); ++f)
-            for (int k = 0, m = ours.face_size(f); k < m; ++k) {
-                const int at = fill[static_cast<size_t>(ours.face(f)[k])]++;
-                out_to[static_cast<size_t>(at)] = ours.face(f)[(k + 1) % m];
-                out_face[static_cast<size_t>(at)] = f;
-            }
-    }
-    // The face of our directed edge a->b (of two, the last), -1 when none.
-    const auto face_of_edge = [&](int a, int b) {
-        for (int i = out_first[static_cast<size_t>(a) + 1]; i-- > out_first[static_cast<size_t>(a)];)
-            if (out_to[static_cast<size_t>(i)] == b) return out_face[static_cast<size_t>(i)];
-        return -1;
-    };
-    // The reference's faces around each vertex: a face is tried again when a vertex of it is placed.
-    std::vector<int> ref_first(n + 1, 0), ref_faces(ref.face_vertices.size());
-    for (int v : ref.face_vertices) ++ref_first[static_cast<size_t>(v) + 1];
-    std::partial_sum(ref_first.begin(), ref_first.end(), ref_first.begin());
-    {
-        std::vector<int> fill(ref_first.begin(), ref_first.end() - 1);
-        for (int f = 0; f < ref.num_faces(); ++f)
-            for (int k = 0; k < ref.face_size(f); ++k) ref_faces[static_cast<size_t>(fill[static_cast<size_t>(ref.face(f)[k])]++)] = f;
-    }
+    // Our faces by their directed edges, to find the face a reference face maps to; the
+    // reference's faces around each vertex: a face is tried again when a vertex of it is placed.
+    const CornersAround our_corners(ours), ref_corners(ref);
     // A face whose matched edge names one of ours places its unmatched corners there, if free.
     // Its answer changes only when one of its corners is placed (our faces and a taken vertex
     // stay as they are), so the faces are tried from a queue: every face once, in order, then
@@ -542,8 +534,8 @@ Correspondence match_nearest_and_faces(const PolyMesh& ours, const PolyMesh& ref
     const auto place = [&](int r, int u) {
         map[static_cast<size_t>(r)] = u;
         taken_by[static_cast<size_t>(u)] = r;
-        for (int i = ref_first[static_cast<size_t>(r)]; i < ref_first[static_cast<size_t>(r) + 1]; ++i) {
-            const int g = ref_faces[static_cast<size_t>(i)];
+        for (int i = ref_corners.first[static_cast<size_t>(r)]; i < ref_corners.first[static_cast<size_t>(r) + 1]; ++i) {
+            const int g = ref_corners.face[static_cast<size_t>(i)];
             if (!queued[static_cast<size_t>(g)]) {
                 queued[static_cast<size_t>(g)] = 1;
                 queue.push_back(g);
@@ -564,7 +556,7 @@ Correspondence match_nearest_and_faces(const PolyMesh& ours, const PolyMesh& ref
             if (unmatched == 0 || edge < 0) continue;
             // The matched edge names our face; its corners at the unmatched places must be free.
             const int a = map[rf[edge]], b = map[rf[(edge + 1) % m]];
-            const int g = face_of_edge(a, b);
+            const int g = our_corners.face_of_edge(a, b);
             if (g < 0 || ours.face_size(g) != m) continue;
             const int* of = ours.face(g);
             int at = 0;
@@ -577,7 +569,7 @@ Correspondence match_nearest_and_faces(const PolyMesh& ours, const PolyMesh& ref
         }
         // No face places more: faces of copies by their corners' copies, and from them again.
         std::vector<int> before = map;
-        if (!place_faces_of_copies(ours, ref, index, d2, tie, map, taken_by)) break;
+        if (!place_faces_of_copies(ours, our_corners, ref, index, d2, tie, map, taken_by)) break;
         for (size_t r = 0; r < n; ++r)
             if (before[r] < 0 && map[r] >= 0) {
                 const int u = map[r];
