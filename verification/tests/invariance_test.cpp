@@ -559,6 +559,25 @@ TEST(InvarianceCause, AReferencesFindingIsClassedByWhatRemovesIt) {
     }
 }
 
+// OpenMesh's Catmull-Clark moves a vertex no face uses to a third of its place, and a bowtie
+// vertex, with its four boundary edges, to (v + four midpoints) / 3, weights that sum to 5/3:
+// under a translation neither moves with the mesh. Neither removal alone makes it invariant, both
+// in turn do (a Sweet Home 3D flower box has both); the bowtie named by its input number.
+TEST(InvarianceCause, RemovalsAreKeptOneAfterAnother) {
+    CROSSDIV_REQUIRE_LIBRARIES("openmesh");
+    PolyMesh m;
+    m.positions = {Vec3(5, 5, 5),                                                      // no face uses it
+                   Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0),         // a quad
+                   Vec3(2, 1, 0), Vec3(2, 2, 0), Vec3(1, 2, 0)};                        // another at vertex 3
+    m.add_face({1, 2, 3, 4});
+    m.add_face({3, 5, 6, 7});
+    const RefineRequest cc{Scheme::CatmullClark, {}, 1};
+    const InvarianceCause c = cause_of(find_implementation("openmesh"), m, cc, InputTransformation::Translate);
+    EXPECT_EQ(c.cls, DivergenceClass::NonManifoldHandling) << c.why;
+    EXPECT_EQ(c.why, "invariant once its 1 vertices no face uses are removed, its 1 non-manifold vertices are split into "
+                     "their fans (vertex 3)");
+}
+
 // A file of points and no face (Assimp's testpoints.obj): whatever an implementation makes of its
 // vertices differs only at vertices no face uses, and nothing is left once they are removed.
 TEST(InvarianceCause, AMeshWithoutFacesIsIsolatedVertexHandlingWithoutARun) {

@@ -87,10 +87,6 @@ std::vector<int> fans_of(const PolyMesh& mesh, const VertexCorners& vc, int v, G
     return out;
 }
 
-/// `mesh` with each vertex of `split` given one copy per fan (fans_of, every corner one group):
-/// a bowtie vertex comes apart into its fans, and the faces around a non-manifold edge get a
-/// copy of each end apiece, so that no vertex or edge of the split mesh is non-manifold where
-/// the input's were. The first fan keeps the vertex and its tags.
 /// `mesh` with each boundary loop of three edges closed by a cap of three triangles around a
 /// new vertex (beyond the loop, a mean edge length from its centroid against the loop's
 /// faces), and how many loops were; `mesh` itself when it is not a manifold the connectivity
@@ -130,6 +126,10 @@ PolyMesh with_short_boundary_loops_capped(const PolyMesh& mesh, int& capped) {
     return out;
 }
 
+/// `mesh` with each vertex of `split` given one copy per fan (fans_of, every corner one group):
+/// a bowtie vertex comes apart into its fans, and the faces around a non-manifold edge get a
+/// copy of each end apiece, so that no vertex or edge of the split mesh is non-manifold where
+/// the input's were. The first fan keeps the vertex and its tags.
 PolyMesh with_fans_split(const PolyMesh& mesh, const std::vector<int>& split) {
     PolyMesh out = mesh;
     const VertexCorners vc(mesh);
@@ -566,38 +566,57 @@ InvarianceCause explain_not_invariant(const Implementation& impl, const PolyMesh
     if (isolated > 0 && used.num_faces() == 0)
         return {DivergenceClass::IsolatedVertexHandling,
                 "the input has no faces: all " + std::to_string(isolated) + " of its vertices are ones no face uses"};
-    if (isolated > 0 && invariant_on(used))
-        return {DivergenceClass::IsolatedVertexHandling,
-                "invariant once its " + std::to_string(isolated) + " vertices no face uses are removed"};
+    // The removals are made one after another, each kept for the next: a real model may have
+    // vertices no face uses and a bowtie, and an implementation that mishandles both (OpenMesh's
+    // Catmull-Clark moves each by other weights than the affine ones) is invariant only once both
+    // are gone. The class is the removal that makes it invariant; the why names those before it.
+    PolyMesh cleaned = input;
+    std::vector<int> input_vertex;  // cleaned's vertex v is the input's input_vertex[v], once vertices are removed
+    std::string removed;            // the removals kept so far, as clauses ending in ", "
+    if (isolated > 0) {
+        if (invariant_on(used))
+            return {DivergenceClass::IsolatedVertexHandling,
+                    "invariant once its " + std::to_string(isolated) + " vertices no face uses are removed"};
+        std::vector<char> in_use(static_cast<size_t>(input.num_vertices()), 0);
+        for (int v : input.face_vertices) in_use[static_cast<size_t>(v)] = 1;
+        for (int v = 0; v < input.num_vertices(); ++v)
+            if (in_use[static_cast<size_t>(v)]) input_vertex.push_back(v);
+        cleaned = used;
+        removed = "its " + std::to_string(isolated) + " vertices no face uses are removed, ";
+    }
+    const auto input_index = [&](int v) { return input_vertex.empty() ? v : input_vertex[static_cast<size_t>(v)]; };
     std::vector<int> nonmanifold;
     try {
-        nonmanifold = nonmanifold_vertices(input);
+        nonmanifold = nonmanifold_vertices(cleaned);
     } catch (const InputError&) {
         // A face the steps refuse (a repeated corner): the degenerate test below names it.
     }
-    if (!nonmanifold.empty() && invariant_on(with_fans_split(input, nonmanifold)))
-        return {DivergenceClass::NonManifoldHandling,
-                "invariant once its " + std::to_string(nonmanifold.size()) +
-                    " non-manifold vertices are split into their fans (vertex " + std::to_string(nonmanifold[0]) +
-                    (nonmanifold.size() > 1 ? ", ...)" : ")")};
+    if (!nonmanifold.empty()) {
+        PolyMesh split = with_fans_split(cleaned, nonmanifold);
+        const std::string clause = "its " + std::to_string(nonmanifold.size()) +
+                                   " non-manifold vertices are split into their fans (vertex " +
+                                   std::to_string(input_index(nonmanifold[0])) + (nonmanifold.size() > 1 ? ", ...)" : ")");
+        if (invariant_on(split)) return {DivergenceClass::NonManifoldHandling, "invariant once " + removed + clause};
+        cleaned = std::move(split);
+        removed += clause + ", ";
+    }
     // The Butterflies' four-point rule on a boundary loop of three edges, whose two outer
     // points are one vertex (VTK reads another point there, which does not move with the mesh).
     if (request.scheme == Scheme::Butterfly || request.scheme == Scheme::ModifiedButterfly) {
         int capped = 0;
-        const PolyMesh closed = with_short_boundary_loops_capped(nonmanifold.empty() ? input : with_fans_split(input, nonmanifold), capped);
+        const PolyMesh closed = with_short_boundary_loops_capped(cleaned, capped);
         if (capped > 0 && invariant_on(closed))
             return {DivergenceClass::ShortBoundaryLoop,
-                    "invariant once its " + std::to_string(capped) + " boundary loop(s) of three edges are capped" +
-                        (nonmanifold.empty() ? std::string() : " (its non-manifold vertices split into their fans)") +
-                        ": there the four-point rule's two outer points are one vertex"};
+                    "invariant once " + removed + "its " + std::to_string(capped) +
+                        " boundary loop(s) of three edges are capped: there the four-point rule's two outer points are one vertex"};
     }
-    if (!input.face_varying.empty()) {
+    if (!cleaned.face_varying.empty()) {
         int split = 0;
-        const PolyMesh apart = with_value_fans_split(input, split);
+        const PolyMesh apart = with_value_fans_split(cleaned, split);
         if (split > 0 && invariant_on(apart))
             return {DivergenceClass::FaceOrderDependence,
                     "its texture coordinates depend on the order of the faces at a UV bowtie (a value whose faces "
-                    "alternate with another's around a vertex): invariant once its " + std::to_string(split) +
+                    "alternate with another's around a vertex): invariant once " + removed + "its " + std::to_string(split) +
                         " bowtie values are split, one per fan"};
     }
     const SchemeSupport* support = impl.support(request.scheme);

@@ -95,8 +95,9 @@ InvarianceReport check_invariance(const Implementation& impl, const PolyMesh& in
                                   double tolerance, double timeout_seconds, bool isolate = true);
 
 /// Why an implementation is not invariant (or not deterministic) on an input, by measurement:
-/// the check is run again on the input without what one input handling concerns, and the class
-/// is the first whose removal makes it invariant.
+/// the check is run again on the input without what one input handling concerns, each removal
+/// kept for the next (a model may have vertices no face uses and a bowtie, both mishandled), and
+/// the class is the removal that makes it invariant; the why names the removals before it.
 ///   isolated-vertex-handling   invariant once the vertices no face uses are removed
 ///   non-manifold-handling      invariant once each non-manifold vertex is split into its fans
 ///   face-order-dependence      invariant once each texture coordinate that is a bowtie at a
