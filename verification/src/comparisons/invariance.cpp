@@ -348,6 +348,7 @@ nlohmann::json to_json(const InvarianceCheck& c) {
             {"exact", c.exact},
             {"bit_identical", c.bit_identical},
             {"faces_equal", c.faces_equal},
+            {"point_sets", c.point_sets},
             {"max_rel", finite_or_null(c.max_rel)},
             {"uv_max_rel", finite_or_null(c.uv_max_rel)},
             {"worst_vertex", c.worst_vertex},
@@ -412,6 +413,7 @@ InvarianceCheck measure_invariance(const PolyMesh& refined, const PolyMesh& refi
     // polygons back to back): within the bar is at one position.
     if ((!c || !c->topology_equal()) && has_vertices_within(refined.positions, bar * diagonal)) {
         out.max_rel = hausdorff_vertex_sets(expected.positions, refined_transformed.positions) / diagonal;
+        out.point_sets = true;
         const bool same_points = out.max_rel <= bar && expected.num_vertices() == refined_transformed.num_vertices();
         out.result = same_points ? InvarianceResult::NotCompared : InvarianceResult::NotInvariant;
         out.explanation = std::string(same_points ? "the same points" : "the point sets part") + " (Hausdorff " +
@@ -553,9 +555,18 @@ InvarianceCause explain_not_invariant(const Implementation& impl, const PolyMesh
                                       const InvarianceCheck& finding, std::uint64_t seed, double tolerance,
                                       double timeout_seconds, bool isolate) {
     const InputTransformation t = finding.transformation;
+    // A finding made on point sets (vertices at one position: its faces not compared) is gone
+    // when a removal leaves the same points, compared as the finding was.
+    bool as_points = false;
     const auto invariant_on = [&](const PolyMesh& mesh) {
         const InvarianceReport r = check_invariance(impl, mesh, request, {t}, seed, tolerance, timeout_seconds, isolate);
-        return r.checks.size() == 1 && r.checks[0].result == InvarianceResult::Invariant;
+        if (r.checks.size() != 1) return false;
+        as_points = finding.point_sets && r.checks[0].point_sets && r.checks[0].result == InvarianceResult::NotCompared;
+        return r.checks[0].result == InvarianceResult::Invariant || as_points;
+    };
+    const auto once = [&](const std::string& removals) {
+        return (as_points ? "the same points (its faces not compared: vertices at one position) once " : "invariant once ") +
+               removals;
     };
     std::vector<int> all_faces(static_cast<size_t>(input.num_faces()));
     for (size_t f = 0; f < all_faces.size(); ++f) all_faces[f] = static_cast<int>(f);
@@ -576,7 +587,7 @@ InvarianceCause explain_not_invariant(const Implementation& impl, const PolyMesh
     if (isolated > 0) {
         if (invariant_on(used))
             return {DivergenceClass::IsolatedVertexHandling,
-                    "invariant once its " + std::to_string(isolated) + " vertices no face uses are removed"};
+                    once("its " + std::to_string(isolated) + " vertices no face uses are removed")};
         std::vector<char> in_use(static_cast<size_t>(input.num_vertices()), 0);
         for (int v : input.face_vertices) in_use[static_cast<size_t>(v)] = 1;
         for (int v = 0; v < input.num_vertices(); ++v)
@@ -596,7 +607,7 @@ InvarianceCause explain_not_invariant(const Implementation& impl, const PolyMesh
         const std::string clause = "its " + std::to_string(nonmanifold.size()) +
                                    " non-manifold vertices are split into their fans (vertex " +
                                    std::to_string(input_index(nonmanifold[0])) + (nonmanifold.size() > 1 ? ", ...)" : ")");
-        if (invariant_on(split)) return {DivergenceClass::NonManifoldHandling, "invariant once " + removed + clause};
+        if (invariant_on(split)) return {DivergenceClass::NonManifoldHandling, once(removed + clause)};
         cleaned = std::move(split);
         removed += clause + ", ";
     }
@@ -607,8 +618,8 @@ InvarianceCause explain_not_invariant(const Implementation& impl, const PolyMesh
         const PolyMesh closed = with_short_boundary_loops_capped(cleaned, capped);
         if (capped > 0 && invariant_on(closed))
             return {DivergenceClass::ShortBoundaryLoop,
-                    "invariant once " + removed + "its " + std::to_string(capped) +
-                        " boundary loop(s) of three edges are capped: there the four-point rule's two outer points are one vertex"};
+                    once(removed + "its " + std::to_string(capped) +
+                         " boundary loop(s) of three edges are capped: there the four-point rule's two outer points are one vertex")};
     }
     if (!cleaned.face_varying.empty()) {
         int split = 0;
@@ -616,8 +627,8 @@ InvarianceCause explain_not_invariant(const Implementation& impl, const PolyMesh
         if (split > 0 && invariant_on(apart))
             return {DivergenceClass::FaceOrderDependence,
                     "its texture coordinates depend on the order of the faces at a UV bowtie (a value whose faces "
-                    "alternate with another's around a vertex): invariant once " + removed + "its " + std::to_string(split) +
-                        " bowtie values are split, one per fan"};
+                    "alternate with another's around a vertex): " +
+                        once(removed + "its " + std::to_string(split) + " bowtie values are split, one per fan")};
     }
     const SchemeSupport* support = impl.support(request.scheme);
     if (const int valence = max_valence(input); support && support->max_valence > 0 && valence > support->max_valence)

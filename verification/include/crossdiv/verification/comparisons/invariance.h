@@ -51,6 +51,9 @@ struct InvarianceCheck {
     bool exact = false;          ///< bit-identical results expected (TransformedInput::exact)
     bool faces_equal = false;    ///< the same faces, as oriented faces up to rotation
     bool bit_identical = false;  ///< faces equal and every matched position equal bit for bit
+    /// Compared as point sets (Hausdorff distance): the refinement has vertices at one position,
+    /// which positions cannot tell apart, so its faces were not compared.
+    bool point_sets = false;
     double max_rel = NAN;        ///< largest matched distance over the diagonal
     /// With texture coordinates on both sides: the largest corner difference over the UV box
     /// (bit for bit expected where the transformation is exact; no map moves them).
@@ -98,6 +101,8 @@ InvarianceReport check_invariance(const Implementation& impl, const PolyMesh& in
 /// the check is run again on the input without what one input handling concerns, each removal
 /// kept for the next (a model may have vertices no face uses and a bowtie, both mishandled), and
 /// the class is the removal that makes it invariant; the why names the removals before it.
+/// A finding made on point sets (InvarianceCheck::point_sets) is gone when a removal leaves
+/// the same points, compared as it was.
 ///   isolated-vertex-handling   invariant once the vertices no face uses are removed
 ///   non-manifold-handling      invariant once each non-manifold vertex is split into its fans
 ///   face-order-dependence      invariant once each texture coordinate that is a bowtie at a
