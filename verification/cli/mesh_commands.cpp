@@ -466,7 +466,7 @@ int run_diff(const std::string& in, const SchemeArgs& flags, const std::string& 
         subject ? fmt::format(" --subject-name {} --subject '{}'", subject->name(), subject_command) : std::string();
     const std::string fvar = req.face_varying ? fmt::format(" --fvar {}", to_string(*req.face_varying)) : "";
     fmt::print("reproduce:     crossdiv compare {} --weights {} --boundary {} --levels {}{}{}{}\n", minimal, s.weights,
-               to_string(s.options().boundary), s.levels, fvar, against.empty() ? "" : " --against " + against,
+               to_string(s.options().boundary), r.levels, fvar, against.empty() ? "" : " --against " + against,
                subject_args);
     return 0;
 }

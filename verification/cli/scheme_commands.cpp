@@ -264,7 +264,7 @@ int run_scheme_diff(const std::string& in, const PolySchemeArgs& s, const std::s
         subject ? " --subject-name " + subject->name() + " --subject '" + subject_command + "'" : std::string();
     const std::string fvar = req.face_varying ? fmt::format(" --fvar {}", to_string(*req.face_varying)) : "";
     fmt::print("reproduce:     crossdiv compare {} --scheme {} --boundary {} --levels {}{}{}{}\n", minimal, s.scheme,
-               boundary_name(req.scheme, req.rule), s.levels, fvar, against.empty() ? "" : " --against " + against,
+               boundary_name(req.scheme, req.rule), r.levels, fvar, against.empty() ? "" : " --against " + against,
                subject_args);
     return 0;
 }

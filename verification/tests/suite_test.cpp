@@ -754,6 +754,21 @@ TEST(Shrink, CatmullClarksBoundaryRuleShrinksToOneFaceAndNamesOpenMeshsRule) {
         << r.minimal_comparison.runs[0].explanation;
 }
 
+TEST(Shrink, ASymptomTheInputShowsAtFewerLevelsIsShrunkAtThem) {
+    CROSSDIV_REQUIRE_LIBRARIES("openmesh");
+    // OpenMesh's boundary rule shows at the first level: asked at 3, every candidate is refined
+    // once, and the minimal mesh is stated at 1 level (one comparison more, on the input).
+    const PolyMesh patch = datasets::bundled_mesh("open-patch");
+    const ShrinkResult r = shrink_divergence(patch, "open-patch", catmull_clark_against("openmesh", 3));
+    EXPECT_EQ(r.original.levels, 3);
+    EXPECT_EQ(r.levels, 1);
+    EXPECT_EQ(r.minimal_comparison.levels, 1);
+    EXPECT_EQ(symptom_of(r.minimal_comparison), r.symptom);
+    EXPECT_EQ(r.minimal.num_faces(), 1);
+    // Asked at 1 level there is nothing fewer to try.
+    EXPECT_EQ(shrink_divergence(patch, "open-patch", catmull_clark_against("openmesh", 1)).levels, 1);
+}
+
 TEST(Shrink, AReferenceThatReturnsABrokenMeshShrinksToTheQuadsThatBreakIt) {
     CROSSDIV_REQUIRE_LIBRARIES("openmesh");
     // OpenMesh stores the quad naming a vertex twice as a face that never closes, so it fails

@@ -319,19 +319,36 @@ ShrinkResult shrink_divergence(const PolyMesh& mesh, const std::string& name, co
     }
     r.symptom = *symptom;
 
-    // 1. The neighbourhood of the symptom's coarse ancestors (through core's provenance, where
-    // it has it, else the coarse vertex nearest the site); 2. ddmin over its faces.
-    // Past the time limit every further candidate counts as not showing it: ddmin then only
-    // splits what it has until its chunks are single faces, running nothing.
+    // Past the time limit every further candidate (or level count) counts as not showing it:
+    // ddmin then only splits what it has until its chunks are single faces, running nothing.
     const auto out_of_time = [&] {
         if (std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > limits.seconds) r.cut_short = true;
         return r.cut_short;
     };
+
+    // Fewer levels, where the whole input shows the same symptom at them: every candidate is
+    // then refined fewer times (a reference that crashes at the first of three levels is shrunk
+    // at one: its candidates that do not crash, most of them, refine once rather than three
+    // times). The minimal mesh is stated with its levels.
+    RefinementRequest shrink_req = req;
+    std::optional<RefinementComparison> fewer;
+    for (int levels = 1; levels < req.levels && !fewer && !out_of_time(); ++levels) {
+        shrink_req.levels = levels;
+        ++r.tests;
+        RefinementComparison c = compare_refinement(mesh, name, shrink_req);
+        if (symptom_of(c) == r.symptom) fewer = std::move(c);
+    }
+    if (!fewer) shrink_req.levels = req.levels;
+    r.levels = shrink_req.levels;
+    const RefinementComparison& whole = fewer ? *fewer : r.original;
+
+    // 1. The neighbourhood of the symptom's coarse ancestors (through core's provenance, where
+    // it has it, else the coarse vertex nearest the site); 2. ddmin over its faces.
     const auto shows = [&](const PolyMesh& candidate) {
-        return !out_of_time() && still_shows(candidate, req, r.symptom, r.tests);
+        return !out_of_time() && still_shows(candidate, shrink_req, r.symptom, r.tests);
     };
     std::vector<int> seeds;
-    if (const auto site = symptom_site(r.original, r.symptom)) {
+    if (const auto site = symptom_site(whole, r.symptom)) {
         const Refinement core = core_implementation().refine_with_provenance(mesh, {req.scheme, req.rule, site->first, req.face_varying});
         if (static_cast<int>(core.births.size()) == site->first)
             seeds = coarse_ancestors(core, site->second);
@@ -340,7 +357,7 @@ ShrinkResult shrink_divergence(const PolyMesh& mesh, const std::string& name, co
     }
     r.k = shrink_to_neighbourhood(mesh, seeds, shows, r.neighbourhood);
     r.minimal = shrink_faces(r.neighbourhood, shows, out_of_time);
-    r.minimal_comparison = compare_refinement(r.minimal, "minimal", req);
+    r.minimal_comparison = compare_refinement(r.minimal, "minimal", shrink_req);
     return r;
 }
 

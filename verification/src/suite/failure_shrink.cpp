@@ -55,6 +55,7 @@ json minimal_json(const ShrinkResult& r, const std::string& file, const std::str
     return {{"mesh", file},
             {"faces", r.minimal.num_faces()},
             {"vertices", r.minimal.num_vertices()},
+            {"levels", r.levels},  // the fewest at which the case's input shows it
             {"symptom", symptom},
             {"tests", r.tests},
             {"cut_short", r.cut_short},
@@ -88,6 +89,7 @@ json shrink_one(const ShrinkTask& task, const std::string& out_dir) {
         r = shrink_divergence(input, task.job->input, req, {kReferenceShrinkSeconds});
         result = minimal_json(r, task.file, describe(r.symptom, "core", task.implementation));
         result["reference"] = task.implementation;
+        req.levels = r.levels;  // the fewest that show it
         result["reproduce"] = compare_command(req, task.file, task.implementation);
     }
     const fs::path path = fs::path(out_dir) / task.file;

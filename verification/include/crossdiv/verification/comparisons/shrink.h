@@ -57,6 +57,9 @@ struct ShrinkResult {
     int k = 0;                      ///< ring size of the neighbourhood (0: the whole mesh was needed)
     PolyMesh neighbourhood;         ///< faces within k rings of the symptom's coarse vertices
     PolyMesh minimal;               ///< after delta debugging
+    /// The levels the shrinking refined at: the fewest at which the whole input shows the
+    /// symptom (at most the request's); `minimal_comparison` and the reproduce line use them.
+    int levels = 0;
     RefinementComparison minimal_comparison;
     int tests = 0;  ///< comparisons run while shrinking
     /// The time limit ended the shrinking before every face was tried: `minimal` still shows
@@ -71,7 +74,8 @@ struct ShrinkLimits {
     double seconds = std::numeric_limits<double>::infinity();
 };
 
-/// Shrinks the symptom of the comparison of `mesh` under any scheme. The neighbourhood's
+/// Shrinks the symptom of the comparison of `mesh` under any scheme, at the fewest levels (up
+/// to the request's) at which the whole input shows it (ShrinkResult::levels). The neighbourhood's
 /// seeds are the coarse ancestors of the vertex where the symptom shows, where core's
 /// refinement carries provenance (Loop), else the coarse vertex nearest it.
 /// @param request at most one reference; none only with a subject (whose failure or lack of a
