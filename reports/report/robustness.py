@@ -120,6 +120,8 @@ def shrunk_failures(cases, scheme_of):
                     size += " (cut short)"
                 if not m.get("reproduces", True):
                     size += " (comes and goes)"
+                if m.get("same_as"):
+                    size += " (shrunk once with " + m["same_as"] + ")"
                 rows.append([scheme_of[c["operation"]], r["reference"], c["input"], m.get("symptom", ""),
                              Link(size, m["mesh"]), m.get("reproduce", "")])
             else:

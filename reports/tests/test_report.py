@@ -232,10 +232,13 @@ def test_the_robustness_section_lists_each_shrunk_reference_failure_with_its_rep
     hung = {"reference": "cgal", "outcome": "ref-crashed", "status": "timeout", "verdict": "ref-crashed",
             "explanation": "timed out after 120 s",
             "minimal": {"note": "not shrunk: it timed out, and each smaller try would cost its time limit"}}
+    # The same run of OpenMesh in a case with another rule of core's: shrunk once.
+    repeated = dict(crashed, minimal=dict(crashed["minimal"], same_as="chair.obj | catmull-clark L2"))
     results = {"operations": [{"name": "catmull-clark", "kind": "comparison", "scheme": "catmull-clark"}],
                "cases": [{"operation": "catmull-clark", "input": "chair.obj",
                           "runs": [{"reference": "opensubdiv", "outcome": "agree", "status": "ok"}, crashed]},
-                         {"operation": "catmull-clark", "input": "spider.stl", "runs": [flaky, hung]}]}
+                         {"operation": "catmull-clark", "input": "spider.stl", "runs": [flaky, hung]},
+                         {"operation": "catmull-clark", "input": "chair.obj", "runs": [repeated]}]}
     section = robustness_section(results)
     [table] = [b for b in section.blocks if getattr(b, "header", None) == SHRUNK_HEADER]
     assert [[str(getattr(v, "text", v)) for v in row] for row in table.rows] == [
@@ -243,10 +246,12 @@ def test_the_robustness_section_lists_each_shrunk_reference_failure_with_its_rep
          crashed["minimal"]["reproduce"]],
         ["catmull-clark", "vtk", "spider.stl", "vtk fails (crashed)", "900 faces, 500 vertices (cut short) (comes and goes)",
          "crossdiv compare ..."],
-        ["catmull-clark", "cgal", "spider.stl", "timed out after 120 s", hung["minimal"]["note"], "-"]]
+        ["catmull-clark", "cgal", "spider.stl", "timed out after 120 s", hung["minimal"]["note"], "-"],
+        ["catmull-clark", "openmesh", "chair.obj", "openmesh fails (crashed)",
+         "2 faces, 5 vertices (shrunk once with chair.obj | catmull-clark L2)", crashed["minimal"]["reproduce"]]]
     assert table.rows[0][4].href == "minimal/job3-openmesh.obj"
     # Without a shrunk failure, no such table.
-    del crashed["minimal"], flaky["minimal"], hung["minimal"]
+    del crashed["minimal"], flaky["minimal"], hung["minimal"], repeated["minimal"]
     assert not [b for b in robustness_section(results).blocks if getattr(b, "header", None) == SHRUNK_HEADER]
 
 

@@ -364,6 +364,32 @@ TEST(Suite, ALibrarysCrashIsShrunkAfterTheCasesAndListedWithItsReproduceLine) {
         for (const RunRecord& r : recs[i].runs) EXPECT_FALSE(r.detail.contains("minimal")) << recs[i].id << " " << r.reference;
 }
 
+TEST(Suite, ACrashOfTheSameRunOfAReferenceIsShrunkOnce) {
+    CROSSDIV_REQUIRE_LIBRARIES("cgal");
+    // Two cases that differ in core's boundary rule alone: CGAL, which has no corner rule, runs
+    // edge-only in both and crashes at the isolated vertex the same way. One shrinking serves
+    // both records; the second names the first.
+    const fs::path d = temp_dir("shrink-once");
+    const Manifest m = read_manifest(write(d / "twice.suite",
+                                           "suite twice\ntimeout 30\n"
+                                           "case edgecase:isolated-vertex loop boundary=edge-only levels=1 against=cgal\n"
+                                           "case edgecase:isolated-vertex loop boundary=edge-and-corner levels=1 against=cgal\n"));
+    const std::vector<SuiteJob> jobs = expand_jobs(m);
+    std::vector<CaseRecord> recs = run_jobs(jobs, 2, d.string(), [](int, int, const CaseRecord&) {});
+    ASSERT_EQ(recs.size(), 2u);
+    for (const CaseRecord& c : recs) ASSERT_EQ(outcome_label(c, c.runs.at(0)), "ref-crashed") << c.id;
+    shrink_failures(jobs, recs, d.string(), 2);
+    const nlohmann::json first = recs[0].runs[0].detail.value("minimal", nlohmann::json());
+    const nlohmann::json second = recs[1].runs[0].detail.value("minimal", nlohmann::json());
+    ASSERT_TRUE(first.is_object() && second.is_object());
+    if (!first.contains("mesh")) GTEST_SKIP() << "not shrunk: " << first.dump();  // the sanitizer's allocator (above)
+    EXPECT_FALSE(first.contains("same_as"));
+    EXPECT_EQ(second.value("same_as", ""), recs[0].id);
+    EXPECT_EQ(second["mesh"], first["mesh"]);
+    EXPECT_EQ(second["reproduce"], first["reproduce"]);
+    EXPECT_EQ(std::distance(fs::directory_iterator(d / "minimal"), fs::directory_iterator{}), 1);
+}
+
 TEST(Suite, ACoreRefusalFailsUnlessTheCaseDeclaresIt) {
     // sqrt3 on a bowtie: core needs a manifold and refuses; CGAL refines it. Undeclared, the
     // refusal is a failure (a core that started refusing what it used to refine is a

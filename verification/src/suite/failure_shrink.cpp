@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <unordered_map>
 #include <fstream>
 
 #include "crossdiv/io/output_file.h"
@@ -126,9 +127,32 @@ bool reference_failed(const RunRecord& run) {
            (v == Verdict::Diverge && run.outcome.cls == DivergenceClass::Unexplained);
 }
 
+/// A reference's failing run that another case's shrinking serves: the same failure of the
+/// same run of the reference (same input, scheme, levels, the reference's own rule), which
+/// only core's rule set apart (a crash does not depend on it).
+struct RepeatedFailure {
+    size_t record = 0;
+    int run = 0;
+    size_t task = 0;  ///< the task that shrinks it
+};
+
+/// What makes two reference failures one: the reference's run, and how it failed. Only a run
+/// that failed (crashed, threw, invalid output) has one: a divergence depends on core's rule.
+std::string failure_key(const SuiteJob& job, const RunRecord& run) {
+    if (run.outcome.verdict != Verdict::RefCrashed && run.outcome.verdict != Verdict::RefInvalidOutput) return "";
+    const RefinementRequest& req = job.entry->request;
+    return run.reference + "\n" + job.input + "\n" + std::string(to_string(req.scheme)) + "\n" + std::to_string(req.levels) + "\n" +
+           run.detail.value("rule", "") + "\n" + (run.detail.contains("ran_with") ? run.detail["ran_with"].dump() : "") +
+           "\n" + (req.face_varying ? std::string(to_string(*req.face_varying)) : "") + "\n" +
+           std::string(to_string(run.status.value_or(RunStatus::Ok)));
+}
+
 /// Every failure of a reference in a comparison case of core's, to shrink, or noted why not.
-/// A case's texture coordinates' run and its positions' run of one reference are one task.
-void reference_tasks(const std::vector<SuiteJob>& jobs, std::vector<CaseRecord>& records, std::vector<ShrinkTask>& tasks) {
+/// A case's texture coordinates' run and its positions' run of one reference are one task; a
+/// failure another case's task already shrinks is a repeat of it.
+void reference_tasks(const std::vector<SuiteJob>& jobs, std::vector<CaseRecord>& records, std::vector<ShrinkTask>& tasks,
+                     std::vector<RepeatedFailure>& repeats) {
+    std::unordered_map<std::string, size_t> task_of_failure;
     std::vector<const SuiteJob*> by_index;
     for (const SuiteJob& j : jobs) {
         if (static_cast<size_t>(j.index) >= by_index.size()) by_index.resize(static_cast<size_t>(j.index) + 1, nullptr);
@@ -147,9 +171,13 @@ void reference_tasks(const std::vector<SuiteJob>& jobs, std::vector<CaseRecord>&
                 run.detail["minimal"] = {{"note", "not shrunk: it timed out, and each smaller try would cost its time limit"}};
             else if (find_implementation(run.reference).confines_itself())
                 run.detail["minimal"] = {{"note", "not shrunk: a program reference, started again for every candidate"}};
-            else
+            else if (const std::string key = failure_key(*job, run); !key.empty() && task_of_failure.count(key))
+                repeats.push_back({c, static_cast<int>(i), task_of_failure[key]});
+            else {
+                if (!key.empty()) task_of_failure[key] = tasks.size();
                 tasks.push_back({c, static_cast<int>(i), job, run.reference,
                                  "minimal/job" + std::to_string(job->index) + "-" + file_safe(run.reference) + ".obj"});
+            }
         }
     }
 }
@@ -159,14 +187,17 @@ void reference_tasks(const std::vector<SuiteJob>& jobs, std::vector<CaseRecord>&
 void shrink_failures(const std::vector<SuiteJob>& jobs, std::vector<CaseRecord>& records, const std::string& out_dir,
                      int workers) {
     std::vector<ShrinkTask> tasks;
+    std::vector<RepeatedFailure> repeats;
     subject_tasks(jobs, records, tasks);
-    reference_tasks(jobs, records, tasks);
+    reference_tasks(jobs, records, tasks, repeats);
     if (tasks.empty()) return;
     // Children, each every workers-th task, each task's result a JSON file the parent reads back:
     // a subject that takes a child down takes only its own record with it.
     workers = std::max(1, std::min<int>(workers, static_cast<int>(tasks.size())));
-    std::printf("shrinking %zu failure(s) to minimal meshes (%d at a time; a reference's at most %.0f s each)\n", tasks.size(),
+    std::printf("shrinking %zu failure(s) to minimal meshes (%d at a time; a reference's at most %.0f s each)", tasks.size(),
                 workers, kReferenceShrinkSeconds);
+    if (!repeats.empty()) std::printf("; %zu more the same run of a reference under another rule of core's", repeats.size());
+    std::printf("\n");
     const fs::path scratch = fs::path(out_dir) / "minimal";
     create_output_folder(scratch.string());
     const auto result_file = [&](size_t t) { return scratch / ("task" + std::to_string(t) + ".json"); };
@@ -202,15 +233,24 @@ void shrink_failures(const std::vector<SuiteJob>& jobs, std::vector<CaseRecord>&
         int status = 0;
         waitpid(pid, &status, 0);
     }
+    std::vector<json> results(tasks.size());
     for (size_t t = 0; t < tasks.size(); ++t) {
         std::ifstream in(result_file(t));
         json result = in ? json::parse(in, nullptr, false) : json();
         if (result.is_discarded() || !result.is_object()) result = {{"note", "not shrunk: the shrinking child ended without a result"}};
-        CaseRecord& rec = records[tasks[t].record];
-        (tasks[t].run < 0 ? rec.detail : rec.runs[static_cast<size_t>(tasks[t].run)].detail)["minimal"] = std::move(result);
+        results[t] = std::move(result);
         std::error_code ec;
         fs::remove(result_file(t), ec);
     }
+    const auto minimal_of = [&](size_t record, int run) -> json& {
+        CaseRecord& rec = records[record];
+        return (run < 0 ? rec.detail : rec.runs[static_cast<size_t>(run)].detail)["minimal"];
+    };
+    for (const RepeatedFailure& r : repeats) {
+        json& m = minimal_of(r.record, r.run) = results[r.task];
+        m["same_as"] = tasks[r.task].job->id;  // the case whose shrinking this is
+    }
+    for (size_t t = 0; t < tasks.size(); ++t) minimal_of(tasks[t].record, tasks[t].run) = std::move(results[t]);
 }
 
 }  // namespace crossdiv::verification

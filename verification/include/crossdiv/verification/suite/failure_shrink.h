@@ -15,6 +15,9 @@
 ///   must persist): minimal/job<N>-<reference>.obj, in that run's record. Each within
 ///   kReferenceShrinkSeconds: a real model of 20,000 faces has hundreds of candidates; past the
 ///   limit the smallest mesh found so far is the result, marked `cut_short`.
+///   A failure (crash, invalid result) of the same run of a reference as another case's (same
+///   input, scheme, levels and the reference's own rule: cases that differ in core's rule
+///   alone) is shrunk once; the other records hold the same result with `same_as`, that case.
 ///
 /// Not shrunk, with the reason noted: a course task's case (shrink.h takes a scheme's mesh), a
 /// subject that hangs or a reference's time-out (each try would cost its time limit), a result
