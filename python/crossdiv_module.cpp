@@ -495,13 +495,13 @@ PYBIND11_MODULE(crossdiv, m) {
               nlohmann::json rows = nlohmann::json::array();
               for (const Implementation* impl : checked) {
                   const InvarianceReport r = check_invariance(*impl, mesh, request, ts, seed, tolerance, timeout, true);
-                  for (const InvarianceCheck& c : r.checks) {
-                      nlohmann::json row = to_json(c);
+                  const std::vector<std::optional<InvarianceCause>> causes =
+                      causes_of(*impl, mesh, request, r, seed, tolerance, timeout);
+                  for (size_t i = 0; i < r.checks.size(); ++i) {
+                      nlohmann::json row = to_json(r.checks[i]);
                       row["implementation"] = impl->name();
-                      if (c.finding()) {
-                          const InvarianceCause why = explain_not_invariant(*impl, mesh, request, c, seed, tolerance, timeout);
-                          row["cause"] = {{"class", to_string(why.cls)}, {"why", why.why}};
-                      }
+                      if (const std::optional<InvarianceCause>& why = causes[i])
+                          row["cause"] = {{"class", to_string(why->cls)}, {"why", why->why}};
                       rows.push_back(std::move(row));
                   }
               }

@@ -70,7 +70,11 @@ int run_invariance(const InvarianceOptions& o, const Implementation* subject) {
                 // Its run on the input itself failed: nothing to compare, said once.
                 fmt::print("  {:<17} {}\n", impl->name(), r.outcome.summary());
             }
-            for (const InvarianceCheck& c : r.checks) {
+            // What each finding measures to be (a reference's class in the suite), every finding at once.
+            const std::vector<std::optional<InvarianceCause>> causes =
+                causes_of(*impl, mesh, request, r, o.seed, o.tolerance, o.timeout, o.isolate);
+            for (size_t i = 0; i < r.checks.size(); ++i) {
+                const InvarianceCheck& c = r.checks[i];
                 ++checks;
                 failures += c.finding();
                 not_compared += c.result == InvarianceResult::NotCompared;
@@ -78,12 +82,9 @@ int run_invariance(const InvarianceOptions& o, const Implementation* subject) {
                     fmt::print("  {:<17} {:<22} {:<16} {}\n", impl->name(), to_string(c.transformation), to_string(c.result),
                                c.explanation);
                 nlohmann::json cause = nullptr;
-                if (c.finding()) {
-                    // What the finding measures to be (a reference's class in the suite).
-                    const InvarianceCause why =
-                        explain_not_invariant(*impl, mesh, request, c, o.seed, o.tolerance, o.timeout, o.isolate);
-                    fmt::print("  {:<17} {:<22} cause: {}: {}\n", "", "", to_string(why.cls), why.why);
-                    cause = {{"class", to_string(why.cls)}, {"why", why.why}};
+                if (const std::optional<InvarianceCause>& why = causes[i]) {
+                    fmt::print("  {:<17} {:<22} cause: {}: {}\n", "", "", to_string(why->cls), why->why);
+                    cause = {{"class", to_string(why->cls)}, {"why", why->why}};
                 }
                 nlohmann::json row = to_json(c);
                 row["cause"] = cause;

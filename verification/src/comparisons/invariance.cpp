@@ -551,20 +551,38 @@ InvarianceReport check_invariance(const Implementation& impl, const PolyMesh& in
     return out;
 }
 
-InvarianceCause explain_not_invariant(const Implementation& impl, const PolyMesh& input, const RefineRequest& request,
-                                      const InvarianceCheck& finding, std::uint64_t seed, double tolerance,
-                                      double timeout_seconds, bool isolate) {
-    const InputTransformation t = finding.transformation;
-    // A finding made on point sets (vertices at one position: its faces not compared) is gone
-    // when a removal leaves the same points, compared as the finding was.
-    bool as_points = false;
-    const auto invariant_on = [&](const PolyMesh& mesh) {
-        const InvarianceReport r = check_invariance(impl, mesh, request, {t}, seed, tolerance, timeout_seconds, isolate);
-        if (r.checks.size() != 1) return false;
-        as_points = finding.point_sets && r.checks[0].point_sets && r.checks[0].result == InvarianceResult::NotCompared;
-        return r.checks[0].result == InvarianceResult::Invariant || as_points;
+std::vector<InvarianceCause> explain_findings(const Implementation& impl, const PolyMesh& input, const RefineRequest& request,
+                                              const std::vector<InvarianceCheck>& findings, std::uint64_t seed,
+                                              double tolerance, double timeout_seconds, bool isolate) {
+    std::vector<InvarianceCause> causes(findings.size());
+    std::vector<size_t> pending(findings.size());  // the findings no removal has explained yet
+    for (size_t i = 0; i < pending.size(); ++i) pending[i] = i;
+    const auto explain_rest = [&](DivergenceClass cls, const std::string& why) {
+        for (size_t i : pending) causes[i] = {cls, why};
+        pending.clear();
+        return causes;
     };
-    const auto once = [&](const std::string& removals) {
+    // Each removal is checked once for every finding still pending: one run of the mesh without
+    // it, and one per transformation. `why(as_points)` words the cause; a finding made on point
+    // sets (vertices at one position: its faces not compared) is gone when the removal leaves the
+    // same points, compared as it was.
+    const auto explained_on = [&](const PolyMesh& mesh, DivergenceClass cls, const auto& why) {
+        std::vector<InputTransformation> ts;
+        for (size_t i : pending) ts.push_back(findings[i].transformation);
+        const InvarianceReport r = check_invariance(impl, mesh, request, ts, seed, tolerance, timeout_seconds, isolate);
+        if (r.checks.size() != pending.size()) return;
+        std::vector<size_t> still;
+        for (size_t k = 0; k < pending.size(); ++k) {
+            const InvarianceCheck& c = r.checks[k];
+            const bool as_points = findings[pending[k]].point_sets && c.point_sets && c.result == InvarianceResult::NotCompared;
+            if (c.result == InvarianceResult::Invariant || as_points)
+                causes[pending[k]] = {cls, why(as_points)};
+            else
+                still.push_back(pending[k]);
+        }
+        pending = std::move(still);
+    };
+    const auto once = [](bool as_points, const std::string& removals) {
         return (as_points ? "the same points (its faces not compared: vertices at one position) once " : "invariant once ") +
                removals;
     };
@@ -575,8 +593,8 @@ InvarianceCause explain_not_invariant(const Implementation& impl, const PolyMesh
     // Points and no face (a point cloud among real models): every vertex is one no face uses,
     // so that is all that can differ, and removing them leaves nothing to run.
     if (isolated > 0 && used.num_faces() == 0)
-        return {DivergenceClass::IsolatedVertexHandling,
-                "the input has no faces: all " + std::to_string(isolated) + " of its vertices are ones no face uses"};
+        return explain_rest(DivergenceClass::IsolatedVertexHandling,
+                            "the input has no faces: all " + std::to_string(isolated) + " of its vertices are ones no face uses");
     // The removals are made one after another, each kept for the next: a real model may have
     // vertices no face uses and a bowtie, and an implementation that mishandles both (OpenMesh's
     // Catmull-Clark moves each by other weights than the affine ones) is invariant only once both
@@ -585,15 +603,15 @@ InvarianceCause explain_not_invariant(const Implementation& impl, const PolyMesh
     std::vector<int> input_vertex;  // cleaned's vertex v is the input's input_vertex[v], once vertices are removed
     std::string removed;            // the removals kept so far, as clauses ending in ", "
     if (isolated > 0) {
-        if (invariant_on(used))
-            return {DivergenceClass::IsolatedVertexHandling,
-                    once("its " + std::to_string(isolated) + " vertices no face uses are removed")};
+        const std::string clause = "its " + std::to_string(isolated) + " vertices no face uses are removed";
+        explained_on(used, DivergenceClass::IsolatedVertexHandling, [&](bool as_points) { return once(as_points, clause); });
+        if (pending.empty()) return causes;
         std::vector<char> in_use(static_cast<size_t>(input.num_vertices()), 0);
         for (int v : input.face_vertices) in_use[static_cast<size_t>(v)] = 1;
         for (int v = 0; v < input.num_vertices(); ++v)
             if (in_use[static_cast<size_t>(v)]) input_vertex.push_back(v);
         cleaned = used;
-        removed = "its " + std::to_string(isolated) + " vertices no face uses are removed, ";
+        removed = clause + ", ";
     }
     const auto input_index = [&](int v) { return input_vertex.empty() ? v : input_vertex[static_cast<size_t>(v)]; };
     std::vector<int> nonmanifold;
@@ -607,7 +625,8 @@ InvarianceCause explain_not_invariant(const Implementation& impl, const PolyMesh
         const std::string clause = "its " + std::to_string(nonmanifold.size()) +
                                    " non-manifold vertices are split into their fans (vertex " +
                                    std::to_string(input_index(nonmanifold[0])) + (nonmanifold.size() > 1 ? ", ...)" : ")");
-        if (invariant_on(split)) return {DivergenceClass::NonManifoldHandling, once(removed + clause)};
+        explained_on(split, DivergenceClass::NonManifoldHandling, [&](bool as_points) { return once(as_points, removed + clause); });
+        if (pending.empty()) return causes;
         cleaned = std::move(split);
         removed += clause + ", ";
     }
@@ -616,35 +635,63 @@ InvarianceCause explain_not_invariant(const Implementation& impl, const PolyMesh
     if (request.scheme == Scheme::Butterfly || request.scheme == Scheme::ModifiedButterfly) {
         int capped = 0;
         const PolyMesh closed = with_short_boundary_loops_capped(cleaned, capped);
-        if (capped > 0 && invariant_on(closed))
-            return {DivergenceClass::ShortBoundaryLoop,
-                    once(removed + "its " + std::to_string(capped) +
-                         " boundary loop(s) of three edges are capped: there the four-point rule's two outer points are one vertex")};
+        if (capped > 0)
+            explained_on(closed, DivergenceClass::ShortBoundaryLoop, [&](bool as_points) {
+                return once(as_points, removed + "its " + std::to_string(capped) +
+                                           " boundary loop(s) of three edges are capped: there the four-point rule's two "
+                                           "outer points are one vertex");
+            });
+        if (pending.empty()) return causes;
     }
     if (!cleaned.face_varying.empty()) {
         int split = 0;
         const PolyMesh apart = with_value_fans_split(cleaned, split);
-        if (split > 0 && invariant_on(apart))
-            return {DivergenceClass::FaceOrderDependence,
-                    "its texture coordinates depend on the order of the faces at a UV bowtie (a value whose faces "
-                    "alternate with another's around a vertex): " +
-                        once(removed + "its " + std::to_string(split) + " bowtie values are split, one per fan")};
+        if (split > 0)
+            explained_on(apart, DivergenceClass::FaceOrderDependence, [&](bool as_points) {
+                return "its texture coordinates depend on the order of the faces at a UV bowtie (a value whose faces "
+                       "alternate with another's around a vertex): " +
+                       once(as_points, removed + "its " + std::to_string(split) + " bowtie values are split, one per fan");
+            });
+        if (pending.empty()) return causes;
     }
+    // What no removal tests: the same for every finding left.
     const SchemeSupport* support = impl.support(request.scheme);
     if (const int valence = max_valence(input); support && support->max_valence > 0 && valence > support->max_valence)
-        return {DivergenceClass::ValenceLimit, "a vertex of valence " + std::to_string(valence) +
-                                                   " lies past its weight table, which ends at valence " +
-                                                   std::to_string(support->max_valence) + " (" + support->valence_table + ")"};
+        return explain_rest(DivergenceClass::ValenceLimit, "a vertex of valence " + std::to_string(valence) +
+                                                               " lies past its weight table, which ends at valence " +
+                                                               std::to_string(support->max_valence) + " (" +
+                                                               support->valence_table + ")");
     if (const std::optional<std::string> face = first_degenerate_face(input))
-        return {DivergenceClass::DegenerateFaceHandling, "the input has a degenerate face: " + *face};
+        return explain_rest(DivergenceClass::DegenerateFaceHandling, "the input has a degenerate face: " + *face);
     const IsolatedTrace run = refine_isolated(impl, input, request, timeout_seconds, isolate);
     if (run.trace)
         for (size_t level = 1; level < run.trace->size(); ++level)
             if (const std::optional<std::string> face = first_degenerate_face((*run.trace)[level]))
-                return {DivergenceClass::DegenerateFaceHandling,
-                        "its refinement has a degenerate face at level " + std::to_string(level) + ": " + *face};
-    return {DivergenceClass::Unexplained, "not explained by isolated vertices, non-manifold vertices, a weight table or "
-                                          "a degenerate face"};
+                return explain_rest(DivergenceClass::DegenerateFaceHandling,
+                                    "its refinement has a degenerate face at level " + std::to_string(level) + ": " + *face);
+    return explain_rest(DivergenceClass::Unexplained,
+                        "not explained by isolated vertices, non-manifold vertices, a weight table or a degenerate face");
+}
+
+InvarianceCause explain_not_invariant(const Implementation& impl, const PolyMesh& input, const RefineRequest& request,
+                                      const InvarianceCheck& finding, std::uint64_t seed, double tolerance,
+                                      double timeout_seconds, bool isolate) {
+    return explain_findings(impl, input, request, {finding}, seed, tolerance, timeout_seconds, isolate).front();
+}
+
+std::vector<std::optional<InvarianceCause>> causes_of(const Implementation& impl, const PolyMesh& input,
+                                                      const RefineRequest& request, const InvarianceReport& report,
+                                                      std::uint64_t seed, double tolerance, double timeout_seconds,
+                                                      bool isolate) {
+    std::vector<InvarianceCheck> findings;
+    for (const InvarianceCheck& c : report.checks)
+        if (c.finding()) findings.push_back(c);
+    std::vector<std::optional<InvarianceCause>> out(report.checks.size());
+    if (findings.empty()) return out;
+    std::vector<InvarianceCause> causes = explain_findings(impl, input, request, findings, seed, tolerance, timeout_seconds, isolate);
+    for (size_t i = 0, k = 0; i < report.checks.size(); ++i)
+        if (report.checks[i].finding()) out[i] = std::move(causes[k++]);
+    return out;
 }
 
 std::optional<DivergenceView> invariance_view(const Implementation& impl, const PolyMesh& input, const RefineRequest& request,

@@ -184,14 +184,14 @@ CaseRecord run_invariance_case(const SuiteJob& job, const std::string& out_dir) 
             rec.detail["implementations"].push_back(std::move(summary));
             continue;
         }
-        for (const InvarianceCheck& check : report.checks) {
-            std::optional<InvarianceCause> cause;
-            if (check.finding()) {
-                cause = explain_not_invariant(*impl, input, request, check, keys.seed, tolerance, timeout);
-                if (!drawn) {
-                    drawn = impl;
-                    drawn_check = check;
-                }
+        const std::vector<std::optional<InvarianceCause>> causes =
+            causes_of(*impl, input, request, report, keys.seed, tolerance, timeout);
+        for (size_t i = 0; i < report.checks.size(); ++i) {
+            const InvarianceCheck& check = report.checks[i];
+            const std::optional<InvarianceCause>& cause = causes[i];
+            if (check.finding() && !drawn) {
+                drawn = impl;
+                drawn_check = check;
             }
             rec.runs.push_back(check_run(*impl, under_test, check, cause, tolerance));
         }

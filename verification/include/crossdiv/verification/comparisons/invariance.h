@@ -126,6 +126,21 @@ InvarianceCause explain_not_invariant(const Implementation& impl, const PolyMesh
                                       const InvarianceCheck& finding, std::uint64_t seed, double tolerance,
                                       double timeout_seconds, bool isolate = true);
 
+/// The causes of several findings of one implementation on one input (check_invariance's
+/// checks), in their order, as explain_not_invariant gives each: every removal is checked once
+/// for all the findings it has not explained yet (one run of the input without it, one per
+/// transformation), and the closing run once, rather than each once per finding.
+std::vector<InvarianceCause> explain_findings(const Implementation& impl, const PolyMesh& input, const RefineRequest& request,
+                                              const std::vector<InvarianceCheck>& findings, std::uint64_t seed,
+                                              double tolerance, double timeout_seconds, bool isolate = true);
+
+/// Each check of `report` (check_invariance's on `input`) with its cause where it is a finding,
+/// by explain_findings over all of them.
+std::vector<std::optional<InvarianceCause>> causes_of(const Implementation& impl, const PolyMesh& input,
+                                                      const RefineRequest& request, const InvarianceReport& report,
+                                                      std::uint64_t seed, double tolerance, double timeout_seconds,
+                                                      bool isolate = true);
+
 /// A finding drawn for the report's 3D viewer: the implementation's levels on the input, and as
 /// its one "reference", named invariance_view_label, its last level on the input written
 /// otherwise, mapped back into the first run's numbering (positions through the inverse of the
