@@ -601,6 +601,37 @@ TEST(InvarianceCause, AFindingOnPointSetsIsGoneWhenTheSamePointsRemain) {
                      "vertices are split into their fans (vertex 2)");
 }
 
+// Hbr takes a face-varying edge for a seam only where the values of its two faces differ by
+// more than 0.001 (HbrHalfedge::IsFVarInfiniteSharpAnywhere): closer, they are one value, the
+// first face's. Two triangles whose shared corners' values are 0.0005 apart (a Sweet Home 3D
+// sofa's seams are so) move with the order of the faces; cut along the seam, they do not.
+// 0.002 apart, Hbr sees the seam and keeps both.
+TEST(InvarianceCause, HbrsValuesAlongASeamWithinItsToleranceAreReadOffTheFaceOrder) {
+    CROSSDIV_REQUIRE_LIBRARIES("hbr");
+    const auto seam = [](double apart) {
+        PolyMesh m;
+        m.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0)};
+        m.add_face({2, 1, 3});
+        m.add_face({0, 1, 2});
+        FaceVaryingChannel& uv = m.face_varying.emplace_back();
+        uv.values = {0.5, 0.5, 0.6, 0.5, 0.6, 0.6, 0.4, 0.4, 0.6 + apart, 0.5, 0.5, 0.5 + apart};
+        uv.corner_values = {0, 1, 2, 3, 4, 5};
+        return m;
+    };
+    const RefineRequest cc{Scheme::CatmullClark, {}, 2, FaceVaryingRule::All};
+    const Implementation& hbr = find_implementation("hbr");
+    const InvarianceReport r = check_invariance(hbr, seam(0.0005), cc, {InputTransformation::ReverseFaces}, 1, 1e-12, 60, true);
+    ASSERT_EQ(r.checks.size(), 1u);
+    EXPECT_TRUE(r.checks[0].uv_only) << r.checks[0].explanation;
+    const InvarianceCause c = cause_of(hbr, seam(0.0005), cc, InputTransformation::ReverseFaces);
+    EXPECT_EQ(c.cls, DivergenceClass::FaceOrderDependence) << c.why;
+    EXPECT_EQ(c.why, "its texture coordinates depend on the order of the faces along a UV seam: invariant once it is cut "
+                     "along its seams (2 vertex copies, one per value)");
+    const InvarianceReport apart = check_invariance(hbr, seam(0.002), cc, {InputTransformation::ReverseFaces}, 1, 1e-12, 60, true);
+    ASSERT_EQ(apart.checks.size(), 1u);
+    EXPECT_EQ(apart.checks[0].result, InvarianceResult::Invariant) << apart.checks[0].explanation;
+}
+
 // A file of points and no face (Assimp's testpoints.obj): whatever an implementation makes of its
 // vertices differs only at vertices no face uses, and nothing is left once they are removed.
 TEST(InvarianceCause, AMeshWithoutFacesIsIsolatedVertexHandlingWithoutARun) {

@@ -182,6 +182,47 @@ PolyMesh with_value_fans_split(const PolyMesh& mesh, int& split) {
     return out;
 }
 
+/// Whether `t` writes the same mesh otherwise (its faces, their corners or its vertices in
+/// another order), rather than moving it or refining it otherwise.
+bool writes_otherwise(InputTransformation t) {
+    switch (t) {
+        case InputTransformation::RotateCorners:
+        case InputTransformation::RotateCornersRandom:
+        case InputTransformation::ReverseFaces:
+        case InputTransformation::RotateFaces:
+        case InputTransformation::ShuffleFaces:
+        case InputTransformation::RelabelVertices:
+        case InputTransformation::ReverseOrientation: return true;
+        default: return false;
+    }
+}
+
+/// `mesh` cut along the seams of its first face-varying channel: each vertex whose corners hold
+/// several values gets one copy per value (the first keeps the vertex and its tags), so that a
+/// seam becomes a boundary on each side; the number of copies made is added to `split`.
+PolyMesh with_seams_cut(const PolyMesh& mesh, int& split) {
+    PolyMesh out = mesh;
+    if (mesh.face_varying.empty()) return out;
+    const std::vector<int>& values = mesh.face_varying.front().corner_values;
+    std::vector<std::pair<std::pair<int, int>, int>> keyed(values.size());  // ((vertex, value), corner)
+    for (size_t c = 0; c < values.size(); ++c) keyed[c] = {{mesh.face_vertices[c], values[c]}, static_cast<int>(c)};
+    std::sort(keyed.begin(), keyed.end());
+    int copy = -1;
+    for (size_t k = 0; k < keyed.size(); ++k) {
+        const auto [v, value] = keyed[k].first;
+        if (k > 0 && keyed[k - 1].first.first == v && keyed[k - 1].first.second != value) {
+            out.positions.push_back(mesh.positions[static_cast<size_t>(v)]);
+            if (!out.colors.empty()) out.colors.push_back(mesh.colors[static_cast<size_t>(v)]);
+            copy = out.num_vertices() - 1;
+            ++split;
+        } else if (k == 0 || keyed[k - 1].first.first != v) {
+            copy = v;
+        }
+        out.face_vertices[static_cast<size_t>(keyed[k].second)] = copy;
+    }
+    return out;
+}
+
 /// The refinement of the input, transformed as the input was: what the refinement of the
 /// transformed input must equal.
 PolyMesh mapped_as_the_input(const PolyMesh& refined, const TransformedInput& transformed) {
@@ -349,6 +390,7 @@ nlohmann::json to_json(const InvarianceCheck& c) {
             {"bit_identical", c.bit_identical},
             {"faces_equal", c.faces_equal},
             {"point_sets", c.point_sets},
+            {"uv_only", c.uv_only},
             {"max_rel", finite_or_null(c.max_rel)},
             {"uv_max_rel", finite_or_null(c.uv_max_rel)},
             {"worst_vertex", c.worst_vertex},
@@ -479,6 +521,7 @@ InvarianceCheck measure_invariance(const PolyMesh& refined, const PolyMesh& refi
         }
         const bool uv_ok = uv.compared() && (out.exact ? uv.max_abs == 0.0 : uv.max_rel <= uv_bar);
         if (!uv_ok) {
+            out.uv_only = out.result == InvarianceResult::Invariant;
             out.result = InvarianceResult::NotInvariant;
             out.explanation += "; texture coordinates " +
                                (uv.compared() ? sci(uv.max_rel) + " of the UV box apart" + (out.exact ? " (exact: bit for bit expected)" : "")
@@ -652,6 +695,26 @@ std::vector<InvarianceCause> explain_findings(const Implementation& impl, const 
                        "alternate with another's around a vertex): " +
                        once(as_points, removed + "its " + std::to_string(split) + " bowtie values are split, one per fan");
             });
+        if (pending.empty()) return causes;
+    }
+    // Findings in the texture coordinates alone under an order of faces, corners or vertices,
+    // on a mesh whose UV layout has seams: invariant once the mesh is cut along them, the values
+    // along a seam were read off that order (Hbr's, on two triangles that meet at a seam).
+    if (!cleaned.face_varying.empty()) {
+        int split = 0;
+        const PolyMesh cut = with_seams_cut(cleaned, split);
+        const auto positional = std::stable_partition(pending.begin(), pending.end(), [&](size_t i) {
+            return findings[i].uv_only && writes_otherwise(findings[i].transformation);
+        });
+        std::vector<size_t> others(positional, pending.end());
+        pending.erase(positional, pending.end());
+        if (split > 0 && !pending.empty())
+            explained_on(cut, DivergenceClass::FaceOrderDependence, [&](bool as_points) {
+                return "its texture coordinates depend on the order of the faces along a UV seam: " +
+                       once(as_points, removed + "it is cut along its seams (" + std::to_string(split) +
+                                           " vertex copies, one per value)");
+            });
+        pending.insert(pending.end(), others.begin(), others.end());
         if (pending.empty()) return causes;
     }
     // What no removal tests: the same for every finding left.

@@ -54,6 +54,8 @@ struct InvarianceCheck {
     /// Compared as point sets (Hausdorff distance): the refinement has vertices at one position,
     /// which positions cannot tell apart, so its faces were not compared.
     bool point_sets = false;
+    /// The positions (and faces) invariant, the texture coordinates not.
+    bool uv_only = false;
     double max_rel = NAN;        ///< largest matched distance over the diagonal
     /// With texture coordinates on both sides: the largest corner difference over the UV box
     /// (bit for bit expected where the transformation is exact; no map moves them).
@@ -107,7 +109,10 @@ InvarianceReport check_invariance(const Implementation& impl, const PolyMesh& in
 ///   non-manifold-handling      invariant once each non-manifold vertex is split into its fans
 ///   face-order-dependence      invariant once each texture coordinate that is a bowtie at a
 ///                              vertex (its faces alternating with another value's) is split,
-///                              one per fan: which fan keeps the value is read off the face order
+///                              one per fan: which fan keeps the value is read off the face order; or, where only the
+///                              texture coordinates differ, invariant once the mesh is cut along
+///                              its UV seams (a vertex copied per value its corners hold): the
+///                              values along a seam are read off the face order
 ///   valence-limit              the input has a vertex past the weight table the implementation
 ///                              declares (SchemeSupport::max_valence): what it reads there is undefined
 ///   degenerate-face-handling   its refinement of the input has a face with fewer than 3 distinct
