@@ -559,6 +559,14 @@ TEST(InvarianceCause, AReferencesFindingIsClassedByWhatRemovesIt) {
     }
 }
 
+/// Expects `impl`'s finding on `mesh` under `t` to be explained as `cls`, in exactly `why`.
+void expect_cause(const char* impl, const PolyMesh& mesh, const RefineRequest& request, InputTransformation t,
+                  DivergenceClass cls, const std::string& why) {
+    const InvarianceCause c = cause_of(find_implementation(impl), mesh, request, t);
+    EXPECT_EQ(c.cls, cls) << impl << ": " << c.why;
+    EXPECT_EQ(c.why, why) << impl;
+}
+
 // OpenMesh's Catmull-Clark moves a vertex no face uses to a third of its place, and a bowtie
 // vertex, with its four boundary edges, to (v + four midpoints) / 3, weights that sum to 5/3:
 // under a translation neither moves with the mesh. Neither removal alone makes it invariant, both
@@ -571,11 +579,10 @@ TEST(InvarianceCause, RemovalsAreKeptOneAfterAnother) {
                    Vec3(2, 1, 0), Vec3(2, 2, 0), Vec3(1, 2, 0)};                        // another at vertex 3
     m.add_face({1, 2, 3, 4});
     m.add_face({3, 5, 6, 7});
-    const RefineRequest cc{Scheme::CatmullClark, {}, 1};
-    const InvarianceCause c = cause_of(find_implementation("openmesh"), m, cc, InputTransformation::Translate);
-    EXPECT_EQ(c.cls, DivergenceClass::NonManifoldHandling) << c.why;
-    EXPECT_EQ(c.why, "invariant once its 1 vertices no face uses are removed, its 1 non-manifold vertices are split into "
-                     "their fans (vertex 3)");
+    expect_cause("openmesh", m, {Scheme::CatmullClark, {}, 1}, InputTransformation::Translate,
+                 DivergenceClass::NonManifoldHandling,
+                 "invariant once its 1 vertices no face uses are removed, its 1 non-manifold vertices are split into "
+                 "their fans (vertex 3)");
 }
 
 // CGAL's Catmull-Clark links the boundaries of a bowtie in the order its faces come, so its
@@ -595,10 +602,9 @@ TEST(InvarianceCause, AFindingOnPointSetsIsGoneWhenTheSamePointsRemain) {
     const InvarianceReport r = check_invariance(find_implementation("cgal"), m, cc, {InputTransformation::ReverseFaces}, 1, 1e-12, 60, true);
     ASSERT_EQ(r.checks.size(), 1u);
     EXPECT_TRUE(r.checks[0].point_sets) << r.checks[0].explanation;
-    const InvarianceCause c = cause_of(find_implementation("cgal"), m, cc, InputTransformation::ReverseFaces);
-    EXPECT_EQ(c.cls, DivergenceClass::NonManifoldHandling) << c.why;
-    EXPECT_EQ(c.why, "the same points (its faces not compared: vertices at one position) once its 1 non-manifold "
-                     "vertices are split into their fans (vertex 2)");
+    expect_cause("cgal", m, cc, InputTransformation::ReverseFaces, DivergenceClass::NonManifoldHandling,
+                 "the same points (its faces not compared: vertices at one position) once its 1 non-manifold "
+                 "vertices are split into their fans (vertex 2)");
 }
 
 // Hbr takes a face-varying edge for a seam only where the values of its two faces differ by
@@ -623,10 +629,9 @@ TEST(InvarianceCause, HbrsValuesAlongASeamWithinItsToleranceAreReadOffTheFaceOrd
     const InvarianceReport r = check_invariance(hbr, seam(0.0005), cc, {InputTransformation::ReverseFaces}, 1, 1e-12, 60, true);
     ASSERT_EQ(r.checks.size(), 1u);
     EXPECT_TRUE(r.checks[0].uv_only) << r.checks[0].explanation;
-    const InvarianceCause c = cause_of(hbr, seam(0.0005), cc, InputTransformation::ReverseFaces);
-    EXPECT_EQ(c.cls, DivergenceClass::FaceOrderDependence) << c.why;
-    EXPECT_EQ(c.why, "its texture coordinates depend on the order of the faces along a UV seam: invariant once it is cut "
-                     "along its seams (2 vertex copies, one per value)");
+    expect_cause("hbr", seam(0.0005), cc, InputTransformation::ReverseFaces, DivergenceClass::FaceOrderDependence,
+                 "its texture coordinates depend on the order of the faces along a UV seam: invariant once it is cut "
+                 "along its seams (2 vertex copies, one per value)");
     const InvarianceReport apart = check_invariance(hbr, seam(0.002), cc, {InputTransformation::ReverseFaces}, 1, 1e-12, 60, true);
     ASSERT_EQ(apart.checks.size(), 1u);
     EXPECT_EQ(apart.checks[0].result, InvarianceResult::Invariant) << apart.checks[0].explanation;

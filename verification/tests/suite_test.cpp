@@ -385,9 +385,18 @@ TEST(Suite, ACrashOfTheSameRunOfAReferenceIsShrunkOnce) {
     const nlohmann::json first = recs[0].runs[0].detail.value("minimal", nlohmann::json());
     const nlohmann::json second = recs[1].runs[0].detail.value("minimal", nlohmann::json());
     ASSERT_TRUE(first.is_object() && second.is_object());
-    if (!first.contains("mesh")) GTEST_SKIP() << "not shrunk: " << first.dump();  // the sanitizer's allocator (above)
-    EXPECT_FALSE(first.contains("same_as"));
     EXPECT_EQ(second.value("same_as", ""), recs[0].id);
+    EXPECT_EQ(second.value("note", ""), first.value("note", ""));
+#ifdef CROSSDIV_SANITIZED
+    // Under the address sanitizer's allocator CGAL may hang when run again instead of crashing
+    // (the test above): then both records carry the one note, and no mesh is written.
+    if (!first.contains("mesh")) {
+        EXPECT_NE(first.value("note", "").find("(ref-crashed: timeout)"), std::string::npos) << first.dump();
+        return;
+    }
+#endif
+    ASSERT_TRUE(first.contains("mesh")) << first.dump();
+    EXPECT_FALSE(first.contains("same_as"));
     EXPECT_EQ(second["mesh"], first["mesh"]);
     EXPECT_EQ(second["reproduce"], first["reproduce"]);
     EXPECT_EQ(std::distance(fs::directory_iterator(d / "minimal"), fs::directory_iterator{}), 1);

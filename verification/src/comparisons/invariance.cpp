@@ -182,21 +182,6 @@ PolyMesh with_value_fans_split(const PolyMesh& mesh, int& split) {
     return out;
 }
 
-/// Whether `t` writes the same mesh otherwise (its faces, their corners or its vertices in
-/// another order), rather than moving it or refining it otherwise.
-bool writes_otherwise(InputTransformation t) {
-    switch (t) {
-        case InputTransformation::RotateCorners:
-        case InputTransformation::RotateCornersRandom:
-        case InputTransformation::ReverseFaces:
-        case InputTransformation::RotateFaces:
-        case InputTransformation::ShuffleFaces:
-        case InputTransformation::RelabelVertices:
-        case InputTransformation::ReverseOrientation: return true;
-        default: return false;
-    }
-}
-
 /// `mesh` cut along the seams of its first face-varying channel: each vertex whose corners hold
 /// several values gets one copy per value (the first keeps the vertex and its tags), so that a
 /// seam becomes a boundary on each side; the number of copies made is added to `split`.
@@ -703,11 +688,11 @@ std::vector<InvarianceCause> explain_findings(const Implementation& impl, const 
     if (!cleaned.face_varying.empty()) {
         int split = 0;
         const PolyMesh cut = with_seams_cut(cleaned, split);
-        const auto positional = std::stable_partition(pending.begin(), pending.end(), [&](size_t i) {
-            return findings[i].uv_only && writes_otherwise(findings[i].transformation);
+        const auto rest = std::stable_partition(pending.begin(), pending.end(), [&](size_t i) {
+            return findings[i].uv_only && reorders(findings[i].transformation);
         });
-        std::vector<size_t> others(positional, pending.end());
-        pending.erase(positional, pending.end());
+        std::vector<size_t> others(rest, pending.end());
+        pending.erase(rest, pending.end());
         if (split > 0 && !pending.empty())
             explained_on(cut, DivergenceClass::FaceOrderDependence, [&](bool as_points) {
                 return "its texture coordinates depend on the order of the faces along a UV seam: " +

@@ -81,6 +81,21 @@ constexpr bool runs_otherwise(InputTransformation t) {
     return t == InputTransformation::SplitComponents || t == InputTransformation::LevelByLevel;
 }
 
+/// The transformation writes the same mesh in another order (its faces, their corners or its
+/// vertices) rather than moving it or running the implementation otherwise.
+constexpr bool reorders(InputTransformation t) {
+    switch (t) {
+        case InputTransformation::RotateCorners:
+        case InputTransformation::RotateCornersRandom:
+        case InputTransformation::ReverseFaces:
+        case InputTransformation::RotateFaces:
+        case InputTransformation::ShuffleFaces:
+        case InputTransformation::RelabelVertices:
+        case InputTransformation::ReverseOrientation: return true;
+        default: return false;
+    }
+}
+
 /// "rotate-corners", "rotate-corners-random", "reverse-faces", "rotate-faces", ... (the names above).
 const char* to_string(InputTransformation t);
 /// @throws InputError naming the known names.
