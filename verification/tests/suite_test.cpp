@@ -189,7 +189,9 @@ TEST(Manifest, ReadsTheKeysOfEveryScheme) {
     EXPECT_EQ(cc.request.references, (std::vector<std::string>{"opensubdiv", "cgal"}));
     EXPECT_EQ(cc.request.tier, Tier::Strict);
     EXPECT_EQ(cc.request.timeout_seconds, 7);
+    EXPECT_TRUE(cc.references_named);
     const ManifestEntry& ds = m.entries[1];
+    EXPECT_FALSE(ds.references_named);
     EXPECT_EQ(ds.request.scheme, Scheme::DooSabin);
     EXPECT_EQ(ds.rule_flags.boundary, "");  // the input's tags, then the default
     EXPECT_EQ(ds.request.levels, 1);
@@ -198,7 +200,8 @@ TEST(Manifest, ReadsTheKeysOfEveryScheme) {
     EXPECT_EQ(ds.request.references, having);
     const std::vector<SuiteJob> jobs = expand_jobs(m);
     EXPECT_EQ(jobs.front().id, "bundled:" + datasets::bundled_meshes().front().name +
-                                   " | catmull-clark boundary=edge-and-corner crease-method=chaikin triangles=smooth L3 strict");
+                                   " | catmull-clark boundary=edge-and-corner crease-method=chaikin triangles=smooth L3 strict "
+                                   "against=opensubdiv,cgal");
     EXPECT_EQ(jobs.back().id, "bundled:" + datasets::polygon_meshes().back().name + " | doo-sabin boundary=default L1 weak tol=1e-12");
     // A subject replaces core in the comparisons of every scheme, not in a study.
     const Manifest with_subject = read_manifest(write(d / "b.suite", "suite s\nsubject s command='a {out}'\ncase bundled:all sqrt3\n"));
@@ -206,6 +209,23 @@ TEST(Manifest, ReadsTheKeysOfEveryScheme) {
     EXPECT_EQ(with_subject.entries.at(0).subject->name, "s");
     EXPECT_THROW(read_manifest(write(d / "c.suite", "suite s\nsubject s command='a {out}'\ncase catalog schemes\n")),
                  ParseError);
+}
+
+TEST(Manifest, TwoCasesThatDifferInTheReferencesTheyNameHaveTwoIds) {
+    // As the default suite has Catmull-Clark against the libraries and against Blender apart: one
+    // id for both made two rows of the report, a roster's failing case and a shrinking's
+    // same_as ambiguous.
+    CROSSDIV_REQUIRE_LIBRARIES("opensubdiv", "hbr");
+    const fs::path d = temp_dir("against-ids");
+    const Manifest m = read_manifest(write(d / "a.suite", "suite s\n"
+                                                          "case bundled:tetrahedron catmull-clark levels=1\n"
+                                                          "case bundled:tetrahedron catmull-clark levels=1 against=opensubdiv\n"
+                                                          "case bundled:tetrahedron catmull-clark levels=1 against=opensubdiv,hbr\n"));
+    const std::vector<SuiteJob> jobs = expand_jobs(m);
+    ASSERT_EQ(jobs.size(), 3u);
+    EXPECT_EQ(jobs[0].id, "bundled:tetrahedron | catmull-clark boundary=default L1 weak tol=1e-12");
+    EXPECT_EQ(jobs[1].id, "bundled:tetrahedron | catmull-clark boundary=default L1 weak tol=1e-12 against=opensubdiv");
+    EXPECT_EQ(jobs[2].id, "bundled:tetrahedron | catmull-clark boundary=default L1 weak tol=1e-12 against=opensubdiv,hbr");
 }
 
 TEST(Suite, ACaseOfAnySchemeOverAFolderRunsEachMeshAsItsOwnCase) {

@@ -256,6 +256,7 @@ ManifestEntry parse_case(const std::string& file, int line, std::istringstream& 
     else parse_scheme_keys(file, line, words, scheme, e.request, e.rule_flags);
     // Without against=, the references registered so far: a `reference` statement joins
     // the cases after it.
+    e.references_named = !references.empty();
     if (references.empty())
         for (const Implementation* r : references_for(scheme)) references.push_back(r->name());
     return e;
@@ -294,6 +295,10 @@ std::string describe_entry(const ManifestEntry& e) {
     }
     for (size_t k = 0; k < e.request.expected_refusals.size(); ++k)
         s += (k == 0 ? std::string(" refuses=") : std::string(",")) + to_string(e.request.expected_refusals[k]);
+    // Two cases that differ only in the references they name (the libraries, and Blender apart)
+    // are two cases: their ids say so.
+    for (size_t k = 0; e.references_named && k < e.request.references.size(); ++k)
+        s += (k == 0 ? std::string(" against=") : std::string(",")) + e.request.references[k];
     if (invariance) {
         if (!e.subject) {
             s += " impls=";

@@ -67,6 +67,9 @@ struct ManifestEntry {
     /// boundary=); another scheme's rule is resolved per input from `rule_flags` and the
     /// input's tags (rule_with_tags).
     RefinementRequest request;
+    /// A comparison names its references (`against=`, in its id) rather than taking every
+    /// reference of its scheme registered so far.
+    bool references_named = false;
     RuleFlags rule_flags;              ///< another scheme's boundary= and crease-method= keys
     TaskKeys task;                     ///< a course task's keys
     InvarianceKeys invariance;         ///< an invariance case's keys (its scheme and rule are in `request`)
