@@ -27,6 +27,7 @@
 #include "crossdiv/verification/suite/invariance_case.h"
 #include "crossdiv/verification/suite/manifest.h"
 #include "crossdiv/verification/suite/operations.h"
+#include "crossdiv/verification/suite/runner.h"
 
 #include <filesystem>
 #include <sstream>
@@ -786,6 +787,21 @@ TEST(InvarianceCase, APlantedSubjectFailsWithItsMinimalInputAndCoreIsInvariant) 
     EXPECT_EQ(minimal["transformation"], "rotate-corners");
     EXPECT_TRUE(std::filesystem::exists(d / minimal["mesh"].get<std::string>()));
     EXPECT_NE(minimal["reproduce"].get<std::string>().find("--transform rotate-corners --seed 1"), std::string::npos);
+    std::filesystem::remove_all(d);
+}
+
+TEST(InvarianceCase, AnInputTheSchemeRefusesBeforeAnyRunStillNamesTheScheme) {
+    // Loop's invariance over quads: refused by name before any implementation runs (the corpus's
+    // quad models, 555 cases), counted under Loop's invariance, not under an unknown scheme.
+    const std::filesystem::path d = fresh_folder("refused-input");
+    const Manifest m = manifest_of("suite t\ncase bundled:quad-cube invariance scheme=loop levels=2 impls=core "
+                                   "refuses=invalid-input-handling\n");
+    const std::vector<SuiteJob> jobs = expand_jobs(m);
+    ASSERT_EQ(jobs.size(), 1u);
+    const nlohmann::json j = to_json(run_job(jobs[0], d.string()));
+    EXPECT_EQ(j.value("scheme", ""), "loop") << j.dump();
+    EXPECT_EQ(j.value("levels", 0), 2);
+    EXPECT_NE(j.value("core_error", "").find("needs triangles"), std::string::npos) << j.dump();
     std::filesystem::remove_all(d);
 }
 

@@ -33,7 +33,10 @@ using nlohmann::json;
 /// A job that made no record: core refused its input, or failed.
 CaseRecord failed_job(const SuiteJob& job, const std::string& why, bool ours_failed) {
     CaseRecord c = failed_case(job.input, job.entry->operation->name, why, ours_failed);
-    if (job.entry->operation->kind != OperationKind::Comparison) return c;
+    const OperationKind kind = job.entry->operation->kind;
+    if (kind != OperationKind::Comparison && kind != OperationKind::Invariance) return c;
+    // The scheme, rule and levels the case was to run, as a case that ran states them: the
+    // report counts each scheme's runs (an invariance case's too) on its own row.
     const RefinementRequest& r = job.entry->request;
     if (r.scheme == Scheme::Loop) {
         c.weights = to_string(r.rule.loop.weights);
@@ -42,8 +45,9 @@ CaseRecord failed_job(const SuiteJob& job, const std::string& why, bool ours_fai
         c.boundary = job.entry->rule_flags.boundary.empty() ? "default" : job.entry->rule_flags.boundary;
     }
     c.levels = r.levels;
-    c.tier = to_string(r.tier);
     c.tolerance = r.tolerance;
+    if (kind == OperationKind::Invariance) c.detail["scheme"] = to_string(r.scheme);
+    else c.tier = to_string(r.tier);
     return c;
 }
 
