@@ -14,6 +14,7 @@
 #include "crossdiv/verification/implementations/registry.h"
 #include "crossdiv/verification/suite/manifest.h"
 #include "crossdiv/verification/suite/operations.h"
+#include "crossdiv/verification/suite/output_folder_lock.h"
 #include "crossdiv/verification/suite/outputs.h"
 #include "crossdiv/verification/suite/report.h"
 #include "crossdiv/verification/suite/runner.h"
@@ -82,6 +83,7 @@ int run_suite(const std::string& manifest_path, const std::string& out, int jobs
     const std::vector<SuiteJob> mine = shard_jobs(all, shard_i, shard_n);
     fmt::print("suite {} ({}): {} jobs, shard {}/{} runs {} with {} worker(s)\n", manifest.name, manifest.file, all.size(),
                shard_i, shard_n, mine.size(), jobs);
+    const OutputFolderLock lock(out);
     clear_previous_run_files(out);
     const bool tty = isatty(STDOUT_FILENO);
     const auto t0 = std::chrono::steady_clock::now();
@@ -119,6 +121,7 @@ int run_suite(const std::string& manifest_path, const std::string& out, int jobs
 }
 
 int run_merge(const std::vector<std::string>& dirs, const std::string& out, bool report) {
+    const OutputFolderLock lock(out);
     const SuiteSummary summary = merge_suite_outputs(dirs, out);
     fmt::print("merged {} folder(s) into {}\n", dirs.size(), out);
     print_outcome_summary(summary);

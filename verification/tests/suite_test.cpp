@@ -7,6 +7,8 @@
 #include <fstream>
 #include <limits>
 #include <regex>
+#include <csignal>
+#include <sys/wait.h>
 #include <unistd.h>
 #include <set>
 #include <sstream>
@@ -26,6 +28,7 @@
 #include "crossdiv/verification/implementations/program_implementation.h"
 #include "crossdiv/verification/suite/manifest.h"
 #include "crossdiv/verification/suite/operations.h"
+#include "crossdiv/verification/suite/output_folder_lock.h"
 #include "crossdiv/verification/suite/outputs.h"
 #include "crossdiv/verification/suite/failure_shrink.h"
 #include "crossdiv/verification/suite/runner.h"
@@ -209,6 +212,41 @@ TEST(Manifest, ReadsTheKeysOfEveryScheme) {
     EXPECT_EQ(with_subject.entries.at(0).subject->name, "s");
     EXPECT_THROW(read_manifest(write(d / "c.suite", "suite s\nsubject s command='a {out}'\ncase catalog schemes\n")),
                  ParseError);
+}
+
+TEST(Suite, AnOutputFolderHasOneWriterAtATime) {
+    const fs::path d = temp_dir("lock");
+    {
+        const OutputFolderLock first((d / "out").string());
+        try {
+            const OutputFolderLock second((d / "out").string());
+            ADD_FAILURE() << "a second writer took the folder";
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find((d / "out").string() + ": another crossdiv suite or merge is writing"),
+                      std::string::npos)
+                << e.what();
+        }
+    }
+    EXPECT_NO_THROW(OutputFolderLock again((d / "out").string()));  // released with the first
+    // A writer killed in the middle leaves no stale lock: the kernel drops it with the process.
+    int ready[2];
+    ASSERT_EQ(pipe(ready), 0);
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        const OutputFolderLock held((d / "out").string());
+        (void)!::write(ready[1], "x", 1);
+        pause();
+        _exit(0);
+    }
+    char c = 0;
+    ASSERT_EQ(::read(ready[0], &c, 1), 1);
+    EXPECT_THROW(OutputFolderLock busy((d / "out").string()), InputError);
+    kill(child, SIGKILL);
+    waitpid(child, nullptr, 0);
+    EXPECT_NO_THROW(OutputFolderLock after((d / "out").string()));
+    close(ready[0]);
+    close(ready[1]);
 }
 
 TEST(Manifest, TwoCasesThatDifferInTheReferencesTheyNameHaveTwoIds) {
