@@ -791,8 +791,8 @@ TEST(InvarianceCase, APlantedSubjectFailsWithItsMinimalInputAndCoreIsInvariant) 
 }
 
 TEST(InvarianceCase, AnInputTheSchemeRefusesBeforeAnyRunStillNamesTheScheme) {
-    // Loop's invariance over quads: refused by name before any implementation runs (the corpus's
-    // quad models, 555 cases), counted under Loop's invariance, not under an unknown scheme.
+    // Loop's invariance over quads: refused by name before any implementation runs (as over the
+    // corpus's quad models), counted under Loop's invariance, not under an unknown scheme.
     const std::filesystem::path d = fresh_folder("refused-input");
     const Manifest m = manifest_of("suite t\ncase bundled:quad-cube invariance scheme=loop levels=2 impls=core "
                                    "refuses=invalid-input-handling\n");

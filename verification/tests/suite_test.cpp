@@ -234,19 +234,22 @@ TEST(Suite, AnOutputFolderHasOneWriterAtATime) {
     const pid_t child = fork();
     ASSERT_GE(child, 0);
     if (child == 0) {
+        close(ready[0]);
         const OutputFolderLock held((d / "out").string());
         (void)!::write(ready[1], "x", 1);
         pause();
         _exit(0);
     }
+    close(ready[1]);  // a child that ends before it writes ends the read, rather than hanging it
     char c = 0;
-    ASSERT_EQ(::read(ready[0], &c, 1), 1);
+    const ssize_t got = ::read(ready[0], &c, 1);
+    close(ready[0]);
+    if (got != 1) kill(child, SIGKILL);
+    ASSERT_EQ(got, 1) << "the child did not take the folder";
     EXPECT_THROW(OutputFolderLock busy((d / "out").string()), InputError);
     kill(child, SIGKILL);
     waitpid(child, nullptr, 0);
     EXPECT_NO_THROW(OutputFolderLock after((d / "out").string()));
-    close(ready[0]);
-    close(ready[1]);
 }
 
 TEST(Manifest, TwoCasesThatDifferInTheReferencesTheyNameHaveTwoIds) {
