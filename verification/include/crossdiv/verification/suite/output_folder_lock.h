@@ -2,9 +2,8 @@
 /// @file
 /// One writer per output folder. `crossdiv suite` clears the previous run's views and minimal
 /// meshes, its workers write their records (workerN.jsonl) and each job's views, and it writes
-/// results.json at the end;
-/// `crossdiv merge` writes the same files. Two of them in one folder at once delete and mix each
-/// other's files and end with results that are neither run's (measured: three suites started
+/// results.json at the end; `crossdiv merge` writes the same files. Two of them in one folder at
+/// once delete and mix each other's files and end with results that are neither run's (measured: three suites started
 /// into one folder wrote 2,725 cases with 4,770 runs of 37,566). The second is refused instead.
 
 #include <string>
