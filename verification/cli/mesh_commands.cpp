@@ -544,8 +544,8 @@ struct ProgramArgs {
             ->capture_default_str();
         app.add_option("--reference", references,
                        "Add a program as a reference: NAME=CMD, CMD a command template as for --subject; or "
-                       "NAME=command='CMD' [precision=float] [schemes=..] [weights=..] [boundary=..] [setup='CMD'] "
-                       "as a suite manifest's reference statement. Repeatable");
+                       "NAME=command='CMD' [serve='CMD'] [setup='CMD'] [schemes=..] [precision=float] [weights=..] [boundary=..] "
+                       "[levels=final] [timeout=S] [rejects=..] as a suite manifest's reference statement. Repeatable");
     }
 
     /// Registers each --reference NAME=CMD (or NAME=command='CMD' key=value ...) as a

@@ -32,6 +32,7 @@
 #include "crossdiv/verification/suite/outputs.h"
 #include "crossdiv/verification/suite/failure_shrink.h"
 #include "crossdiv/verification/suite/runner.h"
+#include "test_inputs.h"
 #include "crossdiv/verification/suite/shard_results.h"
 #include "library_guard.h"
 
@@ -478,6 +479,48 @@ TEST(Suite, ACrashOfTheSameRunOfAReferenceIsShrunkOnce) {
     EXPECT_EQ(second["mesh"], first["mesh"]);
     EXPECT_EQ(second["reproduce"], first["reproduce"]);
     EXPECT_EQ(std::distance(fs::directory_iterator(d / "minimal"), fs::directory_iterator{}), 1);
+}
+
+TEST(Suite, AProgramReferencesFailureIsShrunkWithALineThatRegistersIt) {
+    // A serving program that fails on any edge without its second face: on the three holes of
+    // edgecase:holes it exits with a traceback, and one triangle (three such edges) is the
+    // minimal mesh. Its reproduce line names the program as the manifest did, so that
+    // `crossdiv compare` can run it from the results folder, where it is not built in.
+    const std::string script = "python3 " + test::kSource + "/verification/tests/subjects/misbehaving_subject.py";
+    const fs::path d = temp_dir("shrink-program");
+    const Manifest m = read_manifest(write(d / "program.suite",
+                                           "suite program\ntimeout 30\n"
+                                           "reference closed-only command='" + script + " closed-only {in} {levels} {out}' "
+                                           "serve='" + script + " --serve' schemes=loop\n"
+                                           "case edgecase:holes loop levels=1 against=closed-only\n"));
+    const std::vector<SuiteJob> jobs = expand_jobs(m);
+    std::vector<CaseRecord> recs = run_jobs(jobs, 1, d.string(), [](int, int, const CaseRecord&) {});
+    ASSERT_EQ(recs.size(), 1u);
+    ASSERT_EQ(recs[0].runs.size(), 1u);
+    ASSERT_EQ(outcome_label(recs[0], recs[0].runs[0]), "ref-crashed") << recs[0].runs[0].explanation;
+    shrink_failures(jobs, recs, d.string(), 1);
+    const nlohmann::json minimal = recs[0].runs[0].detail.value("minimal", nlohmann::json());
+    ASSERT_TRUE(minimal.contains("mesh")) << minimal.dump();
+    EXPECT_EQ(minimal["faces"], 1);
+    EXPECT_EQ(minimal["reproduces"], true);
+    EXPECT_TRUE(fs::is_regular_file(d / minimal["mesh"].get<std::string>()));
+
+    // The line registers the program: its --reference value, read as the CLI reads it, is the
+    // same program (command, server, schemes, time limit).
+    const std::string line = minimal.value("reproduce", "");
+    const std::string flag = " --reference \"";
+    const size_t at = line.find(flag);
+    ASSERT_NE(at, std::string::npos) << line;
+    EXPECT_NE(line.find(" --against closed-only"), std::string::npos) << line;
+    const std::string value = line.substr(at + flag.size(), line.size() - at - flag.size() - 1);
+    ASSERT_EQ(line.back(), '"') << line;
+    const size_t eq = value.find('=');
+    const ProgramSpec again = program_spec(value.substr(0, eq), statement_words(value.substr(eq + 1)), "", 120);
+    EXPECT_EQ(again.command, script + " closed-only {in} {levels} {out}");
+    EXPECT_EQ(again.serve, script + " --serve");
+    EXPECT_EQ(again.schemes, std::vector<Scheme>{Scheme::Loop});
+    EXPECT_EQ(again.timeout_seconds, 30);
+    EXPECT_EQ(reference_option(again), find_implementation("closed-only").reference_option());
 }
 
 TEST(Suite, ACoreRefusalFailsUnlessTheCaseDeclaresIt) {

@@ -124,6 +124,15 @@ void CommandTemplate::anchor_relative_paths(const std::string& base) {
     }
 }
 
+std::string CommandTemplate::anchored_text() const {
+    std::string text;
+    for (const auto& w : words_) {
+        if (!text.empty()) text += ' ';
+        for (const Piece& p : w) text += p.placeholder ? "{" + p.text + "}" : p.text;
+    }
+    return text;
+}
+
 bool CommandTemplate::reads_tags() const { return reads_obj_; }
 
 bool CommandTemplate::reads_untagged_obj() const { return reads_untagged_; }

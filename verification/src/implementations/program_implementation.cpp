@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
@@ -131,6 +132,7 @@ public:
     }
 
     bool confines_itself() const override { return true; }
+    std::string reference_option() const override { return verification::reference_option(spec_); }
 
     adapters::LevelTrace refine(const PolyMesh& mesh, const RefineRequest& request) const override {
         check_refinable(request.scheme);
@@ -399,6 +401,36 @@ void check_program_spec(const ProgramSpec& spec) {
                          "manifest's `subjects NAME dir=...` statement only");
     program_capabilities(spec, command.text().find("{weights}") != std::string::npos,
                          command.text().find("{boundary}") != std::string::npos, command.reads_tags());
+}
+
+std::string reference_option(const ProgramSpec& spec) {
+    const auto anchored = [&](const std::string& text, bool needs_output) {
+        CommandTemplate t(text, needs_output);
+        t.anchor_relative_paths(spec.base_dir);
+        return "'" + t.anchored_text() + "'";
+    };
+    const auto joined = [](const auto& items, const auto& name_of) {
+        std::string s;
+        for (const auto& item : items) {
+            if (!s.empty()) s += ',';
+            s += name_of(item);
+        }
+        return s;
+    };
+    const auto same = [](const std::string& s) { return s; };
+    std::string o = spec.name + "=command=" + anchored(spec.command, true);
+    if (!spec.serve.empty()) o += " serve=" + anchored(spec.serve, false);
+    if (!spec.setup.empty()) o += " setup=" + anchored(spec.setup, false);
+    if (!spec.schemes.empty()) o += " schemes=" + joined(spec.schemes, [](Scheme s) { return to_string(s); });
+    if (spec.precision == Precision::Float) o += " precision=float";
+    if (!spec.weights.empty()) o += " weights=" + joined(spec.weights, same);
+    if (!spec.boundaries.empty()) o += " boundary=" + joined(spec.boundaries, same);
+    if (spec.levels != LevelMode::Each) o += std::string(" levels=") + to_string(spec.levels);
+    if (!spec.refusal_exit_codes.empty())
+        o += " rejects=" + joined(spec.refusal_exit_codes, [](int c) { return std::to_string(c); });
+    char timeout[32];
+    std::snprintf(timeout, sizeof timeout, "%.17g", spec.timeout_seconds);
+    return o + " timeout=" + timeout;
 }
 
 std::unique_ptr<Implementation> make_program_implementation(const ProgramSpec& spec) {

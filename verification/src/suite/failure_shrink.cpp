@@ -169,8 +169,6 @@ void reference_tasks(const std::vector<SuiteJob>& jobs, std::vector<CaseRecord>&
             taken.push_back(run.reference);
             if (run.status == RunStatus::Timeout)
                 run.detail["minimal"] = {{"note", "not shrunk: it timed out, and each smaller try would cost its time limit"}};
-            else if (find_implementation(run.reference).confines_itself())
-                run.detail["minimal"] = {{"note", "not shrunk: a program reference, started again for every candidate"}};
             else if (const std::string key = failure_key(*job, run); !key.empty() && task_of_failure.count(key))
                 repeats.push_back({c, static_cast<int>(i), task_of_failure[key]});
             else {

@@ -181,7 +181,10 @@ std::string compare_command(const RefinementRequest& req, const std::string& mes
                                  : " --scheme " + std::string(to_string(req.scheme)) + " --boundary " +
                                        boundary_name(req.scheme, req.rule);
     const std::string fvar = req.face_varying ? " --fvar " + std::string(to_string(*req.face_varying)) : "";
-    return "crossdiv compare " + mesh_file + rule + fvar + " --levels " + std::to_string(req.levels) + " --against " + reference;
+    // A program reference is not built in: the line registers it as the manifest did.
+    const std::string program = find_implementation(reference).reference_option();
+    return "crossdiv compare " + mesh_file + rule + fvar + " --levels " + std::to_string(req.levels) + " --against " + reference +
+           (program.empty() ? "" : " --reference \"" + program + "\"");
 }
 
 

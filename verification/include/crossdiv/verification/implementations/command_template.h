@@ -72,6 +72,9 @@ public:
     /// means in the user's shell, or beside the manifest that names it, although it runs in a
     /// folder of its own.
     void anchor_relative_paths(const std::string& base = "");
+    /// The template as text again, after anchor_relative_paths: the command that means the
+    /// same from any folder.
+    std::string anchored_text() const;
     /// The argument vector for one run.
     std::vector<std::string> expand(const TemplateValues& values) const;
     /// How many leading words this template and `other` have in common, placeholders and all:

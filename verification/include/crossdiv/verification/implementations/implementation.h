@@ -146,6 +146,9 @@ public:
     /// Whether it runs its work in child processes with their own time limit (a program), so
     /// that the harness need not fork around it (refine_isolated).
     virtual bool confines_itself() const { return false; }
+    /// For a program: the value of `crossdiv compare --reference` that makes it again, from any
+    /// folder (program_implementation.h); empty for an implementation built into crossdiv.
+    virtual std::string reference_option() const { return ""; }
 
     /// Its support of `scheme`, or nullptr when it lacks the scheme.
     const SchemeSupport* support(Scheme scheme) const;

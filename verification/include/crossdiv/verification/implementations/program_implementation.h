@@ -74,6 +74,12 @@ struct ProgramSpec {
     std::vector<int> refusal_exit_codes;
 };
 
+/// The value of `crossdiv compare --reference` that makes the program of `spec` again from any
+/// folder, as a reproduce line needs it: NAME=command='...' and each key that differs from a
+/// program's defaults (serve, setup, schemes, precision, weights, boundary, levels, timeout,
+/// rejects), the relative paths of its commands made absolute as the manifest's folder means them.
+std::string reference_option(const ProgramSpec& spec);
+
 /// Vertex and face counts of a refined mesh, and the named rule that makes them ("" when
 /// every rule of the scheme does).
 struct RefinedCounts {

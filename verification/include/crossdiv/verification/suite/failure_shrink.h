@@ -9,7 +9,7 @@
 ///   subject alone in core's place (its failure or its lack of a named rule must persist):
 ///   minimal/<roster>-<subject>-<scheme>.obj, in the case's record; the class table links it
 ///   (roster_table.h).
-/// - **A library reference's failure**: every run in which a library crashed, threw or wrote an
+/// - **A reference's failure**: every run in which a library or program crashed, threw or wrote an
 ///   invalid result (NaN, wrong counts, an unreadable mesh), and every divergence of one from
 ///   core that no class explains, with that reference alone (its failure or its divergence
 ///   must persist): minimal/job<N>-<reference>.obj, in that run's record. Each within
@@ -19,11 +19,14 @@
 ///   input, scheme, levels and the reference's own rule: cases that differ in core's rule
 ///   alone) is shrunk once; the other records hold the same result with `same_as`, that case.
 ///
+/// A program reference (MeshLab, Open3D, Blender) is shrunk as a library is: a serving one is
+/// handed each candidate as a request (each shrinking child starts it once), and its reproduce
+/// line registers it (`--reference`, ProgramSpec's reference_option).
+///
 /// Not shrunk, with the reason noted: a course task's case (shrink.h takes a scheme's mesh), a
 /// subject that hangs or a reference's time-out (each try would cost its time limit), a result
-/// file (it cannot be re-run on a smaller input), a program reference (each candidate would
-/// start it again), a failure the comparison run again does not show (a reference reading memory
-/// it does not own may fail in one run only).
+/// file (it cannot be re-run on a smaller input), a failure the comparison run again does not
+/// show (a reference reading memory it does not own may fail in one run only).
 
 #include <string>
 #include <vector>
