@@ -90,13 +90,12 @@ int run_invariance(const InvarianceOptions& o, const Implementation* subject) {
                 row["cause"] = cause;
                 rows.push_back(std::move(row));
             }
-            // The first finding shrunk, where the input is small enough for delta debugging to be quick.
+            // The first finding shrunk (within kInvarianceShrinkSeconds).
             if (const std::optional<InvarianceMinimal> m = shrink_first_finding(
                     *impl, subject != nullptr, mesh, request, r, o.seed, o.tolerance, o.timeout, o.isolate, o.out, file_stem(in))) {
-                fmt::print("  {:<17} minimal input: {} faces ({} checks): {}\n  {:<17} reproduce: {}\n", impl->name(), m->faces,
-                           m->tests, m->explanation, "", m->reproduce);
-                minimal = {{"mesh", m->mesh}, {"faces", m->faces}, {"tests", m->tests},
-                           {"transformation", to_string(m->transformation)}, {"reproduce", m->reproduce}};
+                fmt::print("  {:<17} minimal input: {} faces ({} checks{}): {}\n  {:<17} reproduce: {}\n", impl->name(), m->faces,
+                           m->tests, m->cut_short ? ", cut short by the time limit" : "", m->explanation, "", m->reproduce);
+                minimal = to_json(*m);
             }
             results.push_back({{"input", in},
                                {"minimal", minimal},

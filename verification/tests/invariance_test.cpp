@@ -6,12 +6,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <numeric>
 
 #include "library_guard.h"
 
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/datasets/edge_cases.h"
 #include "crossdiv/error.h"
+#include "crossdiv/io/mesh_io.h"
 #include "crossdiv/mesh/disjoint_union.h"
 #include "crossdiv/mesh/poly_connectivity.h"
 #include "crossdiv/mesh/tri_mesh.h"
@@ -787,6 +789,54 @@ TEST(InvarianceCase, APlantedSubjectFailsWithItsMinimalInputAndCoreIsInvariant) 
     EXPECT_EQ(minimal["transformation"], "rotate-corners");
     EXPECT_TRUE(std::filesystem::exists(d / minimal["mesh"].get<std::string>()));
     EXPECT_NE(minimal["reproduce"].get<std::string>().find("--transform rotate-corners --seed 1"), std::string::npos);
+    std::filesystem::remove_all(d);
+}
+
+TEST(InvarianceCase, AFindingOnALargeInputIsShrunkWithinTheTimeLimit) {
+    // The corner bug on the icosahedron refined three times: 1,280 faces, its twelve valence-5
+    // vertices kept, as large as a real model's part: shrunk however many faces the input has,
+    // to a 1-minimal input (rotate-corners draws each face's rotation from one stream, so which
+    // fan shows the bug depends on the faces before it, and the minimum is not one fan here).
+    const std::unique_ptr<Implementation> subject = corner_position_subject(Scheme::Loop, 6);
+    RefineRequest request{Scheme::Loop, {}, 1};
+    request.rule.loop = {LoopWeights::Loop, LoopBoundary::EdgeOnly};
+    RefineRequest three = request;
+    three.levels = 3;
+    const PolyMesh large = core_implementation().refine_last(datasets::bundled_mesh("icosahedron"), three);
+    ASSERT_EQ(large.num_faces(), 1280);
+    const InvarianceReport report = check_invariance(*subject, large, request, {InputTransformation::RotateCorners}, 1, 1e-12, 60, false);
+    ASSERT_EQ(report.checks.size(), 1u);
+    ASSERT_EQ(report.checks[0].result, InvarianceResult::NotInvariant) << report.checks[0].explanation;
+    const std::filesystem::path d = fresh_folder("large");
+    const std::optional<InvarianceMinimal> m =
+        shrink_first_finding(*subject, true, large, request, report, 1, 1e-12, 60, false, d.string(), "large");
+    ASSERT_TRUE(m.has_value());
+    EXPECT_FALSE(m->cut_short);
+    EXPECT_LT(m->faces, 1280 / 10);
+    const PolyMesh minimal = read_mesh(m->mesh);
+    ASSERT_EQ(minimal.num_faces(), m->faces);
+    const auto shows = [&](const PolyMesh& mesh) {
+        const InvarianceReport r = check_invariance(*subject, mesh, request, {InputTransformation::RotateCorners}, 1, 1e-12, 60, false);
+        return r.checks.size() == 1 && r.checks[0].finding();
+    };
+    EXPECT_TRUE(shows(minimal));
+    for (int f = 0; f < minimal.num_faces(); ++f) {  // 1-minimal: no face can go
+        std::vector<int> others(static_cast<size_t>(minimal.num_faces()) - 1);
+        std::iota(others.begin(), others.begin() + f, 0);
+        std::iota(others.begin() + f, others.end(), f + 1);
+        EXPECT_FALSE(shows(submesh(minimal, others))) << "without face " << f;
+    }
+    EXPECT_TRUE(std::filesystem::exists(m->mesh));
+    EXPECT_EQ(to_json(*m)["cut_short"], false);
+
+    // Out of time before the first candidate: the input itself, marked cut short, after the one
+    // check that found the finding again.
+    const InvarianceShrink none = shrink_not_invariant(*subject, large, request, InputTransformation::RotateCorners, 1, 1e-12, 60,
+                                                       false, ShrinkLimits{0});
+    EXPECT_TRUE(none.cut_short);
+    EXPECT_EQ(none.tests, 1);
+    EXPECT_EQ(none.minimal.num_faces(), 1280);
+    EXPECT_EQ(none.check.result, InvarianceResult::NotInvariant);
     std::filesystem::remove_all(d);
 }
 

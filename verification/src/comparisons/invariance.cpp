@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <numeric>
 #include <optional>
@@ -13,6 +14,7 @@
 #include "crossdiv/verification/comparisons/shrink.h"
 #include "crossdiv/verification/harness/corner_values.h"
 #include "crossdiv/verification/harness/correspondence.h"
+#include "crossdiv/verification/harness/ddmin.h"
 #include "crossdiv/verification/harness/tolerances.h"
 #include "crossdiv/mesh/disjoint_union.h"
 #include "crossdiv/mesh/mesh_checks.h"
@@ -774,49 +776,33 @@ std::string invariance_view_label(const std::string& implementation, InputTransf
 
 InvarianceShrink shrink_not_invariant(const Implementation& impl, const PolyMesh& input, const RefineRequest& request,
                                       InputTransformation t, std::uint64_t seed, double tolerance, double timeout_seconds,
-                                      bool isolate) {
+                                      bool isolate, const ShrinkLimits& limits) {
+    const auto t0 = std::chrono::steady_clock::now();
     InvarianceShrink out;
-    const auto shows = [&](const PolyMesh& mesh, InvarianceCheck* check) {
+    const auto shows = [&](const PolyMesh& mesh, InvarianceCheck& check) {
         ++out.tests;
         const InvarianceReport r = check_invariance(impl, mesh, request, {t}, seed, tolerance, timeout_seconds, isolate);
         const bool bad = r.checks.size() == 1 && r.checks[0].finding();
-        if (bad && check) *check = r.checks[0];
+        if (bad) check = r.checks[0];
         return bad;
     };
-    if (!shows(input, &out.check))
+    if (!shows(input, out.check))
         throw InputError(impl.name() + " is " + std::string(to_string(out.check.result)) + " under " + to_string(t) +
                          " on this input: nothing to shrink");
-    std::vector<int> faces(static_cast<size_t>(input.num_faces()));
-    for (size_t f = 0; f < faces.size(); ++f) faces[f] = static_cast<int>(f);
-    // ddmin: try each of n chunks alone, then each complement; on success restart coarser.
-    size_t n = 2;
-    while (faces.size() >= 2) {
-        const size_t chunk = (faces.size() + n - 1) / n;
-        bool reduced = false;
-        for (size_t i = 0; i < n && !reduced; ++i) {
-            const size_t lo = std::min(faces.size(), i * chunk), hi = std::min(faces.size(), lo + chunk);
-            if (lo == hi) continue;
-            const std::vector<int> part(faces.begin() + static_cast<std::ptrdiff_t>(lo), faces.begin() + static_cast<std::ptrdiff_t>(hi));
-            std::vector<int> rest(faces.begin(), faces.begin() + static_cast<std::ptrdiff_t>(lo));
-            rest.insert(rest.end(), faces.begin() + static_cast<std::ptrdiff_t>(hi), faces.end());
-            InvarianceCheck check;
-            if (shows(submesh(input, part), &check)) {
-                faces = part;
-                out.check = check;
-                n = 2;
-                reduced = true;
-            } else if (n > 2 && shows(submesh(input, rest), &check)) {
-                faces = rest;
-                out.check = check;
-                n = std::max<size_t>(n - 1, 2);
-                reduced = true;
-            }
-        }
-        if (!reduced) {
-            if (n >= faces.size()) break;
-            n = std::min(faces.size(), 2 * n);
-        }
-    }
+    // Past the time limit every further candidate counts as not showing it: ddmin then only
+    // splits what it has until its chunks are single faces, running nothing.
+    const auto out_of_time = [&] {
+        if (std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > limits.seconds) out.cut_short = true;
+        return out.cut_short;
+    };
+    std::vector<int> all(static_cast<size_t>(input.num_faces()));
+    std::iota(all.begin(), all.end(), 0);
+    const std::vector<int> faces = ddmin(std::move(all), [&](const std::vector<int>& keep) {
+        InvarianceCheck check;
+        if (out_of_time() || !shows(submesh(input, keep), check)) return false;
+        out.check = check;  // the last candidate kept is the minimal input
+        return true;
+    }, DdminSteps::SubsetsThenComplements);
     // Nothing removed: the input itself (submesh drops vertices no face uses, which the
     // symptom may need: an isolated vertex).
     out.minimal = faces.size() == static_cast<size_t>(input.num_faces()) ? input : submesh(input, faces);

@@ -103,15 +103,26 @@ RunRecord failed_input_run(const Implementation& impl, bool under_test, const Ru
 
 }  // namespace
 
+json to_json(const InvarianceMinimal& m) {
+    return {{"mesh", m.mesh},
+            {"faces", m.faces},
+            {"tests", m.tests},
+            {"cut_short", m.cut_short},
+            {"transformation", to_string(m.transformation)},
+            {"explanation", m.explanation},
+            {"reproduce", m.reproduce}};
+}
+
 std::optional<InvarianceMinimal> shrink_first_finding(const Implementation& impl, bool subject, const PolyMesh& input,
                                                       const RefineRequest& request, const InvarianceReport& report,
                                                       std::uint64_t seed, double tolerance, double timeout_seconds,
                                                       bool isolate, const std::string& folder, const std::string& file_stem) {
     const auto finding = std::find_if(report.checks.begin(), report.checks.end(), [](const InvarianceCheck& c) { return c.finding(); });
-    if (finding == report.checks.end() || input.num_faces() > kInvarianceShrinkMaxFaces) return std::nullopt;
+    if (finding == report.checks.end()) return std::nullopt;
     InvarianceShrink s;
     try {
-        s = shrink_not_invariant(impl, input, request, finding->transformation, seed, tolerance, timeout_seconds, isolate);
+        s = shrink_not_invariant(impl, input, request, finding->transformation, seed, tolerance, timeout_seconds, isolate,
+                                 {kInvarianceShrinkSeconds});
     } catch (const InputError&) {
         return std::nullopt;  // it did not show again: nothing to shrink
     }
@@ -122,6 +133,7 @@ std::optional<InvarianceMinimal> shrink_first_finding(const Implementation& impl
     write_mesh(m.mesh, s.minimal);
     m.faces = s.minimal.num_faces();
     m.tests = s.tests;
+    m.cut_short = s.cut_short;
     m.explanation = s.check.explanation;
     m.reproduce = "crossdiv invariance " + m.mesh + " --scheme " + to_string(request.scheme) + " --levels " +
                   std::to_string(request.levels) + rule_flags(request) +
@@ -200,13 +212,8 @@ CaseRecord run_invariance_case(const SuiteJob& job, const std::string& out_dir) 
                 shrink_first_finding(*impl, entry.subject != nullptr, input, request, report, keys.seed, tolerance, timeout,
                                      true, (std::filesystem::path(out_dir) / "invariance").string(), stem)) {
             // Beside the results, named relative to them as the views are.
-            const std::string relative = std::filesystem::relative(m->mesh, out_dir).string();
-            summary["minimal"] = {{"mesh", relative},
-                                  {"faces", m->faces},
-                                  {"tests", m->tests},
-                                  {"transformation", to_string(m->transformation)},
-                                  {"explanation", m->explanation},
-                                  {"reproduce", m->reproduce}};
+            summary["minimal"] = to_json(*m);
+            summary["minimal"]["mesh"] = std::filesystem::relative(m->mesh, out_dir).string();
         }
         rec.detail["implementations"].push_back(std::move(summary));
     }

@@ -27,6 +27,7 @@
 #include "crossdiv/mesh/poly_mesh.h"
 #include "crossdiv/verification/comparisons/divergence_view.h"
 #include "crossdiv/verification/comparisons/input_transformation.h"
+#include "crossdiv/verification/comparisons/shrink.h"
 #include "crossdiv/verification/harness/isolate.h"
 #include "crossdiv/verification/harness/verdict.h"
 #include "crossdiv/verification/implementations/implementation.h"
@@ -164,12 +165,16 @@ struct InvarianceShrink {
     PolyMesh minimal;
     int tests = 0;  ///< invariance checks run while shrinking
     InvarianceCheck check;  ///< the check on the minimal input
+    /// The time limit ended the shrinking before every face was tried: `minimal` still shows
+    /// the finding, but removing one more face might not make it go away.
+    bool cut_short = false;
 };
 
-/// Shrinks `input`, on which `impl` is not invariant under `t` (check_invariance's arguments).
+/// Shrinks `input`, on which `impl` is not invariant under `t` (check_invariance's arguments),
+/// within `limits` (as shrink_divergence: past it the smallest input found so far).
 /// @throws InputError when the check on `input` itself shows nothing to shrink.
 InvarianceShrink shrink_not_invariant(const Implementation& impl, const PolyMesh& input, const RefineRequest& request,
                                       InputTransformation t, std::uint64_t seed, double tolerance, double timeout_seconds,
-                                      bool isolate = true);
+                                      bool isolate = true, const ShrinkLimits& limits = {});
 
 }  // namespace crossdiv::verification

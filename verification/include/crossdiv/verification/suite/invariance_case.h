@@ -22,9 +22,9 @@
 /// An implementation whose run on the input itself fails has one run, check "input": a
 /// reference's ref-rejected / ref-crashed / ref-invalid-output, core's (or the subject's)
 /// ours-rejected classed by what the input breaks, a failure unless the case declares it
-/// (refuses=), as in the comparisons. Each implementation's first finding on an input of at
-/// most kInvarianceShrinkMaxFaces faces is shrunk by delta debugging and written beside the
-/// results (invariance/jobN-IMPL-TRANSFORM.obj) with the command that reproduces it.
+/// (refuses=), as in the comparisons. Each implementation's first finding is shrunk by delta
+/// debugging within kInvarianceShrinkSeconds and written beside the results
+/// (invariance/jobN-IMPL-TRANSFORM.obj) with the command that reproduces it.
 
 #include <cstdint>
 #include <optional>
@@ -36,9 +36,11 @@
 
 namespace crossdiv::verification {
 
-/// Inputs up to this many faces have their first finding shrunk: every catalog and bundled
-/// mesh, where delta debugging takes tens of checks of milliseconds each.
-inline constexpr int kInvarianceShrinkMaxFaces = 500;
+/// The time one finding may take to shrink, as a library's failure in a comparison
+/// (failure_shrink.h): a catalog mesh takes tens of checks of milliseconds each; a real model
+/// of 20,000 faces, whose every check refines it twice, hundreds of checks of up to a second,
+/// and past the limit the smallest input found so far is the result, marked cut short.
+inline constexpr double kInvarianceShrinkSeconds = 60;
 
 /// A finding shrunk to a minimal input and written to a file.
 struct InvarianceMinimal {
@@ -48,13 +50,17 @@ struct InvarianceMinimal {
     InputTransformation transformation = InputTransformation::Repeat;
     std::string explanation;  ///< the check on the minimal input
     std::string reproduce;    ///< the crossdiv invariance command line that shows it again
+    bool cut_short = false;   ///< the time limit ended the shrinking (InvarianceShrink::cut_short)
 };
+
+/// As results and the invariance command's JSON state it: mesh, faces, tests, cut_short,
+/// transformation, explanation, reproduce.
+nlohmann::json to_json(const InvarianceMinimal& m);
 
 /// The first not-invariant or nondeterministic check of `report` shrunk (shrink_not_invariant)
 /// and written as `file_stem`-IMPL-TRANSFORM.obj in `folder`, with its reproduce line (rule
 /// and face-varying flags included; a subject's command is left for the user to fill in).
-/// Nothing when there is no finding, the input has more than kInvarianceShrinkMaxFaces faces,
-/// or the finding does not show again when shrinking starts.
+/// Nothing when there is no finding, or the finding does not show again when shrinking starts.
 std::optional<InvarianceMinimal> shrink_first_finding(const Implementation& impl, bool subject, const PolyMesh& input,
                                                       const RefineRequest& request, const InvarianceReport& report,
                                                       std::uint64_t seed, double tolerance, double timeout_seconds,
