@@ -116,6 +116,41 @@ TEST(FaceVaryingSubdivide, WhatSubdivideWritesIsWhatFarComputesForEveryRule) {
     std::printf("%d refinements written and compared with Far\n", compared);
 }
 
+TEST(FaceVaryingSubdivide, ThePillowsTwoSidesAreComparedEachWithItself) {
+    // Two triangles on one set of vertices, back to back, each with values of its own (as
+    // Reallusion's female03 has, shrunk): a mesh compared with itself differs nowhere. Matched
+    // by vertex set alone, the second side would be paired with the first, 0.5 apart in u.
+    PolyMesh a;
+    a.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+    a.add_face({0, 1, 2});
+    a.add_face({2, 1, 0});
+    a.face_varying.push_back({"uv", 2, {0, 0, 0.25, 0, 0, 0.25, 0.5, 0, 0.75, 0, 0.5, 0.25}, {0, 1, 2, 5, 4, 3}});
+    const CornerValueComparison c = compare_corner_values(a, a, {0, 1, 2});
+    ASSERT_TRUE(c.compared()) << c.not_compared;
+    EXPECT_EQ(c.corners, 6);
+    EXPECT_EQ(c.max_abs, 0);
+    // The reference lists the sides the other way round: each still finds its own.
+    PolyMesh b = a;
+    b.face_vertices = {2, 1, 0, 0, 1, 2};
+    b.face_varying[0].corner_values = {5, 4, 3, 0, 1, 2};
+    EXPECT_EQ(compare_corner_values(a, b, {0, 1, 2}).max_abs, 0);
+
+    // A face written twice, the same corners in the same cycle, with values of its own each:
+    // nothing but the order of the faces tells them apart, and that order is the
+    // implementation's (a reversed face list keeps each face's values). Each is paired with
+    // the one whose values are its own; a value that moved still shows.
+    PolyMesh twice = a;
+    twice.face_vertices = {0, 1, 2, 0, 1, 2};
+    PolyMesh listed_otherwise = twice;
+    listed_otherwise.face_varying[0].corner_values = {5, 4, 3, 0, 1, 2};
+    EXPECT_EQ(compare_corner_values(twice, listed_otherwise, {0, 1, 2}).max_abs, 0);
+    listed_otherwise.face_varying[0].values[0] = 0.125;  // value 0: u of the second face's corner 0
+    const CornerValueComparison moved = compare_corner_values(twice, listed_otherwise, {0, 1, 2});
+    EXPECT_EQ(moved.max_abs, 0.125);
+    EXPECT_EQ(moved.worst_face, 0);
+    EXPECT_EQ(moved.worst_corner, 0);
+}
+
 TEST(FaceVaryingSubdivide, TheCornerComparisonMeasuresAndLocates) {
     // One quad with a seam-free channel against the same with one corner's value moved by 0.25
     // in u: measured at that corner, relative to the box (diagonal of (0,0)-(1,2): sqrt 5).

@@ -37,27 +37,63 @@ struct VertexFaces {
 namespace {
 
 /// Calls `each(ours_corner, ref_corner)` for every corner of every face of `ref`, with the
-/// corner of its partner face in `ours` (the face with the same mapped vertices, found among
+/// corner of its partner face in `ours` (a face with the same mapped vertices, found among
 /// the faces around its first vertex) that has the same vertex. Returns the first face of
 /// `ref` with no partner, or -1.
+///
+/// Two faces on one set of vertices (a pillow's two sides, a face written twice) carry values
+/// of their own: the partner is, of those faces, first one not yet taken whose corners follow
+/// the same cycle, then one not yet taken in the other direction (a reference that writes its
+/// faces reversed), then any; the first found regardless would compare one side's values with
+/// the other's. Faces that tie (a face written twice: the same corners in the same cycle, which
+/// nothing but their order tells apart, and their order is the implementation's) are told apart
+/// by their values: the partner is the one whose values are nearest.
 template <typename Each>
 int for_each_matched_corner(const PolyMesh& ours, const PolyMesh& ref, const std::vector<int>& ref_to_ours, Each each) {
     const VertexFaces around(ours);
     std::vector<int> mapped;
+    std::vector<char> taken(static_cast<size_t>(ours.num_faces()), 0);
     for (int g = 0; g < ref.num_faces(); ++g) {
         const int n = ref.face_size(g);
         mapped.assign(ref.face(g), ref.face(g) + n);
         for (int& v : mapped) v = ref_to_ours[static_cast<size_t>(v)];
-        int f = -1;
+        int f = -1, best = 4;  // rank: 0 free and the same cycle, 1 free, 2 the same cycle, 3 any
         const int v0 = mapped[0];
-        for (int i = around.start[static_cast<size_t>(v0)]; i < around.start[static_cast<size_t>(v0) + 1] && f < 0; ++i) {
+        // The largest difference of the first channels' values over the corners of ref's face g
+        // and ours' face `cand` (on the same vertices), corner by vertex.
+        const auto value_distance = [&](int cand) {
+            if (ours.face_varying.empty() || ref.face_varying.empty()) return 0.0;
+            const FaceVaryingChannel &a = ours.face_varying.front(), &b = ref.face_varying.front();
+            const int* c = ours.face(cand);
+            double d = 0;
+            for (int k = 0; k < n; ++k) {
+                const int j = static_cast<int>(std::find(c, c + n, mapped[static_cast<size_t>(k)]) - c);
+                const double* x = a.value(a.corner_values[static_cast<size_t>(ours.face_start[cand] + j)]);
+                const double* y = b.value(b.corner_values[static_cast<size_t>(ref.face_start[g] + k)]);
+                for (int e = 0; e < std::min(a.dimension, b.dimension); ++e) d = std::max(d, std::abs(x[e] - y[e]));
+            }
+            return d;
+        };
+        for (int i = around.start[static_cast<size_t>(v0)]; i < around.start[static_cast<size_t>(v0) + 1]; ++i) {
             const int cand = around.faces[static_cast<size_t>(i)];
             if (ours.face_size(cand) != n) continue;
+            const int* c = ours.face(cand);
             bool same = true;
-            for (int k = 0; k < n && same; ++k) same = std::find(ours.face(cand), ours.face(cand) + n, mapped[k]) != ours.face(cand) + n;
-            if (same) f = cand;
+            for (int k = 0; k < n && same; ++k) same = std::find(c, c + n, mapped[k]) != c + n;
+            if (!same) continue;
+            const int j = static_cast<int>(std::find(c, c + n, v0) - c);
+            bool cycle = true;
+            for (int k = 1; k < n && cycle; ++k) cycle = c[(j + k) % n] == mapped[static_cast<size_t>(k)];
+            const int rank = (taken[static_cast<size_t>(cand)] ? 2 : 0) + (cycle ? 0 : 1);
+            if (rank < best) {
+                best = rank;
+                f = cand;
+            } else if (rank == best) {
+                if (value_distance(cand) < value_distance(f)) f = cand;
+            }
         }
         if (f < 0) return g;
+        taken[static_cast<size_t>(f)] = 1;
         for (int k = 0; k < n; ++k) {
             const int j = static_cast<int>(std::find(ours.face(f), ours.face(f) + n, mapped[k]) - ours.face(f));
             each(ours.face_start[f] + j, ref.face_start[g] + k);
