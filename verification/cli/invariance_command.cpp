@@ -92,7 +92,8 @@ int run_invariance(const InvarianceOptions& o, const Implementation* subject) {
             }
             // The first finding shrunk (within kInvarianceShrinkSeconds).
             if (const std::optional<InvarianceMinimal> m = shrink_first_finding(
-                    *impl, subject != nullptr, mesh, request, r, o.seed, o.tolerance, o.timeout, o.isolate, o.out, file_stem(in))) {
+                    *impl, subject != nullptr, impl == subject || impl == &core_implementation(), mesh, request, r, causes,
+                    o.seed, o.tolerance, o.timeout, o.isolate, o.out, file_stem(in))) {
                 fmt::print("  {:<17} minimal input: {} faces ({} checks{}): {}\n  {:<17} reproduce: {}\n", impl->name(), m->faces,
                            m->tests, m->cut_short ? ", cut short by the time limit" : "", m->explanation, "", m->reproduce);
                 minimal = to_json(*m);

@@ -809,7 +809,7 @@ TEST(InvarianceCase, AFindingOnALargeInputIsShrunkWithinTheTimeLimit) {
     ASSERT_EQ(report.checks[0].result, InvarianceResult::NotInvariant) << report.checks[0].explanation;
     const std::filesystem::path d = fresh_folder("large");
     const std::optional<InvarianceMinimal> m =
-        shrink_first_finding(*subject, true, large, request, report, 1, 1e-12, 60, false, d.string(), "large");
+        shrink_first_finding(*subject, true, true, large, request, report, {}, 1, 1e-12, 60, false, d.string(), "large");
     ASSERT_TRUE(m.has_value());
     EXPECT_FALSE(m->cut_short);
     EXPECT_LT(m->faces, 1280 / 10);
@@ -837,6 +837,31 @@ TEST(InvarianceCase, AFindingOnALargeInputIsShrunkWithinTheTimeLimit) {
     EXPECT_EQ(none.tests, 1);
     EXPECT_EQ(none.minimal.num_faces(), 1280);
     EXPECT_EQ(none.check.result, InvarianceResult::NotInvariant);
+    std::filesystem::remove_all(d);
+}
+
+TEST(InvarianceCase, AReferencesUnexplainedFindingIsShrunkBeforeOneAClassNames) {
+    // Two findings of the corner bug (corners rotated in turn, and at random). As a reference's,
+    // with the first one's cause named by a class, the second (unexplained) is shrunk: the one
+    // that fails the case. As the implementation under test's, every finding fails: the first.
+    const std::unique_ptr<Implementation> bug = corner_position_subject(Scheme::Loop, 6);
+    RefineRequest request{Scheme::Loop, {}, 1};
+    request.rule.loop = {LoopWeights::Loop, LoopBoundary::EdgeOnly};
+    const PolyMesh ico = datasets::bundled_mesh("icosahedron");
+    const std::vector<InputTransformation> both = {InputTransformation::RotateCorners, InputTransformation::RotateCornersRandom};
+    const InvarianceReport report = check_invariance(*bug, ico, request, both, 1, 1e-12, 60, false);
+    ASSERT_EQ(report.checks.size(), 2u);
+    ASSERT_TRUE(report.checks[0].finding() && report.checks[1].finding());
+    const std::vector<std::optional<InvarianceCause>> causes = {InvarianceCause{DivergenceClass::FaceOrderDependence, "named"},
+                                                                std::nullopt};
+    const std::filesystem::path d = fresh_folder("unexplained-first");
+    const auto shrunk = [&](bool under_test) {
+        const std::optional<InvarianceMinimal> m =
+            shrink_first_finding(*bug, false, under_test, ico, request, report, causes, 1, 1e-12, 60, false, d.string(), "ico");
+        return m ? m->transformation : InputTransformation::Repeat;
+    };
+    EXPECT_EQ(shrunk(false), InputTransformation::RotateCornersRandom);
+    EXPECT_EQ(shrunk(true), InputTransformation::RotateCorners);
     std::filesystem::remove_all(d);
 }
 

@@ -113,11 +113,23 @@ json to_json(const InvarianceMinimal& m) {
             {"reproduce", m.reproduce}};
 }
 
-std::optional<InvarianceMinimal> shrink_first_finding(const Implementation& impl, bool subject, const PolyMesh& input,
-                                                      const RefineRequest& request, const InvarianceReport& report,
+std::optional<InvarianceMinimal> shrink_first_finding(const Implementation& impl, bool subject, bool under_test,
+                                                      const PolyMesh& input, const RefineRequest& request,
+                                                      const InvarianceReport& report,
+                                                      const std::vector<std::optional<InvarianceCause>>& causes,
                                                       std::uint64_t seed, double tolerance, double timeout_seconds,
                                                       bool isolate, const std::string& folder, const std::string& file_stem) {
-    const auto finding = std::find_if(report.checks.begin(), report.checks.end(), [](const InvarianceCheck& c) { return c.finding(); });
+    // A reference's finding that a class names is what the reference does by a known rule: an
+    // unexplained one of its own comes first.
+    const auto failing = [&](size_t i) {
+        const std::optional<InvarianceCause>& cause = i < causes.size() ? causes[i] : std::nullopt;
+        return report.checks[i].finding() && (under_test || !cause || cause->cls == DivergenceClass::Unexplained);
+    };
+    auto finding = report.checks.end();
+    for (size_t i = 0; i < report.checks.size() && finding == report.checks.end(); ++i)
+        if (failing(i)) finding = report.checks.begin() + static_cast<std::ptrdiff_t>(i);
+    if (finding == report.checks.end())
+        finding = std::find_if(report.checks.begin(), report.checks.end(), [](const InvarianceCheck& c) { return c.finding(); });
     if (finding == report.checks.end()) return std::nullopt;
     InvarianceShrink s;
     try {
@@ -209,7 +221,8 @@ CaseRecord run_invariance_case(const SuiteJob& job, const std::string& out_dir) 
         }
         summary["invariant"] = report.invariant();
         if (const std::optional<InvarianceMinimal> m =
-                shrink_first_finding(*impl, entry.subject != nullptr, input, request, report, keys.seed, tolerance, timeout,
+                shrink_first_finding(*impl, entry.subject != nullptr, under_test, input, request, report, causes, keys.seed,
+                                     tolerance, timeout,
                                      true, (std::filesystem::path(out_dir) / "invariance").string(), stem)) {
             // Beside the results, named relative to them as the views are.
             summary["minimal"] = to_json(*m);

@@ -22,7 +22,8 @@
 /// An implementation whose run on the input itself fails has one run, check "input": a
 /// reference's ref-rejected / ref-crashed / ref-invalid-output, core's (or the subject's)
 /// ours-rejected classed by what the input breaks, a failure unless the case declares it
-/// (refuses=), as in the comparisons. Each implementation's first finding is shrunk by delta
+/// (refuses=), as in the comparisons. Each implementation's first failing finding (a reference's
+/// first unexplained one, else its first) is shrunk by delta
 /// debugging within kInvarianceShrinkSeconds and written beside the results
 /// (invariance/jobN-IMPL-TRANSFORM.obj) with the command that reproduces it.
 
@@ -57,12 +58,16 @@ struct InvarianceMinimal {
 /// transformation, explanation, reproduce.
 nlohmann::json to_json(const InvarianceMinimal& m);
 
-/// The first not-invariant or nondeterministic check of `report` shrunk (shrink_not_invariant)
-/// and written as `file_stem`-IMPL-TRANSFORM.obj in `folder`, with its reproduce line (rule
-/// and face-varying flags included; a subject's command is left for the user to fill in).
+/// The first failing check of `report` shrunk (shrink_not_invariant) and written as
+/// `file_stem`-IMPL-TRANSFORM.obj in `folder`, with its reproduce line (rule and face-varying
+/// flags included; a subject's command is left for the user to fill in). Failing: for the
+/// implementation under test any not-invariant or nondeterministic check; for a reference one
+/// whose cause (`causes`, one per check, causes_of) no class names, else its first finding.
 /// Nothing when there is no finding, or the finding does not show again when shrinking starts.
-std::optional<InvarianceMinimal> shrink_first_finding(const Implementation& impl, bool subject, const PolyMesh& input,
-                                                      const RefineRequest& request, const InvarianceReport& report,
+std::optional<InvarianceMinimal> shrink_first_finding(const Implementation& impl, bool subject, bool under_test,
+                                                      const PolyMesh& input, const RefineRequest& request,
+                                                      const InvarianceReport& report,
+                                                      const std::vector<std::optional<InvarianceCause>>& causes,
                                                       std::uint64_t seed, double tolerance, double timeout_seconds,
                                                       bool isolate, const std::string& folder, const std::string& file_stem);
 
