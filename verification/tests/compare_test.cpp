@@ -350,6 +350,38 @@ namespace {
 
 // A face listed from any corner has one canonical start, also when it names its least
 // vertex twice: (0 0 1) from each corner, and (0 2 0 1) whose two 0s start different lists.
+TEST(Compare, FacesJoinedToTheOtherOfTwoVerticesCloserThanTheRoundingAreRounding) {
+    // Two quads; core's vertex 4 lies 1e-7 from vertex 1 (a degenerate sliver's corners). The
+    // reference (within 1e-8 of each place) joins each quad to the other of the two: by
+    // position nobody can tell them apart at a rounding of 1e-6 of the diagonal (2.2e-6).
+    PolyMesh ours;
+    ours.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0), Vec3(1 + 1e-7, 0, 0), Vec3(2, 0, 0), Vec3(2, 1, 0)};
+    ours.add_face({0, 1, 2, 3});
+    ours.add_face({4, 5, 6, 2});
+    PolyMesh ref = ours;
+    for (Vec3& p : ref.positions) p.y() += 1e-8;
+    ref.face_vertices = {0, 4, 2, 3, 1, 5, 6, 2};
+    const std::optional<Classification> c = rounding_among_near_vertices(ours, ref, 1e-6);
+    ASSERT_TRUE(c.has_value());
+    EXPECT_EQ(c->cls, DivergenceClass::Rounding);
+    EXPECT_NE(c->explanation.find("; 2 of core's vertices have another within that distance"), std::string::npos) << c->explanation;
+    // Nothing to confuse at a rounding of 1e-9: no class.
+    EXPECT_FALSE(rounding_among_near_vertices(ours, ref, 1e-9).has_value());
+    // Another face (a quad's corners in another cycle) is not rounding.
+    PolyMesh other = ref;
+    other.face_vertices = {0, 4, 3, 2, 1, 5, 6, 2};
+    EXPECT_FALSE(rounding_among_near_vertices(ours, other, 1e-6).has_value());
+    // Nor a vertex farther than the rounding from every one of core's.
+    PolyMesh moved = ref;
+    moved.positions[5].x() += 1e-3;
+    EXPECT_FALSE(rounding_among_near_vertices(ours, moved, 1e-6).has_value());
+    // Nor a face joined to a vertex farther than the rounding from the corner it stands for,
+    // though every vertex is near one of core's (vertex 0 moved onto the two).
+    PolyMesh merged = ref;
+    merged.positions[0] = Vec3(1 + 5e-8, 0, 0);
+    EXPECT_FALSE(rounding_among_near_vertices(ours, merged, 1e-6).has_value());
+}
+
 TEST(Compare, AFaceHasOneLeastRotationFromEveryCorner) {
     for (const std::vector<int>& face : {std::vector<int>{0, 0, 1}, std::vector<int>{0, 2, 0, 1}, std::vector<int>{5, 3, 9}})
         for (size_t r = 0; r < face.size(); ++r) {

@@ -1,11 +1,13 @@
 #include "crossdiv/verification/comparisons/classification.h"
 
 #include <algorithm>
+#include <numeric>
 
 #include "crossdiv/mesh/mesh_checks.h"
 #include "crossdiv/mesh/vertex_fans.h"
 #include "crossdiv/verification/harness/correspondence.h"
 #include "crossdiv/verification/harness/mesh_comparison.h"
+#include "crossdiv/verification/harness/nearest_points.h"
 #include "crossdiv/subdiv/nonmanifold.h"
 #include "crossdiv/mesh/tri_mesh.h"
 #include "harness/sci.h"
@@ -191,6 +193,76 @@ std::optional<Classification> split_fans_handling(const PolyMesh& input, const P
                               ") and refines the result as a manifold: it agrees with core on that split mesh (max "
                               "relative error " + detail::sci(m.max_rel) + " <= " + detail::sci(tolerance) +
                               "), where core follows OpenSubdiv's non-manifold rules on the input itself"};
+}
+
+std::optional<Classification> rounding_among_near_vertices(const PolyMesh& ours, const PolyMesh& ref, double tolerance) {
+    const size_t n = ours.positions.size();
+    if (n == 0 || ref.positions.size() != n || ref.num_faces() != ours.num_faces() ||
+        ref.face_vertices.size() != ours.face_vertices.size())
+        return std::nullopt;
+    const double reach = tolerance * bounding_box_diagonal(ours.positions);
+    if (!(reach > 0)) return std::nullopt;
+    const NearestPoints index(ours.positions);
+    constexpr size_t k = NearestPoints::kMaxNeighbours;
+    unsigned near[k];
+    double d2[k];
+    // Our vertices with another within the rounding: where a match by position may err.
+    int close = 0;
+    for (size_t v = 0; v < n; ++v)
+        close += index.nearest(ours.positions[v], 2, near, d2) == 2 && d2[1] <= reach * reach;
+    if (close == 0) return std::nullopt;
+    // Both ways: every vertex of each within the rounding of one of the other's.
+    double farthest = 0;
+    for (const Vec3& p : ref.positions) {
+        if (index.nearest(p, 1, near, d2) != 1 || !(d2[0] <= reach * reach)) return std::nullopt;
+        farthest = std::max(farthest, std::sqrt(d2[0]));
+    }
+    const NearestPoints ref_index(ref.positions);
+    for (const Vec3& p : ours.positions)
+        if (ref_index.nearest(p, 1, near, d2) != 1 || !(d2[0] <= reach * reach)) return std::nullopt;
+    // Our faces around each vertex, in compressed rows.
+    std::vector<int> first(n + 1, 0), around(ours.face_vertices.size());
+    for (int v : ours.face_vertices) ++first[static_cast<size_t>(v) + 1];
+    std::partial_sum(first.begin(), first.end(), first.begin());
+    {
+        std::vector<int> fill(first.begin(), first.end() - 1);
+        for (int f = 0; f < ours.num_faces(); ++f)
+            for (int c = 0; c < ours.face_size(f); ++c) around[static_cast<size_t>(fill[static_cast<size_t>(ours.face(f)[c])]++)] = f;
+    }
+    // Each face of ref on one of ours not yet taken whose corners, in the same cycle, each lie
+    // within the rounding of its own, found among the faces around our vertices near its first.
+    std::vector<char> taken(static_cast<size_t>(ours.num_faces()), 0);
+    const auto within = [&](int u, int r) {
+        return (ours.positions[static_cast<size_t>(u)] - ref.positions[static_cast<size_t>(r)]).squaredNorm() <= reach * reach;
+    };
+    for (int g = 0; g < ref.num_faces(); ++g) {
+        const int m = ref.face_size(g);
+        const int* rg = ref.face(g);
+        const size_t found = index.nearest(ref.positions[static_cast<size_t>(rg[0])], k, near, d2);
+        int partner = -1;
+        for (size_t i = 0; i < found && partner < 0 && d2[i] <= reach * reach; ++i)
+            for (int a = first[near[i]]; a < first[near[i] + 1] && partner < 0; ++a) {
+                const int f = around[static_cast<size_t>(a)];
+                if (taken[static_cast<size_t>(f)] || ours.face_size(f) != m) continue;
+                const int* of = ours.face(f);
+                for (int j = 0; j < m && partner < 0; ++j) {
+                    if (of[j] != static_cast<int>(near[i])) continue;
+                    bool same = true;
+                    for (int c = 1; c < m && same; ++c) same = within(of[(j + c) % m], rg[c]);
+                    if (same) partner = f;
+                }
+            }
+        // None: not core's face, or core's beyond the nearest listed (more lie that near): no test.
+        if (partner < 0) return std::nullopt;
+        taken[static_cast<size_t>(partner)] = 1;
+    }
+    return Classification{DivergenceClass::Rounding,
+                          "the same vertices and faces up to its rounding (" + detail::sci(reach) +
+                              "): every vertex within " + detail::sci(farthest) +
+                              " of one of core's, and every face on one of core's whose corners lie as near, in the same "
+                              "cycle; " + std::to_string(close) +
+                              " of core's vertices have another within that distance, which a match by position cannot "
+                              "tell apart"};
 }
 
 bool measured_topology_difference(const TopologyCounts& ours, const TopologyCounts& ref, bool face_sets_equal,

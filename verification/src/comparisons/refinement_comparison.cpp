@@ -866,6 +866,15 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
                                   "only vertices no face uses differ, by up to " + sci(run.comparison.max_rel) + worst};
         };
         tests.rounding = [&]() -> std::optional<Classification> {
+            // Faces that differ under a match by position, which the reference's rounding may
+            // have misled where vertices lie closer than it (the same rule asked and applied).
+            const bool by_position = run.correspondence.method == MatchMethod::Nearest ||
+                                     run.correspondence.method == MatchMethod::NearestAndFaces;
+            if (!same_faces && by_position && !rules_differ)
+                if (std::optional<Classification> c = rounding_among_near_vertices(ours, theirs, tolerance)) {
+                    c->explanation += "; matched by position it differs by " + sci(run.comparison.max_rel) + worst;
+                    return c;
+                }
             const double ulps = run.comparison.max_abs / ulp_of_largest_coordinate(ours);
             if (!same_faces || !(ulps <= tolerances::kRoundingUlps)) return std::nullopt;
             return Classification{DivergenceClass::Rounding, "differs by " + sci(run.comparison.max_rel) +

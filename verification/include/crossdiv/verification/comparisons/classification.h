@@ -6,7 +6,10 @@
 /// holds:
 ///
 ///   1. isolated-vertex-handling  same faces, and only vertices without faces differ
-///   2. rounding                  same faces, within tolerances::kRoundingUlps of the coordinates
+///   2. rounding                  same faces, within tolerances::kRoundingUlps of the coordinates;
+///                                or, matched by position where vertices lie closer than the
+///                                reference's rounding, every face on one of core's whose
+///                                corners are as near (rounding_among_near_vertices)
 ///   3. the reference's rule      core re-run with the rule the reference applies agrees in faces
 ///                                and positions (weight-family, corner-rule, boundary-rule,
 ///                                border-faces-dropped, parity: rule_difference_class)
@@ -117,6 +120,19 @@ std::optional<Classification> fan_walk_handling(const std::vector<char>& reach, 
 std::optional<Classification> split_fans_handling(const PolyMesh& input, const PolyMesh& ref,
                                                   const std::function<std::optional<PolyMesh>(const PolyMesh&)>& core_refine,
                                                   double tolerance, const std::string& reference);
+
+/// Test 2 where a match by position found other faces: rounding when `ref` is `ours` up to
+/// the reference's rounding `tolerance` (x ours' diagonal: the float tier of a float
+/// reference), where some of ours' vertices lie closer together than that, which a match by
+/// position cannot tell apart: the same counts, every vertex of each within the distance of
+/// one of the other's, and every face of `ref` on its own face of ours whose corners, in the same
+/// cycle, each lie within the distance of its corners. So a float result of tiny faces far from
+/// the origin (vertices 1e-4 apart at coordinates near 100, a few float ulps) that joins its
+/// faces to the other of two such vertices is named; a vertex moved farther, a face whose
+/// corners are not a face of core's, is not. Nothing when it does not hold (also when a face's
+/// partner is not among the faces of the NearestPoints::kMaxNeighbours vertices of ours nearest
+/// its first corner: too crowded to tell).
+std::optional<Classification> rounding_among_near_vertices(const PolyMesh& ours, const PolyMesh& ref, double tolerance);
 
 /// Whether a comparison measured a difference of topology (test 6): the counts differ, or
 /// the face sets differ under a correspondence found by `method` Order or Topology (from
