@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "crossdiv/datasets/bundled.h"
 #include "crossdiv/datasets/edge_cases.h"
@@ -350,6 +351,28 @@ namespace {
 
 // A face listed from any corner has one canonical start, also when it names its least
 // vertex twice: (0 0 1) from each corner, and (0 2 0 1) whose two 0s start different lists.
+TEST(Compare, TheFloatTierCountsAFacePointsSumOfCorners) {
+    // A face point sums every corner of its face: a 184-gon's sums 184 terms, more than any
+    // vertex's stencil around its valence 2, and the float tier's n is 183.
+    PolyMesh gon;
+    std::vector<int> corners;
+    for (int i = 0; i < 184; ++i) {
+        const double a = 2 * std::numbers::pi * i / 184;
+        gon.positions.push_back(Vec3(std::cos(a), std::sin(a), 0));
+        corners.push_back(i);
+    }
+    gon.add_face(corners);
+    EXPECT_EQ(max_valence(gon), 2);
+    EXPECT_EQ(longest_float_sum(gon), 183);
+    // A quad cube's vertices have valence 3, its faces 4 corners: 3 either way. An octahedron's
+    // valence 4 exceeds its triangles' 2.
+    EXPECT_EQ(longest_float_sum(datasets::bundled_mesh("quad-cube")), 3);
+    EXPECT_EQ(longest_float_sum(datasets::bundled_mesh("octahedron")), 4);
+    // The tier at n = 183, 2 levels: 64 + 92.5 * 2 = 249 float ulps of the largest coordinate.
+    const double ulp = std::nextafter(1.0f, 2.0f) - 1.0f;
+    EXPECT_DOUBLE_EQ(agreement_tolerance(gon, true, 0, longest_float_sum(gon), 2), 249 * ulp / bounding_box_diagonal(gon.positions));
+}
+
 TEST(Compare, FacesJoinedToTheOtherOfTwoVerticesCloserThanTheRoundingAreRounding) {
     // Two quads; core's vertex 4 lies 1e-7 from vertex 1 (a degenerate sliver's corners). The
     // reference (within 1e-8 of each place) joins each quad to the other of the two: by

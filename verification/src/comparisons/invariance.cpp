@@ -530,7 +530,7 @@ InvarianceReport check_invariance(const Implementation& impl, const PolyMesh& in
     const IsolatedTrace first = refine_isolated(impl, input, request, timeout_seconds, isolate);
     out.outcome = first.outcome;
     const double float_ulps = impl.capabilities().precision == Precision::Float
-                                  ? tolerances::kFloatAgreementUlps + 0.5 * (max_valence(input) + 2) * request.levels
+                                  ? tolerances::kFloatAgreementUlps + 0.5 * (longest_float_sum(input) + 2) * request.levels
                                   : 0.0;
     for (InputTransformation t : transformations) {
         InvarianceCheck check;

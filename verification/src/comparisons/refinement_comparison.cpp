@@ -606,10 +606,10 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
         if (!topology) topology = mesh_topology(input);
         return *topology;
     };
-    auto largest_valence = [&] {
-        int largest = 0;
-        for (int v : input_topology().valence) largest = std::max(largest, v);
-        return largest;
+    std::optional<int> float_sum;  // the float tier's n (tolerances.h), computed once when asked
+    auto longest_sum = [&] {
+        if (!float_sum) float_sum = longest_float_sum(input);
+        return *float_sum;
     };
     auto interior_valences = [&] {
         std::vector<int> list;
@@ -636,7 +636,7 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
     // float bound (tolerances::kFloatAgreementUlps), whatever tier the case asks of doubles.
     const auto tolerance_for = [&](const Implementation& ref) {
         return ref.capabilities().precision == Precision::Float
-                   ? agreement_tolerance(ours, true, req.tolerance, largest_valence(), req.levels)
+                   ? agreement_tolerance(ours, true, req.tolerance, longest_sum(), req.levels)
                    : req.tolerance;
     };
     for (const Implementation* impl : refs) {
@@ -907,7 +907,7 @@ RefinementComparison compare_refinement(const PolyMesh& input, const std::string
             const double rounding = tolerances::kRoundingUlps * ulp_of_largest_coordinate(with.last()) / (diagonal > 0 ? diagonal : 1);
             const double bar = std::max(rounding, tier == Tier::Weak ? tolerance
                                                                     : agreement_tolerance(with.last(), in_float, tolerances::kAgreementRelative,
-                                                                                          in_float ? largest_valence() : 0, req.levels));
+                                                                                          in_float ? longest_sum() : 0, req.levels));
             // Two named causes at once: the rule explains every vertex a face uses, and only
             // vertices no face uses differ beyond that (a reference that moves them).
             const bool agrees_with_rule = within_weak(c2, e2, bar);

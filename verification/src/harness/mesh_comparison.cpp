@@ -200,6 +200,12 @@ double value_agreement_tolerance(const PolyMesh& mesh, bool in_float, double tol
     return std::max(tolerance, float_tier(largest, max_valence, levels, uv_box_diagonal(ch)));
 }
 
+int longest_float_sum(const PolyMesh& mesh) {
+    int longest = max_valence(mesh);
+    for (int f = 0; f < mesh.num_faces(); ++f) longest = std::max(longest, mesh.face_size(f) - 1);
+    return longest;
+}
+
 int max_valence(const PolyMesh& mesh) {
     const std::vector<int> valence = mesh_topology(mesh).valence;
     return valence.empty() ? 0 : *std::max_element(valence.begin(), valence.end());

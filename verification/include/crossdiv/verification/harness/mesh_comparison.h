@@ -80,6 +80,11 @@ double value_agreement_tolerance(const PolyMesh& mesh, bool in_float, double tol
 /// The largest number of distinct edge neighbours of a vertex (mesh_topology's valence).
 int max_valence(const PolyMesh& mesh);
 
+/// The n of the float tier (tolerances.h) for refining `mesh`: the most terms one stencil sums
+/// less one, its largest valence or, where a face is larger, that face's size less one (a face
+/// point, Catmull-Clark's or bilinear's, sums every corner: a 180-sided face sums 180).
+int longest_float_sum(const PolyMesh& mesh);
+
 /// Symmetric Hausdorff distance between two vertex sets (no correspondence needed): the
 /// geometric tier's measure of how far two refinements of the same surface lie apart.
 double hausdorff_vertex_sets(const std::vector<Vec3>& a, const std::vector<Vec3>& b);

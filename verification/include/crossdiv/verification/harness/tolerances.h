@@ -26,8 +26,10 @@ inline constexpr double kRoundingUlps = 16;
 
 /// The float tier: a reference that computes in float (precision=float; MeshLab's VCG) agrees
 /// when the largest distance is at most B float ulps of the refined mesh's largest coordinate
-/// magnitude, B = kFloatAgreementUlps + (n + 2) / 2 * L for the input's largest valence n and L
-/// levels. It reads the input rounded to float (half an ulp), and each level forms float sums
+/// magnitude, B = kFloatAgreementUlps + (n + 2) / 2 * L for the input's largest valence n (or,
+/// where a face is larger, its size less one: a face point sums every corner of its face; a
+/// Blender run on a 180-sided face parted by 84 ulps at one level, past the valence's 66.5) and
+/// L levels. It reads the input rounded to float (half an ulp), and each level forms float sums
 /// of up to n + 1 weighted terms, each rounding by at most half an ulp of a partial sum no
 /// larger than the largest coordinate: (n + 2) / 2 ulps a level; its result is read back
 /// exactly (binary PLY) or to 7 digits (another half ulp). The constant term bounds the rest
